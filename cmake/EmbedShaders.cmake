@@ -1,0 +1,47 @@
+# Compiles GLSL to SPIR-V at build time and embeds each module as a uint32_t array in a generated
+# header, so binaries carry their shaders and never look for .spv files at run time.
+#
+#   ls_embed_shaders(TARGET <interface-lib> SOURCES a.comp b.frag ... [INCLUDE_DIRS dir ...])
+#
+# Each source <dir>/<name>.<stage> becomes <build>/shaders_gen/<name>_<stage>.h defining
+# `inline constexpr uint32_t <name>_<stage>[]` inside namespace ls_spirv. Includes are tracked with
+# glslang's depfile so editing a shared .glsl file rebuilds its users.
+function(ls_embed_shaders)
+  cmake_parse_arguments(ARG "" "TARGET" "SOURCES;INCLUDE_DIRS" ${ARGN})
+  set(out_dir ${CMAKE_BINARY_DIR}/shaders_gen)
+  file(MAKE_DIRECTORY ${out_dir})
+  set(include_flags)
+  foreach(dir ${ARG_INCLUDE_DIRS})
+    list(APPEND include_flags -I${dir})
+  endforeach()
+  set(headers)
+  foreach(src ${ARG_SOURCES})
+    get_filename_component(abs ${src} ABSOLUTE)
+    get_filename_component(name ${src} NAME_WE)
+    get_filename_component(ext ${src} LAST_EXT)
+    string(SUBSTRING ${ext} 1 -1 stage)
+    set(symbol ${name}_${stage})
+    set(spv_header ${out_dir}/${symbol}.spv.inc)
+    set(header ${out_dir}/${symbol}.h)
+    add_custom_command(
+      OUTPUT ${spv_header}
+      COMMAND Vulkan::glslangValidator --quiet --target-env vulkan1.3 ${include_flags}
+              --depfile ${spv_header}.d --vn ls_spirv_raw_${symbol} -o ${spv_header} ${abs}
+      DEPENDS ${abs}
+      DEPFILE ${spv_header}.d
+      COMMENT "GLSL -> SPIR-V ${name}.${stage}"
+      VERBATIM)
+    # Wrap glslang's array in a namespace and give it a stable name.
+    add_custom_command(
+      OUTPUT ${header}
+      COMMAND ${CMAKE_COMMAND} -DIN=${spv_header} -DOUT=${header} -DSYMBOL=${symbol}
+              -P ${CMAKE_SOURCE_DIR}/cmake/WrapSpirv.cmake
+      DEPENDS ${spv_header} ${CMAKE_SOURCE_DIR}/cmake/WrapSpirv.cmake
+      VERBATIM)
+    list(APPEND headers ${header})
+  endforeach()
+  add_custom_target(${ARG_TARGET}_gen DEPENDS ${headers})
+  add_library(${ARG_TARGET} INTERFACE)
+  add_dependencies(${ARG_TARGET} ${ARG_TARGET}_gen)
+  target_include_directories(${ARG_TARGET} INTERFACE ${out_dir})
+endfunction()

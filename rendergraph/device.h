@@ -1,0 +1,99 @@
+#pragma once
+// Vulkan 1.3 device bring-up: instance (optionally with the Khronos validation layer and
+// synchronization validation), device choice, one queue, debug-utils naming, and the validation
+// messages collected for tests to assert on.
+#include <vulkan/vulkan.h>
+
+#include <functional>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace rg {
+
+struct DeviceOptions {
+    bool validation = false;      // VK_LAYER_KHRONOS_validation; refused loudly if missing
+    bool syncValidation = true;   // with validation: synchronization validation too
+    // Case-insensitive substring of the device name. Empty: the LS_DEVICE environment variable,
+    // then the first discrete GPU, integrated GPU, virtual GPU, CPU (lavapipe), in that order.
+    std::string deviceName;
+    bool announce = true;         // print which device was picked to stderr
+    bool echoMessages = true;     // print validation messages to stderr as they arrive
+    std::vector<std::string> instanceExtensions;  // e.g. the window system's surface extensions
+    bool swapchain = false;       // enable VK_KHR_swapchain on the device
+};
+
+class Device {
+public:
+    explicit Device(const DeviceOptions& options = {});
+    ~Device();
+    Device(const Device&) = delete;
+    Device& operator=(const Device&) = delete;
+
+    VkInstance instance() const { return instance_; }
+    VkPhysicalDevice physical() const { return physical_; }
+    VkDevice device() const { return device_; }
+    VkQueue queue() const { return queue_; }
+    uint32_t queueFamily() const { return queueFamily_; }
+    const VkPhysicalDeviceProperties& properties() const { return properties_; }
+    std::string name() const { return properties_.deviceName; }
+    std::string driverName() const { return driverName_; }
+    bool isCpu() const { return properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU; }
+    bool validationEnabled() const { return validation_; }
+    bool storageImageExtendedFormats() const { return extendedFormats_; }
+    double timestampPeriodNs() const { return properties_.limits.timestampPeriod; }
+    uint32_t timestampValidBits() const { return timestampBits_; }
+
+    uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags props) const;
+
+    // Debug-utils names and labels; no-ops when the extension is absent.
+    void setName(VkObjectType type, uint64_t handle, const std::string& name) const;
+    template <typename T>
+    void setName(T handle, VkObjectType type, const std::string& name) const {
+        setName(type, reinterpret_cast<uint64_t>(handle), name);
+    }
+    void beginLabel(VkCommandBuffer cmd, const std::string& name) const;
+    void endLabel(VkCommandBuffer cmd) const;
+
+    // Push descriptors (VK_KHR_push_descriptor): passes bind resources without descriptor pools.
+    PFN_vkCmdPushDescriptorSetKHR cmdPushDescriptorSet = nullptr;
+
+    // Records with `record` into a one-time command buffer, submits it and waits.
+    void submitAndWait(const std::function<void(VkCommandBuffer)>& record) const;
+
+    // Validation messages (warnings and errors) received since the last call.
+    std::vector<std::string> takeMessages();
+    size_t messageCount() const;
+
+private:
+    static VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(
+        VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT type,
+        const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
+    void destroy();
+    void createInstance(const DeviceOptions& options);
+    void pickPhysicalDevice(const DeviceOptions& options);
+    void createDevice(const DeviceOptions& options);
+
+    VkInstance instance_ = VK_NULL_HANDLE;
+    VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+    VkPhysicalDevice physical_ = VK_NULL_HANDLE;
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkQueue queue_ = VK_NULL_HANDLE;
+    VkCommandPool oneShotPool_ = VK_NULL_HANDLE;
+    uint32_t queueFamily_ = 0;
+    uint32_t timestampBits_ = 0;
+    VkPhysicalDeviceProperties properties_{};
+    VkPhysicalDeviceMemoryProperties memory_{};
+    std::string driverName_;
+    bool validation_ = false;
+    bool debugUtils_ = false;
+    bool extendedFormats_ = false;
+    bool echo_ = true;
+    PFN_vkSetDebugUtilsObjectNameEXT setObjectName_ = nullptr;
+    PFN_vkCmdBeginDebugUtilsLabelEXT cmdBeginLabel_ = nullptr;
+    PFN_vkCmdEndDebugUtilsLabelEXT cmdEndLabel_ = nullptr;
+    mutable std::mutex messagesMutex_;
+    std::vector<std::string> messages_;
+};
+
+}  // namespace rg

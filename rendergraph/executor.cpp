@@ -1,0 +1,422 @@
+#include "executor.h"
+
+#include <algorithm>
+
+#include "compile.h"
+#include "format_info.h"
+#include "vk_error.h"
+
+namespace rg {
+namespace {
+
+VkImageViewType viewType(uint32_t layers) {
+    return layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
+}
+
+}  // namespace
+
+GraphExecutor::GraphExecutor(const Device& device, RenderGraph& graph, CompiledGraph compiled)
+    : device_(device), graph_(graph), compiled_(std::move(compiled)) {
+    const VkDevice dev = device_.device();
+    images_.resize(graph_.resources().size());
+    buffers_.resize(graph_.resources().size(), VK_NULL_HANDLE);
+    try {
+        createMemory();
+
+        formats_.resize(compiled_.passes.size());
+        for (uint32_t pos = 0; pos < compiled_.passes.size(); ++pos) {
+            const PassPlan& plan = compiled_.passes[pos];
+            for (const auto& c : plan.colors)
+                formats_[pos].colors.push_back(graph_.resource(c.resource).image.format);
+            if (plan.depth) formats_[pos].depth = graph_.resource(plan.depth->resource).image.format;
+            if (plan.stencil)
+                formats_[pos].stencil = graph_.resource(plan.stencil->resource).image.format;
+        }
+
+        const uint32_t queryCount = std::max<uint32_t>(2, 2 * static_cast<uint32_t>(compiled_.passes.size()));
+        VkQueryPoolCreateInfo q{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+        q.queryType = VK_QUERY_TYPE_TIMESTAMP;
+        q.queryCount = queryCount;
+        RG_VK(vkCreateQueryPool(dev, &q, nullptr, &queries_));
+        device_.setName(queries_, VK_OBJECT_TYPE_QUERY_POOL, "render graph pass timestamps");
+        vkResetQueryPool(dev, queries_, 0, queryCount);
+
+        VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+        pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+        pool.queueFamilyIndex = device_.queueFamily();
+        RG_VK(vkCreateCommandPool(dev, &pool, nullptr, &pool_));
+        device_.setName(pool_, VK_OBJECT_TYPE_COMMAND_POOL, "render graph command pool");
+        VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+        alloc.commandPool = pool_;
+        alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+        alloc.commandBufferCount = 1;
+        RG_VK(vkAllocateCommandBuffers(dev, &alloc, &cmd_));
+        device_.setName(cmd_, VK_OBJECT_TYPE_COMMAND_BUFFER, "render graph frame");
+        VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+        RG_VK(vkCreateFence(dev, &fence, nullptr, &fence_));
+        device_.setName(fence_, VK_OBJECT_TYPE_FENCE, "render graph frame fence");
+    } catch (...) {
+        destroy();
+        throw;
+    }
+}
+
+GraphExecutor::~GraphExecutor() { destroy(); }
+
+void GraphExecutor::destroy() {
+    const VkDevice dev = device_.device();
+    if (!dev) return;
+    vkDeviceWaitIdle(dev);
+    auto destroyViews = [&](ImageObjects& o) {
+        for (VkImageView v : {o.full, o.depth, o.stencil})
+            if (v) vkDestroyImageView(dev, v, nullptr);
+        o.full = o.depth = o.stencil = VK_NULL_HANDLE;
+    };
+    for (uint32_t id = 0; id < images_.size(); ++id) {
+        if (graph_.resource(id).imported) continue;
+        destroyViews(images_[id]);
+        if (images_[id].image) vkDestroyImage(dev, images_[id].image, nullptr);
+        images_[id].image = VK_NULL_HANDLE;
+    }
+    for (auto& [img, views] : importedViews_) destroyViews(views);
+    importedViews_.clear();
+    for (uint32_t id = 0; id < buffers_.size(); ++id)
+        if (buffers_[id] && !graph_.resource(id).imported) vkDestroyBuffer(dev, buffers_[id], nullptr);
+    buffers_.clear();
+    for (VkDeviceMemory m : blocks_) vkFreeMemory(dev, m, nullptr);
+    blocks_.clear();
+    if (fence_) vkDestroyFence(dev, fence_, nullptr);
+    if (pool_) vkDestroyCommandPool(dev, pool_, nullptr);
+    if (queries_) vkDestroyQueryPool(dev, queries_, nullptr);
+    fence_ = VK_NULL_HANDLE;
+    pool_ = VK_NULL_HANDLE;
+    queries_ = VK_NULL_HANDLE;
+}
+
+void GraphExecutor::createMemory() {
+    const VkDevice dev = device_.device();
+    for (uint32_t b = 0; b < compiled_.blocks.size(); ++b) {
+        VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+        info.allocationSize = std::max<VkDeviceSize>(compiled_.blocks[b].size, 1);
+        info.memoryTypeIndex = compiled_.blocks[b].memoryType;
+        VkDeviceMemory mem;
+        RG_VK(vkAllocateMemory(dev, &info, nullptr, &mem));
+        blocks_.push_back(mem);
+        device_.setName(mem, VK_OBJECT_TYPE_DEVICE_MEMORY,
+                        "render graph transient block " + std::to_string(b));
+    }
+    for (uint32_t id = 0; id < graph_.resources().size(); ++id) {
+        const ResourceDecl& r = graph_.resource(id);
+        const ResourcePlan& plan = compiled_.resources[id];
+        if (r.imported) {
+            if (r.buffer) buffers_[id] = r.importedBuffer.buffer;
+            continue;
+        }
+        if (!plan.used) continue;
+        VkMemoryRequirements req;
+        if (r.buffer) {
+            VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+            info.size = r.bufferDesc.size;
+            info.usage = plan.bufferUsage;
+            info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+            RG_VK(vkCreateBuffer(dev, &info, nullptr, &buffers_[id]));
+            device_.setName(buffers_[id], VK_OBJECT_TYPE_BUFFER, r.name);
+            vkGetBufferMemoryRequirements(dev, buffers_[id], &req);
+        } else {
+            const VkImageCreateInfo info = transientImageInfo(r, plan);
+            RG_VK(vkCreateImage(dev, &info, nullptr, &images_[id].image));
+            device_.setName(images_[id].image, VK_OBJECT_TYPE_IMAGE, r.name);
+            vkGetImageMemoryRequirements(dev, images_[id].image, &req);
+        }
+        // The plan used vkGetDevice*MemoryRequirements for the same create info; a driver that
+        // answers differently for the real object would break the placement.
+        if (req.size > plan.memory.size || plan.offset % req.alignment != 0 ||
+            !(req.memoryTypeBits & (1u << plan.memoryType)))
+            throw VulkanError("resource '" + r.name +
+                              "': the driver's memory requirements differ from the compiled plan");
+        if (r.buffer) {
+            RG_VK(vkBindBufferMemory(dev, buffers_[id], blocks_[plan.block], plan.offset));
+        } else {
+            RG_VK(vkBindImageMemory(dev, images_[id].image, blocks_[plan.block], plan.offset));
+            images_[id] = makeViews(id, images_[id].image);
+        }
+    }
+}
+
+GraphExecutor::ImageObjects GraphExecutor::makeViews(uint32_t resource, VkImage image) {
+    const ResourceDecl& r = graph_.resource(resource);
+    ImageObjects o;
+    o.image = image;
+    VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    info.image = image;
+    info.viewType = viewType(r.image.arrayLayers);
+    info.format = r.image.format;
+    info.subresourceRange = {fullAspect(r.image.format), 0, r.image.mipLevels, 0,
+                             r.image.arrayLayers};
+    auto make = [&](VkImageAspectFlags aspect, const char* suffix) {
+        info.subresourceRange.aspectMask = aspect;
+        VkImageView v;
+        RG_VK(vkCreateImageView(device_.device(), &info, nullptr, &v));
+        device_.setName(v, VK_OBJECT_TYPE_IMAGE_VIEW, r.name + suffix);
+        return v;
+    };
+    o.full = make(fullAspect(r.image.format), " view");
+    if (hasDepth(r.image.format) && hasStencil(r.image.format)) {
+        o.depth = make(VK_IMAGE_ASPECT_DEPTH_BIT, " depth view");
+        o.stencil = make(VK_IMAGE_ASPECT_STENCIL_BIT, " stencil view");
+    }
+    return o;
+}
+
+void GraphExecutor::refreshImports() {
+    for (uint32_t id = 0; id < graph_.resources().size(); ++id) {
+        const ResourceDecl& r = graph_.resource(id);
+        if (!r.imported) continue;
+        if (r.buffer) {
+            buffers_[id] = r.importedBuffer.buffer;
+            continue;
+        }
+        const VkImage img = r.importedImage.image;
+        if (!img) throw VulkanError("imported image '" + r.name + "' has no VkImage to run with");
+        auto it = importedViews_.find(img);
+        if (it == importedViews_.end()) {
+            it = importedViews_.emplace(img, makeViews(id, img)).first;
+            device_.setName(img, VK_OBJECT_TYPE_IMAGE, r.name + " (imported)");
+        }
+        images_[id] = it->second;
+    }
+}
+
+void GraphExecutor::recordBarriers(VkCommandBuffer cmd, const std::vector<BarrierPlan>& barriers) {
+    std::vector<VkImageMemoryBarrier2> imageBarriers;
+    std::vector<VkBufferMemoryBarrier2> bufferBarriers;
+    for (const BarrierPlan& b : barriers) {
+        const ResourceDecl& r = graph_.resource(b.resource);
+        if (b.buffer) {
+            VkBufferMemoryBarrier2 bb{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
+            bb.srcStageMask = b.srcStages;
+            bb.srcAccessMask = b.srcAccess;
+            bb.dstStageMask = b.dstStages;
+            bb.dstAccessMask = b.dstAccess;
+            bb.srcQueueFamilyIndex = bb.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+            bb.buffer = buffers_[b.resource];
+            bb.offset = 0;
+            bb.size = VK_WHOLE_SIZE;
+            bufferBarriers.push_back(bb);
+        } else {
+            VkImageMemoryBarrier2 ib{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+            ib.srcStageMask = b.srcStages;
+            ib.srcAccessMask = b.srcAccess;
+            ib.dstStageMask = b.dstStages;
+            ib.dstAccessMask = b.dstAccess;
+            ib.oldLayout = b.oldLayout;
+            ib.newLayout = b.newLayout;
+            ib.srcQueueFamilyIndex = ib.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+            ib.image = images_[b.resource].image;
+            ib.subresourceRange = {fullAspect(r.image.format), 0, r.image.mipLevels, 0,
+                                   r.image.arrayLayers};
+            imageBarriers.push_back(ib);
+        }
+    }
+    if (imageBarriers.empty() && bufferBarriers.empty()) return;
+    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dep.imageMemoryBarrierCount = static_cast<uint32_t>(imageBarriers.size());
+    dep.pImageMemoryBarriers = imageBarriers.data();
+    dep.bufferMemoryBarrierCount = static_cast<uint32_t>(bufferBarriers.size());
+    dep.pBufferMemoryBarriers = bufferBarriers.data();
+    vkCmdPipelineBarrier2(cmd, &dep);
+}
+
+void GraphExecutor::recordPass(VkCommandBuffer cmd, uint32_t position) {
+    const PassPlan& plan = compiled_.passes[position];
+    PassDecl& pass = graph_.passes()[plan.pass];
+    device_.beginLabel(cmd, pass.name);
+    vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, queries_, 2 * position);
+    recordBarriers(cmd, plan.barriers);
+
+    PassContext ctx(*this, position, cmd);
+    if (pass.type == PassType::Graphics) {
+        auto attachment = [&](const AttachmentPlan& a, VkImageView view) {
+            VkRenderingAttachmentInfo info{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+            info.imageView = view;
+            info.imageLayout = a.layout;
+            info.loadOp = a.load;
+            info.storeOp = a.store;
+            info.clearValue = a.clear;
+            return info;
+        };
+        std::vector<VkRenderingAttachmentInfo> colors;
+        for (const auto& c : plan.colors) colors.push_back(attachment(c, images_[c.resource].full));
+        VkRenderingAttachmentInfo depth{}, stencil{};
+        VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
+        info.renderArea = {{0, 0}, plan.renderExtent};
+        info.layerCount = 1;
+        info.colorAttachmentCount = static_cast<uint32_t>(colors.size());
+        info.pColorAttachments = colors.data();
+        if (plan.depth) {
+            depth = attachment(*plan.depth, images_[plan.depth->resource].full);
+            info.pDepthAttachment = &depth;
+        }
+        if (plan.stencil) {
+            stencil = attachment(*plan.stencil, images_[plan.stencil->resource].full);
+            info.pStencilAttachment = &stencil;
+        }
+        vkCmdBeginRendering(cmd, &info);
+        VkViewport viewport{0.0f, 0.0f, static_cast<float>(plan.renderExtent.width),
+                            static_cast<float>(plan.renderExtent.height), 0.0f, 1.0f};
+        VkRect2D scissor{{0, 0}, plan.renderExtent};
+        vkCmdSetViewport(cmd, 0, 1, &viewport);
+        vkCmdSetScissor(cmd, 0, 1, &scissor);
+        if (pass.execute) pass.execute(ctx);
+        vkCmdEndRendering(cmd);
+    } else if (pass.execute) {
+        pass.execute(ctx);
+    }
+    vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, queries_, 2 * position + 1);
+    device_.endLabel(cmd);
+}
+
+void GraphExecutor::record(VkCommandBuffer cmd) {
+    refreshImports();
+    const uint32_t queryCount = 2 * static_cast<uint32_t>(compiled_.passes.size());
+    if (queryCount) vkCmdResetQueryPool(cmd, queries_, 0, queryCount);
+    device_.beginLabel(cmd, "render graph");
+    // Import stages and access may change per frame (layouts may not), so the barriers that
+    // wait on or hand back an import are patched here.
+    for (uint32_t pos = 0; pos < compiled_.passes.size(); ++pos) {
+        PassPlan& plan = compiled_.passes[pos];
+        for (auto& b : plan.barriers) {
+            const ResourceDecl& r = graph_.resource(b.resource);
+            if (!r.imported || compiled_.resources[b.resource].firstPass != pos) continue;
+            if (r.buffer) {
+                b.srcStages = r.importedBuffer.initialStages;
+                b.srcAccess = r.importedBuffer.initialAccess;
+            } else {
+                b.srcStages = r.importedImage.initialStages;
+                b.srcAccess = r.importedImage.initialAccess;
+                b.oldLayout = r.importedImage.initialLayout;
+            }
+        }
+    }
+    for (uint32_t pos = 0; pos < compiled_.passes.size(); ++pos) recordPass(cmd, pos);
+    std::vector<BarrierPlan> finals = compiled_.finalBarriers;
+    for (auto& b : finals) {
+        const ResourceDecl& r = graph_.resource(b.resource);
+        if (compiled_.resources[b.resource].used) {
+            if (r.buffer) {
+                b.dstStages = r.importedBuffer.finalStages;
+                b.dstAccess = r.importedBuffer.finalAccess;
+            } else {
+                b.dstStages = r.importedImage.finalStages;
+                b.dstAccess = r.importedImage.finalAccess;
+                b.newLayout = r.importedImage.finalLayout;
+            }
+        } else if (!r.buffer) {
+            b.srcStages = r.importedImage.initialStages;
+            b.srcAccess = r.importedImage.initialAccess;
+            b.oldLayout = r.importedImage.initialLayout;
+            b.newLayout = r.importedImage.finalLayout;
+        }
+    }
+    recordBarriers(cmd, finals);
+    device_.endLabel(cmd);
+    recorded_ = true;
+}
+
+FrameTimings GraphExecutor::run() {
+    const VkDevice dev = device_.device();
+    RG_VK(vkResetCommandBuffer(cmd_, 0));
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    RG_VK(vkBeginCommandBuffer(cmd_, &begin));
+    record(cmd_);
+    RG_VK(vkEndCommandBuffer(cmd_));
+    VkCommandBufferSubmitInfo cbInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
+    cbInfo.commandBuffer = cmd_;
+    VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
+    submit.commandBufferInfoCount = 1;
+    submit.pCommandBufferInfos = &cbInfo;
+    RG_VK(vkQueueSubmit2(device_.queue(), 1, &submit, fence_));
+    RG_VK(vkWaitForFences(dev, 1, &fence_, VK_TRUE, UINT64_MAX));
+    RG_VK(vkResetFences(dev, 1, &fence_));
+    return readTimings();
+}
+
+FrameTimings GraphExecutor::readTimings() {
+    FrameTimings t;
+    const uint32_t n = static_cast<uint32_t>(compiled_.passes.size());
+    if (!recorded_ || n == 0) return t;
+    std::vector<uint64_t> stamps(2 * n);
+    RG_VK(vkGetQueryPoolResults(device_.device(), queries_, 0, 2 * n, stamps.size() * sizeof(uint64_t),
+                                stamps.data(), sizeof(uint64_t),
+                                VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+    const uint32_t bits = device_.timestampValidBits();
+    const uint64_t mask = bits >= 64 ? ~uint64_t{0} : ((uint64_t{1} << bits) - 1);
+    const double toMs = device_.timestampPeriodNs() * 1e-6;
+    for (uint32_t pos = 0; pos < n; ++pos) {
+        const uint64_t a = stamps[2 * pos] & mask, b = stamps[2 * pos + 1] & mask;
+        const uint64_t ticks = (b - a) & mask;
+        t.passes.push_back({graph_.passes()[compiled_.passes[pos].pass].name,
+                            static_cast<double>(ticks) * toMs});
+    }
+    const uint64_t ticks = ((stamps[2 * n - 1] & mask) - (stamps[0] & mask)) & mask;
+    t.totalMilliseconds = static_cast<double>(ticks) * toMs;
+    t.valid = true;
+    return t;
+}
+
+VkImage GraphExecutor::image(uint32_t resource) const { return images_.at(resource).image; }
+
+VkImageView GraphExecutor::view(uint32_t resource, VkImageAspectFlags aspect) const {
+    const ImageObjects& o = images_.at(resource);
+    if (aspect == VK_IMAGE_ASPECT_DEPTH_BIT && o.depth) return o.depth;
+    if (aspect == VK_IMAGE_ASPECT_STENCIL_BIT && o.stencil) return o.stencil;
+    return o.full;
+}
+
+VkBuffer GraphExecutor::buffer(uint32_t resource) const { return buffers_.at(resource); }
+
+// ---------------------------------------------------------------------------------------------
+
+const Device& PassContext::device() const { return executor_.device_; }
+
+const std::string& PassContext::passName() const {
+    return executor_.graph_.passes()[executor_.compiled_.passes[position_].pass].name;
+}
+
+VkImage PassContext::image(ImageRef ref) const { return executor_.image(ref.id); }
+
+VkImageView PassContext::view(ImageRef ref, VkImageAspectFlags aspect) const {
+    return executor_.view(ref.id, aspect);
+}
+
+VkImageLayout PassContext::layout(ImageRef ref) const {
+    for (const auto& s : executor_.compiled_.passes[position_].states)
+        if (s.resource == ref.id) return s.layout;
+    throw VulkanError("pass '" + passName() + "' asks for the layout of '" +
+                      executor_.graph_.resource(ref.id).name + "', which it did not declare");
+}
+
+VkExtent2D PassContext::extent(ImageRef ref) const {
+    return executor_.compiled_.resources.at(ref.id).extent;
+}
+
+VkFormat PassContext::format(ImageRef ref) const {
+    return executor_.graph_.resource(ref.id).image.format;
+}
+
+VkBuffer PassContext::buffer(BufferRef ref) const { return executor_.buffer(ref.id); }
+
+VkDeviceSize PassContext::size(BufferRef ref) const {
+    return executor_.graph_.resource(ref.id).bufferDesc.size;
+}
+
+VkExtent2D PassContext::renderExtent() const {
+    return executor_.compiled_.passes[position_].renderExtent;
+}
+
+const RenderingFormats& PassContext::renderingFormats() const {
+    return executor_.formats_[position_];
+}
+
+}  // namespace rg

@@ -1,0 +1,86 @@
+#pragma once
+// Realises a compiled graph on a device and runs it: memory blocks with transient resources bound
+// at their planned offsets, one command buffer per frame, barriers batched per pass, debug-utils
+// names and labels, and per-pass GPU timestamps. The executor is reused frame after frame until the
+// graph changes; only imported handles may change between frames (RenderGraph::updateImport).
+#include <vulkan/vulkan.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "compiled_graph.h"
+#include "device.h"
+#include "pass_context.h"
+#include "render_graph.h"
+
+namespace rg {
+
+struct PassTiming {
+    std::string name;
+    double milliseconds = 0.0;
+};
+
+struct FrameTimings {
+    std::vector<PassTiming> passes;  // execution order
+    double totalMilliseconds = 0.0;  // first pass start to last pass end
+    bool valid = false;
+};
+
+class GraphExecutor {
+public:
+    GraphExecutor(const Device& device, RenderGraph& graph, CompiledGraph compiled);
+    ~GraphExecutor();
+    GraphExecutor(const GraphExecutor&) = delete;
+    GraphExecutor& operator=(const GraphExecutor&) = delete;
+
+    // Records the frame into the executor's own command buffer, submits, waits, and returns the
+    // timings of this frame.
+    FrameTimings run();
+
+    // For engines that own submission: records the frame into `cmd`. Timings become available with
+    // readTimings() once the engine has waited for that submission.
+    void record(VkCommandBuffer cmd);
+    FrameTimings readTimings();
+
+    const CompiledGraph& compiled() const { return compiled_; }
+    const RenderGraph& graph() const { return graph_; }
+    const Device& device() const { return device_; }
+
+    // Resolved objects (also what PassContext hands out).
+    VkImage image(uint32_t resource) const;
+    VkImageView view(uint32_t resource, VkImageAspectFlags aspect) const;
+    VkBuffer buffer(uint32_t resource) const;
+
+private:
+    friend class PassContext;
+    struct ImageObjects {
+        VkImage image = VK_NULL_HANDLE;
+        VkImageView full = VK_NULL_HANDLE;
+        VkImageView depth = VK_NULL_HANDLE;
+        VkImageView stencil = VK_NULL_HANDLE;
+    };
+
+    void destroy();
+    void createMemory();
+    ImageObjects makeViews(uint32_t resource, VkImage image);
+    void refreshImports();
+    void recordBarriers(VkCommandBuffer cmd, const std::vector<BarrierPlan>& barriers);
+    void recordPass(VkCommandBuffer cmd, uint32_t position);
+
+    const Device& device_;
+    RenderGraph& graph_;
+    CompiledGraph compiled_;
+    std::vector<VkDeviceMemory> blocks_;
+    std::vector<ImageObjects> images_;  // by resource; imported ones refreshed per frame
+    std::vector<VkBuffer> buffers_;
+    std::map<VkImage, ImageObjects> importedViews_;  // engine images seen so far
+    std::vector<RenderingFormats> formats_;          // by pass position
+    VkQueryPool queries_ = VK_NULL_HANDLE;
+    VkCommandPool pool_ = VK_NULL_HANDLE;
+    VkCommandBuffer cmd_ = VK_NULL_HANDLE;
+    VkFence fence_ = VK_NULL_HANDLE;
+    bool recorded_ = false;
+};
+
+}  // namespace rg

@@ -1,0 +1,116 @@
+#include "memory_placement.h"
+
+#include <algorithm>
+#include <numeric>
+#include <string>
+
+namespace rg {
+namespace {
+
+VkDeviceSize alignUp(VkDeviceSize v, VkDeviceSize a) { return a <= 1 ? v : (v + a - 1) / a * a; }
+VkDeviceSize alignDown(VkDeviceSize v, VkDeviceSize a) { return a <= 1 ? v : v / a * a; }
+
+struct Range {
+    VkDeviceSize begin;
+    VkDeviceSize end;
+};
+
+// The memory a placed neighbour keeps from `item`: its own range, widened to whole granularity
+// pages when the two differ in tiling.
+Range blockedRange(const PlacementItem& neighbour, VkDeviceSize offset, const PlacementItem& item,
+                   VkDeviceSize granularity) {
+    Range r{offset, offset + neighbour.size};
+    if (neighbour.linear != item.linear) {
+        r.begin = alignDown(r.begin, granularity);
+        r.end = alignUp(r.end, granularity);
+    }
+    return r;
+}
+
+}  // namespace
+
+bool lifetimesOverlap(const PlacementItem& a, const PlacementItem& b) {
+    return a.first <= b.last && b.first <= a.last;
+}
+
+PlacementResult placeResources(const std::vector<PlacementItem>& items, VkDeviceSize granularity,
+                               bool aliasing) {
+    PlacementResult result;
+    result.placements.resize(items.size());
+    std::vector<uint32_t> blockOfType;  // memory type -> block index (one block per type)
+    auto blockFor = [&](uint32_t memoryType) {
+        if (memoryType >= blockOfType.size()) blockOfType.resize(memoryType + 1, kInvalidIndex);
+        if (blockOfType[memoryType] == kInvalidIndex) {
+            blockOfType[memoryType] = static_cast<uint32_t>(result.blocks.size());
+            result.blocks.push_back({memoryType, 0});
+        }
+        return blockOfType[memoryType];
+    };
+
+    std::vector<uint32_t> order(items.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+        if (items[a].size != items[b].size) return items[a].size > items[b].size;
+        return items[a].first < items[b].first;
+    });
+
+    std::vector<uint32_t> placed;
+    for (uint32_t i : order) {
+        const PlacementItem& item = items[i];
+        const uint32_t block = blockFor(item.memoryType);
+        std::vector<Range> busy;
+        for (uint32_t j : placed) {
+            if (result.placements[j].block != block) continue;
+            if (aliasing && !lifetimesOverlap(items[j], item)) continue;
+            busy.push_back(blockedRange(items[j], result.placements[j].offset, item, granularity));
+        }
+        std::sort(busy.begin(), busy.end(),
+                  [](const Range& a, const Range& b) { return a.begin < b.begin; });
+
+        // Walk the gaps between busy ranges; keep the tightest one the item fits in.
+        VkDeviceSize cursor = 0;
+        VkDeviceSize bestOffset = 0, bestSlack = ~VkDeviceSize{0};
+        bool found = false;
+        for (const Range& r : busy) {
+            const VkDeviceSize start = alignUp(cursor, item.alignment);
+            if (r.begin > start && r.begin - start >= item.size) {
+                const VkDeviceSize slack = r.begin - start - item.size;
+                if (slack < bestSlack) {
+                    bestSlack = slack;
+                    bestOffset = start;
+                    found = true;
+                }
+            }
+            cursor = std::max(cursor, r.end);
+        }
+        if (!found) bestOffset = alignUp(cursor, item.alignment);
+
+        result.placements[i] = {block, bestOffset};
+        result.blocks[block].size = std::max(result.blocks[block].size, bestOffset + item.size);
+        placed.push_back(i);
+    }
+    return result;
+}
+
+std::string checkPlacement(const std::vector<PlacementItem>& items, const PlacementResult& result,
+                           VkDeviceSize granularity) {
+    for (size_t a = 0; a < items.size(); ++a) {
+        const auto& pa = result.placements[a];
+        if (pa.offset % std::max<VkDeviceSize>(items[a].alignment, 1) != 0)
+            return "item " + std::to_string(a) + " is misaligned";
+        if (pa.offset + items[a].size > result.blocks.at(pa.block).size)
+            return "item " + std::to_string(a) + " ends beyond its block";
+        for (size_t b = a + 1; b < items.size(); ++b) {
+            const auto& pb = result.placements[b];
+            if (pa.block != pb.block || !lifetimesOverlap(items[a], items[b])) continue;
+            const Range rb = blockedRange(items[b], pb.offset, items[a], granularity);
+            const Range ra{pa.offset, pa.offset + items[a].size};
+            if (ra.begin < rb.end && rb.begin < ra.end)
+                return "items " + std::to_string(a) + " and " + std::to_string(b) +
+                       " are alive together and overlap in memory";
+        }
+    }
+    return {};
+}
+
+}  // namespace rg

@@ -1,0 +1,50 @@
+#pragma once
+// What a pass's execute callback receives: its command buffer (inside dynamic rendering for
+// graphics passes, with viewport and scissor set), and the Vulkan objects behind its handles.
+#include <vulkan/vulkan.h>
+
+#include <string>
+#include <vector>
+
+#include "device.h"
+#include "resources.h"
+
+namespace rg {
+
+class GraphExecutor;
+
+struct RenderingFormats {
+    std::vector<VkFormat> colors;
+    VkFormat depth = VK_FORMAT_UNDEFINED;
+    VkFormat stencil = VK_FORMAT_UNDEFINED;
+};
+
+class PassContext {
+public:
+    PassContext(GraphExecutor& executor, uint32_t position, VkCommandBuffer cmd)
+        : executor_(executor), position_(position), cmd_(cmd) {}
+
+    VkCommandBuffer cmd() const { return cmd_; }
+    const Device& device() const;
+    const std::string& passName() const;
+
+    VkImage image(ImageRef ref) const;
+    // Color images: the whole image. Depth-stencil images: both aspects (attachments); pass
+    // VK_IMAGE_ASPECT_DEPTH_BIT or _STENCIL_BIT for a view that samples one aspect.
+    VkImageView view(ImageRef ref, VkImageAspectFlags aspect = 0) const;
+    VkImageLayout layout(ImageRef ref) const;  // the layout the image is in during this pass
+    VkExtent2D extent(ImageRef ref) const;
+    VkFormat format(ImageRef ref) const;
+    VkBuffer buffer(BufferRef ref) const;
+    VkDeviceSize size(BufferRef ref) const;
+
+    VkExtent2D renderExtent() const;                 // graphics passes
+    const RenderingFormats& renderingFormats() const;  // for pipeline creation
+
+private:
+    GraphExecutor& executor_;
+    uint32_t position_;
+    VkCommandBuffer cmd_;
+};
+
+}  // namespace rg

@@ -1,0 +1,108 @@
+#pragma once
+// The declarative front of the runtime: resources and passes are declared here, then compiled
+// (compile.h) and executed (executor.h). Declaring never touches the GPU and never fails; every rule
+// is checked by the compiler so that one message can name the pass, the resource and the rule.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "pass_decl.h"
+#include "resources.h"
+
+namespace rg {
+
+struct ResourceDecl {
+    std::string name;
+    bool buffer = false;
+    bool imported = false;
+    ImageDesc image;          // transient images
+    BufferDesc bufferDesc;    // transient buffers
+    ImportedImage importedImage;
+    ImportedBuffer importedBuffer;
+    bool output = false;      // marked as a result: its producers are never culled
+    uint32_t versionCount = 1;
+};
+
+class RenderGraph;
+
+// Returned by RenderGraph::addPass; records the pass's uses. Writes return the new version, which
+// later readers must name.
+class PassBuilder {
+public:
+    PassBuilder(RenderGraph& graph, uint32_t pass) : graph_(&graph), pass_(pass) {}
+
+    void sampled(ImageRef image, VkPipelineStageFlags2 stages = 0, VkImageAspectFlags aspect = 0);
+    void storageRead(ImageRef image, VkPipelineStageFlags2 stages = 0);
+    [[nodiscard]] ImageRef storageWrite(ImageRef image, VkPipelineStageFlags2 stages = 0);
+    [[nodiscard]] ImageRef storageReadWrite(ImageRef image, VkPipelineStageFlags2 stages = 0);
+    [[nodiscard]] ImageRef colorAttachment(ImageRef image, LoadOp load,
+                                           VkClearColorValue clear = {});
+    void depthTest(ImageRef image);
+    [[nodiscard]] ImageRef depthWrite(ImageRef image, LoadOp load, float clearDepth = 1.0f);
+    void stencilTest(ImageRef image);
+    [[nodiscard]] ImageRef stencilWrite(ImageRef image, LoadOp load, uint32_t clearStencil = 0);
+    void transferSrc(ImageRef image);
+    [[nodiscard]] ImageRef transferDst(ImageRef image);
+
+    void uniformBuffer(BufferRef buffer, VkPipelineStageFlags2 stages = 0);
+    void storageBufferRead(BufferRef buffer, VkPipelineStageFlags2 stages = 0);
+    [[nodiscard]] BufferRef storageBufferWrite(BufferRef buffer, VkPipelineStageFlags2 stages = 0);
+    [[nodiscard]] BufferRef storageBufferReadWrite(BufferRef buffer,
+                                                   VkPipelineStageFlags2 stages = 0);
+    void transferSrc(BufferRef buffer);
+    [[nodiscard]] BufferRef transferDst(BufferRef buffer);
+
+    PassBuilder& execute(std::function<void(PassContext&)> fn);
+    PassBuilder& sideEffect();
+    uint32_t index() const { return pass_; }
+
+private:
+    ResourceUse& add(UseKind kind, bool buffer, uint32_t graph, uint32_t id, uint32_t version);
+    uint32_t writeVersion(ResourceUse& use);
+
+    RenderGraph* graph_;
+    uint32_t pass_;
+};
+
+class RenderGraph {
+public:
+    RenderGraph();
+
+    ImageRef createImage(std::string name, const ImageDesc& desc);
+    BufferRef createBuffer(std::string name, const BufferDesc& desc);
+    ImageRef importImage(std::string name, const ImportedImage& image);
+    BufferRef importBuffer(std::string name, const ImportedBuffer& buffer);
+    PassBuilder addPass(std::string name, PassType type);
+
+    // Keeps the passes that produce this version (and what they need) from being culled.
+    void markOutput(ImageRef image);
+    void markOutput(BufferRef buffer);
+
+    void setScreenExtent(VkExtent2D extent) { screen_ = extent; }
+    VkExtent2D screenExtent() const { return screen_; }
+
+    // Per-frame change of an import's handle or states. The format, extent and usage must stay what
+    // the graph was compiled with; anything else needs a new graph.
+    void updateImport(ImageRef image, const ImportedImage& desc);
+    void updateImport(BufferRef buffer, const ImportedBuffer& desc);
+
+    uint32_t id() const { return id_; }
+    const std::vector<ResourceDecl>& resources() const { return resources_; }
+    const std::vector<PassDecl>& passes() const { return passes_; }
+    std::vector<PassDecl>& passes() { return passes_; }
+    const ResourceDecl& resource(uint32_t id) const { return resources_.at(id); }
+
+    // The extent an image resolves to at the current screen size.
+    VkExtent2D imageExtent(uint32_t resource) const;
+
+private:
+    friend class PassBuilder;
+    uint32_t id_;
+    VkExtent2D screen_{0, 0};
+    std::vector<ResourceDecl> resources_;
+    std::vector<PassDecl> passes_;
+};
+
+}  // namespace rg

@@ -1,0 +1,24 @@
+#pragma once
+#include <vulkan/vulkan.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace rg {
+
+class VulkanError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+const char* resultName(VkResult result);
+
+// Throws VulkanError naming the call that failed and its result code.
+inline void check(VkResult result, const char* call) {
+    if (result != VK_SUCCESS)
+        throw VulkanError(std::string(call) + " failed: " + resultName(result));
+}
+
+}  // namespace rg
+
+#define RG_VK(call) ::rg::check((call), #call)
