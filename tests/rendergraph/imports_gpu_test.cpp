@@ -1,0 +1,124 @@
+// Engine-owned images imported into a graph: the graph renders into them, leaves them in the
+// layout the engine asked for, and follows a new VkImage each frame (a swapchain's rotation).
+#include <array>
+#include <cmath>
+
+#include "clear_color_frag.h"
+#include "fullscreen_vert.h"
+#include "rendergraph/compile.h"
+#include "rendergraph/device_caps_vulkan.h"
+#include "rendergraph/executor.h"
+#include "rendergraph/host_buffer.h"
+#include "rendergraph/pipeline.h"
+#include "rendergraph/vk_error.h"
+#include "support/gpu_test.h"
+
+using testing_support::GpuTest;
+
+namespace {
+
+struct EngineImage {
+    const rg::Device& dev;
+    VkImage image = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    EngineImage(const rg::Device& d, VkExtent2D e, const char* name) : dev(d) {
+        VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+        info.imageType = VK_IMAGE_TYPE_2D;
+        info.format = VK_FORMAT_R8G8B8A8_UNORM;
+        info.extent = {e.width, e.height, 1};
+        info.mipLevels = 1;
+        info.arrayLayers = 1;
+        info.samples = VK_SAMPLE_COUNT_1_BIT;
+        info.tiling = VK_IMAGE_TILING_OPTIMAL;
+        info.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+        RG_VK(vkCreateImage(dev.device(), &info, nullptr, &image));
+        dev.setName(image, VK_OBJECT_TYPE_IMAGE, name);
+        VkMemoryRequirements req;
+        vkGetImageMemoryRequirements(dev.device(), image, &req);
+        VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+        alloc.allocationSize = req.size;
+        alloc.memoryTypeIndex = dev.findMemoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+        RG_VK(vkAllocateMemory(dev.device(), &alloc, nullptr, &memory));
+        RG_VK(vkBindImageMemory(dev.device(), image, memory, 0));
+    }
+    ~EngineImage() {
+        vkDestroyImage(dev.device(), image, nullptr);
+        vkFreeMemory(dev.device(), memory, nullptr);
+    }
+};
+
+}  // namespace
+
+class ImportsGpu : public GpuTest {};
+
+TEST_F(ImportsGpu, RendersIntoEngineImagesAndLeavesThemInTheFinalLayout) {
+    const VkExtent2D size{24, 16};
+    EngineImage images[2] = {{dev(), size, "engine image 0"}, {dev(), size, "engine image 1"}};
+    rg::HostBuffer host(dev(), 4 * size.width * size.height, VK_BUFFER_USAGE_TRANSFER_DST_BIT, "engine readback");
+
+    auto describe = [&](VkImage img) {
+        rg::ImportedImage d;
+        d.image = img;
+        d.format = VK_FORMAT_R8G8B8A8_UNORM;
+        d.extent = size;
+        d.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+        d.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+        d.finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+        d.finalStages = VK_PIPELINE_STAGE_2_COPY_BIT;
+        d.finalAccess = VK_ACCESS_2_TRANSFER_READ_BIT;
+        return d;
+    };
+    auto pipeline = std::make_shared<rg::Pipeline>();
+    auto colorValue = std::make_shared<std::array<float, 4>>();
+    rg::RenderGraph g;
+    rg::ImageRef target = g.importImage("engine color", describe(images[0].image));
+    {
+        auto p = g.addPass("fill engine image", rg::PassType::Graphics);
+        (void)p.colorAttachment(target, rg::LoadOp::DontCare);
+        p.execute([pipeline, colorValue](rg::PassContext& ctx) {
+            if (!*pipeline) {
+                rg::GraphicsPipelineDesc d;
+                d.vertex = rg::spirv(ls_spirv::fullscreen_vert);
+                d.fragment = rg::spirv(ls_spirv::clear_color_frag);
+                d.pushConstantBytes = 16;
+                d.formats = ctx.renderingFormats();
+                *pipeline = rg::Pipeline::graphics(ctx.device(), "fill engine image", d);
+            }
+            pipeline->bind(ctx.cmd());
+            pipeline->push(ctx.cmd(), *colorValue);
+            vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
+        });
+    }
+    const rg::VulkanDeviceCaps caps(dev());
+    rg::GraphExecutor exec(dev(), g, rg::compile(g, caps));
+
+    for (int frame = 0; frame < 4; ++frame) {
+        const EngineImage& img = images[frame % 2];
+        g.updateImport(target, describe(img.image));
+        *colorValue = {static_cast<float>(frame) * 0.25f, 1.0f, 0.0f, 1.0f};
+        exec.run();
+        // The engine's own use afterwards: a copy that expects TRANSFER_SRC_OPTIMAL.
+        dev().submitAndWait([&](VkCommandBuffer cmd) {
+            VkBufferImageCopy region{};
+            region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+            region.imageExtent = {size.width, size.height, 1};
+            vkCmdCopyImageToBuffer(cmd, img.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, host.buffer(), 1, &region);
+            VkMemoryBarrier2 toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+            toHost.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
+            toHost.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+            toHost.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
+            toHost.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
+            VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+            dep.memoryBarrierCount = 1;
+            dep.pMemoryBarriers = &toHost;
+            vkCmdPipelineBarrier2(cmd, &dep);
+        });
+        const auto* px = static_cast<const uint8_t*>(host.data());
+        const int expectedRed = static_cast<int>(std::lround(frame * 0.25 * 255.0));
+        for (uint32_t i = 0; i < size.width * size.height; ++i) {
+            ASSERT_NEAR(px[4 * i + 0], expectedRed, 1) << "frame " << frame << " pixel " << i;
+            ASSERT_EQ(px[4 * i + 1], 255);
+            ASSERT_EQ(px[4 * i + 2], 0);
+        }
+    }
+}

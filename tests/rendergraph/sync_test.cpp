@@ -1,0 +1,115 @@
+// Barriers derived from declared uses: stages, access and layouts between passes.
+#include "graph_test_util.h"
+
+using namespace rg;
+
+namespace {
+
+const BarrierPlan* barrierFor(const PassPlan& p, uint32_t resource) {
+    for (const auto& b : p.barriers)
+        if (b.resource == resource) return &b;
+    return nullptr;
+}
+
+}  // namespace
+
+TEST(Sync, ComputeWriteThenFragmentSample) {
+    RenderGraph g;
+    ImageRef x = g.createImage("x", ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT, 8, 8));
+    ImageRef out = g.createImage("out", ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT, 8, 8));
+    auto w = g.addPass("write", PassType::Compute);
+    x = w.storageWrite(x);
+    auto r = g.addPass("sample", PassType::Graphics);
+    r.sampled(x);
+    g.markOutput(r.colorAttachment(out, LoadOp::Clear));
+    const CompiledGraph c = compile(g, graph_test::caps());
+    const BarrierPlan* b = barrierFor(c.passes[1], x.id);
+    ASSERT_NE(b, nullptr);
+    EXPECT_EQ(b->srcStages, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
+    EXPECT_EQ(b->srcAccess, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    EXPECT_EQ(b->dstStages, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+    EXPECT_EQ(b->dstAccess, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    EXPECT_EQ(b->oldLayout, VK_IMAGE_LAYOUT_GENERAL);
+    EXPECT_EQ(b->newLayout, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    ASSERT_EQ(c.passes[1].colors.size(), 1u);
+    EXPECT_EQ(c.passes[1].colors[0].load, VK_ATTACHMENT_LOAD_OP_CLEAR);
+}
+
+TEST(Sync, StencilWriteThenStencilTest) {
+    RenderGraph g;
+    ImageRef ds = g.createImage("ds", ImageDesc::absolute(VK_FORMAT_D32_SFLOAT_S8_UINT, 8, 8));
+    ImageRef out = g.createImage("out", ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT, 8, 8));
+    auto m = g.addPass("mark", PassType::Graphics);
+    ds = m.stencilWrite(ds, LoadOp::Clear);
+    auto t = g.addPass("tested", PassType::Graphics);
+    t.stencilTest(ds);
+    g.markOutput(t.colorAttachment(out, LoadOp::Clear));
+    const CompiledGraph c = compile(g, graph_test::caps());
+    const BarrierPlan* b = barrierFor(c.passes[1], ds.id);
+    ASSERT_NE(b, nullptr);
+    EXPECT_EQ(b->srcAccess, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
+    EXPECT_EQ(b->dstAccess, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
+    EXPECT_EQ(b->oldLayout, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL);
+    EXPECT_EQ(b->newLayout, VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
+    ASSERT_TRUE(c.passes[1].stencil.has_value());
+    EXPECT_FALSE(c.passes[1].depth.has_value());
+    EXPECT_EQ(c.passes[1].stencil->load, VK_ATTACHMENT_LOAD_OP_LOAD);
+    EXPECT_EQ(c.passes[1].stencil->store, VK_ATTACHMENT_STORE_OP_NONE);  // test only
+}
+
+TEST(Sync, TwoReadersInOneLayoutNeedOneBarrier) {
+    RenderGraph g;
+    ImageRef x = g.createImage("x", ImageDesc::absolute(VK_FORMAT_R32_SFLOAT, 8, 8));
+    ImageRef a = g.createImage("a", ImageDesc::absolute(VK_FORMAT_R32_SFLOAT, 8, 8));
+    ImageRef b = g.createImage("b", ImageDesc::absolute(VK_FORMAT_R32_SFLOAT, 8, 8));
+    auto w = g.addPass("write", PassType::Compute);
+    x = w.storageWrite(x);
+    auto r1 = g.addPass("read 1", PassType::Compute);
+    r1.sampled(x);
+    g.markOutput(r1.storageWrite(a));
+    auto r2 = g.addPass("read 2", PassType::Compute);
+    r2.sampled(x);
+    g.markOutput(r2.storageWrite(b));
+    const CompiledGraph c = compile(g, graph_test::caps());
+    EXPECT_NE(barrierFor(c.passes[1], x.id), nullptr);
+    EXPECT_EQ(barrierFor(c.passes[2], x.id), nullptr);
+}
+
+TEST(Sync, WriteAfterReadWaitsForTheReader) {
+    RenderGraph g;
+    ImageRef x = g.createImage("x", ImageDesc::absolute(VK_FORMAT_R32_SFLOAT, 8, 8));
+    ImageRef y = g.createImage("y", ImageDesc::absolute(VK_FORMAT_R32_SFLOAT, 8, 8));
+    auto w = g.addPass("write", PassType::Compute);
+    x = w.storageWrite(x);
+    auto r = g.addPass("read", PassType::Compute);
+    r.sampled(x);
+    g.markOutput(r.storageWrite(y));
+    auto w2 = g.addPass("rewrite", PassType::Compute);
+    g.markOutput(w2.storageWrite(x));
+    const CompiledGraph c = compile(g, graph_test::caps());
+    const BarrierPlan* b = barrierFor(c.passes[2], x.id);
+    ASSERT_NE(b, nullptr);
+    EXPECT_NE(b->srcStages & VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, 0u);
+    EXPECT_EQ(b->newLayout, VK_IMAGE_LAYOUT_GENERAL);
+}
+
+TEST(Sync, ImportIsHandedBackInItsFinalLayout) {
+    RenderGraph g;
+    auto desc = graph_test::importedColor({8, 8}, VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT);
+    desc.initialLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    desc.initialStages = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+    desc.initialAccess = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
+    ImageRef engine = g.importImage("engine", desc);
+    auto p = g.addPass("composite", PassType::Compute);
+    (void)p.storageReadWrite(engine);
+    const CompiledGraph c = compile(g, graph_test::caps());
+    const BarrierPlan* first = barrierFor(c.passes[0], engine.id);
+    ASSERT_NE(first, nullptr);
+    EXPECT_EQ(first->oldLayout, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    EXPECT_EQ(first->newLayout, VK_IMAGE_LAYOUT_GENERAL);
+    EXPECT_EQ(first->srcStages, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+    ASSERT_EQ(c.finalBarriers.size(), 1u);
+    EXPECT_EQ(c.finalBarriers[0].oldLayout, VK_IMAGE_LAYOUT_GENERAL);
+    EXPECT_EQ(c.finalBarriers[0].newLayout, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    EXPECT_EQ(c.finalBarriers[0].srcAccess, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+}
