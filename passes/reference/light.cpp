@@ -1,0 +1,42 @@
+#include "light.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/exponential.hpp>
+#include <glm/geometric.hpp>
+
+namespace ls::ref {
+
+double effectiveRadius(const Light& light) {
+    return light.r0 > kMinLightRadius ? light.r0 : kMinLightRadius;  // NaN falls to the floor
+}
+
+bool insideSpot(const Light& light, const glm::dvec3& p) {
+    if (light.type != Light::Spot) return true;
+    const glm::dvec3 d = p - light.position;
+    const double r = glm::length(d);
+    if (!(r <= light.range)) return false;
+    const double axisLength = glm::length(light.direction);
+    // Written without dividing by r so that the apex itself counts as inside (0 >= 0).
+    return glm::dot(d, light.direction) >= std::cos(light.halfAngle) * r * axisLength;
+}
+
+glm::dvec3 irradiance(const Light& light, const Medium& medium, const glm::dvec3& p) {
+    if (light.type == Light::Directional) return light.intensity;
+    if (!insideSpot(light, p)) return glm::dvec3(0.0);
+    const double r = glm::length(light.position - p);
+    const double r0 = effectiveRadius(light);
+    return light.intensity * glm::exp(-medium.betaT() * r) / (r * r + r0 * r0);
+}
+
+double cosTheta(const Light& light, const glm::dvec3& v, const glm::dvec3& p) {
+    const glm::dvec3 toLight =
+        light.type == Light::Directional ? -light.direction : light.position - p;
+    const double r = glm::length(toLight);
+    if (r == 0.0) return 0.0;
+    // Rounding can push the quotient a hair past 1; the phase functions are defined on [-1, 1].
+    return std::clamp(glm::dot(v, toLight) / r, -1.0, 1.0);
+}
+
+}  // namespace ls::ref

@@ -1,0 +1,45 @@
+#pragma once
+
+#include <limits>
+
+#include <glm/vec3.hpp>
+
+#include "medium.h"
+
+namespace ls::ref {
+
+struct Light {
+    // Unscoped so that both Light::Spot and Light::Type::Spot read naturally.
+    enum Type { Directional, Spot, Point };
+
+    Type type = Point;
+    glm::dvec3 position{0.0};  // ignored by directional lights
+    // Directional: the direction the light travels. Spot: the cone axis, away from the apex.
+    glm::dvec3 direction{0.0, -1.0, 0.0};
+    // Directional: irradiance E (W/m^2). Point and spot: radiant intensity I (W/sr).
+    glm::dvec3 intensity{1.0};
+    double halfAngle = 0.5;                                  // spot cone half-angle alpha, radians
+    double range = std::numeric_limits<double>::infinity();  // spot only: Irr = 0 beyond it
+    double r0 = 0.05;                                        // light radius, metres
+};
+
+// r0 is floored here so that r0 = 0 (seed 000's singular formula) still keeps a ray through the
+// light finite, as MODEL.md requires; 1 micrometre changes nothing at the scale of a scene.
+inline constexpr double kMinLightRadius = 1.0e-6;
+[[nodiscard]] double effectiveRadius(const Light& light);
+
+// Irradiance reaching the point p, before visibility (W/m^2 per channel). Point and spot lights
+// attenuate by exp(-betaT r) / (r^2 + r0^2); spot lights are zero outside the single cone
+// (dot(p - L, axis) >= cos(alpha) |p - L|, boundary included, apex included) and beyond range.
+[[nodiscard]] glm::dvec3 irradiance(const Light& light, const Medium& medium, const glm::dvec3& p);
+
+// Cosine of the scattering angle at p for a viewer looking along the unit v: dot(v, normalize(L -
+// p)) for point and spot lights, dot(v, -direction) for directional ones. At p == L the direction
+// to the light is undefined; 0 is returned, the mean of the two one-sided limits +1 and -1 of a ray
+// through the light (a single point, so it never changes an integral).
+[[nodiscard]] double cosTheta(const Light& light, const glm::dvec3& v, const glm::dvec3& p);
+
+// Whether p is lit by the spot's cone and range, ignoring attenuation (true for other types).
+[[nodiscard]] bool insideSpot(const Light& light, const glm::dvec3& p);
+
+}  // namespace ls::ref
