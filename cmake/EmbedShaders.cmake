@@ -4,7 +4,10 @@
 #   ls_embed_shaders(TARGET <interface-lib> SOURCES a.comp b.frag ... [INCLUDE_DIRS dir ...])
 #
 # Each source <dir>/<name>.<stage> becomes <build>/shaders_gen/<name>_<stage>.h defining
-# `inline constexpr uint32_t <name>_<stage>[]` inside namespace ls_spirv. Includes are tracked with
+# `inline constexpr uint32_t <name>_<stage>[]` inside namespace ls_spirv. A source written as
+# `path@variant@DEF1=1,DEF2=1` is compiled with those macros as <name>_<variant>_<stage>: resource
+# bindings that only some lights need are variants, not specialisation constants, so a pipeline
+# never declares a descriptor it is not given. Includes are tracked with
 # glslang's depfile so editing a shared .glsl file rebuilds its users.
 function(ls_embed_shaders)
   cmake_parse_arguments(ARG "" "TARGET" "SOURCES;INCLUDE_DIRS" ${ARGN})
@@ -15,17 +18,33 @@ function(ls_embed_shaders)
     list(APPEND include_flags -I${dir})
   endforeach()
   set(headers)
-  foreach(src ${ARG_SOURCES})
+  foreach(item ${ARG_SOURCES})
+    string(REPLACE "@" ";" parts "${item}")
+    list(GET parts 0 src)
+    list(LENGTH parts nparts)
+    set(variant "")
+    set(define_flags)
+    if(nparts GREATER 1)
+      list(GET parts 1 variant)
+      set(variant "_${variant}")
+    endif()
+    if(nparts GREATER 2)
+      list(GET parts 2 defs)
+      string(REPLACE "," ";" defs "${defs}")
+      foreach(d ${defs})
+        list(APPEND define_flags -D${d})
+      endforeach()
+    endif()
     get_filename_component(abs ${src} ABSOLUTE)
     get_filename_component(name ${src} NAME_WE)
     get_filename_component(ext ${src} LAST_EXT)
     string(SUBSTRING ${ext} 1 -1 stage)
-    set(symbol ${name}_${stage})
+    set(symbol ${name}${variant}_${stage})
     set(spv_header ${out_dir}/${symbol}.spv.inc)
     set(header ${out_dir}/${symbol}.h)
     add_custom_command(
       OUTPUT ${spv_header}
-      COMMAND Vulkan::glslangValidator --quiet --target-env vulkan1.3 ${include_flags}
+      COMMAND Vulkan::glslangValidator --quiet --target-env vulkan1.3 ${include_flags} ${define_flags}
               --depfile ${spv_header}.d --vn ls_spirv_raw_${symbol} -o ${spv_header} ${abs}
       DEPENDS ${abs}
       DEPFILE ${spv_header}.d

@@ -133,9 +133,36 @@ Device::Device(const DeviceOptions& options) : echo_(options.echoMessages) {
     }
 }
 
+Device::Device(const ExternalDevice& external) : echo_(false) {
+    if (!external.instance || !external.physical || !external.device || !external.queue)
+        throw VulkanError("an external device needs its instance, physical device, device and queue");
+    owns_ = false;
+    instance_ = external.instance;
+    physical_ = external.physical;
+    device_ = external.device;
+    queue_ = external.queue;
+    queueFamily_ = external.queueFamily;
+    try {
+        loadProperties();
+        if (properties_.apiVersion < VK_API_VERSION_1_3)
+            throw VulkanError("the engine's device '" + name() + "' does not offer Vulkan 1.3");
+        loadFunctions();
+    } catch (...) {
+        destroy();
+        throw;
+    }
+}
+
 Device::~Device() { destroy(); }
 
 void Device::destroy() {
+    if (!owns_) {
+        if (device_ && oneShotPool_) vkDestroyCommandPool(device_, oneShotPool_, nullptr);
+        oneShotPool_ = VK_NULL_HANDLE;
+        device_ = VK_NULL_HANDLE;
+        instance_ = VK_NULL_HANDLE;
+        return;
+    }
     if (device_) {
         vkDeviceWaitIdle(device_);
         if (oneShotPool_) vkDestroyCommandPool(device_, oneShotPool_, nullptr);
@@ -258,6 +285,15 @@ void Device::pickPhysicalDevice(const DeviceOptions& options) {
                           (listing.empty() ? std::string(" none") : listing));
     }
     physical_ = best;
+    queueFamily_ = static_cast<uint32_t>(graphicsComputeFamily(physical_));
+    loadProperties();
+    if (options.announce)
+        std::cerr << "lightscatter: using Vulkan device '" << properties_.deviceName << "' ("
+                  << typeName(properties_.deviceType) << ", driver " << driverName_ << ")"
+                  << (validation_ ? ", validation on" : "") << "\n";
+}
+
+void Device::loadProperties() {
     vkGetPhysicalDeviceProperties(physical_, &properties_);
     vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
     VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
@@ -265,11 +301,36 @@ void Device::pickPhysicalDevice(const DeviceOptions& options) {
     p2.pNext = &driver;
     vkGetPhysicalDeviceProperties2(physical_, &p2);
     driverName_ = std::string(driver.driverName) + " " + driver.driverInfo;
-    queueFamily_ = static_cast<uint32_t>(graphicsComputeFamily(physical_));
-    if (options.announce)
-        std::cerr << "lightscatter: using Vulkan device '" << properties_.deviceName << "' ("
-                  << typeName(properties_.deviceType) << ", driver " << driverName_ << ")"
-                  << (validation_ ? ", validation on" : "") << "\n";
+    VkPhysicalDeviceFeatures supported;
+    vkGetPhysicalDeviceFeatures(physical_, &supported);
+    extendedFormats_ = supported.shaderStorageImageExtendedFormats;
+    uint32_t n = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(physical_, &n, nullptr);
+    std::vector<VkQueueFamilyProperties> families(n);
+    vkGetPhysicalDeviceQueueFamilyProperties(physical_, &n, families.data());
+    if (queueFamily_ >= n) throw VulkanError("queue family index out of range");
+    timestampBits_ = families[queueFamily_].timestampValidBits;
+}
+
+// Device-level entry points and the runtime's own command pool.
+void Device::loadFunctions() {
+    if (!setObjectName_) {
+        setObjectName_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
+            vkGetInstanceProcAddr(instance_, "vkSetDebugUtilsObjectNameEXT"));
+        cmdBeginLabel_ = reinterpret_cast<PFN_vkCmdBeginDebugUtilsLabelEXT>(
+            vkGetInstanceProcAddr(instance_, "vkCmdBeginDebugUtilsLabelEXT"));
+        cmdEndLabel_ = reinterpret_cast<PFN_vkCmdEndDebugUtilsLabelEXT>(
+            vkGetInstanceProcAddr(instance_, "vkCmdEndDebugUtilsLabelEXT"));
+    }
+    cmdPushDescriptorSet = reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(
+        vkGetDeviceProcAddr(device_, "vkCmdPushDescriptorSetKHR"));
+    if (!cmdPushDescriptorSet)
+        throw VulkanError("vkCmdPushDescriptorSetKHR is missing: enable VK_KHR_push_descriptor");
+    VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    pool.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+    pool.queueFamilyIndex = queueFamily_;
+    RG_VK(vkCreateCommandPool(device_, &pool, nullptr, &oneShotPool_));
+    setName(oneShotPool_, VK_OBJECT_TYPE_COMMAND_POOL, "one-shot command pool");
 }
 
 void Device::createDevice(const DeviceOptions& options) {
@@ -304,7 +365,6 @@ void Device::createDevice(const DeviceOptions& options) {
     features.features.samplerAnisotropy = supported.samplerAnisotropy;
     features.features.depthClamp = supported.depthClamp;
     features.features.fillModeNonSolid = supported.fillModeNonSolid;
-    extendedFormats_ = supported.shaderStorageImageExtendedFormats;
 
     const float priority = 1.0f;
     VkDeviceQueueCreateInfo queue{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
@@ -324,22 +384,7 @@ void Device::createDevice(const DeviceOptions& options) {
     RG_VK(vkCreateDevice(physical_, &info, nullptr, &device_));
     vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
     setName(queue_, VK_OBJECT_TYPE_QUEUE, "lightscatter queue");
-
-    uint32_t n = 0;
-    vkGetPhysicalDeviceQueueFamilyProperties(physical_, &n, nullptr);
-    std::vector<VkQueueFamilyProperties> families(n);
-    vkGetPhysicalDeviceQueueFamilyProperties(physical_, &n, families.data());
-    timestampBits_ = families[queueFamily_].timestampValidBits;
-
-    cmdPushDescriptorSet = reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(
-        vkGetDeviceProcAddr(device_, "vkCmdPushDescriptorSetKHR"));
-    if (!cmdPushDescriptorSet) throw VulkanError("vkCmdPushDescriptorSetKHR is missing");
-
-    VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-    pool.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
-    pool.queueFamilyIndex = queueFamily_;
-    RG_VK(vkCreateCommandPool(device_, &pool, nullptr, &oneShotPool_));
-    setName(oneShotPool_, VK_OBJECT_TYPE_COMMAND_POOL, "one-shot command pool");
+    loadFunctions();
 }
 
 uint32_t Device::findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags props) const {

@@ -23,9 +23,21 @@ struct DeviceOptions {
     bool swapchain = false;       // enable VK_KHR_swapchain on the device
 };
 
+// An engine's own Vulkan objects, wrapped without taking ownership (plugin integration).
+struct ExternalDevice {
+    VkInstance instance = VK_NULL_HANDLE;
+    VkPhysicalDevice physical = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;
+    VkQueue queue = VK_NULL_HANDLE;
+    uint32_t queueFamily = 0;
+};
+
 class Device {
 public:
     explicit Device(const DeviceOptions& options = {});
+    // Wraps an engine's device, which must have the features and extensions this runtime needs
+    // (Vulkan 1.3 synchronization2, dynamicRendering, maintenance4; VK_KHR_push_descriptor).
+    explicit Device(const ExternalDevice& external);
     ~Device();
     Device(const Device&) = delete;
     Device& operator=(const Device&) = delete;
@@ -70,6 +82,8 @@ private:
         VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT type,
         const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
     void destroy();
+    void loadProperties();
+    void loadFunctions();
     void createInstance(const DeviceOptions& options);
     void pickPhysicalDevice(const DeviceOptions& options);
     void createDevice(const DeviceOptions& options);
@@ -86,6 +100,7 @@ private:
     VkPhysicalDeviceMemoryProperties memory_{};
     std::string driverName_;
     bool validation_ = false;
+    bool owns_ = true;
     bool debugUtils_ = false;
     bool extendedFormats_ = false;
     bool echo_ = true;

@@ -1,0 +1,84 @@
+#include "pass_helpers.h"
+
+#include "brute_force_directional_color_frag.h"
+#include "brute_force_directional_frag.h"
+#include "brute_force_table_color_frag.h"
+#include "brute_force_table_frag.h"
+#include "fullscreen_vert.h"
+#include "ray_march_directional_color_frag.h"
+#include "ray_march_directional_color_trees_frag.h"
+#include "ray_march_directional_frag.h"
+#include "ray_march_directional_trees_frag.h"
+#include "ray_march_table_color_frag.h"
+#include "ray_march_table_color_trees_frag.h"
+#include "ray_march_table_frag.h"
+#include "ray_march_table_trees_frag.h"
+#include "unshadowed_directional_frag.h"
+#include "unshadowed_table_frag.h"
+
+namespace ls {
+
+rg::DescriptorPush frameSet(const rg::PassContext& ctx, rg::BufferRef constants) {
+    rg::DescriptorPush set;
+    set.uniform(0, ctx.buffer(constants));
+    return set;
+}
+
+rg::Binding sampledBinding(uint32_t binding) {
+    return {binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_ALL};
+}
+rg::Binding storageBinding(uint32_t binding) {
+    return {binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_ALL};
+}
+rg::Binding uniformBinding(uint32_t binding) {
+    return {binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_ALL};
+}
+
+rg::GraphicsPipelineDesc fullscreenPipeline(rg::ShaderCode fragment, const rg::PassContext& ctx,
+                                            std::vector<rg::Binding> bindings) {
+    rg::GraphicsPipelineDesc d;
+    d.vertex = rg::spirv(ls_spirv::fullscreen_vert);
+    d.fragment = fragment;
+    d.formats = ctx.renderingFormats();
+    d.bindings = std::move(bindings);
+    return d;
+}
+
+std::string pipelineKey(const std::string& name, const rg::PassContext& ctx,
+                        const std::string& variant) {
+    std::string key = name + "/" + variant;
+    const auto& f = ctx.renderingFormats();
+    for (VkFormat c : f.colors) key += "/c" + std::to_string(static_cast<int>(c));
+    key += "/d" + std::to_string(static_cast<int>(f.depth)) + "/s" +
+           std::to_string(static_cast<int>(f.stencil));
+    return key;
+}
+
+rg::ShaderCode marchShader(MarchShader which, const ScatterSpec& spec) {
+    const bool table = spec.light != LightKind::Directional;
+    const bool color = spec.lightColor;
+    switch (which) {
+        case MarchShader::RayMarch:
+            if (spec.minMaxTrees) {
+                if (table) return color ? rg::spirv(ls_spirv::ray_march_table_color_trees_frag)
+                                        : rg::spirv(ls_spirv::ray_march_table_trees_frag);
+                return color ? rg::spirv(ls_spirv::ray_march_directional_color_trees_frag)
+                             : rg::spirv(ls_spirv::ray_march_directional_trees_frag);
+            }
+            if (table) return color ? rg::spirv(ls_spirv::ray_march_table_color_frag)
+                                    : rg::spirv(ls_spirv::ray_march_table_frag);
+            return color ? rg::spirv(ls_spirv::ray_march_directional_color_frag)
+                         : rg::spirv(ls_spirv::ray_march_directional_frag);
+        case MarchShader::BruteForce:
+            if (table) return color ? rg::spirv(ls_spirv::brute_force_table_color_frag)
+                                    : rg::spirv(ls_spirv::brute_force_table_frag);
+            return color ? rg::spirv(ls_spirv::brute_force_directional_color_frag)
+                         : rg::spirv(ls_spirv::brute_force_directional_frag);
+        case MarchShader::Unshadowed:
+            return table ? rg::spirv(ls_spirv::unshadowed_table_frag)
+                         : rg::spirv(ls_spirv::unshadowed_directional_frag);
+    }
+    return {};
+}
+
+}  // namespace ls

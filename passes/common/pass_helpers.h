@@ -1,0 +1,34 @@
+#pragma once
+// Small helpers the node builders share: descriptor sets that start with the frame constants,
+// full-screen pipelines, workgroup counts, and the shader variant for a light.
+#include <string>
+#include <vector>
+
+#include "node_inputs.h"
+#include "rendergraph/pass_context.h"
+#include "rendergraph/pipeline.h"
+
+namespace ls {
+
+inline uint32_t groupCount(uint32_t n, uint32_t size) { return (n + size - 1) / size; }
+
+// A push set whose binding 0 is the frame-constants uniform buffer.
+rg::DescriptorPush frameSet(const rg::PassContext& ctx, rg::BufferRef constants);
+
+rg::Binding sampledBinding(uint32_t binding);
+rg::Binding storageBinding(uint32_t binding);
+rg::Binding uniformBinding(uint32_t binding);
+
+// A full-screen triangle pipeline for the pass's render targets.
+rg::GraphicsPipelineDesc fullscreenPipeline(rg::ShaderCode fragment, const rg::PassContext& ctx,
+                                            std::vector<rg::Binding> bindings);
+
+// Key for a pipeline: its name, its specialisation and the pass's target formats.
+std::string pipelineKey(const std::string& name, const rg::PassContext& ctx,
+                        const std::string& variant = {});
+
+// Shader variants of the marching shaders (see shaders/CMakeLists.txt).
+enum class MarchShader { RayMarch, BruteForce, Unshadowed };
+rg::ShaderCode marchShader(MarchShader which, const ScatterSpec& spec);
+
+}  // namespace ls

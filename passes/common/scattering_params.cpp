@@ -1,0 +1,75 @@
+#include "scattering_params.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ls {
+
+TableLayout tableLayoutFor(const MediumParams& medium, uint32_t width, uint32_t height) {
+    const glm::vec3 bt = medium.betaT();
+    const float maxBeta = std::max({bt.x, bt.y, bt.z});
+    // u = hEff * hScale spreads the rows over the distances where extinction changes the table;
+    // without extinction the table does not depend on h beyond r0, and any scale will do.
+    TableLayout t;
+    t.width = width;
+    t.height = height;
+    t.hScale = std::max(maxBeta, 1.0f / std::max(medium.maxDistance, 1.0f));
+    return t;
+}
+
+LightOnScreen projectLight(const CameraParams& camera, const LightParams& light) {
+    const glm::mat4 viewProj = camera.projection * camera.view;
+    const glm::vec4 clip = light.kind == LightKind::Directional
+                               ? viewProj * glm::vec4(-light.direction, 0.0f)
+                               : viewProj * glm::vec4(light.position, 1.0f);
+    LightOnScreen s;
+    s.wSign = clip.w < 0.0f ? -1.0f : 1.0f;
+    // A light in the camera's plane projects to infinity: keep its direction at a finite distance.
+    const float w = std::max(std::fabs(clip.w), 1e-6f) * s.wSign;
+    glm::vec2 ndc = glm::vec2(clip) / w;
+    const float len = glm::length(ndc);
+    if (len > 1e6f) ndc *= 1e6f / len;
+    s.ndc = ndc;
+    s.onScreen = s.wSign > 0.0f && std::fabs(ndc.x) <= 1.0f && std::fabs(ndc.y) <= 1.0f;
+    return s;
+}
+
+uint32_t treeLevels(uint32_t shadowMapSize) {
+    uint32_t levels = 0;
+    while ((2u << levels) <= shadowMapSize) ++levels;
+    return levels;  // level l (1..levels) has shadowMapSize >> l nodes
+}
+
+FrameConstants makeFrameConstants(const CameraParams& camera, const LightParams& light,
+                                  const MediumParams& medium, const EpipolarSettings& settings,
+                                  VkExtent2D screen, const TableLayout& table) {
+    FrameConstants f{};
+    f.viewProj = camera.projection * camera.view;
+    f.invViewProj = glm::inverse(f.viewProj);
+    f.lightViewProj = light.shadowViewProj;
+    const glm::mat4 invView = glm::inverse(camera.view);
+    f.cameraPos = glm::vec4(glm::vec3(invView[3]), camera.nearPlane);
+    f.cameraForward = glm::vec4(-glm::normalize(glm::vec3(invView[2])), camera.farPlane);
+    f.screenSize = {static_cast<float>(screen.width), static_cast<float>(screen.height),
+                    1.0f / static_cast<float>(screen.width), 1.0f / static_cast<float>(screen.height)};
+    f.lightPos = glm::vec4(light.position, 0.0f);
+    f.lightDir = glm::vec4(glm::normalize(light.direction), light.cosHalfAngle);
+    f.lightIntensity = glm::vec4(light.intensity, light.range);
+    const LightOnScreen ls = projectLight(camera, light);
+    f.lightScreen = {ls.ndc.x, ls.ndc.y, ls.wSign, ls.onScreen ? 1.0f : 0.0f};
+    f.betaR = glm::vec4(medium.betaR, medium.g);
+    f.betaM = glm::vec4(medium.betaM, medium.maxDistance);
+    f.betaT = glm::vec4(medium.betaT(), std::max(light.radius, 1e-6f));
+    f.depthInfo = {camera.reversedZ ? 1.0f : 0.0f, camera.infiniteFar ? 1.0f : 0.0f,
+                   camera.nearPlane, camera.farPlane};
+    const float size = static_cast<float>(std::max(light.shadowMapSize, 1u));
+    f.shadowInfo = {size, 1.0f / size, light.shadowReversedZ ? 1.0f : 0.0f, settings.shadowDepthBias};
+    f.epipolar = {static_cast<float>(settings.slices), static_cast<float>(settings.samples),
+                  static_cast<float>(settings.initialStep), settings.refinementThreshold};
+    f.epipolar2 = {settings.bilateralThreshold, static_cast<float>(settings.fixupMaxSteps),
+                   static_cast<float>(treeLevels(light.shadowMapSize)), 0.0f};
+    f.lutInfo = {table.hScale, static_cast<float>(table.width), static_cast<float>(table.height), 0.0f};
+    return f;
+}
+
+}  // namespace ls

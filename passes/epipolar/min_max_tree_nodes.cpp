@@ -1,0 +1,68 @@
+#include "common/pass_helpers.h"
+#include "epipolar_nodes.h"
+#include "min_max_first_level_comp.h"
+#include "min_max_next_level_comp.h"
+
+namespace ls {
+
+// One node per tree level: the first from the shadow map, each coarser one from the level below,
+// flip/flopping between the two textures (odd levels in one, even levels in the other). Later
+// levels keep what earlier levels wrote to the same texture, so they read-modify-write it.
+void addMinMaxTrees(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
+                    EpipolarTextures& t) {
+    const uint32_t n = s.shadowMapSize;
+    const uint32_t levels = treeLevels(n);
+    t.treeOdd = g.createImage("1D min/max trees (odd levels)",
+                              rg::ImageDesc::absolute(VK_FORMAT_R16G16_SFLOAT, n, s.slices));
+    t.treeEven = g.createImage("1D min/max trees (even levels)",
+                               rg::ImageDesc::absolute(VK_FORMAT_R16G16_SFLOAT, n, s.slices));
+    {
+        auto pass = g.addPass("min/max trees level 1", rg::PassType::Compute);
+        pass.uniformBuffer(in.constants);
+        pass.sampled(in.shadowMap, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
+        pass.sampled(t.sliceUvFrame);
+        t.treeOdd = pass.storageWrite(t.treeOdd);
+        const EpipolarTextures tex = t;
+        pass.execute([in, tex, s, n](rg::PassContext& ctx) {
+            const auto& p = in.shared->pipelines.compute(
+                "min/max trees level 1", rg::spirv(ls_spirv::min_max_first_level_comp),
+                {uniformBinding(0), sampledBinding(1), sampledBinding(2), storageBinding(3)}, 0, {});
+            p.bind(ctx.cmd());
+            frameSet(ctx, in.constants)
+                .sampled(1, ctx.view(in.shadowMap, VK_IMAGE_ASPECT_DEPTH_BIT), ctx.layout(in.shadowMap),
+                         in.shared->samplers.nearest())
+                .sampled(2, ctx.view(tex.sliceUvFrame), ctx.layout(tex.sliceUvFrame),
+                         in.shared->samplers.nearest())
+                .storage(3, ctx.view(tex.treeOdd))
+                .push(ctx.device(), ctx.cmd(), p);
+            vkCmdDispatch(ctx.cmd(), groupCount(n / 2, 64), s.slices, 1);
+        });
+    }
+    bool evenWritten = false;
+    for (uint32_t level = 2; level <= levels; ++level) {
+        const bool toEven = (level % 2) == 0;
+        auto pass = g.addPass("min/max trees level " + std::to_string(level), rg::PassType::Compute);
+        rg::ImageRef& src = toEven ? t.treeOdd : t.treeEven;
+        rg::ImageRef& dst = toEven ? t.treeEven : t.treeOdd;
+        pass.storageRead(src);
+        const bool firstWrite = toEven && !evenWritten;
+        dst = firstWrite ? pass.storageWrite(dst) : pass.storageReadWrite(dst);
+        if (toEven) evenWritten = true;
+        const rg::ImageRef finer = src, coarser = dst;
+        pass.execute([in, finer, coarser, level, n, s](rg::PassContext& ctx) {
+            const auto& p = in.shared->pipelines.compute(
+                "min/max trees next level", rg::spirv(ls_spirv::min_max_next_level_comp),
+                {storageBinding(0), storageBinding(1)}, 8, {});
+            p.bind(ctx.cmd());
+            rg::DescriptorPush()
+                .storage(0, ctx.view(finer))
+                .storage(1, ctx.view(coarser))
+                .push(ctx.device(), ctx.cmd(), p);
+            const int32_t push[2] = {static_cast<int32_t>(level), static_cast<int32_t>(n)};
+            p.push(ctx.cmd(), push);
+            vkCmdDispatch(ctx.cmd(), groupCount(n >> level, 64), s.slices, 1);
+        });
+    }
+}
+
+}  // namespace ls

@@ -1,0 +1,64 @@
+#include "common/pass_helpers.h"
+#include "epipolar_nodes.h"
+
+namespace ls {
+
+void addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
+                         EpipolarTextures& t) {
+    t.marched = g.createImage("in-scattering (ray-marched samples)",
+                              rg::ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT, s.samples, s.slices));
+    const bool trees = t.treeOdd.valid();
+    auto pass = g.addPass(trees ? "ray march with min/max trees" : "ray march", rg::PassType::Graphics);
+    pass.uniformBuffer(in.constants);
+    pass.sampled(t.coordinates);
+    pass.sampled(t.epipolarZ);
+    pass.sampled(t.sliceUvFrame);
+    if (trees) {
+        pass.sampled(t.treeOdd);
+        pass.sampled(t.treeEven);
+    }
+    pass.sampled(in.shadowMap, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
+    if (in.table.valid()) pass.sampled(in.table);
+    if (in.lightColor.valid()) pass.sampled(in.lightColor);
+    pass.stencilTest(t.epipolarStencil);
+    t.marched = pass.colorAttachment(t.marched, rg::LoadOp::Clear);
+    const EpipolarTextures tex = t;
+    pass.execute([in, tex, trees](rg::PassContext& ctx) {
+        ScatterSpec spec = in.shared->spec;
+        spec.minMaxTrees = trees;
+        std::vector<rg::Binding> b{uniformBinding(0), sampledBinding(1), sampledBinding(2),
+                                   sampledBinding(3), sampledBinding(6)};
+        if (trees) {
+            b.push_back(sampledBinding(4));
+            b.push_back(sampledBinding(5));
+        }
+        if (in.table.valid()) b.push_back(sampledBinding(7));
+        if (in.lightColor.valid()) b.push_back(sampledBinding(8));
+        auto desc = fullscreenPipeline(marchShader(MarchShader::RayMarch, spec), ctx, b);
+        desc.specialization = spec.constants();
+        desc.stencilTest = true;
+        desc.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP,
+                        VK_COMPARE_OP_EQUAL, 0xff, 0, 2};
+        const auto& p = in.shared->pipelines.graphics(pipelineKey("ray march", ctx, spec.key()), desc);
+        p.bind(ctx.cmd());
+        vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 2);
+        const auto& sm = in.shared->samplers;
+        auto set = frameSet(ctx, in.constants);
+        set.sampled(1, ctx.view(tex.coordinates), ctx.layout(tex.coordinates), sm.nearest())
+            .sampled(2, ctx.view(tex.epipolarZ), ctx.layout(tex.epipolarZ), sm.nearest())
+            .sampled(3, ctx.view(tex.sliceUvFrame), ctx.layout(tex.sliceUvFrame), sm.nearest())
+            .sampled(6, ctx.view(in.shadowMap, VK_IMAGE_ASPECT_DEPTH_BIT), ctx.layout(in.shadowMap),
+                     sm.nearest());
+        if (trees) {
+            set.sampled(4, ctx.view(tex.treeOdd), ctx.layout(tex.treeOdd), sm.nearest())
+                .sampled(5, ctx.view(tex.treeEven), ctx.layout(tex.treeEven), sm.nearest());
+        }
+        if (in.table.valid()) set.sampled(7, ctx.view(in.table), ctx.layout(in.table), sm.nearest());
+        if (in.lightColor.valid())
+            set.sampled(8, ctx.view(in.lightColor), ctx.layout(in.lightColor), sm.linear());
+        set.push(ctx.device(), ctx.cmd(), p);
+        vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
+    });
+}
+
+}  // namespace ls

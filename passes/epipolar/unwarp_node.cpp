@@ -1,0 +1,55 @@
+#include "common/pass_helpers.h"
+#include "epipolar_nodes.h"
+#include "unwarp_frag.h"
+
+namespace ls {
+
+// Two draws in one pass: the bilateral unwarp writes every pixel; then, with fix-up on, a
+// stencil-only draw marks the pixels that no epipolar sample could serve.
+void addUnwarp(rg::RenderGraph& g, const NodeInputs& in, bool markForFixup, EpipolarTextures& t) {
+    t.screenInscatter = g.createImage("in-scattering (screen)",
+                                      rg::ImageDesc::screen(VK_FORMAT_R16G16B16A16_SFLOAT));
+    auto pass = g.addPass("unwarp epipolar to screen", rg::PassType::Graphics);
+    pass.uniformBuffer(in.constants);
+    pass.sampled(t.sliceEndPoints);
+    pass.sampled(t.epipolarZ);
+    pass.sampled(t.interpolated);
+    pass.sampled(t.cameraZ);
+    t.screenInscatter = pass.colorAttachment(t.screenInscatter, rg::LoadOp::DontCare);
+    if (markForFixup) {
+        t.cameraStencil = g.createImage("camera depth-stencil", rg::ImageDesc::screen(in.depthStencil));
+        t.cameraStencil = pass.stencilWrite(t.cameraStencil, rg::LoadOp::Clear, 0);
+    }
+    const EpipolarTextures tex = t;
+    pass.execute([in, tex, markForFixup](rg::PassContext& ctx) {
+        const std::vector<rg::Binding> b{uniformBinding(0), sampledBinding(1), sampledBinding(2),
+                                         sampledBinding(3), sampledBinding(4)};
+        auto desc = fullscreenPipeline(rg::spirv(ls_spirv::unwarp_frag), ctx, b);
+        desc.pushConstantBytes = 4;
+        const auto& write = in.shared->pipelines.graphics(pipelineKey("unwarp", ctx), desc);
+        const auto& sm = in.shared->samplers;
+        write.bind(ctx.cmd());
+        frameSet(ctx, in.constants)
+            .sampled(1, ctx.view(tex.sliceEndPoints), ctx.layout(tex.sliceEndPoints), sm.nearest())
+            .sampled(2, ctx.view(tex.epipolarZ), ctx.layout(tex.epipolarZ), sm.nearest())
+            .sampled(3, ctx.view(tex.interpolated), ctx.layout(tex.interpolated), sm.nearest())
+            .sampled(4, ctx.view(tex.cameraZ), ctx.layout(tex.cameraZ), sm.nearest())
+            .push(ctx.device(), ctx.cmd(), write);
+        int32_t mode = 0;
+        write.push(ctx.cmd(), mode);
+        vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
+        if (!markForFixup) return;
+        desc.colorWriteMask = 0;
+        desc.stencilTest = true;
+        desc.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_REPLACE, VK_STENCIL_OP_KEEP,
+                        VK_COMPARE_OP_ALWAYS, 0xff, 0xff, 1};
+        const auto& mark = in.shared->pipelines.graphics(pipelineKey("unwarp mark", ctx), desc);
+        mark.bind(ctx.cmd());
+        vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 1);
+        mode = 1;
+        mark.push(ctx.cmd(), mode);
+        vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
+    });
+}
+
+}  // namespace ls

@@ -1,0 +1,103 @@
+// The memory budget of the epipolar method for a profile, computed without a GPU: the frame graph
+// is built and compiled against the offline device model, so the numbers are the compiler's own
+// (per-resource sizes, the sum without aliasing, the peak with it).
+#include "frame_graph.h"
+#include "frame_setup.h"
+#include "lightscatter.h"
+#include "rendergraph/compile.h"
+#include "rendergraph/format_info.h"
+
+namespace lightscatter {
+namespace {
+
+// Seed 000's memory column: 2560x1600 (GTX 680) for the three main profiles, 1366x768 for the
+// weaker-device set (the Intel HD table at 1024x768 repeats the same figures).
+std::optional<SeedFigure> seedFigure(Profile p) {
+    switch (p) {
+        case Profile::HighQuality: return SeedFigure{2560, 1600, 88.0, 5.986};
+        case Profile::Balanced: return SeedFigure{2560, 1600, 44.0, 3.269};
+        case Profile::HighPerformance: return SeedFigure{2560, 1600, 18.0, 2.267};
+        case Profile::LowHighQuality: return SeedFigure{1366, 768, 44.0, 18.9};
+        case Profile::LowBalanced: return SeedFigure{1366, 768, 11.0, 8.37};
+        case Profile::LowHighPerformance: return SeedFigure{1366, 768, 4.5, 5.38};
+        default: return std::nullopt;
+    }
+}
+
+}  // namespace
+
+Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint32_t shadowMapSize,
+              LightType light, const Settings* custom) {
+    if (screenWidth == 0 || screenHeight == 0 || screenWidth > 16384 || screenHeight > 16384)
+        throw InvalidInput("lightscatter: budget screen " + std::to_string(screenWidth) + "x" +
+                           std::to_string(screenHeight) + ": each side must be in [1, 16384]");
+    if (shadowMapSize < 2 || shadowMapSize > 16384)
+        throw InvalidInput("lightscatter: budget shadow-map size " + std::to_string(shadowMapSize) +
+                           ": must be in [2, 16384]");
+    const Settings s = profile == Profile::Custom ? (custom ? *custom : Settings{}) : profileSettings(profile);
+    detail::checkSettings(s);
+
+    detail::GraphConfig c;
+    c.method = Method::Epipolar;
+    c.light = static_cast<ls::LightKind>(static_cast<int>(light));
+    c.shadowed = light != LightType::Point;
+    c.minMaxTrees = s.minMaxTrees;
+    c.fixup = s.fixup;
+    c.slices = s.slices;
+    c.samples = s.samplesPerSlice;
+    c.shadowMapSize = shadowMapSize;
+    c.screen = {screenWidth, screenHeight};
+    const rg::OfflineDeviceCaps caps;
+    c.depthStencil = rg::firstSupported(caps, {VK_FORMAT_D24_UNORM_S8_UINT, VK_FORMAT_D32_SFLOAT_S8_UINT},
+                                        VK_FORMAT_FEATURE_2_DEPTH_STENCIL_ATTACHMENT_BIT);
+    const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    c.depth = {VK_FORMAT_D32_SFLOAT, c.screen, VK_IMAGE_USAGE_SAMPLED_BIT, ro, ro};
+    c.color = {VK_FORMAT_R16G16B16A16_SFLOAT, c.screen, VK_IMAGE_USAGE_STORAGE_BIT,
+               VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL};
+    if (c.shadowed)
+        c.shadowMap = {VK_FORMAT_D32_SFLOAT, {shadowMapSize, shadowMapSize}, VK_IMAGE_USAGE_SAMPLED_BIT, ro, ro};
+    if (light != LightType::Directional)
+        c.table = {VK_FORMAT_R32G32B32A32_SFLOAT, {512, 256},
+                   VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, ro, ro};
+
+    const detail::FrameGraph fg = detail::buildFrameGraph(c, nullptr);
+    const rg::CompiledGraph compiled = rg::compile(*fg.graph, caps);
+
+    Budget b;
+    b.profile = profile;
+    b.settings = s;
+    b.settings.shadowMapSize = shadowMapSize;
+    b.screenWidth = screenWidth;
+    b.screenHeight = screenHeight;
+    b.estimated = !compiled.exactSizes;
+    b.depthStencilFormat = rg::formatName(c.depthStencil);
+    b.seed = seedFigure(profile);
+    for (uint32_t id = 0; id < fg.graph->resources().size(); ++id) {
+        const auto& r = fg.graph->resource(id);
+        const auto& p = compiled.resources[id];
+        if (r.imported || !p.used) continue;
+        BudgetEntry e;
+        e.name = r.name;
+        e.format = r.buffer ? "buffer" : rg::formatName(r.image.format);
+        e.width = p.extent.width;
+        e.height = p.extent.height;
+        e.bytes = p.memory.size;
+        b.entries.push_back(e);
+    }
+    b.totalBytes = compiled.unaliasedBytes;
+    b.peakBytes = compiled.aliasedBytes;
+    if (light != LightType::Directional) {
+        // The table lives across frames, outside the graph's aliased memory.
+        VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+        info.format = VK_FORMAT_R32G32B32A32_SFLOAT;
+        info.extent = {512, 256, 1};
+        info.mipLevels = info.arrayLayers = 1;
+        const uint64_t bytes = caps.imageRequirements(info).size;
+        b.entries.push_back({"point-light table", "R32G32B32A32_SFLOAT", 512, 256, bytes, false});
+        b.totalBytes += bytes;
+        b.peakBytes += bytes;
+    }
+    return b;
+}
+
+}  // namespace lightscatter

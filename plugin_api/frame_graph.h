@@ -1,0 +1,54 @@
+#pragma once
+// Which nodes a frame needs, and the graph made of them. A graph is rebuilt only when its
+// configuration changes (screen, profile sizes, method, light type, shadowing, optional images,
+// formats, layouts); everything else changes through the frame constants.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "common/node_inputs.h"
+#include "lightscatter.h"
+#include "rendergraph/render_graph.h"
+
+namespace lightscatter::detail {
+
+struct ImportState {
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    VkExtent2D extent{0, 0};
+    VkImageUsageFlags usage = 0;
+    VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
+    VkImageLayout finalLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    bool operator==(const ImportState& o) const {
+        return format == o.format && extent.width == o.extent.width &&
+               extent.height == o.extent.height && usage == o.usage && layout == o.layout &&
+               finalLayout == o.finalLayout;
+    }
+};
+
+struct GraphConfig {
+    Method method = Method::Epipolar;
+    ls::LightKind light = ls::LightKind::Directional;
+    bool shadowed = false;
+    bool touchesView = true;
+    bool minMaxTrees = true;
+    bool fixup = true;
+    uint32_t slices = 0, samples = 0, shadowMapSize = 0;
+    VkExtent2D screen{0, 0};
+    VkFormat depthStencil = VK_FORMAT_UNDEFINED;
+    ImportState depth, color, shadowMap, lightColor, inscatterOut;  // format UNDEFINED: absent
+    ImportState table;
+    bool operator==(const GraphConfig& o) const;
+};
+
+struct FrameGraph {
+    std::unique_ptr<rg::RenderGraph> graph;
+    rg::ImageRef depth, color, shadowMap, lightColor, inscatterOut, table;
+    std::string summary;  // which nodes were chosen, and why
+};
+
+rg::ImportedImage importDescription(const ImageInput& in);
+rg::ImportedImage importDescription(const ImportState& s);
+
+FrameGraph buildFrameGraph(const GraphConfig& config, const ls::Shared& shared);
+
+}  // namespace lightscatter::detail

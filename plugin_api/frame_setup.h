@@ -1,0 +1,31 @@
+#pragma once
+// An engine's frame description, checked and translated into what the nodes take. Every rule
+// broken is an InvalidInput naming the field; nothing is recorded before this passes.
+#include <vulkan/vulkan.h>
+
+#include "common/scattering_params.h"
+#include "lightscatter.h"
+
+namespace lightscatter::detail {
+
+struct FrameSetup {
+    ls::CameraParams camera;
+    ls::LightParams light;
+    ls::MediumParams medium;
+    ls::EpipolarSettings epipolar;
+    Settings settings;
+    VkExtent2D screen{0, 0};
+    bool shadowed = false;
+    bool lightColor = false;
+    bool inscatterOut = false;
+};
+
+// Checks everything; `withImages` false skips the image handles (the budget has none).
+FrameSetup setupFrame(const FrameDescription& frame, bool withImages = true);
+
+void checkSettings(const Settings& s);
+
+// Whether the light's volume can touch the camera's view at all (conservative).
+bool lightTouchesView(const ls::CameraParams& camera, const ls::LightParams& light);
+
+}  // namespace lightscatter::detail

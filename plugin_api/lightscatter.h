@@ -1,0 +1,214 @@
+#pragma once
+// lightscatter: volumetric light scattering (light shafts) as a post-process on Vulkan 1.3.
+//
+// The one header an engine includes. The engine imports its depth, color and (optionally) shadow-map
+// images, describes the camera, the light and the medium in MODEL.md's units (metres, W/m^2, W/sr,
+// 1/m), picks a method and a quality profile, and gets its color image back composited:
+//     color = color * exp(-betaT * S) + Lin
+// with S the distance along each pixel's ray to the surface (or to the sky distance) and Lin the
+// single-scattered in-scattering. Nothing else is done to the color: no tone mapping, no exposure.
+//
+// Requirements on the engine's VkDevice (lightscatter::requiredDeviceExtensions/-Features list them):
+// Vulkan 1.3 with synchronization2, dynamicRendering, maintenance4; separateDepthStencilLayouts,
+// hostQueryReset; shaderStorageImageExtendedFormats; VK_KHR_push_descriptor.
+#include <vulkan/vulkan.h>
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace lightscatter {
+
+using Vec3 = std::array<float, 3>;
+using Mat4 = std::array<float, 16>;  // column-major (GLM's layout), maps column vectors
+
+enum class Method { Epipolar, BruteForce };
+enum class Profile {
+    HighQuality,      // 2048 slices x 1024 samples, 4096^2 shadow map (seed 000)
+    Balanced,         // 1024 x 1024, 2048^2
+    HighPerformance,  // 1024 x 512, 1024^2
+    LowHighQuality,   // the seed's set for weaker devices: 1024 x 1024, 2048^2
+    LowBalanced,      // 512 x 512, 1024^2
+    LowHighPerformance,  // 512 x 256, 512^2
+    Custom,           // Settings as given
+};
+enum class LightType { Directional, Spot, Point };
+enum class MiePhase { CornetteShanks, Isotropic };
+enum class ShadowFilter { Nearest, Bilinear };
+
+const char* methodName(Method m);    // "epipolar", "brute-force"
+const char* profileName(Profile p);  // "high-quality", "balanced", ... "custom"
+std::optional<Method> parseMethod(const std::string& name);
+std::optional<Profile> parseProfile(const std::string& name);
+std::vector<std::string> methodNames();
+std::vector<std::string> profileNames();
+
+// Every choice seed 000 leaves open.
+struct Settings {
+    uint32_t slices = 1024;              // epipolar lines; a multiple of 4 (one quarter per edge)
+    uint32_t samplesPerSlice = 1024;     // samples along each line
+    uint32_t initialSampleStep = 16;     // ray-marching samples every N samples (power of two, <= 128)
+    float refinementThreshold = 0.03f;   // relative camera-z jump that is a depth break
+    float bilateralThreshold = 0.1f;     // relative camera-z difference accepted when unwarping
+    bool minMaxTrees = true;             // 1D min/max binary trees per slice
+    ShadowFilter shadowFilter = ShadowFilter::Bilinear;  // 2x2 PCF or nearest texel
+    bool fixup = true;                   // ray-march pixels the unwarp cannot interpolate
+    uint32_t fixupMaxSteps = 0;          // 0: every shadow-map texel; else at most this many
+    float shadowDepthBias = 0.0f;        // added to the ray's light-space depth before comparing
+    uint32_t shadowMapSize = 2048;       // the profile's recommendation (the light's own size rules)
+};
+
+// The settings of a profile (Custom returns the defaults).
+Settings profileSettings(Profile profile);
+
+struct Camera {
+    Mat4 view{};        // world -> view (right-handed, looks down -Z)
+    Mat4 projection{};  // view -> Vulkan clip (y down, depth in [0, 1])
+    float nearPlane = 0.1f;
+    float farPlane = 1000.0f;  // ignored when infiniteFar
+    bool reversedZ = false;    // depth 1 at the near plane
+    bool infiniteFar = false;
+};
+
+struct Light {
+    LightType type = LightType::Directional;
+    Vec3 position{0, 0, 0};       // point, spot
+    Vec3 direction{0, -1, 0};     // direction light travels (directional), cone axis (spot)
+    Vec3 intensity{1, 1, 1};      // E (W/m^2) for directional, I (W/sr) for point and spot
+    float halfAngleDegrees = 30;  // spot, in (0, 89]
+    float range = 1e30f;          // spot: no light beyond it
+    float radius = 0.05f;         // r0 of MODEL.md, > 0
+    // The shadow map's projection (world -> light clip, Vulkan conventions) and size. Required with
+    // a shadow map; for a spot its frustum must contain the cone.
+    Mat4 shadowViewProjection{};
+    uint32_t shadowMapSize = 0;   // 0: no shadow map
+    bool shadowReversedZ = false;
+};
+
+struct Medium {
+    Vec3 betaR{5.8e-6f, 13.5e-6f, 33.1e-6f};  // Rayleigh scattering, 1/m
+    Vec3 betaM{2e-5f, 2e-5f, 2e-5f};          // Mie scattering, 1/m
+    float g = 0.76f;                          // Mie asymmetry, (-1, 1)
+    Vec3 sigmaA{0, 0, 0};                     // absorption, 1/m
+    MiePhase phase = MiePhase::CornetteShanks;
+    float maxDistance = 1000.0f;              // sky distance with an infinite far plane, m
+};
+
+// An engine image handed to the plugin for one frame: where it stands and where it must be left.
+struct ImageInput {
+    VkImage image = VK_NULL_HANDLE;
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    VkExtent2D extent{0, 0};
+    VkImageUsageFlags usage = 0;
+    VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;  // at the start of the frame
+    VkPipelineStageFlags2 stages = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+    VkAccessFlags2 access = VK_ACCESS_2_MEMORY_WRITE_BIT;
+    VkImageLayout finalLayout = VK_IMAGE_LAYOUT_UNDEFINED;  // required
+    VkPipelineStageFlags2 finalStages = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+    VkAccessFlags2 finalAccess = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT;
+};
+
+struct FrameDescription {
+    ImageInput depth;       // D16/D24/D32 (sampled); the camera's depth
+    ImageInput color;       // linear HDR color (storage, R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT)
+    std::optional<ImageInput> shadowMap;   // the light's depth (sampled)
+    std::optional<ImageInput> lightColor;  // optional light-space color (stained glass), sampled
+    std::optional<ImageInput> inscatterOut;  // optional: Lin alone, R32G32B32A32_SFLOAT storage
+    Camera camera;
+    Light light;
+    Medium medium;
+    Method method = Method::Epipolar;
+    Profile profile = Profile::Balanced;
+    Settings custom;  // used when profile == Custom
+};
+
+// Thrown before anything is recorded when a description breaks a rule; the message names the field.
+class InvalidInput : public std::invalid_argument {
+public:
+    using std::invalid_argument::invalid_argument;
+};
+
+struct PassTime {
+    std::string name;
+    double milliseconds = 0;
+};
+
+struct FrameReport {
+    std::vector<PassTime> passes;   // GPU time per pass, execution order
+    double totalMilliseconds = 0;
+    std::string device;
+    std::vector<std::string> passNames;   // the nodes this frame was built from
+    std::string depthStencilFormat;       // what was chosen for the stencil textures
+};
+
+// Memory of one resource of the method, as the budget reports it.
+struct BudgetEntry {
+    std::string name;
+    std::string format;
+    uint32_t width = 0, height = 0;
+    uint64_t bytes = 0;
+    bool transient = true;  // false: owned by the plugin across frames (look-up table)
+};
+
+// A figure seed 000 publishes for a profile: its screen, memory (MB) and time (ms) on its GPU.
+struct SeedFigure {
+    uint32_t screenWidth = 0, screenHeight = 0;
+    double megabytes = 0;
+    double milliseconds = 0;
+};
+
+struct Budget {
+    Profile profile = Profile::Balanced;
+    Settings settings;
+    uint32_t screenWidth = 0, screenHeight = 0;
+    std::vector<BudgetEntry> entries;
+    uint64_t totalBytes = 0;   // everything, each in memory of its own
+    uint64_t peakBytes = 0;    // with transient aliasing (plus persistent resources)
+    bool estimated = true;     // sizes estimated without a device
+    std::string depthStencilFormat;
+    std::optional<SeedFigure> seed;  // the seed's published figure for this profile
+};
+
+// The epipolar method's memory for a profile, screen and shadow-map size; needs no GPU.
+Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint32_t shadowMapSize,
+              LightType light = LightType::Spot, const Settings* custom = nullptr);
+
+std::vector<const char*> requiredDeviceExtensions();
+
+// The engine's Vulkan objects the plugin works with. The plugin never destroys them.
+struct VulkanContext {
+    VkInstance instance = VK_NULL_HANDLE;
+    VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;
+    VkQueue queue = VK_NULL_HANDLE;
+    uint32_t queueFamily = 0;
+};
+
+class Plugin {
+public:
+    explicit Plugin(const VulkanContext& context);
+    ~Plugin();
+    Plugin(const Plugin&) = delete;
+    Plugin& operator=(const Plugin&) = delete;
+
+    // Validates the description (throws InvalidInput, nothing recorded), builds or reuses the
+    // frame's graph, and records it into `cmd`. The engine submits; call report() after its fence.
+    void record(VkCommandBuffer cmd, const FrameDescription& frame);
+    // Validates, records into the plugin's own command buffer, submits, waits, reports.
+    FrameReport render(const FrameDescription& frame);
+    FrameReport report();
+
+    // The compiled frame graph, for tools.
+    std::string graphDot() const;
+    std::string graphJson() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace lightscatter

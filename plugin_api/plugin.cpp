@@ -1,0 +1,164 @@
+#include <optional>
+
+#include "frame_graph.h"
+#include "frame_setup.h"
+#include "lightscatter.h"
+#include "point_table.h"
+#include "rendergraph/compile.h"
+#include "rendergraph/device_caps_vulkan.h"
+#include "rendergraph/executor.h"
+#include "rendergraph/format_info.h"
+#include "rendergraph/report.h"
+
+namespace lightscatter {
+
+using detail::FrameGraph;
+using detail::GraphConfig;
+using detail::ImportState;
+
+namespace {
+
+constexpr uint32_t kTableWidth = 512;
+constexpr uint32_t kTableHeight = 256;
+
+ImportState state(const ImageInput& in) {
+    return {in.format, in.extent, in.usage, in.layout, in.finalLayout};
+}
+
+}  // namespace
+
+struct Plugin::Impl {
+    explicit Impl(const VulkanContext& c)
+        : device(rg::ExternalDevice{c.instance, c.physicalDevice, c.device, c.queue, c.queueFamily}),
+          caps(device),
+          shared(std::make_shared<ls::SharedState>(device)) {
+        depthStencil = rg::firstSupported(caps, {VK_FORMAT_D24_UNORM_S8_UINT, VK_FORMAT_D32_SFLOAT_S8_UINT},
+                                          VK_FORMAT_FEATURE_2_DEPTH_STENCIL_ATTACHMENT_BIT);
+        if (depthStencil == VK_FORMAT_UNDEFINED)
+            throw std::runtime_error("lightscatter: the device has no depth-stencil format with stencil");
+        if (!device.storageImageExtendedFormats())
+            throw std::runtime_error(
+                "lightscatter: the device lacks shaderStorageImageExtendedFormats (RG16F/RG16UI "
+                "storage for the min/max trees and the interpolation source)");
+    }
+
+    void prepare(const FrameDescription& frame) {
+        const detail::FrameSetup setup = detail::setupFrame(frame);  // throws before any recording
+        ls::ScatterSpec spec;
+        spec.light = setup.light.kind;
+        spec.isotropicMie = setup.medium.isotropicMie;
+        spec.minMaxTrees = setup.epipolar.minMaxTrees;
+        spec.lightColor = setup.lightColor;
+        spec.bilinearShadow = setup.epipolar.bilinearShadow;
+
+        GraphConfig c;
+        c.method = frame.method;
+        c.light = setup.light.kind;
+        c.shadowed = setup.shadowed;
+        c.touchesView = detail::lightTouchesView(setup.camera, setup.light);
+        c.minMaxTrees = setup.epipolar.minMaxTrees;
+        c.fixup = setup.epipolar.fixup;
+        c.slices = setup.epipolar.slices;
+        c.samples = setup.epipolar.samples;
+        c.shadowMapSize = setup.light.shadowMapSize;
+        c.screen = setup.screen;
+        c.depthStencil = depthStencil;
+        c.depth = state(frame.depth);
+        c.color = state(frame.color);
+        if (frame.shadowMap) c.shadowMap = state(*frame.shadowMap);
+        if (frame.lightColor) c.lightColor = state(*frame.lightColor);
+        if (frame.inscatterOut) c.inscatterOut = state(*frame.inscatterOut);
+        const bool needsTable = c.touchesView && c.light != ls::LightKind::Directional;
+        if (needsTable)
+            c.table = {VK_FORMAT_R32G32B32A32_SFLOAT, {kTableWidth, kTableHeight},
+                       VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+
+        const ls::TableLayout table = ls::tableLayoutFor(setup.medium, kTableWidth, kTableHeight);
+        shared->spec = spec;
+        shared->constants = ls::makeFrameConstants(setup.camera, setup.light, setup.medium,
+                                                   setup.epipolar, setup.screen, table);
+        if (needsTable) {
+            if (!pointTable) pointTable = std::make_unique<detail::PointTable>(device, kTableWidth, kTableHeight);
+            pointTable->update(shared);
+        }
+
+        if (!config || !(*config == c)) {
+            executor.reset();
+            FrameGraph built = detail::buildFrameGraph(c, shared);
+            rg::CompiledGraph compiled = rg::compile(*built.graph, caps);
+            fg = std::move(built);
+            executor = std::make_unique<rg::GraphExecutor>(device, *fg.graph, std::move(compiled));
+            config = c;
+        }
+        // This frame's handles and stages; layouts are part of the configuration.
+        fg.graph->updateImport(fg.depth, detail::importDescription(frame.depth));
+        fg.graph->updateImport(fg.color, detail::importDescription(frame.color));
+        if (fg.shadowMap.valid()) fg.graph->updateImport(fg.shadowMap, detail::importDescription(*frame.shadowMap));
+        if (fg.lightColor.valid())
+            fg.graph->updateImport(fg.lightColor, detail::importDescription(*frame.lightColor));
+        if (fg.inscatterOut.valid())
+            fg.graph->updateImport(fg.inscatterOut, detail::importDescription(*frame.inscatterOut));
+        if (fg.table.valid()) {
+            rg::ImportedImage t = detail::importDescription(c.table);
+            t.image = pointTable->image();
+            t.initialStages = t.finalStages =
+                VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+            t.initialAccess = VK_ACCESS_2_NONE;
+            t.finalAccess = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
+            fg.graph->updateImport(fg.table, t);
+        }
+    }
+
+    FrameReport makeReport(const rg::FrameTimings& t) const {
+        FrameReport r;
+        r.device = device.name();
+        r.depthStencilFormat = rg::formatName(depthStencil);
+        for (const auto& p : t.passes) r.passes.push_back({p.name, p.milliseconds});
+        r.totalMilliseconds = t.totalMilliseconds;
+        for (const auto& p : executor->compiled().passes) r.passNames.push_back(fg.graph->passes()[p.pass].name);
+        return r;
+    }
+
+    rg::Device device;
+    rg::VulkanDeviceCaps caps;
+    ls::Shared shared;
+    VkFormat depthStencil = VK_FORMAT_UNDEFINED;
+    std::unique_ptr<detail::PointTable> pointTable;
+    std::optional<GraphConfig> config;
+    FrameGraph fg;
+    std::unique_ptr<rg::GraphExecutor> executor;
+};
+
+Plugin::Plugin(const VulkanContext& context) : impl_(std::make_unique<Impl>(context)) {}
+
+Plugin::~Plugin() {
+    if (impl_) impl_->executor.reset();
+}
+
+void Plugin::record(VkCommandBuffer cmd, const FrameDescription& frame) {
+    impl_->prepare(frame);
+    impl_->executor->record(cmd);
+}
+
+FrameReport Plugin::render(const FrameDescription& frame) {
+    impl_->prepare(frame);
+    return impl_->makeReport(impl_->executor->run());
+}
+
+FrameReport Plugin::report() {
+    if (!impl_->executor) return {};
+    return impl_->makeReport(impl_->executor->readTimings());
+}
+
+std::string Plugin::graphDot() const {
+    if (!impl_->executor) return {};
+    return rg::reportDot(*impl_->fg.graph, impl_->executor->compiled());
+}
+
+std::string Plugin::graphJson() const {
+    if (!impl_->executor) return {};
+    return rg::reportJson(*impl_->fg.graph, impl_->executor->compiled()).dump(2);
+}
+
+}  // namespace lightscatter

@@ -1,0 +1,22 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// One fragment per epipolar sample (x: sample, y: slice): its screen position and camera-space z.
+// Samples off the screen or on culled slices are discarded, so only valid ones reach the stencil.
+#include "epipolar_geometry.glsl"
+#include "camera.glsl"
+layout(binding = 1) uniform sampler2D sliceEndPoints;
+layout(binding = 2) uniform sampler2D cameraZ;
+layout(location = 0) out vec2 outCoordinate;
+layout(location = 1) out float outCameraZ;
+
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    vec4 ends = texelFetch(sliceEndPoints, ivec2(p.y, 0), 0);
+    if (ends.x <= INVALID_SLICE + 1.0) discard;
+    float t = float(p.x) / max(frame.epipolar.y - 1.0, 1.0);
+    vec2 pos = mix(ends.xy, ends.zw, t);
+    if (!insideBoundary(pos, 1e-5)) discard;
+    ivec2 pixel = clamp(ivec2(floor(ndcToPixel(pos))), ivec2(0), ivec2(frame.screenSize.xy) - 1);
+    outCoordinate = pos;
+    outCameraZ = texelFetch(cameraZ, pixel, 0).r;
+}

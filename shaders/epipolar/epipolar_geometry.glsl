@@ -1,0 +1,63 @@
+// The screen side of epipolar sampling: the shrunk screen boundary, where each slice's line leaves
+// it, and the inverse (which slice a pixel lies on).
+#ifndef LS_EPIPOLAR_GEOMETRY_GLSL
+#define LS_EPIPOLAR_GEOMETRY_GLSL
+#include "frame.glsl"
+
+// Pixel centres span [-1 + 1/W, 1 - 1/W] x [-1 + 1/H, 1 - 1/H] (seed 000, optimised placement).
+vec2 boundaryLo() { return -1.0 + frame.screenSize.zw; }
+vec2 boundaryHi() { return 1.0 - frame.screenSize.zw; }
+
+bool insideBoundary(vec2 p, float eps) {
+    return all(greaterThanEqual(p, boundaryLo() - eps)) && all(lessThanEqual(p, boundaryHi() + eps));
+}
+
+// Corners in the order the slices walk around the boundary.
+vec2 boundaryCorner(int i) {
+    vec2 lo = boundaryLo(), hi = boundaryHi();
+    if (i == 0) return lo;
+    if (i == 1) return vec2(hi.x, lo.y);
+    if (i == 2) return hi;
+    return vec2(lo.x, hi.y);
+}
+
+vec2 edgeOutwardNormal(int edge) {
+    if (edge == 0) return vec2(0.0, -1.0);
+    if (edge == 1) return vec2(1.0, 0.0);
+    if (edge == 2) return vec2(0.0, 1.0);
+    return vec2(-1.0, 0.0);
+}
+
+// Where the line of slice `slice` meets the boundary: an equal share of the slices per edge.
+vec2 sliceExitPoint(float slice, out int edge) {
+    float u = (slice + 0.5) / frame.epipolar.x * 4.0;
+    edge = min(int(u), 3);
+    return mix(boundaryCorner(edge), boundaryCorner((edge + 1) & 3), u - float(edge));
+}
+
+// Continuous slice coordinate of a boundary point on `edge` (inverse of sliceExitPoint).
+float sliceOfExitPoint(vec2 e, int edge) {
+    vec2 lo = boundaryLo(), hi = boundaryHi();
+    float f;
+    if (edge == 0) f = (e.x - lo.x) / (hi.x - lo.x);
+    else if (edge == 1) f = (e.y - lo.y) / (hi.y - lo.y);
+    else if (edge == 2) f = (hi.x - e.x) / (hi.x - lo.x);
+    else f = (hi.y - e.y) / (hi.y - lo.y);
+    return (float(edge) + clamp(f, 0.0, 1.0)) / 4.0 * frame.epipolar.x - 0.5;
+}
+
+// The parameter range where o + t d is inside the boundary (tNear > tFar when it misses).
+void boundaryRange(vec2 o, vec2 d, out float tNear, out float tFar, out int farEdge) {
+    vec2 lo = boundaryLo(), hi = boundaryHi();
+    vec2 inv = 1.0 / mix(d, vec2(1e-20), lessThan(abs(d), vec2(1e-20)));
+    vec2 ta = (lo - o) * inv, tb = (hi - o) * inv;
+    vec2 tn = min(ta, tb), tf = max(ta, tb);
+    tNear = max(tn.x, tn.y);
+    tFar = min(tf.x, tf.y);
+    if (tf.x < tf.y) farEdge = d.x > 0.0 ? 1 : 3;
+    else farEdge = d.y > 0.0 ? 2 : 0;
+}
+
+const float INVALID_SLICE = -100.0;
+
+#endif

@@ -1,0 +1,14 @@
+#version 450
+// In-scattering of every valid sample, linearly interpolated between its two ray-marching sources.
+layout(binding = 0) uniform usampler2D interpolationSource;
+layout(binding = 1) uniform sampler2D marched;
+layout(location = 0) out vec4 outInscatter;
+
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    uvec2 src = texelFetch(interpolationSource, p, 0).xy;
+    vec4 a = texelFetch(marched, ivec2(src.x, p.y), 0);
+    vec4 b = texelFetch(marched, ivec2(src.y, p.y), 0);
+    float t = src.y > src.x ? (float(p.x) - float(src.x)) / float(src.y - src.x) : 0.0;
+    outInscatter = mix(a, b, t);
+}

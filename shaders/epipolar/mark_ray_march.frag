@@ -1,0 +1,10 @@
+#version 450
+// Passes (and so increments the stencil of) the samples that are their own interpolation source:
+// the ray-marching samples.
+layout(binding = 0) uniform usampler2D interpolationSource;
+
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    uvec2 src = texelFetch(interpolationSource, p, 0).xy;
+    if (src.x != uint(p.x) || src.y != uint(p.x)) discard;
+}

@@ -1,0 +1,27 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// First level of every slice's min/max tree, from the shadow map: each node covers two samples
+// along the slice's line and keeps the min and max of every texel their filtering can read, so the
+// accelerated march decides exactly as visiting every texel would.
+#include "min_max_tree.glsl"
+#include "frame.glsl"
+layout(local_size_x = 64) in;
+layout(binding = 1) uniform sampler2D shadowMap;
+layout(binding = 2) uniform sampler2D sliceUvFrame;
+layout(binding = 3, rg16f) uniform writeonly image2D level1;
+#include "shadow.glsl"
+
+void main() {
+    int node = int(gl_GlobalInvocationID.x);
+    int slice = int(gl_GlobalInvocationID.y);
+    int n = int(frame.shadowInfo.x);
+    if (node >= (n >> 1)) return;
+    vec4 f = texelFetch(sliceUvFrame, ivec2(slice, 0), 0);
+    vec2 mm = vec2(0.0, 1.0);  // a slice without a frame never decides from its tree
+    if (dot(f.zw, f.zw) > 0.0) {
+        vec2 a = shadowFootprintMinMax(f.xy + float(2 * node) * f.zw);
+        vec2 b = shadowFootprintMinMax(f.xy + float(2 * node + 1) * f.zw);
+        mm = vec2(roundDownToHalf(min(a.x, b.x)), roundUpToHalf(max(a.y, b.y)));
+    }
+    imageStore(level1, ivec2(treeLevelOffset(1, n) + node, slice), vec4(mm, 0.0, 0.0));
+}

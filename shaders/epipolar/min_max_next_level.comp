@@ -1,0 +1,19 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// A coarser tree level from the one below it, read from the other texture of the pair.
+#include "min_max_tree.glsl"
+layout(local_size_x = 64) in;
+layout(binding = 0, rg16f) uniform readonly image2D finer;
+layout(binding = 1, rg16f) uniform image2D coarser;
+layout(push_constant) uniform Push { int level; int n; } pc;
+
+void main() {
+    int node = int(gl_GlobalInvocationID.x);
+    int slice = int(gl_GlobalInvocationID.y);
+    if (node >= (pc.n >> pc.level)) return;
+    int src = treeLevelOffset(pc.level - 1, pc.n) + 2 * node;
+    vec2 a = imageLoad(finer, ivec2(src, slice)).xy;
+    vec2 b = imageLoad(finer, ivec2(src + 1, slice)).xy;
+    imageStore(coarser, ivec2(treeLevelOffset(pc.level, pc.n) + node, slice),
+               vec4(min(a.x, b.x), max(a.y, b.y), 0.0, 0.0));
+}

@@ -1,0 +1,142 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Ray marching of the ray-marching samples (stencil-tested), along their slice's line in the shadow
+// map, skipping whole lit or shadowed runs with the slice's 1D min/max tree. Sample i of the line
+// (uv = origin + i dir) decides the visibility of the ray over (i - 1, i]; the ray's light-space
+// depth is affine in i, its distance is perspective-correct (1/w and d/w are affine in i).
+#include "camera.glsl"
+#include "min_max_tree.glsl"
+layout(binding = 1) uniform sampler2D coordinates;
+layout(binding = 2) uniform sampler2D epipolarZ;
+layout(binding = 3) uniform sampler2D sliceUvFrame;
+#if LS_TREES
+layout(binding = 4) uniform sampler2D treeOdd;
+layout(binding = 5) uniform sampler2D treeEven;
+#endif
+layout(binding = 6) uniform sampler2D shadowMap;
+#if LS_NEEDS_TABLE
+layout(binding = 7) uniform sampler2D pointTable;
+#endif
+#if LS_LIGHT_COLOR
+layout(binding = 8) uniform sampler2D lightColorMap;
+#endif
+#include "march.glsl"
+layout(location = 0) out vec4 outInscatter;
+
+const bool kMinMaxTrees = LS_TREES != 0;
+
+vec2 treeNode(int level, int node, int slice, int n) {
+#if LS_TREES
+    ivec2 p = ivec2(treeLevelOffset(level, n) + node, slice);
+    return (level & 1) == 1 ? texelFetch(treeOdd, p, 0).xy : texelFetch(treeEven, p, 0).xy;
+#else
+    return vec2(0.0, 1.0);
+#endif
+}
+
+struct LineRay {
+    float ta, tb;      // the ray's segment in line samples
+    float f0, f1;      // ... and in metres
+    float iw0, iw1;    // 1/w at both ends
+    float z0, dz;      // standard depth at ta, per sample
+    vec2 origin, dir;  // the slice's line
+};
+
+float distanceAt(LineRay r, float t) {
+    float a = r.tb > r.ta ? clamp((t - r.ta) / (r.tb - r.ta), 0.0, 1.0) : 1.0;
+    if (a >= 1.0) return r.f1;
+    return mix(r.f0 * r.iw0, r.f1 * r.iw1, a) / mix(r.iw0, r.iw1, a);
+}
+
+float depthAt(LineRay r, int i) { return r.z0 + (float(i) - r.ta) * r.dz; }
+
+vec3 visibilityAt(LineRay r, int i) {
+    vec2 uv = r.origin + float(i) * r.dir;
+    return shadowVisibility(uv, depthAt(r, i)) * lightColorAt(uv);
+}
+
+// The level to try next at sample i: from `level` (i is aligned to it), down until its node fits
+// within [0, min(last, n - 1)], or up while the parent starts at i and fits too.
+int climb(int i, int level, int last, int n, int levels) {
+    if (!kMinMaxTrees || i < 0) return 0;
+    int end = min(last, n - 1);
+    while (level > 0 && i + (1 << level) - 1 > end) --level;
+    while (level < levels && (i & ((2 << level) - 1)) == 0 && i + (2 << level) - 1 <= end) ++level;
+    return level;
+}
+
+void marchLine(inout Inscatter acc, LineRay r, int slice) {
+    int n = int(frame.shadowInfo.x);
+    int levels = int(frame.epipolar2.z);
+    int i = int(ceil(r.ta));
+    int last = int(ceil(r.tb));
+    int level = climb(i, 0, last, n, levels);
+    for (int guard = 0; i <= last && guard < 4 * n + 64; ++guard) {
+        if (level == 0) {
+            advance(acc, distanceAt(r, float(i)), visibilityAt(r, i));
+            ++i;
+            level = climb(i, 0, last, n, levels);
+            continue;
+        }
+        int j = i + (1 << level) - 1;
+        vec2 node = treeNode(level, i >> level, slice, n);
+        float zi = compareDepth(depthAt(r, i)), zj = compareDepth(depthAt(r, j));
+        if (!kLightColor && max(zi, zj) <= node.x) {
+            advance(acc, distanceAt(r, float(j)), vec3(1.0));  // lit throughout
+        } else if (min(zi, zj) > node.y) {
+            skip(acc, distanceAt(r, float(j)));  // shadowed throughout
+        } else {
+            --level;
+            continue;
+        }
+        i = j + 1;
+        level = climb(i, level, last, n, levels);
+    }
+}
+
+vec3 marchSample(vec3 C, vec3 v, float S, int slice) {
+    float t0, t1;
+    lightInterval(C, v, S, t0, t1);
+    if (!(t0 < t1)) return vec3(0.0);
+    Inscatter acc = beginInscatter(C, v, t0);
+    float f0 = t0, f1 = t1;
+    clipToShadowFrustum(C, v, f0, f1);
+    vec4 frameUv = texelFetch(sliceUvFrame, ivec2(slice, 0), 0);
+    if (f0 < f1 && dot(frameUv.zw, frameUv.zw) > 0.0) {
+        advance(acc, f0, vec3(1.0));
+        vec4 X0 = frame.lightViewProj * vec4(C + f0 * v, 1.0);
+        vec4 X1 = frame.lightViewProj * vec4(C + f1 * v, 1.0);
+        vec2 uv0 = X0.xy / X0.w * 0.5 + 0.5, uv1 = X1.xy / X1.w * 0.5 + 0.5;
+        LineRay r;
+        r.origin = frameUv.xy;
+        r.dir = frameUv.zw;
+        float invLen2 = 1.0 / dot(r.dir, r.dir);
+        r.ta = dot(uv0 - r.origin, r.dir) * invLen2;
+        r.tb = dot(uv1 - r.origin, r.dir) * invLen2;
+        r.f0 = f0;
+        r.f1 = f1;
+        r.iw0 = 1.0 / X0.w;
+        r.iw1 = 1.0 / X1.w;
+        float z0 = toStandardDepth(X0.z / X0.w), z1 = toStandardDepth(X1.z / X1.w);
+        r.z0 = z0;
+        r.dz = r.tb - r.ta > 1e-6 ? (z1 - z0) / (r.tb - r.ta) : 0.0;
+        if (r.tb >= r.ta) {
+            marchLine(acc, r, slice);
+        } else {
+            // Against the slice's direction (only for rays almost through the light, whose
+            // projection is a point): step this ray on its own.
+            advance(acc, f1, shadowVisibility(uv1, z1) * lightColorAt(uv1));
+        }
+    }
+    advance(acc, t1, vec3(1.0));
+    return finishInscatter(acc, v);
+}
+
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    vec2 ndc = texelFetch(coordinates, p, 0).xy;
+    float z = texelFetch(epipolarZ, p, 0).r;
+    vec3 v = rayDirection(ndc);
+    float S = z / max(dot(v, frame.cameraForward.xyz), 1e-4);
+    outInscatter = vec4(marchSample(frame.cameraPos.xyz, v, S, p.y), 1.0);
+}

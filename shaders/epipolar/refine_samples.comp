@@ -1,0 +1,75 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Sample refinement (seed 000): ray-marching samples every `initial step` samples, plus the samples
+// on both sides of every depth break; every other sample is interpolated from the nearest
+// ray-marching sample on each side. One workgroup covers 128 samples of one slice: each thread sets a
+// bit per break in shared memory, then finds its two sources with findMSB/findLSB on the masks.
+#include "frame.glsl"
+layout(local_size_x = 128) in;
+layout(binding = 1) uniform sampler2D epipolarZ;
+layout(binding = 2, rg16ui) uniform writeonly uimage2D interpolationSource;
+
+shared uint breaks[4];  // bit k: break between local samples k and k+1
+
+bool validZ(float z) { return z > 0.0; }
+
+// Highest set bit in local range [lo, hi], or -1.
+int highestBreak(int lo, int hi) {
+    for (int w = hi >> 5; w >= (lo >> 5) && w >= 0; --w) {
+        uint m = breaks[w];
+        int a = max(lo - w * 32, 0), b = min(hi - w * 32, 31);
+        if (a > b) continue;
+        m &= (b == 31 ? 0xffffffffu : ((1u << (b + 1)) - 1u)) & ~((1u << a) - 1u);
+        if (m != 0u) return w * 32 + findMSB(m);
+    }
+    return -1;
+}
+
+// Lowest set bit in local range [lo, hi], or -1.
+int lowestBreak(int lo, int hi) {
+    for (int w = lo >> 5; w <= (hi >> 5) && w < 4; ++w) {
+        uint m = breaks[w];
+        int a = max(lo - w * 32, 0), b = min(hi - w * 32, 31);
+        if (a > b) continue;
+        m &= (b == 31 ? 0xffffffffu : ((1u << (b + 1)) - 1u)) & ~((1u << a) - 1u);
+        if (m != 0u) return w * 32 + findLSB(m);
+    }
+    return -1;
+}
+
+void main() {
+    int local = int(gl_LocalInvocationID.x);
+    int base = int(gl_WorkGroupID.x) * 128;
+    int slice = int(gl_WorkGroupID.y);
+    int samples = int(frame.epipolar.y);
+    int step = int(frame.epipolar.z);
+    int s = base + local;
+    if (local < 4) breaks[local] = 0u;
+    barrier();
+
+    float z = s < samples ? texelFetch(epipolarZ, ivec2(s, slice), 0).r : -1.0;
+    float zNext = s + 1 < samples ? texelFetch(epipolarZ, ivec2(s + 1, slice), 0).r : -1.0;
+    bool valid = validZ(z), validNext = validZ(zNext);
+    // A change of validity is a break too, so no sample interpolates from outside the screen.
+    bool brk = valid != validNext ||
+               (valid && abs(zNext - z) > frame.epipolar.w * min(z, zNext));
+    if (brk) atomicOr(breaks[local >> 5], 1u << (local & 31));
+    barrier();
+    if (s >= samples) return;
+
+    int last = samples - 1;
+    int sectionStart = (local / step) * step;
+    int sectionEnd = min(sectionStart + step, last - base);  // local index, may be 128 (next group)
+    bool breakAfter = brk;
+    bool breakBefore = local > 0 ? ((breaks[(local - 1) >> 5] >> ((local - 1) & 31)) & 1u) != 0u
+                                 : true;
+    uvec2 src;
+    if (local == sectionStart || s == last || breakAfter || breakBefore || !valid) {
+        src = uvec2(s);  // a ray-marching sample: interpolated from itself
+    } else {
+        int lo = highestBreak(sectionStart, local - 1);
+        int hi = lowestBreak(local, min(sectionEnd, 128) - 1);
+        src = uvec2(base + (lo >= 0 ? lo + 1 : sectionStart), base + (hi >= 0 ? hi : sectionEnd));
+    }
+    imageStore(interpolationSource, ivec2(s, slice), uvec4(src, 0u, 0u));
+}

@@ -1,0 +1,66 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Epipolar -> screen (seed 000): find the slice through the pixel and its place along it, and
+// filter the 2 x 2 nearest samples bilaterally (weights zeroed where their camera z differs from
+// the pixel's). Mode 0 writes the result; mode 1 (stencil pass) keeps only the pixels no sample can
+// serve, for the fix-up pass. Without fix-up those pixels fall back to plain bilinear weights.
+#include "epipolar_geometry.glsl"
+#include "camera.glsl"
+layout(binding = 1) uniform sampler2D sliceEndPoints;
+layout(binding = 2) uniform sampler2D epipolarZ;
+layout(binding = 3) uniform sampler2D inscatter;
+layout(binding = 4) uniform sampler2D cameraZ;
+layout(push_constant) uniform Push { int mode; } pc;
+layout(location = 0) out vec4 outInscatter;
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    vec2 p = pixelToNdc(vec2(pixel) + 0.5);
+    float z = texelFetch(cameraZ, pixel, 0).r;
+    vec2 light = frame.lightScreen.xy;
+    vec2 d = p - light;
+    if (dot(d, d) < 1e-12) d = vec2(1e-6, 0.0);
+    float tNear, tFar;
+    int edge;
+    boundaryRange(light, d, tNear, tFar, edge);
+    float sliceF = sliceOfExitPoint(light + tFar * d, edge);
+    int slices = int(frame.epipolar.x);
+    int samples = int(frame.epipolar.y);
+    float j0f = floor(sliceF);
+    float sliceW = sliceF - j0f;
+
+    vec4 sum = vec4(0.0), plain = vec4(0.0);
+    float weight = 0.0, plainWeight = 0.0;
+    for (int a = 0; a < 2; ++a) {
+        int slice = (int(j0f) + a + slices) % slices;
+        float ws = a == 0 ? 1.0 - sliceW : sliceW;
+        vec4 ends = texelFetch(sliceEndPoints, ivec2(slice, 0), 0);
+        if (ends.x <= INVALID_SLICE + 1.0 || ws <= 0.0) continue;
+        vec2 line = ends.zw - ends.xy;
+        float k = dot(p - ends.xy, line) / max(dot(line, line), 1e-20) * float(samples - 1);
+        k = clamp(k, 0.0, float(samples - 1));
+        int k0 = min(int(floor(k)), samples - 2);
+        float wk = k - float(k0);
+        for (int b = 0; b < 2; ++b) {
+            ivec2 s = ivec2(k0 + b, slice);
+            float w = ws * (b == 0 ? 1.0 - wk : wk);
+            float sz = texelFetch(epipolarZ, s, 0).r;
+            if (sz <= 0.0 || w <= 0.0) continue;  // not a valid sample
+            vec4 value = texelFetch(inscatter, s, 0);
+            plain += w * value;
+            plainWeight += w;
+            if (abs(sz - z) <= frame.epipolar2.x * z) {
+                sum += w * value;
+                weight += w;
+            }
+        }
+    }
+    bool resolved = weight > 1e-3;
+    if (pc.mode == 1) {
+        if (resolved) discard;
+        outInscatter = vec4(0.0);
+        return;
+    }
+    if (resolved) outInscatter = sum / weight;
+    else outInscatter = plainWeight > 0.0 ? plain / plainWeight : vec4(0.0);
+}

@@ -1,0 +1,74 @@
+// Accumulates Lin along one ray, segment by segment, with one exponential (directional) or one
+// exponential and one table look-up (point, spot) per step. Differences of exponentials go through
+// expm1 (MODEL.md). Visibility may be colored (stained glass).
+#ifndef LS_INTEGRATE_GLSL
+#define LS_INTEGRATE_GLSL
+#include "math.glsl"
+#if LS_NEEDS_TABLE
+#include "lut.glsl"
+#endif
+
+struct Inscatter {
+    vec3 sum;    // directional: sum of exp(-betaT a) w V; point/spot: sum of (F(a) - F(b)) V
+    vec3 carry;  // directional: exp(-betaT d); point/spot: F(d) = exp(-betaT d) T(h, sC + d)
+    float d;     // where the last segment ended, metres from the camera
+    float h;     // point/spot: the light's distance from the ray's line
+    float sC;    // point/spot: the camera's coordinate along the ray, from the light's projection
+};
+
+vec3 carryAt(Inscatter a, float d) {
+#if LS_NEEDS_TABLE
+    if (kLightType != LIGHT_DIRECTIONAL)
+        return exp(-frame.betaT.rgb * d) * pointTableT(a.h, a.sC + d);
+#endif
+    return exp(-frame.betaT.rgb * d);
+}
+
+Inscatter beginInscatter(vec3 C, vec3 v, float d0) {
+    Inscatter a;
+    a.sum = vec3(0.0);
+    a.d = d0;
+    a.h = 0.0;
+    a.sC = 0.0;
+    if (kLightType != LIGHT_DIRECTIONAL) {
+        vec3 q = C - frame.lightPos.xyz;
+        a.h = length(cross(v, q));  // never sqrt(|q|^2 - b^2): that cancels
+        a.sC = dot(v, q);
+    }
+    a.carry = carryAt(a, d0);
+    return a;
+}
+
+// Adds the segment [a.d, d] lit with visibility V.
+void advance(inout Inscatter a, float d, vec3 V) {
+    if (d <= a.d) return;
+    if (kLightType == LIGHT_DIRECTIONAL) {
+        vec3 w = attenuatedLength(frame.betaT.rgb, d - a.d);
+        vec3 part = a.carry * w;
+        a.sum += part * V;
+        a.carry -= part * frame.betaT.rgb;
+    } else {
+        vec3 next = carryAt(a, d);
+        a.sum += (a.carry - next) * V;
+        a.carry = next;
+    }
+    a.d = d;
+}
+
+// Moves to d across a shadowed segment.
+void skip(inout Inscatter a, float d) {
+    if (d <= a.d) return;
+    if (kLightType == LIGHT_DIRECTIONAL)
+        a.carry += a.carry * expm1v(-frame.betaT.rgb * (d - a.d));
+    else
+        a.carry = carryAt(a, d);
+    a.d = d;
+}
+
+vec3 finishInscatter(Inscatter a, vec3 v) {
+    vec3 L = frame.lightIntensity.rgb;
+    if (kLightType == LIGHT_DIRECTIONAL) return a.sum * L * phaseSum(dot(v, -frame.lightDir.xyz));
+    return max(a.sum, vec3(0.0)) * L;
+}
+
+#endif

@@ -1,0 +1,36 @@
+// Phase functions and numerically careful exponentials (MODEL.md, "Numerical rules").
+#ifndef LS_MATH_GLSL
+#define LS_MATH_GLSL
+#include "frame.glsl"
+
+float phaseRayleigh(float c) { return 3.0 / (16.0 * PI) * (1.0 + c * c); }
+
+float phaseCornetteShanks(float c, float g) {
+    float g2 = g * g;
+    float denom = max(1.0 + g2 - 2.0 * g * c, 1e-6);
+    return 1.0 / (4.0 * PI) * 3.0 * (1.0 - g2) / (2.0 * (2.0 + g2)) * (1.0 + c * c) /
+           (denom * sqrt(denom));
+}
+
+// betaR pR + betaM pM, per channel (1/(m sr)).
+vec3 phaseSum(float cosTheta) {
+    float mie = kMiePhase == 1 ? 1.0 / (4.0 * PI) : phaseCornetteShanks(cosTheta, frame.betaR.w);
+    return frame.betaR.rgb * phaseRayleigh(cosTheta) + frame.betaM.rgb * mie;
+}
+
+// exp(x) - 1 without cancellation near 0 (GLSL has no expm1).
+float expm1f(float x) {
+    if (abs(x) < 0.25)
+        return x * (1.0 + x * (1.0 / 2.0 + x * (1.0 / 6.0 + x * (1.0 / 24.0 + x * (1.0 / 120.0 +
+               x * (1.0 / 720.0 + x * (1.0 / 5040.0)))))));
+    return exp(x) - 1.0;
+}
+vec3 expm1v(vec3 x) { return vec3(expm1f(x.r), expm1f(x.g), expm1f(x.b)); }
+
+// Integral of exp(-beta s) over [0, len]: (1 - exp(-beta len)) / beta, and len where beta is 0.
+vec3 attenuatedLength(vec3 beta, float len) {
+    vec3 w = -expm1v(-beta * len) / max(beta, vec3(1e-30));
+    return mix(w, vec3(len), lessThanEqual(beta, vec3(0.0)));
+}
+
+#endif

@@ -1,0 +1,44 @@
+// Shadow-map visibility in the standard depth convention (reversed maps are flipped on read), with
+// the footprint the min/max trees are built from: the 2x2 texels around the sample, clamped to the
+// map. Outside the map a point counts as lit; ray depths are clamped to [0, 1].
+// Needs `shadowMap` (sampler2D) declared by the including shader.
+#ifndef LS_SHADOW_GLSL
+#define LS_SHADOW_GLSL
+#include "frame.glsl"
+
+float toStandardDepth(float z) { return frame.shadowInfo.z > 0.5 ? 1.0 - z : z; }
+
+float shadowTexel(ivec2 p) {
+    int size = int(frame.shadowInfo.x);
+    return toStandardDepth(texelFetch(shadowMap, clamp(p, ivec2(0), ivec2(size - 1)), 0).r);
+}
+
+bool outsideShadowMap(vec2 uv) { return any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))); }
+
+// The ray's depth as compared: standard convention, clamped, plus the bias.
+float compareDepth(float zStandard) { return clamp(zStandard, 0.0, 1.0) + frame.shadowInfo.w; }
+
+// Fraction of the light reaching a point at shadow-map position uv and standard depth z.
+float shadowVisibility(vec2 uv, float zStandard) {
+    if (outsideShadowMap(uv)) return 1.0;
+    float z = compareDepth(zStandard);
+    float size = frame.shadowInfo.x;
+    if (!kBilinearShadow) return z <= shadowTexel(ivec2(floor(uv * size))) ? 1.0 : 0.0;
+    vec2 p = uv * size - 0.5;
+    ivec2 i = ivec2(floor(p));
+    vec2 f = p - floor(p);
+    vec4 lit = vec4(z <= shadowTexel(i), z <= shadowTexel(i + ivec2(1, 0)),
+                    z <= shadowTexel(i + ivec2(0, 1)), z <= shadowTexel(i + ivec2(1, 1)));
+    return mix(mix(lit.x, lit.y, f.x), mix(lit.z, lit.w, f.x), f.y);
+}
+
+// Min and max depth over every texel shadowVisibility(uv, .) can read (1.0 outside the map).
+vec2 shadowFootprintMinMax(vec2 uv) {
+    if (outsideShadowMap(uv)) return vec2(1.0);
+    ivec2 i = ivec2(floor(uv * frame.shadowInfo.x - 0.5));
+    float a = shadowTexel(i), b = shadowTexel(i + ivec2(1, 0));
+    float c = shadowTexel(i + ivec2(0, 1)), d = shadowTexel(i + ivec2(1, 1));
+    return vec2(min(min(a, b), min(c, d)), max(max(a, b), max(c, d)));
+}
+
+#endif
