@@ -108,6 +108,7 @@ FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
         s.settings.fixup = f.custom.fixup;
         s.settings.fixupMaxSteps = f.custom.fixupMaxSteps;
         s.settings.shadowDepthBias = f.custom.shadowDepthBias;
+        s.settings.interpolation = f.custom.interpolation;
     }
     checkSettings(s.settings);
 
@@ -218,6 +219,7 @@ FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
     s.epipolar.fixup = s.settings.fixup;
     s.epipolar.fixupMaxSteps = s.settings.fixupMaxSteps;
     s.epipolar.shadowDepthBias = s.settings.shadowDepthBias;
+    s.epipolar.interpolateFraction = s.settings.interpolation == Interpolation::ShadowedFraction;
     return s;
 }
 

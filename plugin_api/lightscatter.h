@@ -39,6 +39,10 @@ enum class Profile {
 enum class LightType { Directional, Spot, Point };
 enum class MiePhase { CornetteShanks, Isotropic };
 enum class ShadowFilter { Nearest, Bilinear };
+// What epipolar samples carry between ray marching and the screen. Seed 000 interpolates Lin itself;
+// interpolating the shadowed fraction of the closed-form unshadowed Lin instead keeps the glow around
+// a light (which no sparse sampling resolves) exact, and changes nothing where there is no glow.
+enum class Interpolation { ShadowedFraction, Inscattering };
 
 const char* methodName(Method m);    // "epipolar", "brute-force"
 const char* profileName(Profile p);  // "high-quality", "balanced", ... "custom"
@@ -59,6 +63,7 @@ struct Settings {
     bool fixup = true;                   // ray-march pixels the unwarp cannot interpolate
     uint32_t fixupMaxSteps = 0;          // 0: every shadow-map texel; else at most this many
     float shadowDepthBias = 0.0f;        // added to the ray's light-space depth before comparing
+    Interpolation interpolation = Interpolation::ShadowedFraction;
     uint32_t shadowMapSize = 2048;       // the profile's recommendation (the light's own size rules)
 };
 

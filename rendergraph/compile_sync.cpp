@@ -94,12 +94,16 @@ VkImageLayout layoutFor(const std::vector<const ResourceUse*>& uses, VkFormat fo
                 const VkImageAspectFlags a = u->aspect ? u->aspect : fullAspect(format);
                 depthRead |= (a & VK_IMAGE_ASPECT_DEPTH_BIT) != 0;
                 stencilRead |= (a & VK_IMAGE_ASPECT_STENCIL_BIT) != 0;
-                if (!isDepthStencil(format)) return VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
                 break;
             }
             default: break;
         }
     }
+    const bool attachment = std::any_of(uses.begin(), uses.end(),
+                                        [](const ResourceUse* u) { return isAttachment(u->kind); });
+    // Only sampled: the layout any sampled image may take, whatever else its usage allows (an
+    // engine's shadow map need not be a depth-stencil attachment of ours).
+    if (!attachment) return VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     if (depthWrite && !stencilWrite && stencilRead)
         return VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL;
     if (stencilWrite && !depthWrite && depthRead)
@@ -240,7 +244,10 @@ void deriveSync(const RenderGraph& graph, CompiledGraph& out) {
                 s.writeStages = ps.stages;
                 s.writeAccess = ps.writes ? (ps.access & kWriteAccess) : 0;
                 s.readStages = ps.writes ? 0 : ps.stages;
-                s.visible.assign(1, {ps.stages, ps.access});
+                // A write is visible to nobody until a barrier makes it so, not even to later
+                // accesses of the same stage; a transition for reading is visible to that read.
+                s.visible.clear();
+                if (!ps.writes) s.visible.emplace_back(ps.stages, ps.access);
             } else {
                 s.readStages |= ps.stages;
                 if (emit) s.visible.emplace_back(ps.stages, ps.access);

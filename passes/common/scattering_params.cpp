@@ -67,7 +67,8 @@ FrameConstants makeFrameConstants(const CameraParams& camera, const LightParams&
     f.epipolar = {static_cast<float>(settings.slices), static_cast<float>(settings.samples),
                   static_cast<float>(settings.initialStep), settings.refinementThreshold};
     f.epipolar2 = {settings.bilateralThreshold, static_cast<float>(settings.fixupMaxSteps),
-                   static_cast<float>(treeLevels(light.shadowMapSize)), 0.0f};
+                   static_cast<float>(treeLevels(light.shadowMapSize)),
+                   settings.interpolateFraction ? 1.0f : 0.0f};
     f.lutInfo = {table.hScale, static_cast<float>(table.width), static_cast<float>(table.height), 0.0f};
     return f;
 }

@@ -55,6 +55,7 @@ struct EpipolarSettings {
     bool fixup = true;
     uint32_t fixupMaxSteps = 0;
     float shadowDepthBias = 0.0f;
+    bool interpolateFraction = true;  // samples carry Lin / unshadowed Lin instead of Lin
 };
 
 // The look-up table's shape and scale (passes/lut).

@@ -1,6 +1,7 @@
 #include "common/pass_helpers.h"
 #include "epipolar_nodes.h"
-#include "unwarp_frag.h"
+#include "unwarp_directional_frag.h"
+#include "unwarp_table_frag.h"
 
 namespace ls {
 
@@ -15,6 +16,7 @@ void addUnwarp(rg::RenderGraph& g, const NodeInputs& in, bool markForFixup, Epip
     pass.sampled(t.epipolarZ);
     pass.sampled(t.interpolated);
     pass.sampled(t.cameraZ);
+    if (in.table.valid()) pass.sampled(in.table);
     t.screenInscatter = pass.colorAttachment(t.screenInscatter, rg::LoadOp::DontCare);
     if (markForFixup) {
         t.cameraStencil = g.createImage("camera depth-stencil", rg::ImageDesc::screen(in.depthStencil));
@@ -22,19 +24,25 @@ void addUnwarp(rg::RenderGraph& g, const NodeInputs& in, bool markForFixup, Epip
     }
     const EpipolarTextures tex = t;
     pass.execute([in, tex, markForFixup](rg::PassContext& ctx) {
-        const std::vector<rg::Binding> b{uniformBinding(0), sampledBinding(1), sampledBinding(2),
-                                         sampledBinding(3), sampledBinding(4)};
-        auto desc = fullscreenPipeline(rg::spirv(ls_spirv::unwarp_frag), ctx, b);
+        const ScatterSpec& spec = in.shared->spec;
+        std::vector<rg::Binding> b{uniformBinding(0), sampledBinding(1), sampledBinding(2),
+                                   sampledBinding(3), sampledBinding(4)};
+        if (in.table.valid()) b.push_back(sampledBinding(7));
+        auto desc = fullscreenPipeline(in.table.valid() ? rg::spirv(ls_spirv::unwarp_table_frag)
+                                                        : rg::spirv(ls_spirv::unwarp_directional_frag),
+                                       ctx, b);
         desc.pushConstantBytes = 4;
-        const auto& write = in.shared->pipelines.graphics(pipelineKey("unwarp", ctx), desc);
+        desc.specialization = spec.constants();
+        const auto& write = in.shared->pipelines.graphics(pipelineKey("unwarp", ctx, spec.key()), desc);
         const auto& sm = in.shared->samplers;
         write.bind(ctx.cmd());
-        frameSet(ctx, in.constants)
-            .sampled(1, ctx.view(tex.sliceEndPoints), ctx.layout(tex.sliceEndPoints), sm.nearest())
+        auto set = frameSet(ctx, in.constants);
+        set.sampled(1, ctx.view(tex.sliceEndPoints), ctx.layout(tex.sliceEndPoints), sm.nearest())
             .sampled(2, ctx.view(tex.epipolarZ), ctx.layout(tex.epipolarZ), sm.nearest())
             .sampled(3, ctx.view(tex.interpolated), ctx.layout(tex.interpolated), sm.nearest())
-            .sampled(4, ctx.view(tex.cameraZ), ctx.layout(tex.cameraZ), sm.nearest())
-            .push(ctx.device(), ctx.cmd(), write);
+            .sampled(4, ctx.view(tex.cameraZ), ctx.layout(tex.cameraZ), sm.nearest());
+        if (in.table.valid()) set.sampled(7, ctx.view(in.table), ctx.layout(in.table), sm.nearest());
+        set.push(ctx.device(), ctx.cmd(), write);
         int32_t mode = 0;
         write.push(ctx.cmd(), mode);
         vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
@@ -43,7 +51,7 @@ void addUnwarp(rg::RenderGraph& g, const NodeInputs& in, bool markForFixup, Epip
         desc.stencilTest = true;
         desc.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_REPLACE, VK_STENCIL_OP_KEEP,
                         VK_COMPARE_OP_ALWAYS, 0xff, 0xff, 1};
-        const auto& mark = in.shared->pipelines.graphics(pipelineKey("unwarp mark", ctx), desc);
+        const auto& mark = in.shared->pipelines.graphics(pipelineKey("unwarp mark", ctx, spec.key()), desc);
         mark.bind(ctx.cmd());
         vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 1);
         mode = 1;

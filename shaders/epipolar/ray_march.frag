@@ -137,6 +137,13 @@ void main() {
     vec2 ndc = texelFetch(coordinates, p, 0).xy;
     float z = texelFetch(epipolarZ, p, 0).r;
     vec3 v = rayDirection(ndc);
+    vec3 C = frame.cameraPos.xyz;
     float S = z / max(dot(v, frame.cameraForward.xyz), 1e-4);
-    outInscatter = vec4(marchSample(frame.cameraPos.xyz, v, S, p.y), 1.0);
+    vec3 lin = marchSample(C, v, S, p.y);
+    if (frame.epipolar2.w > 0.5) {
+        float t0, t1;
+        lightInterval(C, v, S, t0, t1);
+        lin = shadowedFraction(lin, unshadowedInscatter(C, v, t0, t1));
+    }
+    outInscatter = vec4(lin, 1.0);
 }

@@ -4,12 +4,19 @@
 // filter the 2 x 2 nearest samples bilaterally (weights zeroed where their camera z differs from
 // the pixel's). Mode 0 writes the result; mode 1 (stencil pass) keeps only the pixels no sample can
 // serve, for the fix-up pass. Without fix-up those pixels fall back to plain bilinear weights.
+// In ratio mode the samples carry the shadowed fraction, and the pixel's own unshadowed Lin (closed
+// form) scales it back: the glow around a light, which no sparse sampling resolves, stays exact.
 #include "epipolar_geometry.glsl"
 #include "camera.glsl"
 layout(binding = 1) uniform sampler2D sliceEndPoints;
 layout(binding = 2) uniform sampler2D epipolarZ;
 layout(binding = 3) uniform sampler2D inscatter;
 layout(binding = 4) uniform sampler2D cameraZ;
+#if LS_NEEDS_TABLE
+layout(binding = 7) uniform sampler2D pointTable;
+#endif
+#include "integrate.glsl"
+#include "light_volume.glsl"
 layout(push_constant) uniform Push { int mode; } pc;
 layout(location = 0) out vec4 outInscatter;
 
@@ -61,6 +68,13 @@ void main() {
         outInscatter = vec4(0.0);
         return;
     }
-    if (resolved) outInscatter = sum / weight;
-    else outInscatter = plainWeight > 0.0 ? plain / plainWeight : vec4(0.0);
+    vec4 value = resolved ? sum / weight : (plainWeight > 0.0 ? plain / plainWeight : vec4(0.0));
+    if (frame.epipolar2.w > 0.5) {
+        vec3 C = frame.cameraPos.xyz;
+        vec3 v = rayDirection(p);
+        float t0, t1;
+        lightInterval(C, v, z / max(dot(v, frame.cameraForward.xyz), 1e-4), t0, t1);
+        value.rgb *= unshadowedInscatter(C, v, t0, t1);
+    }
+    outInscatter = vec4(value.rgb, 1.0);
 }

@@ -12,7 +12,12 @@ layout(binding = 1, rgba32f) uniform writeonly image2D table;
 const float GL_X[4] = float[](0.1834346425, 0.5255324099, 0.7966664774, 0.9602898565);
 const float GL_W[4] = float[](0.3626837834, 0.3137066459, 0.2223810345, 0.1012285363);
 
-float columnPhi(int col, int width) { return (float(col) / float(width - 1) - 0.5) * PI; }
+// The end columns stand for s = -inf and +inf; keep their tangent finite (float pi/2 lies just past
+// pi/2, where tan changes sign).
+float columnPhi(int col, int width) {
+    float limit = 0.5 * PI - 1e-5;
+    return clamp((float(col) / float(width - 1) - 0.5) * PI, -limit, limit);
+}
 
 void main() {
     int row = int(gl_GlobalInvocationID.x);

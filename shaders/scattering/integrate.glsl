@@ -71,4 +71,19 @@ vec3 finishInscatter(Inscatter a, vec3 v) {
     return max(a.sum, vec3(0.0)) * L;
 }
 
+// Lin over [t0, t1] as if nothing cast a shadow (the light's own volume still applies).
+vec3 unshadowedInscatter(vec3 C, vec3 v, float t0, float t1) {
+    if (!(t0 < t1)) return vec3(0.0);
+    Inscatter a = beginInscatter(C, v, t0);
+    advance(a, t1, vec3(1.0));
+    return finishInscatter(a, v);
+}
+
+// What epipolar interpolation carries in ratio mode: the shadowed fraction of the unshadowed Lin,
+// per channel (1 where the unshadowed Lin is 0, so it blends neutrally).
+vec3 shadowedFraction(vec3 lin, vec3 unshadowed) {
+    vec3 r = lin / max(unshadowed, vec3(1e-30));
+    return mix(clamp(r, 0.0, 1.0), vec3(1.0), lessThanEqual(unshadowed, vec3(0.0)));
+}
+
 #endif

@@ -113,3 +113,43 @@ TEST(Sync, ImportIsHandedBackInItsFinalLayout) {
     EXPECT_EQ(c.finalBarriers[0].newLayout, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     EXPECT_EQ(c.finalBarriers[0].srcAccess, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
 }
+
+TEST(Sync, ReadAfterReadWriteNeedsABarrier) {
+    RenderGraph g;
+    ImageRef x = g.createImage("x", ImageDesc::absolute(VK_FORMAT_R32_SFLOAT, 8, 8));
+    ImageRef y = g.createImage("y", ImageDesc::absolute(VK_FORMAT_R32_SFLOAT, 8, 8));
+    auto w = g.addPass("write", PassType::Compute);
+    x = w.storageWrite(x);
+    auto rw = g.addPass("read-modify-write", PassType::Compute);
+    x = rw.storageReadWrite(x);
+    auto r = g.addPass("read", PassType::Compute);
+    r.storageRead(x);
+    g.markOutput(r.storageWrite(y));
+    const CompiledGraph c = compile(g, graph_test::caps());
+    // The read-modify-write's own read access does not make its write visible to the next read.
+    const BarrierPlan* b = barrierFor(c.passes[2], x.id);
+    ASSERT_NE(b, nullptr);
+    EXPECT_EQ(b->srcAccess, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    EXPECT_EQ(b->dstAccess, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+    ASSERT_NE(barrierFor(c.passes[1], x.id), nullptr);
+}
+
+TEST(Sync, SampledDepthUsesTheShaderReadLayout) {
+    RenderGraph g;
+    ImportedImage d;
+    d.format = VK_FORMAT_D32_SFLOAT;
+    d.extent = {8, 8};
+    d.usage = VK_IMAGE_USAGE_SAMPLED_BIT;  // not a depth attachment of ours
+    d.initialLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    d.finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    ImageRef depth = g.importImage("engine depth", d);
+    ImageRef out = g.createImage("out", ImageDesc::absolute(VK_FORMAT_R32_SFLOAT, 8, 8));
+    auto p = g.addPass("sample depth", PassType::Compute);
+    p.sampled(depth, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
+    g.markOutput(p.storageWrite(out));
+    const CompiledGraph c = compile(g, graph_test::caps());
+    for (const auto& s : c.passes[0].states)
+        if (s.resource == depth.id) {
+            EXPECT_EQ(s.layout, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+        }
+}

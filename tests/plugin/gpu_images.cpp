@@ -1,0 +1,114 @@
+#include "gpu_images.h"
+
+#include <cstring>
+
+#include "rendergraph/format_info.h"
+#include "rendergraph/host_buffer.h"
+#include "rendergraph/vk_error.h"
+
+namespace plugin_test {
+
+TestImage::TestImage(const rg::Device& device, VkFormat format, VkExtent2D extent,
+                     VkImageUsageFlags usage, VkImageLayout restingLayout, const std::string& name)
+    : device_(device), format_(format), extent_(extent),
+      usage_(usage | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT),
+      resting_(restingLayout) {
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = format;
+    info.extent = {extent.width, extent.height, 1};
+    info.mipLevels = 1;
+    info.arrayLayers = 1;
+    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = usage_;
+    RG_VK(vkCreateImage(device.device(), &info, nullptr, &image_));
+    device.setName(image_, VK_OBJECT_TYPE_IMAGE, name);
+    VkMemoryRequirements req;
+    vkGetImageMemoryRequirements(device.device(), image_, &req);
+    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    alloc.allocationSize = req.size;
+    alloc.memoryTypeIndex = device.findMemoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    RG_VK(vkAllocateMemory(device.device(), &alloc, nullptr, &memory_));
+    RG_VK(vkBindImageMemory(device.device(), image_, memory_, 0));
+    device.submitAndWait([&](VkCommandBuffer cmd) { transition(cmd, VK_IMAGE_LAYOUT_UNDEFINED, resting_); });
+}
+
+TestImage::~TestImage() {
+    vkDestroyImage(device_.device(), image_, nullptr);
+    vkFreeMemory(device_.device(), memory_, nullptr);
+}
+
+void TestImage::transition(VkCommandBuffer cmd, VkImageLayout from, VkImageLayout to) const {
+    VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+    b.srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+    b.srcAccessMask = VK_ACCESS_2_MEMORY_WRITE_BIT;
+    b.dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+    b.dstAccessMask = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT;
+    b.oldLayout = from;
+    b.newLayout = to;
+    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.image = image_;
+    b.subresourceRange = {rg::fullAspect(format_), 0, 1, 0, 1};
+    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dep.imageMemoryBarrierCount = 1;
+    dep.pImageMemoryBarriers = &b;
+    vkCmdPipelineBarrier2(cmd, &dep);
+}
+
+void TestImage::upload(const std::vector<float>& texels) {
+    const VkDeviceSize bytes = texels.size() * sizeof(float);
+    rg::HostBuffer staging(device_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, "test upload");
+    std::memcpy(staging.data(), texels.data(), bytes);
+    device_.submitAndWait([&](VkCommandBuffer cmd) {
+        transition(cmd, resting_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+        VkBufferImageCopy region{};
+        region.imageSubresource = {rg::hasDepth(format_) ? VkImageAspectFlags{VK_IMAGE_ASPECT_DEPTH_BIT}
+                                                         : VkImageAspectFlags{VK_IMAGE_ASPECT_COLOR_BIT},
+                                   0, 0, 1};
+        region.imageExtent = {extent_.width, extent_.height, 1};
+        vkCmdCopyBufferToImage(cmd, staging.buffer(), image_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, resting_);
+    });
+}
+
+std::vector<float> TestImage::download() {
+    const size_t channels = rg::texelBytes(format_) / 4;
+    const VkDeviceSize bytes = size_t{extent_.width} * extent_.height * channels * sizeof(float);
+    rg::HostBuffer staging(device_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, "test download");
+    device_.submitAndWait([&](VkCommandBuffer cmd) {
+        transition(cmd, resting_, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+        VkBufferImageCopy region{};
+        region.imageSubresource = {rg::hasDepth(format_) ? VkImageAspectFlags{VK_IMAGE_ASPECT_DEPTH_BIT}
+                                                         : VkImageAspectFlags{VK_IMAGE_ASPECT_COLOR_BIT},
+                                   0, 0, 1};
+        region.imageExtent = {extent_.width, extent_.height, 1};
+        vkCmdCopyImageToBuffer(cmd, image_, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.buffer(), 1, &region);
+        transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, resting_);
+        VkMemoryBarrier2 host{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+        host.srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+        host.srcAccessMask = VK_ACCESS_2_MEMORY_WRITE_BIT;
+        host.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
+        host.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
+        VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+        dep.memoryBarrierCount = 1;
+        dep.pMemoryBarriers = &host;
+        vkCmdPipelineBarrier2(cmd, &dep);
+    });
+    std::vector<float> out(bytes / sizeof(float));
+    std::memcpy(out.data(), staging.data(), bytes);
+    return out;
+}
+
+lightscatter::ImageInput TestImage::input() const {
+    lightscatter::ImageInput in;
+    in.image = image_;
+    in.format = format_;
+    in.extent = extent_;
+    in.usage = usage_;
+    in.layout = resting_;
+    in.finalLayout = resting_;
+    return in;
+}
+
+}  // namespace plugin_test

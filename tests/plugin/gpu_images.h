@@ -1,0 +1,38 @@
+#pragma once
+// Engine-side images for plugin tests: created, filled from the host, handed to the plugin as
+// ImageInputs, and read back.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "lightscatter.h"
+#include "rendergraph/device.h"
+
+namespace plugin_test {
+
+class TestImage {
+public:
+    TestImage(const rg::Device& device, VkFormat format, VkExtent2D extent, VkImageUsageFlags usage,
+              VkImageLayout restingLayout, const std::string& name);
+    ~TestImage();
+    TestImage(const TestImage&) = delete;
+    TestImage& operator=(const TestImage&) = delete;
+
+    // Uploads tightly packed texels (float per depth texel, 4 floats per RGBA32F texel).
+    void upload(const std::vector<float>& texels);
+    std::vector<float> download();  // RGBA32F or R32/D32 as floats
+    lightscatter::ImageInput input() const;
+    VkImage image() const { return image_; }
+
+private:
+    void transition(VkCommandBuffer cmd, VkImageLayout from, VkImageLayout to) const;
+    const rg::Device& device_;
+    VkFormat format_;
+    VkExtent2D extent_;
+    VkImageUsageFlags usage_;
+    VkImageLayout resting_;
+    VkImage image_ = VK_NULL_HANDLE;
+    VkDeviceMemory memory_ = VK_NULL_HANDLE;
+};
+
+}  // namespace plugin_test

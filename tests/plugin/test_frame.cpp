@@ -1,0 +1,129 @@
+#include "test_frame.h"
+
+#include <cmath>
+
+namespace plugin_test {
+
+TestFrame::TestFrame(const rg::Device& device, FrameSpec spec) : device_(device), spec_(std::move(spec)) {
+    light_ = spec_.light;
+    const VkExtent2D s = spec_.screen;
+    depth_ = std::make_unique<TestImage>(device, VK_FORMAT_D32_SFLOAT, s, VK_IMAGE_USAGE_SAMPLED_BIT,
+                                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, "test depth");
+    depth_->upload(spec_.depthOverride.empty() ? renderDepth(spec_.scene, spec_.view, s.width, s.height)
+                                               : spec_.depthOverride);
+    color_ = std::make_unique<TestImage>(device, VK_FORMAT_R32G32B32A32_SFLOAT, s, VK_IMAGE_USAGE_STORAGE_BIT,
+                                         VK_IMAGE_LAYOUT_GENERAL, "test color");
+    resetColor();
+    out_ = std::make_unique<TestImage>(device, VK_FORMAT_R32G32B32A32_SFLOAT, s, VK_IMAGE_USAGE_STORAGE_BIT,
+                                       VK_IMAGE_LAYOUT_GENERAL, "test in-scattering");
+    if (spec_.shadowed && light_.type != lightscatter::LightType::Point) {
+        if (light_.shadowMapSize == 0) light_.shadowMapSize = 128;
+        const glm::mat4 m =
+            light_.type == lightscatter::LightType::Spot
+                ? spotShadowMatrix(light_, spec_.shadowNear, spec_.shadowFar)
+                : directionalShadowMatrix({light_.direction[0], light_.direction[1], light_.direction[2]},
+                                          spec_.sceneCenter, spec_.sceneRadius);
+        light_.shadowViewProjection = toMat4(m);
+        const uint32_t n = light_.shadowMapSize;
+        shadow_ = std::make_unique<TestImage>(device, VK_FORMAT_D32_SFLOAT, VkExtent2D{n, n},
+                                              VK_IMAGE_USAGE_SAMPLED_BIT,
+                                              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, "test shadow map");
+        shadow_->upload(renderShadowMap(spec_.scene, m, n, light_.shadowReversedZ));
+    } else {
+        light_.shadowMapSize = 0;
+    }
+}
+
+void TestFrame::resetColor() {
+    std::vector<float> c(size_t{spec_.screen.width} * spec_.screen.height * 4, spec_.background);
+    color_->upload(c);
+}
+
+lightscatter::FrameDescription TestFrame::description(lightscatter::Method method,
+                                                      lightscatter::Profile profile,
+                                                      const lightscatter::Settings& settings) const {
+    lightscatter::FrameDescription f;
+    f.depth = depth_->input();
+    f.color = color_->input();
+    f.inscatterOut = out_->input();
+    if (shadow_) f.shadowMap = shadow_->input();
+    f.camera = spec_.view.camera();
+    f.light = light_;
+    f.medium = spec_.medium;
+    f.method = method;
+    f.profile = profile;
+    f.custom = settings;
+    return f;
+}
+
+lightscatter::Light spotOverGrille() {
+    lightscatter::Light l;
+    l.type = lightscatter::LightType::Spot;
+    l.position = {0.3f, 6.0f, 0.2f};
+    l.direction = {0.0f, -1.0f, 0.0f};
+    l.intensity = {40.0f, 38.0f, 35.0f};
+    l.halfAngleDegrees = 30.0f;
+    l.range = 20.0f;
+    l.shadowMapSize = 128;
+    return l;
+}
+
+lightscatter::Light sunThroughGrille() {
+    lightscatter::Light l;
+    l.type = lightscatter::LightType::Directional;
+    l.direction = {0.35f, -1.0f, -0.25f};
+    l.intensity = {3.0f, 3.0f, 2.8f};
+    l.shadowMapSize = 128;
+    return l;
+}
+
+lightscatter::Medium fog() {
+    lightscatter::Medium m;
+    m.betaR = {0.002f, 0.004f, 0.008f};
+    m.betaM = {0.03f, 0.03f, 0.03f};
+    m.g = 0.6f;
+    m.maxDistance = 60.0f;
+    return m;
+}
+
+View defaultView(VkExtent2D screen) {
+    return lookAt({0.0f, 2.5f, 9.0f}, {0.0f, 1.5f, 0.0f}, 60.0f,
+                  static_cast<float>(screen.width) / static_cast<float>(screen.height), 0.1f, 50.0f);
+}
+
+lightscatter::Settings smallSettings(VkExtent2D screen) {
+    lightscatter::Settings s;
+    s.slices = (2 * (screen.width + screen.height) + 3) / 4 * 4;
+    s.samplesPerSlice = std::max(screen.width, screen.height) + screen.height / 2;
+    s.initialSampleStep = 8;
+    s.shadowMapSize = 128;
+    return s;
+}
+
+ErrorStats compare(const std::vector<float>& a, const std::vector<float>& b) {
+    ErrorStats e;
+    for (size_t i = 0; i < b.size(); ++i)
+        if (i % 4 != 3) e.peak = std::max(e.peak, static_cast<double>(std::fabs(b[i])));
+    const double scale = e.peak > 0 ? e.peak : 1.0;
+    size_t n = 0;
+    double sum = 0, sum2 = 0;
+    for (size_t i = 0; i < a.size() && i < b.size(); ++i) {
+        if (i % 4 == 3) continue;
+        if (!std::isfinite(a[i])) {
+            ++e.nonFinite;
+            continue;
+        }
+        const double d = std::fabs(static_cast<double>(a[i]) - b[i]) / scale;
+        sum += d;
+        sum2 += d * d;
+        e.maxRelative = std::max(e.maxRelative, d);
+        ++n;
+    }
+    if (n) {
+        e.meanRelative = sum / static_cast<double>(n);
+        e.rmsRelative = std::sqrt(sum2 / static_cast<double>(n));
+    }
+    return e;
+}
+
+}  // namespace plugin_test
