@@ -147,6 +147,7 @@ struct FrameReport {
     double totalMilliseconds = 0;
     std::string device;
     std::vector<std::string> passNames;   // the nodes this frame was built from
+    std::vector<std::string> setupPasses; // run before the frame this time (the point-light table)
     std::string depthStencilFormat;       // what was chosen for the stencil textures
 };
 

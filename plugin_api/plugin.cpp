@@ -74,13 +74,16 @@ struct Plugin::Impl {
                        VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
                        VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
 
-        const ls::TableLayout table = ls::tableLayoutFor(setup.medium, kTableWidth, kTableHeight);
+        const ls::TableLayout table =
+            ls::tableLayoutFor(setup.medium, setup.light.radius, kTableWidth, kTableHeight);
         shared->spec = spec;
         shared->constants = ls::makeFrameConstants(setup.camera, setup.light, setup.medium,
                                                    setup.epipolar, setup.screen, table);
         if (needsTable) {
             if (!pointTable) pointTable = std::make_unique<detail::PointTable>(device, kTableWidth, kTableHeight);
-            pointTable->update(shared);
+            tableRefilled = pointTable->update(shared);
+        } else {
+            tableRefilled = false;
         }
 
         if (!config || !(*config == c)) {
@@ -117,6 +120,7 @@ struct Plugin::Impl {
         for (const auto& p : t.passes) r.passes.push_back({p.name, p.milliseconds});
         r.totalMilliseconds = t.totalMilliseconds;
         for (const auto& p : executor->compiled().passes) r.passNames.push_back(fg.graph->passes()[p.pass].name);
+        if (tableRefilled) r.setupPasses.push_back("point-light table");
         return r;
     }
 
@@ -125,6 +129,7 @@ struct Plugin::Impl {
     ls::Shared shared;
     VkFormat depthStencil = VK_FORMAT_UNDEFINED;
     std::unique_ptr<detail::PointTable> pointTable;
+    bool tableRefilled = false;
     std::optional<GraphConfig> config;
     FrameGraph fg;
     std::unique_ptr<rg::GraphExecutor> executor;

@@ -22,7 +22,7 @@ struct FrameConstants {
     glm::vec4 shadowInfo;      // size, 1/size, reversed, bias
     glm::vec4 epipolar;        // slices, samples, initial step, refinement threshold
     glm::vec4 epipolar2;       // bilateral threshold, fix-up max steps, tree levels, ratio mode
-    glm::vec4 lutInfo;         // h scale, width, height, -
+    glm::vec4 lutInfo;         // log range of hEff / r0, width, height, -
 };
 static_assert(sizeof(FrameConstants) == 3 * 64 + 15 * 16, "std140 layout of frame.glsl");
 

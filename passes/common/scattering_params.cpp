@@ -5,15 +5,20 @@
 
 namespace ls {
 
-TableLayout tableLayoutFor(const MediumParams& medium, uint32_t width, uint32_t height) {
+TableLayout tableLayoutFor(const MediumParams& medium, float lightRadius, uint32_t width,
+                           uint32_t height) {
     const glm::vec3 bt = medium.betaT();
-    const float maxBeta = std::max({bt.x, bt.y, bt.z});
-    // u = hEff * hScale spreads the rows over the distances where extinction changes the table;
-    // without extinction the table does not depend on h beyond r0, and any scale will do.
+    // The table changes with h on two scales: near r0, where the phase angle along the ray turns
+    // from a step into a smooth sweep, and near 1/betaT, where extinction sets in. A log axis
+    // resolves both; past 50 extinction lengths (or the sky distance without extinction) nothing
+    // is left to resolve.
+    const float minBeta = std::min({bt.x, bt.y, bt.z});
+    const float scale = std::max(minBeta > 0.0f ? 50.0f / minBeta : 0.0f, 10.0f * medium.maxDistance);
     TableLayout t;
     t.width = width;
     t.height = height;
-    t.hScale = std::max(maxBeta, 1.0f / std::max(medium.maxDistance, 1.0f));
+    const float r0 = std::max(lightRadius, 1e-6f);
+    t.logRange = std::max(std::log(std::max(scale, r0) / r0), 1.0f);
     return t;
 }
 
@@ -69,7 +74,7 @@ FrameConstants makeFrameConstants(const CameraParams& camera, const LightParams&
     f.epipolar2 = {settings.bilateralThreshold, static_cast<float>(settings.fixupMaxSteps),
                    static_cast<float>(treeLevels(light.shadowMapSize)),
                    settings.interpolateFraction ? 1.0f : 0.0f};
-    f.lutInfo = {table.hScale, static_cast<float>(table.width), static_cast<float>(table.height), 0.0f};
+    f.lutInfo = {table.logRange, static_cast<float>(table.width), static_cast<float>(table.height), 0.0f};
     return f;
 }
 

@@ -59,12 +59,15 @@ struct EpipolarSettings {
 };
 
 // The look-up table's shape and scale (passes/lut).
+// Rows are uniform in log(hEff / r0) from 0 (a ray through the light) to logRange, where
+// extinction has made the table negligible (or, without extinction, far beyond where it changes).
 struct TableLayout {
     uint32_t width = 512;   // phi
-    uint32_t height = 256;  // h
-    float hScale = 1.0f;    // 1/m
+    uint32_t height = 256;  // log(hEff / r0)
+    float logRange = 10.0f;
 };
-TableLayout tableLayoutFor(const MediumParams& medium, uint32_t width = 512, uint32_t height = 256);
+TableLayout tableLayoutFor(const MediumParams& medium, float lightRadius, uint32_t width = 512,
+                           uint32_t height = 256);
 
 // Where the light (or, behind the camera, the point its shafts converge to) lands in NDC.
 struct LightOnScreen {

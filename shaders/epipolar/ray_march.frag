@@ -120,13 +120,15 @@ vec3 marchSample(vec3 C, vec3 v, float S, int slice) {
         float z0 = toStandardDepth(X0.z / X0.w), z1 = toStandardDepth(X1.z / X1.w);
         r.z0 = z0;
         r.dz = r.tb - r.ta > 1e-6 ? (z1 - z0) / (r.tb - r.ta) : 0.0;
-        if (r.tb >= r.ta) {
+        // The ray should lie on its slice's line. It does not when its projection degenerates to
+        // a point (a ray along the light's direction, a camera at the light) or runs against the
+        // line: then it is marched on its own, texel by texel, as brute force would.
+        vec2 across = vec2(-r.dir.y, r.dir.x) * inversesqrt(dot(r.dir, r.dir));
+        float offLine = max(abs(dot(uv0 - r.origin, across)), abs(dot(uv1 - r.origin, across)));
+        if (r.tb >= r.ta && offLine * frame.shadowInfo.x <= 0.5)
             marchLine(acc, r, slice);
-        } else {
-            // Against the slice's direction (only for rays almost through the light, whose
-            // projection is a point): step this ray on its own.
-            advance(acc, f1, shadowVisibility(uv1, z1) * lightColorAt(uv1));
-        }
+        else
+            marchFrustumSegment(acc, C, v, f0, f1, 0u);
     }
     advance(acc, t1, vec3(1.0));
     return finishInscatter(acc, v);

@@ -24,8 +24,7 @@ void main() {
     int width = int(frame.lutInfo.y), height = int(frame.lutInfo.z);
     if (row >= height) return;
     float r0 = frame.betaT.w;
-    float y = float(row) / float(height);
-    float hEff = max(y / (1.0 - y) / frame.lutInfo.x, r0);
+    float hEff = r0 * exp(float(row) / float(height - 1) * frame.lutInfo.x);
     float h2 = max(hEff * hEff - r0 * r0, 0.0);
     vec3 beta = frame.betaT.rgb;
 

@@ -34,7 +34,7 @@ layout(std140, set = 0, binding = 0) uniform FrameConstants {
     vec4 epipolar;       // x: slices, y: samples per slice, z: initial step, w: refinement threshold
     vec4 epipolar2;      // x: bilateral threshold, y: fix-up max steps (0: all), z: tree levels,
                          // w: 1 when samples carry the shadowed fraction instead of Lin
-    vec4 lutInfo;        // x: h scale (1/m), y: table width, z: table height, w: -
+    vec4 lutInfo;        // x: log range of hEff / r0, y: table width, z: table height, w: -
 } frame;
 
 #endif

@@ -2,7 +2,7 @@
 // P(theta) exp(-betaT (x - s)) exp(-betaT sqrt(h^2 + x^2)) / (h^2 + x^2 + r0^2) dx, with x measured
 // along the ray from the light's projection onto it. Stored as G = hEff T, hEff = sqrt(h^2 + r0^2),
 // over (phi, y): s = hEff tan(phi), phi in [-pi/2, pi/2] across the width (end points included);
-// y = u / (1 + u) with u = hEff * hScale down the height (texel i at y = i / height).
+// log(hEff / r0) down the height, row i at i / (height - 1) * logRange (lutInfo.x).
 // Needs `pointTable` (sampler2D) declared by the including shader.
 #ifndef LS_LUT_GLSL
 #define LS_LUT_GLSL
@@ -20,8 +20,7 @@ vec3 pointTableT(float h, float s) {
     float phi = atan(s, hEff);
     vec2 size = frame.lutInfo.yz;
     float x = (phi / PI + 0.5) * (size.x - 1.0);
-    float u = hEff * frame.lutInfo.x;
-    float y = u / (1.0 + u) * size.y;
+    float y = log(max(hEff / r0, 1.0)) / frame.lutInfo.x * (size.y - 1.0);
     vec2 p = vec2(x, y);
     ivec2 i = ivec2(floor(p));
     vec2 f = p - floor(p);

@@ -94,7 +94,7 @@ View defaultView(VkExtent2D screen) {
 lightscatter::Settings smallSettings(VkExtent2D screen) {
     lightscatter::Settings s;
     s.slices = (2 * (screen.width + screen.height) + 3) / 4 * 4;
-    s.samplesPerSlice = std::max(screen.width, screen.height) + screen.height / 2;
+    s.samplesPerSlice = std::max(std::max(screen.width, screen.height) + screen.height / 2, 16u);
     s.initialSampleStep = 8;
     s.shadowMapSize = 128;
     return s;

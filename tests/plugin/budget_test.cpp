@@ -1,0 +1,102 @@
+// The memory budget needs no GPU: every profile of seed 000 at 2560x1600, beside the seed's figures.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <set>
+
+#include "lightscatter.h"
+
+using lightscatter::Profile;
+
+TEST(Budget, SeedProfilesAt2560x1600) {
+    std::printf("%-18s %7s %7s %5s %12s %12s %10s\n", "profile", "slices", "samples", "SM", "total MiB",
+                "peak MiB", "seed MB");
+    uint64_t previousPeak = ~uint64_t{0};
+    for (Profile p : {Profile::HighQuality, Profile::Balanced, Profile::HighPerformance}) {
+        const auto s = lightscatter::profileSettings(p);
+        const auto b = lightscatter::budget(p, 2560, 1600, s.shadowMapSize);
+        std::printf("%-18s %7u %7u %5u %12.1f %12.1f %10.1f\n", lightscatter::profileName(p), s.slices,
+                    s.samplesPerSlice, s.shadowMapSize, static_cast<double>(b.totalBytes) / 1048576.0, static_cast<double>(b.peakBytes) / 1048576.0,
+                    b.seed ? b.seed->megabytes : 0.0);
+        EXPECT_TRUE(b.estimated);
+        ASSERT_TRUE(b.seed.has_value());
+        EXPECT_EQ(b.seed->screenWidth, 2560u);
+        EXPECT_LT(b.peakBytes, b.totalBytes);   // aliasing saves memory
+        EXPECT_LT(b.peakBytes, previousPeak);    // cheaper profiles need less
+        previousPeak = b.peakBytes;
+        // The seed's auxiliary textures, with its formats.
+        std::set<std::string> seen;
+        for (const auto& e : b.entries) seen.insert(e.name + " " + e.format);
+        for (const char* want : {"camera-space z R32_SFLOAT", "coordinate texture R32G32_SFLOAT",
+                                 "epipolar camera-space z R32_SFLOAT", "interpolation source R16G16_UINT",
+                                 "in-scattering (ray-marched samples) R16G16B16A16_SFLOAT",
+                                 "in-scattering (all samples) R16G16B16A16_SFLOAT",
+                                 "slice end points R32G32B32A32_SFLOAT",
+                                 "slice uv origin and direction R32G32B32A32_SFLOAT",
+                                 "1D min/max trees (odd levels) R16G16_SFLOAT",
+                                 "1D min/max trees (even levels) R16G16_SFLOAT",
+                                 "epipolar depth-stencil D24_UNORM_S8_UINT",
+                                 "camera depth-stencil D24_UNORM_S8_UINT"})
+            EXPECT_TRUE(seen.count(want)) << want << " missing from the " << lightscatter::profileName(p) << " budget";
+    }
+}
+
+TEST(Budget, EntriesHaveTheSeedsSizes) {
+    const auto b = lightscatter::budget(Profile::Balanced, 1920, 1080, 2048);
+    for (const auto& e : b.entries) {
+        if (e.name == "coordinate texture") {
+            EXPECT_EQ(e.width, 1024u);  // samples
+            EXPECT_EQ(e.height, 1024u); // slices
+            EXPECT_GE(e.bytes, 1024u * 1024u * 8u);
+        }
+        if (e.name == "1D min/max trees (odd levels)") {
+            EXPECT_EQ(e.width, 2048u);
+            EXPECT_EQ(e.height, 1024u);
+        }
+        if (e.name == "camera-space z") {
+            EXPECT_EQ(e.width, 1920u);
+            EXPECT_EQ(e.height, 1080u);
+        }
+    }
+}
+
+TEST(Budget, DirectionalLightNeedsNoTable) {
+    const auto spot = lightscatter::budget(Profile::Balanced, 640, 480, 1024, lightscatter::LightType::Spot);
+    const auto sun = lightscatter::budget(Profile::Balanced, 640, 480, 1024, lightscatter::LightType::Directional);
+    auto hasTable = [](const lightscatter::Budget& b) {
+        for (const auto& e : b.entries)
+            if (e.name == "point-light table") return !e.transient;
+        return false;
+    };
+    EXPECT_TRUE(hasTable(spot));
+    EXPECT_FALSE(hasTable(sun));
+}
+
+TEST(Budget, BadRequestsAreRefused) {
+    EXPECT_THROW(lightscatter::budget(Profile::Balanced, 0, 1080, 2048), lightscatter::InvalidInput);
+    EXPECT_THROW(lightscatter::budget(Profile::Balanced, 1920, 1080, 1), lightscatter::InvalidInput);
+    lightscatter::Settings bad;
+    bad.slices = 0;
+    try {
+        lightscatter::budget(Profile::Custom, 1920, 1080, 2048, lightscatter::LightType::Spot, &bad);
+        ADD_FAILURE() << "zero slices accepted";
+    } catch (const lightscatter::InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("settings.slices"), std::string::npos);
+    }
+}
+
+TEST(Names, MethodsAndProfilesRoundTrip) {
+    for (const auto& n : lightscatter::methodNames()) {
+        const auto m = lightscatter::parseMethod(n);
+        ASSERT_TRUE(m.has_value()) << n;
+        EXPECT_EQ(lightscatter::methodName(*m), n);
+    }
+    for (const auto& n : lightscatter::profileNames()) {
+        const auto p = lightscatter::parseProfile(n);
+        ASSERT_TRUE(p.has_value()) << n;
+        EXPECT_EQ(lightscatter::profileName(*p), n);
+    }
+    EXPECT_FALSE(lightscatter::parseMethod("raytraced").has_value());
+    EXPECT_EQ(lightscatter::profileSettings(Profile::HighQuality).slices, 2048u);
+    EXPECT_EQ(lightscatter::profileSettings(Profile::HighPerformance).samplesPerSlice, 512u);
+}

@@ -1,0 +1,134 @@
+// Lights without shadows against MODEL.md's closed forms and the float64 numerical integral.
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+#include "plugin_fixture.h"
+#include "reference/closed_forms.h"
+#include "reference/inscatter_integral.h"
+
+using namespace plugin_test;
+using lightscatter::Method;
+
+namespace {
+
+ls::ref::Medium refMedium(const lightscatter::Medium& m) {
+    ls::ref::Medium r;
+    r.betaR = {m.betaR[0], m.betaR[1], m.betaR[2]};
+    r.betaM = {m.betaM[0], m.betaM[1], m.betaM[2]};
+    r.sigmaA = {m.sigmaA[0], m.sigmaA[1], m.sigmaA[2]};
+    r.g = m.g;
+    r.miePhase = m.phase == lightscatter::MiePhase::Isotropic ? ls::ref::Medium::Isotropic
+                                                               : ls::ref::Medium::CornetteShanks;
+    r.maxDistance = m.maxDistance;
+    return r;
+}
+
+ls::ref::Light refLight(const lightscatter::Light& l) {
+    ls::ref::Light r;
+    r.type = l.type == lightscatter::LightType::Directional ? ls::ref::Light::Directional
+             : l.type == lightscatter::LightType::Spot      ? ls::ref::Light::Spot
+                                                            : ls::ref::Light::Point;
+    r.position = {l.position[0], l.position[1], l.position[2]};
+    r.direction = glm::normalize(glm::dvec3(l.direction[0], l.direction[1], l.direction[2]));
+    r.intensity = {l.intensity[0], l.intensity[1], l.intensity[2]};
+    r.halfAngle = glm::radians(static_cast<double>(l.halfAngleDegrees));
+    r.range = l.range;
+    r.r0 = l.radius;
+    return r;
+}
+
+// Worst relative error of the GPU's Lin against the float64 value, per pixel and channel, with a
+// floor of `floor` x the image's peak so that near-zero pixels are judged absolutely.
+struct Judged {
+    double worst = 0, mean = 0, peak = 0;
+};
+Judged judge(TestFrame& frame, const std::vector<float>& lin, double floor) {
+    const FrameSpec& s = frame.spec();
+    const auto m = refMedium(s.medium);
+    const auto l = refLight(frame.light());
+    std::vector<glm::dvec3> expected(size_t{s.screen.width} * s.screen.height);
+    Judged j;
+    for (uint32_t y = 0; y < s.screen.height; ++y)
+        for (uint32_t x = 0; x < s.screen.width; ++x) {
+            const PixelRay r = pixelRay(s.scene, s.view, s.screen.width, s.screen.height, x, y,
+                                        s.medium.maxDistance);
+            const ls::ref::Ray ray{r.origin, r.dir, r.S};
+            const glm::dvec3 e = l.type == ls::ref::Light::Directional
+                                     ? ls::ref::directionalClosedForm(m, l, ray)
+                                     : ls::ref::integrateInscatter(m, l, ray).value;
+            expected[size_t{y} * s.screen.width + x] = e;
+            j.peak = std::max({j.peak, e.x, e.y, e.z});
+        }
+    double sum = 0;
+    for (size_t i = 0; i < expected.size(); ++i)
+        for (int c = 0; c < 3; ++c) {
+            const double want = expected[i][c], got = lin[i * 4 + static_cast<size_t>(c)];
+            const double err = std::fabs(got - want) / std::max(std::fabs(want), floor * j.peak);
+            if (err > j.worst && std::getenv("LS_DEBUG_JUDGE")) {
+                const uint32_t x = static_cast<uint32_t>(i % s.screen.width), y = static_cast<uint32_t>(i / s.screen.width);
+                const PixelRay r = pixelRay(s.scene, s.view, s.screen.width, s.screen.height, x, y, s.medium.maxDistance);
+                const glm::dvec3 q = r.origin - l.position;
+                std::printf("worst so far px %u,%u c%d got %.6g want %.6g  h %.4g sC %.4g S %.4g\n", x, y, c, got, want,
+                            glm::length(glm::cross(r.dir, q)), glm::dot(r.dir, q), r.S);
+            }
+            j.worst = std::max(j.worst, std::isfinite(got) ? err : 1e30);
+            sum += err;
+        }
+    j.mean = sum / static_cast<double>(expected.size() * 3);
+    return j;
+}
+
+FrameSpec unshadowed(lightscatter::Light light) {
+    FrameSpec s;
+    s.screen = {40, 30};
+    s.view = defaultView(s.screen);
+    s.light = light;
+    s.light.shadowMapSize = 0;
+    s.medium = fog();
+    s.shadowed = false;
+    return s;
+}
+
+}  // namespace
+
+class ClosedFormGpu : public PluginGpuTest {};
+
+TEST_F(ClosedFormGpu, UnshadowedDirectionalMatchesHoffmanPreetham) {
+    TestFrame frame(dev(), unshadowed(sunThroughGrille()));
+    const auto report = run(frame, Method::Epipolar);
+    // No shadow map: the per-pixel closed form, nothing epipolar.
+    for (const auto& name : report.passNames) EXPECT_EQ(name.find("epipolar"), std::string::npos) << name;
+    const Judged j = judge(frame, frame.inscatter(), 1e-3);
+    std::printf("directional: worst %.2e mean %.2e\n", j.worst, j.mean);
+    EXPECT_GT(j.peak, 0.0);
+    EXPECT_LT(j.worst, 2e-3);  // float32 math, float16 storage of the screen's Lin
+}
+
+TEST_F(ClosedFormGpu, UnshadowedPointLightMatchesTheIntegral) {
+    lightscatter::Light l;
+    l.type = lightscatter::LightType::Point;
+    l.position = {0.6f, 2.0f, 1.0f};
+    l.intensity = {30.0f, 25.0f, 20.0f};
+    l.radius = 0.1f;
+    TestFrame frame(dev(), unshadowed(l));
+    const auto report = run(frame, Method::Epipolar);
+    bool table = false;
+    for (const auto& name : report.passNames) table |= name == "unshadowed in-scattering";
+    EXPECT_TRUE(table);
+    const Judged j = judge(frame, frame.inscatter(), 1e-3);
+    std::printf("point: worst %.2e mean %.2e\n", j.worst, j.mean);
+    EXPECT_GT(j.peak, 0.0);
+    EXPECT_LT(j.mean, 1e-3);
+    EXPECT_LT(j.worst, 1e-2);
+}
+
+TEST_F(ClosedFormGpu, UnshadowedSpotMatchesTheIntegral) {
+    TestFrame frame(dev(), unshadowed(spotOverGrille()));
+    run(frame, Method::Epipolar);
+    const Judged j = judge(frame, frame.inscatter(), 1e-3);
+    std::printf("spot: worst %.2e mean %.2e\n", j.worst, j.mean);
+    EXPECT_GT(j.peak, 0.0);
+    EXPECT_LT(j.mean, 1e-3);
+    EXPECT_LT(j.worst, 3e-2);  // pixels whose ray grazes the cone
+}
