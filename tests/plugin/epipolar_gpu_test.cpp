@@ -141,3 +141,27 @@ TEST_F(EpipolarGpu, CompositeAttenuatesTheEngineColorAndAddsLin) {
         }
     EXPECT_LT(worst, 1e-3);
 }
+
+TEST_F(EpipolarGpu, ColoredShaftsMatchBruteForceWithTreesOnAndOff) {
+    FrameSpec spec = sceneWith(spotOverGrille());
+    spec.coloredLight = true;
+    TestFrame frame(dev(), spec);
+    auto settings = smallSettings(spec.screen);
+    lightscatter::FrameReport report;
+    const auto brute = render(frame, Method::BruteForce, settings);
+    const auto withTrees = render(frame, Method::Epipolar, settings, &report);
+    settings.minMaxTrees = false;
+    const auto without = render(frame, Method::Epipolar, settings);
+    const ErrorStats e = compare(withTrees, brute);
+    EXPECT_GT(e.peak, 0.0);
+    EXPECT_LT(e.meanRelative, 1e-3);
+    EXPECT_LT(compare(withTrees, without).maxRelative, 1e-3);
+    // The glass colors the shafts: somewhere red dominates blue by far, elsewhere the reverse.
+    bool red = false, blue = false;
+    for (size_t i = 0; i < brute.size(); i += 4) {
+        red |= brute[i] > 3.0f * brute[i + 2] && brute[i] > 1e-3f * static_cast<float>(e.peak);
+        blue |= brute[i + 2] > 3.0f * brute[i] && brute[i + 2] > 1e-3f * static_cast<float>(e.peak);
+    }
+    EXPECT_TRUE(red);
+    EXPECT_TRUE(blue);
+}

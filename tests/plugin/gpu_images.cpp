@@ -1,6 +1,8 @@
 #include "gpu_images.h"
 
+#include <cmath>
 #include <cstring>
+#include <limits>
 
 #include "rendergraph/format_info.h"
 #include "rendergraph/host_buffer.h"
@@ -72,9 +74,33 @@ void TestImage::upload(const std::vector<float>& texels) {
     });
 }
 
+namespace {
+
+float halfToFloat(uint16_t h) {
+    const uint32_t sign = (h >> 15) & 1u, exponent = (h >> 10) & 0x1fu, mantissa = h & 0x3ffu;
+    float v;
+    if (exponent == 0) v = std::ldexp(static_cast<float>(mantissa), -24);
+    else if (exponent == 31) v = mantissa ? std::numeric_limits<float>::quiet_NaN() : std::numeric_limits<float>::infinity();
+    else v = std::ldexp(static_cast<float>(mantissa | 0x400u), static_cast<int>(exponent) - 25);
+    return sign ? -v : v;
+}
+
+}  // namespace
+
+void TestImage::clear(float value) {
+    device_.submitAndWait([&](VkCommandBuffer cmd) {
+        transition(cmd, resting_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+        VkClearColorValue c{{value, value, value, value}};
+        VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+        vkCmdClearColorImage(cmd, image_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &c, 1, &range);
+        transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, resting_);
+    });
+}
+
 std::vector<float> TestImage::download() {
-    const size_t channels = rg::texelBytes(format_) / 4;
-    const VkDeviceSize bytes = size_t{extent_.width} * extent_.height * channels * sizeof(float);
+    const bool half = format_ == VK_FORMAT_R16G16B16A16_SFLOAT;
+    const size_t channels = half ? 4 : rg::texelBytes(format_) / 4;
+    const VkDeviceSize bytes = size_t{extent_.width} * extent_.height * rg::texelBytes(format_);
     rg::HostBuffer staging(device_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, "test download");
     device_.submitAndWait([&](VkCommandBuffer cmd) {
         transition(cmd, resting_, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
@@ -95,8 +121,13 @@ std::vector<float> TestImage::download() {
         dep.pMemoryBarriers = &host;
         vkCmdPipelineBarrier2(cmd, &dep);
     });
-    std::vector<float> out(bytes / sizeof(float));
-    std::memcpy(out.data(), staging.data(), bytes);
+    std::vector<float> out(size_t{extent_.width} * extent_.height * channels);
+    if (half) {
+        const auto* h = static_cast<const uint16_t*>(staging.data());
+        for (size_t i = 0; i < out.size(); ++i) out[i] = halfToFloat(h[i]);
+    } else {
+        std::memcpy(out.data(), staging.data(), bytes);
+    }
     return out;
 }
 

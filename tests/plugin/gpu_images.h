@@ -20,7 +20,8 @@ public:
 
     // Uploads tightly packed texels (float per depth texel, 4 floats per RGBA32F texel).
     void upload(const std::vector<float>& texels);
-    std::vector<float> download();  // RGBA32F or R32/D32 as floats
+    std::vector<float> download();  // RGBA32F, RGBA16F or R32/D32 as floats
+    void clear(float value);        // color images
     lightscatter::ImageInput input() const;
     VkImage image() const { return image_; }
 

@@ -29,6 +29,21 @@ TestFrame::TestFrame(const rg::Device& device, FrameSpec spec) : device_(device)
                                               VK_IMAGE_USAGE_SAMPLED_BIT,
                                               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, "test shadow map");
         shadow_->upload(renderShadowMap(spec_.scene, m, n, light_.shadowReversedZ));
+        if (spec_.coloredLight) {
+            // Stripes of red, green and blue glass across the light's view.
+            const uint32_t c = 32;
+            lightColor_ = std::make_unique<TestImage>(device, VK_FORMAT_R32G32B32A32_SFLOAT, VkExtent2D{c, c},
+                                                      VK_IMAGE_USAGE_SAMPLED_BIT,
+                                                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, "test light color");
+            std::vector<float> texels(size_t{c} * c * 4, 1.0f);
+            for (uint32_t y = 0; y < c; ++y)
+                for (uint32_t x = 0; x < c; ++x) {
+                    float* t = &texels[(size_t{y} * c + x) * 4];
+                    const uint32_t band = (x / 8) % 3;
+                    for (uint32_t k = 0; k < 3; ++k) t[k] = k == band ? 1.0f : 0.15f;
+                }
+            lightColor_->upload(texels);
+        }
     } else {
         light_.shadowMapSize = 0;
     }
@@ -47,6 +62,7 @@ lightscatter::FrameDescription TestFrame::description(lightscatter::Method metho
     f.color = color_->input();
     f.inscatterOut = out_->input();
     if (shadow_) f.shadowMap = shadow_->input();
+    if (lightColor_) f.lightColor = lightColor_->input();
     f.camera = spec_.view.camera();
     f.light = light_;
     f.medium = spec_.medium;

@@ -21,6 +21,7 @@ struct FrameSpec {
     float background = 0.25f;                      // the engine's color before compositing
     bool shadowed = true;
     std::vector<float> depthOverride;              // replaces the ray-cast depth when not empty
+    bool coloredLight = false;                     // stained glass: light-space color texture
 };
 
 class TestFrame {
@@ -38,7 +39,7 @@ private:
     const rg::Device& device_;
     FrameSpec spec_;
     lightscatter::Light light_;
-    std::unique_ptr<TestImage> depth_, color_, shadow_, out_;
+    std::unique_ptr<TestImage> depth_, color_, shadow_, out_, lightColor_;
 };
 
 // Default spot light over the grille, and a directional light through it.

@@ -1,0 +1,49 @@
+// The integration example of README.md. readme_sync_test.cpp checks that the README quotes this
+// file's marked block verbatim; readme_example_gpu_test.cpp runs it on the test device.
+#include "readme_example.h"
+
+#include <memory>
+
+lightscatter::Plugin& recordLightShafts(const EngineFrame& engine) {
+    // [readme-example]
+    // Once: the plugin works on the engine's own device and queue.
+    static std::unique_ptr<lightscatter::Plugin> plugin;
+    if (!plugin) plugin = std::make_unique<lightscatter::Plugin>(engine.context);
+
+    // Every frame: the engine's images, where they stand and where to leave them.
+    lightscatter::FrameDescription frame;
+    frame.depth = {engine.depth, VK_FORMAT_D32_SFLOAT, engine.extent, VK_IMAGE_USAGE_SAMPLED_BIT,
+                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    frame.depth.finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    frame.color = {engine.hdrColor, VK_FORMAT_R16G16B16A16_SFLOAT, engine.extent,
+                   VK_IMAGE_USAGE_STORAGE_BIT, VK_IMAGE_LAYOUT_GENERAL};
+    frame.color.finalLayout = VK_IMAGE_LAYOUT_GENERAL;
+    frame.shadowMap = lightscatter::ImageInput{engine.shadowMap, VK_FORMAT_D32_SFLOAT, {1024, 1024},
+                                               VK_IMAGE_USAGE_SAMPLED_BIT,
+                                               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    frame.shadowMap->finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+
+    frame.camera.view = engine.view;
+    frame.camera.projection = engine.projection;
+    frame.camera.nearPlane = 0.1f;
+    frame.camera.farPlane = 500.0f;
+
+    frame.light.type = lightscatter::LightType::Spot;
+    frame.light.position = {0.0f, 6.0f, 0.0f};
+    frame.light.direction = {0.0f, -1.0f, 0.0f};
+    frame.light.intensity = {40.0f, 38.0f, 35.0f};  // W/sr
+    frame.light.halfAngleDegrees = 30.0f;
+    frame.light.shadowViewProjection = engine.lightViewProjection;
+    frame.light.shadowMapSize = 1024;
+
+    frame.medium.betaM = {0.03f, 0.03f, 0.03f};  // 1/m
+    frame.method = lightscatter::Method::Epipolar;
+    frame.profile = lightscatter::Profile::HighPerformance;
+
+    // Throws lightscatter::InvalidInput, naming the field, before recording anything.
+    plugin->record(engine.commandBuffer, frame);
+    // Once the engine has submitted the command buffer and waited for it, plugin->report() gives
+    // the GPU time of every pass.
+    // [readme-example]
+    return *plugin;
+}

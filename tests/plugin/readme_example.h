@@ -1,0 +1,19 @@
+#pragma once
+#include <vulkan/vulkan.h>
+
+#include <array>
+
+#include "lightscatter.h"
+
+// The engine-side objects the README's integration example works with.
+struct EngineFrame {
+    lightscatter::VulkanContext context;
+    VkCommandBuffer commandBuffer;
+    VkExtent2D extent;
+    VkImage depth, hdrColor, shadowMap;
+    std::array<float, 16> view, projection, lightViewProjection;
+};
+
+// The README's example, verbatim (readme_example.cpp): records the light shafts into the engine's
+// command buffer and returns the plugin, for its report once the engine has waited.
+lightscatter::Plugin& recordLightShafts(const EngineFrame& engine);
