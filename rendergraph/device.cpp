@@ -237,12 +237,6 @@ void Device::createInstance(const DeviceOptions& options) {
         auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
             vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
         if (create) RG_VK(create(instance_, &messenger, nullptr, &messenger_));
-        setObjectName_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
-            vkGetInstanceProcAddr(instance_, "vkSetDebugUtilsObjectNameEXT"));
-        cmdBeginLabel_ = reinterpret_cast<PFN_vkCmdBeginDebugUtilsLabelEXT>(
-            vkGetInstanceProcAddr(instance_, "vkCmdBeginDebugUtilsLabelEXT"));
-        cmdEndLabel_ = reinterpret_cast<PFN_vkCmdEndDebugUtilsLabelEXT>(
-            vkGetInstanceProcAddr(instance_, "vkCmdEndDebugUtilsLabelEXT"));
     }
 }
 
@@ -312,9 +306,10 @@ void Device::loadProperties() {
     timestampBits_ = families[queueFamily_].timestampValidBits;
 }
 
-// Device-level entry points and the runtime's own command pool.
+// Debug-utils and device-level entry points, and the runtime's own command pool. An engine's
+// instance may or may not have enabled debug utils; its loader answers null when it has not.
 void Device::loadFunctions() {
-    if (!setObjectName_) {
+    if (!owns_ || debugUtils_) {
         setObjectName_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
             vkGetInstanceProcAddr(instance_, "vkSetDebugUtilsObjectNameEXT"));
         cmdBeginLabel_ = reinterpret_cast<PFN_vkCmdBeginDebugUtilsLabelEXT>(

@@ -82,3 +82,29 @@ rg::ShaderCode marchShader(MarchShader which, const ScatterSpec& spec) {
 }
 
 }  // namespace ls
+
+namespace ls {
+
+void declareMarchInputs(rg::PassBuilder& pass, const NodeInputs& in) {
+    if (in.shadowMap.valid()) pass.sampled(in.shadowMap, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
+    if (in.table.valid()) pass.sampled(in.table);
+    if (in.lightColor.valid()) pass.sampled(in.lightColor);
+}
+
+void appendMarchBindings(std::vector<rg::Binding>& bindings, const NodeInputs& in) {
+    if (in.shadowMap.valid()) bindings.push_back(sampledBinding(6));
+    if (in.table.valid()) bindings.push_back(sampledBinding(7));
+    if (in.lightColor.valid()) bindings.push_back(sampledBinding(8));
+}
+
+void pushMarchInputs(rg::DescriptorPush& set, const rg::PassContext& ctx, const NodeInputs& in) {
+    const auto& s = in.shared->samplers;
+    if (in.shadowMap.valid())
+        set.sampled(6, ctx.view(in.shadowMap, VK_IMAGE_ASPECT_DEPTH_BIT), ctx.layout(in.shadowMap),
+                    s.nearest());
+    if (in.table.valid()) set.sampled(7, ctx.view(in.table), ctx.layout(in.table), s.nearest());
+    if (in.lightColor.valid())
+        set.sampled(8, ctx.view(in.lightColor), ctx.layout(in.lightColor), s.linear());
+}
+
+}  // namespace ls

@@ -7,6 +7,7 @@
 #include "node_inputs.h"
 #include "rendergraph/pass_context.h"
 #include "rendergraph/pipeline.h"
+#include "rendergraph/render_graph.h"
 
 namespace ls {
 
@@ -30,5 +31,15 @@ std::string pipelineKey(const std::string& name, const rg::PassContext& ctx,
 // Shader variants of the marching shaders (see shaders/CMakeLists.txt).
 enum class MarchShader { RayMarch, BruteForce, Unshadowed };
 rg::ShaderCode marchShader(MarchShader which, const ScatterSpec& spec);
+
+}  // namespace ls
+
+namespace ls {
+
+// The inputs every marching node samples besides its own textures: the shadow map (binding 6), the
+// point-light table (7) and the light-color texture (8), each only when the frame has it.
+void declareMarchInputs(rg::PassBuilder& pass, const NodeInputs& in);
+void appendMarchBindings(std::vector<rg::Binding>& bindings, const NodeInputs& in);
+void pushMarchInputs(rg::DescriptorPush& set, const rg::PassContext& ctx, const NodeInputs& in);
 
 }  // namespace ls

@@ -8,17 +8,14 @@ void addFixup(rg::RenderGraph& g, const NodeInputs& in, EpipolarTextures& t) {
     auto pass = g.addPass("fix-up ray march", rg::PassType::Graphics);
     pass.uniformBuffer(in.constants);
     pass.sampled(t.cameraZ);
-    pass.sampled(in.shadowMap, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
-    if (in.table.valid()) pass.sampled(in.table);
-    if (in.lightColor.valid()) pass.sampled(in.lightColor);
+    declareMarchInputs(pass, in);
     pass.stencilTest(t.cameraStencil);
     t.screenInscatter = pass.colorAttachment(t.screenInscatter, rg::LoadOp::Load);
     const EpipolarTextures tex = t;
     pass.execute([in, tex](rg::PassContext& ctx) {
         const ScatterSpec& spec = in.shared->spec;
-        std::vector<rg::Binding> b{uniformBinding(0), sampledBinding(1), sampledBinding(6)};
-        if (in.table.valid()) b.push_back(sampledBinding(7));
-        if (in.lightColor.valid()) b.push_back(sampledBinding(8));
+        std::vector<rg::Binding> b{uniformBinding(0), sampledBinding(1)};
+        appendMarchBindings(b, in);
         auto desc = fullscreenPipeline(marchShader(MarchShader::BruteForce, spec), ctx, b);
         desc.pushConstantBytes = 4;
         desc.specialization = spec.constants();
@@ -28,14 +25,9 @@ void addFixup(rg::RenderGraph& g, const NodeInputs& in, EpipolarTextures& t) {
         const auto& p = in.shared->pipelines.graphics(pipelineKey("fix-up", ctx, spec.key()), desc);
         p.bind(ctx.cmd());
         vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 1);
-        const auto& sm = in.shared->samplers;
         auto set = frameSet(ctx, in.constants);
-        set.sampled(1, ctx.view(tex.cameraZ), ctx.layout(tex.cameraZ), sm.nearest())
-            .sampled(6, ctx.view(in.shadowMap, VK_IMAGE_ASPECT_DEPTH_BIT), ctx.layout(in.shadowMap),
-                     sm.nearest());
-        if (in.table.valid()) set.sampled(7, ctx.view(in.table), ctx.layout(in.table), sm.nearest());
-        if (in.lightColor.valid())
-            set.sampled(8, ctx.view(in.lightColor), ctx.layout(in.lightColor), sm.linear());
+        set.sampled(1, ctx.view(tex.cameraZ), ctx.layout(tex.cameraZ), in.shared->samplers.nearest());
+        pushMarchInputs(set, ctx, in);
         set.push(ctx.device(), ctx.cmd(), p);
         const uint32_t maxSteps = static_cast<uint32_t>(in.shared->constants.epipolar2.y);
         p.push(ctx.cmd(), maxSteps);

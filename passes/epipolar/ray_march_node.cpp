@@ -17,9 +17,7 @@ void addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in, const Epipola
         pass.sampled(t.treeOdd);
         pass.sampled(t.treeEven);
     }
-    pass.sampled(in.shadowMap, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
-    if (in.table.valid()) pass.sampled(in.table);
-    if (in.lightColor.valid()) pass.sampled(in.lightColor);
+    declareMarchInputs(pass, in);
     pass.stencilTest(t.epipolarStencil);
     t.marched = pass.colorAttachment(t.marched, rg::LoadOp::Clear);
     const EpipolarTextures tex = t;
@@ -27,13 +25,12 @@ void addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in, const Epipola
         ScatterSpec spec = in.shared->spec;
         spec.minMaxTrees = trees;
         std::vector<rg::Binding> b{uniformBinding(0), sampledBinding(1), sampledBinding(2),
-                                   sampledBinding(3), sampledBinding(6)};
+                                   sampledBinding(3)};
         if (trees) {
             b.push_back(sampledBinding(4));
             b.push_back(sampledBinding(5));
         }
-        if (in.table.valid()) b.push_back(sampledBinding(7));
-        if (in.lightColor.valid()) b.push_back(sampledBinding(8));
+        appendMarchBindings(b, in);
         auto desc = fullscreenPipeline(marchShader(MarchShader::RayMarch, spec), ctx, b);
         desc.specialization = spec.constants();
         desc.stencilTest = true;
@@ -46,16 +43,12 @@ void addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in, const Epipola
         auto set = frameSet(ctx, in.constants);
         set.sampled(1, ctx.view(tex.coordinates), ctx.layout(tex.coordinates), sm.nearest())
             .sampled(2, ctx.view(tex.epipolarZ), ctx.layout(tex.epipolarZ), sm.nearest())
-            .sampled(3, ctx.view(tex.sliceUvFrame), ctx.layout(tex.sliceUvFrame), sm.nearest())
-            .sampled(6, ctx.view(in.shadowMap, VK_IMAGE_ASPECT_DEPTH_BIT), ctx.layout(in.shadowMap),
-                     sm.nearest());
+            .sampled(3, ctx.view(tex.sliceUvFrame), ctx.layout(tex.sliceUvFrame), sm.nearest());
         if (trees) {
             set.sampled(4, ctx.view(tex.treeOdd), ctx.layout(tex.treeOdd), sm.nearest())
                 .sampled(5, ctx.view(tex.treeEven), ctx.layout(tex.treeEven), sm.nearest());
         }
-        if (in.table.valid()) set.sampled(7, ctx.view(in.table), ctx.layout(in.table), sm.nearest());
-        if (in.lightColor.valid())
-            set.sampled(8, ctx.view(in.lightColor), ctx.layout(in.lightColor), sm.linear());
+        pushMarchInputs(set, ctx, in);
         set.push(ctx.device(), ctx.cmd(), p);
         vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
     });

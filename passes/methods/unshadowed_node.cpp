@@ -9,21 +9,20 @@ rg::ImageRef addUnshadowed(rg::RenderGraph& graph, const NodeInputs& in, rg::Ima
     auto pass = graph.addPass("unshadowed in-scattering", rg::PassType::Graphics);
     pass.uniformBuffer(in.constants);
     pass.sampled(cameraZ);
-    if (in.table.valid()) pass.sampled(in.table);
+    declareMarchInputs(pass, in);  // the table; an unshadowed frame has nothing else
     lin = pass.colorAttachment(lin, rg::LoadOp::DontCare);
     pass.execute([in, cameraZ](rg::PassContext& ctx) {
         const ScatterSpec& spec = in.shared->spec;
         std::vector<rg::Binding> b{uniformBinding(0), sampledBinding(1)};
-        if (in.table.valid()) b.push_back(sampledBinding(7));
+        appendMarchBindings(b, in);
         auto desc = fullscreenPipeline(marchShader(MarchShader::Unshadowed, spec), ctx, b);
         desc.specialization = spec.constants();
         const auto& p = in.shared->pipelines.graphics(
             pipelineKey("unshadowed in-scattering", ctx, spec.key()), desc);
         p.bind(ctx.cmd());
-        const auto& s = in.shared->samplers;
         auto set = frameSet(ctx, in.constants);
-        set.sampled(1, ctx.view(cameraZ), ctx.layout(cameraZ), s.nearest());
-        if (in.table.valid()) set.sampled(7, ctx.view(in.table), ctx.layout(in.table), s.nearest());
+        set.sampled(1, ctx.view(cameraZ), ctx.layout(cameraZ), in.shared->samplers.nearest());
+        pushMarchInputs(set, ctx, in);
         set.push(ctx.device(), ctx.cmd(), p);
         vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
     });
