@@ -51,6 +51,14 @@ VkExtent2D parseSize(const std::string& text, const std::string& option) {
     return {w, h};
 }
 
+int parseCount(const std::string& text, const std::string& option) {
+    unsigned n = 0;
+    char tail = 0;
+    if (std::sscanf(text.c_str(), "%u%c", &n, &tail) != 1 || n < 1 || n > 100000)
+        throw std::runtime_error(option + " '" + text + "' is not a whole number from 1 to 100000");
+    return static_cast<int>(n);
+}
+
 void writeTextFile(const std::string& path, const std::string& text) {
     const std::string tmp = path + ".partial";
     {

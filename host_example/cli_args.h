@@ -22,6 +22,7 @@ private:
 };
 
 VkExtent2D parseSize(const std::string& text, const std::string& option);
+int parseCount(const std::string& text, const std::string& option);  // 1..100000
 void writeTextFile(const std::string& path, const std::string& text);
 
 }  // namespace host

@@ -257,8 +257,8 @@ void Device::pickPhysicalDevice(const DeviceOptions& options) {
         VkPhysicalDeviceProperties p;
         vkGetPhysicalDeviceProperties(pd, &p);
         const std::string why = unsuitable(pd, options.swapchain);
-        listing += std::string("\n  '") + p.deviceName + "' (" + typeName(p.deviceType) + ")" +
-                   (why.empty() ? "" : ": unsuitable, " + why);
+        listing += std::string(listing.empty() ? " '" : "; '") + p.deviceName + "' (" +
+                   typeName(p.deviceType) + ")" + (why.empty() ? "" : ": unsuitable, " + why);
         if (!why.empty()) continue;
         if (!wanted.empty()) {
             if (lower(p.deviceName).find(lower(wanted)) == std::string::npos) continue;

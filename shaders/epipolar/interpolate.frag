@@ -1,5 +1,6 @@
 #version 450
-// In-scattering of every valid sample, linearly interpolated between its two ray-marching sources.
+// In-scattering (or shadowed fraction) of every valid sample, linearly interpolated between its two
+// ray-marching sources.
 layout(binding = 0) uniform usampler2D interpolationSource;
 layout(binding = 1) uniform sampler2D marched;
 layout(location = 0) out vec4 outInscatter;
@@ -10,5 +11,9 @@ void main() {
     vec4 a = texelFetch(marched, ivec2(src.x, p.y), 0);
     vec4 b = texelFetch(marched, ivec2(src.y, p.y), 0);
     float t = src.y > src.x ? (float(p.x) - float(src.x)) / float(src.y - src.x) : 0.0;
-    outInscatter = mix(a, b, t);
+    // Alpha says whether a source's value means anything (see ray_march.frag); an undefined source
+    // gives way to the other one.
+    float wa = (1.0 - t) * a.a, wb = t * b.a;
+    vec3 rgb = wa + wb > 0.0 ? (a.rgb * wa + b.rgb * wb) / (wa + wb) : vec3(0.0);
+    outInscatter = vec4(rgb, mix(a.a, b.a, t));
 }

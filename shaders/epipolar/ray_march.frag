@@ -142,10 +142,15 @@ void main() {
     vec3 C = frame.cameraPos.xyz;
     float S = z / max(dot(v, frame.cameraForward.xyz), 1e-4);
     vec3 lin = marchSample(C, v, S, p.y);
+    float defined = 1.0;
     if (frame.epipolar2.w > 0.5) {
         float t0, t1;
         lightInterval(C, v, S, t0, t1);
-        lin = shadowedFraction(lin, unshadowedInscatter(C, v, t0, t1));
+        vec3 unshadowed = unshadowedInscatter(C, v, t0, t1);
+        lin = shadowedFraction(lin, unshadowed);
+        // Where no light reaches the ray the fraction means nothing: alpha 0 keeps it out of
+        // every later filter (outside a spot's cone, next to rays inside it).
+        defined = any(greaterThan(unshadowed, vec3(0.0))) ? 1.0 : 0.0;
     }
-    outInscatter = vec4(lin, 1.0);
+    outInscatter = vec4(lin, defined);
 }

@@ -50,10 +50,11 @@ void main() {
         float wk = k - float(k0);
         for (int b = 0; b < 2; ++b) {
             ivec2 s = ivec2(k0 + b, slice);
-            float w = ws * (b == 0 ? 1.0 - wk : wk);
             float sz = texelFetch(epipolarZ, s, 0).r;
-            if (sz <= 0.0 || w <= 0.0) continue;  // not a valid sample
             vec4 value = texelFetch(inscatter, s, 0);
+            // Alpha: how much the sample's value means (0 for a fraction of nothing).
+            float w = ws * (b == 0 ? 1.0 - wk : wk) * value.a;
+            if (sz <= 0.0 || w <= 0.0) continue;  // not a valid sample
             plain += w * value;
             plainWeight += w;
             if (abs(sz - z) <= frame.epipolar2.x * z) {

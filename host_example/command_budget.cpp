@@ -1,0 +1,92 @@
+// lightscatter budget [--profile NAME|all] [--size WxH] [--shadow-map N] [--json]
+#include <cstdio>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "commands.h"
+#include "lightscatter.h"
+
+namespace host {
+namespace {
+
+double mib(uint64_t bytes) { return static_cast<double>(bytes) / (1024.0 * 1024.0); }
+
+}  // namespace
+
+int runBudget(Args& args) {
+    const std::string profileName = args.take("--profile", "all");
+    const VkExtent2D size = parseSize(args.take("--size", "2560x1600"), "--size");
+    const std::string sm = args.take("--shadow-map", "");
+    const bool json = args.flag("--json");
+    args.finish();
+    std::vector<lightscatter::Profile> profiles;
+    if (profileName == "all") {
+        profiles = {lightscatter::Profile::HighQuality, lightscatter::Profile::Balanced,
+                    lightscatter::Profile::HighPerformance, lightscatter::Profile::LowHighQuality,
+                    lightscatter::Profile::LowBalanced, lightscatter::Profile::LowHighPerformance};
+    } else {
+        const auto p = lightscatter::parseProfile(profileName);
+        if (!p || *p == lightscatter::Profile::Custom) {
+            std::string known = "all";
+            for (const auto& n : lightscatter::profileNames())
+                if (n != "custom") known += ", " + n;
+            throw std::runtime_error("unknown profile '" + profileName + "' (known: " + known + ")");
+        }
+        profiles = {*p};
+    }
+    uint32_t shadowOverride = 0;
+    if (!sm.empty()) {
+        unsigned long v = 0;
+        try {
+            v = std::stoul(sm);
+        } catch (...) {
+            throw std::runtime_error("--shadow-map '" + sm + "' is not a number");
+        }
+        shadowOverride = static_cast<uint32_t>(v);
+    }
+
+    nlohmann::json all = nlohmann::json::array();
+    for (lightscatter::Profile p : profiles) {
+        const auto s = lightscatter::profileSettings(p);
+        const uint32_t shadow = shadowOverride ? shadowOverride : s.shadowMapSize;
+        const lightscatter::Budget b = lightscatter::budget(p, size.width, size.height, shadow);
+        if (json) {
+            nlohmann::json j;
+            j["profile"] = lightscatter::profileName(p);
+            j["screen"] = {size.width, size.height};
+            j["slices"] = s.slices;
+            j["samplesPerSlice"] = s.samplesPerSlice;
+            j["shadowMapSize"] = shadow;
+            j["estimated"] = b.estimated;
+            j["depthStencilFormat"] = b.depthStencilFormat;
+            nlohmann::json entries = nlohmann::json::array();
+            for (const auto& e : b.entries)
+                entries.push_back({{"name", e.name}, {"format", e.format}, {"width", e.width},
+                                   {"height", e.height}, {"bytes", e.bytes}, {"transient", e.transient}});
+            j["resources"] = entries;
+            j["totalBytes"] = b.totalBytes;
+            j["peakBytes"] = b.peakBytes;
+            if (b.seed)
+                j["seed"] = {{"screen", {b.seed->screenWidth, b.seed->screenHeight}},
+                             {"megabytes", b.seed->megabytes}, {"milliseconds", b.seed->milliseconds}};
+            all.push_back(j);
+            continue;
+        }
+        std::printf("%s: %u slices x %u samples, %u^2 shadow map, %ux%u screen (sizes %s)\n",
+                    lightscatter::profileName(p), s.slices, s.samplesPerSlice, shadow, size.width,
+                    size.height, b.estimated ? "estimated without a device" : "from the device");
+        for (const auto& e : b.entries)
+            std::printf("  %-40s %-22s %5u x %-5u %10.2f MiB%s\n", e.name.c_str(), e.format.c_str(), e.width,
+                        e.height, mib(e.bytes), e.transient ? "" : "  (kept across frames)");
+        std::printf("  total without aliasing %.1f MiB, peak with aliasing %.1f MiB", mib(b.totalBytes),
+                    mib(b.peakBytes));
+        if (b.seed)
+            std::printf("; seed 000: %.1f MB at %ux%u", b.seed->megabytes, b.seed->screenWidth,
+                        b.seed->screenHeight);
+        std::printf("\n\n");
+    }
+    if (json) std::cout << all.dump(2) << "\n";
+    return 0;
+}
+
+}  // namespace host

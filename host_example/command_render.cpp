@@ -1,0 +1,87 @@
+// lightscatter render SCENE.json [--out FILE.png|.exr] [--inscatter FILE.exr] [--method NAME]
+//   [--profile NAME] [--size WxH] [--timings FILE.json] [--frames N]
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "command_options.h"
+#include "commands.h"
+#include "image_io.h"
+#include "tonemap.h"
+
+namespace host {
+namespace {
+
+bool endsWith(const std::string& s, const std::string& suffix) {
+    return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+nlohmann::json timingsJson(const rg::Device& device, const SceneOptions& o, VkExtent2D size,
+                           const FrameOutput& f, int frames) {
+    nlohmann::json j;
+    j["device"] = device.name();
+    j["driver"] = device.driverName();
+    j["cpuDevice"] = device.isCpu();  // lavapipe: CPU timings, not GPU ones
+    j["method"] = lightscatter::methodName(o.render.method);
+    j["profile"] = lightscatter::profileName(o.render.profile);
+    j["size"] = {size.width, size.height};
+    j["frames"] = frames;
+    j["depthStencilFormat"] = f.plugin.depthStencilFormat;
+    nlohmann::json passes = nlohmann::json::array();
+    for (const auto& p : f.plugin.passes) passes.push_back({{"name", p.name}, {"milliseconds", p.milliseconds}});
+    j["passes"] = passes;
+    j["totalMilliseconds"] = f.plugin.totalMilliseconds;
+    nlohmann::json engine = nlohmann::json::array();
+    for (const auto& p : f.engine.passes) engine.push_back({{"name", p.name}, {"milliseconds", p.milliseconds}});
+    j["engine"] = {{"passes", engine}, {"totalMilliseconds", f.engine.totalMilliseconds}};
+    return j;
+}
+
+}  // namespace
+
+int runRender(Args& args) {
+    std::string out = args.take("--out", "");
+    const std::string inscatter = args.take("--inscatter", "");
+    const std::string timings = args.take("--timings", "");
+    const int frames = parseCount(args.take("--frames", "1"), "--frames");
+    SceneOptions o = takeSceneOptions(args, nullptr);
+    const std::string scenePath = args.positional("SCENE.json");
+    args.finish();
+    if (out.empty()) out = std::filesystem::path(scenePath).stem().string() + ".png";
+    if (!endsWith(out, ".png") && !endsWith(out, ".exr"))
+        throw std::runtime_error("--out " + out + ": must end in .png or .exr");
+    if (!inscatter.empty() && !endsWith(inscatter, ".exr"))
+        throw std::runtime_error("--inscatter " + inscatter + ": must end in .exr");
+
+    const SceneDesc scene = loadSceneFile(scenePath);  // scene errors before any device
+    const MeshData mesh = loadSceneMeshes(scene);
+    for (const auto& w : mesh.warnings) std::cerr << "lightscatter: warning: " << w << "\n";
+    const VkExtent2D size = sceneSize(o, {960, 540});
+
+    rg::Device device(o.device);
+    EngineRenderer renderer(device, scene, mesh, size);
+    FrameOutput frame;
+    for (int i = 0; i < frames; ++i) frame = renderer.render(o.render);
+
+    if (endsWith(out, ".png"))
+        writePng(out, size.width, size.height, toneMap(frame.color, scene.exposure));
+    else
+        writeExr(out, size.width, size.height, frame.color);
+    if (!inscatter.empty()) writeExr(inscatter, size.width, size.height, frame.inscatter);
+    if (!timings.empty())
+        writeTextFile(timings, timingsJson(device, o, size, frame, frames).dump(2) + "\n");
+
+    std::printf("%s: %ux%u, %s, %s, %s on '%s'%s: plugin %.3f ms, engine %.3f ms\n", out.c_str(),
+                size.width, size.height, lightscatter::methodName(o.render.method),
+                lightscatter::profileName(o.render.profile), frame.plugin.passNames.empty() ? "-" : "rendered",
+                device.name().c_str(), device.isCpu() ? " (CPU timings)" : "", frame.plugin.totalMilliseconds,
+                frame.engine.totalMilliseconds);
+    if (device.messageCount() > 0) {
+        std::cerr << "lightscatter: the validation layer reported " << device.messageCount() << " message(s)\n";
+        return 3;
+    }
+    return 0;
+}
+
+}  // namespace host

@@ -1,0 +1,407 @@
+// lightscatter view SCENE.json [--method NAME] [--profile NAME] [--size WxH] [--frames N]
+//   [--screenshot FILE.png] [--resize-at FRAME WxH]
+// A GLFW window: WASD/QE move the camera, left-drag looks around, arrow keys move the light, M
+// switches method, P cycles profiles, T toggles the min/max trees, Esc quits. The title shows the
+// plugin's GPU time per pass. Resizing rebuilds the graphs.
+#define GLFW_INCLUDE_VULKAN
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <glm/gtc/matrix_transform.hpp>
+#include <iostream>
+#include <memory>
+
+#include "command_options.h"
+#include "commands.h"
+#include "fullscreen_vert.h"
+#include "image_io.h"
+#include "rendergraph/compile.h"
+#include "rendergraph/device_caps_vulkan.h"
+#include "rendergraph/host_buffer.h"
+#include "rendergraph/pipeline.h"
+#include "rendergraph/vk_error.h"
+#include "swapchain.h"
+#include "tonemap_frag.h"
+
+namespace host {
+namespace {
+
+struct GlfwSession {
+    GlfwSession() {
+        if (!glfwInit())
+            throw std::runtime_error("view: cannot open a window: GLFW found no display (set DISPLAY, "
+                                     "or run under xvfb-run -a)");
+    }
+    ~GlfwSession() { glfwTerminate(); }
+};
+
+struct Window {
+    GLFWwindow* handle;
+    Window(VkExtent2D size, const std::string& title) {
+        glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
+        handle = glfwCreateWindow(static_cast<int>(size.width), static_cast<int>(size.height), title.c_str(),
+                                  nullptr, nullptr);
+        if (!handle) throw std::runtime_error("view: cannot create a window");
+    }
+    ~Window() { glfwDestroyWindow(handle); }
+};
+
+struct Surface {
+    VkInstance instance;
+    VkSurfaceKHR handle = VK_NULL_HANDLE;
+    Surface(VkInstance i, GLFWwindow* w) : instance(i) {
+        RG_VK(glfwCreateWindowSurface(i, w, nullptr, &handle));
+    }
+    ~Surface() { vkDestroySurfaceKHR(instance, handle, nullptr); }
+};
+
+// Tone maps the engine's HDR color into a swapchain image (and reads that image back when asked).
+class Display {
+public:
+    Display(const rg::Device& device, const GpuImage& hdr, const Swapchain& swapchain, float exposure,
+            bool screenshot)
+        : device_(device), samplers_(device), exposure_(exposure) {
+        graph_.setScreenExtent(swapchain.extent());
+        rg::ImportedImage h;
+        h.image = hdr.image();
+        h.format = hdr.format();
+        h.extent = hdr.extent();
+        h.usage = hdr.usage();
+        h.initialLayout = VK_IMAGE_LAYOUT_GENERAL;
+        h.initialStages = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+        h.initialAccess = VK_ACCESS_2_MEMORY_WRITE_BIT;
+        h.finalLayout = VK_IMAGE_LAYOUT_GENERAL;
+        hdr_ = graph_.importImage("host hdr color", h);
+        rg::ImportedImage s;
+        s.image = swapchain.image(0);
+        s.format = swapchain.format();
+        s.extent = swapchain.extent();
+        s.usage = swapchain.usage();
+        s.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+        s.initialStages = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;  // the acquire's wait
+        s.initialAccess = VK_ACCESS_2_NONE;
+        s.finalLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+        s.finalStages = VK_PIPELINE_STAGE_2_NONE;
+        s.finalAccess = VK_ACCESS_2_NONE;
+        target_ = graph_.importImage("swapchain image", s);
+        swapchainDesc_ = s;
+
+        auto pass = graph_.addPass("tone map to window", rg::PassType::Graphics);
+        pass.sampled(hdr_);
+        target_ = pass.colorAttachment(target_, rg::LoadOp::DontCare);
+        const rg::ImageRef src = hdr_;
+        pass.execute([this, src](rg::PassContext& ctx) {
+            if (!pipeline_) {
+                rg::GraphicsPipelineDesc d;
+                d.vertex = rg::spirv(ls_spirv::fullscreen_vert);
+                d.fragment = rg::spirv(ls_spirv::tonemap_frag);
+                d.formats = ctx.renderingFormats();
+                d.bindings = {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT}};
+                d.pushConstantBytes = 4;
+                pipeline_ = rg::Pipeline::graphics(ctx.device(), "tone map to window", d);
+            }
+            pipeline_.bind(ctx.cmd());
+            rg::DescriptorPush().sampled(0, ctx.view(src), ctx.layout(src), samplers_.nearest())
+                .push(ctx.device(), ctx.cmd(), pipeline_);
+            pipeline_.push(ctx.cmd(), exposure_);
+            vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
+        });
+        if (screenshot) {
+            const VkExtent2D e = swapchain.extent();
+            readback_ = std::make_unique<rg::HostBuffer>(device, VkDeviceSize{4} * e.width * e.height,
+                                                         VK_BUFFER_USAGE_TRANSFER_DST_BIT, "screenshot");
+            rg::BufferRef buf = graph_.importBuffer("screenshot", readback_->asReadback());
+            auto copy = graph_.addPass("screenshot", rg::PassType::Transfer);
+            copy.transferSrc(target_);
+            buf = copy.transferDst(buf);
+            const rg::ImageRef img = target_;
+            copy.execute([img, buf, e](rg::PassContext& ctx) {
+                VkBufferImageCopy region{};
+                region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+                region.imageExtent = {e.width, e.height, 1};
+                vkCmdCopyImageToBuffer(ctx.cmd(), ctx.image(img), ctx.layout(img), ctx.buffer(buf), 1, &region);
+            });
+        }
+        const rg::VulkanDeviceCaps caps(device);
+        executor_ = std::make_unique<rg::GraphExecutor>(device, graph_, rg::compile(graph_, caps));
+    }
+    ~Display() { executor_.reset(); }
+
+    void record(VkCommandBuffer cmd, VkImage swapchainImage) {
+        swapchainDesc_.image = swapchainImage;
+        graph_.updateImport(target_, swapchainDesc_);
+        executor_->record(cmd);
+    }
+    // RGBA8 of the last recorded frame (after the engine waited for it); BGRA swapchains swizzled.
+    std::vector<uint8_t> screenshot(VkFormat format) const {
+        std::vector<uint8_t> px(readback_->size());
+        std::memcpy(px.data(), readback_->data(), px.size());
+        if (format == VK_FORMAT_B8G8R8A8_SRGB || format == VK_FORMAT_B8G8R8A8_UNORM)
+            for (size_t i = 0; i + 3 < px.size(); i += 4) std::swap(px[i], px[i + 2]);
+        return px;
+    }
+
+private:
+    const rg::Device& device_;
+    rg::Samplers samplers_;
+    float exposure_;
+    rg::RenderGraph graph_;
+    rg::ImageRef hdr_, target_;
+    rg::ImportedImage swapchainDesc_;
+    rg::Pipeline pipeline_;
+    std::unique_ptr<rg::HostBuffer> readback_;
+    std::unique_ptr<rg::GraphExecutor> executor_;
+};
+
+struct Controls {
+    bool dragging = false;
+    double lastX = 0, lastY = 0;
+};
+
+void moveCamera(GLFWwindow* w, CameraDesc& cam, float speed, float dt, Controls& c) {
+    glm::vec3 forward = glm::normalize(cam.target - cam.position);
+    const glm::vec3 right = glm::normalize(glm::cross(forward, cam.up));
+    glm::vec3 move(0.0f);
+    if (glfwGetKey(w, GLFW_KEY_W) == GLFW_PRESS) move += forward;
+    if (glfwGetKey(w, GLFW_KEY_S) == GLFW_PRESS) move -= forward;
+    if (glfwGetKey(w, GLFW_KEY_D) == GLFW_PRESS) move += right;
+    if (glfwGetKey(w, GLFW_KEY_A) == GLFW_PRESS) move -= right;
+    if (glfwGetKey(w, GLFW_KEY_E) == GLFW_PRESS) move += cam.up;
+    if (glfwGetKey(w, GLFW_KEY_Q) == GLFW_PRESS) move -= cam.up;
+    const glm::vec3 delta = move * speed * dt;
+    cam.position += delta;
+    cam.target += delta;
+    double x, y;
+    glfwGetCursorPos(w, &x, &y);
+    const bool down = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+    if (down && c.dragging) {
+        const float yaw = static_cast<float>(x - c.lastX) * -0.004f;
+        const float pitch = static_cast<float>(y - c.lastY) * -0.004f;
+        glm::mat4 r = glm::rotate(glm::mat4(1.0f), yaw, cam.up);
+        r = glm::rotate(r, pitch, right);
+        forward = glm::vec3(r * glm::vec4(forward, 0.0f));
+        if (std::fabs(glm::dot(glm::normalize(forward), cam.up)) < 0.995f)
+            cam.target = cam.position + forward * glm::length(cam.target - cam.position);
+    }
+    c.dragging = down;
+    c.lastX = x;
+    c.lastY = y;
+}
+
+void moveLight(GLFWwindow* w, LightDesc& light, float speed, float dt) {
+    glm::vec2 m(0.0f);
+    if (glfwGetKey(w, GLFW_KEY_LEFT) == GLFW_PRESS) m.x -= 1;
+    if (glfwGetKey(w, GLFW_KEY_RIGHT) == GLFW_PRESS) m.x += 1;
+    if (glfwGetKey(w, GLFW_KEY_UP) == GLFW_PRESS) m.y += 1;
+    if (glfwGetKey(w, GLFW_KEY_DOWN) == GLFW_PRESS) m.y -= 1;
+    if (m == glm::vec2(0.0f)) return;
+    if (light.type == LightKind::Directional) {  // turn the sun
+        glm::mat4 r = glm::rotate(glm::mat4(1.0f), m.x * dt * 0.6f, glm::vec3(0, 1, 0));
+        r = glm::rotate(r, m.y * dt * 0.3f, glm::vec3(1, 0, 0));
+        light.direction = glm::normalize(glm::vec3(r * glm::vec4(light.direction, 0.0f)));
+    } else {
+        light.position += glm::vec3(m.x, 0.0f, -m.y) * speed * dt;
+    }
+}
+
+}  // namespace
+
+int runView(Args& args) {
+    const std::string screenshotPath = args.take("--screenshot", "");
+    SceneOptions o = takeSceneOptions(args, "960x540");
+    const std::string framesText = args.take("--frames", "");
+    const std::string resizeAt = args.take("--resize-at", "");
+    const std::string resizeTo = args.take("--resize-to", "");
+    const std::string scenePath = args.positional("SCENE.json");
+    args.finish();
+    const int frameLimit = framesText.empty() ? 0 : parseCount(framesText, "--frames");
+    const int resizeFrame = resizeAt.empty() ? -1 : parseCount(resizeAt, "--resize-at");
+    const VkExtent2D resizeSize = resizeTo.empty() ? VkExtent2D{0, 0} : parseSize(resizeTo, "--resize-to");
+    if ((resizeFrame > 0) != (resizeSize.width > 0))
+        throw std::runtime_error("view: --resize-at and --resize-to go together");
+    if (!screenshotPath.empty() && frameLimit == 0)
+        throw std::runtime_error("view: --screenshot needs --frames (the screenshot is of the last frame)");
+
+    const SceneDesc scene = loadSceneFile(scenePath);
+    const MeshData mesh = loadSceneMeshes(scene);
+    const VkExtent2D size = sceneSize(o, {960, 540});
+
+    GlfwSession glfw;
+    if (!glfwVulkanSupported()) throw std::runtime_error("view: GLFW finds no Vulkan loader");
+    uint32_t extCount = 0;
+    const char** exts = glfwGetRequiredInstanceExtensions(&extCount);
+    for (uint32_t i = 0; i < extCount; ++i) o.device.instanceExtensions.emplace_back(exts[i]);
+    o.device.swapchain = true;
+    Window window(size, "lightscatter");
+    rg::Device device(o.device);
+    Surface surface(device.instance(), window.handle);
+    Swapchain swapchain(device, surface.handle, size);
+    EngineRenderer renderer(device, scene, mesh, swapchain.extent());
+    std::unique_ptr<Display> display;
+    auto rebuildDisplay = [&](bool screenshot) {
+        display = std::make_unique<Display>(device, renderer.color(), swapchain, scene.exposure, screenshot);
+    };
+    rebuildDisplay(false);
+
+    VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    poolInfo.queueFamilyIndex = device.queueFamily();
+    VkCommandPool pool;
+    RG_VK(vkCreateCommandPool(device.device(), &poolInfo, nullptr, &pool));
+    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    alloc.commandPool = pool;
+    alloc.commandBufferCount = 1;
+    VkCommandBuffer cmd;
+    RG_VK(vkAllocateCommandBuffers(device.device(), &alloc, &cmd));
+    VkSemaphoreCreateInfo semInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+    VkSemaphore acquired;
+    RG_VK(vkCreateSemaphore(device.device(), &semInfo, nullptr, &acquired));
+    std::vector<VkSemaphore> finished(swapchain.imageCount());
+    for (auto& s : finished) RG_VK(vkCreateSemaphore(device.device(), &semInfo, nullptr, &s));
+    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    fenceInfo.flags = VK_FENCE_CREATE_SIGNALED_BIT;
+    VkFence fence;
+    RG_VK(vkCreateFence(device.device(), &fenceInfo, nullptr, &fence));
+
+    RenderOptions options = o.render;
+    Controls controls;
+    const float speed = std::max(glm::length(renderer.bounds().max - renderer.bounds().min) * 0.15f, 1.0f);
+    const std::array profiles{lightscatter::Profile::HighQuality, lightscatter::Profile::Balanced,
+                              lightscatter::Profile::HighPerformance, lightscatter::Profile::LowHighQuality,
+                              lightscatter::Profile::LowBalanced, lightscatter::Profile::LowHighPerformance};
+    bool keyM = false, keyP = false, keyT = false;
+    auto last = std::chrono::steady_clock::now();
+    double titleClock = 0.0;
+    int frame = 0;
+    bool firstWait = true;
+    int exitCode = 0;
+    while (!glfwWindowShouldClose(window.handle)) {
+        glfwPollEvents();
+        if (glfwGetKey(window.handle, GLFW_KEY_ESCAPE) == GLFW_PRESS) break;
+        const auto now = std::chrono::steady_clock::now();
+        const float dt = std::min(std::chrono::duration<float>(now - last).count(), 0.1f);
+        last = now;
+        moveCamera(window.handle, renderer.scene().camera, speed, dt, controls);
+        moveLight(window.handle, renderer.scene().light, speed, dt);
+        auto pressed = [&](int key, bool& held) {
+            const bool down = glfwGetKey(window.handle, key) == GLFW_PRESS;
+            const bool edge = down && !held;
+            held = down;
+            return edge;
+        };
+        if (pressed(GLFW_KEY_M, keyM))
+            options.method = options.method == lightscatter::Method::Epipolar ? lightscatter::Method::BruteForce
+                                                                              : lightscatter::Method::Epipolar;
+        if (pressed(GLFW_KEY_P, keyP)) {
+            auto it = std::find(profiles.begin(), profiles.end(), options.profile);
+            options.profile = it == profiles.end() || it + 1 == profiles.end() ? profiles[0] : *(it + 1);
+        }
+        if (pressed(GLFW_KEY_T, keyT)) options.custom.minMaxTrees = !options.custom.minMaxTrees;
+        if (frame == resizeFrame) glfwSetWindowSize(window.handle, static_cast<int>(resizeSize.width),
+                                                    static_cast<int>(resizeSize.height));
+
+        RG_VK(vkWaitForFences(device.device(), 1, &fence, VK_TRUE, UINT64_MAX));
+        if (!firstWait) {
+            const FrameOutput t = renderer.timings();
+            titleClock += dt;
+            if (titleClock > 0.5 || frameLimit) {
+                titleClock = 0.0;
+                std::string title = std::string("lightscatter - ") + lightscatter::methodName(options.method) +
+                                    " / " + lightscatter::profileName(options.profile) + " - " +
+                                    std::to_string(t.plugin.totalMilliseconds).substr(0, 6) + " ms";
+                std::vector<lightscatter::PassTime> top = t.plugin.passes;
+                std::sort(top.begin(), top.end(), [](auto& a, auto& b) { return a.milliseconds > b.milliseconds; });
+                for (size_t i = 0; i < top.size() && i < 3; ++i)
+                    title += " | " + top[i].name + " " + std::to_string(top[i].milliseconds).substr(0, 5);
+                if (device.isCpu()) title += " (CPU timings)";
+                glfwSetWindowTitle(window.handle, title.c_str());
+            }
+        }
+        int fbw = 0, fbh = 0;
+        glfwGetFramebufferSize(window.handle, &fbw, &fbh);
+        if (fbw == 0 || fbh == 0) continue;  // minimised
+        const bool lastFrame = frameLimit && frame + 1 == frameLimit;
+        const VkExtent2D fb{static_cast<uint32_t>(fbw), static_cast<uint32_t>(fbh)};
+        if (fb.width != swapchain.extent().width || fb.height != swapchain.extent().height) {
+            swapchain.recreate(fb);
+            renderer.resize(swapchain.extent());
+            rebuildDisplay(lastFrame && !screenshotPath.empty());
+            firstWait = true;
+        } else if (lastFrame && !screenshotPath.empty()) {
+            vkDeviceWaitIdle(device.device());
+            rebuildDisplay(true);
+        }
+        uint32_t index = 0;
+        const VkResult acq = vkAcquireNextImageKHR(device.device(), swapchain.handle(), UINT64_MAX, acquired,
+                                                   VK_NULL_HANDLE, &index);
+        if (acq == VK_ERROR_OUT_OF_DATE_KHR) {
+            swapchain.recreate(fb);
+            renderer.resize(swapchain.extent());
+            rebuildDisplay(lastFrame && !screenshotPath.empty());
+            continue;
+        }
+        if (acq != VK_SUBOPTIMAL_KHR) rg::check(acq, "vkAcquireNextImageKHR");
+        RG_VK(vkResetFences(device.device(), 1, &fence));
+        RG_VK(vkResetCommandBuffer(cmd, 0));
+        VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+        begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+        RG_VK(vkBeginCommandBuffer(cmd, &begin));
+        renderer.record(cmd, options, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT);
+        display->record(cmd, swapchain.image(index));
+        RG_VK(vkEndCommandBuffer(cmd));
+        VkSemaphoreSubmitInfo wait{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
+        wait.semaphore = acquired;
+        wait.stageMask = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
+        VkSemaphoreSubmitInfo signal{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
+        signal.semaphore = finished[index];
+        signal.stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+        VkCommandBufferSubmitInfo cb{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
+        cb.commandBuffer = cmd;
+        VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
+        submit.waitSemaphoreInfoCount = 1;
+        submit.pWaitSemaphoreInfos = &wait;
+        submit.commandBufferInfoCount = 1;
+        submit.pCommandBufferInfos = &cb;
+        submit.signalSemaphoreInfoCount = 1;
+        submit.pSignalSemaphoreInfos = &signal;
+        RG_VK(vkQueueSubmit2(device.queue(), 1, &submit, fence));
+        VkPresentInfoKHR present{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
+        present.waitSemaphoreCount = 1;
+        present.pWaitSemaphores = &finished[index];
+        const VkSwapchainKHR sc = swapchain.handle();
+        present.swapchainCount = 1;
+        present.pSwapchains = &sc;
+        present.pImageIndices = &index;
+        const VkResult pr = vkQueuePresentKHR(device.queue(), &present);
+        if (pr != VK_ERROR_OUT_OF_DATE_KHR && pr != VK_SUBOPTIMAL_KHR) rg::check(pr, "vkQueuePresentKHR");
+        firstWait = false;
+        ++frame;
+        if (lastFrame) {
+            RG_VK(vkWaitForFences(device.device(), 1, &fence, VK_TRUE, UINT64_MAX));
+            if (!screenshotPath.empty()) {
+                const VkExtent2D e = swapchain.extent();
+                writePng(screenshotPath, e.width, e.height, display->screenshot(swapchain.format()));
+                std::cout << "wrote " << screenshotPath << " (" << e.width << "x" << e.height << ", after " << frame
+                          << " frames)\n";
+            }
+            break;
+        }
+    }
+    vkDeviceWaitIdle(device.device());
+    if (device.messageCount() > 0) {
+        std::cerr << "lightscatter: the validation layer reported " << device.messageCount() << " message(s)\n";
+        exitCode = 3;
+    }
+    display.reset();
+    vkDestroyFence(device.device(), fence, nullptr);
+    for (auto s : finished) vkDestroySemaphore(device.device(), s, nullptr);
+    vkDestroySemaphore(device.device(), acquired, nullptr);
+    vkDestroyCommandPool(device.device(), pool, nullptr);
+    return exitCode;
+}
+
+}  // namespace host

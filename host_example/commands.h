@@ -1,0 +1,14 @@
+#pragma once
+// The lightscatter command line's commands (a contract: see DESIGN.md). Each returns the exit code
+// and throws std::exception with one line for any failure.
+#include "cli_args.h"
+
+namespace host {
+
+int runRender(Args& args);
+int runBudget(Args& args);
+int runGraph(Args& args);
+int runView(Args& args);
+int runPattern(Args& args);
+
+}  // namespace host

@@ -1,0 +1,78 @@
+#pragma once
+// The host example's engine: a shadow-map pass and forward shading of a glTF scene (its own render
+// graph), then the plugin's light scattering composited into the HDR color, in one command buffer.
+// What an engine of any size does to integrate the plugin, at a small scale.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gpu_image.h"
+#include "gpu_mesh.h"
+#include "lightscatter.h"
+#include "rendergraph/compile.h"
+#include "rendergraph/executor.h"
+#include "scene/scene.h"
+
+namespace host {
+
+struct RenderOptions {
+    lightscatter::Method method = lightscatter::Method::Epipolar;
+    lightscatter::Profile profile = lightscatter::Profile::Balanced;
+    lightscatter::Settings custom;
+};
+
+struct FrameOutput {
+    std::vector<float> color;      // RGBA, linear HDR radiance after compositing
+    std::vector<float> inscatter;  // RGBA, Lin alone
+    lightscatter::FrameReport plugin;
+    rg::FrameTimings engine;
+};
+
+class EngineRenderer {
+public:
+    EngineRenderer(const rg::Device& device, SceneDesc scene, const MeshData& mesh, VkExtent2D size);
+    ~EngineRenderer();
+    EngineRenderer(const EngineRenderer&) = delete;
+    EngineRenderer& operator=(const EngineRenderer&) = delete;
+
+    // Renders one frame on the renderer's own command buffer, waits, and reads the images back.
+    FrameOutput render(const RenderOptions& options);
+
+    // For a window: records the engine passes and the plugin into `cmd`; the HDR color is left in
+    // GENERAL layout, readable by a later pass (finalStages/Access below).
+    void record(VkCommandBuffer cmd, const RenderOptions& options, VkPipelineStageFlags2 finalStages,
+                VkAccessFlags2 finalAccess, VkImageLayout finalLayout = VK_IMAGE_LAYOUT_GENERAL);
+    FrameOutput timings();  // after the engine waited for a recorded frame
+
+    void resize(VkExtent2D size);
+    VkExtent2D size() const { return size_; }
+    SceneDesc& scene() { return scene_; }
+    const GpuImage& color() const { return *color_; }
+    lightscatter::Plugin& plugin() { return *plugin_; }
+    const Bounds& bounds() const { return bounds_; }
+    std::string engineGraphDot() const;
+
+private:
+    struct Pipelines;
+    void createTargets();
+    void buildGraph();
+    lightscatter::FrameDescription describe(const RenderOptions& options, VkPipelineStageFlags2 finalStages,
+                                            VkAccessFlags2 finalAccess) const;
+
+    const rg::Device& device_;
+    SceneDesc scene_;
+    Bounds bounds_;
+    VkExtent2D size_;
+    std::unique_ptr<GpuMesh> mesh_;
+    std::unique_ptr<GpuImage> depth_, color_, shadowMap_, inscatter_;
+    std::unique_ptr<lightscatter::Plugin> plugin_;
+    std::shared_ptr<Pipelines> pipelines_;
+    std::unique_ptr<rg::RenderGraph> graph_;
+    std::unique_ptr<rg::GraphExecutor> executor_;
+    rg::ImageRef colorRef_, depthRef_, shadowRef_;
+    VkCommandPool pool_ = VK_NULL_HANDLE;
+    VkCommandBuffer cmd_ = VK_NULL_HANDLE;
+    VkFence fence_ = VK_NULL_HANDLE;
+};
+
+}  // namespace host

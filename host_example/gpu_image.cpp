@@ -1,0 +1,42 @@
+#include "gpu_image.h"
+
+#include "rendergraph/vk_error.h"
+
+namespace host {
+
+GpuImage::GpuImage(const rg::Device& device, VkFormat format, VkExtent2D extent,
+                   VkImageUsageFlags usage, const std::string& name)
+    : device_(device), format_(format), extent_(extent), usage_(usage) {
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = format;
+    info.extent = {extent.width, extent.height, 1};
+    info.mipLevels = 1;
+    info.arrayLayers = 1;
+    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = usage;
+    RG_VK(vkCreateImage(device.device(), &info, nullptr, &image_));
+    device.setName(image_, VK_OBJECT_TYPE_IMAGE, name);
+    VkMemoryRequirements req;
+    vkGetImageMemoryRequirements(device.device(), image_, &req);
+    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    alloc.allocationSize = req.size;
+    try {
+        alloc.memoryTypeIndex = device.findMemoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+        RG_VK(vkAllocateMemory(device.device(), &alloc, nullptr, &memory_));
+        device.setName(memory_, VK_OBJECT_TYPE_DEVICE_MEMORY, name + " memory");
+        RG_VK(vkBindImageMemory(device.device(), image_, memory_, 0));
+    } catch (...) {
+        if (memory_) vkFreeMemory(device.device(), memory_, nullptr);
+        vkDestroyImage(device.device(), image_, nullptr);
+        throw;
+    }
+}
+
+GpuImage::~GpuImage() {
+    vkDestroyImage(device_.device(), image_, nullptr);
+    vkFreeMemory(device_.device(), memory_, nullptr);
+}
+
+}  // namespace host

@@ -1,0 +1,345 @@
+// SCENE.json: read with nlohmann-json and checked field by field, so that a typo or an out-of-range
+// value stops the program with the field's JSON path instead of rendering something else.
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
+#include <initializer_list>
+#include <iterator>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "scene/scene.h"
+
+namespace host {
+namespace {
+
+using nlohmann::json;
+
+// The shortest text that reads back as the same value: "0.1" for 0.1f, not "0.100000001490116".
+template <class T>
+std::string format(T v) {
+    char text[64];
+    const auto result = std::to_chars(text, text + sizeof text, v);
+    return std::string(text, result.ptr);
+}
+
+std::string joinNames(std::initializer_list<const char*> names) {
+    std::string out;
+    for (const char* name : names) out += (out.empty() ? "" : ", ") + std::string(name);
+    return out;
+}
+
+// Reads the fields of one scene file; every failure names the file and the field's JSON path.
+class SceneReader {
+  public:
+    explicit SceneReader(const std::string& path) : path_(path) {}
+
+    SceneDesc read() {
+        SceneDesc scene;
+        scene.path = path_;
+        const json root = parse();
+        if (!root.is_object()) fail("the top level must be a JSON object");
+        checkKeys(root, "",
+                  {"gltf", "models", "camera", "light", "medium", "sky", "ambient", "exposure"});
+        if (const json* v = member(root, "gltf")) scene.models.push_back({modelPath(*v, "gltf")});
+        if (const json* v = member(root, "models")) readModels(*v, scene.models);
+        if (const json* v = member(root, "camera")) readCamera(*v, scene.camera);
+        if (const json* v = member(root, "light")) readLight(*v, scene.light);
+        if (const json* v = member(root, "medium")) readMedium(*v, scene.medium);
+        if (const json* v = member(root, "sky")) {
+            checkKeys(*v, "sky", {"color"});
+            if (const json* color = member(*v, "color")) {
+                scene.skyColor = nonNegativeVec3(*color, "sky.color");
+            }
+        }
+        if (const json* v = member(root, "ambient")) scene.ambient = nonNegativeVec3(*v, "ambient");
+        if (const json* v = member(root, "exposure")) scene.exposure = positive(*v, "exposure");
+        return scene;
+    }
+
+  private:
+    [[noreturn]] void fail(const std::string& what) const { throw SceneError(path_ + ": " + what); }
+
+    json parse() const {
+        std::ifstream in(path_, std::ios::binary);
+        std::error_code ec;
+        if (!in || std::filesystem::is_directory(path_, ec)) fail("cannot open the scene file");
+        const std::string text{std::istreambuf_iterator<char>(in),
+                               std::istreambuf_iterator<char>()};
+        // nlohmann keeps the last of two equal keys; a repeated field is as likely a mistake as
+        // a misspelt one, so it is refused too.
+        std::vector<std::set<std::string>> keysOfOpenObjects;
+        auto noDuplicates = [&](int, json::parse_event_t event, json& parsed) {
+            if (event == json::parse_event_t::object_start) keysOfOpenObjects.emplace_back();
+            if (event == json::parse_event_t::object_end) keysOfOpenObjects.pop_back();
+            if (event == json::parse_event_t::key &&
+                !keysOfOpenObjects.back().insert(parsed.get<std::string>()).second) {
+                fail("key '" + parsed.get<std::string>() + "' appears twice in one object");
+            }
+            return true;
+        };
+        try {
+            return json::parse(text, noDuplicates);
+        } catch (const json::parse_error& e) {
+            fail("malformed JSON at byte " + std::to_string(e.byte) + ": " + e.what());
+        } catch (const json::exception& e) {
+            fail(std::string("malformed JSON: ") + e.what());  // e.g. 1e400: number overflow
+        }
+    }
+
+    static const json* member(const json& object, const char* key) {
+        auto it = object.find(key);
+        return it == object.end() ? nullptr : &*it;
+    }
+
+    static std::string field(const std::string& parent, const char* key) {
+        return parent.empty() ? key : parent + "." + key;
+    }
+
+    // Unknown keys are refused so that a misspelt field cannot silently keep its default.
+    void checkKeys(const json& object, const std::string& where,
+                   std::initializer_list<const char*> known) const {
+        if (!object.is_object()) fail(where + " must be an object");
+        for (const auto& item : object.items()) {
+            bool found = false;
+            for (const char* name : known) found = found || item.key() == name;
+            if (!found) {
+                fail((where.empty() ? "" : where + ": ") + "unknown key '" + item.key() +
+                     "' (known keys: " + joinNames(known) + ")");
+            }
+        }
+    }
+
+    // A number that is finite as a double and as the float it is stored in.
+    double number(const json& v, const std::string& name) const {
+        if (!v.is_number()) fail(name + " must be a number");
+        const double d = v.get<double>();
+        if (!std::isfinite(d) || std::fabs(d) > double(std::numeric_limits<float>::max())) {
+            fail(name + " = " + format(d) + ": must be a finite number");
+        }
+        return d;
+    }
+
+    float positive(const json& v, const std::string& name) const {
+        const double x = number(v, name);
+        if (!(x > 0.0)) fail(name + " = " + format(x) + ": must be > 0");
+        return float(x);
+    }
+
+    // In (lo, hi), or (lo, hi] when `closedHigh`.
+    float inRange(const json& v, const std::string& name, double lo, double hi,
+                  bool closedHigh) const {
+        const double x = number(v, name);
+        if (!(x > lo && (x < hi || (closedHigh && x == hi)))) {
+            fail(name + " = " + format(x) + ": must be in (" + format(lo) + ", " + format(hi) +
+                 (closedHigh ? "]" : ")"));
+        }
+        return float(x);
+    }
+
+    glm::vec3 vec3(const json& v, const std::string& name) const {
+        if (!v.is_array() || v.size() != 3) fail(name + " must be an array of 3 numbers");
+        glm::vec3 out;
+        for (int i = 0; i < 3; ++i) {
+            if (!v[size_t(i)].is_number()) fail(name + " must be an array of 3 numbers");
+            out[i] = float(number(v[size_t(i)], name + "[" + std::to_string(i) + "]"));
+        }
+        return out;
+    }
+
+    glm::vec3 nonNegativeVec3(const json& v, const std::string& name) const {
+        const glm::vec3 out = vec3(v, name);
+        for (int i = 0; i < 3; ++i) {
+            if (out[i] < 0.0f) {
+                fail(name + "[" + std::to_string(i) + "] = " + format(out[i]) + ": must be >= 0");
+            }
+        }
+        return out;
+    }
+
+    glm::vec3 direction(const json& v, const std::string& name) const {
+        const glm::vec3 out = vec3(v, name);
+        const float length = glm::length(out);
+        if (!(length > 0.0f) || !std::isfinite(length)) fail(name + " has zero length");
+        return out / length;
+    }
+
+    bool boolean(const json& v, const std::string& name) const {
+        if (!v.is_boolean()) fail(name + " must be true or false");
+        return v.get<bool>();
+    }
+
+    std::string string(const json& v, const std::string& name) const {
+        if (!v.is_string()) fail(name + " must be a string");
+        return v.get<std::string>();
+    }
+
+    template <class Enum>
+    Enum oneOf(const json& v, const std::string& name,
+               std::initializer_list<std::pair<const char*, Enum>> choices) const {
+        const std::string text = string(v, name);
+        std::string names;
+        for (const auto& [word, value] : choices) {
+            if (text == word) return value;
+            names += (names.empty() ? "" : ", ") + std::string(word);
+        }
+        fail(name + " '" + text + "' is not one of " + names);
+    }
+
+    // Relative paths are taken from the scene file's folder, so a scene can be run from anywhere.
+    std::string modelPath(const json& v, const std::string& name) const {
+        const std::string text = string(v, name);
+        if (text.empty()) fail(name + " must not be empty");
+        std::filesystem::path file(text);
+        if (file.is_relative()) file = std::filesystem::path(path_).parent_path() / file;
+        std::error_code ec;
+        file = std::filesystem::absolute(file, ec).lexically_normal();
+        if (ec || !std::filesystem::is_regular_file(file, ec)) {
+            fail(name + " '" + text + "' does not exist (looked for " + file.string() + ")");
+        }
+        return file.string();
+    }
+
+    void readModels(const json& models, std::vector<ModelInstance>& out) const {
+        if (!models.is_array()) fail("models must be an array of objects");
+        for (size_t i = 0; i < models.size(); ++i) {
+            const std::string where = "models[" + std::to_string(i) + "]";
+            const json& model = models[i];
+            checkKeys(model, where, {"gltf", "translation", "rotationDegrees", "scale"});
+            const json* gltf = member(model, "gltf");
+            if (!gltf) fail(where + ".gltf is required");
+            ModelInstance instance{modelPath(*gltf, where + ".gltf")};
+            glm::vec3 translation(0.0f), degrees(0.0f), scale(1.0f);
+            if (const json* v = member(model, "translation")) {
+                translation = vec3(*v, where + ".translation");
+            }
+            if (const json* v = member(model, "rotationDegrees")) {
+                degrees = vec3(*v, where + ".rotationDegrees");
+            }
+            if (const json* v = member(model, "scale")) scale = modelScale(*v, where + ".scale");
+            // Euler angles applied X first, then Y, then Z: R = Rz * Ry * Rx.
+            glm::mat4 m = glm::translate(glm::mat4(1.0f), translation);
+            m = glm::rotate(m, glm::radians(degrees.z), glm::vec3(0, 0, 1));
+            m = glm::rotate(m, glm::radians(degrees.y), glm::vec3(0, 1, 0));
+            m = glm::rotate(m, glm::radians(degrees.x), glm::vec3(1, 0, 0));
+            instance.transform = glm::scale(m, scale);
+            out.push_back(instance);
+        }
+    }
+
+    glm::vec3 modelScale(const json& v, const std::string& name) const {
+        if (!v.is_number() && !v.is_array()) {
+            fail(name + " must be a number or an array of 3 numbers");
+        }
+        const glm::vec3 scale = v.is_number() ? glm::vec3(float(number(v, name))) : vec3(v, name);
+        for (int i = 0; i < 3; ++i) {
+            if (scale[i] == 0.0f) fail(name + " = 0: must not be 0 (it flattens the model)");
+        }
+        return scale;
+    }
+
+    void readCamera(const json& v, CameraDesc& camera) const {
+        checkKeys(
+            v, "camera",
+            {"position", "target", "up", "fovYDegrees", "near", "far", "reversedZ", "infiniteFar"});
+        if (const json* x = member(v, "position")) camera.position = vec3(*x, "camera.position");
+        if (const json* x = member(v, "target")) camera.target = vec3(*x, "camera.target");
+        if (const json* x = member(v, "up")) camera.up = direction(*x, "camera.up");
+        if (const json* x = member(v, "fovYDegrees")) {
+            camera.fovYDegrees = inRange(*x, "camera.fovYDegrees", 0.0, 180.0, false);
+        }
+        if (const json* x = member(v, "near")) camera.nearPlane = positive(*x, "camera.near");
+        if (const json* x = member(v, "far")) camera.farPlane = float(number(*x, "camera.far"));
+        if (const json* x = member(v, "reversedZ")) {
+            camera.reversedZ = boolean(*x, "camera.reversedZ");
+        }
+        if (const json* x = member(v, "infiniteFar")) {
+            camera.infiniteFar = boolean(*x, "camera.infiniteFar");
+        }
+        if (!camera.infiniteFar && !(camera.farPlane > camera.nearPlane)) {
+            fail("camera.far = " + format(camera.farPlane) + ": must be > camera.near (" +
+                 format(camera.nearPlane) + ") unless camera.infiniteFar is true");
+        }
+        const glm::vec3 view = camera.target - camera.position;
+        if (!(glm::length(view) > 0.0f)) {
+            fail("camera.target equals camera.position: the view direction has zero length");
+        }
+        const float sine = glm::length(glm::cross(glm::normalize(view), glm::normalize(camera.up)));
+        if (!(sine > 1e-6f)) fail("camera.up is parallel to the view direction");
+    }
+
+    void readLight(const json& v, LightDesc& light) const {
+        checkKeys(v, "light",
+                  {"type", "position", "direction", "intensity", "halfAngleDegrees", "range",
+                   "radius", "shadowMapSize"});
+        if (const json* x = member(v, "type")) {
+            light.type = oneOf<LightKind>(*x, "light.type",
+                                          {{"directional", LightKind::Directional},
+                                           {"spot", LightKind::Spot},
+                                           {"point", LightKind::Point}});
+        }
+        if (const json* x = member(v, "position")) light.position = vec3(*x, "light.position");
+        if (const json* x = member(v, "direction")) {
+            light.direction = direction(*x, "light.direction");
+        }
+        if (const json* x = member(v, "intensity")) {
+            light.intensity = nonNegativeVec3(*x, "light.intensity");
+        }
+        if (const json* x = member(v, "halfAngleDegrees")) {
+            light.halfAngleDegrees = inRange(*x, "light.halfAngleDegrees", 0.0, 89.0, true);
+        }
+        if (const json* x = member(v, "range")) light.range = positive(*x, "light.range");
+        if (const json* x = member(v, "radius")) light.radius = positive(*x, "light.radius");
+        if (const json* x = member(v, "shadowMapSize")) {
+            light.shadowMapSize = shadowMapSize(*x, "light.shadowMapSize");
+        }
+    }
+
+    uint32_t shadowMapSize(const json& v, const std::string& name) const {
+        constexpr int64_t kMax = 16384;
+        if (!v.is_number_integer()) fail(name + " must be an integer");
+        const bool negative = v.is_number_unsigned() ? false : v.get<int64_t>() < 0;
+        const uint64_t size = negative ? 0 : v.get<uint64_t>();
+        if (negative || size > uint64_t(kMax)) {
+            fail(name + " = " + v.dump() + ": must be in [0, " + std::to_string(kMax) + "]");
+        }
+        return uint32_t(size);
+    }
+
+    void readMedium(const json& v, MediumDesc& medium) const {
+        checkKeys(v, "medium", {"betaR", "betaM", "g", "sigmaA", "phase", "maxDistance"});
+        if (const json* x = member(v, "betaR")) medium.betaR = nonNegativeVec3(*x, "medium.betaR");
+        if (const json* x = member(v, "betaM")) medium.betaM = nonNegativeVec3(*x, "medium.betaM");
+        if (const json* x = member(v, "g")) medium.g = inRange(*x, "medium.g", -1.0, 1.0, false);
+        if (const json* x = member(v, "sigmaA")) {
+            medium.sigmaA = nonNegativeVec3(*x, "medium.sigmaA");
+        }
+        if (const json* x = member(v, "phase")) {
+            medium.phase = oneOf<PhaseKind>(*x, "medium.phase",
+                                            {{"cornette-shanks", PhaseKind::CornetteShanks},
+                                             {"isotropic", PhaseKind::Isotropic}});
+        }
+        if (const json* x = member(v, "maxDistance")) {
+            medium.maxDistance = positive(*x, "medium.maxDistance");
+        }
+    }
+
+    std::string path_;
+};
+
+}  // namespace
+
+SceneDesc loadSceneFile(const std::string& path) {
+    return SceneReader(path).read();
+}
+
+MeshData loadSceneMeshes(const SceneDesc& scene) {
+    MeshData mesh;
+    for (const ModelInstance& model : scene.models) appendGltf(mesh, model.path, model.transform);
+    return mesh;
+}
+
+}  // namespace host

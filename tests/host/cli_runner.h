@@ -1,0 +1,19 @@
+#pragma once
+// Runs the lightscatter command line as a user would, capturing its exit code and output.
+#include <string>
+
+namespace cli_test {
+
+struct Result {
+    int exitCode = -1;
+    std::string out;  // stdout and stderr together
+};
+
+// `arguments` is appended to the binary's path; the working directory is a fresh temporary folder,
+// also returned by scratch().
+Result run(const std::string& arguments, const std::string& prefix = "");
+const std::string& scratch();
+std::string scene(const std::string& name);  // absolute path of scenes/<name>.json
+bool exists(const std::string& path);
+
+}  // namespace cli_test

@@ -1,0 +1,124 @@
+// Each command of the lightscatter command line end to end, on lavapipe with validation, and every
+// failure path: one line naming the file, field or value, a non-zero exit, no file half-written.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.h"
+#include "image_io.h"
+
+using cli_test::exists;
+using cli_test::run;
+using cli_test::scene;
+
+namespace {
+
+std::string path(const std::string& name) {
+    return (std::filesystem::path(cli_test::scratch()) / name).string();
+}
+
+void writeFile(const std::string& name, const std::string& text) {
+    std::ofstream(path(name)) << text;
+}
+
+// One line of output, naming `fragment`, and a failing exit code.
+void expectFailure(const cli_test::Result& r, const std::string& fragment) {
+    EXPECT_NE(r.exitCode, 0) << r.out;
+    EXPECT_NE(r.out.find(fragment), std::string::npos) << r.out;
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+}
+
+}  // namespace
+
+TEST(Cli, RenderWritesPngLinAndTimings) {
+    const auto r =
+        run("render " + scene("atrium") +
+            " --size 64x36 --out atrium.png --inscatter lin.exr --timings t.json --validation");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_TRUE(exists("atrium.png"));
+    const host::FloatImage lin = host::readExr(path("lin.exr"));
+    EXPECT_EQ(lin.width, 64u);
+    EXPECT_EQ(lin.height, 36u);
+    float most = 0;
+    for (size_t i = 0; i < lin.rgba.size(); ++i) {
+        if (i % 4 == 3) continue;
+        ASSERT_TRUE(std::isfinite(lin.rgba[i]));
+        EXPECT_GE(lin.rgba[i], 0.0f);
+        most = std::max(most, lin.rgba[i]);
+    }
+    EXPECT_GT(most, 0.0f);
+    std::ifstream t(path("t.json"));
+    const auto j = nlohmann::json::parse(t);
+    EXPECT_FALSE(j["device"].get<std::string>().empty());
+    EXPECT_EQ(j["method"], "epipolar");
+    EXPECT_GT(j["passes"].size(), 10u);
+    EXPECT_GT(j["totalMilliseconds"].get<double>(), 0.0);
+}
+
+TEST(Cli, RenderEachSceneWithEachMethod) {
+    for (const char* name : {"atrium", "window_room", "engine_spot", "point_fog"})
+        for (const char* method : {"epipolar", "brute-force"}) {
+            const auto r = run(std::string("render ") + scene(name) + " --size 48x27 --method " +
+                               method + " --out " + name + ".exr --validation");
+            EXPECT_EQ(r.exitCode, 0) << name << " " << method << ": " << r.out;
+            EXPECT_TRUE(exists(std::string(name) + ".exr")) << name;
+        }
+}
+
+TEST(Cli, BudgetPrintsEveryProfileBesideTheSeed) {
+    const auto r = run("budget");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    for (const char* p : {"high-quality", "balanced", "high-performance", "low-balanced"})
+        EXPECT_NE(r.out.find(p), std::string::npos) << p;
+    EXPECT_NE(r.out.find("seed 000: 88.0 MB at 2560x1600"), std::string::npos) << r.out;
+    const auto j = run("budget --profile balanced --size 1920x1080 --shadow-map 1024 --json");
+    ASSERT_EQ(j.exitCode, 0) << j.out;
+    const auto parsed = nlohmann::json::parse(j.out);
+    ASSERT_EQ(parsed.size(), 1u);
+    EXPECT_EQ(parsed[0]["shadowMapSize"], 1024);
+    EXPECT_LT(parsed[0]["peakBytes"].get<uint64_t>(), parsed[0]["totalBytes"].get<uint64_t>());
+}
+
+TEST(Cli, GraphDumpsTheCompiledFrameGraph) {
+    const auto dot = run("graph " + scene("window_room") + " --dot --size 64x36");
+    ASSERT_EQ(dot.exitCode, 0) << dot.out;
+    EXPECT_NE(dot.out.find("digraph"), std::string::npos);
+    EXPECT_NE(dot.out.find("ray march with min/max trees"), std::string::npos);
+    const auto json =
+        run("graph " + scene("window_room") + " --json --size 64x36 --method brute-force");
+    ASSERT_EQ(json.exitCode, 0) << json.out;
+    const auto j = nlohmann::json::parse(json.out);
+    bool brute = false;
+    for (const auto& p : j["passes"]) brute |= p["name"] == "brute-force ray march";
+    EXPECT_TRUE(brute);
+}
+
+TEST(Cli, FailuresNameWhatIsWrong) {
+    expectFailure(run("render missing.json --size 8x8"), "missing.json");
+    writeFile("broken.json", "{ \"camera\": { ");
+    expectFailure(run("render broken.json --size 8x8"), "broken.json");
+    writeFile("badfield.json", R"({"light": {"type": "laser"}})");
+    expectFailure(run("render badfield.json --size 8x8"), "light.type");
+    expectFailure(run("render " + scene("atrium") + " --method raytrace"),
+                  "unknown method 'raytrace'");
+    expectFailure(run("render " + scene("atrium") + " --profile ultra"), "unknown profile 'ultra'");
+    expectFailure(run("render " + scene("atrium") + " --size 0x5"), "--size '0x5'");
+    expectFailure(run("render " + scene("atrium") + " --out picture.jpg"), "picture.jpg");
+    expectFailure(run("budget --profile ultra"), "unknown profile 'ultra'");
+    expectFailure(run("render " + scene("atrium") + " --frobnicate"), "--frobnicate");
+    expectFailure(run("graph " + scene("atrium")), "--dot or --json");
+    expectFailure(run("teleport"), "unknown command 'teleport'");
+    // Nothing half-written.
+    EXPECT_FALSE(exists("picture.jpg"));
+    EXPECT_FALSE(exists("missing.png"));
+    for (const auto& e : std::filesystem::directory_iterator(cli_test::scratch()))
+        EXPECT_EQ(e.path().string().find(".partial"), std::string::npos) << e.path();
+}
+
+TEST(Cli, ANonexistentDeviceIsAClearError) {
+    expectFailure(run("render " + scene("atrium") + " --size 8x8 --device no-such-gpu"),
+                  "no-such-gpu");
+}

@@ -1,0 +1,338 @@
+// loadSceneFile: every field, the defaults, path resolution, and each rule's one-line error.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <glm/glm.hpp>
+
+#include "scene/scene.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kBox = "/usr/share/assimp/models/glTF2/BoxTextured-glTF/BoxTextured.gltf";
+
+void expectVec3(const glm::vec3& actual, const glm::vec3& expected, float tolerance = 1e-6f) {
+    EXPECT_NEAR(actual.x, expected.x, tolerance);
+    EXPECT_NEAR(actual.y, expected.y, tolerance);
+    EXPECT_NEAR(actual.z, expected.z, tolerance);
+}
+
+glm::vec3 apply(const glm::mat4& m, const glm::vec3& p) {
+    return glm::vec3(m * glm::vec4(p, 1));
+}
+
+class SceneFileTest : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("host_scene_" + std::to_string(getpid()) + "_" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    std::string write(const std::string& name, const std::string& text) const {
+        const fs::path file = dir_ / name;
+        fs::create_directories(file.parent_path());
+        std::ofstream(file) << text;
+        return file.string();
+    }
+
+    // The message loadSceneFile throws for `text`, without the "file: " in front.
+    std::string errorFor(const std::string& text) const {
+        const std::string file = write("scene.json", text);
+        try {
+            host::loadSceneFile(file);
+        } catch (const host::SceneError& e) {
+            const std::string message = e.what();
+            EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+            if (message.rfind(file + ": ", 0) != 0) return "(file not named) " + message;
+            return message.substr(file.size() + 2);
+        }
+        return "(no error)";
+    }
+
+    fs::path dir_;
+};
+
+TEST_F(SceneFileTest, AFullFileSetsEveryField) {
+    write("model.glb", "");
+    const std::string file = write("full.json", R"({
+      "gltf": "model.glb",
+      "models": [{"gltf": ")" + kBox + R"(", "translation": [1, 2, 3]}],
+      "camera": {"position": [1, 2, 3], "target": [4, 2, 3], "up": [0, 0, 2],
+                 "fovYDegrees": 45, "near": 0.5, "far": 250, "reversedZ": true, "infiniteFar": true},
+      "light": {"type": "spot", "position": [0, 10, 0], "direction": [0, -3, 4],
+                "intensity": [100, 90, 80], "halfAngleDegrees": 89, "range": 40, "radius": 0.2,
+                "shadowMapSize": 0},
+      "medium": {"betaR": [1e-5, 2e-5, 3e-5], "betaM": [0.01, 0.02, 0.03], "g": -0.5,
+                 "sigmaA": [0, 0.001, 0], "phase": "isotropic", "maxDistance": 500},
+      "sky": {"color": [0.1, 0.2, 0.3]},
+      "ambient": [0.01, 0.02, 0.03],
+      "exposure": 0.8
+    })");
+    const host::SceneDesc s = host::loadSceneFile(file);
+    EXPECT_EQ(s.path, file);
+    ASSERT_EQ(s.models.size(), 2u);
+    EXPECT_EQ(s.models[0].path, (dir_ / "model.glb").string());
+    EXPECT_EQ(s.models[0].transform, glm::mat4(1.0f));
+    EXPECT_EQ(s.models[1].path, kBox);
+    expectVec3(apply(s.models[1].transform, {0, 0, 0}), {1, 2, 3});
+
+    expectVec3(s.camera.position, {1, 2, 3});
+    expectVec3(s.camera.target, {4, 2, 3});
+    expectVec3(s.camera.up, {0, 0, 1});  // normalized
+    EXPECT_FLOAT_EQ(s.camera.fovYDegrees, 45.0f);
+    EXPECT_FLOAT_EQ(s.camera.nearPlane, 0.5f);
+    EXPECT_FLOAT_EQ(s.camera.farPlane, 250.0f);
+    EXPECT_TRUE(s.camera.reversedZ);
+    EXPECT_TRUE(s.camera.infiniteFar);
+
+    EXPECT_EQ(s.light.type, host::LightKind::Spot);
+    expectVec3(s.light.position, {0, 10, 0});
+    expectVec3(s.light.direction, {0, -0.6f, 0.8f});  // (0, -3, 4) / 5
+    expectVec3(s.light.intensity, {100, 90, 80});
+    EXPECT_FLOAT_EQ(s.light.halfAngleDegrees, 89.0f);
+    EXPECT_FLOAT_EQ(s.light.range, 40.0f);
+    EXPECT_FLOAT_EQ(s.light.radius, 0.2f);
+    EXPECT_EQ(s.light.shadowMapSize, 0u);
+
+    expectVec3(s.medium.betaR, {1e-5f, 2e-5f, 3e-5f}, 1e-12f);
+    expectVec3(s.medium.betaM, {0.01f, 0.02f, 0.03f});
+    EXPECT_FLOAT_EQ(s.medium.g, -0.5f);
+    expectVec3(s.medium.sigmaA, {0, 0.001f, 0});
+    EXPECT_EQ(s.medium.phase, host::PhaseKind::Isotropic);
+    EXPECT_FLOAT_EQ(s.medium.maxDistance, 500.0f);
+    expectVec3(s.skyColor, {0.1f, 0.2f, 0.3f});
+    expectVec3(s.ambient, {0.01f, 0.02f, 0.03f});
+    EXPECT_FLOAT_EQ(s.exposure, 0.8f);
+}
+
+TEST_F(SceneFileTest, MissingFieldsKeepTheDefaults) {
+    const std::string file = write("empty.json", R"({"camera": {}, "light": {}, "medium": {}})");
+    const host::SceneDesc s = host::loadSceneFile(file);
+    const host::SceneDesc d;
+    EXPECT_TRUE(s.models.empty());
+    EXPECT_EQ(s.camera.position, d.camera.position);
+    EXPECT_EQ(s.camera.target, d.camera.target);
+    EXPECT_EQ(s.camera.up, d.camera.up);
+    EXPECT_EQ(s.camera.fovYDegrees, d.camera.fovYDegrees);
+    EXPECT_EQ(s.camera.nearPlane, d.camera.nearPlane);
+    EXPECT_EQ(s.camera.farPlane, d.camera.farPlane);
+    EXPECT_EQ(s.camera.reversedZ, d.camera.reversedZ);
+    EXPECT_EQ(s.camera.infiniteFar, d.camera.infiniteFar);
+    EXPECT_EQ(s.light.type, d.light.type);
+    EXPECT_EQ(s.light.direction, d.light.direction);
+    EXPECT_EQ(s.light.intensity, d.light.intensity);
+    EXPECT_EQ(s.light.halfAngleDegrees, d.light.halfAngleDegrees);
+    EXPECT_EQ(s.light.range, d.light.range);
+    EXPECT_EQ(s.light.radius, d.light.radius);
+    EXPECT_EQ(s.light.shadowMapSize, d.light.shadowMapSize);
+    EXPECT_EQ(s.medium.betaR, d.medium.betaR);
+    EXPECT_EQ(s.medium.betaM, d.medium.betaM);
+    EXPECT_EQ(s.medium.g, d.medium.g);
+    EXPECT_EQ(s.medium.sigmaA, d.medium.sigmaA);
+    EXPECT_EQ(s.medium.phase, d.medium.phase);
+    EXPECT_EQ(s.medium.maxDistance, d.medium.maxDistance);
+    EXPECT_EQ(s.skyColor, d.skyColor);
+    EXPECT_EQ(s.ambient, d.ambient);
+    EXPECT_EQ(s.exposure, d.exposure);
+}
+
+TEST_F(SceneFileTest, RelativePathsResolveAgainstTheSceneFilesFolder) {
+    write("models/a.gltf", "");
+    write("scenes/b.glb", "");
+    const std::string file =
+        write("scenes/s.json",
+              R"({"gltf": "../models/a.gltf", "models": [{"gltf": "b.glb"}, {"gltf": ")" + kBox +
+                  R"("}]})");
+    // Run from elsewhere: the scene's own folder must decide, not the working directory.
+    const fs::path before = fs::current_path();
+    fs::current_path(fs::temp_directory_path());
+    const host::SceneDesc s = host::loadSceneFile(file);
+    fs::current_path(before);
+    ASSERT_EQ(s.models.size(), 3u);
+    EXPECT_EQ(s.models[0].path, (dir_ / "models" / "a.gltf").string());
+    EXPECT_EQ(s.models[1].path, (dir_ / "scenes" / "b.glb").string());
+    EXPECT_EQ(s.models[2].path, kBox);
+}
+
+TEST_F(SceneFileTest, ModelTransformsScaleThenRotateXYZThenTranslate) {
+    const std::string file = write(
+        "t.json", R"({"models": [
+      {"gltf": ")" + kBox +
+                      R"(", "translation": [1, 2, 3], "rotationDegrees": [90, 90, 0], "scale": 2},
+      {"gltf": ")" + kBox +
+                      R"(", "rotationDegrees": [0, 0, 90], "scale": [1, 2, 3]}]})");
+    const host::SceneDesc s = host::loadSceneFile(file);
+    ASSERT_EQ(s.models.size(), 2u);
+    // (0,1,0) * 2 = (0,2,0); Rx(90): (x, y, z) -> (x, -z, y) gives (0,0,2); Ry(90):
+    // (x, y, z) -> (z, y, -x) gives (2,0,0); + (1,2,3). Rotating Y first would give (1,2,5).
+    expectVec3(apply(s.models[0].transform, {0, 1, 0}), {3, 2, 3}, 1e-5f);
+    // (1,1,1) * (1,2,3) = (1,2,3); Rz(90): (x, y, z) -> (-y, x, z) gives (-2,1,3).
+    expectVec3(apply(s.models[1].transform, {1, 1, 1}), {-2, 1, 3}, 1e-5f);
+}
+
+TEST_F(SceneFileTest, LoadSceneMeshesAppendsEveryModel) {
+    const std::string file = write("m.json", R"({"gltf": ")" + kBox + R"(",
+      "models": [{"gltf": ")" + kBox + R"(", "translation": [10, 0, 0]}]})");
+    const host::MeshData m = host::loadSceneMeshes(host::loadSceneFile(file));
+    EXPECT_EQ(m.vertices.size(), 48u);
+    EXPECT_EQ(m.indices.size(), 72u);
+    ASSERT_EQ(m.primitives.size(), 2u);
+    EXPECT_EQ(m.primitives[1].material, 1);
+    EXPECT_EQ(m.textures.size(), 2u);
+    expectVec3(m.bounds.min, {-0.5f, -0.5f, -0.5f});
+    expectVec3(m.bounds.max, {10.5f, 0.5f, 0.5f});
+}
+
+TEST_F(SceneFileTest, ShippedScenesLoad) {
+    const fs::path scenes = fs::path(LS_SOURCE_DIR) / "scenes";
+    if (!fs::exists(scenes)) GTEST_SKIP() << "no scenes/ folder in " << LS_SOURCE_DIR;
+    for (const auto& entry : fs::directory_iterator(scenes)) {
+        if (entry.path().extension() != ".json") continue;
+        SCOPED_TRACE(entry.path().string());
+        EXPECT_NO_THROW(host::loadSceneMeshes(host::loadSceneFile(entry.path().string())));
+    }
+}
+
+TEST_F(SceneFileTest, FilesThatCannotBeRead) {
+    const std::string missing = (dir_ / "missing.json").string();
+    try {
+        host::loadSceneFile(missing);
+        FAIL() << "no error";
+    } catch (const host::SceneError& e) {
+        EXPECT_EQ(std::string(e.what()), missing + ": cannot open the scene file");
+    }
+    EXPECT_EQ(errorFor(R"({"camera": })"),
+              "malformed JSON at byte 12: [json.exception.parse_error.101] parse error at line 1, "
+              "column 12: syntax error while parsing value - unexpected '}'; expected '[', '{', or "
+              "a literal");
+    EXPECT_EQ(errorFor(R"({"camera": {"near": 1e400}})"),
+              "malformed JSON: [json.exception.out_of_range.406] number overflow parsing '1e400'");
+    EXPECT_EQ(errorFor("[1, 2]"), "the top level must be a JSON object");
+    EXPECT_EQ(errorFor(R"({"camera": {}, "camera": {}})"),
+              "key 'camera' appears twice in one object");
+}
+
+TEST_F(SceneFileTest, UnknownKeysAreRefusedWithTheKnownOnes) {
+    EXPECT_EQ(errorFor(R"({"camra": {}})"),
+              "unknown key 'camra' (known keys: gltf, models, camera, light, medium, sky, ambient, "
+              "exposure)");
+    EXPECT_EQ(
+        errorFor(R"({"camera": {"fov": 60}})"),
+        "camera: unknown key 'fov' (known keys: position, target, up, fovYDegrees, near, far, "
+        "reversedZ, infiniteFar)");
+    EXPECT_EQ(errorFor(R"({"light": {"kind": "spot"}})"),
+              "light: unknown key 'kind' (known keys: type, position, direction, intensity, "
+              "halfAngleDegrees, range, radius, shadowMapSize)");
+    EXPECT_EQ(
+        errorFor(R"({"medium": {"beta": 1}})"),
+        "medium: unknown key 'beta' (known keys: betaR, betaM, g, sigmaA, phase, maxDistance)");
+    EXPECT_EQ(errorFor(R"({"sky": {"colour": [0, 0, 0]}})"),
+              "sky: unknown key 'colour' (known keys: color)");
+    EXPECT_EQ(errorFor(R"({"models": [{"gltf": ")" + kBox + R"(", "rotation": [0, 0, 0]}]})"),
+              "models[0]: unknown key 'rotation' (known keys: gltf, translation, rotationDegrees, "
+              "scale)");
+}
+
+TEST_F(SceneFileTest, WrongTypes) {
+    EXPECT_EQ(errorFor(R"({"camera": []})"), "camera must be an object");
+    EXPECT_EQ(errorFor(R"({"camera": {"position": "here"}})"),
+              "camera.position must be an array of 3 numbers");
+    EXPECT_EQ(errorFor(R"({"camera": {"position": [1, 2]}})"),
+              "camera.position must be an array of 3 numbers");
+    EXPECT_EQ(errorFor(R"({"camera": {"target": [1, "2", 3]}})"),
+              "camera.target must be an array of 3 numbers");
+    EXPECT_EQ(errorFor(R"({"camera": {"near": "0.1"}})"), "camera.near must be a number");
+    EXPECT_EQ(errorFor(R"({"camera": {"reversedZ": 1}})"),
+              "camera.reversedZ must be true or false");
+    EXPECT_EQ(errorFor(R"({"light": {"type": 3}})"), "light.type must be a string");
+    EXPECT_EQ(errorFor(R"({"gltf": 3})"), "gltf must be a string");
+    EXPECT_EQ(errorFor(R"({"models": {}})"), "models must be an array of objects");
+    EXPECT_EQ(errorFor(R"({"models": [3]})"), "models[0] must be an object");
+    EXPECT_EQ(errorFor(R"({"models": [{}]})"), "models[0].gltf is required");
+    EXPECT_EQ(errorFor(R"({"models": [{"gltf": ")" + kBox + R"(", "scale": "big"}]})"),
+              "models[0].scale must be a number or an array of 3 numbers");
+    EXPECT_EQ(errorFor(R"({"light": {"shadowMapSize": 1024.5}})"),
+              "light.shadowMapSize must be an integer");
+}
+
+TEST_F(SceneFileTest, NamesAndPaths) {
+    EXPECT_EQ(errorFor(R"({"light": {"type": "laser"}})"),
+              "light.type 'laser' is not one of directional, spot, point");
+    EXPECT_EQ(errorFor(R"({"medium": {"phase": "henyey-greenstein"}})"),
+              "medium.phase 'henyey-greenstein' is not one of cornette-shanks, isotropic");
+    EXPECT_EQ(errorFor(R"({"gltf": ""})"), "gltf must not be empty");
+    EXPECT_EQ(errorFor(R"({"gltf": "nope.gltf"})"),
+              "gltf 'nope.gltf' does not exist (looked for " + (dir_ / "nope.gltf").string() + ")");
+    EXPECT_EQ(errorFor(R"({"models": [{"gltf": "../nope.glb"}]})"),
+              "models[0].gltf '../nope.glb' does not exist (looked for " +
+                  (dir_.parent_path() / "nope.glb").string() + ")");
+}
+
+TEST_F(SceneFileTest, NumbersOutOfRange) {
+    EXPECT_EQ(errorFor(R"({"camera": {"fovYDegrees": 190}})"),
+              "camera.fovYDegrees = 190: must be in (0, 180)");
+    EXPECT_EQ(errorFor(R"({"camera": {"fovYDegrees": 180}})"),
+              "camera.fovYDegrees = 180: must be in (0, 180)");
+    EXPECT_EQ(errorFor(R"({"camera": {"fovYDegrees": 0}})"),
+              "camera.fovYDegrees = 0: must be in (0, 180)");
+    EXPECT_EQ(errorFor(R"({"medium": {"g": 1.2}})"), "medium.g = 1.2: must be in (-1, 1)");
+    EXPECT_EQ(errorFor(R"({"medium": {"g": -1}})"), "medium.g = -1: must be in (-1, 1)");
+    EXPECT_EQ(errorFor(R"({"light": {"halfAngleDegrees": 0}})"),
+              "light.halfAngleDegrees = 0: must be in (0, 89]");
+    EXPECT_EQ(errorFor(R"({"light": {"halfAngleDegrees": 89.5}})"),
+              "light.halfAngleDegrees = 89.5: must be in (0, 89]");
+    EXPECT_EQ(errorFor(R"({"camera": {"near": 0}})"), "camera.near = 0: must be > 0");
+    EXPECT_EQ(errorFor(R"({"camera": {"near": -0.1}})"), "camera.near = -0.1: must be > 0");
+    EXPECT_EQ(errorFor(R"({"camera": {"near": 2, "far": 1.5}})"),
+              "camera.far = 1.5: must be > camera.near (2) unless camera.infiniteFar is true");
+    EXPECT_EQ(errorFor(R"({"camera": {"near": 0.1, "far": 0.1}})"),
+              "camera.far = 0.1: must be > camera.near (0.1) unless camera.infiniteFar is true");
+    EXPECT_EQ(errorFor(R"({"camera": {"far": 1e39}})"),
+              "camera.far = 1e+39: must be a finite number");
+    EXPECT_EQ(errorFor(R"({"camera": {"position": [0, -1e39, 0]}})"),
+              "camera.position[1] = -1e+39: must be a finite number");
+    EXPECT_EQ(errorFor(R"({"light": {"shadowMapSize": 16385}})"),
+              "light.shadowMapSize = 16385: must be in [0, 16384]");
+    EXPECT_EQ(errorFor(R"({"light": {"shadowMapSize": -1}})"),
+              "light.shadowMapSize = -1: must be in [0, 16384]");
+    EXPECT_EQ(errorFor(R"({"light": {"range": 0}})"), "light.range = 0: must be > 0");
+    EXPECT_EQ(errorFor(R"({"light": {"radius": -0.05}})"), "light.radius = -0.05: must be > 0");
+    EXPECT_EQ(errorFor(R"({"medium": {"maxDistance": 0}})"), "medium.maxDistance = 0: must be > 0");
+    EXPECT_EQ(errorFor(R"({"exposure": -2})"), "exposure = -2: must be > 0");
+    EXPECT_EQ(errorFor(R"({"models": [{"gltf": ")" + kBox + R"(", "scale": [1, 0, 1]}]})"),
+              "models[0].scale = 0: must not be 0 (it flattens the model)");
+}
+
+TEST_F(SceneFileTest, NegativeCoefficients) {
+    EXPECT_EQ(errorFor(R"({"medium": {"betaR": [1e-5, -1e-5, 0]}})"),
+              "medium.betaR[1] = -1e-05: must be >= 0");
+    EXPECT_EQ(errorFor(R"({"medium": {"betaM": [-0.5, 0, 0]}})"),
+              "medium.betaM[0] = -0.5: must be >= 0");
+    EXPECT_EQ(errorFor(R"({"medium": {"sigmaA": [0, 0, -2]}})"),
+              "medium.sigmaA[2] = -2: must be >= 0");
+    EXPECT_EQ(errorFor(R"({"light": {"intensity": [1, -1, 1]}})"),
+              "light.intensity[1] = -1: must be >= 0");
+    EXPECT_EQ(errorFor(R"({"sky": {"color": [0, 0, -0.25]}})"),
+              "sky.color[2] = -0.25: must be >= 0");
+    EXPECT_EQ(errorFor(R"({"ambient": [-3, 0, 0]})"), "ambient[0] = -3: must be >= 0");
+}
+
+TEST_F(SceneFileTest, Directions) {
+    EXPECT_EQ(errorFor(R"({"light": {"direction": [0, 0, 0]}})"),
+              "light.direction has zero length");
+    EXPECT_EQ(errorFor(R"({"camera": {"up": [0, 0, 0]}})"), "camera.up has zero length");
+    EXPECT_EQ(errorFor(R"({"camera": {"position": [1, 1, 1], "target": [1, 1, 1]}})"),
+              "camera.target equals camera.position: the view direction has zero length");
+    EXPECT_EQ(errorFor(R"({"camera": {"position": [0, 0, 0], "target": [0, 5, 0]}})"),
+              "camera.up is parallel to the view direction");
+}
+
+}  // namespace
