@@ -6,6 +6,6 @@ scripts/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$(nproc)"
 mkdir -p out
-./build/host_example/lightscatter pattern --out out/pattern.png --size 512x512 \
-    --report out/pattern-report.json --dot out/pattern-graph.dot
-echo "image: out/pattern.png"
+./build/host_example/lightscatter render scenes/atrium.json --size 960x540 --out out/atrium.png \
+    --inscatter out/atrium-inscatter.exr --timings out/atrium-timings.json
+echo "image: out/atrium.png (Lin alone: out/atrium-inscatter.exr, per-pass times: out/atrium-timings.json)"
