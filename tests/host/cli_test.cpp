@@ -83,7 +83,7 @@ TEST(Cli, BudgetPrintsEveryProfileBesideTheSeed) {
 }
 
 TEST(Cli, GraphDumpsTheCompiledFrameGraph) {
-    const auto dot = run("graph " + scene("window_room") + " --dot --size 64x36");
+    const auto dot = run("graph " + scene("window_room") + " --dot --size 64x36 --validation");
     ASSERT_EQ(dot.exitCode, 0) << dot.out;
     EXPECT_NE(dot.out.find("digraph"), std::string::npos);
     EXPECT_NE(dot.out.find("ray march with min/max trees"), std::string::npos);
@@ -121,4 +121,14 @@ TEST(Cli, FailuresNameWhatIsWrong) {
 TEST(Cli, ANonexistentDeviceIsAClearError) {
     expectFailure(run("render " + scene("atrium") + " --size 8x8 --device no-such-gpu"),
                   "no-such-gpu");
+}
+
+TEST(Cli, PatternRendersTheRuntimesTestPattern) {
+    const auto r = run("pattern --size 64x48 --out pattern.png --report pattern.json --dot pattern.dot --validation");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_TRUE(exists("pattern.png"));
+    EXPECT_TRUE(exists("pattern.dot"));
+    std::ifstream report(path("pattern.json"));
+    const auto j = nlohmann::json::parse(report);
+    EXPECT_LT(j["totals"]["aliasedBytes"].get<uint64_t>(), j["totals"]["unaliasedBytes"].get<uint64_t>());
 }
