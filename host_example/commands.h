@@ -10,5 +10,6 @@ int runBudget(Args& args);
 int runGraph(Args& args);
 int runView(Args& args);
 int runPattern(Args& args);
+int runBench(Args& args);
 
 }  // namespace host

@@ -15,6 +15,7 @@ const char* kUsage =
     "  budget [--profile NAME|all] [--size WxH] [--shadow-map N] [--json]\n"
     "  graph SCENE.json --dot|--json [--method NAME] [--profile NAME] [--size WxH]\n"
     "  view SCENE.json [--method NAME] [--profile NAME] [--size WxH] [--frames N]\n"
+    "  bench [--config FILE.json] [--out DIR]\n"
     "  pattern [--out FILE.png] [--size WxH] [--report FILE.json] [--dot FILE.dot]\n"
     "common options: --device NAME (or LS_DEVICE), --validation\n"
     "methods: epipolar (default), brute-force; profiles: high-quality, balanced (default),\n"
@@ -36,8 +37,9 @@ int main(int argc, char** argv) {
         if (command == "graph") return host::runGraph(args);
         if (command == "view") return host::runView(args);
         if (command == "pattern") return host::runPattern(args);
+        if (command == "bench") return host::runBench(args);
         std::cerr << "lightscatter: unknown command '" << command
-                  << "' (known: render, budget, graph, view, pattern)\n";
+                  << "' (known: render, budget, graph, view, bench, pattern)\n";
         return 2;
     } catch (const std::exception& e) {
         std::cerr << "lightscatter: " << e.what() << "\n";

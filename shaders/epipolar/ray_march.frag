@@ -48,7 +48,10 @@ float distanceAt(LineRay r, float t) {
     return mix(r.f0 * r.iw0, r.f1 * r.iw1, a) / mix(r.iw0, r.iw1, a);
 }
 
-float depthAt(LineRay r, int i) { return r.z0 + (float(i) - r.ta) * r.dz; }
+// The ray's depth at sample i, held at the segment's ends: a sample past the end (the last one
+// decides the visibility of the part before it) takes the end's depth, never an extrapolation,
+// which for a segment much shorter than a texel would be anything.
+float depthAt(LineRay r, int i) { return r.z0 + clamp(float(i) - r.ta, 0.0, max(r.tb - r.ta, 0.0)) * r.dz; }
 
 vec3 visibilityAt(LineRay r, int i) {
     vec2 uv = r.origin + float(i) * r.dir;

@@ -1,0 +1,38 @@
+#pragma once
+// What a benchmark runs: scenes x configurations (methods, profiles, and one-parameter sweeps from
+// the balanced profile), read from a JSON file (bench/*.json).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lightscatter.h"
+#include <vulkan/vulkan.h>
+
+namespace host::bench {
+
+struct BenchRun {
+    std::string scene;       // path of SCENE.json
+    std::string label;       // e.g. "epipolar balanced", "slices=512"
+    std::string family;      // "profiles", "slices", "samples", "initialStep", "shadowMapSize", "size", "trees"
+    lightscatter::Method method = lightscatter::Method::Epipolar;
+    lightscatter::Profile profile = lightscatter::Profile::Balanced;
+    lightscatter::Settings settings;  // used as Custom when custom is true
+    bool custom = false;
+    VkExtent2D size{0, 0};
+    uint32_t shadowMapSize = 0;  // 0: the scene's
+    bool measureError = false;   // at the config's error size only (the reference is slow)
+};
+
+struct BenchConfig {
+    std::string name;
+    int frames = 10;
+    int warmup = 3;
+    VkExtent2D size{480, 270};       // where errors are measured
+    std::vector<std::string> scenes;
+    std::vector<BenchRun> runs;      // expanded
+};
+
+// Throws std::runtime_error naming the file and field.
+BenchConfig loadBenchConfig(const std::string& path, const std::string& projectRoot);
+
+}  // namespace host::bench

@@ -1,0 +1,182 @@
+#!/usr/bin/python3
+"""Writes scenes/hard/: one SCENE.json per hard case of DESIGN.md, over a small open scene (ground,
+a grille of bars, a box) in hard_cases.gltf. Lights placed at screen positions use the same camera
+and Vulkan projection as the host, for the suite's 16:9 screens. Standard library only.
+
+    /usr/bin/python3 tools/make_hard_cases.py scenes/hard
+"""
+import base64
+import json
+import math
+import struct
+import sys
+from pathlib import Path
+
+EYE = (0.0, 2.5, 9.0)
+TARGET = (0.0, 1.5, 0.0)
+FOV = 60.0
+ASPECT = 16.0 / 9.0
+SUITE = (64, 36)  # the hard-case tests' screen; pixel-exact cases are placed for it
+
+
+def sub(a, b): return tuple(x - y for x, y in zip(a, b))
+def add(a, b): return tuple(x + y for x, y in zip(a, b))
+def mul(a, s): return tuple(x * s for x in a)
+def dot(a, b): return sum(x * y for x, y in zip(a, b))
+def cross(a, b): return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+def norm(a): return mul(a, 1.0 / math.sqrt(dot(a, a)))
+
+
+FORWARD = norm(sub(TARGET, EYE))
+RIGHT = norm(cross(FORWARD, (0.0, 1.0, 0.0)))
+UP = cross(RIGHT, FORWARD)
+
+
+def through_ndc(x, y, distance):
+    """World point at `distance` along the ray through NDC (x, y): Vulkan clip, y down."""
+    t = math.tan(math.radians(FOV) / 2)
+    d = norm(add(add(FORWARD, mul(RIGHT, x * t * ASPECT)), mul(UP, -y * t)))
+    return add(EYE, mul(d, distance))
+
+
+def box(center, half):
+    """Triangles of an axis-aligned box, outward counter-clockwise."""
+    cx, cy, cz = center
+    hx, hy, hz = half
+    faces = []
+    for axis in range(3):
+        for sign in (-1, 1):
+            n = [0, 0, 0]
+            n[axis] = sign
+            u = [0, 0, 0]
+            v = [0, 0, 0]
+            u[(axis + 1) % 3] = 1
+            v[(axis + 2) % 3] = 1
+            if sign < 0:
+                u, v = v, u
+            corner = [cx, cy, cz]
+            corner[axis] += sign * half[axis]
+            sizes = half
+            quad = []
+            for a, b in ((-1, -1), (1, -1), (1, 1), (-1, 1)):
+                p = list(corner)
+                for k in range(3):
+                    p[k] += a * u[k] * sizes[k] + b * v[k] * sizes[k]
+                quad.append((tuple(p), tuple(n)))
+            faces.append(quad)
+    return faces
+
+
+def write_gltf(path):
+    quads = [[((-15, 0, -15), (0, 1, 0)), ((-15, 0, 15), (0, 1, 0)), ((15, 0, 15), (0, 1, 0)), ((15, 0, -15), (0, 1, 0))]]
+    for i in range(-2, 3):
+        quads += box((0.5 * i, 3.0, 0.0), (0.08, 0.05, 1.6))
+    quads += box((-1.2, 1.0, 0.4), (0.5, 1.0, 0.1))
+    positions, normals, indices = [], [], []
+    for q in quads:
+        base = len(positions)
+        for p, n in q:
+            positions.append(p)
+            normals.append(n)
+        indices += [base, base + 1, base + 2, base, base + 2, base + 3]
+    pos = b"".join(struct.pack("<3f", *p) for p in positions)
+    nrm = b"".join(struct.pack("<3f", *n) for n in normals)
+    idx = b"".join(struct.pack("<I", i) for i in indices)
+    blob = pos + nrm + idx
+    lo = [min(p[k] for p in positions) for k in range(3)]
+    hi = [max(p[k] for p in positions) for k in range(3)]
+    gltf = {
+        "asset": {"version": "2.0", "generator": "tools/make_hard_cases.py"},
+        "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}, "indices": 2, "material": 0}]}],
+        "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [0.7, 0.68, 0.64, 1.0]}}],
+        "buffers": [{"byteLength": len(blob), "uri": "data:application/octet-stream;base64," +
+                     base64.b64encode(blob).decode()}],
+        "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": len(pos), "target": 34962},
+                        {"buffer": 0, "byteOffset": len(pos), "byteLength": len(nrm), "target": 34962},
+                        {"buffer": 0, "byteOffset": len(pos) + len(nrm), "byteLength": len(idx), "target": 34963}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": len(positions), "type": "VEC3",
+                       "min": lo, "max": hi},
+                      {"bufferView": 1, "componentType": 5126, "count": len(normals), "type": "VEC3"},
+                      {"bufferView": 2, "componentType": 5125, "count": len(indices), "type": "SCALAR"}],
+    }
+    path.write_text(json.dumps(gltf))
+
+
+def spot(position, direction, half=30.0, intensity=(400.0, 380.0, 350.0)):
+    return {"type": "spot", "position": list(position), "direction": list(direction), "intensity": list(intensity),
+            "halfAngleDegrees": half, "range": 30.0, "radius": 0.05, "shadowMapSize": 512}
+
+
+def sun(direction):
+    return {"type": "directional", "direction": list(direction), "intensity": [3.0, 3.0, 2.8], "shadowMapSize": 512}
+
+
+def point(position):
+    return {"type": "point", "position": list(position), "intensity": [60.0, 55.0, 50.0], "radius": 0.05,
+            "shadowMapSize": 0}
+
+
+def scene(light, gltf="hard_cases.gltf", medium=None, camera=None):
+    cam = {"position": list(EYE), "target": list(TARGET), "up": [0, 1, 0], "fovYDegrees": FOV,
+           "near": 0.1, "far": 60.0, "reversedZ": False, "infiniteFar": False}
+    cam.update(camera or {})
+    med = {"betaR": [0.002, 0.004, 0.008], "betaM": [0.03, 0.03, 0.03], "g": 0.6, "sigmaA": [0, 0, 0],
+           "phase": "cornette-shanks", "maxDistance": 60.0}
+    med.update(medium or {})
+    s = {"camera": cam, "light": light, "medium": med, "sky": {"color": [0.05, 0.06, 0.09]},
+         "ambient": [0.2, 0.2, 0.22], "exposure": 1.5}
+    if gltf:
+        s["gltf"] = gltf
+    return s
+
+
+def cases():
+    w, h = SUITE
+    px = ((32.5 / w) * 2 - 1, (18.5 / h) * 2 - 1)
+    # Camera exactly on the surface of a cone that lights the scene in front of it: the axis is the
+    # direction from the apex to the camera, turned 30 degrees towards the scene.
+    a = math.radians(30.0)
+    apex = add(EYE, (0.0, 3.0, 2.0))
+    u = norm(sub(EYE, apex))
+    w = norm(sub(TARGET, apex))
+    v = norm(sub(w, mul(u, dot(w, u))))
+    axis = norm(add(mul(u, math.cos(a)), mul(v, math.sin(a))))
+    return {
+        "light_center": scene(spot(through_ndc(0, 0, 5), (0, -1, -0.3))),
+        "light_corner": scene(spot(through_ndc(-1, -1, 6), (0.2, -1, 0))),
+        "light_on_edge": scene(spot(through_ndc(1, 0, 6), (-0.3, -1, 0))),
+        "light_off_screen": scene(spot(through_ndc(2.5, 0.3, 6), (-0.5, -1, 0))),
+        "light_behind_camera": scene(spot(add(sub(EYE, mul(FORWARD, 3)), (0, 1, 0)), FORWARD, 40)),
+        "spot_at_camera": scene(spot(EYE, FORWARD, 30)),
+        "point_at_camera": scene(point(EYE)),
+        "ray_through_point_light": scene(point(through_ndc(px[0], px[1], 4))),
+        "sun_along_view": scene(sun(FORWARD)),
+        "sun_into_view": scene(sun(mul(FORWARD, -1))),
+        "sun_across_view": scene(sun((1, 0, 0))),
+        "camera_inside_cone": scene(spot(add(EYE, (0, 3, 0)), (0, -1, -0.4), 60)),
+        "camera_on_cone": scene(spot(apex, axis, 30)),
+        "sky_far_plane": scene(spot((0.3, 6, 0.2), (0, -1, 0)), gltf=None),
+        "sky_infinite_far": scene(sun((0.35, -1, -0.25)), camera={"infiniteFar": True}),
+        "reversed_z": scene(spot((0.3, 6, 0.2), (0, -1, 0)), camera={"reversedZ": True}),
+        "reversed_infinite": scene(spot((0.3, 6, 0.2), (0, -1, 0)), camera={"reversedZ": True, "infiniteFar": True}),
+        "thin_medium_km": scene(sun((0.35, -1, -0.25)), camera={"far": 8000.0},
+                                medium={"betaR": [2e-6, 4e-6, 8e-6], "betaM": [4e-6, 4e-6, 4e-6], "maxDistance": 8000.0}),
+        "dense_medium": scene(spot((0.3, 6, 0.2), (0, -1, 0)), medium={"betaM": [1.0, 1.0, 1.0]}),
+        "zero_extinction_channel": scene(spot((0.3, 6, 0.2), (0, -1, 0)),
+                                         medium={"betaR": [0, 0.004, 0.008], "betaM": [0, 0.03, 0.03]}),
+        "shadow_map_not_pow2": scene(dict(spot((0.3, 6, 0.2), (0, -1, 0)), shadowMapSize=100)),
+    }
+
+
+def main():
+    out = Path(sys.argv[1] if len(sys.argv) > 1 else "scenes/hard")
+    out.mkdir(parents=True, exist_ok=True)
+    write_gltf(out / "hard_cases.gltf")
+    for name, s in cases().items():
+        (out / f"{name}.json").write_text(json.dumps(s, indent=2) + "\n")
+        print(out / f"{name}.json")
+
+
+if __name__ == "__main__":
+    main()
