@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -131,4 +132,27 @@ TEST(Cli, PatternRendersTheRuntimesTestPattern) {
     std::ifstream report(path("pattern.json"));
     const auto j = nlohmann::json::parse(report);
     EXPECT_LT(j["totals"]["aliasedBytes"].get<uint64_t>(), j["totals"]["unaliasedBytes"].get<uint64_t>());
+}
+
+TEST(Cli, BenchRunsTheSmallConfigurationAndPlotsIt) {
+    const auto r = run("bench --config " + std::string(LS_SOURCE_DIR) + "/bench/small.json --out bench");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    std::ifstream csv(path("bench/bench.csv"));
+    std::string line;
+    int rows = -1;
+    while (std::getline(csv, line)) ++rows;
+    EXPECT_EQ(rows, 16);
+    std::ifstream j(path("bench/bench.json"));
+    const auto parsed = nlohmann::json::parse(j);
+    for (const auto& run : parsed["runs"]) {
+        EXPECT_EQ(run["nonFinite"], 0) << run["label"];
+        EXPECT_GT(run["time"]["median"].get<double>(), 0.0) << run["label"];
+        ASSERT_TRUE(run.contains("error")) << run["label"];
+        EXPECT_LT(run["error"]["meanRelative"].get<double>(), 0.2) << run["label"];
+    }
+    EXPECT_TRUE(exists("bench/strips/window_room_brute-force.png"));
+    ASSERT_EQ(std::system(("/usr/bin/python3 " + std::string(LS_SOURCE_DIR) + "/scripts/plot_bench.py " + path("bench") +
+                           " " + path("plots") + " > /dev/null").c_str()),
+              0);
+    EXPECT_TRUE(exists("plots/time_vs_error_window_room.png"));
 }
