@@ -9,38 +9,11 @@
 namespace lightscatter::detail {
 
 PointTable::PointTable(const rg::Device& device, uint32_t width, uint32_t height)
-    : device_(device), width_(width), height_(height) {
-    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-    info.imageType = VK_IMAGE_TYPE_2D;
-    info.format = VK_FORMAT_R32G32B32A32_SFLOAT;
-    info.extent = {width, height, 1};
-    info.mipLevels = 1;
-    info.arrayLayers = 1;
-    info.samples = VK_SAMPLE_COUNT_1_BIT;
-    info.tiling = VK_IMAGE_TILING_OPTIMAL;
-    info.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
-    RG_VK(vkCreateImage(device.device(), &info, nullptr, &image_));
-    device.setName(image_, VK_OBJECT_TYPE_IMAGE, "point-light table");
-    VkMemoryRequirements req;
-    vkGetImageMemoryRequirements(device.device(), image_, &req);
-    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    alloc.allocationSize = req.size;
-    try {
-        alloc.memoryTypeIndex = device.findMemoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-        RG_VK(vkAllocateMemory(device.device(), &alloc, nullptr, &memory_));
-        device.setName(memory_, VK_OBJECT_TYPE_DEVICE_MEMORY, "point-light table memory");
-        RG_VK(vkBindImageMemory(device.device(), image_, memory_, 0));
-    } catch (...) {
-        if (memory_) vkFreeMemory(device.device(), memory_, nullptr);
-        vkDestroyImage(device.device(), image_, nullptr);
-        throw;
-    }
-}
-
-PointTable::~PointTable() {
-    vkDestroyImage(device_.device(), image_, nullptr);
-    vkFreeMemory(device_.device(), memory_, nullptr);
-}
+    : device_(device),
+      width_(width),
+      height_(height),
+      image_(device, VK_FORMAT_R32G32B32A32_SFLOAT, {width, height},
+             VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, "point-light table") {}
 
 bool PointTable::update(const ls::Shared& shared) {
     const ls::FrameConstants& c = shared->constants;
@@ -53,7 +26,7 @@ bool PointTable::update(const ls::Shared& shared) {
 
     rg::RenderGraph g;
     rg::ImportedImage desc;
-    desc.image = image_;
+    desc.image = image_.image();
     desc.format = VK_FORMAT_R32G32B32A32_SFLOAT;
     desc.extent = {width_, height_};
     desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;

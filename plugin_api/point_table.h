@@ -6,20 +6,20 @@
 
 #include "common/shared_state.h"
 #include "rendergraph/device.h"
+#include "rendergraph/owned_image.h"
 
 namespace lightscatter::detail {
 
 class PointTable {
 public:
     PointTable(const rg::Device& device, uint32_t width, uint32_t height);
-    ~PointTable();
     PointTable(const PointTable&) = delete;
     PointTable& operator=(const PointTable&) = delete;
 
     // Refills the table if what it depends on changed since the last fill (waits for the GPU).
     // Returns true when it did.
     bool update(const ls::Shared& shared);
-    VkImage image() const { return image_; }
+    VkImage image() const { return image_.image(); }
     uint32_t width() const { return width_; }
     uint32_t height() const { return height_; }
     bool filled() const { return filled_; }
@@ -27,8 +27,7 @@ public:
 private:
     const rg::Device& device_;
     uint32_t width_, height_;
-    VkImage image_ = VK_NULL_HANDLE;
-    VkDeviceMemory memory_ = VK_NULL_HANDLE;
+    rg::OwnedImage image_;
     bool filled_ = false;
     std::array<float, 16> key_{};
 };

@@ -14,31 +14,9 @@ TestImage::TestImage(const rg::Device& device, VkFormat format, VkExtent2D exten
                      VkImageUsageFlags usage, VkImageLayout restingLayout, const std::string& name)
     : device_(device), format_(format), extent_(extent),
       usage_(usage | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT),
-      resting_(restingLayout) {
-    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-    info.imageType = VK_IMAGE_TYPE_2D;
-    info.format = format;
-    info.extent = {extent.width, extent.height, 1};
-    info.mipLevels = 1;
-    info.arrayLayers = 1;
-    info.samples = VK_SAMPLE_COUNT_1_BIT;
-    info.tiling = VK_IMAGE_TILING_OPTIMAL;
-    info.usage = usage_;
-    RG_VK(vkCreateImage(device.device(), &info, nullptr, &image_));
-    device.setName(image_, VK_OBJECT_TYPE_IMAGE, name);
-    VkMemoryRequirements req;
-    vkGetImageMemoryRequirements(device.device(), image_, &req);
-    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    alloc.allocationSize = req.size;
-    alloc.memoryTypeIndex = device.findMemoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    RG_VK(vkAllocateMemory(device.device(), &alloc, nullptr, &memory_));
-    RG_VK(vkBindImageMemory(device.device(), image_, memory_, 0));
+      resting_(restingLayout),
+      image_(device, format, extent, usage_, name) {
     device.submitAndWait([&](VkCommandBuffer cmd) { transition(cmd, VK_IMAGE_LAYOUT_UNDEFINED, resting_); });
-}
-
-TestImage::~TestImage() {
-    vkDestroyImage(device_.device(), image_, nullptr);
-    vkFreeMemory(device_.device(), memory_, nullptr);
 }
 
 void TestImage::transition(VkCommandBuffer cmd, VkImageLayout from, VkImageLayout to) const {
@@ -50,7 +28,7 @@ void TestImage::transition(VkCommandBuffer cmd, VkImageLayout from, VkImageLayou
     b.oldLayout = from;
     b.newLayout = to;
     b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.image = image_;
+    b.image = image_.image();
     b.subresourceRange = {rg::fullAspect(format_), 0, 1, 0, 1};
     VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
     dep.imageMemoryBarrierCount = 1;
@@ -69,7 +47,7 @@ void TestImage::upload(const std::vector<float>& texels) {
                                                          : VkImageAspectFlags{VK_IMAGE_ASPECT_COLOR_BIT},
                                    0, 0, 1};
         region.imageExtent = {extent_.width, extent_.height, 1};
-        vkCmdCopyBufferToImage(cmd, staging.buffer(), image_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        vkCmdCopyBufferToImage(cmd, staging.buffer(), image_.image(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
         transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, resting_);
     });
 }
@@ -92,7 +70,7 @@ void TestImage::clear(float value) {
         transition(cmd, resting_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
         VkClearColorValue c{{value, value, value, value}};
         VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-        vkCmdClearColorImage(cmd, image_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &c, 1, &range);
+        vkCmdClearColorImage(cmd, image_.image(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &c, 1, &range);
         transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, resting_);
     });
 }
@@ -109,7 +87,7 @@ std::vector<float> TestImage::download() {
                                                          : VkImageAspectFlags{VK_IMAGE_ASPECT_COLOR_BIT},
                                    0, 0, 1};
         region.imageExtent = {extent_.width, extent_.height, 1};
-        vkCmdCopyImageToBuffer(cmd, image_, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.buffer(), 1, &region);
+        vkCmdCopyImageToBuffer(cmd, image_.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.buffer(), 1, &region);
         transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, resting_);
         VkMemoryBarrier2 host{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
         host.srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
@@ -133,7 +111,7 @@ std::vector<float> TestImage::download() {
 
 lightscatter::ImageInput TestImage::input() const {
     lightscatter::ImageInput in;
-    in.image = image_;
+    in.image = image_.image();
     in.format = format_;
     in.extent = extent_;
     in.usage = usage_;

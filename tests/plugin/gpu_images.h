@@ -7,6 +7,7 @@
 
 #include "lightscatter.h"
 #include "rendergraph/device.h"
+#include "rendergraph/owned_image.h"
 
 namespace plugin_test {
 
@@ -14,7 +15,6 @@ class TestImage {
 public:
     TestImage(const rg::Device& device, VkFormat format, VkExtent2D extent, VkImageUsageFlags usage,
               VkImageLayout restingLayout, const std::string& name);
-    ~TestImage();
     TestImage(const TestImage&) = delete;
     TestImage& operator=(const TestImage&) = delete;
 
@@ -23,7 +23,7 @@ public:
     std::vector<float> download();  // RGBA32F, RGBA16F or R32/D32 as floats
     void clear(float value);        // color images
     lightscatter::ImageInput input() const;
-    VkImage image() const { return image_; }
+    VkImage image() const { return image_.image(); }
 
 private:
     void transition(VkCommandBuffer cmd, VkImageLayout from, VkImageLayout to) const;
@@ -32,8 +32,7 @@ private:
     VkExtent2D extent_;
     VkImageUsageFlags usage_;
     VkImageLayout resting_;
-    VkImage image_ = VK_NULL_HANDLE;
-    VkDeviceMemory memory_ = VK_NULL_HANDLE;
+    rg::OwnedImage image_;
 };
 
 }  // namespace plugin_test

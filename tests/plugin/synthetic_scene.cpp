@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstring>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "support/projection.h"
 
 namespace plugin_test {

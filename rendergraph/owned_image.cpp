@@ -1,10 +1,10 @@
-#include "gpu_image.h"
+#include "owned_image.h"
 
-#include "rendergraph/vk_error.h"
+#include "vk_error.h"
 
-namespace host {
+namespace rg {
 
-GpuImage::GpuImage(const rg::Device& device, VkFormat format, VkExtent2D extent,
+OwnedImage::OwnedImage(const rg::Device& device, VkFormat format, VkExtent2D extent,
                    VkImageUsageFlags usage, const std::string& name)
     : device_(device), format_(format), extent_(extent), usage_(usage) {
     VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
@@ -34,9 +34,9 @@ GpuImage::GpuImage(const rg::Device& device, VkFormat format, VkExtent2D extent,
     }
 }
 
-GpuImage::~GpuImage() {
+OwnedImage::~OwnedImage() {
     vkDestroyImage(device_.device(), image_, nullptr);
     vkFreeMemory(device_.device(), memory_, nullptr);
 }
 
-}  // namespace host
+}  // namespace rg

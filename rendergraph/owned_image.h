@@ -1,0 +1,35 @@
+#pragma once
+// A 2D image with memory of its own, named for debug utils: the one way the runtime, the plugin and
+// the host allocate the images that outlive a frame graph.
+#include <vulkan/vulkan.h>
+
+#include <string>
+
+#include "device.h"
+
+namespace rg {
+
+class OwnedImage {
+public:
+    // One mip level, one layer, optimal tiling, device-local memory.
+    OwnedImage(const Device& device, VkFormat format, VkExtent2D extent, VkImageUsageFlags usage,
+               const std::string& name);
+    ~OwnedImage();
+    OwnedImage(const OwnedImage&) = delete;
+    OwnedImage& operator=(const OwnedImage&) = delete;
+
+    VkImage image() const { return image_; }
+    VkFormat format() const { return format_; }
+    VkExtent2D extent() const { return extent_; }
+    VkImageUsageFlags usage() const { return usage_; }
+
+private:
+    const Device& device_;
+    VkFormat format_;
+    VkExtent2D extent_;
+    VkImageUsageFlags usage_;
+    VkImage image_ = VK_NULL_HANDLE;
+    VkDeviceMemory memory_ = VK_NULL_HANDLE;
+};
+
+}  // namespace rg
