@@ -344,14 +344,7 @@ FrameOutput EngineRenderer::render(const RenderOptions& options) {
     dep.pMemoryBarriers = &toHost;
     vkCmdPipelineBarrier2(cmd_, &dep);
     RG_VK(vkEndCommandBuffer(cmd_));
-    VkCommandBufferSubmitInfo cb{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
-    cb.commandBuffer = cmd_;
-    VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
-    submit.commandBufferInfoCount = 1;
-    submit.pCommandBufferInfos = &cb;
-    RG_VK(vkQueueSubmit2(device_.queue(), 1, &submit, fence_));
-    RG_VK(vkWaitForFences(device_.device(), 1, &fence_, VK_TRUE, UINT64_MAX));
-    RG_VK(vkResetFences(device_.device(), 1, &fence_));
+    device_.submitAndWait(cmd_, fence_);
 
     FrameOutput out = timings();
     out.color.resize(pixels * 4);

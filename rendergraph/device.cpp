@@ -421,14 +421,23 @@ void Device::submitAndWait(const std::function<void(VkCommandBuffer)>& record) c
     RG_VK(vkBeginCommandBuffer(cmd, &begin));
     record(cmd);
     RG_VK(vkEndCommandBuffer(cmd));
+    submitAndWait(cmd);
+    vkFreeCommandBuffers(device_, oneShotPool_, 1, &cmd);
+}
+
+void Device::submitAndWait(VkCommandBuffer cmd, VkFence fence) const {
     VkCommandBufferSubmitInfo cbInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
     cbInfo.commandBuffer = cmd;
     VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
     submit.commandBufferInfoCount = 1;
     submit.pCommandBufferInfos = &cbInfo;
-    RG_VK(vkQueueSubmit2(queue_, 1, &submit, VK_NULL_HANDLE));
-    RG_VK(vkQueueWaitIdle(queue_));
-    vkFreeCommandBuffers(device_, oneShotPool_, 1, &cmd);
+    RG_VK(vkQueueSubmit2(queue_, 1, &submit, fence));
+    if (!fence) {
+        RG_VK(vkQueueWaitIdle(queue_));
+        return;
+    }
+    RG_VK(vkWaitForFences(device_, 1, &fence, VK_TRUE, UINT64_MAX));
+    RG_VK(vkResetFences(device_, 1, &fence));
 }
 
 std::vector<std::string> Device::takeMessages() {

@@ -70,6 +70,10 @@ public:
     // Push descriptors (VK_KHR_push_descriptor): passes bind resources without descriptor pools.
     PFN_vkCmdPushDescriptorSetKHR cmdPushDescriptorSet = nullptr;
 
+    // Submits a recorded command buffer and waits for it: on `fence` (left reset for reuse), or on
+    // the queue when there is none.
+    void submitAndWait(VkCommandBuffer cmd, VkFence fence = VK_NULL_HANDLE) const;
+
     // Records with `record` into a one-time command buffer, submits it and waits.
     void submitAndWait(const std::function<void(VkCommandBuffer)>& record) const;
 

@@ -324,21 +324,13 @@ void GraphExecutor::record(VkCommandBuffer cmd) {
 }
 
 FrameTimings GraphExecutor::run() {
-    const VkDevice dev = device_.device();
     RG_VK(vkResetCommandBuffer(cmd_, 0));
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     RG_VK(vkBeginCommandBuffer(cmd_, &begin));
     record(cmd_);
     RG_VK(vkEndCommandBuffer(cmd_));
-    VkCommandBufferSubmitInfo cbInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
-    cbInfo.commandBuffer = cmd_;
-    VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
-    submit.commandBufferInfoCount = 1;
-    submit.pCommandBufferInfos = &cbInfo;
-    RG_VK(vkQueueSubmit2(device_.queue(), 1, &submit, fence_));
-    RG_VK(vkWaitForFences(dev, 1, &fence_, VK_TRUE, UINT64_MAX));
-    RG_VK(vkResetFences(dev, 1, &fence_));
+    device_.submitAndWait(cmd_, fence_);
     return readTimings();
 }
 
