@@ -99,6 +99,11 @@ void EngineRenderer::createTargets() {
     inscatter_ = std::make_unique<GpuImage>(device_, VK_FORMAT_R32G32B32A32_SFLOAT, size_,
                                             VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                             "host in-scattering");
+    const VkDeviceSize pixels = size_t{size_.width} * size_.height;
+    colorReadback_ = std::make_unique<rg::HostBuffer>(device_, pixels * 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                                      "color readback");
+    linReadback_ = std::make_unique<rg::HostBuffer>(device_, pixels * 16, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                                    "in-scattering readback");
     shadowMap_.reset();
     if (sm > 0 && scene_.light.type != LightKind::Point)
         shadowMap_ = std::make_unique<GpuImage>(device_, VK_FORMAT_D32_SFLOAT, VkExtent2D{sm, sm},
@@ -292,8 +297,8 @@ FrameOutput EngineRenderer::timings() {
 
 FrameOutput EngineRenderer::render(const RenderOptions& options) {
     const VkDeviceSize pixels = size_t{size_.width} * size_.height;
-    rg::HostBuffer colorBuffer(device_, pixels * 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT, "color readback");
-    rg::HostBuffer linBuffer(device_, pixels * 16, VK_BUFFER_USAGE_TRANSFER_DST_BIT, "in-scattering readback");
+    const rg::HostBuffer& colorBuffer = *colorReadback_;
+    const rg::HostBuffer& linBuffer = *linReadback_;
     RG_VK(vkResetCommandBuffer(cmd_, 0));
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;

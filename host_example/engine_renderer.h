@@ -11,6 +11,7 @@
 #include "lightscatter.h"
 #include "rendergraph/compile.h"
 #include "rendergraph/executor.h"
+#include "rendergraph/host_buffer.h"
 #include "scene/scene.h"
 
 namespace host {
@@ -65,6 +66,7 @@ private:
     VkExtent2D size_;
     std::unique_ptr<GpuMesh> mesh_;
     std::unique_ptr<GpuImage> depth_, color_, shadowMap_, inscatter_;
+    std::unique_ptr<rg::HostBuffer> colorReadback_, linReadback_;  // sized with the targets
     std::unique_ptr<lightscatter::Plugin> plugin_;
     std::shared_ptr<Pipelines> pipelines_;
     std::unique_ptr<rg::RenderGraph> graph_;
