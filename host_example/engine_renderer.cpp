@@ -196,7 +196,10 @@ void EngineRenderer::buildGraph() {
         const bool reversed = scene_.camera.reversedZ;
         depthRef_ = pass.depthWrite(depthRef_, rg::LoadOp::Clear, reversed ? 0.0f : 1.0f);
         const rg::ImageRef shadow = shadowRef_;
-        pass.execute([pipes, drawAll, lighting, shadow, shadowed, reversed](rg::PassContext& ctx) {
+        const int32_t lightType = scene_.light.type == LightKind::Directional ? 0
+                                  : scene_.light.type == LightKind::Spot      ? 1
+                                                                              : 2;
+        pass.execute([pipes, drawAll, lighting, shadow, shadowed, reversed, lightType](rg::PassContext& ctx) {
             if (!pipes->forward) {
                 auto d = meshPipeline(shadowed ? rg::spirv(ls_spirv::mesh_shadowed_frag)
                                                : rg::spirv(ls_spirv::mesh_unshadowed_frag),
@@ -206,6 +209,7 @@ void EngineRenderer::buildGraph() {
                 if (shadowed)
                     d.bindings.push_back({2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT});
                 d.depthCompare = reversed ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL;
+                d.specialization.set(0, lightType);
                 pipes->forward = rg::Pipeline::graphics(ctx.device(), "host forward shading", d);
             }
             pipes->forward.bind(ctx.cmd());
@@ -276,14 +280,12 @@ void EngineRenderer::record(VkCommandBuffer cmd, const RenderOptions& options,
     Lighting& l = pipelines_->lighting;
     const LightDesc& light = scene_.light;
     l.lightViewProj = shadowMap_ ? shadowViewProjection(light, bounds_) : glm::mat4(1.0f);
-    l.lightPos = glm::vec4(light.position, static_cast<float>(light.type == LightKind::Directional ? 0
-                                                              : light.type == LightKind::Spot      ? 1
-                                                                                                   : 2));
+    l.lightPos = glm::vec4(light.position, 0.0f);
     l.lightDir = glm::vec4(glm::normalize(light.direction), std::cos(glm::radians(light.halfAngleDegrees)));
     l.lightIntensity = glm::vec4(light.intensity, light.range);
     l.betaT = glm::vec4(scene_.medium.betaR + scene_.medium.betaM + scene_.medium.sigmaA, light.radius);
     l.ambient = glm::vec4(scene_.ambient, 0.0f);
-    l.shadowInfo = glm::vec4(static_cast<float>(light.shadowMapSize), 0.0f, 0.0f, shadowMap_ ? 1.0f : 0.0f);
+    l.shadowInfo = glm::vec4(static_cast<float>(light.shadowMapSize), 0.0f, 0.0f, 0.0f);
     executor_->record(cmd);
     plugin_->record(cmd, frame);
 }
