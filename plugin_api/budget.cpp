@@ -31,9 +31,9 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
     if (screenWidth == 0 || screenHeight == 0 || screenWidth > 16384 || screenHeight > 16384)
         throw InvalidInput("lightscatter: budget screen " + std::to_string(screenWidth) + "x" +
                            std::to_string(screenHeight) + ": each side must be in [1, 16384]");
-    if (shadowMapSize < 2 || shadowMapSize > 16384)
+    if (shadowMapSize < 1 || shadowMapSize > 16384)
         throw InvalidInput("lightscatter: budget shadow-map size " + std::to_string(shadowMapSize) +
-                           ": must be in [2, 16384]");
+                           ": must be in [1, 16384]");
     const Settings s = profile == Profile::Custom ? (custom ? *custom : Settings{}) : profileSettings(profile);
     detail::checkSettings(s);
 
@@ -41,7 +41,7 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
     c.method = Method::Epipolar;
     c.light = static_cast<ls::LightKind>(static_cast<int>(light));
     c.shadowed = light != LightType::Point;
-    c.minMaxTrees = s.minMaxTrees;
+    c.minMaxTrees = s.minMaxTrees && ls::treesFit(shadowMapSize);
     c.fixup = s.fixup;
     c.slices = s.slices;
     c.samples = s.samplesPerSlice;

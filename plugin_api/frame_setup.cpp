@@ -214,7 +214,7 @@ FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
     s.epipolar.initialStep = s.settings.initialSampleStep;
     s.epipolar.refinementThreshold = s.settings.refinementThreshold;
     s.epipolar.bilateralThreshold = s.settings.bilateralThreshold;
-    s.epipolar.minMaxTrees = s.settings.minMaxTrees;
+    s.epipolar.minMaxTrees = s.settings.minMaxTrees && ls::treesFit(l.shadowMapSize);
     s.epipolar.bilinearShadow = s.settings.shadowFilter == ShadowFilter::Bilinear;
     s.epipolar.fixup = s.settings.fixup;
     s.epipolar.fixupMaxSteps = s.settings.fixupMaxSteps;

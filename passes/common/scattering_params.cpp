@@ -45,6 +45,8 @@ uint32_t treeLevels(uint32_t shadowMapSize) {
     return levels;  // level l (1..levels) has shadowMapSize >> l nodes
 }
 
+bool treesFit(uint32_t shadowMapSize) { return treeLevels(shadowMapSize) >= 2; }
+
 FrameConstants makeFrameConstants(const CameraParams& camera, const LightParams& light,
                                   const MediumParams& medium, const EpipolarSettings& settings,
                                   VkExtent2D screen, const TableLayout& table) {

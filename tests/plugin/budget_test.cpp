@@ -100,3 +100,23 @@ TEST(Names, MethodsAndProfilesRoundTrip) {
     EXPECT_EQ(lightscatter::profileSettings(Profile::HighQuality).slices, 2048u);
     EXPECT_EQ(lightscatter::profileSettings(Profile::HighPerformance).samplesPerSlice, 512u);
 }
+
+// A shadow map of 1-3 texels has no two-level tree: the budget (like the frame) leaves the trees
+// out instead of failing inside the graph. 0 and oversized maps are refused naming the size.
+TEST(Budget, TinyShadowMapsHaveNoTrees) {
+    for (uint32_t n : {1u, 2u, 3u, 4u}) {
+        const auto b = lightscatter::budget(Profile::Balanced, 64, 36, n);
+        bool trees = false;
+        for (const auto& e : b.entries) trees |= e.name.find("min/max trees") != std::string::npos;
+        EXPECT_EQ(trees, n >= 4) << "shadow map " << n;
+    }
+    for (uint32_t n : {0u, 16385u}) {
+        try {
+            lightscatter::budget(Profile::Balanced, 64, 36, n);
+            ADD_FAILURE() << "shadow map " << n << " accepted";
+        } catch (const lightscatter::InvalidInput& e) {
+            EXPECT_NE(std::string(e.what()).find("shadow-map size " + std::to_string(n)), std::string::npos)
+                << e.what();
+        }
+    }
+}

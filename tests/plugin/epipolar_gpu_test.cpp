@@ -107,6 +107,27 @@ TEST_F(EpipolarGpu, MinMaxTreesOnAndOffGiveTheSameImage) {
     }
 }
 
+// Shadow maps of 1 to 3 texels hold no tree of two levels: they are marched texel by texel, with
+// the trees asked for, and give what brute force gives (they used to fail inside the graph).
+TEST_F(EpipolarGpu, TinyShadowMapsAreMarchedWithoutTrees) {
+    for (uint32_t n : {1u, 2u, 3u, 4u}) {
+        lightscatter::Light light = spotOverGrille();
+        light.shadowMapSize = n;
+        TestFrame frame(dev(), sceneWith(light));
+        auto settings = smallSettings(frame.spec().screen);
+        settings.shadowMapSize = n;
+        ASSERT_TRUE(settings.minMaxTrees);
+        lightscatter::FrameReport report;
+        const auto epi = render(frame, Method::Epipolar, settings, &report);
+        const auto brute = render(frame, Method::BruteForce, settings);
+        EXPECT_EQ(hasPass(report, "min/max trees level 1"), n >= 4) << "shadow map " << n;
+        const ErrorStats e = compare(epi, brute);
+        EXPECT_EQ(e.nonFinite, 0u) << "shadow map " << n;
+        EXPECT_GT(e.peak, 0.0) << "shadow map " << n;
+        EXPECT_LT(e.meanRelative, 5e-3) << "shadow map " << n;
+    }
+}
+
 TEST_F(EpipolarGpu, SeedInterpolationOfLinMatchesAwayFromTheLight) {
     TestFrame frame(dev(), sceneWith(sunThroughGrille()));
     auto settings = smallSettings(frame.spec().screen);
