@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "rendergraph/device.h"
 
 namespace {
 
@@ -32,15 +33,26 @@ int main(int argc, char** argv) {
     const std::string command = words[0];
     try {
         host::Args args(std::vector<std::string>(words.begin() + 1, words.end()));
-        if (command == "render") return host::runRender(args);
-        if (command == "budget") return host::runBudget(args);
-        if (command == "graph") return host::runGraph(args);
-        if (command == "view") return host::runView(args);
-        if (command == "pattern") return host::runPattern(args);
-        if (command == "bench") return host::runBench(args);
-        std::cerr << "lightscatter: unknown command '" << command
-                  << "' (known: render, budget, graph, view, bench, pattern)\n";
-        return 2;
+        int code = 2;
+        if (command == "render") code = host::runRender(args);
+        else if (command == "budget") code = host::runBudget(args);
+        else if (command == "graph") code = host::runGraph(args);
+        else if (command == "view") code = host::runView(args);
+        else if (command == "pattern") code = host::runPattern(args);
+        else if (command == "bench") code = host::runBench(args);
+        else {
+            std::cerr << "lightscatter: unknown command '" << command
+                      << "' (known: render, budget, graph, view, bench, pattern)\n";
+            return 2;
+        }
+        // The command's device is gone by now: what the layer said while it was destroyed (objects
+        // left alive) counts too.
+        if (code == 0 && rg::validationMessagesInProcess() > 0) {
+            std::cerr << "lightscatter: the validation layer reported " << rg::validationMessagesInProcess()
+                      << " message(s)\n";
+            return 3;
+        }
+        return code;
     } catch (const std::exception& e) {
         std::cerr << "lightscatter: " << e.what() << "\n";
         return 1;

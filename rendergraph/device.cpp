@@ -1,6 +1,7 @@
 #include "device.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cctype>
 #include <cstdlib>
 #include <cstring>
@@ -100,7 +101,11 @@ std::string unsuitable(VkPhysicalDevice pd, bool swapchain) {
     return {};
 }
 
+std::atomic<size_t> gMessagesInProcess{0};
+
 }  // namespace
+
+size_t validationMessagesInProcess() { return gMessagesInProcess.load(); }
 
 VKAPI_ATTR VkBool32 VKAPI_CALL Device::onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                  VkDebugUtilsMessageTypeFlagsEXT type,
@@ -118,6 +123,7 @@ VKAPI_ATTR VkBool32 VKAPI_CALL Device::onMessage(VkDebugUtilsMessageSeverityFlag
         std::lock_guard lock(self->messagesMutex_);
         self->messages_.push_back(text);
     }
+    ++gMessagesInProcess;
     if (self->echo_) std::cerr << "[vulkan validation] " << text << "\n";
     return VK_FALSE;
 }

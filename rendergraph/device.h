@@ -32,6 +32,11 @@ struct ExternalDevice {
     uint32_t queueFamily = 0;
 };
 
+// Every validation message of every Device in this process so far. It outlives the devices, so a
+// caller can read what the layer reported while a device and its instance were destroyed (objects
+// left alive are reported then), when no Device is left to ask.
+size_t validationMessagesInProcess();
+
 class Device {
 public:
     explicit Device(const DeviceOptions& options = {});

@@ -89,7 +89,7 @@ TEST(Cli, GraphDumpsTheCompiledFrameGraph) {
     EXPECT_NE(dot.out.find("digraph"), std::string::npos);
     EXPECT_NE(dot.out.find("ray march with min/max trees"), std::string::npos);
     const auto json =
-        run("graph " + scene("window_room") + " --json --size 64x36 --method brute-force");
+        run("graph " + scene("window_room") + " --json --size 64x36 --method brute-force --validation");
     ASSERT_EQ(json.exitCode, 0) << json.out;
     const auto j = nlohmann::json::parse(json.out);
     bool brute = false;
@@ -135,7 +135,7 @@ TEST(Cli, PatternRendersTheRuntimesTestPattern) {
 }
 
 TEST(Cli, BenchRunsTheSmallConfigurationAndPlotsIt) {
-    const auto r = run("bench --config " + std::string(LS_SOURCE_DIR) + "/bench/small.json --out bench");
+    const auto r = run("bench --config " + std::string(LS_SOURCE_DIR) + "/bench/small.json --out bench --validation");
     ASSERT_EQ(r.exitCode, 0) << r.out;
     std::ifstream csv(path("bench/bench.csv"));
     std::string line;

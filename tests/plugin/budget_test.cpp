@@ -74,7 +74,7 @@ TEST(Budget, DirectionalLightNeedsNoTable) {
 
 TEST(Budget, BadRequestsAreRefused) {
     EXPECT_THROW(lightscatter::budget(Profile::Balanced, 0, 1080, 2048), lightscatter::InvalidInput);
-    EXPECT_THROW(lightscatter::budget(Profile::Balanced, 1920, 1080, 1), lightscatter::InvalidInput);
+    EXPECT_THROW(lightscatter::budget(Profile::Balanced, 1920, 1080, 0), lightscatter::InvalidInput);
     lightscatter::Settings bad;
     bad.slices = 0;
     try {

@@ -10,6 +10,7 @@ lightscatter::Plugin& plugin() {
         const rg::Device& d = testing_support::device();
         p = std::make_unique<lightscatter::Plugin>(lightscatter::VulkanContext{
             d.instance(), d.physical(), d.device(), d.queue(), d.queueFamily()});
+        testing_support::atTeardown([] { p.reset(); });
     }
     return *p;
 }

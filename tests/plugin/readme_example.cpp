@@ -4,11 +4,12 @@
 
 #include <memory>
 
-lightscatter::Plugin& recordLightShafts(const EngineFrame& engine) {
+lightscatter::Plugin& recordLightShafts(EngineFrame& engine) {
     // [readme-example]
-    // Once: the plugin works on the engine's own device and queue.
-    static std::unique_ptr<lightscatter::Plugin> plugin;
-    if (!plugin) plugin = std::make_unique<lightscatter::Plugin>(engine.context);
+    // Once: the plugin works on the engine's own device and queue. The engine owns it and destroys
+    // it before that device (a static would outlive the device and leak its objects).
+    if (!engine.lightShafts) engine.lightShafts = std::make_unique<lightscatter::Plugin>(engine.context);
+    lightscatter::Plugin& plugin = *engine.lightShafts;
 
     // Every frame: the engine's images, where they stand and where to leave them.
     lightscatter::FrameDescription frame;
@@ -41,9 +42,9 @@ lightscatter::Plugin& recordLightShafts(const EngineFrame& engine) {
     frame.profile = lightscatter::Profile::HighPerformance;
 
     // Throws lightscatter::InvalidInput, naming the field, before recording anything.
-    plugin->record(engine.commandBuffer, frame);
-    // Once the engine has submitted the command buffer and waited for it, plugin->report() gives
+    plugin.record(engine.commandBuffer, frame);
+    // Once the engine has submitted the command buffer and waited for it, plugin.report() gives
     // the GPU time of every pass.
     // [readme-example]
-    return *plugin;
+    return plugin;
 }

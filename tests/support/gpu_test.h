@@ -1,9 +1,12 @@
 #pragma once
 // One validated Vulkan device per test binary (lavapipe unless LS_DEVICE says otherwise), with the
 // Khronos validation layer and synchronization validation on. Every GPU test derives from GpuTest:
-// any validation message during the test fails it.
+// any validation message during the test fails it. At the end of the binary, everything built on
+// the device is destroyed (atTeardown), then the device itself; a message the layer reports then
+// (an object left alive) fails the run.
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <memory>
 
 #include "rendergraph/device.h"
@@ -11,6 +14,9 @@
 namespace testing_support {
 
 rg::Device& device();
+
+// Registers what must be destroyed before the shared device (plugins, caches); run in reverse order.
+void atTeardown(std::function<void()> destroy);
 
 class GpuTest : public ::testing::Test {
 protected:
