@@ -12,7 +12,7 @@ bool GraphConfig::operator==(const GraphConfig& o) const {
            screen.width == o.screen.width && screen.height == o.screen.height &&
            depthStencil == o.depthStencil && depth == o.depth && color == o.color &&
            shadowMap == o.shadowMap && lightColor == o.lightColor &&
-           inscatterOut == o.inscatterOut && table == o.table;
+           inscatterOut == o.inscatterOut && table == o.table && poisonTransients == o.poisonTransients;
 }
 
 rg::ImportedImage importDescription(const ImageInput& in) {

@@ -37,6 +37,7 @@ struct GraphConfig {
     VkFormat depthStencil = VK_FORMAT_UNDEFINED;
     ImportState depth, color, shadowMap, lightColor, inscatterOut;  // format UNDEFINED: absent
     ImportState table;
+    bool poisonTransients = false;
     bool operator==(const GraphConfig& o) const;
 };
 

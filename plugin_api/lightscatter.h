@@ -117,6 +117,16 @@ struct ImageInput {
     VkAccessFlags2 finalAccess = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT;
 };
 
+// Debugging aids, off by default and free when off.
+struct DebugOptions {
+    // Every transient texture and buffer of the plugin is filled with NaN (float formats) or all
+    // ones (integer formats) at its first use in each frame, before the pass that first uses it.
+    // Transients share memory; an output free of NaN then shows that no pass read what another
+    // resource left behind. The environment variable LS_POISON_TRANSIENTS=1 turns it on for every
+    // frame of every plugin in the process.
+    bool poisonTransients = false;
+};
+
 struct FrameDescription {
     ImageInput depth;       // D16/D24/D32 (sampled); the camera's depth
     ImageInput color;       // linear HDR color (storage, R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT)
@@ -129,6 +139,7 @@ struct FrameDescription {
     Method method = Method::Epipolar;
     Profile profile = Profile::Balanced;
     Settings custom;  // used when profile == Custom
+    DebugOptions debug;
 };
 
 // Thrown before anything is recorded when a description breaks a rule; the message names the field.

@@ -1,4 +1,6 @@
+#include <cstdlib>
 #include <optional>
+#include <string>
 
 #include "frame_graph.h"
 #include "frame_setup.h"
@@ -20,6 +22,11 @@ namespace {
 
 constexpr uint32_t kTableWidth = 512;
 constexpr uint32_t kTableHeight = 256;
+
+bool poisonFromEnvironment() {
+    const char* v = std::getenv("LS_POISON_TRANSIENTS");
+    return v && *v && std::string(v) != "0";
+}
 
 ImportState state(const ImageInput& in) {
     return {in.format, in.extent, in.usage, in.layout, in.finalLayout};
@@ -68,6 +75,7 @@ struct Plugin::Impl {
         if (frame.shadowMap) c.shadowMap = state(*frame.shadowMap);
         if (frame.lightColor) c.lightColor = state(*frame.lightColor);
         if (frame.inscatterOut) c.inscatterOut = state(*frame.inscatterOut);
+        c.poisonTransients = frame.debug.poisonTransients || poisonFromEnvironment();
         const bool needsTable = c.touchesView && c.light != ls::LightKind::Directional;
         if (needsTable)
             c.table = {VK_FORMAT_R32G32B32A32_SFLOAT, {kTableWidth, kTableHeight},
@@ -89,7 +97,9 @@ struct Plugin::Impl {
         if (!config || !(*config == c)) {
             executor.reset();
             FrameGraph built = detail::buildFrameGraph(c, shared);
-            rg::CompiledGraph compiled = rg::compile(*built.graph, caps);
+            rg::CompileOptions options;
+            options.poisonTransients = c.poisonTransients;
+            rg::CompiledGraph compiled = rg::compile(*built.graph, caps, options);
             fg = std::move(built);
             executor = std::make_unique<rg::GraphExecutor>(device, *fg.graph, std::move(compiled));
             config = c;

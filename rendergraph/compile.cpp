@@ -62,6 +62,16 @@ CompiledGraph compile(const RenderGraph& graph, const DeviceCaps& caps,
         }
     }
 
+    out.poisonTransients = options.poisonTransients;
+    if (options.poisonTransients)
+        for (auto& plan : out.resources) {
+            if (!plan.used || plan.imported) continue;
+            if (plan.buffer)
+                plan.bufferUsage |= VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+            else
+                plan.imageUsage |= VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+        }
+
     // Memory: requirements from the device (or the estimate), then placement.
     std::vector<PlacementItem> items;
     std::vector<uint32_t> itemResource;

@@ -85,10 +85,16 @@ struct CompiledGraph {
     VkDeviceSize aliasedBytes = 0;    // the blocks actually allocated
     VkExtent2D screen{0, 0};
     bool exactSizes = false;          // memory sizes from a device rather than an estimate
+    bool poisonTransients = false;    // see CompileOptions
 };
 
 struct CompileOptions {
     bool aliasing = true;
+    // Debugging: every transient is filled with a signalling pattern (NaN in float formats, all
+    // ones in integer formats) at its first use in each frame, before its first pass. A pass that
+    // reads what it never wrote then reads NaN instead of whatever an aliased resource left behind,
+    // so a clean output proves no pass depends on stale memory. Adds TRANSFER_DST usage.
+    bool poisonTransients = false;
 };
 
 }  // namespace rg

@@ -1,6 +1,7 @@
 #include "executor.h"
 
 #include <algorithm>
+#include <bit>
 
 #include "compile.h"
 #include "format_info.h"
@@ -8,6 +9,10 @@
 
 namespace rg {
 namespace {
+
+constexpr VkImageUsageFlags kViewUsages =
+    VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
+    VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT;
 
 VkImageViewType viewType(uint32_t layers) {
     return layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
@@ -138,7 +143,8 @@ void GraphExecutor::createMemory() {
             RG_VK(vkBindBufferMemory(dev, buffers_[id], blocks_[plan.block], plan.offset));
         } else {
             RG_VK(vkBindImageMemory(dev, images_[id].image, blocks_[plan.block], plan.offset));
-            images_[id] = makeViews(id, images_[id].image);
+            // An image only copied to and from has no view (Vulkan forbids one).
+            if (plan.imageUsage & kViewUsages) images_[id] = makeViews(id, images_[id].image);
         }
     }
 }
@@ -180,7 +186,9 @@ void GraphExecutor::refreshImports() {
         if (!img) throw VulkanError("imported image '" + r.name + "' has no VkImage to run with");
         auto it = importedViews_.find(img);
         if (it == importedViews_.end()) {
-            it = importedViews_.emplace(img, makeViews(id, img)).first;
+            ImageObjects views{img};
+            if (r.importedImage.usage & kViewUsages) views = makeViews(id, img);
+            it = importedViews_.emplace(img, views).first;
             device_.setName(img, VK_OBJECT_TYPE_IMAGE, r.name + " (imported)");
         }
         images_[id] = it->second;
@@ -227,12 +235,61 @@ void GraphExecutor::recordBarriers(VkCommandBuffer cmd, const std::vector<Barrie
     vkCmdPipelineBarrier2(cmd, &dep);
 }
 
+// Fills the transients this pass uses first with a signalling pattern, after whatever last used
+// their memory, and returns the pass's barriers with those first uses now waiting on the fill.
+std::vector<BarrierPlan> GraphExecutor::poisonFirstUses(VkCommandBuffer cmd,
+                                                        const std::vector<BarrierPlan>& barriers) {
+    std::vector<BarrierPlan> toFill, patched = barriers;
+    for (BarrierPlan& b : patched) {
+        if (!b.firstUse) continue;
+        BarrierPlan fill = b;
+        fill.dstStages = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;  // fills count as copies, clears as clears
+        fill.dstAccess = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+        fill.newLayout = b.buffer ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+        toFill.push_back(fill);
+        b.srcStages = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
+        b.srcAccess = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+        b.oldLayout = fill.newLayout;
+    }
+    if (toFill.empty()) return patched;
+    recordBarriers(cmd, toFill);
+    constexpr uint32_t kNaN = 0x7fc00000u;
+    for (const BarrierPlan& b : toFill) {
+        if (b.buffer) {
+            vkCmdFillBuffer(cmd, buffers_[b.resource], 0, VK_WHOLE_SIZE, kNaN);
+            continue;
+        }
+        const ResourceDecl& r = graph_.resource(b.resource);
+        const VkImageSubresourceRange range{fullAspect(r.image.format), 0, r.image.mipLevels, 0,
+                                            r.image.arrayLayers};
+        if (isDepthStencil(r.image.format)) {
+            // Depth must stay in [0, 1]; an odd depth and stencil stand in for NaN.
+            const VkClearDepthStencilValue v{0.5f, 0xA5u};
+            vkCmdClearDepthStencilImage(cmd, images_[b.resource].image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                        &v, 1, &range);
+        } else {
+            VkClearColorValue v;
+            if (isIntegerFormat(r.image.format)) {
+                for (uint32_t& c : v.uint32) c = ~0u;
+            } else {
+                for (float& c : v.float32) c = std::bit_cast<float>(kNaN);
+            }
+            vkCmdClearColorImage(cmd, images_[b.resource].image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &v, 1,
+                                 &range);
+        }
+    }
+    return patched;
+}
+
 void GraphExecutor::recordPass(VkCommandBuffer cmd, uint32_t position) {
     const PassPlan& plan = compiled_.passes[position];
     PassDecl& pass = graph_.passes()[plan.pass];
     device_.beginLabel(cmd, pass.name);
     vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, queries_, 2 * position);
-    recordBarriers(cmd, plan.barriers);
+    if (compiled_.poisonTransients)
+        recordBarriers(cmd, poisonFirstUses(cmd, plan.barriers));
+    else
+        recordBarriers(cmd, plan.barriers);
 
     PassContext ctx(*this, position, cmd);
     if (pass.type == PassType::Graphics) {

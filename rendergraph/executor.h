@@ -66,6 +66,7 @@ private:
     ImageObjects makeViews(uint32_t resource, VkImage image);
     void refreshImports();
     void recordBarriers(VkCommandBuffer cmd, const std::vector<BarrierPlan>& barriers);
+    std::vector<BarrierPlan> poisonFirstUses(VkCommandBuffer cmd, const std::vector<BarrierPlan>& barriers);
     void recordPass(VkCommandBuffer cmd, uint32_t position);
 
     const Device& device_;

@@ -67,6 +67,12 @@ VkImageAspectFlags fullAspect(VkFormat format) {
     return aspect ? aspect : VkImageAspectFlags{VK_IMAGE_ASPECT_COLOR_BIT};
 }
 
+bool isIntegerFormat(VkFormat format) {
+    if (isDepthStencil(format)) return false;
+    const std::string name = formatName(format);
+    return name.ends_with("_UINT") || name.ends_with("_SINT");
+}
+
 uint32_t texelBytes(VkFormat format) {
     const auto* f = find(format);
     return f ? f->bytes : 0;

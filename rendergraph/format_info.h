@@ -12,6 +12,8 @@ bool hasDepth(VkFormat format);
 bool hasStencil(VkFormat format);
 inline bool isDepthStencil(VkFormat f) { return hasDepth(f) || hasStencil(f); }
 VkImageAspectFlags fullAspect(VkFormat format);
+// UINT and SINT color formats (cleared and read as integers).
+bool isIntegerFormat(VkFormat format);
 
 // Bytes per texel for the uncompressed formats the project uses; 0 for unknown formats. For packed
 // depth-stencil formats this is the size an implementation typically stores (D24S8: 4, D32S8: 8).

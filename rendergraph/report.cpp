@@ -51,6 +51,7 @@ nlohmann::json reportJson(const RenderGraph& graph, const CompiledGraph& compile
     json j;
     j["screen"] = {compiled.screen.width, compiled.screen.height};
     j["memorySizes"] = compiled.exactSizes ? "device" : "estimate";
+    j["poisonTransients"] = compiled.poisonTransients;
     json passes = json::array();
     for (uint32_t pos = 0; pos < compiled.passes.size(); ++pos) {
         const PassPlan& plan = compiled.passes[pos];
