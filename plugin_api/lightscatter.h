@@ -148,6 +148,13 @@ public:
     using std::invalid_argument::invalid_argument;
 };
 
+// Thrown when Vulkan fails the plugin: out of device or host memory while building a frame's
+// textures or pipelines, a lost device. The message names the call, and the resource or pass.
+class DeviceError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
 struct PassTime {
     std::string name;
     double milliseconds = 0;
@@ -214,6 +221,12 @@ public:
 
     // Validates the description (throws InvalidInput, nothing recorded), builds or reuses the
     // frame's graph, and records it into `cmd`. The engine submits; call report() after its fence.
+    //
+    // Exception guarantee (record and render): if anything is thrown (InvalidInput, DeviceError,
+    // std::bad_alloc), nothing has been recorded into `cmd`, the engine's images are untouched, no
+    // Vulkan object is leaked, and the plugin is usable: a graph that failed to build is dropped
+    // and built again by the next call, which succeeds once memory is available again. Everything
+    // a frame creates (textures, pipelines) is created, and can fail, before `cmd` is touched.
     void record(VkCommandBuffer cmd, const FrameDescription& frame);
     // Validates, records into the plugin's own command buffer, submits, waits, reports.
     FrameReport render(const FrameDescription& frame);

@@ -11,6 +11,7 @@
 #include "rendergraph/executor.h"
 #include "rendergraph/format_info.h"
 #include "rendergraph/report.h"
+#include "rendergraph/vk_error.h"
 
 namespace lightscatter {
 
@@ -95,13 +96,17 @@ struct Plugin::Impl {
         }
 
         if (!config || !(*config == c)) {
+            // The old graph's memory goes first (the new one may need it); until the new one is
+            // complete there is none, so that a failure leaves nothing half-built behind.
             executor.reset();
+            config.reset();
             FrameGraph built = detail::buildFrameGraph(c, shared);
             rg::CompileOptions options;
             options.poisonTransients = c.poisonTransients;
             rg::CompiledGraph compiled = rg::compile(*built.graph, caps, options);
             fg = std::move(built);
             executor = std::make_unique<rg::GraphExecutor>(device, *fg.graph, std::move(compiled));
+            rehearsed = false;
             config = c;
         }
         // This frame's handles and stages; layouts are part of the configuration.
@@ -120,6 +125,17 @@ struct Plugin::Impl {
             t.initialAccess = VK_ACCESS_2_NONE;
             t.finalAccess = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
             fg.graph->updateImport(fg.table, t);
+        }
+        if (!rehearsed) {
+            // Passes build their pipelines on first use: do that on a command buffer of our own.
+            try {
+                executor->rehearse();
+            } catch (...) {
+                executor.reset();
+                config.reset();
+                throw;
+            }
+            rehearsed = true;
         }
     }
 
@@ -141,29 +157,51 @@ struct Plugin::Impl {
     std::unique_ptr<detail::PointTable> pointTable;
     bool tableRefilled = false;
     std::optional<GraphConfig> config;
+    bool rehearsed = false;
     FrameGraph fg;
     std::unique_ptr<rg::GraphExecutor> executor;
 };
 
-Plugin::Plugin(const VulkanContext& context) : impl_(std::make_unique<Impl>(context)) {}
+namespace {
+
+// Vulkan failures leave the plugin as lightscatter::DeviceError; the rest passes unchanged.
+template <typename F>
+auto translated(F&& f) -> decltype(f()) {
+    try {
+        return f();
+    } catch (const rg::VulkanError& e) {
+        throw DeviceError(std::string("lightscatter: ") + e.what());
+    }
+}
+
+}  // namespace
+
+Plugin::Plugin(const VulkanContext& context)
+    : impl_(translated([&] { return std::make_unique<Impl>(context); })) {}
 
 Plugin::~Plugin() {
     if (impl_) impl_->executor.reset();
 }
 
 void Plugin::record(VkCommandBuffer cmd, const FrameDescription& frame) {
-    impl_->prepare(frame);
-    impl_->executor->record(cmd);
+    translated([&] {
+        impl_->prepare(frame);
+        impl_->executor->record(cmd);
+    });
 }
 
 FrameReport Plugin::render(const FrameDescription& frame) {
-    impl_->prepare(frame);
-    return impl_->makeReport(impl_->executor->run());
+    return translated([&] {
+        impl_->prepare(frame);
+        return impl_->makeReport(impl_->executor->run());
+    });
 }
 
 FrameReport Plugin::report() {
-    if (!impl_->executor) return {};
-    return impl_->makeReport(impl_->executor->readTimings());
+    return translated([&] {
+        if (!impl_->executor) return FrameReport{};
+        return impl_->makeReport(impl_->executor->readTimings());
+    });
 }
 
 std::string Plugin::graphDot() const {

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <utility>
 
+#include "fault_injection.h"
 #include "vk_error.h"
 
 namespace rg {
@@ -421,7 +422,7 @@ void Device::submitAndWait(const std::function<void(VkCommandBuffer)>& record) c
     alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
     alloc.commandBufferCount = 1;
     VkCommandBuffer cmd;
-    RG_VK(vkAllocateCommandBuffers(device_, &alloc, &cmd));
+    RG_VK_CREATE(vkAllocateCommandBuffers(device_, &alloc, &cmd));
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     RG_VK(vkBeginCommandBuffer(cmd, &begin));

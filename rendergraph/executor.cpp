@@ -5,6 +5,7 @@
 
 #include "compile.h"
 #include "format_info.h"
+#include "fault_injection.h"
 #include "vk_error.h"
 
 namespace rg {
@@ -42,23 +43,23 @@ GraphExecutor::GraphExecutor(const Device& device, RenderGraph& graph, CompiledG
         VkQueryPoolCreateInfo q{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
         q.queryType = VK_QUERY_TYPE_TIMESTAMP;
         q.queryCount = queryCount;
-        RG_VK(vkCreateQueryPool(dev, &q, nullptr, &queries_));
+        RG_VK_CREATE(vkCreateQueryPool(dev, &q, nullptr, &queries_));
         device_.setName(queries_, VK_OBJECT_TYPE_QUERY_POOL, "render graph pass timestamps");
         vkResetQueryPool(dev, queries_, 0, queryCount);
 
         VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
         pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
         pool.queueFamilyIndex = device_.queueFamily();
-        RG_VK(vkCreateCommandPool(dev, &pool, nullptr, &pool_));
+        RG_VK_CREATE(vkCreateCommandPool(dev, &pool, nullptr, &pool_));
         device_.setName(pool_, VK_OBJECT_TYPE_COMMAND_POOL, "render graph command pool");
         VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
         alloc.commandPool = pool_;
         alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
         alloc.commandBufferCount = 1;
-        RG_VK(vkAllocateCommandBuffers(dev, &alloc, &cmd_));
+        RG_VK_CREATE(vkAllocateCommandBuffers(dev, &alloc, &cmd_));
         device_.setName(cmd_, VK_OBJECT_TYPE_COMMAND_BUFFER, "render graph frame");
         VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-        RG_VK(vkCreateFence(dev, &fence, nullptr, &fence_));
+        RG_VK_CREATE(vkCreateFence(dev, &fence, nullptr, &fence_));
         device_.setName(fence_, VK_OBJECT_TYPE_FENCE, "render graph frame fence");
     } catch (...) {
         destroy();
@@ -105,7 +106,12 @@ void GraphExecutor::createMemory() {
         info.allocationSize = std::max<VkDeviceSize>(compiled_.blocks[b].size, 1);
         info.memoryTypeIndex = compiled_.blocks[b].memoryType;
         VkDeviceMemory mem;
-        RG_VK(vkAllocateMemory(dev, &info, nullptr, &mem));
+        try {
+            RG_VK_CREATE(vkAllocateMemory(dev, &info, nullptr, &mem));
+        } catch (const VulkanError& e) {
+            throw VulkanError("render graph transient memory block " + std::to_string(b) + " (" +
+                              std::to_string(info.allocationSize) + " bytes): " + e.what());
+        }
         blocks_.push_back(mem);
         device_.setName(mem, VK_OBJECT_TYPE_DEVICE_MEMORY,
                         "render graph transient block " + std::to_string(b));
@@ -118,34 +124,44 @@ void GraphExecutor::createMemory() {
             continue;
         }
         if (!plan.used) continue;
-        VkMemoryRequirements req;
-        if (r.buffer) {
-            VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
-            info.size = r.bufferDesc.size;
-            info.usage = plan.bufferUsage;
-            info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-            RG_VK(vkCreateBuffer(dev, &info, nullptr, &buffers_[id]));
-            device_.setName(buffers_[id], VK_OBJECT_TYPE_BUFFER, r.name);
-            vkGetBufferMemoryRequirements(dev, buffers_[id], &req);
-        } else {
-            const VkImageCreateInfo info = transientImageInfo(r, plan);
-            RG_VK(vkCreateImage(dev, &info, nullptr, &images_[id].image));
-            device_.setName(images_[id].image, VK_OBJECT_TYPE_IMAGE, r.name);
-            vkGetImageMemoryRequirements(dev, images_[id].image, &req);
+        try {
+            createResource(id);
+        } catch (const VulkanError& e) {
+            throw VulkanError("render graph resource '" + r.name + "': " + e.what());
         }
-        // The plan used vkGetDevice*MemoryRequirements for the same create info; a driver that
-        // answers differently for the real object would break the placement.
-        if (req.size > plan.memory.size || plan.offset % req.alignment != 0 ||
-            !(req.memoryTypeBits & (1u << plan.memoryType)))
-            throw VulkanError("resource '" + r.name +
-                              "': the driver's memory requirements differ from the compiled plan");
-        if (r.buffer) {
-            RG_VK(vkBindBufferMemory(dev, buffers_[id], blocks_[plan.block], plan.offset));
-        } else {
-            RG_VK(vkBindImageMemory(dev, images_[id].image, blocks_[plan.block], plan.offset));
-            // An image only copied to and from has no view (Vulkan forbids one).
-            if (plan.imageUsage & kViewUsages) images_[id] = makeViews(id, images_[id].image);
-        }
+    }
+}
+
+void GraphExecutor::createResource(uint32_t id) {
+    const VkDevice dev = device_.device();
+    const ResourceDecl& r = graph_.resource(id);
+    const ResourcePlan& plan = compiled_.resources[id];
+    VkMemoryRequirements req;
+    if (r.buffer) {
+        VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+        info.size = r.bufferDesc.size;
+        info.usage = plan.bufferUsage;
+        info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+        RG_VK_CREATE(vkCreateBuffer(dev, &info, nullptr, &buffers_[id]));
+        device_.setName(buffers_[id], VK_OBJECT_TYPE_BUFFER, r.name);
+        vkGetBufferMemoryRequirements(dev, buffers_[id], &req);
+    } else {
+        const VkImageCreateInfo info = transientImageInfo(r, plan);
+        RG_VK_CREATE(vkCreateImage(dev, &info, nullptr, &images_[id].image));
+        device_.setName(images_[id].image, VK_OBJECT_TYPE_IMAGE, r.name);
+        vkGetImageMemoryRequirements(dev, images_[id].image, &req);
+    }
+    // The plan used vkGetDevice*MemoryRequirements for the same create info; a driver that answers
+    // differently for the real object would break the placement.
+    if (req.size > plan.memory.size || plan.offset % req.alignment != 0 ||
+        !(req.memoryTypeBits & (1u << plan.memoryType)))
+        throw VulkanError("the driver's memory requirements differ from the compiled plan");
+    if (r.buffer) {
+        RG_VK(vkBindBufferMemory(dev, buffers_[id], blocks_[plan.block], plan.offset));
+    } else {
+        RG_VK(vkBindImageMemory(dev, images_[id].image, blocks_[plan.block], plan.offset));
+        // An image only copied to and from has no view (Vulkan forbids one).
+        if (plan.imageUsage & kViewUsages) images_[id] = makeViews(id, images_[id].image);
     }
 }
 
@@ -162,14 +178,20 @@ GraphExecutor::ImageObjects GraphExecutor::makeViews(uint32_t resource, VkImage 
     auto make = [&](VkImageAspectFlags aspect, const char* suffix) {
         info.subresourceRange.aspectMask = aspect;
         VkImageView v;
-        RG_VK(vkCreateImageView(device_.device(), &info, nullptr, &v));
+        RG_VK_CREATE(vkCreateImageView(device_.device(), &info, nullptr, &v));
         device_.setName(v, VK_OBJECT_TYPE_IMAGE_VIEW, r.name + suffix);
         return v;
     };
-    o.full = make(fullAspect(r.image.format), " view");
-    if (hasDepth(r.image.format) && hasStencil(r.image.format)) {
-        o.depth = make(VK_IMAGE_ASPECT_DEPTH_BIT, " depth view");
-        o.stencil = make(VK_IMAGE_ASPECT_STENCIL_BIT, " stencil view");
+    try {
+        o.full = make(fullAspect(r.image.format), " view");
+        if (hasDepth(r.image.format) && hasStencil(r.image.format)) {
+            o.depth = make(VK_IMAGE_ASPECT_DEPTH_BIT, " depth view");
+            o.stencil = make(VK_IMAGE_ASPECT_STENCIL_BIT, " stencil view");
+        }
+    } catch (...) {
+        for (VkImageView v : {o.full, o.depth, o.stencil})
+            if (v) vkDestroyImageView(device_.device(), v, nullptr);
+        throw;
     }
     return o;
 }
@@ -378,6 +400,24 @@ void GraphExecutor::record(VkCommandBuffer cmd) {
     recordBarriers(cmd, finals);
     device_.endLabel(cmd);
     recorded_ = true;
+}
+
+void GraphExecutor::rehearse() {
+    const bool recorded = recorded_;
+    RG_VK(vkResetCommandBuffer(cmd_, 0));
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    RG_VK(vkBeginCommandBuffer(cmd_, &begin));
+    try {
+        record(cmd_);
+    } catch (...) {
+        vkResetCommandBuffer(cmd_, 0);  // possibly inside a rendering scope: not ended, dropped
+        recorded_ = recorded;
+        throw;
+    }
+    RG_VK(vkEndCommandBuffer(cmd_));
+    RG_VK(vkResetCommandBuffer(cmd_, 0));
+    recorded_ = recorded;  // nothing of it will be submitted: no timings to read
 }
 
 FrameTimings GraphExecutor::run() {

@@ -41,6 +41,10 @@ public:
     // For engines that own submission: records the frame into `cmd`. Timings become available with
     // readTimings() once the engine has waited for that submission.
     void record(VkCommandBuffer cmd);
+    // Records the frame into the executor's own command buffer and throws it away, so that what
+    // passes create on first use (pipelines) exists, or has failed, before an engine's command
+    // buffer is touched.
+    void rehearse();
     FrameTimings readTimings();
 
     const CompiledGraph& compiled() const { return compiled_; }
@@ -63,6 +67,7 @@ private:
 
     void destroy();
     void createMemory();
+    void createResource(uint32_t resource);
     ImageObjects makeViews(uint32_t resource, VkImage image);
     void refreshImports();
     void recordBarriers(VkCommandBuffer cmd, const std::vector<BarrierPlan>& barriers);

@@ -1,5 +1,6 @@
 #include "host_buffer.h"
 
+#include "fault_injection.h"
 #include "vk_error.h"
 
 namespace rg {
@@ -11,7 +12,7 @@ HostBuffer::HostBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFla
     info.size = size;
     info.usage = usage;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    RG_VK(vkCreateBuffer(device_, &info, nullptr, &buffer_));
+    RG_VK_CREATE(vkCreateBuffer(device_, &info, nullptr, &buffer_));
     device.setName(buffer_, VK_OBJECT_TYPE_BUFFER, name);
     VkMemoryRequirements req;
     vkGetBufferMemoryRequirements(device_, buffer_, &req);
@@ -20,7 +21,7 @@ HostBuffer::HostBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFla
     try {
         alloc.memoryTypeIndex = device.findMemoryType(
             req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-        RG_VK(vkAllocateMemory(device_, &alloc, nullptr, &memory_));
+        RG_VK_CREATE(vkAllocateMemory(device_, &alloc, nullptr, &memory_));
         device.setName(memory_, VK_OBJECT_TYPE_DEVICE_MEMORY, name + " memory");
         RG_VK(vkBindBufferMemory(device_, buffer_, memory_, 0));
         RG_VK(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));

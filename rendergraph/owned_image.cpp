@@ -1,5 +1,6 @@
 #include "owned_image.h"
 
+#include "fault_injection.h"
 #include "vk_error.h"
 
 namespace rg {
@@ -16,7 +17,7 @@ OwnedImage::OwnedImage(const rg::Device& device, VkFormat format, VkExtent2D ext
     info.samples = VK_SAMPLE_COUNT_1_BIT;
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = usage;
-    RG_VK(vkCreateImage(device.device(), &info, nullptr, &image_));
+    RG_VK_CREATE(vkCreateImage(device.device(), &info, nullptr, &image_));
     device.setName(image_, VK_OBJECT_TYPE_IMAGE, name);
     VkMemoryRequirements req;
     vkGetImageMemoryRequirements(device.device(), image_, &req);
@@ -24,7 +25,7 @@ OwnedImage::OwnedImage(const rg::Device& device, VkFormat format, VkExtent2D ext
     alloc.allocationSize = req.size;
     try {
         alloc.memoryTypeIndex = device.findMemoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-        RG_VK(vkAllocateMemory(device.device(), &alloc, nullptr, &memory_));
+        RG_VK_CREATE(vkAllocateMemory(device.device(), &alloc, nullptr, &memory_));
         device.setName(memory_, VK_OBJECT_TYPE_DEVICE_MEMORY, name + " memory");
         RG_VK(vkBindImageMemory(device.device(), image_, memory_, 0));
     } catch (...) {

@@ -3,6 +3,7 @@
 #include <cstring>
 #include <utility>
 
+#include "fault_injection.h"
 #include "vk_error.h"
 
 namespace rg {
@@ -13,7 +14,7 @@ VkShaderModule makeModule(VkDevice dev, ShaderCode code) {
     info.codeSize = code.bytes;
     info.pCode = code.words;
     VkShaderModule m;
-    RG_VK(vkCreateShaderModule(dev, &info, nullptr, &m));
+    RG_VK_CREATE(vkCreateShaderModule(dev, &info, nullptr, &m));
     return m;
 }
 
@@ -43,7 +44,7 @@ void makeLayout(const Device& device, const std::string& name, const std::vector
     set.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
     set.bindingCount = static_cast<uint32_t>(b.size());
     set.pBindings = b.data();
-    RG_VK(vkCreateDescriptorSetLayout(device.device(), &set, nullptr, &setLayout));
+    RG_VK_CREATE(vkCreateDescriptorSetLayout(device.device(), &set, nullptr, &setLayout));
     device.setName(setLayout, VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT, name + " set layout");
     VkPushConstantRange range{pushStages, 0, pushBytes};
     VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
@@ -51,7 +52,7 @@ void makeLayout(const Device& device, const std::string& name, const std::vector
     info.pSetLayouts = &setLayout;
     info.pushConstantRangeCount = pushBytes ? 1 : 0;
     info.pPushConstantRanges = &range;
-    RG_VK(vkCreatePipelineLayout(device.device(), &info, nullptr, &layout));
+    RG_VK_CREATE(vkCreatePipelineLayout(device.device(), &info, nullptr, &layout));
     device.setName(layout, VK_OBJECT_TYPE_PIPELINE_LAYOUT, name + " layout");
 }
 
@@ -94,6 +95,24 @@ void Pipeline::reset() {
 Pipeline Pipeline::compute(const Device& device, const std::string& name, ShaderCode code,
                            const std::vector<Binding>& bindings, uint32_t pushConstantBytes,
                            const Specialization& specialization) {
+    try {
+        return makeCompute(device, name, code, bindings, pushConstantBytes, specialization);
+    } catch (const VulkanError& e) {
+        throw VulkanError("pipeline '" + name + "': " + e.what());
+    }
+}
+
+Pipeline Pipeline::graphics(const Device& device, const std::string& name, const GraphicsPipelineDesc& d) {
+    try {
+        return makeGraphics(device, name, d);
+    } catch (const VulkanError& e) {
+        throw VulkanError("pipeline '" + name + "': " + e.what());
+    }
+}
+
+Pipeline Pipeline::makeCompute(const Device& device, const std::string& name, ShaderCode code,
+                               const std::vector<Binding>& bindings, uint32_t pushConstantBytes,
+                               const Specialization& specialization) {
     Pipeline p;
     p.device_ = device.device();
     p.bindPoint_ = VK_PIPELINE_BIND_POINT_COMPUTE;
@@ -108,16 +127,16 @@ Pipeline Pipeline::compute(const Device& device, const std::string& name, Shader
     info.stage.pName = "main";
     info.stage.pSpecializationInfo = spec.get();
     info.layout = p.layout_;
-    const VkResult r = vkCreateComputePipelines(device.device(), VK_NULL_HANDLE, 1, &info, nullptr,
+    const VkResult r = detail::creationFails() ? VK_ERROR_OUT_OF_DEVICE_MEMORY : vkCreateComputePipelines(device.device(), VK_NULL_HANDLE, 1, &info, nullptr,
                                                 &p.pipeline_);
     vkDestroyShaderModule(device.device(), module, nullptr);
-    check(r, ("vkCreateComputePipelines(" + name + ")").c_str());
+    check(r, "vkCreateComputePipelines");
     device.setName(p.pipeline_, VK_OBJECT_TYPE_PIPELINE, name);
     return p;
 }
 
-Pipeline Pipeline::graphics(const Device& device, const std::string& name,
-                            const GraphicsPipelineDesc& d) {
+Pipeline Pipeline::makeGraphics(const Device& device, const std::string& name,
+                                const GraphicsPipelineDesc& d) {
     Pipeline p;
     p.device_ = device.device();
     p.bindPoint_ = VK_PIPELINE_BIND_POINT_GRAPHICS;
@@ -220,11 +239,11 @@ Pipeline Pipeline::graphics(const Device& device, const std::string& name,
     info.pColorBlendState = &blend;
     info.pDynamicState = &dyn;
     info.layout = p.layout_;
-    const VkResult r = vkCreateGraphicsPipelines(device.device(), VK_NULL_HANDLE, 1, &info, nullptr,
+    const VkResult r = detail::creationFails() ? VK_ERROR_OUT_OF_DEVICE_MEMORY : vkCreateGraphicsPipelines(device.device(), VK_NULL_HANDLE, 1, &info, nullptr,
                                                  &p.pipeline_);
     vkDestroyShaderModule(device.device(), vs, nullptr);
     vkDestroyShaderModule(device.device(), fs, nullptr);
-    check(r, ("vkCreateGraphicsPipelines(" + name + ")").c_str());
+    check(r, "vkCreateGraphicsPipelines");
     device.setName(p.pipeline_, VK_OBJECT_TYPE_PIPELINE, name);
     return p;
 }
@@ -278,12 +297,12 @@ Samplers::Samplers(const Device& device) : device_(device.device()) {
     info.maxLod = VK_LOD_CLAMP_NONE;
     info.magFilter = info.minFilter = VK_FILTER_NEAREST;
     info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-    RG_VK(vkCreateSampler(device_, &info, nullptr, &nearest_));
+    RG_VK_CREATE(vkCreateSampler(device_, &info, nullptr, &nearest_));
     device.setName(nearest_, VK_OBJECT_TYPE_SAMPLER, "nearest clamp sampler");
     info.magFilter = info.minFilter = VK_FILTER_LINEAR;
     info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
     try {
-        RG_VK(vkCreateSampler(device_, &info, nullptr, &linear_));
+        RG_VK_CREATE(vkCreateSampler(device_, &info, nullptr, &linear_));
     } catch (...) {
         vkDestroySampler(device_, nearest_, nullptr);
         throw;

@@ -95,6 +95,11 @@ public:
     }
 
 private:
+    static Pipeline makeCompute(const Device& device, const std::string& name, ShaderCode code,
+                                const std::vector<Binding>& bindings, uint32_t pushConstantBytes,
+                                const Specialization& specialization);
+    static Pipeline makeGraphics(const Device& device, const std::string& name,
+                                 const GraphicsPipelineDesc& desc);
     void reset();
     VkDevice device_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
