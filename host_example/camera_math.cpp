@@ -50,7 +50,34 @@ glm::mat4 cameraProjection(const CameraDesc& c, float aspect) {
                              c.infiniteFar);
 }
 
-glm::mat4 shadowViewProjection(const LightDesc& light, const Bounds& scene) {
+namespace {
+
+glm::vec3 corner(const Bounds& b, int i) {
+    return {(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z};
+}
+
+// Whether a box may be seen: not all of its corners beyond one side of the view frustum.
+bool mayBeSeen(const Bounds& b, const glm::mat4& view, float tanX, float tanY, float nearD, float farD) {
+    bool out[6] = {true, true, true, true, true, true};
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec3 v = glm::vec3(view * glm::vec4(corner(b, i), 1.0f));
+        const float d = -v.z;
+        out[0] = out[0] && d < nearD;
+        out[1] = out[1] && d > farD;
+        out[2] = out[2] && v.x < -tanX * d;
+        out[3] = out[3] && v.x > tanX * d;
+        out[4] = out[4] && v.y < -tanY * d;
+        out[5] = out[5] && v.y > tanY * d;
+    }
+    for (bool o : out)
+        if (o) return false;
+    return true;
+}
+
+}  // namespace
+
+glm::mat4 shadowViewProjection(const LightDesc& light, const Bounds& scene, const std::vector<Bounds>& parts,
+                               const CameraDesc& camera, float aspect) {
     const glm::vec3 dir = glm::normalize(light.direction);
     const glm::vec3 center = scene.empty() ? glm::vec3(0.0f) : (scene.min + scene.max) * 0.5f;
     const float radius = scene.empty() ? 1.0f : std::max(glm::length(scene.max - scene.min) * 0.5f, 1e-3f);
@@ -64,7 +91,69 @@ glm::mat4 shadowViewProjection(const LightDesc& light, const Bounds& scene) {
         return vulkanPerspective(fov, 1.0f, nearP, farP, false, false) * view;
     }
     const glm::mat4 view = glm::lookAtRH(center - dir * (2.0f * radius), center, safeUp(dir, {0, 1, 0}));
-    return vulkanOrtho(radius, radius, radius, 3.0f * radius) * view;
+    if (scene.empty()) return vulkanOrtho(radius, radius, radius, 3.0f * radius) * view;
+
+    // Depth covers the whole scene, so that every caster between the sun and the view is in the map.
+    glm::vec3 sceneMin(1e30f), sceneMax(-1e30f);
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec3 l = glm::vec3(view * glm::vec4(corner(scene, i), 1.0f));
+        sceneMin = glm::min(sceneMin, l);
+        sceneMax = glm::max(sceneMax, l);
+    }
+    // Across the light, only what the camera can see needs texels (the usual fitting of cascaded
+    // shadow maps, with one cascade): the parts of the scene inside the view frustum, each clipped
+    // to the frustum's extent, the frustum cut at the farthest of them. Outside the parts nothing
+    // casts a shadow, so texels there are wasted.
+    const glm::mat4 cameraV = cameraView(camera);
+    const glm::mat4 invView = glm::inverse(cameraV);
+    const float tanY = std::tan(glm::radians(camera.fovYDegrees) * 0.5f), tanX = tanY * aspect;
+    const float nearD = camera.nearPlane;
+    const float farLimit = camera.infiniteFar ? 1e30f : camera.farPlane;
+    const std::vector<Bounds> whole{scene};
+    const std::vector<Bounds>& boxes = parts.empty() ? whole : parts;
+    std::vector<const Bounds*> seen;
+    float farD = nearD;
+    for (const Bounds& b : boxes) {
+        if (b.empty() || !mayBeSeen(b, cameraV, tanX, tanY, nearD, farLimit)) continue;
+        seen.push_back(&b);
+        for (int i = 0; i < 8; ++i) farD = std::max(farD, glm::length(corner(b, i) - camera.position));
+    }
+    farD = std::min(farD, farLimit);
+    glm::vec2 viewMin(1e30f), viewMax(-1e30f);
+    for (int i = 0; i < 8; ++i) {
+        const float d = (i & 4) ? farD : nearD;
+        const glm::vec4 p(((i & 1) ? 1.0f : -1.0f) * tanX * d, ((i & 2) ? 1.0f : -1.0f) * tanY * d, -d, 1.0f);
+        const glm::vec2 l = glm::vec2(view * (invView * p));
+        viewMin = glm::min(viewMin, l);
+        viewMax = glm::max(viewMax, l);
+    }
+    glm::vec2 lo(1e30f), hi(-1e30f);
+    for (const Bounds* b : seen) {
+        glm::vec2 partMin(1e30f), partMax(-1e30f);
+        for (int i = 0; i < 8; ++i) {
+            const glm::vec2 l = glm::vec2(view * glm::vec4(corner(*b, i), 1.0f));
+            partMin = glm::min(partMin, l);
+            partMax = glm::max(partMax, l);
+        }
+        partMin = glm::max(partMin, viewMin);
+        partMax = glm::min(partMax, viewMax);
+        if (partMin.x >= partMax.x || partMin.y >= partMax.y) continue;
+        lo = glm::min(lo, partMin);
+        hi = glm::max(hi, partMax);
+    }
+    if (lo.x >= hi.x || lo.y >= hi.y) {  // nothing seen: any box will do
+        lo = glm::vec2(sceneMin);
+        hi = glm::vec2(sceneMax);
+    }
+    const glm::vec2 pad = (hi - lo) * 0.01f + glm::vec2(1e-3f);  // keeps edge texels off the border
+    lo -= pad;
+    hi += pad;
+    const float nearP = std::max(-sceneMax.z - 1e-3f * radius, 1e-4f);
+    const float farP = -sceneMin.z + 1e-3f * radius;
+    glm::mat4 p = glm::orthoRH_ZO(lo.x, hi.x, lo.y, hi.y, nearP, farP);
+    p[1][1] = -p[1][1];  // Vulkan clip: y down
+    p[3][1] = -p[3][1];
+    return p * view;
 }
 
 }  // namespace host

@@ -2,6 +2,7 @@
 // Vulkan-convention projections (clip y down, depth in [0, 1]) in the four depth conventions the
 // plugin accepts, and the light's shadow projection for a scene.
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "scene/scene.h"
 
@@ -15,7 +16,11 @@ glm::mat4 cameraView(const CameraDesc& camera);
 glm::mat4 cameraProjection(const CameraDesc& camera, float aspect);
 
 // World -> light clip for the shadow map: a spot's frustum around its cone (out to its range, or to
-// the scene's far side), a directional light's box around the scene's bounds.
-glm::mat4 shadowViewProjection(const LightDesc& light, const Bounds& scene);
+// the scene's far side); for a directional light, a box as deep as the scene's bounds and, across
+// the light, as wide as the parts of the scene (`parts`: bounds of each draw; empty: the scene's)
+// that the camera sees, so a far-away model outside the view does not spread the map's texels
+// over kilometres.
+glm::mat4 shadowViewProjection(const LightDesc& light, const Bounds& scene, const std::vector<Bounds>& parts,
+                               const CameraDesc& camera, float aspect);
 
 }  // namespace host

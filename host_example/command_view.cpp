@@ -1,5 +1,6 @@
 // lightscatter view SCENE.json [--method NAME] [--profile NAME] [--size WxH] [--frames N]
-//   [--screenshot FILE.png] [--resize-at FRAME WxH]
+//   [--screenshot FILE.png] [--resize-at FRAME --resize-to WxH]
+//   [--animate-light] [--resizes N] [--memory-log FILE.csv]   (the soak test's options)
 // A GLFW window: WASD/QE move the camera, left-drag looks around, arrow keys move the light, M
 // switches method, P cycles profiles, T toggles the min/max trees, Esc quits. The title shows the
 // plugin's GPU time per pass. Resizing rebuilds the graphs.
@@ -11,9 +12,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 #include <iostream>
 #include <memory>
+#include <unistd.h>
 
 #include "command_options.h"
 #include "commands.h"
@@ -22,6 +25,7 @@
 #include "rendergraph/compile.h"
 #include "rendergraph/device_caps_vulkan.h"
 #include "rendergraph/host_buffer.h"
+#include "rendergraph/memory_counter.h"
 #include "rendergraph/pipeline.h"
 #include "rendergraph/vk_error.h"
 #include "swapchain.h"
@@ -208,6 +212,35 @@ void moveLight(GLFWwindow* w, LightDesc& light, float speed, float dt) {
     }
 }
 
+// Moves the light on a slow circle (a point or spot light's position, a sun's direction), so that
+// long runs exercise changing frame constants, shadow maps and light-volume tests.
+void animateLight(LightDesc& light, const LightDesc& start, int frame) {
+    const float angle = static_cast<float>(frame) * 0.01f;
+    const glm::mat4 r = glm::rotate(glm::mat4(1.0f), angle, glm::vec3(0, 1, 0));
+    if (light.type == LightKind::Directional) {
+        light.direction = glm::normalize(glm::vec3(r * glm::vec4(start.direction, 0.0f)));
+    } else {
+        light.position = start.position + glm::vec3(std::cos(angle), 0.0f, std::sin(angle)) * 0.5f;
+        light.direction = glm::normalize(glm::vec3(r * glm::vec4(start.direction, 0.0f)));
+    }
+}
+
+// The size the window takes at the k-th of a soak's resizes: 60%, 80% and 100% of the start, in
+// turn, so that three resizes have shown every size and memory has its high-water mark.
+VkExtent2D soakSize(VkExtent2D base, int k) {
+    const float f = 0.6f + 0.2f * static_cast<float>(k % 3);
+    return {std::max(16u, static_cast<uint32_t>(static_cast<float>(base.width) * f)),
+            std::max(16u, static_cast<uint32_t>(static_cast<float>(base.height) * f))};
+}
+
+// Resident set size of this process, in KiB (Linux).
+long residentKiB() {
+    std::ifstream statm("/proc/self/statm");
+    long pages = 0, resident = 0;
+    statm >> pages >> resident;
+    return resident * (sysconf(_SC_PAGESIZE) / 1024);
+}
+
 }  // namespace
 
 int runView(Args& args) {
@@ -216,6 +249,9 @@ int runView(Args& args) {
     const std::string framesText = args.take("--frames", "");
     const std::string resizeAt = args.take("--resize-at", "");
     const std::string resizeTo = args.take("--resize-to", "");
+    const bool animate = args.flag("--animate-light");
+    const std::string resizesText = args.take("--resizes", "");
+    const std::string memoryLogPath = args.take("--memory-log", "");
     const std::string scenePath = args.positional("SCENE.json");
     args.finish();
     const int frameLimit = framesText.empty() ? 0 : parseCount(framesText, "--frames");
@@ -225,6 +261,15 @@ int runView(Args& args) {
         throw std::runtime_error("view: --resize-at and --resize-to go together");
     if (!screenshotPath.empty() && frameLimit == 0)
         throw std::runtime_error("view: --screenshot needs --frames (the screenshot is of the last frame)");
+    const int resizes = resizesText.empty() ? 0 : parseCount(resizesText, "--resizes");
+    if (resizes > 0 && frameLimit <= resizes)
+        throw std::runtime_error("view: --resizes needs --frames, larger than the number of resizes");
+    std::unique_ptr<std::ofstream> memoryLog;
+    if (!memoryLogPath.empty()) {
+        memoryLog = std::make_unique<std::ofstream>(memoryLogPath);
+        if (!*memoryLog) throw std::runtime_error("view: --memory-log " + memoryLogPath + ": cannot open for writing");
+        *memoryLog << "frame,rss_kib,device_bytes\n";
+    }
 
     const SceneDesc scene = loadSceneFile(scenePath);
     const MeshData mesh = loadSceneMeshes(scene);
@@ -287,6 +332,12 @@ int runView(Args& args) {
         last = now;
         moveCamera(window.handle, renderer.scene().camera, speed, dt, controls);
         moveLight(window.handle, renderer.scene().light, speed, dt);
+        if (animate) animateLight(renderer.scene().light, scene.light, frame);
+        if (resizes > 0 && frame > 0 && frame % (frameLimit / (resizes + 1)) == 0 &&
+            frame / (frameLimit / (resizes + 1)) <= resizes) {
+            const VkExtent2D to = soakSize(size, frame / (frameLimit / (resizes + 1)));
+            glfwSetWindowSize(window.handle, static_cast<int>(to.width), static_cast<int>(to.height));
+        }
         auto pressed = [&](int key, bool& held) {
             const bool down = glfwGetKey(window.handle, key) == GLFW_PRESS;
             const bool edge = down && !held;
@@ -380,6 +431,8 @@ int runView(Args& args) {
         if (pr != VK_ERROR_OUT_OF_DATE_KHR && pr != VK_SUBOPTIMAL_KHR) rg::check(pr, "vkQueuePresentKHR");
         firstWait = false;
         ++frame;
+        if (memoryLog && (frame % 100 == 0 || lastFrame))
+            *memoryLog << frame << "," << residentKiB() << "," << rg::deviceMemoryInUse() << std::endl;
         if (lastFrame) {
             RG_VK(vkWaitForFences(device.device(), 1, &fence, VK_TRUE, UINT64_MAX));
             if (!screenshotPath.empty()) {

@@ -59,6 +59,11 @@ struct EngineRenderer::Pipelines {
 EngineRenderer::EngineRenderer(const rg::Device& device, SceneDesc scene, const MeshData& mesh,
                                VkExtent2D size)
     : device_(device), scene_(std::move(scene)), bounds_(mesh.bounds), size_(size) {
+    for (const Primitive& p : mesh.primitives) {
+        Bounds b;
+        for (uint32_t i = p.firstIndex; i < p.firstIndex + p.indexCount; ++i) b.add(mesh.vertices[mesh.indices[i]].position);
+        partBounds_.push_back(b);
+    }
     mesh_ = std::make_unique<GpuMesh>(device, mesh);
     plugin_ = std::make_unique<lightscatter::Plugin>(lightscatter::VulkanContext{
         device.instance(), device.physical(), device.device(), device.queue(), device.queueFamily()});
@@ -259,7 +264,7 @@ lightscatter::FrameDescription EngineRenderer::describe(const RenderOptions& opt
     if (shadowMap_) f.shadowMap = input(*shadowMap_, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     const float aspect = static_cast<float>(size_.width) / static_cast<float>(size_.height);
     f.camera = toPluginCamera(scene_.camera, cameraView(scene_.camera), cameraProjection(scene_.camera, aspect));
-    f.light = toPluginLight(scene_.light, shadowMap_ ? shadowViewProjection(scene_.light, bounds_) : glm::mat4(1.0f),
+    f.light = toPluginLight(scene_.light, shadowMap_ ? shadowViewProjection(scene_.light, bounds_, partBounds_, scene_.camera, aspect) : glm::mat4(1.0f),
                             shadowMap_ != nullptr);
     f.medium = toPluginMedium(scene_.medium);
     f.method = options.method;
@@ -279,7 +284,7 @@ void EngineRenderer::record(VkCommandBuffer cmd, const RenderOptions& options,
     pipelines_->viewProj = cameraProjection(scene_.camera, aspect) * cameraView(scene_.camera);
     Lighting& l = pipelines_->lighting;
     const LightDesc& light = scene_.light;
-    l.lightViewProj = shadowMap_ ? shadowViewProjection(light, bounds_) : glm::mat4(1.0f);
+    l.lightViewProj = shadowMap_ ? shadowViewProjection(light, bounds_, partBounds_, scene_.camera, aspect) : glm::mat4(1.0f);
     l.lightPos = glm::vec4(light.position, 0.0f);
     l.lightDir = glm::vec4(glm::normalize(light.direction), std::cos(glm::radians(light.halfAngleDegrees)));
     l.lightIntensity = glm::vec4(light.intensity, light.range);

@@ -63,6 +63,7 @@ private:
     const rg::Device& device_;
     SceneDesc scene_;
     Bounds bounds_;
+    std::vector<Bounds> partBounds_;  // one per draw: what the sun's shadow box is fitted to
     VkExtent2D size_;
     std::unique_ptr<GpuMesh> mesh_;
     std::unique_ptr<GpuImage> depth_, color_, shadowMap_, inscatter_;

@@ -5,6 +5,7 @@
 
 #include "compile.h"
 #include "format_info.h"
+#include "memory_counter.h"
 #include "fault_injection.h"
 #include "vk_error.h"
 
@@ -89,7 +90,10 @@ void GraphExecutor::destroy() {
     for (uint32_t id = 0; id < buffers_.size(); ++id)
         if (buffers_[id] && !graph_.resource(id).imported) vkDestroyBuffer(dev, buffers_[id], nullptr);
     buffers_.clear();
-    for (VkDeviceMemory m : blocks_) vkFreeMemory(dev, m, nullptr);
+    for (size_t b = 0; b < blocks_.size(); ++b) {
+        detail::uncountDeviceMemory(std::max<VkDeviceSize>(compiled_.blocks[b].size, 1));
+        vkFreeMemory(dev, blocks_[b], nullptr);
+    }
     blocks_.clear();
     if (fence_) vkDestroyFence(dev, fence_, nullptr);
     if (pool_) vkDestroyCommandPool(dev, pool_, nullptr);
@@ -113,6 +117,7 @@ void GraphExecutor::createMemory() {
                               std::to_string(info.allocationSize) + " bytes): " + e.what());
         }
         blocks_.push_back(mem);
+        detail::countDeviceMemory(info.allocationSize);
         device_.setName(mem, VK_OBJECT_TYPE_DEVICE_MEMORY,
                         "render graph transient block " + std::to_string(b));
     }

@@ -1,6 +1,7 @@
 #include "host_buffer.h"
 
 #include "fault_injection.h"
+#include "memory_counter.h"
 #include "vk_error.h"
 
 namespace rg {
@@ -22,10 +23,13 @@ HostBuffer::HostBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFla
         alloc.memoryTypeIndex = device.findMemoryType(
             req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
         RG_VK_CREATE(vkAllocateMemory(device_, &alloc, nullptr, &memory_));
+        memoryBytes_ = alloc.allocationSize;
+        detail::countDeviceMemory(memoryBytes_);
         device.setName(memory_, VK_OBJECT_TYPE_DEVICE_MEMORY, name + " memory");
         RG_VK(vkBindBufferMemory(device_, buffer_, memory_, 0));
         RG_VK(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
     } catch (...) {
+        detail::uncountDeviceMemory(memoryBytes_);
         if (memory_) vkFreeMemory(device_, memory_, nullptr);
         vkDestroyBuffer(device_, buffer_, nullptr);
         throw;
@@ -33,6 +37,7 @@ HostBuffer::HostBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFla
 }
 
 HostBuffer::~HostBuffer() {
+    detail::uncountDeviceMemory(memoryBytes_);
     if (memory_) vkFreeMemory(device_, memory_, nullptr);
     if (buffer_) vkDestroyBuffer(device_, buffer_, nullptr);
 }

@@ -29,6 +29,7 @@ private:
     VkDevice device_;
     VkBuffer buffer_ = VK_NULL_HANDLE;
     VkDeviceMemory memory_ = VK_NULL_HANDLE;
+    VkDeviceSize memoryBytes_ = 0;  // counted by deviceMemoryInUse()
     VkDeviceSize size_;
     VkBufferUsageFlags usage_;
     void* mapped_ = nullptr;

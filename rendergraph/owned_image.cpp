@@ -1,6 +1,7 @@
 #include "owned_image.h"
 
 #include "fault_injection.h"
+#include "memory_counter.h"
 #include "vk_error.h"
 
 namespace rg {
@@ -26,9 +27,12 @@ OwnedImage::OwnedImage(const rg::Device& device, VkFormat format, VkExtent2D ext
     try {
         alloc.memoryTypeIndex = device.findMemoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
         RG_VK_CREATE(vkAllocateMemory(device.device(), &alloc, nullptr, &memory_));
+        memoryBytes_ = alloc.allocationSize;
+        detail::countDeviceMemory(memoryBytes_);
         device.setName(memory_, VK_OBJECT_TYPE_DEVICE_MEMORY, name + " memory");
         RG_VK(vkBindImageMemory(device.device(), image_, memory_, 0));
     } catch (...) {
+        detail::uncountDeviceMemory(memoryBytes_);
         if (memory_) vkFreeMemory(device.device(), memory_, nullptr);
         vkDestroyImage(device.device(), image_, nullptr);
         throw;
@@ -37,6 +41,7 @@ OwnedImage::OwnedImage(const rg::Device& device, VkFormat format, VkExtent2D ext
 
 OwnedImage::~OwnedImage() {
     vkDestroyImage(device_.device(), image_, nullptr);
+    detail::uncountDeviceMemory(memoryBytes_);
     vkFreeMemory(device_.device(), memory_, nullptr);
 }
 

@@ -30,6 +30,7 @@ private:
     VkImageUsageFlags usage_;
     VkImage image_ = VK_NULL_HANDLE;
     VkDeviceMemory memory_ = VK_NULL_HANDLE;
+    VkDeviceSize memoryBytes_ = 0;  // counted by deviceMemoryInUse()
 };
 
 }  // namespace rg
