@@ -3,20 +3,24 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 #include <initializer_list>
-#include <iterator>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "scene/input_file.h"
 #include "scene/scene.h"
 
 namespace host {
 namespace {
 
 using nlohmann::json;
+
+constexpr uint64_t kSceneFileCap = 16 * kMiB;
+// The renderer works in single precision: beyond this a coordinate's square overflows, and the
+// view direction and every distance computed from it would be infinite.
+constexpr double kMaxCoordinate = 1e18;
 
 // The shortest text that reads back as the same value: "0.1" for 0.1f, not "0.100000001490116".
 template <class T>
@@ -64,11 +68,12 @@ class SceneReader {
     [[noreturn]] void fail(const std::string& what) const { throw SceneError(path_ + ": " + what); }
 
     json parse() const {
-        std::ifstream in(path_, std::ios::binary);
-        std::error_code ec;
-        if (!in || std::filesystem::is_directory(path_, ec)) fail("cannot open the scene file");
-        const std::string text{std::istreambuf_iterator<char>(in),
-                               std::istreambuf_iterator<char>()};
+        std::string text;
+        try {
+            text = readInputFile(path_, "scene file", kSceneFileCap);
+        } catch (const InputFileError& e) {
+            throw SceneError(e.what());
+        }
         // nlohmann keeps the last of two equal keys; a repeated field is as likely a mistake as
         // a misspelt one, so it is refused too.
         std::vector<std::set<std::string>> keysOfOpenObjects;
@@ -197,9 +202,9 @@ class SceneReader {
         if (file.is_relative()) file = std::filesystem::path(path_).parent_path() / file;
         std::error_code ec;
         file = std::filesystem::absolute(file, ec).lexically_normal();
-        if (ec || !std::filesystem::is_regular_file(file, ec)) {
-            fail(name + " '" + text + "' does not exist (looked for " + file.string() + ")");
-        }
+        const std::string why = ec ? "cannot be resolved" : whyNotARegularFile(file.string());
+        if (!why.empty())
+            fail(name + " '" + text + "' " + why + " (looked for " + file.string() + ")");
         return file.string();
     }
 
