@@ -256,6 +256,35 @@ TEST_F(SceneFileTest, AGltfPathThatIsNotARegularFileSaysWhatItIs) {
               "/dev/zero)");
 }
 
+// Float overflow used to make a far camera look like an up vector parallel to the view.
+TEST_F(SceneFileTest, AFarCameraIsReportedAsTooFar) {
+    EXPECT_EQ(errorFor(R"({"camera": {"position": [1e20, 0, 0], "target": [0, 0, 0]}})"),
+              "camera.position[0] = 1e+20: must be within +-1e+18 (the renderer works in single "
+              "precision)");
+    EXPECT_EQ(errorFor(R"({"camera": {"position": [0, 0, 0], "target": [0, 0, -3e38]}})"),
+              "camera.target[2] = -3e+38: must be within +-1e+18 (the renderer works in single "
+              "precision)");
+    // Large but representable: a valid camera.
+    EXPECT_EQ(errorFor(R"({"camera": {"position": [1e17, 0, 0], "target": [-1e17, 0, 0]}})"),
+              "(no error)");
+    EXPECT_EQ(errorFor(R"({"light": {"direction": [1e20, 0, 0]}})"), "(no error)");
+    EXPECT_EQ(errorFor(R"({"camera": {"up": [0, 1e30, 0]}})"), "(no error)");
+}
+
+// Values in range as written but not as the floats the plugin receives (1e-50 becomes 0) were
+// refused later by the plugin, in its own field names.
+TEST_F(SceneFileTest, ValuesAreCheckedAsTheFloatsTheyBecome) {
+    EXPECT_EQ(errorFor(R"({"light": {"halfAngleDegrees": 1e-50}})"),
+              "light.halfAngleDegrees = 1e-50: must be in (0, 89] (it is 0 in single precision)");
+    EXPECT_EQ(errorFor(R"({"camera": {"near": 1e-50}})"),
+              "camera.near = 1e-50: must be > 0 (it is 0 in single precision)");
+    EXPECT_EQ(errorFor(R"({"light": {"radius": 1e-46}})"),
+              "light.radius = 1e-46: must be > 0 (it is 0 in single precision)");
+    EXPECT_EQ(errorFor(R"({"camera": {"fovYDegrees": 179.999999999}})"),
+              "camera.fovYDegrees = 179.999999999: must be in (0, 180) (it is 180 in single "
+              "precision)");
+}
+
 TEST_F(SceneFileTest, UnknownKeysAreRefusedWithTheKnownOnes) {
     EXPECT_EQ(errorFor(R"({"camra": {}})"),
               "unknown key 'camra' (known keys: gltf, models, camera, light, medium, sky, ambient, "
