@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "activity.h"
 #include "scene/input_file.h"
 #include "scene/scene.h"
 
@@ -368,12 +369,16 @@ class SceneReader {
 }  // namespace
 
 SceneDesc loadSceneFile(const std::string& path) {
+    Activity reading("reading " + path);
     return SceneReader(path).read();
 }
 
 MeshData loadSceneMeshes(const SceneDesc& scene) {
     MeshData mesh;
-    for (const ModelInstance& model : scene.models) appendGltf(mesh, model.path, model.transform);
+    for (const ModelInstance& model : scene.models) {
+        Activity loading("loading " + model.path);
+        appendGltf(mesh, model.path, model.transform);
+    }
     return mesh;
 }
 
