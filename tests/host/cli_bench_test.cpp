@@ -47,7 +47,7 @@ TEST(CliBench, AnErrorDuringTheRunsStartsOnItsOwnLine) {
               R"({"frames": 1, "warmup": 0, "size": "16x9", "scenes": ["scenes/window_room.json"],
         "methods": ["brute-force"]})");
     std::filesystem::create_directories(cli_test::path("one/strips/window_room_brute-force.png"));
-    const auto r = run("bench --config one.json --out one");
+    const auto r = run("bench --config one.json --out one --validation");
     EXPECT_NE(r.exitCode, 0) << r.out;
     const size_t error = r.out.find("lightscatter: ");
     ASSERT_NE(error, std::string::npos) << r.out;
