@@ -3,26 +3,32 @@
 // an error naming it.
 #include <vulkan/vulkan.h>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
 namespace host {
 
 class Args {
-public:
+  public:
     explicit Args(std::vector<std::string> words) : words_(std::move(words)) {}
+    // The value after `name`, or `fallback` when absent; throws when `name` is given twice or has
+    // no value.
     std::string take(const std::string& name, const std::string& fallback);
-    bool flag(const std::string& name);
+    bool flag(const std::string& name);  // throws when given twice
     // Positional argument (first word not starting with "--"), or throws naming `what`.
     std::string positional(const std::string& what);
     void finish() const;  // throws if anything was not understood
 
-private:
+  private:
+    void refuseRepeats(const std::string& name) const;
     std::vector<std::string> words_;
 };
 
-VkExtent2D parseSize(const std::string& text, const std::string& option);
-int parseCount(const std::string& text, const std::string& option);  // 1..100000
-void writeTextFile(const std::string& path, const std::string& text);
+// A whole number in [lo, hi], written as decimal digits alone: no sign, no spaces, nothing after
+// it. Throws naming `option` and the range, so that "-1" or "4294967297" never wraps around.
+uint32_t parseWhole(const std::string& text, const std::string& option, uint32_t lo, uint32_t hi);
+VkExtent2D parseSize(const std::string& text, const std::string& option);  // WxH, 1..16384 each
+int parseCount(const std::string& text, const std::string& option);        // 1..100000
 
 }  // namespace host

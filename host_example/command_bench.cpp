@@ -13,6 +13,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "activity.h"
 #include "bench/bench_config.h"
 #include "bench/image_strip.h"
 #include "bench/metrics.h"
@@ -20,6 +21,8 @@
 #include "engine_renderer.h"
 #include "image_io.h"
 #include "reference/reference_renderer.h"
+#include "scene/input_file.h"
+#include "temp_files.h"
 
 namespace host {
 namespace {
@@ -40,10 +43,20 @@ std::string duration(double seconds) {
     return buf;
 }
 
+// A progress line redrawn in place on stderr. It is ended with a newline when the benchmark ends
+// or fails, so that an error is printed on a line of its own, not after the bar.
 class Progress {
 public:
     explicit Progress(size_t total) : total_(total), start_(std::chrono::steady_clock::now()) {}
-    void show(size_t done, const std::string& what) const {
+    ~Progress() { finish(); }
+    Progress(const Progress&) = delete;
+    Progress& operator=(const Progress&) = delete;
+    void finish() {
+        if (open_) std::fputc('\n', stderr);
+        open_ = false;
+    }
+    void show(size_t done, const std::string& what) {
+        open_ = true;
         const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
         const double left = done ? elapsed / static_cast<double>(done) * static_cast<double>(total_ - done) : 0.0;
         const int width = 30;
@@ -57,6 +70,7 @@ public:
 private:
     size_t total_;
     std::chrono::steady_clock::time_point start_;
+    bool open_ = false;
 };
 
 std::vector<double> loadOrRenderReference(const SceneDesc& scene, const MeshData& mesh, VkExtent2D size,
@@ -93,10 +107,24 @@ int runBench(Args& args) {
     deviceOptions.deviceName = args.take("--device", "");
     deviceOptions.validation = args.flag("--validation");
     args.finish();
+    // Everything that can be checked is checked before the first run: every run's values (in
+    // loadBenchConfig), every scene and its models, the output folder.
     const bench::BenchConfig config = bench::loadBenchConfig(configPath, root);
-    fs::create_directories(out / "strips");
-    fs::create_directories(out / "references");
+    std::map<std::string, std::pair<SceneDesc, MeshData>> scenes;
+    for (const std::string& path : config.scenes) {
+        if (scenes.count(path)) continue;
+        SceneDesc s = loadSceneFile(path);
+        MeshData m = loadSceneMeshes(s);
+        scenes.emplace(path, std::make_pair(std::move(s), std::move(m)));
+    }
+    for (const fs::path& dir : {out / "strips", out / "references"}) {
+        std::error_code ec;
+        fs::create_directories(dir, ec);
+        if (ec) throw std::runtime_error("--out " + out.string() + ": cannot create " + dir.string() + ": " + ec.message());
+    }
+    { TempFile probe((out / "bench.json").string(), "--out"); }  // the folder is writable
 
+    Activity benchmarking("benchmarking " + configPath);
     rg::Device device(deviceOptions);
     std::ofstream csv(out / "bench.csv");
     if (!csv) throw std::runtime_error((out / "bench.csv").string() + ": cannot open for writing");
@@ -104,7 +132,6 @@ int runBench(Args& args) {
     nlohmann::json all = nlohmann::json::array();
     Progress progress(config.runs.size());
 
-    std::map<std::string, std::pair<SceneDesc, MeshData>> scenes;
     std::map<std::string, std::vector<double>> references;
     std::unique_ptr<EngineRenderer> renderer;
     std::string rendererKey;
@@ -112,11 +139,6 @@ int runBench(Args& args) {
     for (const bench::BenchRun& run : config.runs) {
         const std::string what = fs::path(run.scene).stem().string() + ": " + run.label;
         progress.show(done, what);
-        if (!scenes.count(run.scene)) {
-            SceneDesc s = loadSceneFile(run.scene);
-            MeshData m = loadSceneMeshes(s);
-            scenes.emplace(run.scene, std::make_pair(std::move(s), std::move(m)));
-        }
         auto& [scene, mesh] = scenes.at(run.scene);
         SceneDesc sceneForRun = scene;
         if (run.shadowMapSize) sceneForRun.light.shadowMapSize = run.shadowMapSize;
@@ -176,8 +198,7 @@ int runBench(Args& args) {
             if (!references.count(refKey)) {
                 // Keyed by the scene file's contents too, so an edited scene is never judged against
                 // the reference of its earlier version.
-                std::ifstream sceneFile(run.scene, std::ios::binary);
-                const std::string text{std::istreambuf_iterator<char>(sceneFile), std::istreambuf_iterator<char>()};
+                const std::string text = readInputFile(run.scene, "scene file", 16 * kMiB);
                 char hash[32];
                 std::snprintf(hash, sizeof hash, "%016zx", std::hash<std::string>{}(text));
                 const fs::path cache = out / "references" /
@@ -218,7 +239,7 @@ int runBench(Args& args) {
         ++done;
     }
     progress.show(done, "done");
-    std::fprintf(stderr, "\n");
+    progress.finish();
     std::cout << "wrote " << (out / "bench.csv").string() << ", bench.json and " << done << " runs' strips ("
               << device.name() << (device.isCpu() ? ", CPU timings" : "") << ")\n";
     return device.messageCount() > 0 ? 3 : 0;

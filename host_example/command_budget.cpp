@@ -1,8 +1,10 @@
-// lightscatter budget [--profile NAME|all] [--size WxH] [--shadow-map N] [--json]
+// lightscatter budget [--profile NAME|all] [--settings FILE.json] [--size WxH] [--shadow-map N]
+//   [--json]
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "command_options.h"
 #include "commands.h"
 #include "lightscatter.h"
 
@@ -14,42 +16,37 @@ double mib(uint64_t bytes) { return static_cast<double>(bytes) / (1024.0 * 1024.
 }  // namespace
 
 int runBudget(Args& args) {
-    const std::string profileName = args.take("--profile", "all");
+    const std::string settingsPath = args.take("--settings", "");
+    const std::string profileName = args.take("--profile", settingsPath.empty() ? "all" : "balanced");
     const VkExtent2D size = parseSize(args.take("--size", "2560x1600"), "--size");
     const std::string sm = args.take("--shadow-map", "");
     const bool json = args.flag("--json");
     args.finish();
     std::vector<lightscatter::Profile> profiles;
+    lightscatter::Settings custom;
     if (profileName == "all") {
+        if (!settingsPath.empty())
+            throw std::runtime_error("--settings overlays one profile: give --profile NAME, not all");
         profiles = {lightscatter::Profile::HighQuality, lightscatter::Profile::Balanced,
                     lightscatter::Profile::HighPerformance, lightscatter::Profile::LowHighQuality,
                     lightscatter::Profile::LowBalanced, lightscatter::Profile::LowHighPerformance};
+    } else if (!lightscatter::parseProfile(profileName)) {
+        std::string known = "all";
+        for (const auto& n : lightscatter::profileNames()) known += ", " + n;
+        throw std::runtime_error("unknown profile '" + profileName + "' (known: " + known + ")");
     } else {
-        const auto p = lightscatter::parseProfile(profileName);
-        if (!p || *p == lightscatter::Profile::Custom) {
-            std::string known = "all";
-            for (const auto& n : lightscatter::profileNames())
-                if (n != "custom") known += ", " + n;
-            throw std::runtime_error("unknown profile '" + profileName + "' (known: " + known + ")");
-        }
-        profiles = {*p};
+        const RenderOptions chosen = profileOptions(profileName, settingsPath);
+        profiles = {chosen.profile};
+        custom = chosen.custom;
     }
-    uint32_t shadowOverride = 0;
-    if (!sm.empty()) {
-        unsigned long v = 0;
-        try {
-            v = std::stoul(sm);
-        } catch (...) {
-            throw std::runtime_error("--shadow-map '" + sm + "' is not a number");
-        }
-        shadowOverride = static_cast<uint32_t>(v);
-    }
+    const uint32_t shadowOverride = sm.empty() ? 0 : parseWhole(sm, "--shadow-map", 1, 16384);
 
     nlohmann::json all = nlohmann::json::array();
     for (lightscatter::Profile p : profiles) {
-        const auto s = lightscatter::profileSettings(p);
+        const auto s = p == lightscatter::Profile::Custom ? custom : lightscatter::profileSettings(p);
         const uint32_t shadow = shadowOverride ? shadowOverride : s.shadowMapSize;
-        const lightscatter::Budget b = lightscatter::budget(p, size.width, size.height, shadow);
+        const lightscatter::Budget b =
+            lightscatter::budget(p, size.width, size.height, shadow, lightscatter::LightType::Spot, &s);
         if (json) {
             nlohmann::json j;
             j["profile"] = lightscatter::profileName(p);

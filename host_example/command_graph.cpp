@@ -1,4 +1,5 @@
-// lightscatter graph SCENE.json --dot|--json [--method NAME] [--profile NAME] [--size WxH]
+// lightscatter graph SCENE.json --dot|--json [--method NAME] [--profile NAME]
+//   [--settings FILE.json] [--size WxH]
 #include <iostream>
 
 #include "command_options.h"

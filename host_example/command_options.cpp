@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "settings_file.h"
+
 namespace host {
 namespace {
 
@@ -13,18 +15,37 @@ std::string joined(const std::vector<std::string>& names) {
 
 }  // namespace
 
+RenderOptions profileOptions(const std::string& profile, const std::string& settingsPath) {
+    RenderOptions o;
+    const auto p = lightscatter::parseProfile(profile);
+    if (!p)
+        throw std::runtime_error("unknown profile '" + profile +
+                                 "' (known: " + joined(lightscatter::profileNames()) + ")");
+    if (*p == lightscatter::Profile::Custom && settingsPath.empty())
+        throw std::runtime_error(
+            "--profile custom needs --settings FILE.json, a JSON object of lightscatter::Settings "
+            "fields by name (e.g. {\"slices\": 512, \"samplesPerSlice\": 256}; see "
+            "docs/host_example.md)");
+    o.profile = *p;
+    if (!settingsPath.empty()) {
+        // Custom starts from lightscatter::Settings' defaults, any other profile from its own.
+        o.custom = loadSettingsFile(settingsPath, lightscatter::profileSettings(*p));
+        o.profile = lightscatter::Profile::Custom;
+    }
+    return o;
+}
+
 SceneOptions takeSceneOptions(Args& args, const char* defaultSize) {
     SceneOptions o;
     const std::string method = args.take("--method", "epipolar");
     const auto m = lightscatter::parseMethod(method);
-    if (!m) throw std::runtime_error("unknown method '" + method + "' (known: " + joined(lightscatter::methodNames()) + ")");
-    o.render.method = *m;
+    if (!m)
+        throw std::runtime_error("unknown method '" + method +
+                                 "' (known: " + joined(lightscatter::methodNames()) + ")");
     const std::string profile = args.take("--profile", "balanced");
-    const auto p = lightscatter::parseProfile(profile);
-    if (!p || *p == lightscatter::Profile::Custom)
-        throw std::runtime_error("unknown profile '" + profile + "' (known: " +
-                                 joined(lightscatter::profileNames()) + ", custom only through the API)");
-    o.render.profile = *p;
+    o.settingsPath = args.take("--settings", "");
+    o.render = profileOptions(profile, o.settingsPath);
+    o.render.method = *m;
     const std::string size = args.take("--size", defaultSize ? defaultSize : "");
     if (!size.empty()) o.size = parseSize(size, "--size");
     o.device.deviceName = args.take("--device", "");
@@ -32,6 +53,8 @@ SceneOptions takeSceneOptions(Args& args, const char* defaultSize) {
     return o;
 }
 
-VkExtent2D sceneSize(const SceneOptions& o, VkExtent2D fallback) { return o.size ? *o.size : fallback; }
+VkExtent2D sceneSize(const SceneOptions& o, VkExtent2D fallback) {
+    return o.size ? *o.size : fallback;
+}
 
 }  // namespace host

@@ -10,13 +10,20 @@ namespace host {
 
 struct SceneOptions {
     std::string scenePath;
+    std::string settingsPath;  // --settings, "" when not given
     RenderOptions render;
     std::optional<VkExtent2D> size;
     rg::DeviceOptions device;
 };
 
-// --method, --profile, --size, --device, --validation; names are checked before any device exists.
+// --method, --profile, --settings, --size, --device, --validation; names, numbers and the
+// settings file are checked before any device exists.
 SceneOptions takeSceneOptions(Args& args, const char* defaultSize);
 VkExtent2D sceneSize(const SceneOptions& o, VkExtent2D fallback);
+
+// The profile named by --profile and --settings together: --settings overlays the file's fields
+// on the profile's settings and makes the custom profile; --profile custom needs --settings.
+// `settingsPath` is "" when --settings was not given.
+RenderOptions profileOptions(const std::string& profile, const std::string& settingsPath);
 
 }  // namespace host

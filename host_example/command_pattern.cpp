@@ -3,6 +3,7 @@
 
 #include "commands.h"
 #include "image_io.h"
+#include "output_set.h"
 #include "rendergraph/demo/test_pattern.h"
 #include "rendergraph/report.h"
 
@@ -18,15 +19,22 @@ int runPattern(Args& args) {
     options.validation = args.flag("--validation");
     args.finish();
 
+    OutputSet outputs;  // all or nothing, each checked before rendering
+    outputs.add("--out", out);
+    if (!report.empty()) outputs.add("--report", report);
+    if (!dot.empty()) outputs.add("--dot", dot);
+
     rg::Device device(options);
     rg::demo::TestPatternRenderer renderer(device, size);
     rg::FrameTimings timings;
     const auto pixels = renderer.render(&timings);
-    writePng(out, size.width, size.height, pixels);
-    std::cout << rg::reportText(renderer.graph(), renderer.compiled(), &timings);
+    outputs.write(out, [&](const std::string& tmp) { return encodePng(tmp, size.width, size.height, pixels); },
+                  "PNG");
     if (!report.empty())
-        writeTextFile(report, rg::reportJson(renderer.graph(), renderer.compiled(), &timings).dump(2));
-    if (!dot.empty()) writeTextFile(dot, rg::reportDot(renderer.graph(), renderer.compiled()));
+        outputs.writeText(report, rg::reportJson(renderer.graph(), renderer.compiled(), &timings).dump(2));
+    if (!dot.empty()) outputs.writeText(dot, rg::reportDot(renderer.graph(), renderer.compiled()));
+    outputs.commit();
+    std::cout << rg::reportText(renderer.graph(), renderer.compiled(), &timings);
     std::cout << "wrote " << out << " (" << size.width << "x" << size.height << ", device '"
               << device.name() << "'" << (device.isCpu() ? ", CPU timings" : "") << ")\n";
     return device.messageCount() > 0 ? 3 : 0;

@@ -1,13 +1,15 @@
 // lightscatter render SCENE.json [--out FILE.png|.exr] [--inscatter FILE.exr] [--method NAME]
-//   [--profile NAME] [--size WxH] [--timings FILE.json] [--frames N]
+//   [--profile NAME] [--settings FILE.json] [--size WxH] [--timings FILE.json] [--frames N]
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "activity.h"
 #include "command_options.h"
 #include "commands.h"
 #include "image_io.h"
+#include "output_set.h"
 #include "tonemap.h"
 
 namespace host {
@@ -59,18 +61,37 @@ int runRender(Args& args) {
     for (const auto& w : mesh.warnings) std::cerr << "lightscatter: warning: " << w << "\n";
     const VkExtent2D size = sceneSize(o, {960, 540});
 
+    // Every output is checked, and a temporary made beside it, before anything renders.
+    OutputSet outputs;
+    outputs.addInput("the scene file", scenePath);
+    if (!o.settingsPath.empty()) outputs.addInput("the settings file", o.settingsPath);
+    for (const auto& f : mesh.files) outputs.addInput("a file the scene reads", f);
+    outputs.add("--out", out);
+    if (!inscatter.empty()) outputs.add("--inscatter", inscatter);
+    if (!timings.empty()) outputs.add("--timings", timings);
+
+    Activity rendering("rendering " + scenePath + " at " + std::to_string(size.width) + "x" +
+                       std::to_string(size.height));
     rg::Device device(o.device);
     EngineRenderer renderer(device, scene, mesh, size);
     FrameOutput frame;
     for (int i = 0; i < frames; ++i) frame = renderer.render(o.render);
 
-    if (endsWith(out, ".png"))
-        writePng(out, size.width, size.height, toneMap(frame.color, scene.exposure));
-    else
-        writeExr(out, size.width, size.height, frame.color);
-    if (!inscatter.empty()) writeExr(inscatter, size.width, size.height, frame.inscatter);
-    if (!timings.empty())
-        writeTextFile(timings, timingsJson(device, o, size, frame, frames).dump(2) + "\n");
+    Activity writing("writing " + out);
+    if (endsWith(out, ".png")) {
+        const std::vector<uint8_t> pixels = toneMap(frame.color, scene.exposure);
+        outputs.write(out, [&](const std::string& tmp) { return encodePng(tmp, size.width, size.height, pixels); },
+                      "PNG");
+    } else {
+        outputs.write(out, [&](const std::string& tmp) { return encodeExr(tmp, size.width, size.height, frame.color); },
+                      "OpenEXR");
+    }
+    if (!inscatter.empty())
+        outputs.write(inscatter,
+                      [&](const std::string& tmp) { return encodeExr(tmp, size.width, size.height, frame.inscatter); },
+                      "OpenEXR");
+    if (!timings.empty()) outputs.writeText(timings, timingsJson(device, o, size, frame, frames).dump(2) + "\n");
+    outputs.commit();
 
     std::printf("%s: %ux%u, %s, %s, %s on '%s'%s: plugin %.3f ms, engine %.3f ms\n", out.c_str(),
                 size.width, size.height, lightscatter::methodName(o.render.method),

@@ -292,7 +292,12 @@ void EngineRenderer::record(VkCommandBuffer cmd, const RenderOptions& options,
     l.ambient = glm::vec4(scene_.ambient, 0.0f);
     l.shadowInfo = glm::vec4(static_cast<float>(light.shadowMapSize), 0.0f, 0.0f, 0.0f);
     executor_->record(cmd);
-    plugin_->record(cmd, frame);
+    try {
+        plugin_->record(cmd, frame);
+    } catch (const lightscatter::InvalidInput& e) {
+        // The frame is the scene's: say what is wrong in SCENE.json's terms, not the API's.
+        throw SceneError(pluginRefusalInSceneTerms(e.what(), scene_.path));
+    }
 }
 
 FrameOutput EngineRenderer::timings() {

@@ -1,7 +1,6 @@
 #include "image_io.h"
 
-#include <cstdio>
-#include <filesystem>
+#include <cstdlib>
 #include <stdexcept>
 
 #define STB_IMAGE_WRITE_IMPLEMENTATION
@@ -9,51 +8,63 @@
 #include <stb/stb_image_write.h>
 #include <tinyexr.h>
 
-#include <cstdlib>
+#include "output_set.h"
 
 namespace host {
+namespace {
 
-void writeAtomically(const std::string& path, const std::function<bool(const std::string&)>& write,
-                     const char* what) {
-    const std::string tmp = path + ".partial";
-    if (!write(tmp)) {
-        std::remove(tmp.c_str());
-        throw std::runtime_error(path + ": cannot write " + what + " (is the directory writable?)");
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        std::remove(tmp.c_str());
-        throw std::runtime_error(path + ": cannot move the finished " + what + " into place: " +
-                                 ec.message());
-    }
+void checkPixels(const std::string& path, size_t have, uint32_t width, uint32_t height) {
+    if (have != size_t{4} * width * height)
+        throw std::runtime_error(path + ": pixel buffer does not match " + std::to_string(width) +
+                                 "x" + std::to_string(height));
+}
+
+}  // namespace
+
+bool encodePng(const std::string& path, uint32_t width, uint32_t height,
+               const std::vector<uint8_t>& rgba) {
+    checkPixels(path, rgba.size(), width, height);
+    return stbi_write_png(path.c_str(), static_cast<int>(width), static_cast<int>(height), 4,
+                          rgba.data(), static_cast<int>(width * 4)) != 0;
+}
+
+bool encodeExr(const std::string& path, uint32_t width, uint32_t height,
+               const std::vector<float>& rgba) {
+    checkPixels(path, rgba.size(), width, height);
+    std::vector<float> rgb(size_t{3} * width * height);
+    for (size_t i = 0; i < size_t{width} * height; ++i)
+        for (size_t c = 0; c < 3; ++c) rgb[i * 3 + c] = rgba[i * 4 + c];
+    const char* err = nullptr;
+    const int r = SaveEXR(rgb.data(), static_cast<int>(width), static_cast<int>(height), 3,
+                          /*save_as_fp16=*/0, path.c_str(), &err);
+    if (err) FreeEXRErrorMessage(err);
+    return r == TINYEXR_SUCCESS;
 }
 
 void writePng(const std::string& path, uint32_t width, uint32_t height,
               const std::vector<uint8_t>& rgba) {
-    if (rgba.size() != size_t{4} * width * height)
-        throw std::runtime_error(path + ": pixel buffer does not match " + std::to_string(width) +
-                                 "x" + std::to_string(height));
-    writeAtomically(path, [&](const std::string& tmp) {
-        return stbi_write_png(tmp.c_str(), static_cast<int>(width), static_cast<int>(height), 4,
-                              rgba.data(), static_cast<int>(width * 4)) != 0;
-    }, "PNG");
+    OutputSet out;
+    out.add("output", path);
+    out.write(
+        path, [&](const std::string& tmp) { return encodePng(tmp, width, height, rgba); }, "PNG");
+    out.commit();
 }
 
-void writeExr(const std::string& path, uint32_t width, uint32_t height, const std::vector<float>& rgba) {
-    if (rgba.size() != size_t{4} * width * height)
-        throw std::runtime_error(path + ": pixel buffer does not match " + std::to_string(width) +
-                                 "x" + std::to_string(height));
-    std::vector<float> rgb(size_t{3} * width * height);
-    for (size_t i = 0; i < size_t{width} * height; ++i)
-        for (size_t c = 0; c < 3; ++c) rgb[i * 3 + c] = rgba[i * 4 + c];
-    writeAtomically(path, [&](const std::string& tmp) {
-        const char* err = nullptr;
-        const int r = SaveEXR(rgb.data(), static_cast<int>(width), static_cast<int>(height), 3,
-                              /*save_as_fp16=*/0, tmp.c_str(), &err);
-        if (err) FreeEXRErrorMessage(err);
-        return r == TINYEXR_SUCCESS;
-    }, "OpenEXR");
+void writeExr(const std::string& path, uint32_t width, uint32_t height,
+              const std::vector<float>& rgba) {
+    OutputSet out;
+    out.add("output", path);
+    out.write(
+        path, [&](const std::string& tmp) { return encodeExr(tmp, width, height, rgba); },
+        "OpenEXR");
+    out.commit();
+}
+
+void writeTextFile(const std::string& path, const std::string& text) {
+    OutputSet out;
+    out.add("output", path);
+    out.writeText(path, text);
+    out.commit();
 }
 
 FloatImage readExr(const std::string& path) {

@@ -1,50 +1,55 @@
 // lightscatter: the host example's command line.
+#include <cstdio>
 #include <exception>
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
+#include "activity.h"
 #include "commands.h"
+#include "error_line.h"
 #include "rendergraph/device.h"
+#include "usage.h"
 
 namespace {
 
-const char* kUsage =
-    "usage: lightscatter <command> [options]\n"
-    "  render SCENE.json [--out FILE.png|.exr] [--inscatter FILE.exr] [--method NAME]\n"
-    "                    [--profile NAME] [--size WxH] [--timings FILE.json] [--frames N]\n"
-    "  budget [--profile NAME|all] [--size WxH] [--shadow-map N] [--json]\n"
-    "  graph SCENE.json --dot|--json [--method NAME] [--profile NAME] [--size WxH]\n"
-    "  view SCENE.json [--method NAME] [--profile NAME] [--size WxH] [--frames N]\n"
-    "  bench [--config FILE.json] [--out DIR]\n"
-    "  pattern [--out FILE.png] [--size WxH] [--report FILE.json] [--dot FILE.dot]\n"
-    "common options: --device NAME (or LS_DEVICE), --validation\n"
-    "methods: epipolar (default), brute-force; profiles: high-quality, balanced (default),\n"
-    "high-performance, low-high-quality, low-balanced, low-high-performance\n";
+int run(const std::string& command, host::Args& args) {
+    if (command == "render") return host::runRender(args);
+    if (command == "budget") return host::runBudget(args);
+    if (command == "graph") return host::runGraph(args);
+    if (command == "view") return host::runView(args);
+    if (command == "pattern") return host::runPattern(args);
+    if (command == "bench") return host::runBench(args);
+    std::cerr << "lightscatter: unknown command '" << command
+              << "' (known: render, budget, graph, view, bench, pattern)\n";
+    return 2;
+}
+
+bool asksForHelp(const std::vector<std::string>& words) {
+    for (const std::string& w : words)
+        if (w == "--help" || w == "-h") return true;
+    return false;
+}
 
 }  // namespace
 
 int main(int argc, char** argv) {
     std::vector<std::string> words(argv + 1, argv + argc);
     if (words.empty() || words[0] == "--help" || words[0] == "-h" || words[0] == "help") {
-        std::cout << kUsage;
+        std::cout << host::usage();
         return words.empty() ? 2 : 0;
     }
     const std::string command = words[0];
+    words.erase(words.begin());
+    if (asksForHelp(words) && !host::commandUsage(command).empty()) {
+        std::cout << host::commandUsage(command);
+        return 0;
+    }
     try {
-        host::Args args(std::vector<std::string>(words.begin() + 1, words.end()));
-        int code = 2;
-        if (command == "render") code = host::runRender(args);
-        else if (command == "budget") code = host::runBudget(args);
-        else if (command == "graph") code = host::runGraph(args);
-        else if (command == "view") code = host::runView(args);
-        else if (command == "pattern") code = host::runPattern(args);
-        else if (command == "bench") code = host::runBench(args);
-        else {
-            std::cerr << "lightscatter: unknown command '" << command
-                      << "' (known: render, budget, graph, view, bench, pattern)\n";
-            return 2;
-        }
+        host::Activity running("running lightscatter " + command);
+        host::Args args(words);
+        const int code = run(command, args);
         // The command's device is gone by now: what the layer said while it was destroyed (objects
         // left alive) counts too.
         if (code == 0 && rg::validationMessagesInProcess() > 0) {
@@ -53,8 +58,14 @@ int main(int argc, char** argv) {
             return 3;
         }
         return code;
+    } catch (const std::bad_alloc&) {
+        // Nothing here may allocate: the activity's text was made before memory ran out.
+        std::fputs("lightscatter: out of host memory (an allocation failed) while ", stderr);
+        std::fputs(host::currentActivity(), stderr);
+        std::fputs("\n", stderr);
+        return 1;
     } catch (const std::exception& e) {
-        std::cerr << "lightscatter: " << e.what() << "\n";
+        std::cerr << "lightscatter: " << host::errorLine(e.what()) << "\n";
         return 1;
     }
 }

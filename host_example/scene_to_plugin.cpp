@@ -1,6 +1,8 @@
 #include "scene_to_plugin.h"
 
+#include <cctype>
 #include <cstring>
+#include <utility>
 
 namespace host {
 namespace {
@@ -42,6 +44,50 @@ lightscatter::Light toPluginLight(const LightDesc& l, const glm::mat4& shadowVie
         out.shadowMapSize = l.shadowMapSize;
     }
     return out;
+}
+
+std::string pluginRefusalInSceneTerms(const std::string& message, const std::string& scenePath) {
+    std::string m = message;
+    while (m.rfind("lightscatter: ", 0) == 0) m.erase(0, 14);
+    // Longest first: a phrase, then the fields whose SCENE.json names differ. The matrices are
+    // made by the host from several scene fields, so those are named instead.
+    static const std::pair<const char*, const char*> kTerms[] = {
+        {"camera.projection * camera.view",
+         "the camera made from camera.position, camera.target, camera.up, camera.fovYDegrees, "
+         "camera.near and camera.far"},
+        {"camera.view", "the view made from camera.position, camera.target and camera.up"},
+        {"camera.projection",
+         "the projection made from camera.fovYDegrees, camera.near and camera.far"},
+        {"light.shadowViewProjection",
+         "the shadow map's projection made from the light and the scene's bounds"},
+        {"light.shadowMapSize / shadowMap", "light.shadowMapSize"},
+        {"camera.nearPlane", "camera.near"},
+        {"camera.farPlane", "camera.far"},
+        {"nearPlane", "camera.near"},
+        {"unless infiniteFar", "unless camera.infiniteFar is true"},
+    };
+    const bool aboutTheScene =
+        m.rfind("camera.", 0) == 0 || m.rfind("light.", 0) == 0 || m.rfind("medium.", 0) == 0;
+    if (!aboutTheScene) return "the plugin refused the frame: " + m;
+    std::string out;
+    for (size_t i = 0; i < m.size();) {
+        bool replaced = false;
+        for (const auto& [plugin, scene] : kTerms) {
+            const size_t n = std::strlen(plugin);
+            const bool wordStart = i == 0 || !(std::isalnum(static_cast<unsigned char>(m[i - 1])) ||
+                                               m[i - 1] == '.' || m[i - 1] == '_');
+            const bool wordEnd = i + n >= m.size() ||
+                                 !(std::isalnum(static_cast<unsigned char>(m[i + n])) || m[i + n] == '_');
+            if (wordStart && wordEnd && m.compare(i, n, plugin) == 0) {
+                out += scene;
+                i += n;
+                replaced = true;
+                break;
+            }
+        }
+        if (!replaced) out += m[i++];
+    }
+    return scenePath + ": " + out + " (refused by the plugin)";
 }
 
 lightscatter::Medium toPluginMedium(const MediumDesc& m) {

@@ -1,151 +1,244 @@
 #include "bench_config.h"
 
 #include <filesystem>
-#include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
 #include "cli_args.h"
+#include "scene/input_file.h"
 
 namespace host::bench {
 namespace {
 
 using nlohmann::json;
 
-[[noreturn]] void fail(const std::string& path, const std::string& what) {
-    throw std::runtime_error(path + ": " + what);
-}
+constexpr uint64_t kConfigFileCap = 1 * kMiB;
 
-std::string profileLabel(lightscatter::Profile p) { return lightscatter::profileName(p); }
+// Reads one configuration; every failure names the file and the field. Every run it expands to
+// is checked here, before the benchmark renders anything, so a bad sweep value at the end of a
+// long configuration is found at once rather than hours in.
+class ConfigReader {
+  public:
+    ConfigReader(const std::string& path, const std::string& projectRoot)
+        : path_(path), root_(projectRoot) {}
+
+    BenchConfig read() const {
+        const json j = parse();
+        if (!j.is_object()) fail("the top level must be a JSON object");
+        for (const auto& [key, value] : j.items())
+            if (key != "name" && key != "frames" && key != "warmup" && key != "size" &&
+                key != "scenes" && key != "methods" && key != "profiles" && key != "sweeps")
+                fail("unknown key '" + key +
+                     "' (known: name, frames, warmup, size, scenes, methods, profiles, sweeps)");
+        BenchConfig c;
+        c.name = j.contains("name") ? text(j["name"], "name")
+                                    : std::filesystem::path(path_).stem().string();
+        c.frames = int(whole(j, "frames", 10, 1, 10000));
+        c.warmup = int(whole(j, "warmup", 3, 0, 10000));
+        c.size = size(j.contains("size") ? j["size"] : json("480x270"), "size");
+        if (!j.contains("scenes")) fail("scenes is required");
+        for (const json& s : list(j["scenes"], "scenes")) {
+            std::filesystem::path p = text(s, "scenes[]");
+            if (p.is_relative()) p = std::filesystem::path(root_) / p;
+            c.scenes.push_back(p.string());
+        }
+        if (c.scenes.empty()) fail("scenes is empty");
+        std::vector<lightscatter::Profile> profiles;
+        for (const json& p :
+             list(j.contains("profiles") ? j["profiles"] : json::array({"balanced"}), "profiles")) {
+            const std::string name = text(p, "profiles[]");
+            const auto parsed = lightscatter::parseProfile(name);
+            if (!parsed || *parsed == lightscatter::Profile::Custom)
+                fail("profiles: unknown profile '" + name + "'");
+            profiles.push_back(*parsed);
+        }
+        std::vector<lightscatter::Method> methods;
+        for (const json& m :
+             list(j.contains("methods") ? j["methods"] : json::array({"epipolar", "brute-force"}),
+                  "methods")) {
+            const std::string name = text(m, "methods[]");
+            const auto parsed = lightscatter::parseMethod(name);
+            if (!parsed) fail("methods: unknown method '" + name + "'");
+            methods.push_back(*parsed);
+        }
+        const json sweeps = j.contains("sweeps") ? j["sweeps"] : json::object();
+        if (!sweeps.is_object()) fail("sweeps must be an object");
+        for (const auto& [key, value] : sweeps.items())
+            if (key != "slices" && key != "samples" && key != "initialStep" &&
+                key != "shadowMapSize" && key != "size" && key != "minMaxTrees")
+                fail("sweeps: unknown key '" + key +
+                     "' (known: slices, samples, initialStep, shadowMapSize, size, minMaxTrees)");
+        for (const std::string& scene : c.scenes) expand(c, scene, methods, profiles, sweeps);
+        return c;
+    }
+
+  private:
+    [[noreturn]] void fail(const std::string& what) const {
+        throw std::runtime_error(path_ + ": " + what);
+    }
+
+    json parse() const {
+        std::string bytes;
+        try {
+            bytes = readInputFile(path_, "benchmark configuration", kConfigFileCap);
+        } catch (const InputFileError& e) {
+            throw std::runtime_error(e.what());
+        }
+        try {
+            return json::parse(bytes);
+        } catch (const json::exception& e) {
+            fail(std::string("malformed JSON: ") + e.what());
+        }
+    }
+
+    std::string text(const json& v, const std::string& name) const {
+        if (!v.is_string()) fail(name + " must be a string");
+        return v.get<std::string>();
+    }
+
+    // By value: callers pass temporaries (a default list) and iterate over the result.
+    json list(const json& v, const std::string& name) const {
+        if (!v.is_array()) fail(name + " must be an array");
+        return v;
+    }
+
+    // A whole number in [lo, hi]: nlohmann's get<int> would wrap 4294967297 around to 1.
+    uint32_t whole(const json& v, const std::string& name, uint32_t lo, uint32_t hi) const {
+        const bool negative =
+            v.is_number_integer() && !v.is_number_unsigned() && v.get<int64_t>() < 0;
+        if (!v.is_number_integer() || negative || v.get<uint64_t>() < lo || v.get<uint64_t>() > hi)
+            fail(name + " = " + v.dump() + ": must be a whole number from " + std::to_string(lo) +
+                 " to " + std::to_string(hi));
+        return uint32_t(v.get<uint64_t>());
+    }
+
+    uint32_t whole(const json& object, const char* key, uint32_t fallback, uint32_t lo,
+                   uint32_t hi) const {
+        return object.contains(key) ? whole(object[key], key, lo, hi) : fallback;
+    }
+
+    VkExtent2D size(const json& v, const std::string& name) const {
+        try {
+            return parseSize(text(v, name), name);
+        } catch (const std::runtime_error& e) {
+            const std::string why = e.what();
+            if (why.rfind(path_ + ": ", 0) == 0) throw;
+            fail(why);
+        }
+    }
+
+    // The plugin's rules for settings, applied without a GPU through its budget.
+    void checkSettings(const BenchRun& r, const std::string& where) const {
+        try {
+            (void)lightscatter::budget(lightscatter::Profile::Custom, 64, 64, 64,
+                                       lightscatter::LightType::Spot, &r.settings);
+        } catch (const lightscatter::InvalidInput& e) {
+            std::string why = e.what();
+            for (const char* prefix : {"lightscatter: ", "settings."})
+                if (why.rfind(prefix, 0) == 0) why.erase(0, std::char_traits<char>::length(prefix));
+            fail(where + " (run '" + r.label + "'): " + why);
+        }
+    }
+
+    void expand(BenchConfig& c, const std::string& scene,
+                const std::vector<lightscatter::Method>& methods,
+                const std::vector<lightscatter::Profile>& profiles, const json& sweeps) const {
+        BenchRun base;
+        base.scene = scene;
+        base.size = c.size;
+        base.measureError = true;
+        for (lightscatter::Method m : methods) {
+            if (m == lightscatter::Method::BruteForce) {
+                BenchRun r = base;
+                r.method = m;
+                r.family = "profiles";
+                r.label = "brute-force";
+                c.runs.push_back(r);
+                continue;
+            }
+            for (lightscatter::Profile p : profiles) {
+                BenchRun r = base;
+                r.method = m;
+                r.profile = p;
+                r.family = "profiles";
+                r.label = std::string("epipolar ") + lightscatter::profileName(p);
+                c.runs.push_back(r);
+            }
+        }
+        // One-parameter sweeps from the balanced profile.
+        auto balanced = [&](const std::string& family, const std::string& label) {
+            BenchRun r = base;
+            r.family = family;
+            r.label = label;
+            r.custom = true;
+            r.settings = lightscatter::profileSettings(lightscatter::Profile::Balanced);
+            return r;
+        };
+        constexpr uint32_t kMax = std::numeric_limits<uint32_t>::max();
+        auto values = [&](const char* key) {
+            return sweeps.contains(key) ? list(sweeps[key], std::string("sweeps.") + key)
+                                        : json::array();
+        };
+        for (const json& v : values("slices")) {
+            const uint32_t n = whole(v, "sweeps.slices[]", 0, kMax);
+            BenchRun r = balanced("slices", "slices=" + std::to_string(n));
+            r.settings.slices = n;
+            checkSettings(r, "sweeps.slices");
+            c.runs.push_back(r);
+        }
+        for (const json& v : values("samples")) {
+            const uint32_t n = whole(v, "sweeps.samples[]", 0, kMax);
+            BenchRun r = balanced("samples", "samples=" + std::to_string(n));
+            r.settings.samplesPerSlice = n;
+            checkSettings(r, "sweeps.samples");
+            c.runs.push_back(r);
+        }
+        for (const json& v : values("initialStep")) {
+            const uint32_t n = whole(v, "sweeps.initialStep[]", 0, kMax);
+            BenchRun r = balanced("initialStep", "initialStep=" + std::to_string(n));
+            r.settings.initialSampleStep = n;
+            checkSettings(r, "sweeps.initialStep");
+            c.runs.push_back(r);
+        }
+        for (const json& v : values("minMaxTrees")) {
+            if (!v.is_boolean())
+                fail("sweeps.minMaxTrees[] = " + v.dump() + ": must be true or false");
+            BenchRun r =
+                balanced("trees", std::string("minMaxTrees=") + (v.get<bool>() ? "on" : "off"));
+            r.settings.minMaxTrees = v.get<bool>();
+            c.runs.push_back(r);
+        }
+        for (const json& v : values("shadowMapSize")) {
+            const uint32_t n = whole(v, "sweeps.shadowMapSize[]", 1, 16384);
+            for (lightscatter::Method m : methods) {
+                BenchRun r = balanced("shadowMapSize", std::string(lightscatter::methodName(m)) +
+                                                           " shadowMap=" + std::to_string(n));
+                r.method = m;
+                r.shadowMapSize = n;
+                c.runs.push_back(r);
+            }
+        }
+        for (const json& v : values("size")) {
+            const VkExtent2D s = size(v, "sweeps.size[]");
+            for (lightscatter::Method m : methods) {
+                BenchRun r = balanced("size", std::string(lightscatter::methodName(m)) +
+                                                  " size=" + v.get<std::string>());
+                r.method = m;
+                r.size = s;
+                r.measureError = r.size.width == c.size.width && r.size.height == c.size.height;
+                c.runs.push_back(r);
+            }
+        }
+    }
+
+    std::string path_, root_;
+};
 
 }  // namespace
 
 BenchConfig loadBenchConfig(const std::string& path, const std::string& projectRoot) {
-    std::ifstream in(path);
-    if (!in) fail(path, "cannot open the benchmark configuration");
-    json j;
-    try {
-        j = json::parse(in);
-    } catch (const json::exception& e) {
-        fail(path, std::string("malformed JSON: ") + e.what());
-    }
-    for (const auto& [key, value] : j.items())
-        if (key != "name" && key != "frames" && key != "warmup" && key != "size" && key != "scenes" &&
-            key != "methods" && key != "profiles" && key != "sweeps")
-            fail(path, "unknown key '" + key + "' (known: name, frames, warmup, size, scenes, methods, profiles, sweeps)");
-    BenchConfig c;
-    try {
-        c.name = j.value("name", std::filesystem::path(path).stem().string());
-        c.frames = j.value("frames", 10);
-        c.warmup = j.value("warmup", 3);
-        if (c.frames < 1 || c.frames > 10000) fail(path, "frames must be in [1, 10000]");
-        if (c.warmup < 0 || c.warmup > 10000) fail(path, "warmup must be in [0, 10000]");
-        c.size = parseSize(j.value("size", std::string("480x270")), "size");
-        for (const auto& s : j.at("scenes")) {
-            std::filesystem::path p = s.get<std::string>();
-            if (p.is_relative()) p = std::filesystem::path(projectRoot) / p;
-            c.scenes.push_back(p.string());
-        }
-        std::vector<lightscatter::Profile> profiles;
-        for (const auto& p : j.value("profiles", json::array({"balanced"}))) {
-            const auto parsed = lightscatter::parseProfile(p.get<std::string>());
-            if (!parsed || *parsed == lightscatter::Profile::Custom)
-                fail(path, "profiles: unknown profile '" + p.get<std::string>() + "'");
-            profiles.push_back(*parsed);
-        }
-        std::vector<lightscatter::Method> methods;
-        for (const auto& m : j.value("methods", json::array({"epipolar", "brute-force"}))) {
-            const auto parsed = lightscatter::parseMethod(m.get<std::string>());
-            if (!parsed) fail(path, "methods: unknown method '" + m.get<std::string>() + "'");
-            methods.push_back(*parsed);
-        }
-        const json sweeps = j.value("sweeps", json::object());
-        for (const auto& [key, value] : sweeps.items())
-            if (key != "slices" && key != "samples" && key != "initialStep" && key != "shadowMapSize" &&
-                key != "size" && key != "minMaxTrees")
-                fail(path, "sweeps: unknown key '" + key + "'");
-
-        for (const std::string& scene : c.scenes) {
-            BenchRun base;
-            base.scene = scene;
-            base.size = c.size;
-            base.measureError = true;
-            for (lightscatter::Method m : methods) {
-                if (m == lightscatter::Method::BruteForce) {
-                    BenchRun r = base;
-                    r.method = m;
-                    r.family = "profiles";
-                    r.label = "brute-force";
-                    c.runs.push_back(r);
-                    continue;
-                }
-                for (lightscatter::Profile p : profiles) {
-                    BenchRun r = base;
-                    r.method = m;
-                    r.profile = p;
-                    r.family = "profiles";
-                    r.label = "epipolar " + profileLabel(p);
-                    c.runs.push_back(r);
-                }
-            }
-            // One-parameter sweeps from the balanced profile.
-            auto balanced = [&](const std::string& family, const std::string& label) {
-                BenchRun r = base;
-                r.family = family;
-                r.label = label;
-                r.custom = true;
-                r.settings = lightscatter::profileSettings(lightscatter::Profile::Balanced);
-                return r;
-            };
-            if (sweeps.contains("slices"))
-                for (const auto& v : sweeps["slices"]) {
-                    BenchRun r = balanced("slices", "slices=" + std::to_string(v.get<int>()));
-                    r.settings.slices = v.get<uint32_t>();
-                    c.runs.push_back(r);
-                }
-            if (sweeps.contains("samples"))
-                for (const auto& v : sweeps["samples"]) {
-                    BenchRun r = balanced("samples", "samples=" + std::to_string(v.get<int>()));
-                    r.settings.samplesPerSlice = v.get<uint32_t>();
-                    c.runs.push_back(r);
-                }
-            if (sweeps.contains("initialStep"))
-                for (const auto& v : sweeps["initialStep"]) {
-                    BenchRun r = balanced("initialStep", "initialStep=" + std::to_string(v.get<int>()));
-                    r.settings.initialSampleStep = v.get<uint32_t>();
-                    c.runs.push_back(r);
-                }
-            if (sweeps.contains("minMaxTrees"))
-                for (const auto& v : sweeps["minMaxTrees"]) {
-                    BenchRun r = balanced("trees", std::string("minMaxTrees=") + (v.get<bool>() ? "on" : "off"));
-                    r.settings.minMaxTrees = v.get<bool>();
-                    c.runs.push_back(r);
-                }
-            if (sweeps.contains("shadowMapSize"))
-                for (const auto& v : sweeps["shadowMapSize"])
-                    for (lightscatter::Method m : methods) {
-                        BenchRun r = balanced("shadowMapSize", std::string(lightscatter::methodName(m)) +
-                                                                   " shadowMap=" + std::to_string(v.get<int>()));
-                        r.method = m;
-                        r.shadowMapSize = v.get<uint32_t>();
-                        c.runs.push_back(r);
-                    }
-            if (sweeps.contains("size"))
-                for (const auto& v : sweeps["size"])
-                    for (lightscatter::Method m : methods) {
-                        BenchRun r = balanced("size", std::string(lightscatter::methodName(m)) + " size=" +
-                                                          v.get<std::string>());
-                        r.method = m;
-                        r.size = parseSize(v.get<std::string>(), "sweeps.size");
-                        r.measureError = r.size.width == c.size.width && r.size.height == c.size.height;
-                        c.runs.push_back(r);
-                    }
-        }
-    } catch (const json::exception& e) {
-        fail(path, std::string("a field has the wrong type: ") + e.what());
-    }
-    if (c.scenes.empty()) fail(path, "scenes is empty");
-    return c;
+    return ConfigReader(path, projectRoot).read();
 }
 
 }  // namespace host::bench

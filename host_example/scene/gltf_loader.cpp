@@ -15,8 +15,10 @@
 #include <iterator>
 #include <limits>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <optional>
 
+#include "scene/input_file.h"
 #include "scene/scene.h"
 
 namespace host {
@@ -28,6 +30,8 @@ constexpr uint32_t kGlbBin = 0x004E4942u;    // "BIN\0"
 // Beyond this an accessor is refused before anything is allocated for it: a malformed count must
 // not turn into a multi-gigabyte allocation.
 constexpr size_t kMaxElements = size_t{1} << 28;
+// A .gltf/.glb, and each buffer or image it references, is read whole; beyond this it is refused.
+constexpr uint64_t kGltfFileCap = 2 * kGiB;
 
 [[noreturn]] void fail(const std::string& path, const std::string& what) {
     throw SceneError(path + ": " + what);
@@ -53,15 +57,13 @@ std::string plural(size_t n, const std::string& noun, const std::string& nouns =
 }
 
 std::vector<unsigned char> readFile(const std::string& path) {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) fail(path, "file not found");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) fail(path, "cannot be opened");
-    std::vector<unsigned char> bytes{std::istreambuf_iterator<char>(in),
-                                     std::istreambuf_iterator<char>()};
-    if (in.bad()) fail(path, "read error");
-    if (bytes.size() > std::numeric_limits<uint32_t>::max()) fail(path, "larger than 4 GiB");
-    return bytes;
+    std::string text;
+    try {
+        text = readInputFile(path, "glTF file", kGltfFileCap);
+    } catch (const InputFileError& e) {
+        throw SceneError(e.what());
+    }
+    return {text.begin(), text.end()};
 }
 
 uint32_t readU32(const std::vector<unsigned char>& bytes, size_t at) {
@@ -95,11 +97,110 @@ void checkGlbLayout(const std::string& path, const std::vector<unsigned char>& b
 }
 
 // Images tinygltf could not decode are recorded here instead of failing the whole file: a
-// material whose texture is unreadable still renders with its base color factor.
+// material whose texture is unreadable still renders with its base color factor. The files it
+// reads for buffers and images go through readInputFile, so they obey the same rules as the glTF.
 struct ImageLoadContext {
     const tinygltf::Model* model = nullptr;
     std::map<int, std::string> failures;  // image index -> why it has no pixels
+    std::vector<std::string> files;       // every external file read
+    std::string readFailure;              // the first external file that could not be read
 };
+
+// Whatever exists is reported as existing, so that the read below says why it cannot be used
+// (a directory, a device) instead of tinygltf's "file not found".
+bool anythingExists(const std::string& path, void*) {
+    std::error_code ec;
+    return std::filesystem::exists(path, ec);
+}
+
+// tinygltf's default expands "~" and shell variables (wordexp); a URI is a path, nothing more.
+std::string pathAsWritten(const std::string& path, void*) {
+    return path;
+}
+
+bool readReferencedFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                        void* user) {
+    auto& context = *static_cast<ImageLoadContext*>(user);
+    try {
+        const std::string bytes = readInputFile(path, "file referenced by the glTF", kGltfFileCap);
+        out->assign(bytes.begin(), bytes.end());
+        context.files.push_back(path);
+        return true;
+    } catch (const InputFileError& e) {
+        if (context.readFailure.empty()) context.readFailure = e.what();
+        if (err) *err = e.what();
+        return false;
+    }
+}
+
+bool refuseToWrite(std::string*, const std::string&, const std::vector<unsigned char>&, void*) {
+    return false;
+}
+
+// Extensions whose data this loader reads. Any other listed in extensionsRequired changes what
+// the file means in a way it would get wrong, so the file is refused.
+bool implemented(const std::string& extension) {
+    return extension == "KHR_mesh_quantization";
+}
+
+// Extensions on a primitive that replace its geometry: without them its accessors may be empty
+// (Draco) or hold something else, so they are refused even when not listed as required.
+bool replacesGeometry(const std::string& extension) {
+    return extension == "KHR_draco_mesh_compression";
+}
+
+std::string extensionLabel(const std::string& extension) {
+    return extension == "KHR_draco_mesh_compression" ? extension + " (Draco mesh compression)"
+                                                     : extension;
+}
+
+// Checked on the JSON itself before tinygltf parses it: tinygltf fails on a Draco file's
+// accessors with "accessor[0] invalid bufferView", and reads glTF 1.0 as a broken 2.0 file.
+void checkDocument(const std::string& path, const unsigned char* text, size_t size) {
+    const nlohmann::json doc = nlohmann::json::parse(text, text + size, nullptr, false);
+    if (doc.is_discarded() || !doc.is_object()) return;  // tinygltf names the JSON error
+    if (auto asset = doc.find("asset"); asset != doc.end() && asset->is_object()) {
+        if (auto version = asset->find("version"); version != asset->end()) {
+            const std::string v =
+                version->is_string() ? version->get<std::string>() : version->dump();
+            if (v.rfind("2.", 0) != 0 && v != "2") {
+                fail(path, "glTF version " + v + ": this loader reads glTF 2.0 only");
+            }
+        }
+    }
+    if (auto required = doc.find("extensionsRequired");
+        required != doc.end() && required->is_array()) {
+        for (const auto& name : *required) {
+            if (name.is_string() && !implemented(name.get<std::string>())) {
+                fail(path, "requires glTF extension " + extensionLabel(name.get<std::string>()) +
+                               ", which this loader does not implement");
+            }
+        }
+    }
+    auto meshes = doc.find("meshes");
+    if (meshes == doc.end() || !meshes->is_array()) return;
+    for (size_t m = 0; m < meshes->size(); ++m) {
+        const auto& mesh = (*meshes)[m];
+        auto primitives = mesh.is_object() ? mesh.find("primitives") : mesh.end();
+        if (!mesh.is_object() || primitives == mesh.end() || !primitives->is_array()) continue;
+        for (size_t p = 0; p < primitives->size(); ++p) {
+            const auto& primitive = (*primitives)[p];
+            auto extensions =
+                primitive.is_object() ? primitive.find("extensions") : primitive.end();
+            if (!primitive.is_object() || extensions == primitive.end() ||
+                !extensions->is_object()) {
+                continue;
+            }
+            for (const auto& item : extensions->items()) {
+                if (replacesGeometry(item.key())) {
+                    fail(path, "mesh " + std::to_string(m) + " primitive " + std::to_string(p) +
+                                   " uses glTF extension " + extensionLabel(item.key()) +
+                                   ", which this loader does not implement");
+                }
+            }
+        }
+    }
+}
 
 bool bufferViewInBounds(const tinygltf::Model& model, int view) {
     if (view < 0 || size_t(view) >= model.bufferViews.size()) return false;
@@ -280,6 +381,7 @@ struct AppendMark {
           materials(m.materials.size()),
           textures(m.textures.size()),
           warnings(m.warnings.size()),
+          files(m.files.size()),
           bounds(m.bounds) {}
     void undo(MeshData& m) const {
         m.vertices.resize(vertices);
@@ -288,9 +390,10 @@ struct AppendMark {
         m.materials.resize(materials);
         m.textures.resize(textures);
         m.warnings.resize(warnings);
+        m.files.resize(files);
         m.bounds = bounds;
     }
-    size_t vertices, indices, primitives, materials, textures, warnings;
+    size_t vertices, indices, primitives, materials, textures, warnings, files;
     Bounds bounds;
 };
 
@@ -311,7 +414,6 @@ class GltfFlattener {
         : mesh_(mesh), path_(path), model_(model), images_(images) {}
 
     void run(const glm::mat4& transform) {
-        checkRequiredExtensions();
         materialBase_ = mesh_.materials.size();
         for (size_t i = 0; i < model_.materials.size(); ++i) addMaterial(i);
         meshes_.resize(model_.meshes.size());
@@ -319,14 +421,6 @@ class GltfFlattener {
     }
 
   private:
-    void checkRequiredExtensions() const {
-        for (const std::string& name : model_.extensionsRequired) {
-            if (name != "KHR_mesh_quantization") {
-                fail(path_, "requires extension " + name + ", which this loader does not support");
-            }
-        }
-    }
-
     void addMaterial(size_t index) {
         const tinygltf::Material& source = model_.materials[index];
         const std::string where = "material " + std::to_string(index);
@@ -523,9 +617,6 @@ class GltfFlattener {
         const tinygltf::Primitive& source = model_.meshes[meshIndex].primitives[primitiveIndex];
         const std::string where =
             "mesh " + std::to_string(meshIndex) + " primitive " + std::to_string(primitiveIndex);
-        if (source.extensions.count("KHR_draco_mesh_compression") != 0) {
-            fail(path_, where + " uses KHR_draco_mesh_compression, which is not supported");
-        }
         const int mode = source.mode < 0 ? TINYGLTF_MODE_TRIANGLES : source.mode;
         if (mode < TINYGLTF_MODE_POINTS || mode > TINYGLTF_MODE_TRIANGLE_FAN) {
             fail(path_, where + " has mode " + std::to_string(mode) + ", which is not a glTF mode");
@@ -795,20 +886,31 @@ void appendGltf(MeshData& mesh, const std::string& path, const glm::mat4& transf
     images.model = &model;
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(loadImageLeniently, &images);
+    tinygltf::FsCallbacks files;
+    files.FileExists = anythingExists;
+    files.ExpandFilePath = pathAsWritten;
+    files.ReadWholeFile = readReferencedFile;
+    files.WriteWholeFile = refuseToWrite;
+    files.user_data = &images;
+    loader.SetFsCallbacks(files);
     std::string err, warn;
     bool ok;
     if (isGlb(bytes)) {
         checkGlbLayout(path, bytes);
+        checkDocument(path, bytes.data() + 20, readU32(bytes, 12));
         ok = loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), uint32_t(bytes.size()),
                                          baseDir);
     } else {
         if (std::filesystem::path(path).extension() == ".glb") {
             fail(path, "not a GLB file (no glTF magic)");
         }
+        checkDocument(path, bytes.data(), bytes.size());
         ok = loader.LoadASCIIFromString(&model, &err, &warn,
                                         reinterpret_cast<const char*>(bytes.data()),
                                         uint32_t(bytes.size()), baseDir);
     }
+    // A required buffer that could not be read: its own reason, not tinygltf's wrapping of it.
+    if (!ok && !images.readFailure.empty()) fail(path, images.readFailure);
     if (!ok) fail(path, "invalid glTF: " + (err.empty() ? "unknown error" : oneLine(err)));
 
     // All or nothing: a file that fails halfway leaves `mesh` as it was.
@@ -819,6 +921,8 @@ void appendGltf(MeshData& mesh, const std::string& path, const glm::mat4& transf
             if (!oneLine(text).empty()) mesh.warnings.push_back(path + ": " + oneLine(text));
         }
         GltfFlattener(mesh, path, model, images).run(transform);
+        mesh.files.push_back(path);
+        mesh.files.insert(mesh.files.end(), images.files.begin(), images.files.end());
     } catch (...) {
         before.undo(mesh);
         throw;

@@ -55,6 +55,7 @@ struct MeshData {
     std::vector<Texture> textures;
     Bounds bounds;
     std::vector<std::string> warnings;  // e.g. a missing texture that fell back to its factor
+    std::vector<std::string> files;     // every file read: each glTF and its buffers and images
 };
 
 // Appends the default scene of a .gltf or .glb file (node hierarchy and transforms applied, then

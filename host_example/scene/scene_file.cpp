@@ -3,20 +3,25 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 #include <initializer_list>
-#include <iterator>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "activity.h"
+#include "scene/input_file.h"
 #include "scene/scene.h"
 
 namespace host {
 namespace {
 
 using nlohmann::json;
+
+constexpr uint64_t kSceneFileCap = 16 * kMiB;
+// The renderer works in single precision: beyond this a coordinate's square overflows, and the
+// view direction and every distance computed from it would be infinite.
+constexpr double kMaxCoordinate = 1e18;
 
 // The shortest text that reads back as the same value: "0.1" for 0.1f, not "0.100000001490116".
 template <class T>
@@ -64,11 +69,12 @@ class SceneReader {
     [[noreturn]] void fail(const std::string& what) const { throw SceneError(path_ + ": " + what); }
 
     json parse() const {
-        std::ifstream in(path_, std::ios::binary);
-        std::error_code ec;
-        if (!in || std::filesystem::is_directory(path_, ec)) fail("cannot open the scene file");
-        const std::string text{std::istreambuf_iterator<char>(in),
-                               std::istreambuf_iterator<char>()};
+        std::string text;
+        try {
+            text = readInputFile(path_, "scene file", kSceneFileCap);
+        } catch (const InputFileError& e) {
+            throw SceneError(e.what());
+        }
         // nlohmann keeps the last of two equal keys; a repeated field is as likely a mistake as
         // a misspelt one, so it is refused too.
         std::vector<std::set<std::string>> keysOfOpenObjects;
@@ -123,21 +129,32 @@ class SceneReader {
         return d;
     }
 
+    // What a value becomes as the float it is stored in, for messages about values that are in
+    // range as written but not once rounded (1e-50 becomes 0).
+    static std::string rounding(double written, float stored) {
+        return double(stored) == written ? ""
+                                         : " (it is " + format(stored) + " in single precision)";
+    }
+
     float positive(const json& v, const std::string& name) const {
         const double x = number(v, name);
-        if (!(x > 0.0)) fail(name + " = " + format(x) + ": must be > 0");
-        return float(x);
+        const float f = float(x);
+        if (!(f > 0.0f))
+            fail(name + " = " + format(x) + ": must be > 0" + (x > 0.0 ? rounding(x, f) : ""));
+        return f;
     }
 
     // In (lo, hi), or (lo, hi] when `closedHigh`.
     float inRange(const json& v, const std::string& name, double lo, double hi,
                   bool closedHigh) const {
         const double x = number(v, name);
-        if (!(x > lo && (x < hi || (closedHigh && x == hi)))) {
+        const float f = float(x);
+        auto inside = [&](double d) { return d > lo && (d < hi || (closedHigh && d == hi)); };
+        if (!inside(f)) {
             fail(name + " = " + format(x) + ": must be in (" + format(lo) + ", " + format(hi) +
-                 (closedHigh ? "]" : ")"));
+                 (closedHigh ? "]" : ")") + (inside(x) ? rounding(x, f) : ""));
         }
-        return float(x);
+        return f;
     }
 
     glm::vec3 vec3(const json& v, const std::string& name) const {
@@ -161,10 +178,12 @@ class SceneReader {
     }
 
     glm::vec3 direction(const json& v, const std::string& name) const {
-        const glm::vec3 out = vec3(v, name);
-        const float length = glm::length(out);
-        if (!(length > 0.0f) || !std::isfinite(length)) fail(name + " has zero length");
-        return out / length;
+        // The length in double: a float's square overflows from about 1.8e19 on, which would
+        // call [1e20, 0, 0] a zero vector.
+        const glm::dvec3 out(vec3(v, name));
+        const double length = glm::length(out);
+        if (!(length > 0.0)) fail(name + " has zero length");
+        return glm::vec3(out / length);
     }
 
     bool boolean(const json& v, const std::string& name) const {
@@ -197,9 +216,9 @@ class SceneReader {
         if (file.is_relative()) file = std::filesystem::path(path_).parent_path() / file;
         std::error_code ec;
         file = std::filesystem::absolute(file, ec).lexically_normal();
-        if (ec || !std::filesystem::is_regular_file(file, ec)) {
-            fail(name + " '" + text + "' does not exist (looked for " + file.string() + ")");
-        }
+        const std::string why = ec ? "cannot be resolved" : whyNotARegularFile(file.string());
+        if (!why.empty())
+            fail(name + " '" + text + "' " + why + " (looked for " + file.string() + ")");
         return file.string();
     }
 
@@ -263,12 +282,29 @@ class SceneReader {
             fail("camera.far = " + format(camera.farPlane) + ": must be > camera.near (" +
                  format(camera.nearPlane) + ") unless camera.infiniteFar is true");
         }
-        const glm::vec3 view = camera.target - camera.position;
-        if (!(glm::length(view) > 0.0f)) {
+        checkCameraPlacement(camera);
+    }
+
+    // In double precision, so that the message names the real problem rather than what float
+    // overflow makes of it (a camera at 1e20 would otherwise have an "up parallel to the view").
+    void checkCameraPlacement(const CameraDesc& camera) const {
+        for (const auto& [point, name] : {std::pair{camera.position, "camera.position"},
+                                          std::pair{camera.target, "camera.target"}}) {
+            for (int i = 0; i < 3; ++i) {
+                if (std::fabs(double(point[i])) > kMaxCoordinate) {
+                    fail(std::string(name) + "[" + std::to_string(i) + "] = " + format(point[i]) +
+                         ": must be within +-" + format(kMaxCoordinate) +
+                         " (the renderer works in single precision)");
+                }
+            }
+        }
+        const glm::dvec3 view = glm::dvec3(camera.target) - glm::dvec3(camera.position);
+        if (!(glm::length(view) > 0.0)) {
             fail("camera.target equals camera.position: the view direction has zero length");
         }
-        const float sine = glm::length(glm::cross(glm::normalize(view), glm::normalize(camera.up)));
-        if (!(sine > 1e-6f)) fail("camera.up is parallel to the view direction");
+        const glm::dvec3 up(camera.up);
+        const double sine = glm::length(glm::cross(glm::normalize(view), glm::normalize(up)));
+        if (!(sine > 1e-6)) fail("camera.up is parallel to the view direction");
     }
 
     void readLight(const json& v, LightDesc& light) const {
@@ -333,12 +369,16 @@ class SceneReader {
 }  // namespace
 
 SceneDesc loadSceneFile(const std::string& path) {
+    Activity reading("reading " + path);
     return SceneReader(path).read();
 }
 
 MeshData loadSceneMeshes(const SceneDesc& scene) {
     MeshData mesh;
-    for (const ModelInstance& model : scene.models) appendGltf(mesh, model.path, model.transform);
+    for (const ModelInstance& model : scene.models) {
+        Activity loading("loading " + model.path);
+        appendGltf(mesh, model.path, model.transform);
+    }
     return mesh;
 }
 

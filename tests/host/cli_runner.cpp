@@ -1,9 +1,13 @@
 #include "cli_runner.h"
 
+#include <gtest/gtest.h>
 #include <sys/wait.h>
+
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 
 namespace cli_test {
 
@@ -37,6 +41,26 @@ std::string scene(const std::string& name) {
 
 bool exists(const std::string& path) {
     return std::filesystem::exists(std::filesystem::path(scratch()) / path);
+}
+
+std::string path(const std::string& name) {
+    return (std::filesystem::path(scratch()) / name).string();
+}
+
+void writeFile(const std::string& name, const std::string& text) {
+    std::ofstream(path(name)) << text;
+}
+
+void expectFailure(const Result& r, const std::string& fragment) {
+    EXPECT_NE(r.exitCode, 0) << r.out;
+    EXPECT_NE(r.out.find(fragment), std::string::npos) << r.out;
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+    EXPECT_EQ(r.out.find("lightscatter: lightscatter:"), std::string::npos) << r.out;
+}
+
+void expectNoTemporaries() {
+    for (const auto& e : std::filesystem::recursive_directory_iterator(scratch()))
+        EXPECT_EQ(e.path().string().find(".partial"), std::string::npos) << e.path();
 }
 
 }  // namespace cli_test

@@ -15,5 +15,11 @@ Result run(const std::string& arguments, const std::string& prefix = "");
 const std::string& scratch();
 std::string scene(const std::string& name);  // absolute path of scenes/<name>.json
 bool exists(const std::string& path);
+std::string path(const std::string& name);  // absolute path of `name` in scratch()
+void writeFile(const std::string& name, const std::string& text);  // in scratch()
+// One line of output naming `fragment`, and a failing exit code.
+void expectFailure(const Result& r, const std::string& fragment);
+// No "*.partial" temporary anywhere in scratch().
+void expectNoTemporaries();
 
 }  // namespace cli_test

@@ -12,6 +12,7 @@
 #include "image_io.h"
 
 using cli_test::exists;
+using cli_test::expectFailure;
 using cli_test::run;
 using cli_test::scene;
 
@@ -23,13 +24,6 @@ std::string path(const std::string& name) {
 
 void writeFile(const std::string& name, const std::string& text) {
     std::ofstream(path(name)) << text;
-}
-
-// One line of output, naming `fragment`, and a failing exit code.
-void expectFailure(const cli_test::Result& r, const std::string& fragment) {
-    EXPECT_NE(r.exitCode, 0) << r.out;
-    EXPECT_NE(r.out.find(fragment), std::string::npos) << r.out;
-    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // Khronos models from Debian's assimp-testmodels. Expected values are worked out by hand in the
 // comments, never by calling the loader's own helpers.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -571,7 +572,103 @@ TEST_F(GltfTest, AnImageViewOutsideItsBufferFallsBackToo) {
 
 TEST_F(GltfTest, MissingFile) {
     const std::string file = path("nope.gltf");
-    EXPECT_EQ(errorOf(file), file + ": file not found");
+    EXPECT_EQ(errorOf(file), file + ": glTF file does not exist");
+}
+
+// A glTF, or a buffer it references, that never ends (a device, a FIFO) used to hang and eat
+// memory; a directory used to be "not found".
+TEST_F(GltfTest, OnlyRegularFilesUpToTheCapAreRead) {
+    EXPECT_EQ(errorOf("/dev/zero"),
+              "/dev/zero: glTF file is a character device, not a regular file");
+    EXPECT_EQ(errorOf(dir_.string()), dir_.string() + ": glTF file is a directory");
+    const std::string huge = path("huge.glb");
+    writeBytes(huge, "glTF");
+    fs::resize_file(huge, (uintmax_t{2} << 30) + 1);  // sparse: nothing is written to disk
+    EXPECT_EQ(errorOf(huge), huge + ": glTF file is larger than the 2 GiB read for a glTF file");
+
+    fs::create_symlink("/dev/zero", dir_ / "zero.bin");
+    ASSERT_EQ(::mkfifo(path("fifo.bin").c_str(), 0600), 0);
+    for (const char* uri : {"zero.bin", "fifo.bin"}) {
+        SCOPED_TRACE(uri);
+        GltfBuilder b;
+        b.node({{"mesh", b.mesh({{"POSITION", b.vec3s(kTriangle)}})}});
+        b.scene({0});
+        json d = b.doc;
+        d["buffers"] = {{{"byteLength", b.bin.size()}, {"uri", uri}}};
+        const std::string file = path("external.gltf");
+        writeBytes(file, d.dump());
+        const std::string error = errorOf(file);
+        EXPECT_EQ(error.rfind(file + ": " + path(uri) + ": file referenced by the glTF is a ", 0),
+                  0u)
+            << error;
+        EXPECT_NE(error.find("not a regular file"), std::string::npos) << error;
+    }
+}
+
+TEST_F(GltfTest, TheFilesReadAreListed) {
+    host::MeshData m;
+    host::appendGltf(m, kModels + "BoxTextured-glTF/BoxTextured.gltf");
+    ASSERT_EQ(m.files.size(), 3u);
+    EXPECT_EQ(m.files[0], kModels + "BoxTextured-glTF/BoxTextured.gltf");
+    EXPECT_NE(m.files[1].find("BoxTextured0.bin"), std::string::npos) << m.files[1];
+    EXPECT_NE(m.files[2].find("CesiumLogoFlat.png"), std::string::npos) << m.files[2];
+}
+
+// Draco-compressed primitives have accessors without data; tinygltf used to fail on them with
+// "accessor[0] invalid bufferView" before the extension was looked at.
+TEST_F(GltfTest, UnimplementedExtensionsAreRefusedByName) {
+    GltfBuilder b;
+    b.doc["accessors"] = {{{"componentType", kFloat}, {"count", 3}, {"type", "VEC3"}},
+                          {{"componentType", kUShort}, {"count", 3}, {"type", "SCALAR"}}};
+    json primitive = {
+        {"attributes", {{"POSITION", 0}}},
+        {"indices", 1},
+        {"mode", 4},
+        {"extensions",
+         {{"KHR_draco_mesh_compression", {{"bufferView", 0}, {"attributes", {{"POSITION", 0}}}}}}}};
+    b.doc["meshes"] = {{{"primitives", {primitive}}}};
+    b.doc["bufferViews"] = {{{"buffer", 0}, {"byteLength", 4}}};
+    b.bin = {0, 0, 0, 0};
+    b.node({{"mesh", 0}});
+    b.scene({0});
+    b.doc["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+    const std::string used = b.writeGltf(path("used.gltf"));
+    EXPECT_EQ(errorOf(used), used +
+                                 ": mesh 0 primitive 0 uses glTF extension "
+                                 "KHR_draco_mesh_compression (Draco mesh compression), which "
+                                 "this loader does not implement");
+    b.doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+    const std::string required = b.writeGlb(path("required.glb"));
+    EXPECT_EQ(errorOf(required), required +
+                                     ": requires glTF extension KHR_draco_mesh_compression "
+                                     "(Draco mesh compression), which this loader does not "
+                                     "implement");
+
+    GltfBuilder other;
+    other.node({{"mesh", other.mesh({{"POSITION", other.vec3s(kTriangle)}})}});
+    other.scene({0});
+    other.doc["extensionsUsed"] = {"KHR_texture_transform", "EXT_made_up"};
+    const std::string usedOnly = other.writeGltf(path("used-only.gltf"));
+    EXPECT_EQ(errorOf(usedOnly), "(no error)");  // used but not required: may be ignored
+    other.doc["extensionsRequired"] = {"EXT_made_up"};
+    const std::string madeUp = other.writeGltf(path("made-up.gltf"));
+    EXPECT_EQ(errorOf(madeUp), madeUp +
+                                   ": requires glTF extension EXT_made_up, which this loader "
+                                   "does not implement");
+
+    const std::string corpus = kModels + "draco/2CylinderEngine.gltf";
+    if (fs::exists(corpus)) {
+        EXPECT_EQ(errorOf(corpus), corpus +
+                                       ": requires glTF extension KHR_draco_mesh_compression "
+                                       "(Draco mesh compression), which this loader does not "
+                                       "implement");
+    }
+}
+
+TEST_F(GltfTest, GltfOneIsRefusedByVersion) {
+    const std::string file = path("old.gltf");
+    writeBytes(file, R"({"asset": {"version": "1.0"}, "meshes": {}})");
+    EXPECT_EQ(errorOf(file), file + ": glTF version 1.0: this loader reads glTF 2.0 only");
 }
 
 TEST_F(GltfTest, MalformedJson) {

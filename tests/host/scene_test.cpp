@@ -1,5 +1,6 @@
 // loadSceneFile: every field, the defaults, path resolution, and each rule's one-line error.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -207,7 +208,7 @@ TEST_F(SceneFileTest, FilesThatCannotBeRead) {
         host::loadSceneFile(missing);
         FAIL() << "no error";
     } catch (const host::SceneError& e) {
-        EXPECT_EQ(std::string(e.what()), missing + ": cannot open the scene file");
+        EXPECT_EQ(std::string(e.what()), missing + ": scene file does not exist");
     }
     EXPECT_EQ(errorFor(R"({"camera": })"),
               "malformed JSON at byte 12: [json.exception.parse_error.101] parse error at line 1, "
@@ -218,6 +219,70 @@ TEST_F(SceneFileTest, FilesThatCannotBeRead) {
     EXPECT_EQ(errorFor("[1, 2]"), "the top level must be a JSON object");
     EXPECT_EQ(errorFor(R"({"camera": {}, "camera": {}})"),
               "key 'camera' appears twice in one object");
+}
+
+// The message loadSceneFile throws for the file at `file`, whole.
+std::string sceneErrorOf(const std::string& file) {
+    try {
+        host::loadSceneFile(file);
+    } catch (const host::SceneError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+// A path that never ends (a device, a FIFO) used to hang and eat memory; a directory or a huge
+// file must be refused before anything is read.
+TEST_F(SceneFileTest, OnlyRegularFilesUpToTheCapAreRead) {
+    EXPECT_EQ(sceneErrorOf("/dev/zero"),
+              "/dev/zero: scene file is a character device, not a regular file");
+    EXPECT_EQ(sceneErrorOf(dir_.string()), dir_.string() + ": scene file is a directory");
+    const std::string fifo = (dir_ / "fifo.json").string();
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    EXPECT_EQ(sceneErrorOf(fifo), fifo + ": scene file is a pipe (FIFO), not a regular file");
+    const std::string huge = write("huge.json", "{}");
+    fs::resize_file(huge, (uintmax_t{16} << 20) + 1);  // sparse: nothing is written to disk
+    EXPECT_EQ(sceneErrorOf(huge),
+              huge + ": scene file is larger than the 16 MiB read for a scene file");
+}
+
+TEST_F(SceneFileTest, AGltfPathThatIsNotARegularFileSaysWhatItIs) {
+    fs::create_directories(dir_ / "folder.gltf");
+    EXPECT_EQ(
+        errorFor(R"({"gltf": "folder.gltf"})"),
+        "gltf 'folder.gltf' is a directory (looked for " + (dir_ / "folder.gltf").string() + ")");
+    EXPECT_EQ(errorFor(R"({"models": [{"gltf": "/dev/zero"}]})"),
+              "models[0].gltf '/dev/zero' is a character device, not a regular file (looked for "
+              "/dev/zero)");
+}
+
+// Float overflow used to make a far camera look like an up vector parallel to the view.
+TEST_F(SceneFileTest, AFarCameraIsReportedAsTooFar) {
+    EXPECT_EQ(errorFor(R"({"camera": {"position": [1e20, 0, 0], "target": [0, 0, 0]}})"),
+              "camera.position[0] = 1e+20: must be within +-1e+18 (the renderer works in single "
+              "precision)");
+    EXPECT_EQ(errorFor(R"({"camera": {"position": [0, 0, 0], "target": [0, 0, -3e38]}})"),
+              "camera.target[2] = -3e+38: must be within +-1e+18 (the renderer works in single "
+              "precision)");
+    // Large but representable: a valid camera.
+    EXPECT_EQ(errorFor(R"({"camera": {"position": [1e17, 0, 0], "target": [-1e17, 0, 0]}})"),
+              "(no error)");
+    EXPECT_EQ(errorFor(R"({"light": {"direction": [1e20, 0, 0]}})"), "(no error)");
+    EXPECT_EQ(errorFor(R"({"camera": {"up": [0, 1e30, 0]}})"), "(no error)");
+}
+
+// Values in range as written but not as the floats the plugin receives (1e-50 becomes 0) were
+// refused later by the plugin, in its own field names.
+TEST_F(SceneFileTest, ValuesAreCheckedAsTheFloatsTheyBecome) {
+    EXPECT_EQ(errorFor(R"({"light": {"halfAngleDegrees": 1e-50}})"),
+              "light.halfAngleDegrees = 1e-50: must be in (0, 89] (it is 0 in single precision)");
+    EXPECT_EQ(errorFor(R"({"camera": {"near": 1e-50}})"),
+              "camera.near = 1e-50: must be > 0 (it is 0 in single precision)");
+    EXPECT_EQ(errorFor(R"({"light": {"radius": 1e-46}})"),
+              "light.radius = 1e-46: must be > 0 (it is 0 in single precision)");
+    EXPECT_EQ(errorFor(R"({"camera": {"fovYDegrees": 179.999999999}})"),
+              "camera.fovYDegrees = 179.999999999: must be in (0, 180) (it is 180 in single "
+              "precision)");
 }
 
 TEST_F(SceneFileTest, UnknownKeysAreRefusedWithTheKnownOnes) {

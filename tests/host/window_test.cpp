@@ -4,6 +4,8 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
 
@@ -41,4 +43,30 @@ TEST(Window, OpensRendersResizesAndShowsTheScene) {
     EXPECT_LT(mean, 250.0);
     EXPECT_GT(stddev, 5.0);
     EXPECT_GT(levels, 40);
+}
+
+// The window's tone mapping (shaders/host/tonemap.frag) at an exposure that puts every lit pixel
+// far beyond 1e19: the ACES fit used to overflow there to NaN, which the swapchain stores as black.
+TEST(Window, VeryBrightPixelsStayWhite) {
+    ASSERT_EQ(std::system("command -v xvfb-run > /dev/null"), 0)
+        << "xvfb-run is missing (Debian package xvfb)";
+    std::ifstream in(cli_test::scene("atrium"));
+    nlohmann::json scene = nlohmann::json::parse(in);
+    scene["gltf"] = std::string(LS_SOURCE_DIR) + "/scenes/" + scene["gltf"].get<std::string>();
+    scene["exposure"] = 1e30;
+    const auto dir = std::filesystem::path(cli_test::scratch());
+    std::ofstream(dir / "bright.json") << scene.dump();
+    const auto r = cli_test::run(
+        "view bright.json --size 64x36 --frames 2 --screenshot bright.png"
+        " --validation",
+        "xvfb-run -a -s '-screen 0 640x480x24'");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    int w = 0, h = 0, n = 0;
+    unsigned char* px = stbi_load((dir / "bright.png").string().c_str(), &w, &h, &n, 4);
+    ASSERT_NE(px, nullptr);
+    int white = 0;
+    for (int i = 0; i < w * h; ++i)
+        white += px[i * 4] == 255 && px[i * 4 + 1] == 255 && px[i * 4 + 2] == 255;
+    stbi_image_free(px);
+    EXPECT_EQ(white, w * h);
 }

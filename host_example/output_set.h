@@ -1,0 +1,50 @@
+#pragma once
+// The files one command writes, all or nothing. Each output is checked when it is added, before
+// any rendering: not the same file as another output or as an input, not a directory or device,
+// and its folder writable (a temporary is created there and removed). The results are written to
+// temporaries beside their targets and moved into place only when every one was written; any
+// failure, or a signal, removes the temporaries and leaves the files that were there untouched.
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "temp_files.h"
+
+namespace host {
+
+class OutputSet {
+  public:
+    // Files the command reads: an output that is one of them is refused. `what` names it in the
+    // message ("the scene file", "a glTF file the scene reads").
+    void addInput(const std::string& what, const std::string& path);
+    // `option` names the output in messages ("--out"). Throws when it clashes or cannot be written.
+    void add(const std::string& option, const std::string& path);
+
+    // Writes an added output through `write(temporaryPath)`, which returns false on failure; throws
+    // naming the option, the file and `what` ("PNG").
+    void write(const std::string& path, const std::function<bool(const std::string&)>& write,
+               const std::string& what);
+    void writeText(const std::string& path, const std::string& text);
+    // Moves every output into place; call once all were written.
+    void commit();
+
+  private:
+    struct Input {
+        std::string what, path;
+    };
+    struct Output {
+        std::string option, path;
+        std::unique_ptr<TempFile> temp;
+        bool written = false;
+    };
+    Output& find(const std::string& path);
+    std::vector<Input> inputs_;
+    std::vector<Output> outputs_;
+};
+
+// True when the two paths name the same file: the same inode when both exist, otherwise the same
+// path once made absolute and its symbolic links resolved.
+bool sameFile(const std::string& a, const std::string& b);
+
+}  // namespace host

@@ -1,0 +1,173 @@
+#include "settings_file.h"
+
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <stdexcept>
+
+#include "scene/input_file.h"
+
+namespace host {
+namespace {
+
+using nlohmann::json;
+
+constexpr uint64_t kSettingsFileCap = 1 * kMiB;
+
+constexpr const char* kFields[] = {"slices",
+                                   "samplesPerSlice",
+                                   "initialSampleStep",
+                                   "refinementThreshold",
+                                   "bilateralThreshold",
+                                   "minMaxTrees",
+                                   "shadowFilter",
+                                   "fixup",
+                                   "fixupMaxSteps",
+                                   "shadowDepthBias",
+                                   "interpolation",
+                                   "shadowMapSize"};
+
+std::string knownFields() {
+    std::string s;
+    for (const char* f : kFields) s += (s.empty() ? "" : ", ") + std::string(f);
+    return s;
+}
+
+class SettingsReader {
+  public:
+    explicit SettingsReader(const std::string& path) : path_(path) {}
+
+    lightscatter::Settings read(lightscatter::Settings s) const {
+        const json root = parse();
+        if (!root.is_object()) fail("the top level must be a JSON object of settings");
+        for (const auto& item : root.items()) {
+            const std::string& key = item.key();
+            const json& v = item.value();
+            if (key == "slices")
+                s.slices = whole(v, key);
+            else if (key == "samplesPerSlice")
+                s.samplesPerSlice = whole(v, key);
+            else if (key == "initialSampleStep")
+                s.initialSampleStep = whole(v, key);
+            else if (key == "refinementThreshold")
+                s.refinementThreshold = number(v, key);
+            else if (key == "bilateralThreshold")
+                s.bilateralThreshold = number(v, key);
+            else if (key == "minMaxTrees")
+                s.minMaxTrees = boolean(v, key);
+            else if (key == "shadowFilter")
+                s.shadowFilter = oneOf<lightscatter::ShadowFilter>(
+                    v, key,
+                    {{"bilinear", lightscatter::ShadowFilter::Bilinear},
+                     {"nearest", lightscatter::ShadowFilter::Nearest}});
+            else if (key == "fixup")
+                s.fixup = boolean(v, key);
+            else if (key == "fixupMaxSteps")
+                s.fixupMaxSteps = whole(v, key);
+            else if (key == "shadowDepthBias")
+                s.shadowDepthBias = number(v, key);
+            else if (key == "interpolation")
+                s.interpolation = oneOf<lightscatter::Interpolation>(
+                    v, key,
+                    {{"shadowed-fraction", lightscatter::Interpolation::ShadowedFraction},
+                     {"inscattering", lightscatter::Interpolation::Inscattering}});
+            else if (key == "shadowMapSize") {
+                s.shadowMapSize = whole(v, key);
+                if (s.shadowMapSize < 1 || s.shadowMapSize > 16384)
+                    fail(key + " = " + v.dump() + ": must be from 1 to 16384");
+            } else {
+                fail("unknown key '" + key + "' (known keys: " + knownFields() + ")");
+            }
+        }
+        checkWithThePlugin(s);
+        return s;
+    }
+
+  private:
+    [[noreturn]] void fail(const std::string& what) const {
+        throw std::runtime_error(path_ + ": " + what);
+    }
+
+    json parse() const {
+        std::string text;
+        try {
+            text = readInputFile(path_, "settings file", kSettingsFileCap);
+        } catch (const InputFileError& e) {
+            throw std::runtime_error(e.what());
+        }
+        // A repeated key is as likely a mistake as a misspelt one; nlohmann would keep the last.
+        std::vector<std::set<std::string>> open;
+        auto noDuplicates = [&](int, json::parse_event_t event, json& parsed) {
+            if (event == json::parse_event_t::object_start) open.emplace_back();
+            if (event == json::parse_event_t::object_end) open.pop_back();
+            if (event == json::parse_event_t::key &&
+                !open.back().insert(parsed.get<std::string>()).second)
+                fail("key '" + parsed.get<std::string>() + "' appears twice");
+            return true;
+        };
+        try {
+            return json::parse(text, noDuplicates);
+        } catch (const json::exception& e) {
+            fail(std::string("malformed JSON: ") + e.what());
+        }
+    }
+
+    uint32_t whole(const json& v, const std::string& key) const {
+        const bool negative =
+            v.is_number_integer() && !v.is_number_unsigned() && v.get<int64_t>() < 0;
+        if (!v.is_number_integer() || negative ||
+            v.get<uint64_t>() > std::numeric_limits<uint32_t>::max())
+            fail(key + " = " + v.dump() + ": must be a whole number from 0 to 4294967295");
+        return static_cast<uint32_t>(v.get<uint64_t>());
+    }
+
+    float number(const json& v, const std::string& key) const {
+        if (!v.is_number()) fail(key + " = " + v.dump() + ": must be a number");
+        const double d = v.get<double>();
+        if (!std::isfinite(d) || std::fabs(d) > double(std::numeric_limits<float>::max()))
+            fail(key + " = " + v.dump() + ": must be a finite number");
+        return static_cast<float>(d);
+    }
+
+    bool boolean(const json& v, const std::string& key) const {
+        if (!v.is_boolean()) fail(key + " = " + v.dump() + ": must be true or false");
+        return v.get<bool>();
+    }
+
+    template <class Enum>
+    Enum oneOf(const json& v, const std::string& key,
+               std::initializer_list<std::pair<const char*, Enum>> choices) const {
+        std::string names;
+        for (const auto& [word, value] : choices) {
+            if (v.is_string() && v.get<std::string>() == word) return value;
+            names += (names.empty() ? "" : ", ") + std::string(word);
+        }
+        fail(key + " = " + v.dump() + ": must be one of " + names);
+    }
+
+    // The plugin's own rules (multiples, powers of two, ranges), applied without a GPU through
+    // its budget, and reported in this file's terms.
+    void checkWithThePlugin(const lightscatter::Settings& s) const {
+        try {
+            (void)lightscatter::budget(lightscatter::Profile::Custom, 64, 64, 64,
+                                       lightscatter::LightType::Spot, &s);
+        } catch (const lightscatter::InvalidInput& e) {
+            std::string why = e.what();
+            for (const char* prefix : {"lightscatter: ", "settings."})
+                if (why.rfind(prefix, 0) == 0) why.erase(0, std::char_traits<char>::length(prefix));
+            fail(why);
+        }
+    }
+
+    std::string path_;
+};
+
+}  // namespace
+
+lightscatter::Settings loadSettingsFile(const std::string& path, lightscatter::Settings base) {
+    return SettingsReader(path).read(base);
+}
+
+}  // namespace host

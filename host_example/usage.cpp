@@ -1,0 +1,104 @@
+#include "usage.h"
+
+#include <array>
+#include <utility>
+
+namespace host {
+namespace {
+
+const char* kCommon =
+    "common options: --device NAME (or LS_DEVICE), --validation, --help (-h)\n"
+    "methods: epipolar (default), brute-force; profiles: high-quality, balanced (default),\n"
+    "high-performance, low-high-quality, low-balanced, low-high-performance, custom (with\n"
+    "--settings)\n";
+
+const char* kSettings =
+    "  --settings FILE.json  every field of lightscatter::Settings by name (slices, "
+    "samplesPerSlice,\n"
+    "                        initialSampleStep, refinementThreshold, bilateralThreshold,\n"
+    "                        minMaxTrees, shadowFilter, fixup, fixupMaxSteps, shadowDepthBias,\n"
+    "                        interpolation, shadowMapSize); fields it leaves out keep the values\n"
+    "                        of --profile, and the frame runs as the custom profile\n";
+
+struct Command {
+    const char* name;
+    const char* synopsis;  // after "lightscatter "
+    const char* details;
+};
+
+const std::array kCommands{
+    Command{
+        "render",
+        "render SCENE.json [--out FILE.png|.exr] [--inscatter FILE.exr] [--method NAME]\n"
+        "                    [--profile NAME] [--settings FILE.json] [--size WxH]\n"
+        "                    [--timings FILE.json] [--frames N]\n",
+        "Renders a scene and writes the image, and optionally Lin alone and the per-pass times.\n"
+        "  --out FILE          .png (tone-mapped with the scene's exposure) or .exr (linear);\n"
+        "                      default: the scene's name with .png, in the current folder\n"
+        "  --inscatter FILE    the in-scattering Lin alone, as a linear .exr\n"
+        "  --timings FILE      the plugin's and the engine's pass times as JSON\n"
+        "  --size WxH          1 to 16384 each (default 960x540)\n"
+        "  --frames N          frames rendered, 1 to 100000 (default 1); the last is written\n"
+        "Outputs are written all or nothing: each must be its own file and none may be an "
+        "input.\n"},
+    Command{"budget",
+            "budget [--profile NAME|all] [--settings FILE.json] [--size WxH] [--shadow-map N] "
+            "[--json]\n",
+            "Prints the epipolar method's GPU memory per profile without a GPU.\n"
+            "  --profile NAME|all  one profile, or all of them (default)\n"
+            "  --size WxH          the screen, 1 to 16384 each (default 2560x1600)\n"
+            "  --shadow-map N      the shadow map's size, 1 to 16384 (default: the profile's)\n"
+            "  --json              JSON instead of text\n"},
+    Command{
+        "graph",
+        "graph SCENE.json --dot|--json [--method NAME] [--profile NAME] [--settings FILE.json]\n"
+        "                   [--size WxH]\n",
+        "Prints the plugin's compiled frame graph for a scene, for Graphviz (--dot) or as JSON.\n"
+        "  --size WxH          1 to 16384 each (default 320x180)\n"},
+    Command{
+        "view",
+        "view SCENE.json [--method NAME] [--profile NAME] [--settings FILE.json] [--size WxH]\n"
+        "                  [--frames N] [--screenshot FILE.png] [--resize-at N --resize-to WxH]\n",
+        "Opens a window (needs a display; xvfb-run -a gives one). WASD/QE move, left-drag looks,\n"
+        "arrow keys move the light, M switches method, P cycles profiles, T toggles the min/max\n"
+        "trees, Esc quits.\n"
+        "  --size WxH          1 to 16384 each (default 960x540)\n"
+        "  --frames N          close after N frames (1 to 100000)\n"
+        "  --screenshot FILE   the last frame as a PNG (needs --frames)\n"
+        "  --resize-at N --resize-to WxH  resize the window at frame N (for tests)\n"},
+    Command{
+        "bench", "bench [--config FILE.json] [--out DIR]\n",
+        "Times every method and profile of a benchmark configuration and measures each against\n"
+        "the float64 reference. Every run of the configuration is checked before any renders.\n"
+        "  --config FILE       default: bench/small.json of the source tree\n"
+        "  --out DIR           default: bench-results\n"},
+    Command{"pattern",
+            "pattern [--out FILE.png] [--size WxH] [--report FILE.json] [--dot FILE.dot]\n",
+            "Renders the render-graph runtime's own test pattern (no light scattering).\n"
+            "  --size WxH          1 to 16384 each (default 512x512)\n"},
+};
+
+bool takesSettings(const std::string& name) {
+    return name == "render" || name == "graph" || name == "view" || name == "budget";
+}
+
+}  // namespace
+
+std::string usage() {
+    std::string text =
+        "usage: lightscatter <command> [options]   (lightscatter <command> --help for more)\n";
+    for (const Command& c : kCommands) text += std::string("  ") + c.synopsis;
+    return text + kCommon;
+}
+
+std::string commandUsage(const std::string& name) {
+    for (const Command& c : kCommands) {
+        if (name != c.name) continue;
+        std::string text = std::string("usage: lightscatter ") + c.synopsis + c.details;
+        if (takesSettings(name)) text += kSettings;
+        return text + kCommon;
+    }
+    return "";
+}
+
+}  // namespace host

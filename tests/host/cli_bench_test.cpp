@@ -1,0 +1,59 @@
+// lightscatter bench (issue #8): every run of a configuration is checked before anything renders,
+// and errors are printed on a line of their own, not after the progress bar.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "cli_runner.h"
+
+using cli_test::expectFailure;
+using cli_test::run;
+using cli_test::writeFile;
+
+TEST(CliBench, EveryRunIsCheckedBeforeAnyRenders) {
+    // The bad value is the last run of a long configuration: it used to be found only when its run
+    // came up, after all the others.
+    writeFile("late.json",
+              R"({"frames": 1, "warmup": 0, "size": "32x18", "scenes": ["scenes/atrium.json"],
+        "profiles": ["balanced", "high-quality"], "sweeps": {"initialStep": [4, 3]}})");
+    const auto r = run("bench --config late.json --out late");
+    expectFailure(
+        r,
+        "late.json: sweeps.initialStep (run 'initialStep=3'): initialSampleStep = 3: must be a "
+        "power of two between 1 and 128");
+    EXPECT_FALSE(cli_test::exists("late/bench.csv")) << "rendered before checking";
+
+    writeFile("wrap.json", R"({"frames": 4294967297, "scenes": ["scenes/atrium.json"]})");
+    expectFailure(run("bench --config wrap.json --out wrap"),
+                  "wrap.json: frames = 4294967297: must be a whole number from 1 to 10000");
+    writeFile("negative.json",
+              R"({"scenes": ["scenes/atrium.json"], "sweeps": {"shadowMapSize": [-1]}})");
+    expectFailure(
+        run("bench --config negative.json --out negative"),
+        "negative.json: sweeps.shadowMapSize[] = -1: must be a whole number from 1 to 16384");
+    writeFile("size.json", R"({"scenes": ["scenes/atrium.json"], "sweeps": {"size": ["64x"]}})");
+    expectFailure(run("bench --config size.json --out size"),
+                  "size.json: sweeps.size[] '64x' is not WIDTHxHEIGHT");
+    writeFile("scene.json", R"({"scenes": ["scenes/atrium.json", "scenes/no_such_scene.json"]})");
+    expectFailure(run("bench --config scene.json --out scene"),
+                  "no_such_scene.json: scene file does not exist");
+    EXPECT_FALSE(cli_test::exists("scene/bench.csv"));
+}
+
+TEST(CliBench, AnErrorDuringTheRunsStartsOnItsOwnLine) {
+    // A strip that cannot be written (a folder is in its place) fails the first run, after the
+    // progress bar was drawn.
+    writeFile("one.json",
+              R"({"frames": 1, "warmup": 0, "size": "16x9", "scenes": ["scenes/window_room.json"],
+        "methods": ["brute-force"]})");
+    std::filesystem::create_directories(cli_test::path("one/strips/window_room_brute-force.png"));
+    const auto r = run("bench --config one.json --out one --validation");
+    EXPECT_NE(r.exitCode, 0) << r.out;
+    const size_t error = r.out.find("lightscatter: ");
+    ASSERT_NE(error, std::string::npos) << r.out;
+    const size_t line = r.out.find("lightscatter: output ");
+    ASSERT_NE(line, std::string::npos) << r.out;
+    EXPECT_EQ(r.out[line - 1], '\n') << r.out;
+    EXPECT_NE(r.out.find("window_room_brute-force.png: is a directory"), std::string::npos)
+        << r.out;
+}

@@ -1,0 +1,111 @@
+// --settings FILE.json: every field of lightscatter::Settings by name, overlaid on a profile;
+// unknown fields and bad values are one line naming the file and the field.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include "settings_file.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+class HostSettingsFile : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        file_ =
+            (fs::temp_directory_path() / ("host_settings_" + std::to_string(::getpid()) + ".json"))
+                .string();
+    }
+    void TearDown() override { fs::remove(file_); }
+
+    lightscatter::Settings load(const std::string& text,
+                                lightscatter::Settings base = lightscatter::Settings{}) const {
+        std::ofstream(file_) << text;
+        return host::loadSettingsFile(file_, base);
+    }
+    // The message without the "FILE: " in front.
+    std::string errorFor(const std::string& text) const {
+        try {
+            load(text);
+        } catch (const std::runtime_error& e) {
+            const std::string m = e.what();
+            EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+            return m.rfind(file_ + ": ", 0) == 0 ? m.substr(file_.size() + 2)
+                                                 : "(file not named) " + m;
+        }
+        return "(no error)";
+    }
+
+    std::string file_;
+};
+
+TEST_F(HostSettingsFile, EveryFieldByName) {
+    const lightscatter::Settings s = load(R"({
+        "slices": 512, "samplesPerSlice": 256, "initialSampleStep": 8, "refinementThreshold": 0.05,
+        "bilateralThreshold": 0.2, "minMaxTrees": false, "shadowFilter": "nearest", "fixup": false,
+        "fixupMaxSteps": 64, "shadowDepthBias": -0.001, "interpolation": "inscattering",
+        "shadowMapSize": 1024})");
+    EXPECT_EQ(s.slices, 512u);
+    EXPECT_EQ(s.samplesPerSlice, 256u);
+    EXPECT_EQ(s.initialSampleStep, 8u);
+    EXPECT_FLOAT_EQ(s.refinementThreshold, 0.05f);
+    EXPECT_FLOAT_EQ(s.bilateralThreshold, 0.2f);
+    EXPECT_FALSE(s.minMaxTrees);
+    EXPECT_EQ(s.shadowFilter, lightscatter::ShadowFilter::Nearest);
+    EXPECT_FALSE(s.fixup);
+    EXPECT_EQ(s.fixupMaxSteps, 64u);
+    EXPECT_FLOAT_EQ(s.shadowDepthBias, -0.001f);
+    EXPECT_EQ(s.interpolation, lightscatter::Interpolation::Inscattering);
+    EXPECT_EQ(s.shadowMapSize, 1024u);
+}
+
+TEST_F(HostSettingsFile, FieldsLeftOutKeepTheProfilesValues) {
+    const auto base = lightscatter::profileSettings(lightscatter::Profile::LowHighPerformance);
+    const lightscatter::Settings s = load(R"({"minMaxTrees": false})", base);
+    EXPECT_EQ(s.slices, base.slices);
+    EXPECT_EQ(s.samplesPerSlice, base.samplesPerSlice);
+    EXPECT_EQ(s.shadowMapSize, base.shadowMapSize);
+    EXPECT_FALSE(s.minMaxTrees);
+}
+
+TEST_F(HostSettingsFile, BadFieldsAreNamed) {
+    EXPECT_EQ(errorFor(R"({"slice": 4})").substr(0, 62),
+              "unknown key 'slice' (known keys: slices, samplesPerSlice, init");
+    EXPECT_EQ(errorFor(R"({"slices": 512, "slices": 256})"), "key 'slices' appears twice");
+    EXPECT_EQ(errorFor(R"({"slices": -4})"),
+              "slices = -4: must be a whole number from 0 to 4294967295");
+    EXPECT_EQ(errorFor(R"({"slices": 4294967296})"),
+              "slices = 4294967296: must be a whole number from 0 to 4294967295");
+    EXPECT_EQ(
+        errorFor(R"({"slices": 3})"),
+        "slices = 3: must be a positive multiple of 4 (a quarter per screen edge), at most 16384");
+    EXPECT_EQ(errorFor(R"({"initialSampleStep": 3})"),
+              "initialSampleStep = 3: must be a power of two between 1 and 128");
+    EXPECT_EQ(errorFor(R"({"refinementThreshold": 0})"), "refinementThreshold = 0: must be > 0");
+    EXPECT_EQ(errorFor(R"({"shadowDepthBias": 1e39})"),
+              "shadowDepthBias = 1e+39: must be a finite number");
+    EXPECT_EQ(errorFor(R"({"minMaxTrees": 1})"), "minMaxTrees = 1: must be true or false");
+    EXPECT_EQ(errorFor(R"({"shadowFilter": "trilinear"})"),
+              "shadowFilter = \"trilinear\": must be one of bilinear, nearest");
+    EXPECT_EQ(errorFor(R"({"interpolation": 2})"),
+              "interpolation = 2: must be one of shadowed-fraction, inscattering");
+    EXPECT_EQ(errorFor(R"({"shadowMapSize": 0})"), "shadowMapSize = 0: must be from 1 to 16384");
+    EXPECT_EQ(errorFor("[512]"), "the top level must be a JSON object of settings");
+    EXPECT_EQ(errorFor("{").rfind("malformed JSON: ", 0), 0u);
+}
+
+TEST_F(HostSettingsFile, OnlyARegularFileIsRead) {
+    try {
+        host::loadSettingsFile("/dev/zero", {});
+        FAIL() << "no error";
+    } catch (const std::runtime_error& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "/dev/zero: settings file is a character device, not a regular file");
+    }
+}
+
+}  // namespace
