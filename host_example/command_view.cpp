@@ -66,9 +66,10 @@ struct Surface {
 // Tone maps the engine's HDR color into a swapchain image (and reads that image back when asked).
 class Display {
 public:
+    // `pipeline` outlives displays: a resize builds a new display but keeps the pipeline.
     Display(const rg::Device& device, const GpuImage& hdr, const Swapchain& swapchain, float exposure,
-            bool screenshot)
-        : device_(device), samplers_(device), exposure_(exposure) {
+            bool screenshot, std::shared_ptr<rg::Pipeline> pipeline)
+        : device_(device), samplers_(device), exposure_(exposure), pipeline_(std::move(pipeline)) {
         graph_.setScreenExtent(swapchain.extent());
         rg::ImportedImage h;
         h.image = hdr.image();
@@ -99,19 +100,19 @@ public:
         target_ = pass.colorAttachment(target_, rg::LoadOp::DontCare);
         const rg::ImageRef src = hdr_;
         pass.execute([this, src](rg::PassContext& ctx) {
-            if (!pipeline_) {
+            if (!*pipeline_) {
                 rg::GraphicsPipelineDesc d;
                 d.vertex = rg::spirv(ls_spirv::fullscreen_vert);
                 d.fragment = rg::spirv(ls_spirv::tonemap_frag);
                 d.formats = ctx.renderingFormats();
                 d.bindings = {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT}};
                 d.pushConstantBytes = 4;
-                pipeline_ = rg::Pipeline::graphics(ctx.device(), "tone map to window", d);
+                *pipeline_ = rg::Pipeline::graphics(ctx.device(), "tone map to window", d);
             }
-            pipeline_.bind(ctx.cmd());
+            pipeline_->bind(ctx.cmd());
             rg::DescriptorPush().sampled(0, ctx.view(src), ctx.layout(src), samplers_.nearest())
-                .push(ctx.device(), ctx.cmd(), pipeline_);
-            pipeline_.push(ctx.cmd(), exposure_);
+                .push(ctx.device(), ctx.cmd(), *pipeline_);
+            pipeline_->push(ctx.cmd(), exposure_);
             vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
         });
         if (screenshot) {
@@ -156,7 +157,7 @@ private:
     rg::RenderGraph graph_;
     rg::ImageRef hdr_, target_;
     rg::ImportedImage swapchainDesc_;
-    rg::Pipeline pipeline_;
+    std::shared_ptr<rg::Pipeline> pipeline_;
     std::unique_ptr<rg::HostBuffer> readback_;
     std::unique_ptr<rg::GraphExecutor> executor_;
 };
@@ -287,8 +288,11 @@ int runView(Args& args) {
     Swapchain swapchain(device, surface.handle, size);
     EngineRenderer renderer(device, scene, mesh, swapchain.extent());
     std::unique_ptr<Display> display;
+    const auto displayPipeline = std::make_shared<rg::Pipeline>();
     auto rebuildDisplay = [&](bool screenshot) {
-        display = std::make_unique<Display>(device, renderer.color(), swapchain, scene.exposure, screenshot);
+        display.reset();
+        display = std::make_unique<Display>(device, renderer.color(), swapchain, scene.exposure, screenshot,
+                                            displayPipeline);
     };
     rebuildDisplay(false);
 

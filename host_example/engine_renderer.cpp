@@ -133,7 +133,9 @@ void EngineRenderer::createTargets() {
 
 void EngineRenderer::buildGraph() {
     executor_.reset();
-    pipelines_ = std::make_shared<Pipelines>(device_);
+    // Pipelines depend on formats, not on the size: a resize keeps them (recompiling them at every
+    // resize cost lavapipe memory that it never gave back).
+    if (!pipelines_) pipelines_ = std::make_shared<Pipelines>(device_);
     graph_ = std::make_unique<rg::RenderGraph>();
     rg::RenderGraph& g = *graph_;
     g.setScreenExtent(size_);

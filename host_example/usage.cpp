@@ -58,14 +58,19 @@ const std::array kCommands{
     Command{
         "view",
         "view SCENE.json [--method NAME] [--profile NAME] [--settings FILE.json] [--size WxH]\n"
-        "                  [--frames N] [--screenshot FILE.png] [--resize-at N --resize-to WxH]\n",
+        "                  [--frames N] [--screenshot FILE.png] [--resize-at N --resize-to WxH]\n"
+        "                  [--animate-light] [--resizes N] [--memory-log FILE.csv]\n",
         "Opens a window (needs a display; xvfb-run -a gives one). WASD/QE move, left-drag looks,\n"
         "arrow keys move the light, M switches method, P cycles profiles, T toggles the min/max\n"
         "trees, Esc quits.\n"
         "  --size WxH          1 to 16384 each (default 960x540)\n"
         "  --frames N          close after N frames (1 to 100000)\n"
         "  --screenshot FILE   the last frame as a PNG (needs --frames)\n"
-        "  --resize-at N --resize-to WxH  resize the window at frame N (for tests)\n"},
+        "  --resize-at N --resize-to WxH  resize the window at frame N (for tests)\n"
+        "  --animate-light     move the light on a slow circle, every frame (soak tests)\n"
+        "  --resizes N         resize the window N times, evenly over --frames, through 60%, 80%\n"
+        "                      and 100% of --size in turn (soak tests)\n"
+        "  --memory-log FILE   every 100 frames: frame, resident KiB, device bytes held (CSV)\n"},
     Command{
         "bench", "bench [--config FILE.json] [--out DIR]\n",
         "Times every method and profile of a benchmark configuration and measures each against\n"
