@@ -1,4 +1,6 @@
 // lightscatter: the host example's command line.
+#include <malloc.h>
+
 #include <cstdio>
 #include <exception>
 #include <iostream>
@@ -35,6 +37,12 @@ bool asksForHelp(const std::vector<std::string>& words) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // Large blocks always come from mmap and go back to the system when freed. glibc otherwise
+    // raises its mmap threshold to the size of the largest block freed so far: once a graph's
+    // 30 MB transient block (host memory, on lavapipe) was freed at a resize, the next ones came
+    // from the heap and fragmented it, and the resident size crept up resize after resize
+    // (docs/reliability.md).
+    mallopt(M_MMAP_THRESHOLD, 1 << 20);
     std::vector<std::string> words(argv + 1, argv + argc);
     if (words.empty() || words[0] == "--help" || words[0] == "-h" || words[0] == "help") {
         std::cout << host::usage();
