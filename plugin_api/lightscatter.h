@@ -11,6 +11,9 @@
 // Requirements on the engine's VkDevice (lightscatter::requiredDeviceExtensions/-Features list them):
 // Vulkan 1.3 with synchronization2, dynamicRendering, maintenance4; separateDepthStencilLayouts,
 // hostQueryReset; shaderStorageImageExtendedFormats; VK_KHR_push_descriptor.
+//
+// Linking: CMake target lightscatter::plugin, from find_package(lightscatter CONFIG) on an
+// installed tree or from add_subdirectory on the source tree (README.md, "Integrating the plugin").
 #include <vulkan/vulkan.h>
 
 #include <array>
@@ -20,6 +23,20 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+// What the library exports: everything declared with LIGHTSCATTER_API (a shared build exports
+// nothing else).
+#if defined(_WIN32)
+#if defined(LIGHTSCATTER_BUILDING_SHARED)
+#define LIGHTSCATTER_API __declspec(dllexport)
+#elif defined(LIGHTSCATTER_SHARED)
+#define LIGHTSCATTER_API __declspec(dllimport)
+#else
+#define LIGHTSCATTER_API
+#endif
+#else
+#define LIGHTSCATTER_API __attribute__((visibility("default")))
+#endif
 
 namespace lightscatter {
 
@@ -44,12 +61,12 @@ enum class ShadowFilter { Nearest, Bilinear };
 // a light (which no sparse sampling resolves) exact, and changes nothing where there is no glow.
 enum class Interpolation { ShadowedFraction, Inscattering };
 
-const char* methodName(Method m);    // "epipolar", "brute-force"
-const char* profileName(Profile p);  // "high-quality", "balanced", ... "custom"
-std::optional<Method> parseMethod(const std::string& name);
-std::optional<Profile> parseProfile(const std::string& name);
-std::vector<std::string> methodNames();
-std::vector<std::string> profileNames();
+LIGHTSCATTER_API const char* methodName(Method m);    // "epipolar", "brute-force"
+LIGHTSCATTER_API const char* profileName(Profile p);  // "high-quality", "balanced", ... "custom"
+LIGHTSCATTER_API std::optional<Method> parseMethod(const std::string& name);
+LIGHTSCATTER_API std::optional<Profile> parseProfile(const std::string& name);
+LIGHTSCATTER_API std::vector<std::string> methodNames();
+LIGHTSCATTER_API std::vector<std::string> profileNames();
 
 // Every choice seed 000 leaves open.
 struct Settings {
@@ -68,7 +85,7 @@ struct Settings {
 };
 
 // The settings of a profile (Custom returns the defaults).
-Settings profileSettings(Profile profile);
+LIGHTSCATTER_API Settings profileSettings(Profile profile);
 
 struct Camera {
     Mat4 view{};        // world -> view (right-handed, looks down -Z)
@@ -132,7 +149,7 @@ struct FrameDescription {
 };
 
 // Thrown before anything is recorded when a description breaks a rule; the message names the field.
-class InvalidInput : public std::invalid_argument {
+class LIGHTSCATTER_API InvalidInput : public std::invalid_argument {
 public:
     using std::invalid_argument::invalid_argument;
 };
@@ -180,10 +197,11 @@ struct Budget {
 };
 
 // The epipolar method's memory for a profile, screen and shadow-map size; needs no GPU.
-Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint32_t shadowMapSize,
-              LightType light = LightType::Spot, const Settings* custom = nullptr);
+LIGHTSCATTER_API Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
+                               uint32_t shadowMapSize, LightType light = LightType::Spot,
+                               const Settings* custom = nullptr);
 
-std::vector<const char*> requiredDeviceExtensions();
+LIGHTSCATTER_API std::vector<const char*> requiredDeviceExtensions();
 
 // The engine's Vulkan objects the plugin works with. The plugin never destroys them.
 struct VulkanContext {
@@ -194,7 +212,7 @@ struct VulkanContext {
     uint32_t queueFamily = 0;
 };
 
-class Plugin {
+class LIGHTSCATTER_API Plugin {
 public:
     explicit Plugin(const VulkanContext& context);
     ~Plugin();
