@@ -8,9 +8,11 @@
 // with S the distance along each pixel's ray to the surface (or to the sky distance) and Lin the
 // single-scattered in-scattering. Nothing else is done to the color: no tone mapping, no exposure.
 //
-// Requirements on the engine's VkDevice (lightscatter::requiredDeviceExtensions/-Features list them):
-// Vulkan 1.3 with synchronization2, dynamicRendering, maintenance4; separateDepthStencilLayouts,
-// hostQueryReset; shaderStorageImageExtendedFormats; VK_KHR_push_descriptor.
+// Requirements on the engine's VkDevice: Vulkan 1.3, the extensions requiredDeviceExtensions()
+// lists (VK_KHR_push_descriptor) and the features requiredDeviceFeatures() turns on
+// (synchronization2, dynamicRendering, maintenance4; separateDepthStencilLayouts, hostQueryReset;
+// shaderStorageImageExtendedFormats). The engine tells the plugin what it enabled
+// (VulkanContext::enabledFeatures), and the plugin refuses a device that lacks one.
 //
 // Linking: CMake target lightscatter::plugin, from find_package(lightscatter CONFIG) on an
 // installed tree or from add_subdirectory on the source tree (README.md, "Integrating the plugin").
@@ -201,7 +203,43 @@ LIGHTSCATTER_API Budget budget(Profile profile, uint32_t screenWidth, uint32_t s
                                uint32_t shadowMapSize, LightType light = LightType::Spot,
                                const Settings* custom = nullptr);
 
+// The device extensions the plugin needs; add them to VkDeviceCreateInfo::ppEnabledExtensionNames.
 LIGHTSCATTER_API std::vector<const char*> requiredDeviceExtensions();
+
+// The device features the plugin needs, as a chain for VkDeviceCreateInfo::pNext:
+//     lightscatter::DeviceFeatures features = lightscatter::requiredDeviceFeatures();
+//     features.vulkan12.timelineSemaphore = VK_TRUE;   // the engine's own, if any
+//     createInfo.pNext = features.chain();             // after the last copy or move
+//     ... vkCreateDevice(...); context.enabledFeatures = features.chain();
+// chain() links core -> vulkan11 -> vulkan12 -> vulkan13 and leaves vulkan13.pNext as it is (the
+// engine may hang its extension structures there).
+struct DeviceFeatures {
+    DeviceFeatures() {
+        core.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
+        vulkan11.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES;
+        vulkan12.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES;
+        vulkan13.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES;
+        chain();
+    }
+    VkPhysicalDeviceFeatures2* chain() {
+        core.pNext = &vulkan11;
+        vulkan11.pNext = &vulkan12;
+        vulkan12.pNext = &vulkan13;
+        return &core;
+    }
+    VkPhysicalDeviceFeatures2 core{};
+    VkPhysicalDeviceVulkan11Features vulkan11{};
+    VkPhysicalDeviceVulkan12Features vulkan12{};
+    VkPhysicalDeviceVulkan13Features vulkan13{};
+};
+LIGHTSCATTER_API DeviceFeatures requiredDeviceFeatures();
+
+// For an engine with a feature chain of its own: turns on, in that chain, every feature the plugin
+// needs and leaves the rest as it is. The chain must hold a structure for each
+// (Vulkan12/13Features, or the feature's own structure such as
+// VkPhysicalDeviceMaintenance4Features); throws InvalidInput naming the structure that is missing,
+// changing nothing.
+LIGHTSCATTER_API void enableRequiredDeviceFeatures(VkPhysicalDeviceFeatures2& features);
 
 // The engine's Vulkan objects the plugin works with. The plugin never destroys them.
 struct VulkanContext {
@@ -209,11 +247,16 @@ struct VulkanContext {
     VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
     VkDevice device = VK_NULL_HANDLE;
     VkQueue queue = VK_NULL_HANDLE;
-    uint32_t queueFamily = 0;
+    uint32_t queueFamily = 0;  // of `queue`; needs graphics, compute and timestamps
+    // Required: the feature chain the engine gave vkCreateDevice (VkDeviceCreateInfo::pNext), which
+    // Vulkan cannot be asked for afterwards. The Plugin constructor reads it (and keeps nothing)
+    // and refuses, with InvalidInput naming them, features the plugin needs that are not enabled.
+    const VkPhysicalDeviceFeatures2* enabledFeatures = nullptr;
 };
 
 class LIGHTSCATTER_API Plugin {
 public:
+    // Throws InvalidInput for a context that lacks a handle or a feature (see VulkanContext).
     explicit Plugin(const VulkanContext& context);
     ~Plugin();
     Plugin(const Plugin&) = delete;

@@ -25,21 +25,31 @@ ImportState state(const ImageInput& in) {
     return {in.format, in.extent, in.usage, in.layout, in.finalLayout};
 }
 
+// Refuses a context before anything is made from it.
+const VulkanContext& checked(const VulkanContext& c) {
+    auto null = [](const char* field) {
+        throw InvalidInput(std::string("lightscatter: context.") + field + " is VK_NULL_HANDLE");
+    };
+    if (!c.instance) null("instance");
+    if (!c.physicalDevice) null("physicalDevice");
+    if (!c.device) null("device");
+    if (!c.queue) null("queue");
+    detail::checkEnabledFeatures(c.enabledFeatures);
+    return c;
+}
+
 }  // namespace
 
 struct Plugin::Impl {
     explicit Impl(const VulkanContext& c)
-        : device(rg::ExternalDevice{c.instance, c.physicalDevice, c.device, c.queue, c.queueFamily}),
+        : device(rg::ExternalDevice{checked(c).instance, c.physicalDevice, c.device, c.queue,
+                                    c.queueFamily}),
           caps(device),
           shared(std::make_shared<ls::SharedState>(device)) {
         depthStencil = rg::firstSupported(caps, {VK_FORMAT_D24_UNORM_S8_UINT, VK_FORMAT_D32_SFLOAT_S8_UINT},
                                           VK_FORMAT_FEATURE_2_DEPTH_STENCIL_ATTACHMENT_BIT);
         if (depthStencil == VK_FORMAT_UNDEFINED)
             throw std::runtime_error("lightscatter: the device has no depth-stencil format with stencil");
-        if (!device.storageImageExtendedFormats())
-            throw std::runtime_error(
-                "lightscatter: the device lacks shaderStorageImageExtendedFormats (RG16F/RG16UI "
-                "storage for the min/max trees and the interpolation source)");
     }
 
     void prepare(const FrameDescription& frame) {

@@ -34,7 +34,8 @@ TEST_F(ReadmeExampleGpu, RendersShaftsIntoTheEnginesColor) {
     alloc.commandBufferCount = 1;
     VkCommandBuffer cmd;
     RG_VK(vkAllocateCommandBuffers(dev().device(), &alloc, &cmd));
-    EngineFrame engine{{dev().instance(), dev().physical(), dev().device(), dev().queue(), dev().queueFamily()},
+    EngineFrame engine{{dev().instance(), dev().physical(), dev().device(), dev().queue(), dev().queueFamily(),
+                        &dev().enabledFeatures()},
                        cmd, extent, depth.image(), color.image(), shadow.image(),
                        toMat4(view.view), toMat4(view.projection), toMat4(lightMatrix)};
     for (int frame = 0; frame < 2; ++frame) {
