@@ -89,13 +89,19 @@ struct Settings {
 // The settings of a profile (Custom returns the defaults).
 LIGHTSCATTER_API Settings profileSettings(Profile profile);
 
+// The camera that rendered `depth`. The projection is the one authority on the depth buffer: the
+// plugin reads the near and far planes from it (the view-space distances it maps to depth 0 and 1),
+// so they cannot disagree with what the depth buffer holds.
 struct Camera {
     Mat4 view{};        // world -> view (right-handed, looks down -Z)
-    Mat4 projection{};  // view -> Vulkan clip (y down, depth in [0, 1])
-    float nearPlane = 0.1f;
-    float farPlane = 1000.0f;  // ignored when infiniteFar
-    bool reversedZ = false;    // depth 1 at the near plane
-    bool infiniteFar = false;
+    Mat4 projection{};  // view -> Vulkan clip (y down, depth in [0, 1]), perspective
+    // Optional, in metres. 0 (the default): taken from the projection. When set, each must agree
+    // with the projection (to 0.1%, more where float32 cannot resolve the far plane), or the frame
+    // is refused: a projection built for another far plane would silently move the sky and the fog.
+    float nearPlane = 0.0f;
+    float farPlane = 0.0f;     // ignored when infiniteFar
+    bool reversedZ = false;    // depth 1 at the near plane; must match the projection
+    bool infiniteFar = false;  // no far plane (the sky is medium.maxDistance away); must match it
 };
 
 struct Light {
@@ -107,7 +113,8 @@ struct Light {
     float range = 1e30f;          // spot: no light beyond it
     float radius = 0.05f;         // r0 of MODEL.md, > 0
     // The shadow map's projection (world -> light clip, Vulkan conventions) and size. Required with
-    // a shadow map; for a spot its frustum must contain the cone.
+    // a shadow map (a singular matrix, such as the all-zero default, is refused); for a spot its
+    // frustum must contain the cone.
     Mat4 shadowViewProjection{};
     uint32_t shadowMapSize = 0;   // 0: no shadow map
     bool shadowReversedZ = false;
@@ -123,16 +130,44 @@ struct Medium {
 };
 
 // An engine image handed to the plugin for one frame: where it stands and where it must be left.
+// The plugin uses mip level 0 and array layer 0; it never keeps the image beyond the frame's
+// commands.
+//
+// Within record(), the plugin's first command on the image is a barrier from (stages, access,
+// layout) to its own use, and its last a barrier from its own use to (finalStages, finalAccess,
+// finalLayout). So:
+//   usage         the VkImageUsageFlags the image was created with. The plugin needs SAMPLED
+//   (depth,
+//                 shadowMap, lightColor) or STORAGE (color, inscatterOut); layouts are checked
+//                 against these flags (COLOR_ATTACHMENT_OPTIMAL needs COLOR_ATTACHMENT, ...).
+//   layout        the layout the image is in when the plugin's commands start. It must be a layout
+//                 the image's format and usage can hold (a depth image cannot be in
+//                 COLOR_ATTACHMENT_OPTIMAL). UNDEFINED only for inscatterOut, which the plugin
+//                 overwrites; the other images are read.
+//   stages/access the pipeline stages and access types of the engine's last use before the plugin
+//                 (for example LATE_FRAGMENT_TESTS + DEPTH_STENCIL_ATTACHMENT_WRITE after a depth
+//                 pass). The plugin's first barrier waits for them. The defaults wait for
+//                 everything.
+//   finalLayout   the layout the plugin leaves the image in (required; not
+//   UNDEFINED/PREINITIALIZED). finalStages/finalAccess  the engine's next use after the plugin: the
+//   plugin's last barrier makes
+//                 its work visible to them. The defaults make it visible to everything.
+// Stages and the VkImage handle may change from frame to frame at no cost. A different format,
+// extent (a resize), usage or layout rebuilds the frame graph on the next record(): the plugin
+// waits for the device to be idle, frees its transient images and allocates new ones. Command
+// buffers it recorded before a rebuild must have been submitted (and not be submitted again) by
+// then.
 struct ImageInput {
     VkImage image = VK_NULL_HANDLE;
     VkFormat format = VK_FORMAT_UNDEFINED;
     VkExtent2D extent{0, 0};
-    VkImageUsageFlags usage = 0;
+    VkImageUsageFlags usage = 0;                       // the flags the image was created with
     VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;  // at the start of the frame
-    VkPipelineStageFlags2 stages = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+    VkPipelineStageFlags2 stages = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;  // the engine's last use
     VkAccessFlags2 access = VK_ACCESS_2_MEMORY_WRITE_BIT;
     VkImageLayout finalLayout = VK_IMAGE_LAYOUT_UNDEFINED;  // required
-    VkPipelineStageFlags2 finalStages = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+    VkPipelineStageFlags2 finalStages =
+        VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;  // the engine's next use
     VkAccessFlags2 finalAccess = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT;
 };
 
@@ -150,7 +185,9 @@ struct FrameDescription {
     Settings custom;  // used when profile == Custom
 };
 
-// Thrown before anything is recorded when a description breaks a rule; the message names the field.
+// Thrown before anything is recorded when a description breaks a rule; the message names the field
+// (as a path from FrameDescription: "custom.slices", "depth.layout"; or from VulkanContext:
+// "context.enabledFeatures") and the rule. The engine's images and command buffer are untouched.
 class LIGHTSCATTER_API InvalidInput : public std::invalid_argument {
 public:
     using std::invalid_argument::invalid_argument;
@@ -263,7 +300,8 @@ public:
     Plugin& operator=(const Plugin&) = delete;
 
     // Validates the description (throws InvalidInput, nothing recorded), builds or reuses the
-    // frame's graph, and records it into `cmd`. The engine submits; call report() after its fence.
+    // frame's graph, and records it into `cmd`, which must be in the recording state. The engine
+    // submits; call report() after its fence.
     void record(VkCommandBuffer cmd, const FrameDescription& frame);
     // Validates, records into the plugin's own command buffer, submits, waits, reports.
     FrameReport render(const FrameDescription& frame);

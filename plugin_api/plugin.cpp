@@ -152,6 +152,9 @@ Plugin::~Plugin() {
 }
 
 void Plugin::record(VkCommandBuffer cmd, const FrameDescription& frame) {
+    if (!cmd)
+        throw InvalidInput("lightscatter: record: cmd is VK_NULL_HANDLE: pass the engine's command "
+                           "buffer, in the recording state");
     impl_->prepare(frame);
     impl_->executor->record(cmd);
 }

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "plugin_fixture.h"
+#include "support/projection.h"
 
 using namespace plugin_test;
 using lightscatter::LightType;
@@ -216,7 +217,12 @@ TEST_F(HardCasesGpu, EpipolarStaysCloseToBruteForce) {
         FrameSpec spec = hard.make();
         if (spec.screen.width != kScreen.width || !spec.depthOverride.empty()) continue;
         spec.screen = {48, 32};
-        spec.view.projection = defaultView(spec.screen).projection;
+        // The case's own projection (planes, reversed or infinite depth) at the new aspect: the
+        // plugin reads the planes from it and refuses flags that disagree.
+        const View& v = spec.view;
+        spec.view.projection =
+            testing_support::vulkanPerspective(glm::radians(60.0f), 48.0f / 32.0f, v.nearPlane,
+                                               v.farPlane, v.reversedZ, v.infiniteFar);
         TestFrame frame(dev(), spec);
         auto settings = smallSettings(frame.spec().screen);
         settings.shadowMapSize = frame.light().shadowMapSize;

@@ -1,6 +1,8 @@
 // What an engine integrating the plugin runs into (issue #9): the device contract (features it must
-// enable, checked at construction). Every refusal names the field, leaves the engine's images as
-// they were and raises no validation message.
+// enable, checked at construction), descriptions that used to pass and misbehave (camera planes
+// that disagree with the projection, a zero shadow matrix, impossible layouts, a null command
+// buffer). Every refusal names the field, leaves the engine's images as they were and raises no
+// validation message.
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -147,5 +149,132 @@ TEST_F(PluginIntegrationGpu, AContextWithoutItsFeatureChainIsRefused) {
         ADD_FAILURE() << "a context without a device was accepted";
     } catch (const lightscatter::InvalidInput& e) {
         EXPECT_TRUE(contains(e.what(), "context.device")) << e.what();
+    }
+}
+
+// --- Camera planes -------------------------------------------------------------------------------
+
+TEST_F(PluginIntegrationGpu, PlanesThatDisagreeWithTheProjectionAreRefused) {
+    // The projection is built for 0.1 .. 50 m; 1000 (the old default) would have moved the sky.
+    expectRefused([](auto& d) { d.camera.farPlane = 1000.0f; }, "camera.farPlane = 1000",
+                  "puts the far plane at 50");
+    expectRefused([](auto& d) { d.camera.nearPlane = 0.5f; }, "camera.nearPlane = 0.5",
+                  "puts the near plane at 0.1");
+    expectRefused([](auto& d) { d.camera.reversedZ = true; }, "camera.reversedZ is true");
+    expectRefused([](auto& d) { d.camera.infiniteFar = true; }, "camera.infiniteFar is true");
+    // A projection that looks down +Z (left-handed) has no near plane in front of the camera.
+    expectRefused([](auto& d) { d.camera.projection[11] = 1.0f; }, "camera.projection");
+}
+
+TEST_F(PluginIntegrationGpu, PlanesComeFromTheProjection) {
+    // Left at 0 they are read from the matrix: the same image as with the right planes given.
+    const auto given = render([](auto& d) {
+        d.camera.nearPlane = 0.1f;
+        d.camera.farPlane = 50.0f;
+    });
+    const auto derived = render([](auto& d) {
+        d.camera.nearPlane = 0.0f;
+        d.camera.farPlane = 0.0f;
+    });
+    ASSERT_EQ(given.size(), derived.size());
+    double worst = 0.0, peak = 0.0;
+    for (size_t i = 0; i < given.size(); ++i) {
+        worst = std::max(worst, std::fabs(double(given[i]) - double(derived[i])));
+        peak = std::max(peak, std::fabs(double(given[i])));
+    }
+    EXPECT_LE(worst, 1e-4 * peak);
+}
+
+TEST_F(PluginIntegrationGpu, ReversedAndInfiniteProjectionsAreRecognised) {
+    for (const bool reversed : {false, true})
+        for (const bool infinite : {false, true}) {
+            FrameSpec spec = spotFrame();
+            spec.view = lookAt({0.0f, 2.5f, 9.0f}, {0.0f, 1.5f, 0.0f}, 60.0f, 1.5f, 0.1f, 50.0f,
+                               reversed, infinite);
+            TestFrame frame(dev(), spec);
+            auto desc = frame.description(Method::Epipolar, lightscatter::Profile::Custom,
+                                          smallSettings(spec.screen));
+            desc.camera.nearPlane = desc.camera.farPlane = 0.0f;
+            EXPECT_NO_THROW(plugin().render(desc)) << reversed << infinite;
+            desc.camera.reversedZ = !reversed;
+            EXPECT_THROW(plugin().render(desc), lightscatter::InvalidInput) << reversed << infinite;
+        }
+}
+
+// --- Other holes ---------------------------------------------------------------------------------
+
+TEST_F(PluginIntegrationGpu, AZeroShadowMatrixIsRefused) {
+    expectRefused([](auto& d) { d.light.shadowViewProjection = {}; },
+                  "light.shadowViewProjection is singular");
+    expectRefused(
+        [](auto& d) {
+            for (int c = 0; c < 4; ++c)
+                d.light.shadowViewProjection[size_t(c * 4 + 2)] = 0.0f;  // no depth row
+        },
+        "light.shadowViewProjection is singular");
+}
+
+TEST_F(PluginIntegrationGpu, LayoutsTheImageCannotHoldAreRefused) {
+    expectRefused([](auto& d) { d.depth.layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL; },
+                  "depth.layout COLOR_ATTACHMENT_OPTIMAL", "color layout");
+    expectRefused([](auto& d) { d.depth.finalLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL; },
+                  "depth.finalLayout DEPTH_ATTACHMENT_OPTIMAL", "DEPTH_STENCIL_ATTACHMENT usage");
+    expectRefused(
+        [](auto& d) { d.shadowMap->layout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL; },
+        "shadowMap.layout DEPTH_STENCIL_READ_ONLY_OPTIMAL");
+    expectRefused([](auto& d) { d.color.layout = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL; },
+                  "color.layout DEPTH_READ_ONLY_OPTIMAL", "no depth");
+    expectRefused([](auto& d) { d.color.finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL; },
+                  "color.finalLayout SHADER_READ_ONLY_OPTIMAL", "SAMPLED");
+    expectRefused(
+        [](auto& d) {
+            d.color.usage = VK_IMAGE_USAGE_STORAGE_BIT;
+            d.color.layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+        },
+        "color.layout TRANSFER_DST_OPTIMAL", "TRANSFER_DST");
+    expectRefused([](auto& d) { d.depth.layout = VK_IMAGE_LAYOUT_UNDEFINED; },
+                  "depth.layout UNDEFINED", "the plugin reads it");
+    expectRefused([](auto& d) { d.inscatterOut->finalLayout = VK_IMAGE_LAYOUT_PREINITIALIZED; },
+                  "inscatterOut.finalLayout PREINITIALIZED");
+}
+
+TEST_F(PluginIntegrationGpu, LayoutsTheImageCanHoldAreAccepted) {
+    // A sampled depth image may rest in DEPTH_READ_ONLY_OPTIMAL; Lin alone may start UNDEFINED.
+    FrameSpec spec = spotFrame();
+    TestFrame frame(dev(), spec);
+    TestImage depth(dev(), VK_FORMAT_D32_SFLOAT, spec.screen, VK_IMAGE_USAGE_SAMPLED_BIT,
+                    VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, "engine depth, read-only layout");
+    depth.upload(renderDepth(spec.scene, spec.view, spec.screen.width, spec.screen.height));
+    auto desc = frame.description(Method::Epipolar, lightscatter::Profile::Custom,
+                                  smallSettings(spec.screen));
+    desc.depth = depth.input();
+    desc.inscatterOut->layout = VK_IMAGE_LAYOUT_UNDEFINED;
+    EXPECT_NO_THROW(plugin().render(desc));
+}
+
+TEST_F(PluginIntegrationGpu, RecordingIntoANullCommandBufferIsRefused) {
+    TestFrame frame(dev(), spotFrame());
+    const auto desc = frame.description(Method::Epipolar, lightscatter::Profile::Custom,
+                                        smallSettings(frame.spec().screen));
+    try {
+        plugin().record(VK_NULL_HANDLE, desc);
+        ADD_FAILURE() << "record(VK_NULL_HANDLE) was accepted";
+    } catch (const lightscatter::InvalidInput& e) {
+        EXPECT_TRUE(contains(e.what(), "record: cmd is VK_NULL_HANDLE")) << e.what();
+    }
+}
+
+TEST_F(PluginIntegrationGpu, CustomSettingsErrorsNameTheFieldTheEngineSets) {
+    expectRefused([](auto& d) { d.custom.slices = 30; }, "custom.slices = 30");
+    TestFrame frame(dev(), spotFrame());
+    auto desc = frame.description(Method::Epipolar, lightscatter::Profile::Custom,
+                                  smallSettings(frame.spec().screen));
+    desc.custom.samplesPerSlice = 1;
+    try {
+        plugin().render(desc);
+        ADD_FAILURE() << "accepted";
+    } catch (const lightscatter::InvalidInput& e) {
+        EXPECT_TRUE(contains(e.what(), "custom.samplesPerSlice")) << e.what();
+        EXPECT_FALSE(contains(e.what(), "settings.")) << e.what();
     }
 }

@@ -23,10 +23,9 @@ lightscatter::Plugin& recordLightShafts(const EngineFrame& engine) {
                                                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     frame.shadowMap->finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
 
+    // The near and far planes are read from the projection.
     frame.camera.view = engine.view;
     frame.camera.projection = engine.projection;
-    frame.camera.nearPlane = 0.1f;
-    frame.camera.farPlane = 500.0f;
 
     frame.light.type = lightscatter::LightType::Spot;
     frame.light.position = {0.0f, 6.0f, 0.0f};
