@@ -131,7 +131,7 @@ struct Medium {
 
 // An engine image handed to the plugin for one frame: where it stands and where it must be left.
 // The plugin uses mip level 0 and array layer 0; it never keeps the image beyond the frame's
-// commands.
+// commands, and never names it (the engine's debug name stays).
 //
 // Within record(), the plugin's first command on the image is a barrier from (stages, access,
 // layout) to its own use, and its last a barrier from its own use to (finalStages, finalAccess,
@@ -199,6 +199,8 @@ struct PassTime {
 };
 
 struct FrameReport {
+    uint64_t frame = 0;             // the frame this report covers (record()'s number; 0: none yet)
+    bool timed = false;             // false: that frame has not finished on the GPU (passes empty)
     std::vector<PassTime> passes;   // GPU time per pass, execution order
     double totalMilliseconds = 0;
     std::string device;
@@ -300,11 +302,20 @@ public:
     Plugin& operator=(const Plugin&) = delete;
 
     // Validates the description (throws InvalidInput, nothing recorded), builds or reuses the
-    // frame's graph, and records it into `cmd`, which must be in the recording state. The engine
-    // submits; call report() after its fence.
-    void record(VkCommandBuffer cmd, const FrameDescription& frame);
+    // frame's graph, and records it into `cmd`, which must be in the recording state. Returns the
+    // frame's number (1, 2, ...), which report() takes once the engine's fence says the frame is
+    // done.
+    uint64_t record(VkCommandBuffer cmd, const FrameDescription& frame);
     // Validates, records into the plugin's own command buffer, submits, waits, reports.
     FrameReport render(const FrameDescription& frame);
+    // The GPU times of a frame, read without waiting: `timed` is false while the GPU has not
+    // finished it (or it was never submitted). The plugin keeps the times of the last kTimedFrames
+    // frames of one frame graph; an older frame, or one recorded before the graph was rebuilt,
+    // throws InvalidInput. Each frame keeps its own queries, so frames may be recorded ahead of
+    // their submission (at most kTimedFrames in flight).
+    static constexpr uint64_t kTimedFrames = 8;
+    FrameReport report(uint64_t frame);
+    // The last frame recorded (or rendered); frame 0 and nothing else before the first.
     FrameReport report();
 
     // The compiled frame graph, for tools.

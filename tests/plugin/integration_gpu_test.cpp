@@ -1,8 +1,8 @@
 // What an engine integrating the plugin runs into (issue #9): the device contract (features it must
 // enable, checked at construction), descriptions that used to pass and misbehave (camera planes
 // that disagree with the projection, a zero shadow matrix, impossible layouts, a null command
-// buffer). Every refusal names the field, leaves the engine's images as they were and raises no
-// validation message.
+// buffer), the engine's debug names, and per-frame reports. Every refusal names the field, leaves
+// the engine's images as they were and raises no validation message.
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -27,6 +27,43 @@ FrameSpec spotFrame() {
 bool contains(const std::string& text, const std::string& part) {
     return text.find(part) != std::string::npos;
 }
+
+// A command pool and command buffers of the engine's own.
+class EngineCommands {
+public:
+    EngineCommands(const rg::Device& device, uint32_t count) : device_(device) {
+        VkCommandPoolCreateInfo info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+        info.queueFamilyIndex = device.queueFamily();
+        RG_VK(vkCreateCommandPool(device.device(), &info, nullptr, &pool_));
+        VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+        alloc.commandPool = pool_;
+        alloc.commandBufferCount = count;
+        cmds_.resize(count);
+        RG_VK(vkAllocateCommandBuffers(device.device(), &alloc, cmds_.data()));
+    }
+    ~EngineCommands() {
+        vkQueueWaitIdle(device_.queue());
+        vkDestroyCommandPool(device_.device(), pool_, nullptr);
+    }
+    VkCommandBuffer begin(uint32_t i) {
+        VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+        RG_VK(vkBeginCommandBuffer(cmds_[i], &begin));
+        return cmds_[i];
+    }
+    void submitAndWait(uint32_t i) {
+        RG_VK(vkEndCommandBuffer(cmds_[i]));
+        VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+        submit.commandBufferCount = 1;
+        submit.pCommandBuffers = &cmds_[i];
+        RG_VK(vkQueueSubmit(device_.queue(), 1, &submit, VK_NULL_HANDLE));
+        RG_VK(vkQueueWaitIdle(device_.queue()));
+    }
+
+private:
+    const rg::Device& device_;
+    VkCommandPool pool_ = VK_NULL_HANDLE;
+    std::vector<VkCommandBuffer> cmds_;
+};
 
 }  // namespace
 
@@ -276,5 +313,93 @@ TEST_F(PluginIntegrationGpu, CustomSettingsErrorsNameTheFieldTheEngineSets) {
     } catch (const lightscatter::InvalidInput& e) {
         EXPECT_TRUE(contains(e.what(), "custom.samplesPerSlice")) << e.what();
         EXPECT_FALSE(contains(e.what(), "settings.")) << e.what();
+    }
+}
+
+// The engine's debug names stay: the validation layer, which prints an object's name in its
+// messages, still calls the image by the engine's name after the plugin has used it.
+TEST_F(PluginIntegrationGpu, TheEnginesDebugNamesAreKept) {
+    TestFrame frame(dev(), spotFrame());
+    auto desc = frame.description(Method::Epipolar, lightscatter::Profile::Custom,
+                                  smallSettings(frame.spec().screen));
+    auto setName = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
+        vkGetInstanceProcAddr(dev().instance(), "vkSetDebugUtilsObjectNameEXT"));
+    ASSERT_NE(setName, nullptr);
+    VkDebugUtilsObjectNameInfoEXT name{VK_STRUCTURE_TYPE_DEBUG_UTILS_OBJECT_NAME_INFO_EXT};
+    name.objectType = VK_OBJECT_TYPE_IMAGE;
+    name.objectHandle = reinterpret_cast<uint64_t>(desc.color.image);
+    name.pObjectName = "MyEngine HDR color";
+    RG_VK(setName(dev().device(), &name));
+    plugin().render(desc);
+
+    // A deliberate misuse the layer reports by naming the image: the subresource layout of an
+    // optimally tiled image (the layer skips the call).
+    ASSERT_EQ(dev().takeMessages().size(), 0u);
+    VkImageSubresource sub{VK_IMAGE_ASPECT_COLOR_BIT, 0, 0};
+    VkSubresourceLayout layout;
+    vkGetImageSubresourceLayout(dev().device(), desc.color.image, &sub, &layout);
+    const auto messages = dev().takeMessages();
+    ASSERT_FALSE(messages.empty()) << "the validation layer reported nothing to read the name from";
+    for (const auto& m : messages) {
+        EXPECT_TRUE(contains(m, "MyEngine HDR color")) << m;
+        EXPECT_FALSE(contains(m, "(imported)")) << m;
+    }
+}
+
+// --- Frames and their reports --------------------------------------------------------------------
+
+TEST_F(PluginIntegrationGpu, EachRecordedFrameHasItsOwnReport) {
+    TestFrame frame(dev(), spotFrame());
+    const auto desc = frame.description(Method::Epipolar, lightscatter::Profile::Custom,
+                                        smallSettings(frame.spec().screen));
+    plugin().render(desc);  // the graph for this description exists before the frames below
+    EngineCommands engine(dev(), 2);
+
+    // Two frames recorded before either is submitted.
+    const uint64_t first = plugin().record(engine.begin(0), desc);
+    const uint64_t second = plugin().record(engine.begin(1), desc);
+    EXPECT_EQ(second, first + 1);
+    EXPECT_EQ(plugin().report().frame, second);  // the last one recorded
+    for (uint64_t f : {first, second}) {
+        const auto r = plugin().report(f);
+        EXPECT_EQ(r.frame, f);
+        EXPECT_FALSE(r.timed) << "frame " << f << " has not run yet";
+        EXPECT_TRUE(r.passes.empty());
+        EXPECT_FALSE(r.passNames.empty());
+    }
+
+    engine.submitAndWait(0);
+    const auto one = plugin().report(first);
+    EXPECT_EQ(one.frame, first);
+    EXPECT_TRUE(one.timed);
+    EXPECT_FALSE(one.passes.empty());
+    EXPECT_FALSE(plugin().report(second).timed) << "frame 2's times are not frame 1's";
+
+    engine.submitAndWait(1);
+    const auto two = plugin().report(second);
+    EXPECT_EQ(two.frame, second);
+    EXPECT_TRUE(two.timed);
+    EXPECT_EQ(two.passes.size(), one.passes.size());
+    EXPECT_TRUE(plugin().report(first).timed);  // still held
+}
+
+TEST_F(PluginIntegrationGpu, ReportsOfFramesNoLongerHeldAreRefused) {
+    TestFrame frame(dev(), spotFrame());
+    auto desc = frame.description(Method::Epipolar, lightscatter::Profile::Custom,
+                                  smallSettings(frame.spec().screen));
+    const uint64_t old = plugin().render(desc).frame;
+    for (uint64_t i = 0; i < lightscatter::Plugin::kTimedFrames; ++i) plugin().render(desc);
+    EXPECT_THROW(plugin().report(old), lightscatter::InvalidInput);
+    EXPECT_THROW(plugin().report(0), lightscatter::InvalidInput);
+    EXPECT_THROW(plugin().report(plugin().report().frame + 1), lightscatter::InvalidInput);
+
+    const uint64_t before = plugin().report().frame;
+    desc.custom.slices += 4;  // a new graph
+    plugin().render(desc);
+    try {
+        plugin().report(before);
+        ADD_FAILURE() << "a frame of the previous graph was reported";
+    } catch (const lightscatter::InvalidInput& e) {
+        EXPECT_TRUE(contains(e.what(), "rebuilt")) << e.what();
     }
 }

@@ -1,14 +1,15 @@
 // The integration example of README.md. readme_sync_test.cpp checks that the README quotes this
-// file's marked block verbatim; readme_example_gpu_test.cpp runs it on the test device.
+// file's marked block verbatim; readme_example_gpu_test.cpp runs it.
 #include "readme_example.h"
 
 #include <memory>
 
-lightscatter::Plugin& recordLightShafts(const EngineFrame& engine) {
+uint64_t recordLightShafts(Engine& engine) {
     // [readme-example]
-    // Once: the plugin works on the engine's own device and queue.
-    static std::unique_ptr<lightscatter::Plugin> plugin;
-    if (!plugin) plugin = std::make_unique<lightscatter::Plugin>(engine.context);
+    // Once: the plugin works on the engine's own device and queue (the engine resets it before
+    // destroying them).
+    if (!engine.lightShafts)
+        engine.lightShafts = std::make_unique<lightscatter::Plugin>(engine.context);
 
     // Every frame: the engine's images, where they stand and where to leave them.
     lightscatter::FrameDescription frame;
@@ -40,9 +41,9 @@ lightscatter::Plugin& recordLightShafts(const EngineFrame& engine) {
     frame.profile = lightscatter::Profile::HighPerformance;
 
     // Throws lightscatter::InvalidInput, naming the field, before recording anything.
-    plugin->record(engine.commandBuffer, frame);
-    // Once the engine has submitted the command buffer and waited for it, plugin->report() gives
-    // the GPU time of every pass.
+    const uint64_t frameNumber = engine.lightShafts->record(engine.commandBuffer, frame);
+    // Once the engine's fence says this command buffer has run, report(frameNumber) gives the GPU
+    // time of each of its passes.
     // [readme-example]
-    return *plugin;
+    return frameNumber;
 }
