@@ -1,9 +1,10 @@
 #pragma once
 // lightscatter: volumetric light scattering (light shafts) as a post-process on Vulkan 1.3.
 //
-// The one header an engine includes. The engine imports its depth, color and (optionally) shadow-map
-// images, describes the camera, the light and the medium in MODEL.md's units (metres, W/m^2, W/sr,
-// 1/m), picks a method and a quality profile, and gets its color image back composited:
+// The one header an engine includes (C++17 or later). The engine imports its depth, color and
+// (optionally) shadow-map images, describes the camera, the light and the medium in the units of
+// docs/model.md (metres, W/m^2, W/sr, 1/m), picks a method and a quality profile, and gets its
+// color image back composited:
 //     color = color * exp(-betaT * S) + Lin
 // with S the distance along each pixel's ray to the surface (or to the sky distance) and Lin the
 // single-scattered in-scattering. Nothing else is done to the color: no tone mapping, no exposure.
@@ -111,7 +112,7 @@ struct Light {
     Vec3 intensity{1, 1, 1};      // E (W/m^2) for directional, I (W/sr) for point and spot
     float halfAngleDegrees = 30;  // spot, in (0, 89]
     float range = 1e30f;          // spot: no light beyond it
-    float radius = 0.05f;         // r0 of MODEL.md, > 0
+    float radius = 0.05f;         // r0 of docs/model.md, > 0
     // The shadow map's projection (world -> light clip, Vulkan conventions) and size. Required with
     // a shadow map (a singular matrix, such as the all-zero default, is refused); for a spot its
     // frustum must contain the cone.

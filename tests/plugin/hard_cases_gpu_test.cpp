@@ -1,4 +1,4 @@
-// Every hard case of DESIGN.md, for every method that applies: the frame renders without a
+// Every hard case of docs/model.md, for every method that applies: the frame renders without a
 // validation message and every pixel of Lin and of the composited color is finite.
 #include <cmath>
 #include <functional>
