@@ -1,5 +1,6 @@
 // The integration example of README.md. readme_sync_test.cpp checks that the README quotes this
-// file's marked block verbatim; readme_example_gpu_test.cpp runs it.
+// file's marked block verbatim; readme_example_gpu_test.cpp and the consumer projects
+// (tests/consumer/) run it.
 #include "readme_example.h"
 
 #include <memory>

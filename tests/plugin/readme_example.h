@@ -20,5 +20,5 @@ struct Engine {
 
 // The README's example, verbatim (readme_example.cpp): records the light shafts into the engine's
 // command buffer and returns the frame's number, for the plugin's report once the engine has
-// waited.
+// waited. Compiled by the plugin's tests and by the consumer projects (tests/consumer/).
 uint64_t recordLightShafts(Engine& engine);
