@@ -1,18 +1,25 @@
-# cmake --install: the public header, the libraries (SPIR-V embedded in them) and the CMake package
-# lightscatterConfig.cmake with its version file, exporting lightscatter::plugin.
+# cmake --install: the public header, the library (SPIR-V embedded in it) and the CMake package
+# lightscatterConfig.cmake with its version file, exporting one target, lightscatter::plugin.
 #
 #   <prefix>/include/lightscatter/lightscatter.h
-#   <prefix>/lib/liblightscatter.a, liblightscatter_passes.a, liblightscatter_rendergraph.a
-#     (LS_BUILD_SHARED: liblightscatter.so alone)
+#   <prefix>/lib/liblightscatter.a (LS_BUILD_SHARED: liblightscatter.so)
 #   <prefix>/lib/cmake/lightscatter/lightscatterConfig.cmake, ...ConfigVersion.cmake, ...Targets*.cmake
 include(CMakePackageConfigHelpers)
 
-set(ls_installed lightscatter_plugin)
-if(NOT LS_BUILD_SHARED)
-  # A static plugin needs the passes and the runtime after it; an engine never names them.
-  set_target_properties(ls_passes PROPERTIES EXPORT_NAME passes)
-  set_target_properties(rendergraph PROPERTIES EXPORT_NAME rendergraph)
-  list(APPEND ls_installed ls_passes rendergraph)
+if(LS_BUILD_SHARED)
+  set(ls_installed lightscatter_plugin)  # the passes and the runtime are inside it
+else()
+  # One archive with the plugin, the passes and the runtime, so that an engine links one library
+  # with nothing to order; position-independent like the objects it is made of.
+  add_library(lightscatter_package STATIC $<TARGET_OBJECTS:lightscatter_plugin>
+                                          $<TARGET_OBJECTS:ls_passes> $<TARGET_OBJECTS:rendergraph>)
+  set_target_properties(lightscatter_package PROPERTIES OUTPUT_NAME lightscatter EXPORT_NAME plugin
+                        LINKER_LANGUAGE CXX ARCHIVE_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/package)
+  target_include_directories(lightscatter_package
+                             INTERFACE $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/lightscatter>)
+  target_compile_features(lightscatter_package INTERFACE cxx_std_17)
+  target_link_libraries(lightscatter_package INTERFACE Vulkan::Vulkan)
+  set(ls_installed lightscatter_package)
 endif()
 install(TARGETS ${ls_installed} EXPORT lightscatterTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
