@@ -9,9 +9,13 @@
 # bindings that only some lights need are variants, not specialisation constants, so a pipeline
 # never declares a descriptor it is not given. Includes are tracked with
 # glslang's depfile so editing a shared .glsl file rebuilds its users.
+#
+# Paths are this project's own (PROJECT_BINARY_DIR, this file's folder), never the top-level
+# project's, so the function works when lightscatter is added to an engine with add_subdirectory.
+
 function(ls_embed_shaders)
   cmake_parse_arguments(ARG "" "TARGET" "SOURCES;INCLUDE_DIRS" ${ARGN})
-  set(out_dir ${CMAKE_BINARY_DIR}/shaders_gen)
+  set(out_dir ${PROJECT_BINARY_DIR}/shaders_gen)
   file(MAKE_DIRECTORY ${out_dir})
   set(include_flags)
   foreach(dir ${ARG_INCLUDE_DIRS})
@@ -54,8 +58,8 @@ function(ls_embed_shaders)
     add_custom_command(
       OUTPUT ${header}
       COMMAND ${CMAKE_COMMAND} -DIN=${spv_header} -DOUT=${header} -DSYMBOL=${symbol}
-              -P ${CMAKE_SOURCE_DIR}/cmake/WrapSpirv.cmake
-      DEPENDS ${spv_header} ${CMAKE_SOURCE_DIR}/cmake/WrapSpirv.cmake
+              -P ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/WrapSpirv.cmake
+      DEPENDS ${spv_header} ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/WrapSpirv.cmake
       VERBATIM)
     list(APPEND headers ${header})
   endforeach()

@@ -1,6 +1,6 @@
 #pragma once
-// The lightscatter command line's commands (a contract: see DESIGN.md). Each returns the exit code
-// and throws std::exception with one line for any failure.
+// The lightscatter command line's commands (a contract: see docs/host_example.md). Each returns the
+// exit code and throws std::exception with one line for any failure.
 #include "cli_args.h"
 
 namespace host {

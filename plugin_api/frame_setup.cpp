@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <glm/gtc/type_ptr.hpp>
+#include <limits>
 #include <string>
 
 #include "rendergraph/format_info.h"
@@ -16,6 +17,13 @@ namespace {
 std::string num(double v) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+// A distance for a message: four figures (the planes read from a float32 matrix are not exact).
+std::string metres(double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.4g m", v);
     return buf;
 }
 
@@ -37,8 +45,123 @@ glm::vec3 vec(const Vec3& v, const std::string& field, bool nonNegative) {
     return {v[0], v[1], v[2]};
 }
 
+const char* layoutName(VkImageLayout l) {
+    switch (l) {
+        case VK_IMAGE_LAYOUT_UNDEFINED:
+            return "UNDEFINED";
+        case VK_IMAGE_LAYOUT_GENERAL:
+            return "GENERAL";
+        case VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL:
+            return "COLOR_ATTACHMENT_OPTIMAL";
+        case VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL:
+            return "DEPTH_STENCIL_ATTACHMENT_OPTIMAL";
+        case VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL:
+            return "DEPTH_STENCIL_READ_ONLY_OPTIMAL";
+        case VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL:
+            return "SHADER_READ_ONLY_OPTIMAL";
+        case VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL:
+            return "TRANSFER_SRC_OPTIMAL";
+        case VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL:
+            return "TRANSFER_DST_OPTIMAL";
+        case VK_IMAGE_LAYOUT_PREINITIALIZED:
+            return "PREINITIALIZED";
+        case VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL:
+            return "DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL";
+        case VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL:
+            return "DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL";
+        case VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL:
+            return "DEPTH_ATTACHMENT_OPTIMAL";
+        case VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL:
+            return "DEPTH_READ_ONLY_OPTIMAL";
+        case VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL:
+            return "STENCIL_ATTACHMENT_OPTIMAL";
+        case VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL:
+            return "STENCIL_READ_ONLY_OPTIMAL";
+        case VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL:
+            return "READ_ONLY_OPTIMAL";
+        case VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL:
+            return "ATTACHMENT_OPTIMAL";
+        case VK_IMAGE_LAYOUT_PRESENT_SRC_KHR:
+            return "PRESENT_SRC_KHR";
+        default:
+            return nullptr;
+    }
+}
+
+// Why an image of this format and usage cannot be in `layout` (Vulkan's rules for the layouts of
+// an image barrier), or empty when it can. `initial`: the layout the frame starts in; `read`: the
+// plugin reads what the image holds.
+std::string layoutProblem(VkImageLayout layout, VkFormat format, VkImageUsageFlags usage,
+                          bool initial, bool read) {
+    const bool depth = rg::hasDepth(format);
+    const bool color = !rg::isDepthStencil(format);
+    const VkImageUsageFlags attachment = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
+    const VkImageUsageFlags readable =
+        VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT;
+    auto needs = [&](VkImageUsageFlags any, const char* what) -> std::string {
+        if (usage & any) return {};
+        return std::string("needs an image created with ") + what + " usage";
+    };
+    switch (layout) {
+        case VK_IMAGE_LAYOUT_UNDEFINED:
+            if (!initial) return "is not a layout an image can be left in";
+            if (read) return "discards what the image holds, and the plugin reads it";
+            return {};
+        case VK_IMAGE_LAYOUT_PREINITIALIZED:
+            if (!initial) return "is not a layout an image can be left in";
+            if (!color) return "is for linear color images written by the host";
+            return {};
+        case VK_IMAGE_LAYOUT_GENERAL:
+            return {};
+        case VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL:
+            if (!color) return "is a color layout, and the format is depth/stencil";
+            return needs(VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, "COLOR_ATTACHMENT");
+        case VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL:
+        case VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL:
+        case VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL:
+        case VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL:
+        case VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL:
+            if (!depth) return "is a depth layout, and the format has no depth";
+            return needs(attachment, "DEPTH_STENCIL_ATTACHMENT");
+        case VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL:
+            if (!depth) return "is a depth layout, and the format has no depth";
+            return needs(attachment | readable,
+                         "DEPTH_STENCIL_ATTACHMENT, SAMPLED or INPUT_ATTACHMENT");
+        case VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL:
+        case VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL:
+            return "is a layout of the stencil aspect alone, and the plugin uses color or depth";
+        case VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL:
+            return needs(readable, "SAMPLED or INPUT_ATTACHMENT");
+        case VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL:
+            return needs(VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "TRANSFER_SRC");
+        case VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL:
+            return needs(VK_IMAGE_USAGE_TRANSFER_DST_BIT, "TRANSFER_DST");
+        case VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL:
+            return needs(attachment | readable,
+                         "DEPTH_STENCIL_ATTACHMENT, SAMPLED or INPUT_ATTACHMENT");
+        case VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL:
+            return color ? needs(VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, "COLOR_ATTACHMENT")
+                         : needs(attachment, "DEPTH_STENCIL_ATTACHMENT");
+        case VK_IMAGE_LAYOUT_PRESENT_SRC_KHR:
+            if (!color) return "is a swapchain layout, and the format is depth/stencil";
+            return {};
+        default:
+            return "is not a layout the plugin takes";
+    }
+}
+
+void checkLayout(VkImageLayout layout, const ImageInput& img, const std::string& field,
+                 bool initial, bool read) {
+    const std::string why = layoutProblem(layout, img.format, img.usage, initial, read);
+    if (why.empty()) return;
+    const char* name = layoutName(layout);
+    fail(field + " " +
+         (name ? std::string(name) : "#" + std::to_string(static_cast<int64_t>(layout))) +
+         " cannot hold this " + rg::formatName(img.format) + " image: the layout " + why);
+}
+
 void checkImage(const ImageInput& img, const std::string& field, VkImageUsageFlags usage,
-                const char* usageName) {
+                const char* usageName, bool read = true) {
     if (!img.image) fail(field + ".image is VK_NULL_HANDLE");
     if (img.extent.width == 0 || img.extent.height == 0)
         fail(field + ".extent is " + std::to_string(img.extent.width) + "x" +
@@ -47,6 +170,8 @@ void checkImage(const ImageInput& img, const std::string& field, VkImageUsageFla
         fail(field + ".usage lacks " + usageName + ", which the plugin needs to read or write it");
     if (img.finalLayout == VK_IMAGE_LAYOUT_UNDEFINED)
         fail(field + ".finalLayout is UNDEFINED: say which layout the image must be left in");
+    checkLayout(img.layout, img, field + ".layout", true, read);
+    checkLayout(img.finalLayout, img, field + ".finalLayout", false, read);
 }
 
 void checkDepthFormat(VkFormat f, const std::string& field) {
@@ -56,24 +181,109 @@ void checkDepthFormat(VkFormat f, const std::string& field) {
              "with stencil)");
 }
 
+// How far a matrix is from singular: |det| over the product of its rows' lengths (Hadamard's
+// bound), 1 for orthogonal rows, 0 for a singular matrix; scale-free, so metres or kilometres do
+// not matter.
+double conditioning(const glm::mat4& m) {
+    const glm::dmat4 d(m);
+    double rows = 1.0;
+    for (int r = 0; r < 4; ++r) rows *= glm::length(glm::dvec4(d[0][r], d[1][r], d[2][r], d[3][r]));
+    if (!(rows > 0.0)) return 0.0;
+    return std::fabs(glm::determinant(d)) / rows;
+}
+
+// The planes the projection puts at depth 0 and 1, read from its z and w rows on the view axis
+// (the point (0, 0, -t) lands at depth (a (-t) + b) / (c (-t) + d)): distances in front of the
+// camera, +inf for a depth the projection reaches only at infinity.
+struct DerivedPlanes {
+    double atDepth0 = 0, atDepth1 = 0;
+};
+
+DerivedPlanes derivePlanes(const glm::mat4& p) {
+    const double a = p[2][2], b = p[3][2], c = p[2][3], d = p[3][3];
+    auto distanceAt = [&](double depth) {
+        const double den = a - depth * c;  // z (a - depth c) = depth d - b, z = -distance
+        const double num = depth * d - b;
+        if (den == 0.0)
+            return num == 0.0 ? std::numeric_limits<double>::quiet_NaN()
+                              : std::numeric_limits<double>::infinity();
+        return -num / den;
+    };
+    return {distanceAt(0.0), distanceAt(1.0)};
+}
+
+// Checks the camera against its projection and fills the planes the nodes use.
+void setupCamera(const Camera& c, ls::CameraParams& out) {
+    const DerivedPlanes d = derivePlanes(out.projection);
+    const bool reversed = d.atDepth1 < d.atDepth0;
+    const double nearD = reversed ? d.atDepth1 : d.atDepth0;
+    const double farD = reversed ? d.atDepth0 : d.atDepth1;
+    if (!(nearD > 0.0) || !std::isfinite(nearD) || !(farD > nearD))
+        fail("camera.projection puts depth 0 at " + metres(d.atDepth0) + " and depth 1 at " +
+             metres(d.atDepth1) +
+             " along the view axis: it must map a range in front of the camera "
+             "(view space looks down -Z) to depth [0, 1], as a Vulkan perspective projection does");
+    if (c.reversedZ != reversed)
+        fail(std::string("camera.reversedZ is ") + (c.reversedZ ? "true" : "false") +
+             " but camera.projection puts the near plane at depth " + (reversed ? "1" : "0"));
+    // float32 rounding of the matrix moves the far plane by about 2^-24 far/near relative; an
+    // "infinite" projection nudged for precision is finite but far beyond anything it resolves.
+    const bool derivedInfinite = !std::isfinite(farD);
+    const double slack = 1e-3 + 1e-6 * (derivedInfinite ? 0.0 : farD / nearD);
+    if (c.infiniteFar && !derivedInfinite && farD / nearD < 1e5)
+        fail("camera.infiniteFar is true but camera.projection has a far plane at " + metres(farD));
+    if (!c.infiniteFar && derivedInfinite)
+        fail("camera.infiniteFar is false but camera.projection has no far plane (depth " +
+             std::string(reversed ? "0" : "1") + " is at infinity)");
+    auto agrees = [&](double given, double derived) {
+        return std::fabs(given - derived) <= slack * derived;
+    };
+    if (c.nearPlane != 0.0f) {
+        if (!(c.nearPlane > 0.0f) || !finite(c.nearPlane))
+            fail("camera.nearPlane = " + num(c.nearPlane) +
+                 ": must be > 0 (or 0: from the projection)");
+        if (!agrees(c.nearPlane, nearD))
+            fail("camera.nearPlane = " + num(c.nearPlane) +
+                 " but camera.projection puts the near plane at " + metres(nearD) +
+                 ": leave nearPlane 0 to take it from the projection");
+    }
+    if (!c.infiniteFar && c.farPlane != 0.0f) {
+        if (!(c.farPlane > 0.0f) || !finite(c.farPlane))
+            fail("camera.farPlane = " + num(c.farPlane) +
+                 ": must be > 0 (or 0: from the projection)");
+        if (!agrees(c.farPlane, farD))
+            fail("camera.farPlane = " + num(c.farPlane) +
+                 " but camera.projection puts the far plane at " + metres(farD) +
+                 ": leave farPlane 0 to take it from the projection");
+    }
+    // Values the engine gave and that agree are kept as given; the others come from the matrix.
+    out.nearPlane = c.nearPlane != 0.0f ? c.nearPlane : static_cast<float>(nearD);
+    if (c.farPlane != 0.0f)
+        out.farPlane = c.farPlane;
+    else  // unused with an infinite far plane
+        out.farPlane = c.infiniteFar ? std::numeric_limits<float>::max() : static_cast<float>(farD);
+    out.reversedZ = reversed;
+    out.infiniteFar = c.infiniteFar;
+}
+
 }  // namespace
 
 void checkSettings(const Settings& s) {
     if (s.slices == 0 || s.slices % 4 != 0 || s.slices > 16384)
-        fail("settings.slices = " + std::to_string(s.slices) +
+        fail("custom.slices = " + std::to_string(s.slices) +
              ": must be a positive multiple of 4 (a quarter per screen edge), at most 16384");
     if (s.samplesPerSlice < 2 || s.samplesPerSlice > 16384)
-        fail("settings.samplesPerSlice = " + std::to_string(s.samplesPerSlice) +
+        fail("custom.samplesPerSlice = " + std::to_string(s.samplesPerSlice) +
              ": must be between 2 and 16384");
     const uint32_t st = s.initialSampleStep;
     if (st == 0 || (st & (st - 1)) != 0 || st > 128)
-        fail("settings.initialSampleStep = " + std::to_string(st) +
+        fail("custom.initialSampleStep = " + std::to_string(st) +
              ": must be a power of two between 1 and 128");
     if (!(s.refinementThreshold > 0.0f) || !finite(s.refinementThreshold))
-        fail("settings.refinementThreshold = " + num(s.refinementThreshold) + ": must be > 0");
+        fail("custom.refinementThreshold = " + num(s.refinementThreshold) + ": must be > 0");
     if (!(s.bilateralThreshold > 0.0f) || !finite(s.bilateralThreshold))
-        fail("settings.bilateralThreshold = " + num(s.bilateralThreshold) + ": must be > 0");
-    if (!finite(s.shadowDepthBias)) fail("settings.shadowDepthBias is not finite");
+        fail("custom.bilateralThreshold = " + num(s.bilateralThreshold) + ": must be > 0");
+    if (!finite(s.shadowDepthBias)) fail("custom.shadowDepthBias is not finite");
 }
 
 bool lightTouchesView(const ls::CameraParams& camera, const ls::LightParams& light) {
@@ -116,17 +326,9 @@ FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
     const Camera& c = f.camera;
     s.camera.view = matrix(c.view, "camera.view");
     s.camera.projection = matrix(c.projection, "camera.projection");
-    if (!(c.nearPlane > 0.0f) || !finite(c.nearPlane))
-        fail("camera.nearPlane = " + num(c.nearPlane) + ": must be > 0");
-    if (!c.infiniteFar && (!(c.farPlane > c.nearPlane) || !finite(c.farPlane)))
-        fail("camera.farPlane = " + num(c.farPlane) + ": must exceed nearPlane (" + num(c.nearPlane) +
-             ") unless infiniteFar");
     if (std::fabs(glm::determinant(s.camera.projection * s.camera.view)) < 1e-30f)
         fail("camera.projection * camera.view is singular");
-    s.camera.nearPlane = c.nearPlane;
-    s.camera.farPlane = c.farPlane;
-    s.camera.reversedZ = c.reversedZ;
-    s.camera.infiniteFar = c.infiniteFar;
+    setupCamera(c, s.camera);
 
     // Light.
     const Light& l = f.light;
@@ -150,7 +352,15 @@ FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
     if (l.type == LightType::Point && (l.shadowMapSize > 0 || f.shadowMap))
         fail("light.shadowMapSize / shadowMap: point lights are unshadowed (cube maps are not "
              "supported); remove the shadow map");
-    if (l.shadowMapSize > 0) s.light.shadowViewProj = matrix(l.shadowViewProjection, "light.shadowViewProjection");
+    if (l.shadowMapSize > 0) {
+        s.light.shadowViewProj = matrix(l.shadowViewProjection, "light.shadowViewProjection");
+        // An all-zero (default) or otherwise singular matrix puts every point at one texel and
+        // depth: the light would silently vanish or light everything.
+        if (conditioning(s.light.shadowViewProj) < 1e-9)
+            fail("light.shadowViewProjection is singular (all zero?): with light.shadowMapSize " +
+                 std::to_string(l.shadowMapSize) +
+                 " it must be the shadow map's world -> light clip matrix");
+    }
 
     // Medium.
     const Medium& m = f.medium;
@@ -197,7 +407,8 @@ FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
         }
         if (f.lightColor) checkImage(*f.lightColor, "lightColor", VK_IMAGE_USAGE_SAMPLED_BIT, "SAMPLED");
         if (f.inscatterOut) {
-            checkImage(*f.inscatterOut, "inscatterOut", VK_IMAGE_USAGE_STORAGE_BIT, "STORAGE");
+            checkImage(*f.inscatterOut, "inscatterOut", VK_IMAGE_USAGE_STORAGE_BIT, "STORAGE",
+                       false);
             if (f.inscatterOut->format != VK_FORMAT_R32G32B32A32_SFLOAT)
                 fail("inscatterOut.format " + rg::formatName(f.inscatterOut->format) +
                      ": must be R32G32B32A32_SFLOAT");

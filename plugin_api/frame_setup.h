@@ -25,6 +25,10 @@ FrameSetup setupFrame(const FrameDescription& frame, bool withImages = true);
 
 void checkSettings(const Settings& s);
 
+// Throws InvalidInput naming every feature the plugin needs that `enabled` (the chain an engine
+// created its device with) does not turn on.
+void checkEnabledFeatures(const VkPhysicalDeviceFeatures2* enabled);
+
 // Whether the light's volume can touch the camera's view at all (conservative).
 bool lightTouchesView(const ls::CameraParams& camera, const ls::LightParams& light);
 

@@ -1,16 +1,22 @@
 #pragma once
 // lightscatter: volumetric light scattering (light shafts) as a post-process on Vulkan 1.3.
 //
-// The one header an engine includes. The engine imports its depth, color and (optionally) shadow-map
-// images, describes the camera, the light and the medium in MODEL.md's units (metres, W/m^2, W/sr,
-// 1/m), picks a method and a quality profile, and gets its color image back composited:
+// The one header an engine includes (C++17 or later). The engine imports its depth, color and
+// (optionally) shadow-map images, describes the camera, the light and the medium in the units of
+// docs/model.md (metres, W/m^2, W/sr, 1/m), picks a method and a quality profile, and gets its
+// color image back composited:
 //     color = color * exp(-betaT * S) + Lin
 // with S the distance along each pixel's ray to the surface (or to the sky distance) and Lin the
 // single-scattered in-scattering. Nothing else is done to the color: no tone mapping, no exposure.
 //
-// Requirements on the engine's VkDevice (lightscatter::requiredDeviceExtensions/-Features list them):
-// Vulkan 1.3 with synchronization2, dynamicRendering, maintenance4; separateDepthStencilLayouts,
-// hostQueryReset; shaderStorageImageExtendedFormats; VK_KHR_push_descriptor.
+// Requirements on the engine's VkDevice: Vulkan 1.3, the extensions requiredDeviceExtensions()
+// lists (VK_KHR_push_descriptor) and the features requiredDeviceFeatures() turns on
+// (synchronization2, dynamicRendering, maintenance4; separateDepthStencilLayouts, hostQueryReset;
+// shaderStorageImageExtendedFormats). The engine tells the plugin what it enabled
+// (VulkanContext::enabledFeatures), and the plugin refuses a device that lacks one.
+//
+// Linking: CMake target lightscatter::plugin, from find_package(lightscatter CONFIG) on an
+// installed tree or from add_subdirectory on the source tree (README.md, "Integrating the plugin").
 #include <vulkan/vulkan.h>
 
 #include <array>
@@ -20,6 +26,20 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+// What the library exports: everything declared with LIGHTSCATTER_API (a shared build exports
+// nothing else).
+#if defined(_WIN32)
+#if defined(LIGHTSCATTER_BUILDING_SHARED)
+#define LIGHTSCATTER_API __declspec(dllexport)
+#elif defined(LIGHTSCATTER_SHARED)
+#define LIGHTSCATTER_API __declspec(dllimport)
+#else
+#define LIGHTSCATTER_API
+#endif
+#else
+#define LIGHTSCATTER_API __attribute__((visibility("default")))
+#endif
 
 namespace lightscatter {
 
@@ -44,12 +64,12 @@ enum class ShadowFilter { Nearest, Bilinear };
 // a light (which no sparse sampling resolves) exact, and changes nothing where there is no glow.
 enum class Interpolation { ShadowedFraction, Inscattering };
 
-const char* methodName(Method m);    // "epipolar", "brute-force"
-const char* profileName(Profile p);  // "high-quality", "balanced", ... "custom"
-std::optional<Method> parseMethod(const std::string& name);
-std::optional<Profile> parseProfile(const std::string& name);
-std::vector<std::string> methodNames();
-std::vector<std::string> profileNames();
+LIGHTSCATTER_API const char* methodName(Method m);    // "epipolar", "brute-force"
+LIGHTSCATTER_API const char* profileName(Profile p);  // "high-quality", "balanced", ... "custom"
+LIGHTSCATTER_API std::optional<Method> parseMethod(const std::string& name);
+LIGHTSCATTER_API std::optional<Profile> parseProfile(const std::string& name);
+LIGHTSCATTER_API std::vector<std::string> methodNames();
+LIGHTSCATTER_API std::vector<std::string> profileNames();
 
 // Every choice seed 000 leaves open.
 struct Settings {
@@ -68,15 +88,21 @@ struct Settings {
 };
 
 // The settings of a profile (Custom returns the defaults).
-Settings profileSettings(Profile profile);
+LIGHTSCATTER_API Settings profileSettings(Profile profile);
 
+// The camera that rendered `depth`. The projection is the one authority on the depth buffer: the
+// plugin reads the near and far planes from it (the view-space distances it maps to depth 0 and 1),
+// so they cannot disagree with what the depth buffer holds.
 struct Camera {
     Mat4 view{};        // world -> view (right-handed, looks down -Z)
-    Mat4 projection{};  // view -> Vulkan clip (y down, depth in [0, 1])
-    float nearPlane = 0.1f;
-    float farPlane = 1000.0f;  // ignored when infiniteFar
-    bool reversedZ = false;    // depth 1 at the near plane
-    bool infiniteFar = false;
+    Mat4 projection{};  // view -> Vulkan clip (y down, depth in [0, 1]), perspective
+    // Optional, in metres. 0 (the default): taken from the projection. When set, each must agree
+    // with the projection (to 0.1%, more where float32 cannot resolve the far plane), or the frame
+    // is refused: a projection built for another far plane would silently move the sky and the fog.
+    float nearPlane = 0.0f;
+    float farPlane = 0.0f;     // ignored when infiniteFar
+    bool reversedZ = false;    // depth 1 at the near plane; must match the projection
+    bool infiniteFar = false;  // no far plane (the sky is medium.maxDistance away); must match it
 };
 
 struct Light {
@@ -86,9 +112,10 @@ struct Light {
     Vec3 intensity{1, 1, 1};      // E (W/m^2) for directional, I (W/sr) for point and spot
     float halfAngleDegrees = 30;  // spot, in (0, 89]
     float range = 1e30f;          // spot: no light beyond it
-    float radius = 0.05f;         // r0 of MODEL.md, > 0
+    float radius = 0.05f;         // r0 of docs/model.md, > 0
     // The shadow map's projection (world -> light clip, Vulkan conventions) and size. Required with
-    // a shadow map; for a spot its frustum must contain the cone.
+    // a shadow map (a singular matrix, such as the all-zero default, is refused); for a spot its
+    // frustum must contain the cone.
     Mat4 shadowViewProjection{};
     uint32_t shadowMapSize = 0;   // 0: no shadow map
     bool shadowReversedZ = false;
@@ -104,16 +131,44 @@ struct Medium {
 };
 
 // An engine image handed to the plugin for one frame: where it stands and where it must be left.
+// The plugin uses mip level 0 and array layer 0; it never keeps the image beyond the frame's
+// commands, and never names it (the engine's debug name stays).
+//
+// Within record(), the plugin's first command on the image is a barrier from (stages, access,
+// layout) to its own use, and its last a barrier from its own use to (finalStages, finalAccess,
+// finalLayout). So:
+//   usage         the VkImageUsageFlags the image was created with. The plugin needs SAMPLED
+//   (depth,
+//                 shadowMap, lightColor) or STORAGE (color, inscatterOut); layouts are checked
+//                 against these flags (COLOR_ATTACHMENT_OPTIMAL needs COLOR_ATTACHMENT, ...).
+//   layout        the layout the image is in when the plugin's commands start. It must be a layout
+//                 the image's format and usage can hold (a depth image cannot be in
+//                 COLOR_ATTACHMENT_OPTIMAL). UNDEFINED only for inscatterOut, which the plugin
+//                 overwrites; the other images are read.
+//   stages/access the pipeline stages and access types of the engine's last use before the plugin
+//                 (for example LATE_FRAGMENT_TESTS + DEPTH_STENCIL_ATTACHMENT_WRITE after a depth
+//                 pass). The plugin's first barrier waits for them. The defaults wait for
+//                 everything.
+//   finalLayout   the layout the plugin leaves the image in (required; not
+//   UNDEFINED/PREINITIALIZED). finalStages/finalAccess  the engine's next use after the plugin: the
+//   plugin's last barrier makes
+//                 its work visible to them. The defaults make it visible to everything.
+// Stages and the VkImage handle may change from frame to frame at no cost. A different format,
+// extent (a resize), usage or layout rebuilds the frame graph on the next record(): the plugin
+// waits for the device to be idle, frees its transient images and allocates new ones. Command
+// buffers it recorded before a rebuild must have been submitted (and not be submitted again) by
+// then.
 struct ImageInput {
     VkImage image = VK_NULL_HANDLE;
     VkFormat format = VK_FORMAT_UNDEFINED;
     VkExtent2D extent{0, 0};
-    VkImageUsageFlags usage = 0;
+    VkImageUsageFlags usage = 0;                       // the flags the image was created with
     VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;  // at the start of the frame
-    VkPipelineStageFlags2 stages = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+    VkPipelineStageFlags2 stages = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;  // the engine's last use
     VkAccessFlags2 access = VK_ACCESS_2_MEMORY_WRITE_BIT;
     VkImageLayout finalLayout = VK_IMAGE_LAYOUT_UNDEFINED;  // required
-    VkPipelineStageFlags2 finalStages = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+    VkPipelineStageFlags2 finalStages =
+        VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;  // the engine's next use
     VkAccessFlags2 finalAccess = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT;
 };
 
@@ -142,15 +197,17 @@ struct FrameDescription {
     DebugOptions debug;
 };
 
-// Thrown before anything is recorded when a description breaks a rule; the message names the field.
-class InvalidInput : public std::invalid_argument {
+// Thrown before anything is recorded when a description breaks a rule; the message names the field
+// (as a path from FrameDescription: "custom.slices", "depth.layout"; or from VulkanContext:
+// "context.enabledFeatures") and the rule. The engine's images and command buffer are untouched.
+class LIGHTSCATTER_API InvalidInput : public std::invalid_argument {
 public:
     using std::invalid_argument::invalid_argument;
 };
 
 // Thrown when Vulkan fails the plugin: out of device or host memory while building a frame's
 // textures or pipelines, a lost device. The message names the call, and the resource or pass.
-class DeviceError : public std::runtime_error {
+class LIGHTSCATTER_API DeviceError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
@@ -161,6 +218,8 @@ struct PassTime {
 };
 
 struct FrameReport {
+    uint64_t frame = 0;             // the frame this report covers (record()'s number; 0: none yet)
+    bool timed = false;             // false: that frame has not finished on the GPU (passes empty)
     std::vector<PassTime> passes;   // GPU time per pass, execution order
     double totalMilliseconds = 0;
     std::string device;
@@ -198,10 +257,47 @@ struct Budget {
 };
 
 // The epipolar method's memory for a profile, screen and shadow-map size; needs no GPU.
-Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint32_t shadowMapSize,
-              LightType light = LightType::Spot, const Settings* custom = nullptr);
+LIGHTSCATTER_API Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
+                               uint32_t shadowMapSize, LightType light = LightType::Spot,
+                               const Settings* custom = nullptr);
 
-std::vector<const char*> requiredDeviceExtensions();
+// The device extensions the plugin needs; add them to VkDeviceCreateInfo::ppEnabledExtensionNames.
+LIGHTSCATTER_API std::vector<const char*> requiredDeviceExtensions();
+
+// The device features the plugin needs, as a chain for VkDeviceCreateInfo::pNext:
+//     lightscatter::DeviceFeatures features = lightscatter::requiredDeviceFeatures();
+//     features.vulkan12.timelineSemaphore = VK_TRUE;   // the engine's own, if any
+//     createInfo.pNext = features.chain();             // after the last copy or move
+//     ... vkCreateDevice(...); context.enabledFeatures = features.chain();
+// chain() links core -> vulkan11 -> vulkan12 -> vulkan13 and leaves vulkan13.pNext as it is (the
+// engine may hang its extension structures there).
+struct DeviceFeatures {
+    DeviceFeatures() {
+        core.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
+        vulkan11.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES;
+        vulkan12.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES;
+        vulkan13.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES;
+        chain();
+    }
+    VkPhysicalDeviceFeatures2* chain() {
+        core.pNext = &vulkan11;
+        vulkan11.pNext = &vulkan12;
+        vulkan12.pNext = &vulkan13;
+        return &core;
+    }
+    VkPhysicalDeviceFeatures2 core{};
+    VkPhysicalDeviceVulkan11Features vulkan11{};
+    VkPhysicalDeviceVulkan12Features vulkan12{};
+    VkPhysicalDeviceVulkan13Features vulkan13{};
+};
+LIGHTSCATTER_API DeviceFeatures requiredDeviceFeatures();
+
+// For an engine with a feature chain of its own: turns on, in that chain, every feature the plugin
+// needs and leaves the rest as it is. The chain must hold a structure for each
+// (Vulkan12/13Features, or the feature's own structure such as
+// VkPhysicalDeviceMaintenance4Features); throws InvalidInput naming the structure that is missing,
+// changing nothing.
+LIGHTSCATTER_API void enableRequiredDeviceFeatures(VkPhysicalDeviceFeatures2& features);
 
 // The engine's Vulkan objects the plugin works with. The plugin never destroys them.
 struct VulkanContext {
@@ -209,27 +305,42 @@ struct VulkanContext {
     VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
     VkDevice device = VK_NULL_HANDLE;
     VkQueue queue = VK_NULL_HANDLE;
-    uint32_t queueFamily = 0;
+    uint32_t queueFamily = 0;  // of `queue`; needs graphics, compute and timestamps
+    // Required: the feature chain the engine gave vkCreateDevice (VkDeviceCreateInfo::pNext), which
+    // Vulkan cannot be asked for afterwards. The Plugin constructor reads it (and keeps nothing)
+    // and refuses, with InvalidInput naming them, features the plugin needs that are not enabled.
+    const VkPhysicalDeviceFeatures2* enabledFeatures = nullptr;
 };
 
-class Plugin {
+class LIGHTSCATTER_API Plugin {
 public:
+    // Throws InvalidInput for a context that lacks a handle or a feature (see VulkanContext).
     explicit Plugin(const VulkanContext& context);
     ~Plugin();
     Plugin(const Plugin&) = delete;
     Plugin& operator=(const Plugin&) = delete;
 
     // Validates the description (throws InvalidInput, nothing recorded), builds or reuses the
-    // frame's graph, and records it into `cmd`. The engine submits; call report() after its fence.
+    // frame's graph, and records it into `cmd`, which must be in the recording state. Returns the
+    // frame's number (1, 2, ...), which report() takes once the engine's fence says the frame is
+    // done.
     //
     // Exception guarantee (record and render): if anything is thrown (InvalidInput, DeviceError,
     // std::bad_alloc), nothing has been recorded into `cmd`, the engine's images are untouched, no
     // Vulkan object is leaked, and the plugin is usable: a graph that failed to build is dropped
     // and built again by the next call, which succeeds once memory is available again. Everything
     // a frame creates (textures, pipelines) is created, and can fail, before `cmd` is touched.
-    void record(VkCommandBuffer cmd, const FrameDescription& frame);
+    uint64_t record(VkCommandBuffer cmd, const FrameDescription& frame);
     // Validates, records into the plugin's own command buffer, submits, waits, reports.
     FrameReport render(const FrameDescription& frame);
+    // The GPU times of a frame, read without waiting: `timed` is false while the GPU has not
+    // finished it (or it was never submitted). The plugin keeps the times of the last kTimedFrames
+    // frames of one frame graph; an older frame, or one recorded before the graph was rebuilt,
+    // throws InvalidInput. Each frame keeps its own queries, so frames may be recorded ahead of
+    // their submission (at most kTimedFrames in flight).
+    static constexpr uint64_t kTimedFrames = 8;
+    FrameReport report(uint64_t frame);
+    // The last frame recorded (or rendered); frame 0 and nothing else before the first.
     FrameReport report();
 
     // The compiled frame graph, for tools.

@@ -1,4 +1,5 @@
 #include <cstdlib>
+#include <deque>
 #include <optional>
 #include <string>
 
@@ -33,21 +34,40 @@ ImportState state(const ImageInput& in) {
     return {in.format, in.extent, in.usage, in.layout, in.finalLayout};
 }
 
+// Refuses a context before anything is made from it.
+const VulkanContext& checked(const VulkanContext& c) {
+    auto null = [](const char* field) {
+        throw InvalidInput(std::string("lightscatter: context.") + field + " is VK_NULL_HANDLE");
+    };
+    if (!c.instance) null("instance");
+    if (!c.physicalDevice) null("physicalDevice");
+    if (!c.device) null("device");
+    if (!c.queue) null("queue");
+    detail::checkEnabledFeatures(c.enabledFeatures);
+    return c;
+}
+
+// What a recorded frame's report needs besides its timestamps.
+struct RecordedFrame {
+    uint64_t frame = 0;
+    uint64_t graph = 0;  // the frame graph it was recorded with
+    std::vector<std::string> passNames;
+    bool tableRefilled = false;
+};
+
 }  // namespace
 
 struct Plugin::Impl {
     explicit Impl(const VulkanContext& c)
-        : device(rg::ExternalDevice{c.instance, c.physicalDevice, c.device, c.queue, c.queueFamily}),
+        : device(rg::ExternalDevice{checked(c).instance, c.physicalDevice, c.device, c.queue,
+                                    c.queueFamily}),
           caps(device),
           shared(std::make_shared<ls::SharedState>(device)) {
         depthStencil = rg::firstSupported(caps, {VK_FORMAT_D24_UNORM_S8_UINT, VK_FORMAT_D32_SFLOAT_S8_UINT},
                                           VK_FORMAT_FEATURE_2_DEPTH_STENCIL_ATTACHMENT_BIT);
         if (depthStencil == VK_FORMAT_UNDEFINED)
-            throw std::runtime_error("lightscatter: the device has no depth-stencil format with stencil");
-        if (!device.storageImageExtendedFormats())
             throw std::runtime_error(
-                "lightscatter: the device lacks shaderStorageImageExtendedFormats (RG16F/RG16UI "
-                "storage for the min/max trees and the interpolation source)");
+                "lightscatter: the device has no depth-stencil format with stencil");
     }
 
     void prepare(const FrameDescription& frame) {
@@ -100,6 +120,7 @@ struct Plugin::Impl {
             // complete there is none, so that a failure leaves nothing half-built behind.
             executor.reset();
             config.reset();
+            ++graphGeneration;
             FrameGraph built = detail::buildFrameGraph(c, shared);
             rg::CompileOptions options;
             options.poisonTransients = c.poisonTransients;
@@ -139,14 +160,49 @@ struct Plugin::Impl {
         }
     }
 
-    FrameReport makeReport(const rg::FrameTimings& t) const {
+    // Numbers the frame just prepared and keeps what its report will need.
+    uint64_t nextFrame() {
+        RecordedFrame f;
+        f.frame = ++lastFrame;
+        f.graph = graphGeneration;
+        for (const auto& p : executor->compiled().passes)
+            f.passNames.push_back(fg.graph->passes()[p.pass].name);
+        f.tableRefilled = tableRefilled;
+        frames.push_back(std::move(f));
+        while (frames.size() > kTimedFrames) frames.pop_front();
+        return lastFrame;
+    }
+
+    FrameReport report(uint64_t frame) const {
+        const std::string which = "report(" + std::to_string(frame) + "): ";
+        if (frame == 0 || frame > lastFrame)
+            throw InvalidInput("lightscatter: " + which +
+                               "no such frame was recorded (the last is " +
+                               std::to_string(lastFrame) + ")");
+        const RecordedFrame* f = nullptr;
+        for (const auto& r : frames)
+            if (r.frame == frame) f = &r;
+        if (!f)
+            throw InvalidInput("lightscatter: " + which + "the times of only the last " +
+                               std::to_string(kTimedFrames) + " frames are kept (the last is " +
+                               std::to_string(lastFrame) + ")");
+        if (f->graph != graphGeneration)
+            throw InvalidInput(
+                "lightscatter: " + which +
+                "the frame graph was rebuilt since (a new size, format, layout, method or "
+                "profile), and that frame's queries with it");
+        const rg::FrameTimings t = executor->readTimings(frame);
         FrameReport r;
+        r.frame = frame;
+        r.timed = t.valid;
         r.device = device.name();
         r.depthStencilFormat = rg::formatName(depthStencil);
-        for (const auto& p : t.passes) r.passes.push_back({p.name, p.milliseconds});
-        r.totalMilliseconds = t.totalMilliseconds;
-        for (const auto& p : executor->compiled().passes) r.passNames.push_back(fg.graph->passes()[p.pass].name);
-        if (tableRefilled) r.setupPasses.push_back("point-light table");
+        if (t.valid) {
+            for (const auto& p : t.passes) r.passes.push_back({p.name, p.milliseconds});
+            r.totalMilliseconds = t.totalMilliseconds;
+        }
+        r.passNames = f->passNames;
+        if (f->tableRefilled) r.setupPasses.push_back("point-light table");
         return r;
     }
 
@@ -160,6 +216,9 @@ struct Plugin::Impl {
     bool rehearsed = false;
     FrameGraph fg;
     std::unique_ptr<rg::GraphExecutor> executor;
+    uint64_t graphGeneration = 0;
+    uint64_t lastFrame = 0;
+    std::deque<RecordedFrame> frames;  // the last kTimedFrames
 };
 
 namespace {
@@ -183,24 +242,36 @@ Plugin::~Plugin() {
     if (impl_) impl_->executor.reset();
 }
 
-void Plugin::record(VkCommandBuffer cmd, const FrameDescription& frame) {
-    translated([&] {
+uint64_t Plugin::record(VkCommandBuffer cmd, const FrameDescription& frame) {
+    if (!cmd)
+        throw InvalidInput(
+            "lightscatter: record: cmd is VK_NULL_HANDLE: pass the engine's command "
+            "buffer, in the recording state");
+    return translated([&] {
         impl_->prepare(frame);
-        impl_->executor->record(cmd);
+        const uint64_t number = impl_->nextFrame();
+        impl_->executor->record(cmd, number);
+        return number;
     });
 }
 
 FrameReport Plugin::render(const FrameDescription& frame) {
     return translated([&] {
         impl_->prepare(frame);
-        return impl_->makeReport(impl_->executor->run());
+        const uint64_t number = impl_->nextFrame();
+        impl_->executor->run(number);
+        return impl_->report(number);
     });
+}
+
+FrameReport Plugin::report(uint64_t frame) {
+    return translated([&] { return impl_->report(frame); });
 }
 
 FrameReport Plugin::report() {
     return translated([&] {
-        if (!impl_->executor) return FrameReport{};
-        return impl_->makeReport(impl_->executor->readTimings());
+        if (impl_->lastFrame == 0) return FrameReport{};
+        return impl_->report(impl_->lastFrame);
     });
 }
 

@@ -345,20 +345,21 @@ void Device::createDevice(const DeviceOptions& options) {
     have.pNext = &have12;
     vkGetPhysicalDeviceFeatures2(physical_, &have);
 
-    VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    // Kept (enabledFeatures()): a plugin on this device is told what was enabled.
+    VkPhysicalDeviceVulkan13Features& f13 = enabled_.v13;
     f13.synchronization2 = VK_TRUE;
     f13.dynamicRendering = VK_TRUE;
     f13.maintenance4 = VK_TRUE;
-    VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    VkPhysicalDeviceVulkan12Features& f12 = enabled_.v12;
     f12.separateDepthStencilLayouts = VK_TRUE;
     f12.hostQueryReset = VK_TRUE;
     f12.shaderFloat16 = have12.shaderFloat16;
     f12.scalarBlockLayout = have12.scalarBlockLayout;
     f12.pNext = &f13;
-    VkPhysicalDeviceVulkan11Features f11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES};
+    VkPhysicalDeviceVulkan11Features& f11 = enabled_.v11;
     f11.storageBuffer16BitAccess = have11.storageBuffer16BitAccess;
     f11.pNext = &f12;
-    VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    VkPhysicalDeviceFeatures2& features = enabled_.core;
     features.pNext = &f11;
     features.features.shaderStorageImageExtendedFormats = supported.shaderStorageImageExtendedFormats;
     features.features.fragmentStoresAndAtomics = supported.fragmentStoresAndAtomics;

@@ -63,6 +63,10 @@ public:
 
     uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags props) const;
 
+    // The feature chain the device was created with (core -> 1.1 -> 1.2 -> 1.3); all off for an
+    // external device, whose features only its creator knows.
+    const VkPhysicalDeviceFeatures2& enabledFeatures() const { return enabled_.core; }
+
     // Debug-utils names and labels; no-ops when the extension is absent.
     void setName(VkObjectType type, uint64_t handle, const std::string& name) const;
     template <typename T>
@@ -107,6 +111,12 @@ private:
     uint32_t timestampBits_ = 0;
     VkPhysicalDeviceProperties properties_{};
     VkPhysicalDeviceMemoryProperties memory_{};
+    struct EnabledFeatures {
+        VkPhysicalDeviceFeatures2 core{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+        VkPhysicalDeviceVulkan11Features v11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES};
+        VkPhysicalDeviceVulkan12Features v12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+        VkPhysicalDeviceVulkan13Features v13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    } enabled_;  // Device is neither copied nor moved, so the chain's pointers stay valid
     std::string driverName_;
     bool validation_ = false;
     bool owns_ = true;

@@ -40,13 +40,16 @@ GraphExecutor::GraphExecutor(const Device& device, RenderGraph& graph, CompiledG
                 formats_[pos].stencil = graph_.resource(plan.stencil->resource).image.format;
         }
 
-        const uint32_t queryCount = std::max<uint32_t>(2, 2 * static_cast<uint32_t>(compiled_.passes.size()));
+        // Two timestamps per pass, in one slot per frame of the last kTimingSlots.
+        queriesPerFrame_ =
+            std::max<uint32_t>(2, 2 * static_cast<uint32_t>(compiled_.passes.size()));
+        slotFrames_.assign(kTimingSlots, 0);
         VkQueryPoolCreateInfo q{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
         q.queryType = VK_QUERY_TYPE_TIMESTAMP;
-        q.queryCount = queryCount;
+        q.queryCount = queriesPerFrame_ * kTimingSlots;
         RG_VK_CREATE(vkCreateQueryPool(dev, &q, nullptr, &queries_));
         device_.setName(queries_, VK_OBJECT_TYPE_QUERY_POOL, "render graph pass timestamps");
-        vkResetQueryPool(dev, queries_, 0, queryCount);
+        vkResetQueryPool(dev, queries_, 0, q.queryCount);
 
         VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
         pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
@@ -212,11 +215,12 @@ void GraphExecutor::refreshImports() {
         const VkImage img = r.importedImage.image;
         if (!img) throw VulkanError("imported image '" + r.name + "' has no VkImage to run with");
         auto it = importedViews_.find(img);
+        // The image and its debug name are the engine's; only the views are the runtime's, and an
+        // image only copied to and from has none (Vulkan forbids one).
         if (it == importedViews_.end()) {
             ImageObjects views{img};
             if (r.importedImage.usage & kViewUsages) views = makeViews(id, img);
             it = importedViews_.emplace(img, views).first;
-            device_.setName(img, VK_OBJECT_TYPE_IMAGE, r.name + " (imported)");
         }
         images_[id] = it->second;
     }
@@ -312,7 +316,8 @@ void GraphExecutor::recordPass(VkCommandBuffer cmd, uint32_t position) {
     const PassPlan& plan = compiled_.passes[position];
     PassDecl& pass = graph_.passes()[plan.pass];
     device_.beginLabel(cmd, pass.name);
-    vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, queries_, 2 * position);
+    vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, queries_,
+                         firstQuery_ + 2 * position);
     if (compiled_.poisonTransients)
         recordBarriers(cmd, poisonFirstUses(cmd, plan.barriers));
     else
@@ -356,14 +361,23 @@ void GraphExecutor::recordPass(VkCommandBuffer cmd, uint32_t position) {
     } else if (pass.execute) {
         pass.execute(ctx);
     }
-    vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, queries_, 2 * position + 1);
+    vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, queries_,
+                         firstQuery_ + 2 * position + 1);
     device_.endLabel(cmd);
 }
 
-void GraphExecutor::record(VkCommandBuffer cmd) {
+uint64_t GraphExecutor::record(VkCommandBuffer cmd, uint64_t frame) {
     refreshImports();
+    if (frame == 0) frame = lastFrame_ + 1;
+    const uint32_t slot = static_cast<uint32_t>(frame % kTimingSlots);
+    firstQuery_ = slot * queriesPerFrame_;
+    // Reset on the host, so the slot reads as not finished until this frame has run; and in the
+    // command buffer too, so that it may be submitted again.
+    vkResetQueryPool(device_.device(), queries_, firstQuery_, queriesPerFrame_);
+    slotFrames_[slot] = frame;
+    lastFrame_ = frame;
     const uint32_t queryCount = 2 * static_cast<uint32_t>(compiled_.passes.size());
-    if (queryCount) vkCmdResetQueryPool(cmd, queries_, 0, queryCount);
+    if (queryCount) vkCmdResetQueryPool(cmd, queries_, firstQuery_, queryCount);
     device_.beginLabel(cmd, "render graph");
     // Import stages and access may change per frame (layouts may not), so the barriers that
     // wait on or hand back an import are patched here.
@@ -404,11 +418,17 @@ void GraphExecutor::record(VkCommandBuffer cmd) {
     }
     recordBarriers(cmd, finals);
     device_.endLabel(cmd);
-    recorded_ = true;
+    return frame;
 }
 
 void GraphExecutor::rehearse() {
-    const bool recorded = recorded_;
+    // Nothing of it is submitted: the frame number and the timing slot it took are given back.
+    const uint64_t lastFrame = lastFrame_;
+    const std::vector<uint64_t> slotFrames = slotFrames_;
+    auto restore = [&] {
+        lastFrame_ = lastFrame;
+        slotFrames_ = slotFrames;
+    };
     RG_VK(vkResetCommandBuffer(cmd_, 0));
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
@@ -417,33 +437,49 @@ void GraphExecutor::rehearse() {
         record(cmd_);
     } catch (...) {
         vkResetCommandBuffer(cmd_, 0);  // possibly inside a rendering scope: not ended, dropped
-        recorded_ = recorded;
+        restore();
         throw;
     }
     RG_VK(vkEndCommandBuffer(cmd_));
     RG_VK(vkResetCommandBuffer(cmd_, 0));
-    recorded_ = recorded;  // nothing of it will be submitted: no timings to read
+    restore();
 }
 
-FrameTimings GraphExecutor::run() {
+FrameTimings GraphExecutor::run(uint64_t frame) {
     RG_VK(vkResetCommandBuffer(cmd_, 0));
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     RG_VK(vkBeginCommandBuffer(cmd_, &begin));
-    record(cmd_);
+    frame = record(cmd_, frame);
     RG_VK(vkEndCommandBuffer(cmd_));
     device_.submitAndWait(cmd_, fence_);
-    return readTimings();
+    return readTimings(frame);
 }
 
 FrameTimings GraphExecutor::readTimings() {
+    return readTimings(lastFrame_);
+}
+
+FrameTimings GraphExecutor::readTimings(uint64_t frame) {
     FrameTimings t;
+    t.frame = frame;
     const uint32_t n = static_cast<uint32_t>(compiled_.passes.size());
-    if (!recorded_ || n == 0) return t;
+    const uint32_t slot = static_cast<uint32_t>(frame % kTimingSlots);
+    if (frame == 0 || n == 0 || slotFrames_[slot] != frame) return t;
+    // Value and availability per query; never waits (a frame recorded but not submitted would
+    // never become available).
+    std::vector<uint64_t> results(4 * n);
+    const VkResult r = vkGetQueryPoolResults(
+        device_.device(), queries_, slot * queriesPerFrame_, 2 * n,
+        results.size() * sizeof(uint64_t), results.data(), 2 * sizeof(uint64_t),
+        VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WITH_AVAILABILITY_BIT);
+    if (r == VK_NOT_READY) return t;
+    check(r, "vkGetQueryPoolResults");
     std::vector<uint64_t> stamps(2 * n);
-    RG_VK(vkGetQueryPoolResults(device_.device(), queries_, 0, 2 * n, stamps.size() * sizeof(uint64_t),
-                                stamps.data(), sizeof(uint64_t),
-                                VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+    for (uint32_t i = 0; i < 2 * n; ++i) {
+        if (results[2 * i + 1] == 0) return t;
+        stamps[i] = results[2 * i];
+    }
     const uint32_t bits = device_.timestampValidBits();
     const uint64_t mask = bits >= 64 ? ~uint64_t{0} : ((uint64_t{1} << bits) - 1);
     const double toMs = device_.timestampPeriodNs() * 1e-6;

@@ -22,9 +22,10 @@ struct PassTiming {
 };
 
 struct FrameTimings {
+    uint64_t frame = 0;              // the frame these times belong to
     std::vector<PassTiming> passes;  // execution order
     double totalMilliseconds = 0.0;  // first pass start to last pass end
-    bool valid = false;
+    bool valid = false;              // false: not finished on the GPU, or not a frame still held
 };
 
 class GraphExecutor {
@@ -35,15 +36,23 @@ public:
     GraphExecutor& operator=(const GraphExecutor&) = delete;
 
     // Records the frame into the executor's own command buffer, submits, waits, and returns the
-    // timings of this frame.
-    FrameTimings run();
+    // timings of this frame (numbered as record() numbers it).
+    FrameTimings run(uint64_t frame = 0);
 
-    // For engines that own submission: records the frame into `cmd`. Timings become available with
-    // readTimings() once the engine has waited for that submission.
-    void record(VkCommandBuffer cmd);
-    // Records the frame into the executor's own command buffer and throws it away, so that what
-    // passes create on first use (pipelines) exists, or has failed, before an engine's command
-    // buffer is touched.
+    // For engines that own submission: records the frame into `cmd` and returns its number, `frame`
+    // when the caller numbers its frames (increasing), else the executor's next. Each of the last
+    // kTimingSlots frames has timestamp queries of its own, reset on the host here, so frames may
+    // be recorded ahead of their submission; the frame kTimingSlots before this one must have
+    // finished.
+    static constexpr uint32_t kTimingSlots = 8;
+    uint64_t record(VkCommandBuffer cmd, uint64_t frame = 0);
+    // A recorded frame's timings, read without waiting (valid is false until the GPU has finished
+    // it, and for a frame that is not among the last kTimingSlots recorded); readTimings() reads
+    // the last frame recorded.
+    FrameTimings readTimings(uint64_t frame);
+    // Records a frame into the executor's own command buffer and throws it away (no frame number
+    // or timing slot is used), so that what passes create on first use (pipelines) exists, or has
+    // failed, before an engine's command buffer is touched.
     void rehearse();
     FrameTimings readTimings();
 
@@ -86,7 +95,10 @@ private:
     VkCommandPool pool_ = VK_NULL_HANDLE;
     VkCommandBuffer cmd_ = VK_NULL_HANDLE;
     VkFence fence_ = VK_NULL_HANDLE;
-    bool recorded_ = false;
+    uint32_t queriesPerFrame_ = 0;
+    uint32_t firstQuery_ = 0;           // the slot being recorded
+    uint64_t lastFrame_ = 0;            // 0: nothing recorded yet
+    std::vector<uint64_t> slotFrames_;  // the frame whose queries each slot holds
 };
 
 }  // namespace rg

@@ -3,8 +3,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
-cmake --build build -j"$(nproc)"
+scripts/build.sh  # the same configuration as scripts/test.sh, which then rebuilds nothing
 mkdir -p out
 ./build/host_example/lightscatter render scenes/atrium.json --size 960x540 --out out/atrium.png \
     --inscatter out/atrium-inscatter.exr --timings out/atrium-timings.json

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# Second command of the README: build with warnings as errors and run every test.
+# Second command of the README: build with warnings as errors (scripts/build.sh, shared with the
+# first command) and run every test.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DLS_WERROR=ON
-cmake --build build -j"$(nproc)"
+scripts/build.sh
 ctest --test-dir build --output-on-failure -j"$(nproc)"
 # The same code under AddressSanitizer and UndefinedBehaviorSanitizer (build-asan/).
 scripts/test-sanitizers.sh

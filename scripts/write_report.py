@@ -47,7 +47,7 @@ def main():
     if cpu:
         p("> No GPU machine was lent to the session that made this page, so it carries no H100 figures. On one, "
           "`scripts/make-report.sh bench/full.json` (1920x1080 and 2560x1600, every profile and sweep, "
-          "60 frames) regenerates it with GPU timings; see `../shared/gpu/README.md` for carrying the build.\n")
+          "60 frames) regenerates it with GPU timings.\n")
 
     scenes = sorted({r["scene"] for r in runs})
     for scene in scenes:
@@ -122,7 +122,7 @@ def main():
         bounds[name] = (float(epi), float(bf))
     default = tuple(float(x) for x in re.search(r"kDefault\{([\d.]+), ([\d.]+)\}", test).groups())
     w, h = hard[0]["size"]
-    p(f"Every hard case of DESIGN.md as a scene (`scenes/hard`, from `tools/make_hard_cases.py`), {w}x{h}, balanced "
+    p(f"Every hard case of [model.md](model.md#hard-cases) as a scene (`scenes/hard`, from `tools/make_hard_cases.py`), {w}x{h}, balanced "
       "profile. `test_hard_suite` asserts finite pixels and the bound below for each (mean relative error); thin "
       "media must stay within 1% of float64. A point light is unshadowed in the plugin but shadowed in the "
       "reference, so its cases count the missing shadows as error.\n")

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Writes scenes/hard/: one SCENE.json per hard case of DESIGN.md, over a small open scene (ground,
+"""Writes scenes/hard/: one SCENE.json per hard case of docs/model.md, over a small open scene (ground,
 a grille of bars, a box) in hard_cases.gltf. Lights placed at screen positions use the same camera
 and Vulkan projection as the host, for the suite's 16:9 screens. Standard library only.
 

@@ -1,5 +1,5 @@
 #pragma once
-// The GPU path's pixel rays in float64, and where each one ends (MODEL.md, "Conventions at the
+// The GPU path's pixel rays in float64, and where each one ends (docs/model.md, "Conventions at the
 // edges"): the reference must look along exactly the rays the rasterizer and the plugin's shaders
 // look along, or its error would be blamed on the methods.
 #include <cstdint>

@@ -1,10 +1,10 @@
 #pragma once
-// The exact CPU reference of issue #5: Lin of MODEL.md for every pixel centre of a scene, in
+// The exact CPU reference of issue #5: Lin of docs/model.md for every pixel centre of a scene, in
 // float64, with exact visibility traced against the scene's triangles (a BVH, not a shadow map).
 // Every GPU method is judged against this image.
 //
-// Point lights: the plugin does not shadow them (it has no cube maps), but MODEL.md's V is exact
-// visibility, so this reference does shadow them by default. A comparison of the GPU's point
+// Point lights: the plugin does not shadow them (it has no cube maps), but docs/model.md's V is
+// exact visibility, so this reference does shadow them by default. A comparison of the GPU's point
 // light against it therefore counts the missing shadows as error, which is the model's intended
 // judging; pass `shadows = false` for the unshadowed image instead.
 #include <cstdint>

@@ -1,5 +1,5 @@
 #pragma once
-// MODEL.md's V: exact visibility of the light from a point of the medium, traced against the
+// docs/model.md's V: exact visibility of the light from a point of the medium, traced against the
 // scene's triangles, and the lit intervals of a view ray found from it.
 #include <vector>
 

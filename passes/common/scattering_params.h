@@ -1,5 +1,5 @@
 #pragma once
-// What the scattering nodes need to know about a frame, in MODEL.md's units. The plugin API
+// What the scattering nodes need to know about a frame, in docs/model.md's units. The plugin API
 // translates an engine's description into these; the nodes never see the engine's types.
 #include <vulkan/vulkan.h>
 

@@ -13,7 +13,7 @@ namespace ls::ref {
 
 // Integral of exp(-beta s) over [a, b] (0 when b <= a), for beta >= 0: exp(-beta a) times
 // -expm1(-beta (b - a)) / beta, or a series where beta (b - a) is tiny (beta = 0 gives b - a).
-// This is MODEL.md's safe form; exp(-beta a) - exp(-beta b) loses most digits in thin media.
+// This is docs/model.md's safe form; exp(-beta a) - exp(-beta b) loses most digits in thin media.
 [[nodiscard]] double attenuatedLength(double beta, double a, double b);
 [[nodiscard]] glm::dvec3 attenuatedLength(const glm::dvec3& beta, double a, double b);
 

@@ -10,14 +10,14 @@
 
 namespace ls::ref {
 
-// The in-scattering integrand of MODEL.md at distance s along the ray, before visibility:
+// The in-scattering integrand of docs/model.md at distance s along the ray, before visibility:
 // exp(-betaT s) P(t(s)) Irr(C + s v). The ray's direction must be unit length.
 [[nodiscard]] glm::dvec3 inscatterIntegrand(const Medium& medium, const Light& light,
                                             const Ray& ray, double s);
 
-// Lin of MODEL.md for one ray by adaptive quadrature, with V = 1 on the union of the lit intervals
-// (distances from the camera; clipped to [0, S]) and 0 elsewhere. The direction is normalised
-// here; a zero or NaN direction, or S <= 0, infinite or NaN, gives 0.
+// Lin of docs/model.md for one ray by adaptive quadrature, with V = 1 on the union of the lit
+// intervals (distances from the camera; clipped to [0, S]) and 0 elsewhere. The direction is
+// normalised here; a zero or NaN direction, or S <= 0, infinite or NaN, gives 0.
 [[nodiscard]] QuadResult integrateInscatter(const Medium& medium, const Light& light,
                                             const Ray& ray, std::span<const Interval> lit,
                                             const QuadOptions& options = {});

@@ -24,7 +24,7 @@ struct Light {
 };
 
 // r0 is floored here so that r0 = 0 (seed 000's singular formula) still keeps a ray through the
-// light finite, as MODEL.md requires; 1 micrometre changes nothing at the scale of a scene.
+// light finite, as docs/model.md requires; 1 micrometre changes nothing at the scale of a scene.
 inline constexpr double kMinLightRadius = 1.0e-6;
 [[nodiscard]] double effectiveRadius(const Light& light);
 

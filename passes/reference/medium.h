@@ -4,8 +4,8 @@
 
 namespace ls::ref {
 
-// The homogeneous single-scattering medium of MODEL.md. Coefficients are per colour channel, in
-// 1/m.
+// The homogeneous single-scattering medium of docs/model.md. Coefficients are per colour channel,
+// in 1/m.
 struct Medium {
     // Unscoped so that both Medium::Isotropic and Medium::Phase::Isotropic read naturally.
     enum Phase { CornetteShanks, Isotropic };

@@ -20,7 +20,7 @@ struct PointRayFrame {
 };
 [[nodiscard]] PointRayFrame pointRayFrame(const Light& light, const Ray& ray);
 
-// MODEL.md's table entry (the light's intensity included):
+// docs/model.md's table entry (the light's intensity included):
 //   T[h, s] = I * integral over x in [s, inf) of
 //             P(t(x)) exp(-betaT (x - s)) exp(-betaT sqrt(h^2 + x^2)) / (h^2 + x^2 + r0^2) dx,
 // with cos t(x) = -x / sqrt(h^2 + x^2) (0 at h = x = 0, as cosTheta() does at the light).

@@ -1,6 +1,6 @@
 #version 450
 // Forward shading of the host engine: Lambertian surfaces lit by the scene's one light (irradiance
-// as MODEL.md defines it, through the shadow map when there is one) plus a constant ambient
+// as docs/model.md defines it, through the shadow map when there is one) plus a constant ambient
 // irradiance. The result is linear radiance, which the plugin then attenuates and adds Lin to.
 //
 // The light type is a specialisation constant, not a uniform: lavapipe (Mesa 22.3) recompiles,

@@ -1,5 +1,5 @@
 // Camera rays: direction through a point of the screen, camera-space z from the depth buffer, and
-// the sky's distance (MODEL.md, "Conventions at the edges").
+// the sky's distance (docs/model.md, "Conventions at the edges").
 #ifndef LS_CAMERA_GLSL
 #define LS_CAMERA_GLSL
 #include "frame.glsl"

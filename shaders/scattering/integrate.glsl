@@ -1,6 +1,6 @@
 // Accumulates Lin along one ray, segment by segment, with one exponential (directional) or one
 // exponential and one table look-up (point, spot) per step. Differences of exponentials go through
-// expm1 (MODEL.md). Visibility may be colored (stained glass).
+// expm1 (docs/model.md). Visibility may be colored (stained glass).
 #ifndef LS_INTEGRATE_GLSL
 #define LS_INTEGRATE_GLSL
 #include "math.glsl"

@@ -1,4 +1,4 @@
-// The point-light table of seed 000 (MODEL.md): T(h, s) = integral over [s, inf) of
+// The point-light table of seed 000 (docs/model.md): T(h, s) = integral over [s, inf) of
 // P(theta) exp(-betaT (x - s)) exp(-betaT sqrt(h^2 + x^2)) / (h^2 + x^2 + r0^2) dx, with x measured
 // along the ray from the light's projection onto it. Stored as G = hEff T, hEff = sqrt(h^2 + r0^2),
 // over (phi, y): s = hEff tan(phi), phi in [-pi/2, pi/2] across the width (end points included);

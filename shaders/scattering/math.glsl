@@ -1,4 +1,4 @@
-// Phase functions and numerically careful exponentials (MODEL.md, "Numerical rules").
+// Phase functions and numerically careful exponentials (docs/model.md, "Numerical rules").
 #ifndef LS_MATH_GLSL
 #define LS_MATH_GLSL
 #include "frame.glsl"

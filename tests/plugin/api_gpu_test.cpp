@@ -49,7 +49,7 @@ protected:
 };
 
 TEST_F(PluginApiGpu, ZeroSlicesAreRefused) {
-    expectRefused([](auto& d) { d.custom.slices = 0; }, "settings.slices");
+    expectRefused([](auto& d) { d.custom.slices = 0; }, "custom.slices");
 }
 
 TEST_F(PluginApiGpu, SlicesNotAMultipleOfFourAreRefused) {
@@ -57,7 +57,7 @@ TEST_F(PluginApiGpu, SlicesNotAMultipleOfFourAreRefused) {
 }
 
 TEST_F(PluginApiGpu, InitialStepMustBeAPowerOfTwo) {
-    expectRefused([](auto& d) { d.custom.initialSampleStep = 12; }, "settings.initialSampleStep");
+    expectRefused([](auto& d) { d.custom.initialSampleStep = 12; }, "custom.initialSampleStep");
 }
 
 TEST_F(PluginApiGpu, DepthThatIsNotADepthFormatIsRefused) {

@@ -81,7 +81,7 @@ TEST(Budget, BadRequestsAreRefused) {
         lightscatter::budget(Profile::Custom, 1920, 1080, 2048, lightscatter::LightType::Spot, &bad);
         ADD_FAILURE() << "zero slices accepted";
     } catch (const lightscatter::InvalidInput& e) {
-        EXPECT_NE(std::string(e.what()).find("settings.slices"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("custom.slices"), std::string::npos);
     }
 }
 

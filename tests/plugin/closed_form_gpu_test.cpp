@@ -1,4 +1,4 @@
-// Lights without shadows against MODEL.md's closed forms and the float64 numerical integral.
+// Lights without shadows against docs/model.md's closed forms and the float64 numerical integral.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>

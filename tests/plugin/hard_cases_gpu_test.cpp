@@ -1,10 +1,11 @@
-// Every hard case of DESIGN.md, for every method that applies: the frame renders without a
+// Every hard case of docs/model.md, for every method that applies: the frame renders without a
 // validation message and every pixel of Lin and of the composited color is finite.
 #include <cmath>
 #include <functional>
 #include <limits>
 
 #include "plugin_fixture.h"
+#include "support/projection.h"
 
 using namespace plugin_test;
 using lightscatter::LightType;
@@ -216,7 +217,12 @@ TEST_F(HardCasesGpu, EpipolarStaysCloseToBruteForce) {
         FrameSpec spec = hard.make();
         if (spec.screen.width != kScreen.width || !spec.depthOverride.empty()) continue;
         spec.screen = {48, 32};
-        spec.view.projection = defaultView(spec.screen).projection;
+        // The case's own projection (planes, reversed or infinite depth) at the new aspect: the
+        // plugin reads the planes from it and refuses flags that disagree.
+        const View& v = spec.view;
+        spec.view.projection =
+            testing_support::vulkanPerspective(glm::radians(60.0f), 48.0f / 32.0f, v.nearPlane,
+                                               v.farPlane, v.reversedZ, v.infiniteFar);
         TestFrame frame(dev(), spec);
         auto settings = smallSettings(frame.spec().screen);
         settings.shadowMapSize = frame.light().shadowMapSize;

@@ -14,7 +14,7 @@ using namespace plugin_test;
 namespace {
 
 lightscatter::VulkanContext contextOf(const rg::Device& d) {
-    return {d.instance(), d.physical(), d.device(), d.queue(), d.queueFamily()};
+    return {d.instance(), d.physical(), d.device(), d.queue(), d.queueFamily(), &d.enabledFeatures()};
 }
 
 FrameSpec smallSpot() {

@@ -1,15 +1,16 @@
 // The integration example of README.md. readme_sync_test.cpp checks that the README quotes this
-// file's marked block verbatim; readme_example_gpu_test.cpp runs it on the test device.
+// file's marked block verbatim; readme_example_gpu_test.cpp and the consumer projects
+// (tests/consumer/) run it.
 #include "readme_example.h"
 
 #include <memory>
 
-lightscatter::Plugin& recordLightShafts(EngineFrame& engine) {
+uint64_t recordLightShafts(Engine& engine) {
     // [readme-example]
-    // Once: the plugin works on the engine's own device and queue. The engine owns it and destroys
-    // it before that device (a static would outlive the device and leak its objects).
-    if (!engine.lightShafts) engine.lightShafts = std::make_unique<lightscatter::Plugin>(engine.context);
-    lightscatter::Plugin& plugin = *engine.lightShafts;
+    // Once: the plugin works on the engine's own device and queue (the engine resets it before
+    // destroying them).
+    if (!engine.lightShafts)
+        engine.lightShafts = std::make_unique<lightscatter::Plugin>(engine.context);
 
     // Every frame: the engine's images, where they stand and where to leave them.
     lightscatter::FrameDescription frame;
@@ -24,10 +25,9 @@ lightscatter::Plugin& recordLightShafts(EngineFrame& engine) {
                                                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     frame.shadowMap->finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
 
+    // The near and far planes are read from the projection.
     frame.camera.view = engine.view;
     frame.camera.projection = engine.projection;
-    frame.camera.nearPlane = 0.1f;
-    frame.camera.farPlane = 500.0f;
 
     frame.light.type = lightscatter::LightType::Spot;
     frame.light.position = {0.0f, 6.0f, 0.0f};
@@ -42,9 +42,9 @@ lightscatter::Plugin& recordLightShafts(EngineFrame& engine) {
     frame.profile = lightscatter::Profile::HighPerformance;
 
     // Throws lightscatter::InvalidInput, naming the field, before recording anything.
-    plugin.record(engine.commandBuffer, frame);
-    // Once the engine has submitted the command buffer and waited for it, plugin.report() gives
-    // the GPU time of every pass.
+    const uint64_t frameNumber = engine.lightShafts->record(engine.commandBuffer, frame);
+    // Once the engine's fence says this command buffer has run, report(frameNumber) gives the GPU
+    // time of each of its passes.
     // [readme-example]
-    return plugin;
+    return frameNumber;
 }

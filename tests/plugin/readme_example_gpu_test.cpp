@@ -34,24 +34,36 @@ TEST_F(ReadmeExampleGpu, RendersShaftsIntoTheEnginesColor) {
     alloc.commandBufferCount = 1;
     VkCommandBuffer cmd;
     RG_VK(vkAllocateCommandBuffers(dev().device(), &alloc, &cmd));
-    EngineFrame engine{{dev().instance(), dev().physical(), dev().device(), dev().queue(), dev().queueFamily()},
-                       cmd, extent, depth.image(), color.image(), shadow.image(),
-                       toMat4(view.view), toMat4(view.projection), toMat4(lightMatrix)};
-    for (int frame = 0; frame < 2; ++frame) {
+    Engine engine;
+    engine.context = {dev().instance(), dev().physical(),    dev().device(),
+                      dev().queue(),    dev().queueFamily(), &dev().enabledFeatures()};
+    engine.commandBuffer = cmd;
+    engine.extent = extent;
+    engine.depth = depth.image();
+    engine.hdrColor = color.image();
+    engine.shadowMap = shadow.image();
+    engine.view = toMat4(view.view);
+    engine.projection = toMat4(view.projection);
+    engine.lightViewProjection = toMat4(lightMatrix);
+    for (uint64_t frame = 1; frame <= 2; ++frame) {
         VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
         RG_VK(vkBeginCommandBuffer(cmd, &begin));
-        lightscatter::Plugin& plugin = recordLightShafts(engine);
+        const uint64_t number = recordLightShafts(engine);
+        EXPECT_EQ(number, frame);
         RG_VK(vkEndCommandBuffer(cmd));
         VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
         submit.commandBufferCount = 1;
         submit.pCommandBuffers = &cmd;
         RG_VK(vkQueueSubmit(dev().queue(), 1, &submit, VK_NULL_HANDLE));
         RG_VK(vkQueueWaitIdle(dev().queue()));
-        const lightscatter::FrameReport report = plugin.report();
+        const lightscatter::FrameReport report = engine.lightShafts->report(number);
+        EXPECT_EQ(report.frame, number);
+        EXPECT_TRUE(report.timed);
         EXPECT_FALSE(report.passes.empty());
         EXPECT_GT(report.totalMilliseconds, 0.0);
         RG_VK(vkResetCommandPool(dev().device(), pool, 0));
     }
+    engine.lightShafts.reset();
     vkDestroyCommandPool(dev().device(), pool, nullptr);
 
     const auto pixels = color.download();

@@ -1,4 +1,4 @@
-// README.md quotes the integration example; this keeps the quote and the compiled code identical.
+// README.md quotes compiled code; this keeps each quote and the code identical.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -14,19 +14,33 @@ std::string read(const std::string& path) {
     return s.str();
 }
 
+// The block between two `    // [marker]` lines of `file`, less the 4 spaces of indentation the
+// function body adds (the README quotes it outside any function).
+std::string block(const std::string& file, const std::string& name) {
+    const std::string code = read(LS_SOURCE_DIR "/" + file);
+    const std::string marker = "    // [" + name + "]\n";
+    const size_t a = code.find(marker);
+    const size_t b = a == std::string::npos ? a : code.find(marker, a + marker.size());
+    if (b == std::string::npos) {
+        ADD_FAILURE() << file << " has no block marked [" << name << "]";
+        return {};
+    }
+    std::stringstream in(code.substr(a + marker.size(), b - a - marker.size()));
+    std::string line, out;
+    while (std::getline(in, line)) out += (line.size() >= 4 ? line.substr(4) : line) + "\n";
+    return out;
+}
+
 }  // namespace
 
 TEST(Readme, QuotesTheCompiledIntegrationExample) {
-    const std::string code = read(LS_SOURCE_DIR "/tests/plugin/readme_example.cpp");
+    const std::string quoted = block("tests/plugin/readme_example.cpp", "readme-example");
     const std::string readme = read(LS_SOURCE_DIR "/README.md");
-    const std::string marker = "    // [readme-example]\n";
-    const size_t a = code.find(marker);
-    ASSERT_NE(a, std::string::npos);
-    const size_t b = code.find(marker, a + marker.size());
-    ASSERT_NE(b, std::string::npos);
-    // The README indents the block by 4 spaces less (it is outside the function).
-    std::stringstream in(code.substr(a + marker.size(), b - a - marker.size()));
-    std::string line, block;
-    while (std::getline(in, line)) block += (line.size() >= 4 ? line.substr(4) : line) + "\n";
-    EXPECT_NE(readme.find(block), std::string::npos) << "README.md does not quote:\n" << block;
+    EXPECT_NE(readme.find(quoted), std::string::npos) << "README.md does not quote:\n" << quoted;
+}
+
+TEST(Readme, QuotesTheCompiledDeviceCreation) {
+    const std::string quoted = block("tests/consumer/engine/headless_engine.cpp", "readme-device");
+    const std::string readme = read(LS_SOURCE_DIR "/README.md");
+    EXPECT_NE(readme.find(quoted), std::string::npos) << "README.md does not quote:\n" << quoted;
 }

@@ -36,7 +36,7 @@ std::vector<float> renderShadowMap(const Scene& scene, const glm::mat4& lightVie
                                    bool reversedZ = false);
 
 // The ray through a pixel centre and the distance S to its end (surface, or the sky rule of
-// MODEL.md), in double.
+// docs/model.md), in double.
 struct PixelRay {
     glm::dvec3 origin, dir;
     double S;

@@ -38,7 +38,7 @@ const std::vector<MediumCase> kMedia = {
     {"zero blue", {1e-3, 2e-3, 0.0}, {2e-2, 2e-2, 0.0}, {0.0, 0.0, 0.0}},
 };
 
-// Hoffman-Preetham against the quadrature of MODEL.md's integral, over angles (looking into,
+// Hoffman-Preetham against the quadrature of docs/model.md's integral, over angles (looking into,
 // across and away from the sun), Mie asymmetries, lengths from 1 m to 10 km and the media above.
 TEST(Directional, ClosedFormMatchesIntegral) {
     for (const MediumCase& mc : kMedia) {

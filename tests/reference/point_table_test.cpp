@@ -71,7 +71,7 @@ const std::vector<Case> kCases = {
     {"far and long", {10.0, 0.0, -300.0}, 2000.0, {{0.0, 280.0}, {310.0, 2000.0}}},
 };
 
-// The table route (MODEL.md's T and its lit-segment combination) against direct quadrature.
+// The table route (docs/model.md's T and its lit-segment combination) against direct quadrature.
 TEST(PointTable, LitSegmentsMatchDirectIntegral) {
     for (double g : {0.0, 0.76}) {
         const Medium m = hazy(g);

@@ -1,0 +1,41 @@
+# cmake --install: the public header, the library (SPIR-V embedded in it) and the CMake package
+# lightscatterConfig.cmake with its version file, exporting one target, lightscatter::plugin.
+#
+#   <prefix>/include/lightscatter/lightscatter.h
+#   <prefix>/lib/liblightscatter.a (LS_BUILD_SHARED: liblightscatter.so)
+#   <prefix>/lib/cmake/lightscatter/lightscatterConfig.cmake, ...ConfigVersion.cmake, ...Targets*.cmake
+include(CMakePackageConfigHelpers)
+
+if(LS_BUILD_SHARED)
+  set(ls_installed lightscatter_plugin)  # the passes and the runtime are inside it
+else()
+  # One archive with the plugin, the passes and the runtime, so that an engine links one library
+  # with nothing to order; position-independent like the objects it is made of.
+  add_library(lightscatter_package STATIC $<TARGET_OBJECTS:lightscatter_plugin>
+                                          $<TARGET_OBJECTS:ls_passes> $<TARGET_OBJECTS:rendergraph>)
+  set_target_properties(lightscatter_package PROPERTIES OUTPUT_NAME lightscatter EXPORT_NAME plugin
+                        LINKER_LANGUAGE CXX ARCHIVE_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/package)
+  target_include_directories(lightscatter_package
+                             INTERFACE $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/lightscatter>)
+  target_compile_features(lightscatter_package INTERFACE cxx_std_17)
+  target_link_libraries(lightscatter_package INTERFACE Vulkan::Vulkan)
+  set(ls_installed lightscatter_package)
+endif()
+install(TARGETS ${ls_installed} EXPORT lightscatterTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(FILES ${PROJECT_SOURCE_DIR}/plugin_api/lightscatter.h
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/lightscatter)
+
+set(ls_package_dir ${CMAKE_INSTALL_LIBDIR}/cmake/lightscatter)
+install(EXPORT lightscatterTargets NAMESPACE lightscatter:: DESTINATION ${ls_package_dir})
+configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/lightscatterConfig.cmake.in
+                              ${PROJECT_BINARY_DIR}/lightscatterConfig.cmake
+                              INSTALL_DESTINATION ${ls_package_dir})
+# 0.x: a minor version may change the API, so only the same major.minor is compatible.
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/lightscatterConfigVersion.cmake
+                                 VERSION ${PROJECT_VERSION} COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/lightscatterConfig.cmake
+              ${PROJECT_BINARY_DIR}/lightscatterConfigVersion.cmake
+        DESTINATION ${ls_package_dir})

@@ -1,0 +1,102 @@
+# CTest driver for the consumer projects (cmake -P). Builds and runs an engine against lightscatter:
+#   -DMODE=package       installs BUILD_DIR into WORK_DIR/prefix (cmake --install), checks what was
+#                        installed, builds tests/consumer/package against it and runs it
+#   -DMODE=subdirectory  builds tests/consumer/subdirectory (add_subdirectory of SOURCE_DIR, shared
+#                        library), checks that the library exports only lightscatter::, runs it
+# Other variables: SOURCE_DIR, BUILD_DIR, WORK_DIR, JOBS, NM.
+foreach(var MODE SOURCE_DIR WORK_DIR)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "run_consumer.cmake needs -D${var}=...")
+  endif()
+endforeach()
+if(NOT JOBS)
+  set(JOBS 2)
+endif()
+
+function(run)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
+  if(NOT rc EQUAL 0)
+    string(REPLACE ";" " " line "${ARGN}")
+    message(FATAL_ERROR "${line}\nfailed (${rc}):\n${out}")
+  endif()
+  set(last_output "${out}" PARENT_SCOPE)
+endfunction()
+
+file(REMOVE_RECURSE ${WORK_DIR})
+set(consumer_build ${WORK_DIR}/build)
+
+if(MODE STREQUAL "package")
+  set(prefix ${WORK_DIR}/prefix)
+  run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
+  # One header, the libraries with their SPIR-V inside, the package and its version file.
+  file(GLOB_RECURSE installed RELATIVE ${prefix} ${prefix}/*)
+  list(SORT installed)
+  string(REPLACE ";" "\n  " listing "${installed}")
+  message(STATUS "installed:\n  ${listing}")
+  foreach(expected include/lightscatter/lightscatter.h lightscatterConfig.cmake
+                   lightscatterConfigVersion.cmake lightscatterTargets.cmake liblightscatter.a)
+    if(NOT installed MATCHES "(^|;|/)${expected}(;|$)")
+      message(FATAL_ERROR "cmake --install did not install ${expected}")
+    endif()
+  endforeach()
+  foreach(file IN LISTS installed)
+    if(file MATCHES "\\.(spv|h|hpp)$" AND NOT file STREQUAL "include/lightscatter/lightscatter.h")
+      message(FATAL_ERROR "cmake --install installed ${file}: only lightscatter.h is public, and "
+                          "the shaders live inside the library")
+    endif()
+    if(file MATCHES "\\.a$" AND NOT file MATCHES "/liblightscatter\\.a$")
+      message(FATAL_ERROR "cmake --install installed ${file}: the package is one library")
+    endif()
+  endforeach()
+  # One exported target, which needs nothing but Vulkan.
+  file(GLOB targets_file ${prefix}/*/cmake/lightscatter/lightscatterTargets.cmake)
+  file(READ ${targets_file} exported)
+  string(REGEX MATCHALL "add_library\\([^ ]+" defined "${exported}")
+  if(NOT defined STREQUAL "add_library(lightscatter::plugin")
+    message(FATAL_ERROR "the package defines ${defined}; it should define lightscatter::plugin alone")
+  endif()
+  run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/consumer/package -B ${consumer_build}
+      -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix})
+elseif(MODE STREQUAL "subdirectory")
+  # No build type given: the engine's empty CMAKE_BUILD_TYPE must survive add_subdirectory.
+  run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/consumer/subdirectory -B ${consumer_build}
+      -DLIGHTSCATTER_SOURCE_DIR=${SOURCE_DIR})
+else()
+  message(FATAL_ERROR "MODE must be package or subdirectory, not '${MODE}'")
+endif()
+
+run(${CMAKE_COMMAND} --build ${consumer_build} -j ${JOBS})
+
+if(MODE STREQUAL "subdirectory")
+  file(GLOB_RECURSE shared_library ${consumer_build}/lightscatter/liblightscatter.so)
+  if(NOT shared_library)
+    message(FATAL_ERROR "LS_BUILD_SHARED built no liblightscatter.so")
+  endif()
+  run(${NM} -D --defined-only -C ${shared_library})
+  string(REPLACE "\n" ";" symbols "${last_output}")
+  set(api 0)
+  set(foreign "")
+  foreach(line IN LISTS symbols)
+    # "<address> <type> <name>"; names may hold spaces.
+    if(NOT line MATCHES "^[0-9a-fA-F]+ [A-Za-z] (.*)$")
+      continue()
+    endif()
+    set(name "${CMAKE_MATCH_1}")
+    string(REGEX REPLACE "^(typeinfo name for |typeinfo for |vtable for )" "" name "${name}")
+    if(name MATCHES "^lightscatter::" AND NOT name MATCHES "^lightscatter::detail::")
+      math(EXPR api "${api} + 1")
+    elseif(NOT name MATCHES "^LIGHTSCATTER_")  # the version node, if any
+      string(APPEND foreign "\n  ${line}")
+    endif()
+  endforeach()
+  if(foreign)
+    message(FATAL_ERROR "liblightscatter.so exports more than the lightscatter:: API:${foreign}")
+  endif()
+  if(api LESS 10)
+    message(FATAL_ERROR "liblightscatter.so exports only ${api} lightscatter:: symbols")
+  endif()
+  message(STATUS "liblightscatter.so exports ${api} symbols, all lightscatter:: API")
+endif()
+
+run(${consumer_build}/headless_engine)
+message(STATUS "headless_engine:\n${last_output}")

@@ -1,0 +1,129 @@
+// The device contract without a GPU: the feature chain the plugin hands out, the one it fills in
+// for an engine, and the refusal of a context before any Vulkan call is made.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "lightscatter.h"
+
+namespace {
+
+bool contains(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
+
+}  // namespace
+
+TEST(DeviceFeatures, TheChainTurnsOnWhatThePluginNeeds) {
+    lightscatter::DeviceFeatures f = lightscatter::requiredDeviceFeatures();
+    VkPhysicalDeviceFeatures2* chain = f.chain();
+    ASSERT_EQ(chain, &f.core);
+    EXPECT_EQ(f.core.pNext, &f.vulkan11);
+    EXPECT_EQ(f.vulkan11.pNext, &f.vulkan12);
+    EXPECT_EQ(f.vulkan12.pNext, &f.vulkan13);
+    EXPECT_EQ(f.vulkan13.pNext, nullptr);
+    EXPECT_TRUE(f.vulkan13.synchronization2);
+    EXPECT_TRUE(f.vulkan13.dynamicRendering);
+    EXPECT_TRUE(f.vulkan13.maintenance4);
+    EXPECT_TRUE(f.vulkan12.separateDepthStencilLayouts);
+    EXPECT_TRUE(f.vulkan12.hostQueryReset);
+    EXPECT_TRUE(f.core.features.shaderStorageImageExtendedFormats);
+    EXPECT_FALSE(f.vulkan12.timelineSemaphore);  // nothing the plugin does not need
+    EXPECT_FALSE(f.core.features.geometryShader);
+    const auto extensions = lightscatter::requiredDeviceExtensions();
+    ASSERT_EQ(extensions.size(), 1u);
+    EXPECT_EQ(std::string(extensions[0]), VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME);
+}
+
+TEST(DeviceFeatures, ChainRelinksAfterACopy) {
+    const lightscatter::DeviceFeatures original = lightscatter::requiredDeviceFeatures();
+    lightscatter::DeviceFeatures copy = original;
+    EXPECT_EQ(copy.chain()->pNext, &copy.vulkan11);
+    EXPECT_EQ(copy.vulkan12.pNext, &copy.vulkan13);
+}
+
+TEST(DeviceFeatures, AnEnginesOwnChainIsCompleted) {
+    // An engine's chain: core, its own 1.3 structure, a per-feature structure for 1.2's.
+    VkPhysicalDeviceHostQueryResetFeatures reset{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_HOST_QUERY_RESET_FEATURES};
+    VkPhysicalDeviceSeparateDepthStencilLayoutsFeatures layouts{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SEPARATE_DEPTH_STENCIL_LAYOUTS_FEATURES};
+    VkPhysicalDeviceVulkan13Features v13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    VkPhysicalDeviceFeatures2 core{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    core.features.geometryShader = VK_TRUE;  // the engine's
+    v13.shaderDemoteToHelperInvocation = VK_TRUE;
+    core.pNext = &v13;
+    v13.pNext = &layouts;
+    layouts.pNext = &reset;
+    lightscatter::enableRequiredDeviceFeatures(core);
+    EXPECT_TRUE(core.features.geometryShader);
+    EXPECT_TRUE(core.features.shaderStorageImageExtendedFormats);
+    EXPECT_TRUE(v13.shaderDemoteToHelperInvocation);
+    EXPECT_TRUE(v13.synchronization2 && v13.dynamicRendering && v13.maintenance4);
+    EXPECT_TRUE(layouts.separateDepthStencilLayouts);
+    EXPECT_TRUE(reset.hostQueryReset);
+    EXPECT_EQ(core.pNext, &v13);  // the chain itself is untouched
+    EXPECT_EQ(reset.pNext, nullptr);
+}
+
+TEST(DeviceFeatures, AChainWithoutRoomIsRefusedAndLeftAlone) {
+    VkPhysicalDeviceVulkan12Features v12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    VkPhysicalDeviceFeatures2 core{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    core.pNext = &v12;
+    try {
+        lightscatter::enableRequiredDeviceFeatures(core);
+        ADD_FAILURE() << "a chain without 1.3 features was completed";
+    } catch (const lightscatter::InvalidInput& e) {
+        EXPECT_TRUE(contains(
+            e.what(), "VkPhysicalDeviceVulkan13Features or VkPhysicalDeviceMaintenance4Features"))
+            << e.what();
+    }
+    EXPECT_FALSE(v12.hostQueryReset);  // nothing was changed
+    EXPECT_FALSE(core.features.shaderStorageImageExtendedFormats);
+}
+
+// Refused before the plugin makes any Vulkan call, so fake handles do.
+TEST(DeviceFeatures, APluginOnADeviceWithoutAFeatureIsRefusedNamingIt) {
+    lightscatter::DeviceFeatures f = lightscatter::requiredDeviceFeatures();
+    f.vulkan13.maintenance4 = VK_FALSE;
+    f.vulkan12.hostQueryReset = VK_FALSE;
+    lightscatter::VulkanContext c;
+    c.instance = reinterpret_cast<VkInstance>(uintptr_t{0x10});
+    c.physicalDevice = reinterpret_cast<VkPhysicalDevice>(uintptr_t{0x20});
+    c.device = reinterpret_cast<VkDevice>(uintptr_t{0x30});
+    c.queue = reinterpret_cast<VkQueue>(uintptr_t{0x40});
+    c.enabledFeatures = f.chain();
+    try {
+        lightscatter::Plugin p(c);
+        ADD_FAILURE() << "accepted";
+    } catch (const lightscatter::InvalidInput& e) {
+        const std::string m = e.what();
+        EXPECT_TRUE(contains(m, "context.enabledFeatures")) << m;
+        EXPECT_TRUE(contains(m, "maintenance4 (VkPhysicalDeviceVulkan13Features")) << m;
+        EXPECT_TRUE(contains(m, "hostQueryReset (VkPhysicalDeviceVulkan12Features")) << m;
+        EXPECT_FALSE(contains(m, "synchronization2")) << m;
+        EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+    }
+    // Per-feature structures count as well as the versioned ones: only what is still off is named.
+    VkPhysicalDeviceMaintenance4Features m4{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_4_FEATURES};
+    VkPhysicalDeviceHostQueryResetFeatures reset{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_HOST_QUERY_RESET_FEATURES};
+    m4.maintenance4 = VK_TRUE;
+    reset.hostQueryReset = VK_TRUE;
+    m4.pNext = &reset;
+    f.vulkan13.pNext = &m4;
+    f.vulkan13.dynamicRendering = VK_FALSE;
+    c.enabledFeatures = f.chain();
+    try {
+        lightscatter::Plugin p(c);
+        ADD_FAILURE() << "accepted";
+    } catch (const lightscatter::InvalidInput& e) {
+        const std::string m = e.what();
+        EXPECT_TRUE(contains(m, "dynamicRendering")) << m;
+        EXPECT_FALSE(contains(m, "maintenance4")) << m;
+        EXPECT_FALSE(contains(m, "hostQueryReset")) << m;
+    }
+    c.enabledFeatures = nullptr;
+    EXPECT_THROW(lightscatter::Plugin{c}, lightscatter::InvalidInput);
+}
