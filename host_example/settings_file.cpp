@@ -155,7 +155,7 @@ class SettingsReader {
                                        lightscatter::LightType::Spot, &s);
         } catch (const lightscatter::InvalidInput& e) {
             std::string why = e.what();
-            for (const char* prefix : {"lightscatter: ", "settings."})
+            for (const char* prefix : {"lightscatter: ", "custom."})
                 if (why.rfind(prefix, 0) == 0) why.erase(0, std::char_traits<char>::length(prefix));
             fail(why);
         }

@@ -135,7 +135,7 @@ class ConfigReader {
                                        lightscatter::LightType::Spot, &r.settings);
         } catch (const lightscatter::InvalidInput& e) {
             std::string why = e.what();
-            for (const char* prefix : {"lightscatter: ", "settings."})
+            for (const char* prefix : {"lightscatter: ", "custom."})
                 if (why.rfind(prefix, 0) == 0) why.erase(0, std::char_traits<char>::length(prefix));
             fail(where + " (run '" + r.label + "'): " + why);
         }
