@@ -115,6 +115,7 @@ int runBench(Args& args) {
         if (scenes.count(path)) continue;
         SceneDesc s = loadSceneFile(path);
         MeshData m = loadSceneMeshes(s);
+        for (const auto& w : m.warnings) std::cerr << "lightscatter: warning: " << w << "\n";
         scenes.emplace(path, std::make_pair(std::move(s), std::move(m)));
     }
     for (const fs::path& dir : {out / "strips", out / "references"}) {

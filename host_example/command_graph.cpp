@@ -16,6 +16,7 @@ int runGraph(Args& args) {
     if (dot == json) throw std::runtime_error("graph: give exactly one of --dot or --json");
     const SceneDesc scene = loadSceneFile(scenePath);
     const MeshData mesh = loadSceneMeshes(scene);
+    for (const auto& w : mesh.warnings) std::cerr << "lightscatter: warning: " << w << "\n";
     o.device.announce = false;
     rg::Device device(o.device);
     EngineRenderer renderer(device, scene, mesh, sceneSize(o, {320, 180}));

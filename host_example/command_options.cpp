@@ -37,7 +37,7 @@ RenderOptions profileOptions(const std::string& profile, const std::string& sett
 
 SceneOptions takeSceneOptions(Args& args, const char* defaultSize) {
     SceneOptions o;
-    const std::string method = args.take("--method", "epipolar");
+    const std::string method = args.take("--method", "auto");
     const auto m = lightscatter::parseMethod(method);
     if (!m)
         throw std::runtime_error("unknown method '" + method +

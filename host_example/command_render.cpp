@@ -26,6 +26,9 @@ nlohmann::json timingsJson(const rg::Device& device, const SceneOptions& o, VkEx
     j["driver"] = device.driverName();
     j["cpuDevice"] = device.isCpu();  // lavapipe: CPU timings, not GPU ones
     j["method"] = lightscatter::methodName(o.render.method);
+    j["methodRan"] = f.plugin.method;  // with auto, the method it picked
+    j["reason"] = f.plugin.reason;
+    j["notice"] = f.plugin.notice;
     j["profile"] = lightscatter::profileName(o.render.profile);
     j["size"] = {size.width, size.height};
     j["frames"] = frames;
@@ -93,8 +96,12 @@ int runRender(Args& args) {
     if (!timings.empty()) outputs.writeText(timings, timingsJson(device, o, size, frame, frames).dump(2) + "\n");
     outputs.commit();
 
+    if (!frame.plugin.notice.empty()) std::cerr << "lightscatter: notice: " << frame.plugin.notice << "\n";
+    const std::string method = o.render.method == lightscatter::Method::Auto
+                                   ? "auto -> " + frame.plugin.method + " (" + frame.plugin.reason + ")"
+                                   : std::string(lightscatter::methodName(o.render.method));
     std::printf("%s: %ux%u, %s, %s, %s on '%s'%s: plugin %.3f ms, engine %.3f ms\n", out.c_str(),
-                size.width, size.height, lightscatter::methodName(o.render.method),
+                size.width, size.height, method.c_str(),
                 lightscatter::profileName(o.render.profile), frame.plugin.passNames.empty() ? "-" : "rendered",
                 device.name().c_str(), device.isCpu() ? " (CPU timings)" : "", frame.plugin.totalMilliseconds,
                 frame.engine.totalMilliseconds);

@@ -274,6 +274,7 @@ int runView(Args& args) {
 
     const SceneDesc scene = loadSceneFile(scenePath);
     const MeshData mesh = loadSceneMeshes(scene);
+    for (const auto& w : mesh.warnings) std::cerr << "lightscatter: warning: " << w << "\n";
     const VkExtent2D size = sceneSize(o, {960, 540});
 
     GlfwSession glfw;

@@ -1,5 +1,7 @@
 #include "frame_graph.h"
 
+#include "analytic/analytic_node.h"
+#include "cone_march/cone_march_node.h"
 #include "epipolar/epipolar_nodes.h"
 #include "methods/method_nodes.h"
 
@@ -12,7 +14,9 @@ bool GraphConfig::operator==(const GraphConfig& o) const {
            screen.width == o.screen.width && screen.height == o.screen.height &&
            depthStencil == o.depthStencil && depth == o.depth && color == o.color &&
            shadowMap == o.shadowMap && lightColor == o.lightColor &&
-           inscatterOut == o.inscatterOut && table == o.table && poisonTransients == o.poisonTransients;
+           inscatterOut == o.inscatterOut && table == o.table && extinction == o.extinction &&
+           coneSamples == o.coneSamples && coneLimited == o.coneLimited && coneJitter == o.coneJitter &&
+           shadowSampling == o.shadowSampling && poisonTransients == o.poisonTransients;
 }
 
 rg::ImportedImage importDescription(const ImageInput& in) {
@@ -55,24 +59,45 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
     fg.color = g.importImage("engine color", importDescription(c.color));
     if (c.inscatterOut.format != VK_FORMAT_UNDEFINED)
         fg.inscatterOut = g.importImage("in-scattering output", importDescription(c.inscatterOut));
+    // The engine's shadow map and light color are imported whenever given, so that they are left
+    // in the layouts the engine asked for even where no node reads them.
+    if (c.shadowMap.format != VK_FORMAT_UNDEFINED)
+        fg.shadowMap = g.importImage("engine shadow map", importDescription(c.shadowMap));
+    if (c.lightColor.format != VK_FORMAT_UNDEFINED)
+        fg.lightColor = g.importImage("light color", importDescription(c.lightColor));
+    if (!c.touchesView && !c.extinction && !fg.inscatterOut.valid()) {
+        fg.summary = "no light scatters and nothing absorbs: no pass at all";
+        return fg;
+    }
     in.constants = ls::addUploadConstants(g, shared);
     const rg::ImageRef cameraZ = ls::addCameraZ(g, in);
 
     rg::ImageRef lin;
     if (!c.touchesView) {
-        fg.summary = "the light's volume misses the view: extinction only";
+        fg.summary = "the light reaches no view ray (or nothing scatters): extinction only";
+    } else if (c.method == Method::Analytic) {
+        lin = ls::addAnalytic(g, shared, {in.constants, cameraZ});
+        fg.summary = "seed 001's arctangent closed form per pixel";
+    } else if (c.method == Method::ConeMarch) {
+        ls::ConeMarchInputs cone{in.constants, cameraZ, {}, fg.lightColor};
+        if (c.shadowed && c.shadowSampling) cone.shadowMap = fg.shadowMap;
+        lin = ls::addConeMarch(g, shared, cone, {c.coneSamples, c.coneLimited, c.coneJitter});
+        fg.summary = std::string(c.coneLimited ? "cone-limited" : "naive full-ray") + " march, " +
+                     std::to_string(c.coneSamples) + " samples per pixel" +
+                     (c.shadowed && !c.shadowSampling ? ", no shadow-map sampling" : "") +
+                     (c.coneJitter ? ", jittered" : "");
     } else {
         if (c.light != ls::LightKind::Directional)
             fg.table = in.table = g.importImage("point-light table", importDescription(c.table));
         if (c.shadowed) {
-            fg.shadowMap = in.shadowMap = g.importImage("engine shadow map", importDescription(c.shadowMap));
-            if (c.lightColor.format != VK_FORMAT_UNDEFINED)
-                fg.lightColor = in.lightColor =
-                    g.importImage("light color", importDescription(c.lightColor));
+            in.shadowMap = fg.shadowMap;
+            in.lightColor = fg.lightColor;
         }
         if (!c.shadowed) {
             lin = ls::addUnshadowed(g, in, cameraZ);
-            fg.summary = "unshadowed light: closed form per pixel";
+            fg.summary = c.light == ls::LightKind::Directional
+                             ? "unshadowed directional light: closed form per pixel"
+                             : "unshadowed light: the point-light table in closed form per pixel";
         } else if (c.method == Method::BruteForce) {
             lin = ls::addBruteForce(g, in, cameraZ);
             fg.summary = "brute-force ray marching";

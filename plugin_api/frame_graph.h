@@ -37,6 +37,11 @@ struct GraphConfig {
     VkFormat depthStencil = VK_FORMAT_UNDEFINED;
     ImportState depth, color, shadowMap, lightColor, inscatterOut;  // format UNDEFINED: absent
     ImportState table;
+    bool extinction = true;         // betaT > 0 in some channel: the composite has work
+    uint32_t coneSamples = 32;      // cone-march
+    bool coneLimited = true;
+    bool coneJitter = false;
+    bool shadowSampling = true;     // false: cone-march's low-end mode
     bool poisonTransients = false;
     bool operator==(const GraphConfig& o) const;
 };

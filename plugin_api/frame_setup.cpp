@@ -284,10 +284,26 @@ void checkSettings(const Settings& s) {
     if (!(s.bilateralThreshold > 0.0f) || !finite(s.bilateralThreshold))
         fail("custom.bilateralThreshold = " + num(s.bilateralThreshold) + ": must be > 0");
     if (!finite(s.shadowDepthBias)) fail("custom.shadowDepthBias is not finite");
+    if (s.coneSamples < 1 || s.coneSamples > 4096)
+        fail("custom.coneSamples = " + std::to_string(s.coneSamples) + ": must be between 1 and 4096");
 }
 
-bool lightTouchesView(const ls::CameraParams& camera, const ls::LightParams& light) {
-    if (light.kind != ls::LightKind::Spot || !(light.range < 1e29f)) return true;
+bool lightTouchesView(const ls::CameraParams& camera, const ls::LightParams& light,
+                      const ls::MediumParams& medium) {
+    // Nothing reaches the camera when nothing is emitted or nothing scatters.
+    if (glm::all(glm::equal(light.intensity, glm::vec3(0.0f)))) return false;
+    if (glm::all(glm::equal(medium.betaR + medium.betaM, glm::vec3(0.0f)))) return false;
+    if (light.kind != ls::LightKind::Spot) return true;
+    // View rays end within the far plane's corners (or the sky distance with an infinite far
+    // plane), so only the part of the cone within that reach of the camera can matter: an
+    // unbounded spot is bounded by it.
+    const glm::vec3 cameraPos = glm::vec3(glm::inverse(camera.view)[3]);
+    const float tanX = 1.0f / std::fabs(camera.projection[0][0]);
+    const float tanY = 1.0f / std::fabs(camera.projection[1][1]);
+    const float farthest = (camera.infiniteFar ? medium.maxDistance : camera.farPlane) *
+                           std::sqrt(1.0f + tanX * tanX + tanY * tanY);
+    const float range = std::min(light.range, glm::length(light.position - cameraPos) + farthest);
+    if (!(range < 1e29f)) return true;
     const glm::mat4 m = glm::transpose(camera.projection * camera.view);  // rows as columns
     glm::vec4 planes[6] = {m[3] + m[0], m[3] - m[0], m[3] + m[1], m[3] - m[1], m[2], m[3] - m[2]};
     const int count = camera.infiniteFar ? 5 : 6;
@@ -300,7 +316,7 @@ bool lightTouchesView(const ls::CameraParams& camera, const ls::LightParams& lig
         // The farthest reach of the range-capped cone along the plane's normal.
         const float angle = std::acos(std::clamp(glm::dot(n / len, axis), -1.0f, 1.0f));
         const float reach = angle <= alpha ? 1.0f : std::max(0.0f, std::cos(std::min(angle - alpha, 1.5707964f)));
-        if ((glm::dot(n, light.position) + planes[i].w) / len + light.range * reach < 0.0f) return false;
+        if ((glm::dot(n, light.position) + planes[i].w) / len + range * reach < 0.0f) return false;
     }
     return true;
 }
@@ -319,6 +335,10 @@ FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
         s.settings.fixupMaxSteps = f.custom.fixupMaxSteps;
         s.settings.shadowDepthBias = f.custom.shadowDepthBias;
         s.settings.interpolation = f.custom.interpolation;
+        s.settings.coneSamples = f.custom.coneSamples;
+        s.settings.coneLimited = f.custom.coneLimited;
+        s.settings.coneJitter = f.custom.coneJitter;
+        s.settings.shadowSampling = f.custom.shadowSampling;
     }
     checkSettings(s.settings);
 

@@ -29,7 +29,10 @@ void checkSettings(const Settings& s);
 // created its device with) does not turn on.
 void checkEnabledFeatures(const VkPhysicalDeviceFeatures2* enabled);
 
-// Whether the light's volume can touch the camera's view at all (conservative).
-bool lightTouchesView(const ls::CameraParams& camera, const ls::LightParams& light);
+// Whether any light can scatter towards the camera (conservative): false when nothing is emitted,
+// nothing scatters, or a spot's cone (within its range, or within the reach of the view) misses
+// the view frustum.
+bool lightTouchesView(const ls::CameraParams& camera, const ls::LightParams& light,
+                      const ls::MediumParams& medium);
 
 }  // namespace lightscatter::detail

@@ -46,7 +46,11 @@ namespace lightscatter {
 using Vec3 = std::array<float, 3>;
 using Mat4 = std::array<float, 16>;  // column-major (GLM's layout), maps column vectors
 
-enum class Method { Epipolar, BruteForce };
+// The methods (docs/methods.md): epipolar sampling (seed 000), brute-force per-pixel marching (the
+// GPU reference), seed 001's arctangent closed form (unshadowed point and spot lights), seed 003's
+// cone-limited fixed-count march, and Auto, which picks one per frame from what the frame holds
+// and says which and why in the FrameReport.
+enum class Method { Epipolar, BruteForce, Analytic, ConeMarch, Auto };
 enum class Profile {
     HighQuality,      // 2048 slices x 1024 samples, 4096^2 shadow map (seed 000)
     Balanced,         // 1024 x 1024, 2048^2
@@ -64,7 +68,7 @@ enum class ShadowFilter { Nearest, Bilinear };
 // a light (which no sparse sampling resolves) exact, and changes nothing where there is no glow.
 enum class Interpolation { ShadowedFraction, Inscattering };
 
-LIGHTSCATTER_API const char* methodName(Method m);    // "epipolar", "brute-force"
+LIGHTSCATTER_API const char* methodName(Method m);    // "epipolar", "brute-force", "analytic", ...
 LIGHTSCATTER_API const char* profileName(Profile p);  // "high-quality", "balanced", ... "custom"
 LIGHTSCATTER_API std::optional<Method> parseMethod(const std::string& name);
 LIGHTSCATTER_API std::optional<Profile> parseProfile(const std::string& name);
@@ -85,6 +89,14 @@ struct Settings {
     float shadowDepthBias = 0.0f;        // added to the ray's light-space depth before comparing
     Interpolation interpolation = Interpolation::ShadowedFraction;
     uint32_t shadowMapSize = 2048;       // the profile's recommendation (the light's own size rules)
+    // cone-march (seed 003), taken from `custom` with every profile:
+    uint32_t coneSamples = 32;           // samples per pixel, 1 to 4096
+    bool coneLimited = true;             // only the ray's part in the cone and range; false: the
+                                         // seed's naive baseline over the whole ray
+    bool coneJitter = false;             // per-pixel jittered sample offsets instead of midpoints
+    // false: seed 003's low-end mode, no shadow-map look-ups (shafts without shadows). Only
+    // cone-march honours it; the other methods refuse it (Auto picks cone-march).
+    bool shadowSampling = true;
 };
 
 // The settings of a profile (Custom returns the defaults).
@@ -219,6 +231,10 @@ struct PassTime {
 
 struct FrameReport {
     uint64_t frame = 0;             // the frame this report covers (record()'s number; 0: none yet)
+    std::string method;             // the method that ran; with Auto, the one it picked
+    std::string reason;             // which nodes the frame needed, and with Auto why that method
+    std::string notice;             // empty, or one line: an assumption of the method this frame's
+                                    // medium or light breaks, and what it costs
     bool timed = false;             // false: that frame has not finished on the GPU (passes empty)
     std::vector<PassTime> passes;   // GPU time per pass, execution order
     double totalMilliseconds = 0;

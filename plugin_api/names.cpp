@@ -25,6 +25,9 @@ constexpr ProfileRow kProfiles[] = {
 constexpr std::pair<Method, const char*> kMethods[] = {
     {Method::Epipolar, "epipolar"},
     {Method::BruteForce, "brute-force"},
+    {Method::Analytic, "analytic"},
+    {Method::ConeMarch, "cone-march"},
+    {Method::Auto, "auto"},
 };
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include "frame_graph.h"
 #include "frame_setup.h"
+#include "method_choice.h"
 #include "lightscatter.h"
 #include "point_table.h"
 #include "rendergraph/compile.h"
@@ -51,6 +52,7 @@ const VulkanContext& checked(const VulkanContext& c) {
 struct RecordedFrame {
     uint64_t frame = 0;
     uint64_t graph = 0;  // the frame graph it was recorded with
+    std::string method, reason, notice;
     std::vector<std::string> passNames;
     bool tableRefilled = false;
 };
@@ -79,11 +81,20 @@ struct Plugin::Impl {
         spec.lightColor = setup.lightColor;
         spec.bilinearShadow = setup.epipolar.bilinearShadow;
 
+        const bool touchesView = detail::lightTouchesView(setup.camera, setup.light, setup.medium);
+        const detail::MethodChoice choice = detail::chooseMethod(frame.method, setup, touchesView);
+
+        lastChoice = choice;
         GraphConfig c;
-        c.method = frame.method;
+        c.method = choice.method;
         c.light = setup.light.kind;
         c.shadowed = setup.shadowed;
-        c.touchesView = detail::lightTouchesView(setup.camera, setup.light);
+        c.touchesView = touchesView;
+        c.extinction = glm::any(glm::greaterThan(setup.medium.betaT(), glm::vec3(0.0f)));
+        c.coneSamples = setup.settings.coneSamples;
+        c.coneLimited = setup.settings.coneLimited;
+        c.coneJitter = setup.settings.coneJitter;
+        c.shadowSampling = setup.settings.shadowSampling;
         c.minMaxTrees = setup.epipolar.minMaxTrees;
         c.fixup = setup.epipolar.fixup;
         c.slices = setup.epipolar.slices;
@@ -97,7 +108,9 @@ struct Plugin::Impl {
         if (frame.lightColor) c.lightColor = state(*frame.lightColor);
         if (frame.inscatterOut) c.inscatterOut = state(*frame.inscatterOut);
         c.poisonTransients = frame.debug.poisonTransients || poisonFromEnvironment();
-        const bool needsTable = c.touchesView && c.light != ls::LightKind::Directional;
+        // Only the table-based nodes (epipolar, brute force, the unshadowed closed form) read it.
+        const bool needsTable = c.touchesView && c.light != ls::LightKind::Directional &&
+                                (c.method == Method::Epipolar || c.method == Method::BruteForce);
         if (needsTable)
             c.table = {VK_FORMAT_R32G32B32A32_SFLOAT, {kTableWidth, kTableHeight},
                        VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
@@ -168,6 +181,9 @@ struct Plugin::Impl {
         for (const auto& p : executor->compiled().passes)
             f.passNames.push_back(fg.graph->passes()[p.pass].name);
         f.tableRefilled = tableRefilled;
+        f.method = config && config->touchesView ? methodName(lastChoice.method) : "none";
+        f.reason = lastChoice.reason.empty() ? fg.summary : lastChoice.reason;
+        f.notice = lastChoice.notice;
         frames.push_back(std::move(f));
         while (frames.size() > kTimedFrames) frames.pop_front();
         return lastFrame;
@@ -202,6 +218,9 @@ struct Plugin::Impl {
             r.totalMilliseconds = t.totalMilliseconds;
         }
         r.passNames = f->passNames;
+        r.method = f->method;
+        r.reason = f->reason;
+        r.notice = f->notice;
         if (f->tableRefilled) r.setupPasses.push_back("point-light table");
         return r;
     }
@@ -214,6 +233,7 @@ struct Plugin::Impl {
     bool tableRefilled = false;
     std::optional<GraphConfig> config;
     bool rehearsed = false;
+    detail::MethodChoice lastChoice;  // of the frame prepared last
     FrameGraph fg;
     std::unique_ptr<rg::GraphExecutor> executor;
     uint64_t graphGeneration = 0;

@@ -379,6 +379,11 @@ MeshData loadSceneMeshes(const SceneDesc& scene) {
         Activity loading("loading " + model.path);
         appendGltf(mesh, model.path, model.transform);
     }
+    // Nothing the scene asks for is dropped without a word.
+    if (scene.light.type == LightKind::Point && scene.light.shadowMapSize > 0)
+        mesh.warnings.push_back(scene.path + ": light.shadowMapSize " + std::to_string(scene.light.shadowMapSize) +
+                                " is ignored: point lights cast no shadows yet (no cube shadow maps), so this "
+                                "light renders unshadowed");
     return mesh;
 }
 

@@ -1,0 +1,15 @@
+#pragma once
+// Seed 001 as a node: Lin of an unshadowed point or spot light in closed form, per pixel.
+#include "common/node_inputs.h"
+
+namespace ls {
+
+struct AnalyticInputs {
+    rg::BufferRef constants;  // the frame's FrameConstants
+    rg::ImageRef cameraZ;     // R32F, screen: where each pixel's ray ends
+};
+
+// Returns Lin (R16G16B16A16_SFLOAT, screen).
+rg::ImageRef addAnalytic(rg::RenderGraph& graph, const Shared& shared, const AnalyticInputs& in);
+
+}  // namespace ls

@@ -1,0 +1,25 @@
+#pragma once
+// Seed 003 as a node: a fixed number of samples per pixel along the part of its ray the light can
+// reach (the spot's cone within its range), or along the whole ray (the seed's naive baseline).
+#include "common/node_inputs.h"
+
+namespace ls {
+
+struct ConeMarchOptions {
+    uint32_t samples = 32;      // per pixel
+    bool coneLimited = true;    // false: march all of [0, S] (seed 003's naive baseline)
+    bool jitter = false;        // a per-pixel offset of the samples instead of the midpoints
+};
+
+struct ConeMarchInputs {
+    rg::BufferRef constants;  // the frame's FrameConstants
+    rg::ImageRef cameraZ;     // R32F, screen
+    rg::ImageRef shadowMap;   // the light's depth; invalid: no shadow sampling (the low-end mode)
+    rg::ImageRef lightColor;  // light-space color; invalid without one
+};
+
+// Returns Lin (R16G16B16A16_SFLOAT, screen).
+rg::ImageRef addConeMarch(rg::RenderGraph& graph, const Shared& shared, const ConeMarchInputs& in,
+                          const ConeMarchOptions& options);
+
+}  // namespace ls

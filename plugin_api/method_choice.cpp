@@ -1,0 +1,112 @@
+#include "method_choice.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace lightscatter::detail {
+namespace {
+
+[[noreturn]] void refuse(const std::string& what) { throw InvalidInput("lightscatter: " + what); }
+
+float maxOf(const glm::vec3& v) { return std::max({v.x, v.y, v.z}); }
+
+std::string number(float x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.2g", static_cast<double>(x));
+    return buf;
+}
+
+std::string percent(float x) { return number(100.0f * x) + "%"; }
+
+bool isotropicMedium(const FrameSetup& s) { return maxOf(s.medium.betaR) == 0.0f && s.medium.isotropicMie; }
+
+float analyticOpticalDepth(const FrameSetup& s) {
+    const glm::vec3 camera = glm::vec3(glm::inverse(s.camera.view)[3]);
+    return maxOf(s.medium.betaT()) * glm::length(s.light.position - camera);
+}
+
+// What seed 001's closed form gets wrong for this frame, in one line (empty when nothing).
+std::string analyticNotice(const FrameSetup& s) {
+    std::string notice;
+    if (!isotropicMedium(s))
+        notice = "analytic assumes isotropic scattering, but the medium has " +
+                 std::string(maxOf(s.medium.betaR) > 0.0f ? "Rayleigh scattering" : "a Mie lobe") +
+                 " (its phase function is replaced by 1/(4 pi))";
+    const float tau = analyticOpticalDepth(s);
+    const float error = 1.33f * tau;
+    if (error > 0.01f)
+        notice += std::string(notice.empty() ? "analytic ignores extinction" : "; it also ignores extinction") +
+                  ": optical depth " + number(tau) + " to the light, about " + percent(error) +
+                  " too bright";
+    return notice;
+}
+
+}  // namespace
+
+MethodChoice chooseMethod(Method requested, const FrameSetup& s, bool lightReachesView) {
+    const bool pointLike = s.light.kind != ls::LightKind::Directional;
+    const bool skipShadows = !s.settings.shadowSampling && s.shadowed;
+    MethodChoice c;
+    c.method = requested;
+    switch (requested) {
+        case Method::Analytic:
+            if (!pointLike)
+                refuse("method analytic (seed 001) is a closed form for point and spot lights; this "
+                       "frame's light is directional (use auto, epipolar or cone-march)");
+            if (s.shadowed)
+                refuse("method analytic (seed 001) cannot cast shadows; this frame has a shadow map "
+                       "(use auto, epipolar, brute-force or cone-march)");
+            c.notice = analyticNotice(s);
+            return c;
+        case Method::Epipolar:
+        case Method::BruteForce:
+            if (skipShadows)
+                refuse("custom.shadowSampling = false (seed 003's low-end mode) is honoured by "
+                       "cone-march only; method " + std::string(methodName(requested)) +
+                       " samples the shadow map (use cone-march or auto)");
+            return c;
+        case Method::ConeMarch:
+            return c;
+        case Method::Auto:
+            break;
+    }
+    if (!lightReachesView) {
+        c.method = Method::Epipolar;
+        c.reason = "the light reaches no view ray (or nothing scatters): extinction only";
+    } else if (skipShadows) {
+        c.method = Method::ConeMarch;
+        c.reason = "shadow sampling is off: seed 003's low-end mode, which only cone-march has";
+    } else if (!s.shadowed && pointLike) {
+        const float tau = analyticOpticalDepth(s);
+        if (isotropicMedium(s) && tau < kAnalyticMaxOpticalDepth) {
+            c.method = Method::Analytic;
+            c.reason = "unshadowed point light in an isotropic, thin medium (optical depth " +
+                       number(tau) + " to the light): seed 001's closed form, within 1%";
+        } else {
+            c.method = Method::Epipolar;  // an unshadowed frame is the table in closed form
+            c.reason = std::string("unshadowed point light: the point-light table per pixel (") +
+                       (isotropicMedium(s) ? "the optical depth to the light, " + number(tau) +
+                                                 ", puts seed 001's closed form over 1%"
+                                           : "seed 001's closed form assumes isotropic scattering") +
+                       ")";
+        }
+    } else if (!s.shadowed) {
+        c.method = Method::Epipolar;
+        c.reason = "unshadowed directional light: closed form per pixel";
+    } else {
+        const uint64_t pixels = uint64_t{s.screen.width} * s.screen.height;
+        const uint64_t samples = uint64_t{s.settings.slices} * s.settings.samplesPerSlice;
+        if (pixels * kEpipolarPixelsPerSample < samples) {
+            c.method = Method::BruteForce;
+            c.reason = "shadowed light on a screen of " + std::to_string(pixels) + " pixels, fewer than " +
+                       std::to_string(samples / kEpipolarPixelsPerSample) +
+                       " (epipolar samples / 8): per-pixel marching is cheaper";
+        } else {
+            c.method = Method::Epipolar;
+            c.reason = "shadowed light: epipolar sampling";
+        }
+    }
+    return c;
+}
+
+}  // namespace lightscatter::detail

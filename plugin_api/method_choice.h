@@ -1,0 +1,30 @@
+#pragma once
+// Which method a frame runs: the one asked for, checked against what the frame holds (a method
+// that cannot honour the frame refuses it in one line), or for Method::Auto the cheapest that
+// meets the frame's needs, with the reason.
+#include <string>
+
+#include "frame_setup.h"
+#include "lightscatter.h"
+
+namespace lightscatter::detail {
+
+// Seed 001's closed form ignores extinction; its image error grows like 1.33 tau with
+// tau = max(betaT) |camera - light| (tests/float64 model: AnalyticExtinction). Auto uses it below
+// this optical depth, where that error stays under 1%.
+inline constexpr float kAnalyticMaxOpticalDepth = 0.007f;
+
+// Screens with fewer pixels than slices x samples / 8 are cheaper to march per pixel than to sample
+// epipolarly (docs/methods.md gives the measurement).
+inline constexpr uint32_t kEpipolarPixelsPerSample = 8;
+
+struct MethodChoice {
+    Method method = Method::Epipolar;  // never Auto
+    std::string reason;                // why, for Auto; empty otherwise
+    std::string notice;                // an assumption of the method that the frame breaks
+};
+
+// Throws InvalidInput naming the method and the rule when it cannot honour the frame.
+MethodChoice chooseMethod(Method requested, const FrameSetup& setup, bool lightReachesView);
+
+}  // namespace lightscatter::detail

@@ -1,0 +1,43 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Seed 001: Lin of an unshadowed point or spot light in closed form, per pixel, for a medium that
+// scatters isotropically and does not attenuate:
+//     Lin = I betaS / (4 pi) * integral over [t0, t1] of ds / ((s + b)^2 + w^2)
+// with q = C - L, b = dot(v, q), w^2 = |cross(v, q)|^2 + r0^2 (the light's radius keeps a ray
+// through the light finite), and [t0, t1] the ray's part inside the spot's cone and range (all of
+// [0, S] for a point light). The phase function's shape and the extinction are what it ignores
+// (docs/methods.md measures what that costs).
+#include "camera.glsl"
+#include "light_volume.glsl"
+layout(binding = 1) uniform sampler2D cameraZ;
+layout(location = 0) out vec4 outInscatter;
+
+// integral over [t0, t1] of ds / ((s + b)^2 + w^2) = (atan((t1 + b)/w) - atan((t0 + b)/w)) / w.
+// The difference of arctangents is one angle: tan(x - y) = (X - Y)/(1 + X Y), and with
+// t1 >= t0 the numerator is never negative, so atan2 picks the right quadrant; nothing cancels,
+// whether the light lies before, within or behind the segment.
+float arctanIntegral(float t0, float t1, float b, float w) {
+    float num = (t1 - t0) * w;
+    float den = w * w + (t0 + b) * (t1 + b);
+    return atan(num, den) / w;
+}
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    vec3 C = frame.cameraPos.xyz;
+    vec3 v = rayDirection(pixelToNdc(vec2(pixel) + 0.5));
+    float S = texelFetch(cameraZ, pixel, 0).r / max(dot(v, frame.cameraForward.xyz), 1e-4);
+    float t0, t1;
+    lightInterval(C, v, S, t0, t1);
+    vec3 lin = vec3(0.0);
+    if (t0 < t1) {
+        vec3 q = C - frame.lightPos.xyz;
+        float b = dot(v, q);
+        vec3 h = cross(v, q);  // never |q|^2 - b^2, which cancels
+        float r0 = frame.betaT.w;
+        float w = sqrt(dot(h, h) + r0 * r0);
+        vec3 betaS = frame.betaR.rgb + frame.betaM.rgb;
+        lin = frame.lightIntensity.rgb * betaS * (arctanIntegral(t0, t1, b, w) / (4.0 * PI));
+    }
+    outInscatter = vec4(lin, 1.0);
+}

@@ -1,0 +1,84 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Seed 003: every pixel marches a fixed number of samples along its ray, limited to the part the
+// spot's cone and range sphere can light (kConeLimited), or over the whole ray as the seed's naive
+// baseline. Each sample evaluates the integrand of docs/model.md at the sample (transmittance to
+// the camera, phase function, the light's irradiance, shadow-map visibility and light color) and
+// weighs it by the sample spacing (midpoint rule), optionally at a per-pixel jittered offset.
+// Without shadow sampling (the seed's low-end mode) visibility is 1.
+#include "camera.glsl"
+#include "light_volume.glsl"
+#include "math.glsl"
+layout(binding = 1) uniform sampler2D cameraZ;
+#if LS_SHADOW_MAP
+layout(binding = 6) uniform sampler2D shadowMap;
+#include "shadow.glsl"
+#endif
+#if LS_LIGHT_COLOR
+layout(binding = 8) uniform sampler2D lightColorMap;
+#endif
+#include "light_color.glsl"
+layout(location = 0) out vec4 outInscatter;
+
+// Options are specialisation constants: branching on push constants alone makes lavapipe (Mesa
+// 22.3) recompile the shader at every draw (docs/reliability.md).
+layout(constant_id = 10) const int kSamples = 32;
+layout(constant_id = 11) const bool kConeLimited = true;
+layout(constant_id = 12) const bool kJitter = false;
+
+// Interleaved gradient noise (Jimenez 2014): a per-pixel offset in [0, 1) whose error looks like
+// fine noise instead of the bands a fixed offset leaves.
+float pixelNoise(vec2 p) { return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715)))); }
+
+// Irradiance times visibility and light color reaching P, and cos of the scattering angle.
+vec3 lightAt(vec3 P, vec3 v, out float cosTheta) {
+    vec3 irr;
+    if (kLightType == LIGHT_DIRECTIONAL) {
+        cosTheta = dot(v, -frame.lightDir.xyz);
+        irr = frame.lightIntensity.rgb;
+    } else {
+        vec3 toLight = frame.lightPos.xyz - P;
+        float r = length(toLight);
+        vec3 l = r > 0.0 ? toLight / r : -frame.lightDir.xyz;
+        cosTheta = dot(v, l);
+        float r0 = frame.betaT.w;
+        irr = frame.lightIntensity.rgb * exp(-frame.betaT.rgb * r) / (r * r + r0 * r0);
+        if (kLightType == LIGHT_SPOT && (dot(-l, frame.lightDir.xyz) < frame.lightDir.w ||
+                                         r > frame.lightIntensity.w))
+            return vec3(0.0);  // outside the cone or the range: the naive march pays for these
+    }
+#if LS_SHADOW_MAP || LS_LIGHT_COLOR
+    vec4 X = frame.lightViewProj * vec4(P, 1.0);
+    if (X.w > 0.0) {
+        vec2 uv = X.xy / X.w * 0.5 + 0.5;
+#if LS_SHADOW_MAP
+        irr *= shadowVisibility(uv, toStandardDepth(X.z / X.w));
+#endif
+        irr *= lightColorAt(uv);
+    }
+#endif
+    return irr;
+}
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    vec3 C = frame.cameraPos.xyz;
+    vec3 v = rayDirection(pixelToNdc(vec2(pixel) + 0.5));
+    float S = texelFetch(cameraZ, pixel, 0).r / max(dot(v, frame.cameraForward.xyz), 1e-4);
+    float t0 = 0.0, t1 = S;
+    if (kConeLimited) lightInterval(C, v, S, t0, t1);
+    vec3 lin = vec3(0.0);
+    if (t0 < t1) {
+        float step = (t1 - t0) / float(kSamples);
+        float offset = kJitter ? pixelNoise(vec2(pixel)) : 0.5;
+        for (int i = 0; i < kSamples; ++i) {
+            float s = t0 + (float(i) + offset) * step;
+            vec3 P = C + s * v;
+            float cosTheta;
+            vec3 irr = lightAt(P, v, cosTheta);
+            lin += exp(-frame.betaT.rgb * s) * phaseSum(cosTheta) * irr;
+        }
+        lin *= step;
+    }
+    outInscatter = vec4(lin, 1.0);
+}
