@@ -1,5 +1,6 @@
 // Each command of the lightscatter command line end to end, on lavapipe with validation, and every
 // failure path: one line naming the file, field or value, a non-zero exit, no file half-written.
+#include <algorithm>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -48,19 +49,37 @@ TEST(Cli, RenderWritesPngLinAndTimings) {
     std::ifstream t(path("t.json"));
     const auto j = nlohmann::json::parse(t);
     EXPECT_FALSE(j["device"].get<std::string>().empty());
-    EXPECT_EQ(j["method"], "epipolar");
-    EXPECT_GT(j["passes"].size(), 10u);
+    // auto is the default: on a 64x36 screen a shadowed light is marched per pixel.
+    EXPECT_EQ(j["method"], "auto");
+    EXPECT_EQ(j["methodRan"], "brute-force");
+    EXPECT_NE(j["reason"].get<std::string>().find("per-pixel marching is cheaper"), std::string::npos) << j["reason"];
+    EXPECT_GE(j["passes"].size(), 4u);
     EXPECT_GT(j["totalMilliseconds"].get<double>(), 0.0);
 }
 
 TEST(Cli, RenderEachSceneWithEachMethod) {
     for (const char* name : {"atrium", "window_room", "engine_spot", "point_fog"})
-        for (const char* method : {"epipolar", "brute-force"}) {
+        for (const char* method : {"epipolar", "brute-force", "cone-march", "auto"}) {
             const auto r = run(std::string("render ") + scene(name) + " --size 48x27 --method " +
                                method + " --out " + name + ".exr --validation");
             EXPECT_EQ(r.exitCode, 0) << name << " " << method << ": " << r.out;
             EXPECT_TRUE(exists(std::string(name) + ".exr")) << name;
         }
+    // analytic is seed 001's closed form: the unshadowed point light only; one line elsewhere.
+    const auto point = run("render " + scene("point_fog") + " --size 48x27 --method analytic --out p.exr --validation");
+    EXPECT_EQ(point.exitCode, 0) << point.out;
+    // The plugin refuses once the engine has its device, so the device's line comes first.
+    auto refusedAfterDevice = [](const cli_test::Result& r, const std::string& fragment) {
+        EXPECT_NE(r.exitCode, 0) << r.out;
+        const size_t device = r.out.find("using Vulkan device");
+        const std::string rest = r.out.substr(device == std::string::npos ? 0 : r.out.find('\n', device) + 1);
+        EXPECT_NE(rest.find(fragment), std::string::npos) << r.out;
+        EXPECT_EQ(std::count(rest.begin(), rest.end(), '\n'), 1) << r.out;
+    };
+    refusedAfterDevice(run("render " + scene("atrium") + " --size 48x27 --method analytic --out a.exr"),
+                       "light is directional");
+    refusedAfterDevice(run("render " + scene("window_room") + " --size 48x27 --method analytic --out w.exr"),
+                       "cannot cast shadows");
 }
 
 TEST(Cli, BudgetPrintsEveryProfileBesideTheSeed) {
@@ -78,7 +97,7 @@ TEST(Cli, BudgetPrintsEveryProfileBesideTheSeed) {
 }
 
 TEST(Cli, GraphDumpsTheCompiledFrameGraph) {
-    const auto dot = run("graph " + scene("window_room") + " --dot --size 64x36 --validation");
+    const auto dot = run("graph " + scene("window_room") + " --dot --size 64x36 --method epipolar --validation");
     ASSERT_EQ(dot.exitCode, 0) << dot.out;
     EXPECT_NE(dot.out.find("digraph"), std::string::npos);
     EXPECT_NE(dot.out.find("ray march with min/max trees"), std::string::npos);
