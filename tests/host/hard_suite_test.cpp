@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 
@@ -17,19 +18,27 @@ namespace {
 
 struct Bound {
     double epipolar, bruteForce;
+    double coneMarch = 1.0, analytic = 1.0;
 };
 
 // Measured on lavapipe (see docs/performance.md), with room for driver differences. Where the
 // epipolar bound is loose the error is interpolation along too few samples of a 64-pixel line
-// (an initial step of 16); brute force's is the shadow map's.
+// (an initial step of 16); brute force's is the shadow map's. cone-march (32 samples per pixel,
+// midpoints) misses the peak of 1/r^2 where a ray passes through or starts at a light: measured
+// 0.69 (point_at_camera), 0.64 (spot_at_camera), 0.10 (ray_through_point_light), 0.025
+// (sun_into_view), 0.010 (shadow_map_not_pow2), at most 0.0034 elsewhere. analytic (seed 001) runs
+// on the unshadowed point-light cases only, where it ignores the medium's Mie lobe and extinction:
+// measured 1.75 (point_at_camera) and 0.48 (ray_through_point_light), which docs/methods.md
+// explains; the bounds hold the error where it is, so that a regression shows.
 const std::map<std::string, Bound> kBounds = {
-    {"spot_at_camera", {0.22, 0.045}},         {"point_at_camera", {0.045, 0.045}},
-    {"sun_into_view", {0.09, 0.036}},          {"dense_medium", {0.08, 0.015}},
-    {"reversed_z", {0.09, 0.015}},             {"reversed_infinite", {0.09, 0.015}},
-    {"zero_extinction_channel", {0.09, 0.015}}, {"shadow_map_not_pow2", {0.10, 0.017}},
-    {"light_center", {0.03, 0.01}},            {"thin_medium_km", {0.01, 0.01}},
+    {"spot_at_camera", {0.22, 0.045, 0.9}},    {"point_at_camera", {0.045, 0.045, 0.9, 2.3}},
+    {"sun_into_view", {0.09, 0.036, 0.04}},    {"dense_medium", {0.08, 0.015, 0.015}},
+    {"reversed_z", {0.09, 0.015, 0.015}},      {"reversed_infinite", {0.09, 0.015, 0.015}},
+    {"zero_extinction_channel", {0.09, 0.015, 0.015}}, {"shadow_map_not_pow2", {0.10, 0.017, 0.02}},
+    {"light_center", {0.03, 0.01, 0.015}},     {"thin_medium_km", {0.01, 0.01, 0.01}},
+    {"ray_through_point_light", {0.02, 0.01, 0.15, 0.65}},
 };
-constexpr Bound kDefault{0.02, 0.01};
+constexpr Bound kDefault{0.02, 0.01, 0.015, 1.0};
 
 }  // namespace
 
@@ -46,14 +55,23 @@ TEST_F(HardSuite, EveryCaseIsFiniteAndWithinItsBound) {
         const auto reference = host::reference::renderReference(scene, mesh, size.width, size.height);
         host::EngineRenderer renderer(dev(), scene, mesh, size);
         const Bound bound = kBounds.count(name) ? kBounds.at(name) : kDefault;
-        for (lightscatter::Method method : {lightscatter::Method::Epipolar, lightscatter::Method::BruteForce}) {
+        for (lightscatter::Method method : {lightscatter::Method::Epipolar, lightscatter::Method::BruteForce,
+                                            lightscatter::Method::ConeMarch, lightscatter::Method::Analytic}) {
+            // Seed 001's closed form only takes unshadowed point and spot lights (refusals: Cli tests).
+            const bool unshadowedPointLike = scene.light.type == host::LightKind::Point ||
+                                             (scene.light.type == host::LightKind::Spot && scene.light.shadowMapSize == 0);
+            if (method == lightscatter::Method::Analytic && !unshadowedPointLike) continue;
             host::RenderOptions options;
             options.method = method;
             const host::FrameOutput out = renderer.render(options);
             const auto e = host::bench::compareToReference(out.inscatter, reference.rgb, scene.exposure);
             for (float v : out.color) ASSERT_TRUE(std::isfinite(v)) << name;
             EXPECT_EQ(e.nonFinite, 0u) << name;
-            const double limit = method == lightscatter::Method::Epipolar ? bound.epipolar : bound.bruteForce;
+            std::printf("%-26s %-12s %8.4f\n", name.c_str(), lightscatter::methodName(method), e.meanRelative);
+            const double limit = method == lightscatter::Method::Epipolar     ? bound.epipolar
+                                 : method == lightscatter::Method::BruteForce ? bound.bruteForce
+                                 : method == lightscatter::Method::ConeMarch  ? bound.coneMarch
+                                                                              : bound.analytic;
             EXPECT_LE(e.meanRelative, limit) << name << " (" << lightscatter::methodName(method) << ")";
         }
         ++cases;
