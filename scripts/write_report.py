@@ -57,24 +57,29 @@ def main():
         p(f"## {scene} ({w}x{h})\n")
         scene_file = Path("scenes") / f"{scene}.json"
         if scene_file.exists() and json.loads(scene_file.read_text()).get("light", {}).get("type") == "point":
-            p("This scene's light is a point light, which the plugin does not shadow (no cube maps): every "
-              "method computes the same closed form, and its error is mostly the shadows the reference has and "
-              "the plugin lacks.\n")
+            p("This scene's light is a point light, which the plugin does not shadow (no cube maps): epipolar and "
+              "brute force compute the same closed form (the point-light table), analytic seed 001's arctangent "
+              "(which ignores the phase function's shape and extinction), cone-march samples the same integrand; "
+              "the error is mostly the shadows the reference has and the plugin lacks.\n")
         p(f"![time against error, {scene}](performance/time_vs_error_{scene}.png)\n")
         p("| configuration | slices x samples | median ms (p10-p90) | speed-up over brute force | mean rel. error | "
           "p99 | max | over 5% | PSNR dB | non-finite |")
         p("|---|---|---|---|---|---|---|---|---|---|")
         for r in rows:
+            if r["method"] == "auto" and r.get("methodRan"):
+                r = dict(r, label=f"auto (ran {r['methodRan']})")
+            if r["method"] == "cone-march":
+                r = dict(r, label=f"cone-march ({r.get('coneSamples', 32)} samples)")
             t = r["time"]
             e = r.get("error", {})
             speed = brute["time"]["median"] / t["median"] if brute and t["median"] > 0 else None
-            ss = "-" if r["method"] == "brute-force" else f"{r['slices']} x {r['samples']}"
+            ss = f"{r['slices']} x {r['samples']}" if r["method"] == "epipolar" else "-"
             p(f"| {r['label']} | {ss} | {fmt(t['median'])} ({fmt(t['p10'])}-{fmt(t['p90'])}) | "
               f"{fmt(speed) + 'x' if speed else '-'} | {fmt(e.get('meanRelative'))} | {fmt(e.get('p99'))} | "
               f"{fmt(e.get('max'))} | {fmt(100 * e['fractionOver5pct']) + '%' if e else '-'} | "
               f"{fmt(e.get('psnrDb'))} | {r['nonFinite']} |")
         p("")
-        sweeps = [r for r in runs if r["scene"] == scene and r["family"] not in ("profiles",)]
+        sweeps = [r for r in runs if r["scene"] == scene and r["family"] not in ("profiles", "cone")]
         if sweeps:
             p("Sweeps from the balanced profile (one parameter at a time):\n")
             p("| sweep | median ms | mean rel. error | over 5% |")
@@ -87,6 +92,31 @@ def main():
         p(f"Reference, epipolar (balanced) and error heat map (black 0, white 10% of the reference's p99):\n")
         p(f"![strip](performance/strip_{scene}_epipolar_balanced.png)\n")
         p(f"Brute force:\n\n![strip](performance/strip_{scene}_brute-force.png)\n")
+
+    cone = [r for r in runs if r["family"] == "cone"]
+    if cone:
+        p("## Seed 003: marching only inside the cone\n")
+        p("Seed 003's comparison on each scene: the same fixed number of samples per pixel over the whole ray "
+          "(naive), over the part inside the spot's cone and range (cone), and inside the cone without "
+          "shadow-map look-ups (no-shadow-sampling, the seed's low-end mode: no shadows at all). A "
+          "directional or point light has no cone, so there cone and naive march the same interval. Same "
+          "scene, size and settings for every row; time and error as above.\n")
+        for scene in scenes:
+            rows = [r for r in cone if r["scene"] == scene]
+            if not rows:
+                continue
+            brute = next((r for r in runs if r["scene"] == scene and r["method"] == "brute-force"
+                          and r["family"] == "profiles"), None)
+            p(f"### {scene}\n")
+            p("| mode | samples per pixel | median ms | speed-up over brute force | mean rel. error | over 5% |")
+            p("|---|---|---|---|---|---|")
+            for r in sorted(rows, key=lambda r: (r["label"].split()[0], r["coneSamples"])):
+                t, e = r["time"], r.get("error", {})
+                speed = brute["time"]["median"] / t["median"] if brute and t["median"] > 0 else None
+                p(f"| {r['label'].split()[0]} | {r['coneSamples']} | {fmt(t['median'])} | "
+                  f"{fmt(speed) + 'x' if speed else '-'} | {fmt(e.get('meanRelative'))} | "
+                  f"{fmt(100 * e['fractionOver5pct']) + '%' if e else '-'} |")
+            p("")
 
     p("## Scaling\n")
     for name, what in (("scaling_screen", "screen size"), ("scaling_shadow_map", "shadow-map size"),

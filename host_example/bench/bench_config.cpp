@@ -59,16 +59,22 @@ class ConfigReader {
                   "methods")) {
             const std::string name = text(m, "methods[]");
             const auto parsed = lightscatter::parseMethod(name);
-            if (!parsed) fail("methods: unknown method '" + name + "'");
+            if (!parsed) {
+                std::string known;
+                for (const auto& n : lightscatter::methodNames()) known += (known.empty() ? "" : ", ") + n;
+                fail("methods: unknown method '" + name + "' (known: " + known + ")");
+            }
             methods.push_back(*parsed);
         }
         const json sweeps = j.contains("sweeps") ? j["sweeps"] : json::object();
         if (!sweeps.is_object()) fail("sweeps must be an object");
         for (const auto& [key, value] : sweeps.items())
             if (key != "slices" && key != "samples" && key != "initialStep" &&
-                key != "shadowMapSize" && key != "size" && key != "minMaxTrees")
+                key != "shadowMapSize" && key != "size" && key != "minMaxTrees" &&
+                key != "coneSamples" && key != "coneModes")
                 fail("sweeps: unknown key '" + key +
-                     "' (known: slices, samples, initialStep, shadowMapSize, size, minMaxTrees)");
+                     "' (known: slices, samples, initialStep, shadowMapSize, size, minMaxTrees, "
+                     "coneSamples, coneModes)");
         for (const std::string& scene : c.scenes) expand(c, scene, methods, profiles, sweeps);
         return c;
     }
@@ -149,11 +155,12 @@ class ConfigReader {
         base.size = c.size;
         base.measureError = true;
         for (lightscatter::Method m : methods) {
-            if (m == lightscatter::Method::BruteForce) {
+            // Only epipolar has the seed's profiles; the other methods run once, balanced.
+            if (m != lightscatter::Method::Epipolar) {
                 BenchRun r = base;
                 r.method = m;
                 r.family = "profiles";
-                r.label = "brute-force";
+                r.label = lightscatter::methodName(m);
                 c.runs.push_back(r);
                 continue;
             }
@@ -216,6 +223,24 @@ class ConfigReader {
                                                            " shadowMap=" + std::to_string(n));
                 r.method = m;
                 r.shadowMapSize = n;
+                c.runs.push_back(r);
+            }
+        }
+        // Seed 003's comparison: cone-march with each sample count and mode (the cone-limited march,
+        // the naive full-ray march, the cone-limited march without shadow-map sampling).
+        const json counts = values("coneSamples"), modes = values("coneModes");
+        if (!modes.empty() && counts.empty()) fail("sweeps.coneModes needs sweeps.coneSamples");
+        for (const json& n : counts) {
+            const uint32_t samples = whole(n, "sweeps.coneSamples[]", 1, 4096);
+            for (const json& mode : modes.empty() ? json::array({"cone"}) : modes) {
+                const std::string m = mode.is_string() ? mode.get<std::string>() : mode.dump();
+                if (m != "cone" && m != "naive" && m != "no-shadow-sampling")
+                    fail("sweeps.coneModes[] = " + mode.dump() + ": must be cone, naive or no-shadow-sampling");
+                BenchRun r = balanced("cone", m + " " + std::to_string(samples));
+                r.method = lightscatter::Method::ConeMarch;
+                r.settings.coneSamples = samples;
+                r.settings.coneLimited = m != "naive";
+                r.settings.shadowSampling = m != "no-shadow-sampling";
                 c.runs.push_back(r);
             }
         }

@@ -13,7 +13,8 @@ namespace host::bench {
 struct BenchRun {
     std::string scene;       // path of SCENE.json
     std::string label;       // e.g. "epipolar balanced", "slices=512"
-    std::string family;      // "profiles", "slices", "samples", "initialStep", "shadowMapSize", "size", "trees"
+    std::string family;      // "profiles", "slices", "samples", "initialStep", "shadowMapSize", "size", "trees",
+                             // "cone" (cone-march's sample counts and modes)
     lightscatter::Method method = lightscatter::Method::Epipolar;
     lightscatter::Profile profile = lightscatter::Profile::Balanced;
     lightscatter::Settings settings;  // used as Custom when custom is true
