@@ -27,7 +27,11 @@ constexpr const char* kFields[] = {"slices",
                                    "fixupMaxSteps",
                                    "shadowDepthBias",
                                    "interpolation",
-                                   "shadowMapSize"};
+                                   "shadowMapSize",
+                                   "coneSamples",
+                                   "coneLimited",
+                                   "coneJitter",
+                                   "shadowSampling"};
 
 std::string knownFields() {
     std::string s;
@@ -73,6 +77,14 @@ class SettingsReader {
                     v, key,
                     {{"shadowed-fraction", lightscatter::Interpolation::ShadowedFraction},
                      {"inscattering", lightscatter::Interpolation::Inscattering}});
+            else if (key == "coneSamples")
+                s.coneSamples = whole(v, key);
+            else if (key == "coneLimited")
+                s.coneLimited = boolean(v, key);
+            else if (key == "coneJitter")
+                s.coneJitter = boolean(v, key);
+            else if (key == "shadowSampling")
+                s.shadowSampling = boolean(v, key);
             else if (key == "shadowMapSize") {
                 s.shadowMapSize = whole(v, key);
                 if (s.shadowMapSize < 1 || s.shadowMapSize > 16384)

@@ -8,9 +8,9 @@ namespace {
 
 const char* kCommon =
     "common options: --device NAME (or LS_DEVICE), --validation, --help (-h)\n"
-    "methods: epipolar (default), brute-force; profiles: high-quality, balanced (default),\n"
-    "high-performance, low-high-quality, low-balanced, low-high-performance, custom (with\n"
-    "--settings)\n";
+    "methods: auto (default), epipolar, brute-force, analytic, cone-march; profiles: high-quality,\n"
+    "balanced (default), high-performance, low-high-quality, low-balanced, low-high-performance,\n"
+    "custom (with --settings)\n";
 
 const char* kSettings =
     "  --settings FILE.json  every field of lightscatter::Settings by name (slices, "
