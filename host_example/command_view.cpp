@@ -2,7 +2,7 @@
 //   [--screenshot FILE.png] [--resize-at FRAME --resize-to WxH]
 //   [--animate-light] [--resizes N] [--memory-log FILE.csv]   (the soak test's options)
 // A GLFW window: WASD/QE move the camera, left-drag looks around, arrow keys move the light, M
-// switches method, P cycles profiles, T toggles the min/max trees, Esc quits. The title shows the
+// cycles the methods, P cycles profiles, T toggles the min/max trees, Esc quits. The title shows the
 // plugin's GPU time per pass. Resizing rebuilds the graphs.
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>
@@ -349,9 +349,17 @@ int runView(Args& args) {
             held = down;
             return edge;
         };
-        if (pressed(GLFW_KEY_M, keyM))
-            options.method = options.method == lightscatter::Method::Epipolar ? lightscatter::Method::BruteForce
-                                                                              : lightscatter::Method::Epipolar;
+        if (pressed(GLFW_KEY_M, keyM)) {
+            // analytic only where seed 001 applies (an unshadowed point or spot light).
+            std::vector<lightscatter::Method> methods{lightscatter::Method::Auto, lightscatter::Method::Epipolar,
+                                                      lightscatter::Method::BruteForce,
+                                                      lightscatter::Method::ConeMarch};
+            const LightDesc& l = renderer.scene().light;
+            if (l.type == LightKind::Point || (l.type == LightKind::Spot && l.shadowMapSize == 0))
+                methods.push_back(lightscatter::Method::Analytic);
+            auto it = std::find(methods.begin(), methods.end(), options.method);
+            options.method = it == methods.end() || it + 1 == methods.end() ? methods[0] : *(it + 1);
+        }
         if (pressed(GLFW_KEY_P, keyP)) {
             auto it = std::find(profiles.begin(), profiles.end(), options.profile);
             options.profile = it == profiles.end() || it + 1 == profiles.end() ? profiles[0] : *(it + 1);
@@ -367,6 +375,7 @@ int runView(Args& args) {
             if (titleClock > 0.5 || frameLimit) {
                 titleClock = 0.0;
                 std::string title = std::string("lightscatter - ") + lightscatter::methodName(options.method) +
+                                    (options.method == lightscatter::Method::Auto ? " (" + t.plugin.method + ")" : "") +
                                     " / " + lightscatter::profileName(options.profile) + " - " +
                                     std::to_string(t.plugin.totalMilliseconds).substr(0, 6) + " ms";
                 std::vector<lightscatter::PassTime> top = t.plugin.passes;

@@ -61,7 +61,7 @@ const std::array kCommands{
         "                  [--frames N] [--screenshot FILE.png] [--resize-at N --resize-to WxH]\n"
         "                  [--animate-light] [--resizes N] [--memory-log FILE.csv]\n",
         "Opens a window (needs a display; xvfb-run -a gives one). WASD/QE move, left-drag looks,\n"
-        "arrow keys move the light, M switches method, P cycles profiles, T toggles the min/max\n"
+        "arrow keys move the light, M cycles the methods, P cycles profiles, T toggles the min/max\n"
         "trees, Esc quits.\n"
         "  --size WxH          1 to 16384 each (default 960x540)\n"
         "  --frames N          close after N frames (1 to 100000)\n"
