@@ -1,7 +1,8 @@
 #include "frame_graph.h"
 
+#include "brute_force/brute_force_node.h"
 #include "epipolar/epipolar_nodes.h"
-#include "methods/method_nodes.h"
+#include "shared/shared_nodes.h"
 
 namespace lightscatter::detail {
 

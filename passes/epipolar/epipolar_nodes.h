@@ -3,7 +3,7 @@
 // textures of the seed's table with their formats (the stencil textures with the depth-stencil
 // format the device offers) and the stencil writes and tests as uses, so the runtime orders the
 // passes, derives their barriers and aliases what it can.
-#include "common/node_inputs.h"
+#include "shared/node_inputs.h"
 
 namespace ls {
 

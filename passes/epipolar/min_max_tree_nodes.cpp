@@ -1,4 +1,4 @@
-#include "common/pass_helpers.h"
+#include "shared/pass_helpers.h"
 #include "epipolar_nodes.h"
 #include "min_max_first_level_comp.h"
 #include "min_max_next_level_comp.h"

@@ -1,4 +1,4 @@
-#include "common/pass_helpers.h"
+#include "shared/pass_helpers.h"
 #include "epipolar_nodes.h"
 #include "slice_uv_frame_comp.h"
 

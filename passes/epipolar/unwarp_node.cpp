@@ -1,4 +1,4 @@
-#include "common/pass_helpers.h"
+#include "shared/pass_helpers.h"
 #include "epipolar_nodes.h"
 #include "unwarp_directional_frag.h"
 #include "unwarp_table_frag.h"

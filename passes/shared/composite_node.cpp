@@ -1,4 +1,4 @@
-#include "common/pass_helpers.h"
+#include "pass_helpers.h"
 #include "composite_rgba16f_comp.h"
 #include "composite_rgba16f_extinction_comp.h"
 #include "composite_rgba16f_extinction_out_comp.h"
@@ -7,7 +7,7 @@
 #include "composite_rgba32f_extinction_comp.h"
 #include "composite_rgba32f_extinction_out_comp.h"
 #include "composite_rgba32f_out_comp.h"
-#include "method_nodes.h"
+#include "shared_nodes.h"
 #include "rendergraph/vk_error.h"
 
 namespace ls {

@@ -1,5 +1,6 @@
-#include "common/pass_helpers.h"
-#include "method_nodes.h"
+#include "brute_force_node.h"
+
+#include "shared/pass_helpers.h"
 
 namespace ls {
 

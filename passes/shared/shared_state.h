@@ -12,7 +12,7 @@
 
 namespace ls {
 
-// Specialisation constants of shaders/scattering/frame.glsl, and the options that choose a
+// Specialisation constants of shaders/shared/frame.glsl, and the options that choose a
 // shader variant (min/max trees).
 struct ScatterSpec {
     LightKind light = LightKind::Directional;

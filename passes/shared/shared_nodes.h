@@ -1,7 +1,8 @@
 #pragma once
-// Nodes shared by every method, and the per-pixel methods. Each function adds one pass to the
-// graph and returns the handles it produced.
-#include "common/node_inputs.h"
+// Nodes every method shares: the frame constants, camera-space z, the point-light table, the
+// closed form for lights without a shadow map (whatever the method), and the composite. Each
+// function adds one pass to the graph and returns the handles it produced.
+#include "node_inputs.h"
 
 namespace ls {
 
@@ -10,9 +11,6 @@ rg::BufferRef addUploadConstants(rg::RenderGraph& graph, const Shared& shared);
 
 // Camera-space z of every pixel's ray end (R32_SFLOAT, screen).
 rg::ImageRef addCameraZ(rg::RenderGraph& graph, const NodeInputs& in);
-
-// Brute-force per-pixel ray marching through the shadow map: Lin (R16G16B16A16_SFLOAT, screen).
-rg::ImageRef addBruteForce(rg::RenderGraph& graph, const NodeInputs& in, rg::ImageRef cameraZ);
 
 // Closed-form Lin for a light without a shadow map.
 rg::ImageRef addUnshadowed(rg::RenderGraph& graph, const NodeInputs& in, rg::ImageRef cameraZ);

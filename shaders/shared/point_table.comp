@@ -1,6 +1,6 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// The point-light table of seed 000 (layout in scattering/lut.glsl), computed on the GPU when the
+// The point-light table of seed 000 (layout in lut.glsl), computed on the GPU when the
 // medium or the light's radius changes. One thread per row walks from s = +inf down to s = -inf:
 //   T(h, s_a) = exp(-betaT (s_b - s_a)) T(h, s_b) + integral over [s_a, s_b],
 // every factor at most 1, so nothing overflows however long the ray; each column interval is

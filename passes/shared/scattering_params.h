@@ -58,7 +58,7 @@ struct EpipolarSettings {
     bool interpolateFraction = true;  // samples carry Lin / unshadowed Lin instead of Lin
 };
 
-// The look-up table's shape and scale (passes/lut).
+// The look-up table's shape and scale (shaders/shared/lut.glsl).
 // Rows are uniform in log(hEff / r0) from 0 (a ray through the light) to logRange, where
 // extinction has made the table negligible (or, without extinction, far beyond where it changes).
 struct TableLayout {

@@ -1,4 +1,4 @@
-#include "method_nodes.h"
+#include "shared_nodes.h"
 
 namespace ls {
 

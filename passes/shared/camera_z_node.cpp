@@ -1,6 +1,6 @@
 #include "camera_z_comp.h"
-#include "common/pass_helpers.h"
-#include "method_nodes.h"
+#include "pass_helpers.h"
+#include "shared_nodes.h"
 
 namespace ls {
 

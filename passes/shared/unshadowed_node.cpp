@@ -1,5 +1,5 @@
-#include "common/pass_helpers.h"
-#include "method_nodes.h"
+#include "pass_helpers.h"
+#include "shared_nodes.h"
 
 namespace ls {
 

@@ -1,4 +1,4 @@
-// Per-frame constants (mirrors passes/common/frame_constants.h, std140) and the specialisation
+// Per-frame constants (mirrors passes/shared/frame_constants.h, std140) and the specialisation
 // constants that select the light, the phase function and the options: the plugin compiles one
 // pipeline per combination instead of branching per pixel.
 #ifndef LS_FRAME_GLSL

@@ -1,5 +1,5 @@
 #pragma once
-// The per-frame constants every scattering shader reads (shaders/scattering/frame.glsl, std140).
+// The per-frame constants every scattering shader reads (shaders/shared/frame.glsl, std140).
 #include <glm/glm.hpp>
 
 namespace ls {
