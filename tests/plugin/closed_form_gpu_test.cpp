@@ -4,8 +4,8 @@
 #include <cstdlib>
 
 #include "plugin_fixture.h"
-#include "reference/closed_forms.h"
-#include "reference/inscatter_integral.h"
+#include "float64_model/closed_forms.h"
+#include "float64_model/inscatter_integral.h"
 
 using namespace plugin_test;
 using lightscatter::Method;

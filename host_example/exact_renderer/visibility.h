@@ -6,9 +6,9 @@
 #include <glm/vec3.hpp>
 
 #include "bvh.h"
-#include "reference/interval.h"
-#include "reference/light.h"
-#include "reference/ray.h"
+#include "float64_model/interval.h"
+#include "float64_model/light.h"
+#include "float64_model/ray.h"
 
 namespace host::reference {
 

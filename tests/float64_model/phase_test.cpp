@@ -3,9 +3,9 @@
 
 #include <gtest/gtest.h>
 
-#include "reference/gauss_kronrod.h"
-#include "reference/medium.h"
-#include "reference/ray_geometry.h"
+#include "float64_model/gauss_kronrod.h"
+#include "float64_model/medium.h"
+#include "float64_model/ray_geometry.h"
 #include "test_util.h"
 
 namespace ls::ref {

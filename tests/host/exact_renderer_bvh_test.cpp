@@ -11,7 +11,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "reference/bvh.h"
+#include "exact_renderer/bvh.h"
 
 namespace {
 

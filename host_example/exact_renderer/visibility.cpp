@@ -6,7 +6,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "reference/ray_geometry.h"
+#include "float64_model/ray_geometry.h"
 
 namespace host::reference {
 

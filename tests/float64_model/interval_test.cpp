@@ -1,4 +1,4 @@
-#include "reference/interval.h"
+#include "float64_model/interval.h"
 
 #include <cmath>
 #include <limits>
@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "reference/ray_geometry.h"
+#include "float64_model/ray_geometry.h"
 
 namespace ls::ref {
 namespace {

@@ -15,10 +15,10 @@
 
 #include "bvh.h"
 #include "camera_rays.h"
-#include "reference/interval.h"
-#include "reference/light.h"
-#include "reference/medium.h"
-#include "reference/ray.h"
+#include "float64_model/interval.h"
+#include "float64_model/light.h"
+#include "float64_model/medium.h"
+#include "float64_model/ray.h"
 #include "scene/scene.h"
 
 namespace host::reference {

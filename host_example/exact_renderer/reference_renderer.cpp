@@ -9,8 +9,8 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "reference/closed_forms.h"
-#include "reference/inscatter_integral.h"
+#include "float64_model/closed_forms.h"
+#include "float64_model/inscatter_integral.h"
 #include "visibility.h"
 
 namespace host::reference {

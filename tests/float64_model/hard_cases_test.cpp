@@ -4,9 +4,9 @@
 
 #include <gtest/gtest.h>
 
-#include "reference/closed_forms.h"
-#include "reference/inscatter_integral.h"
-#include "reference/point_table.h"
+#include "float64_model/closed_forms.h"
+#include "float64_model/inscatter_integral.h"
+#include "float64_model/point_table.h"
 #include "test_util.h"
 
 namespace ls::ref {

@@ -1,12 +1,12 @@
-#include "reference/gauss_kronrod.h"
+#include "float64_model/gauss_kronrod.h"
 
 #include <cmath>
 #include <vector>
 
 #include <gtest/gtest.h>
 
-#include "reference/medium.h"
-#include "reference/ray_geometry.h"
+#include "float64_model/medium.h"
+#include "float64_model/ray_geometry.h"
 #include "test_util.h"
 
 namespace ls::ref {

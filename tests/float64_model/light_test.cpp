@@ -1,4 +1,4 @@
-#include "reference/light.h"
+#include "float64_model/light.h"
 
 #include <cmath>
 

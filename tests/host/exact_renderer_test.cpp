@@ -16,10 +16,10 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "reference/closed_forms.h"
-#include "reference/inscatter_integral.h"
-#include "reference/ray_geometry.h"
-#include "reference/reference_renderer.h"
+#include "float64_model/closed_forms.h"
+#include "float64_model/inscatter_integral.h"
+#include "float64_model/ray_geometry.h"
+#include "exact_renderer/reference_renderer.h"
 
 namespace {
 
