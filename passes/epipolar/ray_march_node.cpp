@@ -3,25 +3,25 @@
 
 namespace ls {
 
-void addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
-                         EpipolarTextures& t) {
-    t.marched = g.createImage("in-scattering (ray-marched samples)",
-                              rg::ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT, s.samples, s.slices));
-    const bool trees = t.treeOdd.valid();
+rg::ImageRef addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
+                                 const EpipolarRayMarchInputs& i) {
+    rg::ImageRef marched = g.createImage(
+        "in-scattering (ray-marched samples)",
+        rg::ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT, s.samples, s.slices));
+    const bool trees = i.trees.odd.valid();
     auto pass = g.addPass(trees ? "ray march with min/max trees" : "ray march", rg::PassType::Graphics);
     pass.uniformBuffer(in.constants);
-    pass.sampled(t.coordinates);
-    pass.sampled(t.epipolarZ);
-    pass.sampled(t.sliceUvFrame);
+    pass.sampled(i.coordinates);
+    pass.sampled(i.epipolarZ);
+    pass.sampled(i.sliceUvFrame);
     if (trees) {
-        pass.sampled(t.treeOdd);
-        pass.sampled(t.treeEven);
+        pass.sampled(i.trees.odd);
+        pass.sampled(i.trees.even);
     }
     declareMarchInputs(pass, in);
-    pass.stencilTest(t.epipolarStencil);
-    t.marched = pass.colorAttachment(t.marched, rg::LoadOp::Clear);
-    const EpipolarTextures tex = t;
-    pass.execute([in, tex, trees](rg::PassContext& ctx) {
+    pass.stencilTest(i.epipolarStencil);
+    marched = pass.colorAttachment(marched, rg::LoadOp::Clear);
+    pass.execute([in, i, trees](rg::PassContext& ctx) {
         ScatterSpec spec = in.shared->spec;
         spec.minMaxTrees = trees;
         std::vector<rg::Binding> b{uniformBinding(0), sampledBinding(1), sampledBinding(2),
@@ -41,17 +41,18 @@ void addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in, const Epipola
         vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 2);
         const auto& sm = in.shared->samplers;
         auto set = frameSet(ctx, in.constants);
-        set.sampled(1, ctx.view(tex.coordinates), ctx.layout(tex.coordinates), sm.nearest())
-            .sampled(2, ctx.view(tex.epipolarZ), ctx.layout(tex.epipolarZ), sm.nearest())
-            .sampled(3, ctx.view(tex.sliceUvFrame), ctx.layout(tex.sliceUvFrame), sm.nearest());
+        set.sampled(1, ctx.view(i.coordinates), ctx.layout(i.coordinates), sm.nearest())
+            .sampled(2, ctx.view(i.epipolarZ), ctx.layout(i.epipolarZ), sm.nearest())
+            .sampled(3, ctx.view(i.sliceUvFrame), ctx.layout(i.sliceUvFrame), sm.nearest());
         if (trees) {
-            set.sampled(4, ctx.view(tex.treeOdd), ctx.layout(tex.treeOdd), sm.nearest())
-                .sampled(5, ctx.view(tex.treeEven), ctx.layout(tex.treeEven), sm.nearest());
+            set.sampled(4, ctx.view(i.trees.odd), ctx.layout(i.trees.odd), sm.nearest())
+                .sampled(5, ctx.view(i.trees.even), ctx.layout(i.trees.even), sm.nearest());
         }
         pushMarchInputs(set, ctx, in);
         set.push(ctx.device(), ctx.cmd(), p);
         vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
     });
+    return marched;
 }
 
 }  // namespace ls

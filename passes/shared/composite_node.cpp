@@ -29,8 +29,8 @@ rg::ShaderCode compositeShader(VkFormat color, bool lin, bool out) {
 
 }  // namespace
 
-rg::ImageRef addComposite(rg::RenderGraph& graph, const NodeInputs& in, rg::ImageRef color,
-                          rg::ImageRef cameraZ, rg::ImageRef lin, rg::ImageRef inscatterOut) {
+CompositeOutputs addComposite(rg::RenderGraph& graph, const NodeInputs& in, rg::ImageRef color,
+                              rg::ImageRef cameraZ, rg::ImageRef lin, rg::ImageRef inscatterOut) {
     auto pass = graph.addPass("composite", rg::PassType::Compute);
     pass.uniformBuffer(in.constants);
     pass.sampled(cameraZ);
@@ -57,7 +57,7 @@ rg::ImageRef addComposite(rg::RenderGraph& graph, const NodeInputs& in, rg::Imag
         const VkExtent2D e = ctx.extent(out);
         vkCmdDispatch(ctx.cmd(), groupCount(e.width, 8), groupCount(e.height, 8), 1);
     });
-    return out;
+    return {out, linOut};
 }
 
 }  // namespace ls

@@ -1,5 +1,7 @@
 #pragma once
-// The handles every scattering node works from, prepared by the plugin for one frame graph.
+// What every scattering node may read, prepared by the plugin for one frame graph: the shared
+// state, the frame's constants and the engine's images. No node writes any of it; the textures the
+// nodes make are returned by the nodes that write them and passed to the nodes that read them.
 #include <vulkan/vulkan.h>
 
 #include "rendergraph/render_graph.h"
