@@ -1,9 +1,5 @@
 #include "pass_helpers.h"
 
-#include "brute_force_directional_color_frag.h"
-#include "brute_force_directional_frag.h"
-#include "brute_force_table_color_frag.h"
-#include "brute_force_table_frag.h"
 #include "fullscreen_vert.h"
 #include "ray_march_directional_color_frag.h"
 #include "ray_march_directional_color_trees_frag.h"
@@ -69,11 +65,6 @@ rg::ShaderCode marchShader(MarchShader which, const ScatterSpec& spec) {
                                     : rg::spirv(ls_spirv::ray_march_table_frag);
             return color ? rg::spirv(ls_spirv::ray_march_directional_color_frag)
                          : rg::spirv(ls_spirv::ray_march_directional_frag);
-        case MarchShader::BruteForce:
-            if (table) return color ? rg::spirv(ls_spirv::brute_force_table_color_frag)
-                                    : rg::spirv(ls_spirv::brute_force_table_frag);
-            return color ? rg::spirv(ls_spirv::brute_force_directional_color_frag)
-                         : rg::spirv(ls_spirv::brute_force_directional_frag);
         case MarchShader::Unshadowed:
             return table ? rg::spirv(ls_spirv::unshadowed_table_frag)
                          : rg::spirv(ls_spirv::unshadowed_directional_frag);

@@ -29,7 +29,7 @@ std::string pipelineKey(const std::string& name, const rg::PassContext& ctx,
                         const std::string& variant = {});
 
 // Shader variants of the marching shaders (see shaders/CMakeLists.txt).
-enum class MarchShader { RayMarch, BruteForce, Unshadowed };
+enum class MarchShader { RayMarch, Unshadowed };
 rg::ShaderCode marchShader(MarchShader which, const ScatterSpec& spec);
 
 }  // namespace ls

@@ -1,7 +1,8 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Brute force (seed 000's starting point): every pixel marches its own ray through every shadow-map
-// texel it crosses. The on-GPU reference the other methods are compared with.
+// Seed 000's starting point: a pixel marches its own ray through every shadow-map texel it
+// crosses. Brute force runs it on every pixel (the on-GPU reference the other methods are compared
+// with); the epipolar fix-up on the pixels its unwarp could not serve, with an optional step cap.
 #include "camera.glsl"
 layout(binding = 1) uniform sampler2D cameraZ;
 layout(binding = 6) uniform sampler2D shadowMap;
@@ -12,7 +13,7 @@ layout(binding = 7) uniform sampler2D pointTable;
 layout(binding = 8) uniform sampler2D lightColorMap;
 #endif
 #include "march.glsl"
-layout(push_constant) uniform Push { uint maxSteps; } pc;
+layout(push_constant) uniform Push { uint maxSteps; } pc;  // 0: one step per texel
 layout(location = 0) out vec4 outInscatter;
 
 void main() {
