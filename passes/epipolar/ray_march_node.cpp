@@ -1,7 +1,33 @@
-#include "shared/pass_helpers.h"
 #include "epipolar_nodes.h"
+#include "ray_march_directional_color_frag.h"
+#include "ray_march_directional_color_trees_frag.h"
+#include "ray_march_directional_frag.h"
+#include "ray_march_directional_trees_frag.h"
+#include "ray_march_table_color_frag.h"
+#include "ray_march_table_color_trees_frag.h"
+#include "ray_march_table_frag.h"
+#include "ray_march_table_trees_frag.h"
+#include "shared/pass_helpers.h"
 
 namespace ls {
+namespace {
+
+rg::ShaderCode rayMarchShader(const ScatterSpec& spec) {
+    const bool table = spec.light != LightKind::Directional;
+    const bool color = spec.lightColor;
+    if (spec.minMaxTrees) {
+        if (table) return color ? rg::spirv(ls_spirv::ray_march_table_color_trees_frag)
+                                : rg::spirv(ls_spirv::ray_march_table_trees_frag);
+        return color ? rg::spirv(ls_spirv::ray_march_directional_color_trees_frag)
+                     : rg::spirv(ls_spirv::ray_march_directional_trees_frag);
+    }
+    if (table) return color ? rg::spirv(ls_spirv::ray_march_table_color_frag)
+                            : rg::spirv(ls_spirv::ray_march_table_frag);
+    return color ? rg::spirv(ls_spirv::ray_march_directional_color_frag)
+                 : rg::spirv(ls_spirv::ray_march_directional_frag);
+}
+
+}  // namespace
 
 rg::ImageRef addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
                                  const EpipolarRayMarchInputs& i) {
@@ -31,7 +57,7 @@ rg::ImageRef addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in, const
             b.push_back(sampledBinding(5));
         }
         appendMarchBindings(b, in);
-        auto desc = fullscreenPipeline(marchShader(MarchShader::RayMarch, spec), ctx, b);
+        auto desc = fullscreenPipeline(rayMarchShader(spec), ctx, b);
         desc.specialization = spec.constants();
         desc.stencilTest = true;
         desc.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP,

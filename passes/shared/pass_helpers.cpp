@@ -1,16 +1,6 @@
 #include "pass_helpers.h"
 
 #include "fullscreen_vert.h"
-#include "ray_march_directional_color_frag.h"
-#include "ray_march_directional_color_trees_frag.h"
-#include "ray_march_directional_frag.h"
-#include "ray_march_directional_trees_frag.h"
-#include "ray_march_table_color_frag.h"
-#include "ray_march_table_color_trees_frag.h"
-#include "ray_march_table_frag.h"
-#include "ray_march_table_trees_frag.h"
-#include "unshadowed_directional_frag.h"
-#include "unshadowed_table_frag.h"
 
 namespace ls {
 
@@ -48,28 +38,6 @@ std::string pipelineKey(const std::string& name, const rg::PassContext& ctx,
     key += "/d" + std::to_string(static_cast<int>(f.depth)) + "/s" +
            std::to_string(static_cast<int>(f.stencil));
     return key;
-}
-
-rg::ShaderCode marchShader(MarchShader which, const ScatterSpec& spec) {
-    const bool table = spec.light != LightKind::Directional;
-    const bool color = spec.lightColor;
-    switch (which) {
-        case MarchShader::RayMarch:
-            if (spec.minMaxTrees) {
-                if (table) return color ? rg::spirv(ls_spirv::ray_march_table_color_trees_frag)
-                                        : rg::spirv(ls_spirv::ray_march_table_trees_frag);
-                return color ? rg::spirv(ls_spirv::ray_march_directional_color_trees_frag)
-                             : rg::spirv(ls_spirv::ray_march_directional_trees_frag);
-            }
-            if (table) return color ? rg::spirv(ls_spirv::ray_march_table_color_frag)
-                                    : rg::spirv(ls_spirv::ray_march_table_frag);
-            return color ? rg::spirv(ls_spirv::ray_march_directional_color_frag)
-                         : rg::spirv(ls_spirv::ray_march_directional_frag);
-        case MarchShader::Unshadowed:
-            return table ? rg::spirv(ls_spirv::unshadowed_table_frag)
-                         : rg::spirv(ls_spirv::unshadowed_directional_frag);
-    }
-    return {};
 }
 
 }  // namespace ls

@@ -1,6 +1,8 @@
 #pragma once
 // Small helpers the node builders share: descriptor sets that start with the frame constants,
-// full-screen pipelines, workgroup counts, and the shader variant for a light.
+// full-screen pipelines, workgroup counts, and the light's images. Each node picks its own shader
+// variant (shaders/CMakeLists.txt): the light's kind and options choose among the variants a
+// method's shader is built in.
 #include <string>
 #include <vector>
 
@@ -27,10 +29,6 @@ rg::GraphicsPipelineDesc fullscreenPipeline(rg::ShaderCode fragment, const rg::P
 // Key for a pipeline: its name, its specialisation and the pass's target formats.
 std::string pipelineKey(const std::string& name, const rg::PassContext& ctx,
                         const std::string& variant = {});
-
-// Shader variants of the marching shaders (see shaders/CMakeLists.txt).
-enum class MarchShader { RayMarch, Unshadowed };
-rg::ShaderCode marchShader(MarchShader which, const ScatterSpec& spec);
 
 }  // namespace ls
 

@@ -1,5 +1,7 @@
 #include "pass_helpers.h"
 #include "shared_nodes.h"
+#include "unshadowed_directional_frag.h"
+#include "unshadowed_table_frag.h"
 
 namespace ls {
 
@@ -15,7 +17,10 @@ rg::ImageRef addUnshadowed(rg::RenderGraph& graph, const NodeInputs& in, rg::Ima
         const ScatterSpec& spec = in.shared->spec;
         std::vector<rg::Binding> b{uniformBinding(0), sampledBinding(1)};
         appendMarchBindings(b, in);
-        auto desc = fullscreenPipeline(marchShader(MarchShader::Unshadowed, spec), ctx, b);
+        auto desc = fullscreenPipeline(spec.light != LightKind::Directional
+                                           ? rg::spirv(ls_spirv::unshadowed_table_frag)
+                                           : rg::spirv(ls_spirv::unshadowed_directional_frag),
+                                       ctx, b);
         desc.specialization = spec.constants();
         const auto& p = in.shared->pipelines.graphics(
             pipelineKey("unshadowed in-scattering", ctx, spec.key()), desc);
