@@ -13,6 +13,13 @@ vec3 rayDirection(vec2 ndc) {
 vec2 pixelToNdc(vec2 pixelCenter) { return pixelCenter * frame.screenSize.zw * 2.0 - 1.0; }
 vec2 ndcToPixel(vec2 ndc) { return (ndc * 0.5 + 0.5) * frame.screenSize.xy; }
 
+// Unit direction of the ray through a pixel's centre.
+vec3 pixelRayDirection(ivec2 pixel) { return rayDirection(pixelToNdc(vec2(pixel) + 0.5)); }
+
+// S: the distance along unit ray v to its end, whose camera-space z is z (the camera-space z
+// texture's value). The floor keeps rays at right angles to the view axis finite.
+float rayLength(float z, vec3 v) { return z / max(dot(v, frame.cameraForward.xyz), 1e-4); }
+
 bool isSkyDepth(float d) {
     bool reversed = frame.depthInfo.x > 0.5;
     return isnan(d) || (reversed ? d <= 0.0 : d >= 1.0);

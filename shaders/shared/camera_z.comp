@@ -10,6 +10,6 @@ void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(p, imageSize(cameraZ)))) return;
     float depth = texelFetch(depthBuffer, p, 0).r;
-    vec3 v = rayDirection(pixelToNdc(vec2(p) + 0.5));
+    vec3 v = pixelRayDirection(p);
     imageStore(cameraZ, p, vec4(rayEndCameraZ(depth, dot(v, frame.cameraForward.xyz))));
 }

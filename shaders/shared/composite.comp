@@ -20,8 +20,8 @@ layout(binding = 4, rgba32f) uniform writeonly image2D inscatterOut;
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(p, imageSize(color)))) return;
-    vec3 v = rayDirection(pixelToNdc(vec2(p) + 0.5));
-    float S = texelFetch(cameraZ, p, 0).r / max(dot(v, frame.cameraForward.xyz), 1e-4);
+    vec3 v = pixelRayDirection(p);
+    float S = rayLength(texelFetch(cameraZ, p, 0).r, v);
 #if LS_WITH_LIN
     vec3 lin = texelFetch(inscatter, p, 0).rgb;
 #else

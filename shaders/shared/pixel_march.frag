@@ -18,7 +18,7 @@ layout(location = 0) out vec4 outInscatter;
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
-    vec3 v = rayDirection(pixelToNdc(vec2(pixel) + 0.5));
-    float S = texelFetch(cameraZ, pixel, 0).r / max(dot(v, frame.cameraForward.xyz), 1e-4);
+    vec3 v = pixelRayDirection(pixel);
+    float S = rayLength(texelFetch(cameraZ, pixel, 0).r, v);
     outInscatter = vec4(marchRay(frame.cameraPos.xyz, v, S, pc.maxSteps), 1.0);
 }
