@@ -4,6 +4,14 @@
 #include "unshadowed_table_frag.h"
 
 namespace ls {
+namespace {
+
+rg::ShaderCode unshadowedShader(const ScatterSpec& spec) {
+    return spec.light != LightKind::Directional ? rg::spirv(ls_spirv::unshadowed_table_frag)
+                                                : rg::spirv(ls_spirv::unshadowed_directional_frag);
+}
+
+}  // namespace
 
 rg::ImageRef addUnshadowed(rg::RenderGraph& graph, const NodeInputs& in, rg::ImageRef cameraZ) {
     rg::ImageRef lin = graph.createImage("in-scattering (screen)",
@@ -17,10 +25,7 @@ rg::ImageRef addUnshadowed(rg::RenderGraph& graph, const NodeInputs& in, rg::Ima
         const ScatterSpec& spec = in.shared->spec;
         std::vector<rg::Binding> b{uniformBinding(0), sampledBinding(1)};
         appendMarchBindings(b, in);
-        auto desc = fullscreenPipeline(spec.light != LightKind::Directional
-                                           ? rg::spirv(ls_spirv::unshadowed_table_frag)
-                                           : rg::spirv(ls_spirv::unshadowed_directional_frag),
-                                       ctx, b);
+        auto desc = fullscreenPipeline(unshadowedShader(spec), ctx, b);
         desc.specialization = spec.constants();
         const auto& p = in.shared->pipelines.graphics(
             pipelineKey("unshadowed in-scattering", ctx, spec.key()), desc);
