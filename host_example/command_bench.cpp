@@ -20,7 +20,7 @@
 #include "commands.h"
 #include "engine_renderer.h"
 #include "image_io.h"
-#include "reference/reference_renderer.h"
+#include "exact_renderer/reference_renderer.h"
 #include "scene/input_file.h"
 #include "temp_files.h"
 

@@ -1,9 +1,10 @@
 #include "frame_graph.h"
 
 #include "analytic/analytic_node.h"
+#include "brute_force/brute_force_node.h"
 #include "cone_march/cone_march_node.h"
 #include "epipolar/epipolar_nodes.h"
-#include "methods/method_nodes.h"
+#include "shared/shared_nodes.h"
 
 namespace lightscatter::detail {
 

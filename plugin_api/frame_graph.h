@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "common/node_inputs.h"
+#include "shared/node_inputs.h"
 #include "lightscatter.h"
 #include "rendergraph/render_graph.h"
 

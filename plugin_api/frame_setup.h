@@ -3,7 +3,7 @@
 // broken is an InvalidInput naming the field; nothing is recorded before this passes.
 #include <vulkan/vulkan.h>
 
-#include "common/scattering_params.h"
+#include "shared/scattering_params.h"
 #include "lightscatter.h"
 
 namespace lightscatter::detail {

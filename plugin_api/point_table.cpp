@@ -1,6 +1,6 @@
 #include "point_table.h"
 
-#include "methods/method_nodes.h"
+#include "shared/shared_nodes.h"
 #include "rendergraph/compile.h"
 #include "rendergraph/device_caps_vulkan.h"
 #include "rendergraph/executor.h"

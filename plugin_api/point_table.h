@@ -4,7 +4,7 @@
 #include <array>
 #include <memory>
 
-#include "common/shared_state.h"
+#include "shared/shared_state.h"
 #include "rendergraph/device.h"
 #include "rendergraph/owned_image.h"
 

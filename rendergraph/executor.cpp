@@ -516,16 +516,19 @@ const std::string& PassContext::passName() const {
 
 VkImage PassContext::image(ImageRef ref) const { return executor_.image(ref.id); }
 
+const PassResourceState& PassContext::declared(ImageRef ref, const char* asking) const {
+    for (const auto& s : executor_.compiled_.passes[position_].states)
+        if (s.resource == ref.id) return s;
+    throw VulkanError("pass '" + passName() + "' asks for " + asking + " of '" +
+                      executor_.graph_.resource(ref.id).name + "', which it did not declare");
+}
+
 VkImageView PassContext::view(ImageRef ref, VkImageAspectFlags aspect) const {
+    declared(ref, "a view");
     return executor_.view(ref.id, aspect);
 }
 
-VkImageLayout PassContext::layout(ImageRef ref) const {
-    for (const auto& s : executor_.compiled_.passes[position_].states)
-        if (s.resource == ref.id) return s.layout;
-    throw VulkanError("pass '" + passName() + "' asks for the layout of '" +
-                      executor_.graph_.resource(ref.id).name + "', which it did not declare");
-}
+VkImageLayout PassContext::layout(ImageRef ref) const { return declared(ref, "the layout").layout; }
 
 VkExtent2D PassContext::extent(ImageRef ref) const {
     return executor_.compiled_.resources.at(ref.id).extent;

@@ -12,6 +12,7 @@
 namespace rg {
 
 class GraphExecutor;
+struct PassResourceState;
 
 struct RenderingFormats {
     std::vector<VkFormat> colors;
@@ -30,7 +31,9 @@ public:
 
     VkImage image(ImageRef ref) const;
     // Color images: the whole image. Depth-stencil images: both aspects (attachments); pass
-    // VK_IMAGE_ASPECT_DEPTH_BIT or _STENCIL_BIT for a view that samples one aspect.
+    // VK_IMAGE_ASPECT_DEPTH_BIT or _STENCIL_BIT for a view that samples one aspect. view() and
+    // layout() throw VulkanError for an image the pass did not declare: its barriers were derived
+    // from the declarations, so the image may be in any layout, or still being written.
     VkImageView view(ImageRef ref, VkImageAspectFlags aspect = 0) const;
     VkImageLayout layout(ImageRef ref) const;  // the layout the image is in during this pass
     VkExtent2D extent(ImageRef ref) const;
@@ -42,6 +45,8 @@ public:
     const RenderingFormats& renderingFormats() const;  // for pipeline creation
 
 private:
+    const PassResourceState& declared(ImageRef ref, const char* asking) const;
+
     GraphExecutor& executor_;
     uint32_t position_;
     VkCommandBuffer cmd_;

@@ -1,7 +1,7 @@
 #include "analytic_node.h"
 
 #include "analytic_frag.h"
-#include "common/pass_helpers.h"
+#include "shared/pass_helpers.h"
 
 namespace ls {
 

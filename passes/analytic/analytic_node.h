@@ -1,6 +1,6 @@
 #pragma once
 // Seed 001 as a node: Lin of an unshadowed point or spot light in closed form, per pixel.
-#include "common/node_inputs.h"
+#include "shared/node_inputs.h"
 
 namespace ls {
 

@@ -1,6 +1,6 @@
 #include "cone_march_node.h"
 
-#include "common/pass_helpers.h"
+#include "shared/pass_helpers.h"
 #include "cone_march_color_frag.h"
 #include "cone_march_plain_frag.h"
 #include "cone_march_shadowed_color_frag.h"

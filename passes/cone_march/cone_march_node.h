@@ -1,7 +1,7 @@
 #pragma once
 // Seed 003 as a node: a fixed number of samples per pixel along the part of its ray the light can
 // reach (the spot's cone within its range), or along the whole ray (the seed's naive baseline).
-#include "common/node_inputs.h"
+#include "shared/node_inputs.h"
 
 namespace ls {
 

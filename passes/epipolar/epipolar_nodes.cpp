@@ -2,22 +2,23 @@
 
 namespace ls {
 
-EpipolarTextures addEpipolarNodes(rg::RenderGraph& g, const NodeInputs& in,
-                                  const EpipolarSizes& sizes, const EpipolarOptions& options,
-                                  rg::ImageRef cameraZ) {
-    EpipolarTextures t;
-    t.cameraZ = cameraZ;
-    addSliceEndPoints(g, in, sizes, t);
-    addEpipolarCoordinates(g, in, sizes, t);
-    addRefineSamples(g, in, sizes, t);
-    addSliceUvFrame(g, in, sizes, t);
-    if (options.minMaxTrees) addMinMaxTrees(g, in, sizes, t);
-    addMarkRayMarchSamples(g, in, t);
-    addEpipolarRayMarch(g, in, sizes, t);
-    addInterpolate(g, in, sizes, t);
-    addUnwarp(g, in, options.fixup, t);
-    if (options.fixup) addFixup(g, in, t);
-    return t;
+EpipolarResult addEpipolarNodes(rg::RenderGraph& g, const NodeInputs& in,
+                                const EpipolarSizes& sizes, const EpipolarOptions& options,
+                                rg::ImageRef cameraZ) {
+    const rg::ImageRef endPoints = addSliceEndPoints(g, in, sizes);
+    const EpipolarCoordinates samples = addEpipolarCoordinates(g, in, sizes, endPoints, cameraZ);
+    const rg::ImageRef sources = addRefineSamples(g, in, sizes, samples.epipolarZ);
+    const rg::ImageRef uvFrame = addSliceUvFrame(g, in, sizes, endPoints);
+    const MinMaxTrees trees =
+        options.minMaxTrees ? addMinMaxTrees(g, in, sizes, uvFrame) : MinMaxTrees{};
+    const rg::ImageRef marking = addMarkRayMarchSamples(g, in, sources, samples.epipolarStencil);
+    const rg::ImageRef marched = addEpipolarRayMarch(
+        g, in, sizes, {samples.coordinates, samples.epipolarZ, uvFrame, marking, trees});
+    const rg::ImageRef interpolated = addInterpolate(g, in, sizes, sources, marched, marking);
+    const UnwarpOutputs screen =
+        addUnwarp(g, in, {endPoints, samples.epipolarZ, interpolated, cameraZ}, options.fixup);
+    if (!options.fixup) return {screen.screenInscatter};
+    return {addFixup(g, in, cameraZ, screen.cameraStencil, screen.screenInscatter)};
 }
 
 }  // namespace ls

@@ -1,9 +1,11 @@
 #pragma once
-// Seed 000's method as render-graph nodes, one function per node. Each declares the auxiliary
-// textures of the seed's table with their formats (the stencil textures with the depth-stencil
-// format the device offers) and the stencil writes and tests as uses, so the runtime orders the
-// passes, derives their barriers and aliases what it can.
-#include "common/node_inputs.h"
+// Seed 000's method as render-graph nodes, one function per node. Each takes the handles it reads
+// and returns the handles it writes, so a signature shows the node's place in the graph. Each
+// declares the auxiliary textures of the seed's table with their formats (the stencil textures
+// with the depth-stencil format the device offers) and the stencil writes and tests as uses, so
+// the runtime orders the passes, derives their barriers and aliases what it can. Every node also
+// reads the frame's constants and, where it says so, the light's images from NodeInputs.
+#include "shared/node_inputs.h"
 
 namespace ls {
 
@@ -13,47 +15,82 @@ struct EpipolarSizes {
     uint32_t shadowMapSize = 2048;
 };
 
-// The textures of one epipolar frame, as the nodes pass them along.
-struct EpipolarTextures {
-    rg::ImageRef cameraZ;              // R32F, screen
-    rg::ImageRef sliceEndPoints;       // RGBA32F, slices x 1
-    rg::ImageRef coordinates;          // RG32F, samples x slices
-    rg::ImageRef epipolarZ;            // R32F, samples x slices
-    rg::ImageRef epipolarStencil;      // depth-stencil, samples x slices
-    rg::ImageRef interpolationSource;  // RG16UI, samples x slices
-    rg::ImageRef sliceUvFrame;         // RGBA32F, slices x 1
-    rg::ImageRef treeOdd, treeEven;    // RG16F, shadow-map size x slices
-    rg::ImageRef marched;              // RGBA16F, samples x slices (in-scattering 1)
-    rg::ImageRef interpolated;         // RGBA16F, samples x slices (in-scattering 2)
-    rg::ImageRef cameraStencil;        // depth-stencil, screen
-    rg::ImageRef screenInscatter;      // RGBA16F, screen
-};
+// Entry and exit of each slice's line in NDC: RGBA32F, slices x 1.
+rg::ImageRef addSliceEndPoints(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s);
 
-void addSliceEndPoints(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
-                       EpipolarTextures& t);
-void addEpipolarCoordinates(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
-                            EpipolarTextures& t);
-void addRefineSamples(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
-                      EpipolarTextures& t);
-void addSliceUvFrame(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
-                     EpipolarTextures& t);
-void addMinMaxTrees(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
-                    EpipolarTextures& t);
-void addMarkRayMarchSamples(rg::RenderGraph& g, const NodeInputs& in, EpipolarTextures& t);
-void addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
-                         EpipolarTextures& t);
-void addInterpolate(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
-                    EpipolarTextures& t);
-void addUnwarp(rg::RenderGraph& g, const NodeInputs& in, bool markForFixup, EpipolarTextures& t);
-void addFixup(rg::RenderGraph& g, const NodeInputs& in, EpipolarTextures& t);
+// Each sample's NDC position and the camera-space z under it; valid samples get stencil 1.
+struct EpipolarCoordinates {
+    rg::ImageRef coordinates;      // RG32F, samples x slices
+    rg::ImageRef epipolarZ;        // R32F, samples x slices
+    rg::ImageRef epipolarStencil;  // depth-stencil, samples x slices
+};
+EpipolarCoordinates addEpipolarCoordinates(rg::RenderGraph& g, const NodeInputs& in,
+                                           const EpipolarSizes& s, rg::ImageRef sliceEndPoints,
+                                           rg::ImageRef cameraZ);
+
+// Each sample's two interpolation sources: RG16UI, samples x slices.
+rg::ImageRef addRefineSamples(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
+                              rg::ImageRef epipolarZ);
+
+// Each slice's line in the shadow map, origin and direction: RGBA32F, slices x 1.
+rg::ImageRef addSliceUvFrame(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
+                             rg::ImageRef sliceEndPoints);
+
+// The 1D min/max trees of in.shadowMap along each slice's line, odd levels in one texture and
+// even levels in the other: RG16F, shadow-map size x slices.
+struct MinMaxTrees {
+    rg::ImageRef odd, even;
+};
+MinMaxTrees addMinMaxTrees(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
+                           rg::ImageRef sliceUvFrame);
+
+// Raises the ray-marching samples to stencil 2; returns the stencil's new version.
+rg::ImageRef addMarkRayMarchSamples(rg::RenderGraph& g, const NodeInputs& in,
+                                    rg::ImageRef interpolationSource,
+                                    rg::ImageRef epipolarStencil);
+
+// Lin (or the shadowed fraction) of the ray-marching samples: RGBA16F, samples x slices. Reads the
+// light's images; without trees (both handles invalid) every sample is marched texel by texel.
+struct EpipolarRayMarchInputs {
+    rg::ImageRef coordinates, epipolarZ, sliceUvFrame;
+    rg::ImageRef epipolarStencil;  // after the marking
+    MinMaxTrees trees;
+};
+rg::ImageRef addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
+                                 const EpipolarRayMarchInputs& i);
+
+// Every valid sample, interpolated between its two sources: RGBA16F, samples x slices.
+rg::ImageRef addInterpolate(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
+                            rg::ImageRef interpolationSource, rg::ImageRef marched,
+                            rg::ImageRef epipolarStencil);
+
+// The samples unwarped to the screen, and with markForFixup the pixels no sample could serve
+// marked 1 in a camera stencil. Reads in.table.
+struct UnwarpInputs {
+    rg::ImageRef sliceEndPoints, epipolarZ, interpolated, cameraZ;
+};
+struct UnwarpOutputs {
+    rg::ImageRef screenInscatter;  // RGBA16F, screen
+    rg::ImageRef cameraStencil;    // depth-stencil, screen; invalid without markForFixup
+};
+UnwarpOutputs addUnwarp(rg::RenderGraph& g, const NodeInputs& in, const UnwarpInputs& i,
+                        bool markForFixup);
+
+// Marches the pixels marked in cameraStencil on their own into screenInscatter; returns its new
+// version. Reads the light's images.
+rg::ImageRef addFixup(rg::RenderGraph& g, const NodeInputs& in, rg::ImageRef cameraZ,
+                      rg::ImageRef cameraStencil, rg::ImageRef screenInscatter);
 
 // The whole chain, from camera-space z to the screen's in-scattering (before compositing).
 struct EpipolarOptions {
     bool minMaxTrees = true;
     bool fixup = true;
 };
-EpipolarTextures addEpipolarNodes(rg::RenderGraph& g, const NodeInputs& in,
-                                  const EpipolarSizes& sizes, const EpipolarOptions& options,
-                                  rg::ImageRef cameraZ);
+struct EpipolarResult {
+    rg::ImageRef screenInscatter;  // RGBA16F, screen
+};
+EpipolarResult addEpipolarNodes(rg::RenderGraph& g, const NodeInputs& in,
+                                const EpipolarSizes& sizes, const EpipolarOptions& options,
+                                rg::ImageRef cameraZ);
 
 }  // namespace ls

@@ -1,20 +1,21 @@
-#include "common/pass_helpers.h"
+#include "shared/pass_helpers.h"
 #include "epipolar_nodes.h"
 #include "interpolate_frag.h"
 
 namespace ls {
 
-void addInterpolate(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
-                    EpipolarTextures& t) {
-    t.interpolated = g.createImage("in-scattering (all samples)",
-                                   rg::ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT, s.samples, s.slices));
+rg::ImageRef addInterpolate(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
+                            rg::ImageRef interpolationSource, rg::ImageRef marched,
+                            rg::ImageRef epipolarStencil) {
+    rg::ImageRef interpolated = g.createImage(
+        "in-scattering (all samples)",
+        rg::ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT, s.samples, s.slices));
     auto pass = g.addPass("interpolate in-scattering", rg::PassType::Graphics);
-    pass.sampled(t.interpolationSource);
-    pass.sampled(t.marched);
-    pass.stencilTest(t.epipolarStencil);
-    t.interpolated = pass.colorAttachment(t.interpolated, rg::LoadOp::Clear);
-    const EpipolarTextures tex = t;
-    pass.execute([in, tex](rg::PassContext& ctx) {
+    pass.sampled(interpolationSource);
+    pass.sampled(marched);
+    pass.stencilTest(epipolarStencil);
+    interpolated = pass.colorAttachment(interpolated, rg::LoadOp::Clear);
+    pass.execute([in, interpolationSource, marched](rg::PassContext& ctx) {
         auto desc = fullscreenPipeline(rg::spirv(ls_spirv::interpolate_frag), ctx,
                                        {sampledBinding(0), sampledBinding(1)});
         desc.stencilTest = true;  // every valid sample: 1 <= stencil
@@ -24,12 +25,13 @@ void addInterpolate(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSize
         p.bind(ctx.cmd());
         vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 1);
         rg::DescriptorPush()
-            .sampled(0, ctx.view(tex.interpolationSource), ctx.layout(tex.interpolationSource),
+            .sampled(0, ctx.view(interpolationSource), ctx.layout(interpolationSource),
                      in.shared->samplers.nearest())
-            .sampled(1, ctx.view(tex.marched), ctx.layout(tex.marched), in.shared->samplers.nearest())
+            .sampled(1, ctx.view(marched), ctx.layout(marched), in.shared->samplers.nearest())
             .push(ctx.device(), ctx.cmd(), p);
         vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
     });
+    return interpolated;
 }
 
 }  // namespace ls

@@ -1,4 +1,4 @@
-#include "common/pass_helpers.h"
+#include "shared/pass_helpers.h"
 #include "epipolar_nodes.h"
 #include "min_max_first_level_comp.h"
 #include "min_max_next_level_comp.h"
@@ -8,22 +8,23 @@ namespace ls {
 // One node per tree level: the first from the shadow map, each coarser one from the level below,
 // flip/flopping between the two textures (odd levels in one, even levels in the other). Later
 // levels keep what earlier levels wrote to the same texture, so they read-modify-write it.
-void addMinMaxTrees(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
-                    EpipolarTextures& t) {
+MinMaxTrees addMinMaxTrees(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
+                           rg::ImageRef sliceUvFrame) {
     const uint32_t n = s.shadowMapSize;
     const uint32_t levels = treeLevels(n);
-    t.treeOdd = g.createImage("1D min/max trees (odd levels)",
-                              rg::ImageDesc::absolute(VK_FORMAT_R16G16_SFLOAT, n, s.slices));
-    t.treeEven = g.createImage("1D min/max trees (even levels)",
-                               rg::ImageDesc::absolute(VK_FORMAT_R16G16_SFLOAT, n, s.slices));
+    MinMaxTrees t;
+    t.odd = g.createImage("1D min/max trees (odd levels)",
+                          rg::ImageDesc::absolute(VK_FORMAT_R16G16_SFLOAT, n, s.slices));
+    t.even = g.createImage("1D min/max trees (even levels)",
+                           rg::ImageDesc::absolute(VK_FORMAT_R16G16_SFLOAT, n, s.slices));
     {
         auto pass = g.addPass("min/max trees level 1", rg::PassType::Compute);
         pass.uniformBuffer(in.constants);
         pass.sampled(in.shadowMap, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
-        pass.sampled(t.sliceUvFrame);
-        t.treeOdd = pass.storageWrite(t.treeOdd);
-        const EpipolarTextures tex = t;
-        pass.execute([in, tex, s, n](rg::PassContext& ctx) {
+        pass.sampled(sliceUvFrame);
+        t.odd = pass.storageWrite(t.odd);
+        const rg::ImageRef level1 = t.odd;
+        pass.execute([in, sliceUvFrame, level1, s, n](rg::PassContext& ctx) {
             const auto& p = in.shared->pipelines.compute(
                 "min/max trees level 1", rg::spirv(ls_spirv::min_max_first_level_comp),
                 {uniformBinding(0), sampledBinding(1), sampledBinding(2), storageBinding(3)}, 0, {});
@@ -31,9 +32,9 @@ void addMinMaxTrees(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSize
             frameSet(ctx, in.constants)
                 .sampled(1, ctx.view(in.shadowMap, VK_IMAGE_ASPECT_DEPTH_BIT), ctx.layout(in.shadowMap),
                          in.shared->samplers.nearest())
-                .sampled(2, ctx.view(tex.sliceUvFrame), ctx.layout(tex.sliceUvFrame),
+                .sampled(2, ctx.view(sliceUvFrame), ctx.layout(sliceUvFrame),
                          in.shared->samplers.nearest())
-                .storage(3, ctx.view(tex.treeOdd))
+                .storage(3, ctx.view(level1))
                 .push(ctx.device(), ctx.cmd(), p);
             vkCmdDispatch(ctx.cmd(), groupCount(n / 2, 64), s.slices, 1);
         });
@@ -42,8 +43,8 @@ void addMinMaxTrees(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSize
     for (uint32_t level = 2; level <= levels; ++level) {
         const bool toEven = (level % 2) == 0;
         auto pass = g.addPass("min/max trees level " + std::to_string(level), rg::PassType::Compute);
-        rg::ImageRef& src = toEven ? t.treeOdd : t.treeEven;
-        rg::ImageRef& dst = toEven ? t.treeEven : t.treeOdd;
+        rg::ImageRef& src = toEven ? t.odd : t.even;
+        rg::ImageRef& dst = toEven ? t.even : t.odd;
         pass.storageRead(src);
         const bool firstWrite = toEven && !evenWritten;
         dst = firstWrite ? pass.storageWrite(dst) : pass.storageReadWrite(dst);
@@ -63,6 +64,7 @@ void addMinMaxTrees(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSize
             vkCmdDispatch(ctx.cmd(), groupCount(n >> level, 64), s.slices, 1);
         });
     }
+    return t;
 }
 
 }  // namespace ls

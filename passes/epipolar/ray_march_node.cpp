@@ -1,27 +1,53 @@
-#include "common/pass_helpers.h"
 #include "epipolar_nodes.h"
+#include "ray_march_directional_color_frag.h"
+#include "ray_march_directional_color_trees_frag.h"
+#include "ray_march_directional_frag.h"
+#include "ray_march_directional_trees_frag.h"
+#include "ray_march_table_color_frag.h"
+#include "ray_march_table_color_trees_frag.h"
+#include "ray_march_table_frag.h"
+#include "ray_march_table_trees_frag.h"
+#include "shared/pass_helpers.h"
 
 namespace ls {
+namespace {
 
-void addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
-                         EpipolarTextures& t) {
-    t.marched = g.createImage("in-scattering (ray-marched samples)",
-                              rg::ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT, s.samples, s.slices));
-    const bool trees = t.treeOdd.valid();
+rg::ShaderCode rayMarchShader(const ScatterSpec& spec) {
+    const bool table = spec.light != LightKind::Directional;
+    const bool color = spec.lightColor;
+    if (spec.minMaxTrees) {
+        if (table) return color ? rg::spirv(ls_spirv::ray_march_table_color_trees_frag)
+                                : rg::spirv(ls_spirv::ray_march_table_trees_frag);
+        return color ? rg::spirv(ls_spirv::ray_march_directional_color_trees_frag)
+                     : rg::spirv(ls_spirv::ray_march_directional_trees_frag);
+    }
+    if (table) return color ? rg::spirv(ls_spirv::ray_march_table_color_frag)
+                            : rg::spirv(ls_spirv::ray_march_table_frag);
+    return color ? rg::spirv(ls_spirv::ray_march_directional_color_frag)
+                 : rg::spirv(ls_spirv::ray_march_directional_frag);
+}
+
+}  // namespace
+
+rg::ImageRef addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
+                                 const EpipolarRayMarchInputs& i) {
+    rg::ImageRef marched = g.createImage(
+        "in-scattering (ray-marched samples)",
+        rg::ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT, s.samples, s.slices));
+    const bool trees = i.trees.odd.valid();
     auto pass = g.addPass(trees ? "ray march with min/max trees" : "ray march", rg::PassType::Graphics);
     pass.uniformBuffer(in.constants);
-    pass.sampled(t.coordinates);
-    pass.sampled(t.epipolarZ);
-    pass.sampled(t.sliceUvFrame);
+    pass.sampled(i.coordinates);
+    pass.sampled(i.epipolarZ);
+    pass.sampled(i.sliceUvFrame);
     if (trees) {
-        pass.sampled(t.treeOdd);
-        pass.sampled(t.treeEven);
+        pass.sampled(i.trees.odd);
+        pass.sampled(i.trees.even);
     }
     declareMarchInputs(pass, in);
-    pass.stencilTest(t.epipolarStencil);
-    t.marched = pass.colorAttachment(t.marched, rg::LoadOp::Clear);
-    const EpipolarTextures tex = t;
-    pass.execute([in, tex, trees](rg::PassContext& ctx) {
+    pass.stencilTest(i.epipolarStencil);
+    marched = pass.colorAttachment(marched, rg::LoadOp::Clear);
+    pass.execute([in, i, trees](rg::PassContext& ctx) {
         ScatterSpec spec = in.shared->spec;
         spec.minMaxTrees = trees;
         std::vector<rg::Binding> b{uniformBinding(0), sampledBinding(1), sampledBinding(2),
@@ -31,7 +57,7 @@ void addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in, const Epipola
             b.push_back(sampledBinding(5));
         }
         appendMarchBindings(b, in);
-        auto desc = fullscreenPipeline(marchShader(MarchShader::RayMarch, spec), ctx, b);
+        auto desc = fullscreenPipeline(rayMarchShader(spec), ctx, b);
         desc.specialization = spec.constants();
         desc.stencilTest = true;
         desc.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP,
@@ -41,17 +67,18 @@ void addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in, const Epipola
         vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 2);
         const auto& sm = in.shared->samplers;
         auto set = frameSet(ctx, in.constants);
-        set.sampled(1, ctx.view(tex.coordinates), ctx.layout(tex.coordinates), sm.nearest())
-            .sampled(2, ctx.view(tex.epipolarZ), ctx.layout(tex.epipolarZ), sm.nearest())
-            .sampled(3, ctx.view(tex.sliceUvFrame), ctx.layout(tex.sliceUvFrame), sm.nearest());
+        set.sampled(1, ctx.view(i.coordinates), ctx.layout(i.coordinates), sm.nearest())
+            .sampled(2, ctx.view(i.epipolarZ), ctx.layout(i.epipolarZ), sm.nearest())
+            .sampled(3, ctx.view(i.sliceUvFrame), ctx.layout(i.sliceUvFrame), sm.nearest());
         if (trees) {
-            set.sampled(4, ctx.view(tex.treeOdd), ctx.layout(tex.treeOdd), sm.nearest())
-                .sampled(5, ctx.view(tex.treeEven), ctx.layout(tex.treeEven), sm.nearest());
+            set.sampled(4, ctx.view(i.trees.odd), ctx.layout(i.trees.odd), sm.nearest())
+                .sampled(5, ctx.view(i.trees.even), ctx.layout(i.trees.even), sm.nearest());
         }
         pushMarchInputs(set, ctx, in);
         set.push(ctx.device(), ctx.cmd(), p);
         vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
     });
+    return marched;
 }
 
 }  // namespace ls

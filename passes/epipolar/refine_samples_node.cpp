@@ -1,29 +1,29 @@
-#include "common/pass_helpers.h"
+#include "shared/pass_helpers.h"
 #include "epipolar_nodes.h"
 #include "refine_samples_comp.h"
 
 namespace ls {
 
-void addRefineSamples(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
-                      EpipolarTextures& t) {
-    t.interpolationSource = g.createImage(
+rg::ImageRef addRefineSamples(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
+                              rg::ImageRef epipolarZ) {
+    rg::ImageRef sources = g.createImage(
         "interpolation source", rg::ImageDesc::absolute(VK_FORMAT_R16G16_UINT, s.samples, s.slices));
     auto pass = g.addPass("refine sample locations", rg::PassType::Compute);
     pass.uniformBuffer(in.constants);
-    pass.sampled(t.epipolarZ);
-    t.interpolationSource = pass.storageWrite(t.interpolationSource);
-    const EpipolarTextures tex = t;
-    pass.execute([in, tex, s](rg::PassContext& ctx) {
+    pass.sampled(epipolarZ);
+    sources = pass.storageWrite(sources);
+    pass.execute([in, epipolarZ, sources, s](rg::PassContext& ctx) {
         const auto& p = in.shared->pipelines.compute(
             "refine sample locations", rg::spirv(ls_spirv::refine_samples_comp),
             {uniformBinding(0), sampledBinding(1), storageBinding(2)}, 0, {});
         p.bind(ctx.cmd());
         frameSet(ctx, in.constants)
-            .sampled(1, ctx.view(tex.epipolarZ), ctx.layout(tex.epipolarZ), in.shared->samplers.nearest())
-            .storage(2, ctx.view(tex.interpolationSource))
+            .sampled(1, ctx.view(epipolarZ), ctx.layout(epipolarZ), in.shared->samplers.nearest())
+            .storage(2, ctx.view(sources))
             .push(ctx.device(), ctx.cmd(), p);
         vkCmdDispatch(ctx.cmd(), groupCount(s.samples, 128), s.slices, 1);
     });
+    return sources;
 }
 
 }  // namespace ls

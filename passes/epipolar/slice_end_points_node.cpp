@@ -1,16 +1,15 @@
-#include "common/pass_helpers.h"
+#include "shared/pass_helpers.h"
 #include "epipolar_nodes.h"
 #include "slice_end_points_comp.h"
 
 namespace ls {
 
-void addSliceEndPoints(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
-                       EpipolarTextures& t) {
-    t.sliceEndPoints = g.createImage("slice end points",
-                                     rg::ImageDesc::absolute(VK_FORMAT_R32G32B32A32_SFLOAT, s.slices, 1));
+rg::ImageRef addSliceEndPoints(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s) {
+    const rg::ImageRef endPoints = g.createImage(
+        "slice end points", rg::ImageDesc::absolute(VK_FORMAT_R32G32B32A32_SFLOAT, s.slices, 1));
     auto pass = g.addPass("slice end points", rg::PassType::Compute);
     pass.uniformBuffer(in.constants);
-    const rg::ImageRef out = pass.storageWrite(t.sliceEndPoints);
+    const rg::ImageRef out = pass.storageWrite(endPoints);
     pass.execute([in, out, s](rg::PassContext& ctx) {
         const auto& p = in.shared->pipelines.compute(
             "slice end points", rg::spirv(ls_spirv::slice_end_points_comp),
@@ -19,7 +18,7 @@ void addSliceEndPoints(rg::RenderGraph& g, const NodeInputs& in, const EpipolarS
         frameSet(ctx, in.constants).storage(1, ctx.view(out)).push(ctx.device(), ctx.cmd(), p);
         vkCmdDispatch(ctx.cmd(), groupCount(s.slices, 64), 1, 1);
     });
-    t.sliceEndPoints = out;
+    return out;
 }
 
 }  // namespace ls

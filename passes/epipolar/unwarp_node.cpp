@@ -1,4 +1,4 @@
-#include "common/pass_helpers.h"
+#include "shared/pass_helpers.h"
 #include "epipolar_nodes.h"
 #include "unwarp_directional_frag.h"
 #include "unwarp_table_frag.h"
@@ -7,23 +7,25 @@ namespace ls {
 
 // Two draws in one pass: the bilateral unwarp writes every pixel; then, with fix-up on, a
 // stencil-only draw marks the pixels that no epipolar sample could serve.
-void addUnwarp(rg::RenderGraph& g, const NodeInputs& in, bool markForFixup, EpipolarTextures& t) {
-    t.screenInscatter = g.createImage("in-scattering (screen)",
-                                      rg::ImageDesc::screen(VK_FORMAT_R16G16B16A16_SFLOAT));
+UnwarpOutputs addUnwarp(rg::RenderGraph& g, const NodeInputs& in, const UnwarpInputs& i,
+                        bool markForFixup) {
+    UnwarpOutputs out;
+    out.screenInscatter = g.createImage("in-scattering (screen)",
+                                        rg::ImageDesc::screen(VK_FORMAT_R16G16B16A16_SFLOAT));
     auto pass = g.addPass("unwarp epipolar to screen", rg::PassType::Graphics);
     pass.uniformBuffer(in.constants);
-    pass.sampled(t.sliceEndPoints);
-    pass.sampled(t.epipolarZ);
-    pass.sampled(t.interpolated);
-    pass.sampled(t.cameraZ);
+    pass.sampled(i.sliceEndPoints);
+    pass.sampled(i.epipolarZ);
+    pass.sampled(i.interpolated);
+    pass.sampled(i.cameraZ);
     if (in.table.valid()) pass.sampled(in.table);
-    t.screenInscatter = pass.colorAttachment(t.screenInscatter, rg::LoadOp::DontCare);
+    out.screenInscatter = pass.colorAttachment(out.screenInscatter, rg::LoadOp::DontCare);
     if (markForFixup) {
-        t.cameraStencil = g.createImage("camera depth-stencil", rg::ImageDesc::screen(in.depthStencil));
-        t.cameraStencil = pass.stencilWrite(t.cameraStencil, rg::LoadOp::Clear, 0);
+        const rg::ImageRef stencil =
+            g.createImage("camera depth-stencil", rg::ImageDesc::screen(in.depthStencil));
+        out.cameraStencil = pass.stencilWrite(stencil, rg::LoadOp::Clear, 0);
     }
-    const EpipolarTextures tex = t;
-    pass.execute([in, tex, markForFixup](rg::PassContext& ctx) {
+    pass.execute([in, i, markForFixup](rg::PassContext& ctx) {
         const ScatterSpec& spec = in.shared->spec;
         std::vector<rg::Binding> b{uniformBinding(0), sampledBinding(1), sampledBinding(2),
                                    sampledBinding(3), sampledBinding(4)};
@@ -37,10 +39,10 @@ void addUnwarp(rg::RenderGraph& g, const NodeInputs& in, bool markForFixup, Epip
         const auto& sm = in.shared->samplers;
         write.bind(ctx.cmd());
         auto set = frameSet(ctx, in.constants);
-        set.sampled(1, ctx.view(tex.sliceEndPoints), ctx.layout(tex.sliceEndPoints), sm.nearest())
-            .sampled(2, ctx.view(tex.epipolarZ), ctx.layout(tex.epipolarZ), sm.nearest())
-            .sampled(3, ctx.view(tex.interpolated), ctx.layout(tex.interpolated), sm.nearest())
-            .sampled(4, ctx.view(tex.cameraZ), ctx.layout(tex.cameraZ), sm.nearest());
+        set.sampled(1, ctx.view(i.sliceEndPoints), ctx.layout(i.sliceEndPoints), sm.nearest())
+            .sampled(2, ctx.view(i.epipolarZ), ctx.layout(i.epipolarZ), sm.nearest())
+            .sampled(3, ctx.view(i.interpolated), ctx.layout(i.interpolated), sm.nearest())
+            .sampled(4, ctx.view(i.cameraZ), ctx.layout(i.cameraZ), sm.nearest());
         if (in.table.valid()) set.sampled(7, ctx.view(in.table), ctx.layout(in.table), sm.nearest());
         set.push(ctx.device(), ctx.cmd(), write);
         int32_t mode = 0;
@@ -58,6 +60,7 @@ void addUnwarp(rg::RenderGraph& g, const NodeInputs& in, bool markForFixup, Epip
         mark.push(ctx.cmd(), mode);
         vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
     });
+    return out;
 }
 
 }  // namespace ls

@@ -25,8 +25,8 @@ float arctanIntegral(float t0, float t1, float b, float w) {
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec3 C = frame.cameraPos.xyz;
-    vec3 v = rayDirection(pixelToNdc(vec2(pixel) + 0.5));
-    float S = texelFetch(cameraZ, pixel, 0).r / max(dot(v, frame.cameraForward.xyz), 1e-4);
+    vec3 v = pixelRayDirection(pixel);
+    float S = rayLength(texelFetch(cameraZ, pixel, 0).r, v);
     float t0, t1;
     lightInterval(C, v, S, t0, t1);
     vec3 lin = vec3(0.0);

@@ -63,8 +63,8 @@ vec3 lightAt(vec3 P, vec3 v, out float cosTheta) {
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec3 C = frame.cameraPos.xyz;
-    vec3 v = rayDirection(pixelToNdc(vec2(pixel) + 0.5));
-    float S = texelFetch(cameraZ, pixel, 0).r / max(dot(v, frame.cameraForward.xyz), 1e-4);
+    vec3 v = pixelRayDirection(pixel);
+    float S = rayLength(texelFetch(cameraZ, pixel, 0).r, v);
     float t0 = 0.0, t1 = S;
     if (kConeLimited) lightInterval(C, v, S, t0, t1);
     vec3 lin = vec3(0.0);

@@ -143,7 +143,7 @@ void main() {
     float z = texelFetch(epipolarZ, p, 0).r;
     vec3 v = rayDirection(ndc);
     vec3 C = frame.cameraPos.xyz;
-    float S = z / max(dot(v, frame.cameraForward.xyz), 1e-4);
+    float S = rayLength(z, v);
     vec3 lin = marchSample(C, v, S, p.y);
     float defined = 1.0;
     if (frame.epipolar2.w > 0.5) {

@@ -74,7 +74,7 @@ void main() {
         vec3 C = frame.cameraPos.xyz;
         vec3 v = rayDirection(p);
         float t0, t1;
-        lightInterval(C, v, z / max(dot(v, frame.cameraForward.xyz), 1e-4), t0, t1);
+        lightInterval(C, v, rayLength(z, v), t0, t1);
         value.rgb *= unshadowedInscatter(C, v, t0, t1);
     }
     outInscatter = vec4(value.rgb, 1.0);

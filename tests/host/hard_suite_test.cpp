@@ -11,7 +11,7 @@
 
 #include "bench/metrics.h"
 #include "engine_renderer.h"
-#include "reference/reference_renderer.h"
+#include "exact_renderer/reference_renderer.h"
 #include "support/gpu_test.h"
 
 namespace {

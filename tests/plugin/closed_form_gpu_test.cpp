@@ -5,8 +5,8 @@
 
 #include "model_conversion.h"
 #include "plugin_fixture.h"
-#include "reference/closed_forms.h"
-#include "reference/inscatter_integral.h"
+#include "float64_model/closed_forms.h"
+#include "float64_model/inscatter_integral.h"
 
 using namespace plugin_test;
 using lightscatter::Method;

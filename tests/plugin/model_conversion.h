@@ -2,8 +2,8 @@
 // The plugin's medium and light as the float64 model's (passes/reference), for tests that hold
 // the GPU against it.
 #include "lightscatter.h"
-#include "reference/light.h"
-#include "reference/medium.h"
+#include "float64_model/light.h"
+#include "float64_model/medium.h"
 
 namespace plugin_test {
 

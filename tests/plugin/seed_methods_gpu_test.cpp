@@ -6,7 +6,7 @@
 
 #include "model_conversion.h"
 #include "plugin_fixture.h"
-#include "reference/closed_forms.h"
+#include "float64_model/closed_forms.h"
 
 using namespace plugin_test;
 using lightscatter::Method;

@@ -1,0 +1,86 @@
+#pragma once
+// The exact CPU reference of issue #5: Lin of docs/model.md for every pixel centre of a scene, in
+// float64, with exact visibility traced against the scene's triangles (a BVH, not a shadow map).
+// Every GPU method is judged against this image.
+//
+// Point lights: the plugin does not shadow them (it has no cube maps), but docs/model.md's V is
+// exact visibility, so this reference does shadow them by default. A comparison of the GPU's point
+// light against it therefore counts the missing shadows as error, which is the model's intended
+// judging; pass `shadows = false` for the unshadowed image instead.
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "bvh.h"
+#include "camera_rays.h"
+#include "float64_model/interval.h"
+#include "float64_model/light.h"
+#include "float64_model/medium.h"
+#include "float64_model/ray.h"
+#include "scene/scene.h"
+
+namespace host::reference {
+
+struct ReferenceOptions {
+    uint32_t threads = 0;          // 0: std::thread::hardware_concurrency()
+    double relTol = 1e-6;          // quadrature tolerance per channel (point and spot lights)
+    int visibilitySamples = 512;   // visibility samples per view ray, uniform over [0, S]
+    double boundaryRelTol = 1e-9;  // shadow boundaries are bisected to this fraction of S
+    bool shadows = true;           // false: V = 1 inside the light's volume
+};
+
+struct ReferenceImage {
+    uint32_t width = 0, height = 0;
+    std::vector<double> rgb;       // Lin, 3 per pixel, row-major, row 0 at the top
+    std::vector<double> distance;  // S per pixel (the sky's S for sky pixels)
+};
+
+// SceneDesc's light and medium as the float64 model takes them: the direction normalised, the
+// spot's half-angle in radians, r0 = radius. A spot's range is kept as given (the scene's default
+// 1e30 m is effectively infinite); a point light has none.
+[[nodiscard]] ls::ref::Light toReferenceLight(const LightDesc& light);
+[[nodiscard]] ls::ref::Medium toReferenceMedium(const MediumDesc& medium);
+
+// One scene prepared for a screen size: BVH, camera, light and medium. For callers (and tests) that
+// need single rays; renderReference runs it over every pixel.
+class ReferenceScene {
+  public:
+    ReferenceScene(const SceneDesc& scene, const MeshData& mesh, uint32_t width, uint32_t height,
+                   const ReferenceOptions& options = {});
+
+    // Pixel (x, y)'s view ray: from the eye through the pixel's centre, unit direction, length S.
+    [[nodiscard]] ls::ref::Ray pixelRay(uint32_t x, uint32_t y) const;
+    // The view ray along any unit direction from the eye, ending as a pixel's would.
+    [[nodiscard]] ls::ref::Ray viewRay(const glm::dvec3& direction) const;
+    // The lit intervals of a ray with a unit direction (see litIntervals in visibility.h).
+    [[nodiscard]] std::vector<ls::ref::Interval> litIntervals(const ls::ref::Ray& ray) const;
+    // Lin along a ray with a unit direction: the directional closed form over the lit intervals
+    // (exact), or ls::ref::integrateInscatter to relTol for point and spot lights.
+    [[nodiscard]] glm::dvec3 inscatter(const ls::ref::Ray& ray) const;
+
+    [[nodiscard]] const PixelCamera& camera() const { return camera_; }
+    [[nodiscard]] const Bvh& bvh() const { return bvh_; }
+    [[nodiscard]] const ls::ref::Light& light() const { return light_; }
+    [[nodiscard]] const ls::ref::Medium& medium() const { return medium_; }
+    [[nodiscard]] const ReferenceOptions& options() const { return options_; }
+
+  private:
+    PixelCamera camera_;
+    Bvh bvh_;
+    ls::ref::Light light_;
+    ls::ref::Medium medium_;
+    ReferenceOptions options_;
+};
+
+// Lin per pixel centre, rows shared among `threads` threads. Each pixel depends on nothing but its
+// own ray, so the image is the same bit for bit for any thread count. `progress` is called with
+// the fraction of rows done, never decreasing, from the worker threads (one call at a time), and
+// last with exactly 1 from the calling thread. An exception in a worker is rethrown here.
+[[nodiscard]] ReferenceImage renderReference(const SceneDesc& scene, const MeshData& mesh,
+                                             uint32_t width, uint32_t height,
+                                             const ReferenceOptions& options = {},
+                                             std::function<void(double fraction)> progress = {});
+
+}  // namespace host::reference

@@ -1,0 +1,19 @@
+#include "brute_force_node.h"
+
+#include "shared/pixel_march.h"
+
+namespace ls {
+
+rg::ImageRef addBruteForce(rg::RenderGraph& graph, const NodeInputs& in, rg::ImageRef cameraZ) {
+    rg::ImageRef lin = graph.createImage("in-scattering (screen)",
+                                         rg::ImageDesc::screen(VK_FORMAT_R16G16B16A16_SFLOAT));
+    auto pass = graph.addPass("brute-force ray march", rg::PassType::Graphics);
+    declarePixelMarch(pass, in, cameraZ);
+    lin = pass.colorAttachment(lin, rg::LoadOp::DontCare);
+    pass.execute([in, cameraZ](rg::PassContext& ctx) {
+        drawPixelMarch(ctx, in, cameraZ, {.pipeline = "brute-force ray march"});
+    });
+    return lin;
+}
+
+}  // namespace ls

@@ -1,0 +1,29 @@
+#pragma once
+// The per-frame constants every scattering shader reads (shaders/shared/frame.glsl, std140).
+#include <glm/glm.hpp>
+
+namespace ls {
+
+struct FrameConstants {
+    glm::mat4 viewProj;
+    glm::mat4 invViewProj;
+    glm::mat4 lightViewProj;
+    glm::vec4 cameraPos;       // w: near
+    glm::vec4 cameraForward;   // w: far
+    glm::vec4 screenSize;      // w, h, 1/w, 1/h
+    glm::vec4 lightPos;
+    glm::vec4 lightDir;        // w: cos(half angle)
+    glm::vec4 lightIntensity;  // w: spot range
+    glm::vec4 lightScreen;     // xy: NDC, z: sign of clip w, w: on screen
+    glm::vec4 betaR;           // w: g
+    glm::vec4 betaM;           // w: max distance
+    glm::vec4 betaT;           // w: r0
+    glm::vec4 depthInfo;       // reversed, infinite, near, far
+    glm::vec4 shadowInfo;      // size, 1/size, reversed, bias
+    glm::vec4 epipolar;        // slices, samples, initial step, refinement threshold
+    glm::vec4 epipolar2;       // bilateral threshold, fix-up max steps, tree levels, ratio mode
+    glm::vec4 lutInfo;         // log range of hEff / r0, width, height, -
+};
+static_assert(sizeof(FrameConstants) == 3 * 64 + 15 * 16, "std140 layout of frame.glsl");
+
+}  // namespace ls

@@ -1,0 +1,25 @@
+#pragma once
+// The per-pixel march (shaders/shared/pixel_march.frag): each pixel marches its own ray through
+// the shadow map, one step per texel it crosses. Brute force draws it over every pixel; the
+// epipolar fix-up over the pixels its unwarp marked in a stencil, with an optional step cap. The
+// caller adds the pass, its target and any stencil it tests; these add the march's reads and draw.
+#include "node_inputs.h"
+#include "rendergraph/pass_context.h"
+#include "rendergraph/render_graph.h"
+
+namespace ls {
+
+// The march's reads: the frame constants, camera-space z and the light's images.
+void declarePixelMarch(rg::PassBuilder& pass, const NodeInputs& in, rg::ImageRef cameraZ);
+
+struct PixelMarchDraw {
+    const char* pipeline = "";       // names the pipeline, with the light's variant and the targets
+    uint32_t maxSteps = 0;           // steps per ray at most; 0: one per texel crossed
+    bool whereStencilIsOne = false;  // draw only where the pass's stencil attachment holds 1
+};
+
+// Records the march as one full-screen draw of the pass.
+void drawPixelMarch(rg::PassContext& ctx, const NodeInputs& in, rg::ImageRef cameraZ,
+                    const PixelMarchDraw& draw);
+
+}  // namespace ls

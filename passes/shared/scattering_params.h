@@ -1,0 +1,91 @@
+#pragma once
+// What the scattering nodes need to know about a frame, in docs/model.md's units. The plugin API
+// translates an engine's description into these; the nodes never see the engine's types.
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <glm/glm.hpp>
+
+#include "frame_constants.h"
+
+namespace ls {
+
+enum class LightKind : int { Directional = 0, Spot = 1, Point = 2 };
+
+struct CameraParams {
+    glm::mat4 view{1.0f};
+    glm::mat4 projection{1.0f};
+    float nearPlane = 0.1f;
+    float farPlane = 1000.0f;
+    bool reversedZ = false;
+    bool infiniteFar = false;
+};
+
+struct LightParams {
+    LightKind kind = LightKind::Directional;
+    glm::vec3 position{0.0f};
+    glm::vec3 direction{0.0f, -1.0f, 0.0f};  // unit
+    glm::vec3 intensity{1.0f};
+    float cosHalfAngle = 0.5f;
+    float range = 1e30f;
+    float radius = 0.05f;
+    glm::mat4 shadowViewProj{1.0f};
+    uint32_t shadowMapSize = 0;  // 0: unshadowed
+    bool shadowReversedZ = false;
+};
+
+struct MediumParams {
+    glm::vec3 betaR{0.0f};
+    glm::vec3 betaM{0.0f};
+    glm::vec3 sigmaA{0.0f};
+    float g = 0.0f;
+    bool isotropicMie = false;
+    float maxDistance = 1000.0f;
+    glm::vec3 betaT() const { return betaR + betaM + sigmaA; }
+};
+
+struct EpipolarSettings {
+    uint32_t slices = 1024;
+    uint32_t samples = 1024;
+    uint32_t initialStep = 16;
+    float refinementThreshold = 0.03f;
+    float bilateralThreshold = 0.1f;
+    bool minMaxTrees = true;
+    bool bilinearShadow = true;
+    bool fixup = true;
+    uint32_t fixupMaxSteps = 0;
+    float shadowDepthBias = 0.0f;
+    bool interpolateFraction = true;  // samples carry Lin / unshadowed Lin instead of Lin
+};
+
+// The look-up table's shape and scale (shaders/shared/lut.glsl).
+// Rows are uniform in log(hEff / r0) from 0 (a ray through the light) to logRange, where
+// extinction has made the table negligible (or, without extinction, far beyond where it changes).
+struct TableLayout {
+    uint32_t width = 512;   // phi
+    uint32_t height = 256;  // log(hEff / r0)
+    float logRange = 10.0f;
+};
+TableLayout tableLayoutFor(const MediumParams& medium, float lightRadius, uint32_t width = 512,
+                           uint32_t height = 256);
+
+// Where the light (or, behind the camera, the point its shafts converge to) lands in NDC.
+struct LightOnScreen {
+    glm::vec2 ndc{0.0f};
+    float wSign = 1.0f;
+    bool onScreen = false;
+};
+LightOnScreen projectLight(const CameraParams& camera, const LightParams& light);
+
+FrameConstants makeFrameConstants(const CameraParams& camera, const LightParams& light,
+                                  const MediumParams& medium, const EpipolarSettings& settings,
+                                  VkExtent2D screen, const TableLayout& table);
+
+// Number of min/max tree levels built for a shadow map of this size (level 1 covers 2 samples).
+uint32_t treeLevels(uint32_t shadowMapSize);
+// Whether min/max trees can be built: the march climbs from level 1 to level 2 and reads both the
+// odd and the even texture, so a shadow map needs 4 texels or more. Smaller maps are marched
+// texel by texel, which at that size costs nothing.
+bool treesFit(uint32_t shadowMapSize);
+
+}  // namespace ls

@@ -1,0 +1,52 @@
+#pragma once
+// State the scattering passes share for as long as the plugin lives: the device, samplers, the
+// pipelines built so far, and this frame's constants (updated before each recording; the upload
+// pass copies them into the command buffer, so frames in flight never share them).
+#include <map>
+#include <memory>
+#include <string>
+
+#include "frame_constants.h"
+#include "rendergraph/pipeline.h"
+#include "scattering_params.h"
+
+namespace ls {
+
+// Specialisation constants of shaders/shared/frame.glsl, and the options that choose a
+// shader variant (min/max trees).
+struct ScatterSpec {
+    LightKind light = LightKind::Directional;
+    bool isotropicMie = false;
+    bool minMaxTrees = true;
+    bool lightColor = false;
+    bool bilinearShadow = true;
+    rg::Specialization constants() const;
+    std::string key() const;
+};
+
+class PipelineLibrary {
+public:
+    explicit PipelineLibrary(const rg::Device& device) : device_(device) {}
+    const rg::Pipeline& compute(const std::string& key, rg::ShaderCode code,
+                                const std::vector<rg::Binding>& bindings, uint32_t pushBytes,
+                                const rg::Specialization& spec);
+    const rg::Pipeline& graphics(const std::string& key, const rg::GraphicsPipelineDesc& desc);
+    size_t size() const { return pipelines_.size(); }
+
+private:
+    const rg::Device& device_;
+    std::map<std::string, rg::Pipeline> pipelines_;
+};
+
+struct SharedState {
+    explicit SharedState(const rg::Device& d) : device(d), samplers(d), pipelines(d) {}
+    const rg::Device& device;
+    rg::Samplers samplers;
+    PipelineLibrary pipelines;
+    FrameConstants constants{};
+    ScatterSpec spec;
+};
+
+using Shared = std::shared_ptr<SharedState>;
+
+}  // namespace ls

@@ -1,0 +1,40 @@
+// Per-frame constants (mirrors passes/shared/frame_constants.h, std140) and the specialisation
+// constants that select the light, the phase function and the options: the plugin compiles one
+// pipeline per combination instead of branching per pixel.
+#ifndef LS_FRAME_GLSL
+#define LS_FRAME_GLSL
+
+layout(constant_id = 0) const int kLightType = 0;       // 0 directional, 1 spot, 2 point
+layout(constant_id = 1) const int kMiePhase = 0;        // 0 Cornette-Shanks, 1 isotropic
+layout(constant_id = 3) const bool kLightColor = false;  // colored shafts from a light-space texture
+layout(constant_id = 4) const bool kBilinearShadow = true;
+
+const int LIGHT_DIRECTIONAL = 0;
+const int LIGHT_SPOT = 1;
+const int LIGHT_POINT = 2;
+const float PI = 3.14159265358979;
+
+layout(std140, set = 0, binding = 0) uniform FrameConstants {
+    mat4 viewProj;       // world -> camera clip
+    mat4 invViewProj;    // camera clip -> world
+    mat4 lightViewProj;  // world -> light clip (the shadow map)
+    vec4 cameraPos;      // xyz; w: near
+    vec4 cameraForward;  // xyz: unit view axis; w: far (ignored when infinite)
+    vec4 screenSize;     // w, h, 1/w, 1/h
+    vec4 lightPos;       // xyz (point, spot)
+    vec4 lightDir;       // xyz: direction light travels / spot axis; w: cos(half angle)
+    vec4 lightIntensity; // rgb: E (directional) or I; w: spot range
+    vec4 lightScreen;    // xy: NDC of the light (or of the point the shafts converge to); z: sign of
+                         // its clip w (+1 in front of the camera, -1 behind); w: 1 when on screen
+    vec4 betaR;          // rgb; w: g
+    vec4 betaM;          // rgb; w: max distance (sky)
+    vec4 betaT;          // rgb; w: r0
+    vec4 depthInfo;      // x: reversed z, y: infinite far, z: near, w: far
+    vec4 shadowInfo;     // x: shadow-map size, y: 1/size, z: reversed z, w: depth bias
+    vec4 epipolar;       // x: slices, y: samples per slice, z: initial step, w: refinement threshold
+    vec4 epipolar2;      // x: bilateral threshold, y: fix-up max steps (0: all), z: tree levels,
+                         // w: 1 when samples carry the shadowed fraction instead of Lin
+    vec4 lutInfo;        // x: log range of hEff / r0, y: table width, z: table height, w: -
+} frame;
+
+#endif
