@@ -27,7 +27,10 @@ std::optional<SeedFigure> seedFigure(Profile p) {
 }  // namespace
 
 Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint32_t shadowMapSize,
-              LightType light, const Settings* custom) {
+              LightType light, const Settings* custom, Method method) {
+    if (method != Method::Epipolar && method != Method::Slices)
+        throw InvalidInput(std::string("lightscatter: budget method ") + methodName(method) +
+                           ": only epipolar and slices have textures that depend on the profile");
     if (screenWidth == 0 || screenHeight == 0 || screenWidth > 16384 || screenHeight > 16384)
         throw InvalidInput("lightscatter: budget screen " + std::to_string(screenWidth) + "x" +
                            std::to_string(screenHeight) + ": each side must be in [1, 16384]");
@@ -38,7 +41,9 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
     detail::checkSettings(s);
 
     detail::GraphConfig c;
-    c.method = Method::Epipolar;
+    c.method = method;
+    c.sliceTarget = detail::sliceAccumulation(s.sliceTarget);
+    c.sliceBlur = s.sliceBlur;
     c.light = static_cast<ls::LightKind>(static_cast<int>(light));
     c.shadowed = light != LightType::Point;
     c.minMaxTrees = s.minMaxTrees && ls::treesFit(shadowMapSize);
@@ -51,12 +56,13 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
     c.depthStencil = rg::firstSupported(caps, {VK_FORMAT_D24_UNORM_S8_UINT, VK_FORMAT_D32_SFLOAT_S8_UINT},
                                         VK_FORMAT_FEATURE_2_DEPTH_STENCIL_ATTACHMENT_BIT);
     const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    c.depth = {VK_FORMAT_D32_SFLOAT, c.screen, VK_IMAGE_USAGE_SAMPLED_BIT, ro, ro};
+    c.depth = {VK_FORMAT_D32_SFLOAT, c.screen,
+               VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, ro, ro};
     c.color = {VK_FORMAT_R16G16B16A16_SFLOAT, c.screen, VK_IMAGE_USAGE_STORAGE_BIT,
                VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL};
     if (c.shadowed)
         c.shadowMap = {VK_FORMAT_D32_SFLOAT, {shadowMapSize, shadowMapSize}, VK_IMAGE_USAGE_SAMPLED_BIT, ro, ro};
-    if (light != LightType::Directional)
+    if (light != LightType::Directional && method == Method::Epipolar)
         c.table = {VK_FORMAT_R32G32B32A32_SFLOAT, {512, 256},
                    VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, ro, ro};
 
@@ -86,7 +92,7 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
     }
     b.totalBytes = compiled.unaliasedBytes;
     b.peakBytes = compiled.aliasedBytes;
-    if (light != LightType::Directional) {
+    if (light != LightType::Directional && method == Method::Epipolar) {
         // The table lives across frames, outside the graph's aliased memory.
         VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
         info.format = VK_FORMAT_R32G32B32A32_SFLOAT;

@@ -60,6 +60,10 @@ const Need kNeeds[] = {
      kCoreOffset + offsetof(VkPhysicalDeviceFeatures, shaderStorageImageExtendedFormats),
      "VkPhysicalDeviceFeatures2::features", VK_STRUCTURE_TYPE_MAX_ENUM, 0, nullptr,
      "the min/max trees and the interpolation source are RG16F/RG16UI storage images"},
+    {"shaderClipDistance", VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2,
+     kCoreOffset + offsetof(VkPhysicalDeviceFeatures, shaderClipDistance),
+     "VkPhysicalDeviceFeatures2::features", VK_STRUCTURE_TYPE_MAX_ENUM, 0, nullptr,
+     "the slices method clips its planes to a spot's pyramid with clip distances"},
 };
 
 template <typename Base>

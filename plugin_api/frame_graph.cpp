@@ -17,7 +17,17 @@ bool GraphConfig::operator==(const GraphConfig& o) const {
            shadowMap == o.shadowMap && lightColor == o.lightColor &&
            inscatterOut == o.inscatterOut && table == o.table && extinction == o.extinction &&
            coneSamples == o.coneSamples && coneLimited == o.coneLimited && coneJitter == o.coneJitter &&
-           shadowSampling == o.shadowSampling && poisonTransients == o.poisonTransients;
+           shadowSampling == o.shadowSampling && sliceTarget == o.sliceTarget && sliceBlur == o.sliceBlur && sliceDither == o.sliceDither && reversedZ == o.reversedZ &&
+           noise == o.noise && engineNoise == o.engineNoise && poisonTransients == o.poisonTransients;
+}
+
+ls::SliceAccumulation sliceAccumulation(SliceTarget target) {
+    switch (target) {
+        case SliceTarget::Float32: return ls::SliceAccumulation::Float32;
+        case SliceTarget::Rgba8Channels: return ls::SliceAccumulation::Rgba8Channels;
+        case SliceTarget::Float16: break;
+    }
+    return ls::SliceAccumulation::Float16;
 }
 
 rg::ImportedImage importDescription(const ImageInput& in) {
@@ -45,7 +55,7 @@ rg::ImportedImage importDescription(const ImportState& s) {
     return d;
 }
 
-FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
+FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared, ls::SlicePlacementRef slices) {
     FrameGraph fg;
     fg.graph = std::make_unique<rg::RenderGraph>();
     rg::RenderGraph& g = *fg.graph;
@@ -79,6 +89,34 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
     } else if (c.method == Method::Analytic) {
         lin = ls::addAnalytic(g, shared, {in.constants, cameraZ});
         fg.summary = "seed 001's arctangent closed form per pixel";
+    } else if (c.method == Method::Slices) {
+        ls::SlicePlanesInputs planes{in.constants, in.depth, {}, {}, {}};
+        if (c.shadowed && c.shadowSampling) planes.shadowMap = fg.shadowMap;
+        if (c.shadowed) planes.lightColor = fg.lightColor;
+        if (c.noise) {
+            fg.noise = g.importImage(c.engineNoise.format != VK_FORMAT_UNDEFINED ? "engine noise" : "tiling noise",
+                                     importDescription(c.engineNoise.format != VK_FORMAT_UNDEFINED
+                                                           ? c.engineNoise
+                                                           : ImportState{kNoiseFormat, kNoiseExtent,
+                                                                         VK_IMAGE_USAGE_SAMPLED_BIT |
+                                                                             VK_IMAGE_USAGE_STORAGE_BIT,
+                                                                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                                                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL}));
+            planes.noise = fg.noise;
+        }
+        ls::SlicePlanesOptions planeOptions;
+        planeOptions.target = c.sliceTarget;
+        planeOptions.dither = c.sliceDither;
+        planeOptions.reversedZ = c.reversedZ;
+        const rg::ImageRef sum = ls::addSlicePlanes(g, shared, slices, planes, planeOptions);
+        const ls::SliceResolveOptions resolve{c.sliceTarget, c.sliceBlur, c.light == ls::LightKind::Directional};
+        lin = ls::sliceResolveNeeded(resolve) ? ls::addSliceResolve(g, shared, slices, {in.constants, cameraZ, sum}, resolve)
+                                              : sum;
+        fg.summary = std::string("seed 002's view-aligned slice planes") +
+                     (c.sliceTarget == ls::SliceAccumulation::Rgba8Channels ? " into 8-bit channels"
+                      : c.sliceTarget == ls::SliceAccumulation::Float32 ? " into a float32 target" : "") +
+                     (c.shadowed && !c.shadowSampling ? ", no shadow-map sampling" : "") +
+                     (c.noise ? ", scrolling noise" : "") + (c.sliceBlur ? ", blurred" : "");
     } else if (c.method == Method::ConeMarch) {
         ls::ConeMarchInputs cone{in.constants, cameraZ, {}, fg.lightColor};
         if (c.shadowed && c.shadowSampling) cone.shadowMap = fg.shadowMap;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "shared/node_inputs.h"
+#include "slices/slice_nodes.h"
 #include "lightscatter.h"
 #include "rendergraph/render_graph.h"
 
@@ -42,19 +43,33 @@ struct GraphConfig {
     bool coneLimited = true;
     bool coneJitter = false;
     bool shadowSampling = true;     // false: cone-march's low-end mode
+    ls::SliceAccumulation sliceTarget = ls::SliceAccumulation::Float16;  // slices
+    uint32_t sliceBlur = 0;
+    bool sliceDither = false;
+    bool reversedZ = false;         // the camera's depth convention (slices depth-tests)
+    bool noise = false;             // slices samples a noise texture: the engine's (`noise` given) or ours
+    ImportState engineNoise;        // format UNDEFINED: the plugin's own noise
     bool poisonTransients = false;
     bool operator==(const GraphConfig& o) const;
 };
 
 struct FrameGraph {
     std::unique_ptr<rg::RenderGraph> graph;
-    rg::ImageRef depth, color, shadowMap, lightColor, inscatterOut, table;
+    rg::ImageRef depth, color, shadowMap, lightColor, inscatterOut, table, noise;
     std::string summary;  // which nodes were chosen, and why
 };
+
+ls::SliceAccumulation sliceAccumulation(SliceTarget target);
 
 rg::ImportedImage importDescription(const ImageInput& in);
 rg::ImportedImage importDescription(const ImportState& s);
 
-FrameGraph buildFrameGraph(const GraphConfig& config, const ls::Shared& shared);
+// The plugin's own tiling noise, when a slices frame uses it without an engine image.
+inline constexpr VkExtent2D kNoiseExtent{256, 256};
+inline constexpr VkFormat kNoiseFormat = VK_FORMAT_R8G8_UNORM;
+
+// `slices`: where the planes go, updated by the plugin before each frame (null for the budget).
+FrameGraph buildFrameGraph(const GraphConfig& config, const ls::Shared& shared,
+                           ls::SlicePlacementRef slices = nullptr);
 
 }  // namespace lightscatter::detail

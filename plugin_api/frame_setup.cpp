@@ -286,6 +286,23 @@ void checkSettings(const Settings& s) {
     if (!finite(s.shadowDepthBias)) fail("custom.shadowDepthBias is not finite");
     if (s.coneSamples < 1 || s.coneSamples > 4096)
         fail("custom.coneSamples = " + std::to_string(s.coneSamples) + ": must be between 1 and 4096");
+    if (s.slicePlanes < 2 || s.slicePlanes > 4096)
+        fail("custom.slicePlanes = " + std::to_string(s.slicePlanes) + ": must be between 2 and 4096");
+    if (s.sliceTarget != SliceTarget::Float16 && s.sliceTarget != SliceTarget::Float32 &&
+        s.sliceTarget != SliceTarget::Rgba8Channels)
+        fail("custom.sliceTarget is not a SliceTarget value");
+    if (!(s.sliceRange >= 0.0f) || !finite(s.sliceRange))
+        fail("custom.sliceRange = " + num(s.sliceRange) + ": must be finite and >= 0 (0: automatic)");
+    if (s.sliceBlur > 8) fail("custom.sliceBlur = " + std::to_string(s.sliceBlur) + ": at most 8 pixels");
+    if (!(s.sliceAmbient >= 0.0f) || !finite(s.sliceAmbient))
+        fail("custom.sliceAmbient = " + num(s.sliceAmbient) + ": must be finite and >= 0");
+    if (!(s.noiseAmplitude >= 0.0f && s.noiseAmplitude <= 1.0f))
+        fail("custom.noiseAmplitude = " + num(s.noiseAmplitude) + ": must be in [0, 1]");
+    if (!(s.noiseScale > 0.0f) || !finite(s.noiseScale))
+        fail("custom.noiseScale = " + num(s.noiseScale) + ": must be finite and > 0");
+    for (size_t i = 0; i < s.noiseVelocity.size(); ++i)
+        if (!finite(s.noiseVelocity[i]))
+            fail("custom.noiseVelocity[" + std::to_string(i) + "] is not finite");
 }
 
 bool lightTouchesView(const ls::CameraParams& camera, const ls::LightParams& light,
@@ -339,8 +356,18 @@ FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
         s.settings.coneLimited = f.custom.coneLimited;
         s.settings.coneJitter = f.custom.coneJitter;
         s.settings.shadowSampling = f.custom.shadowSampling;
+        s.settings.slicePlaneScaling = f.custom.slicePlaneScaling;
+        s.settings.sliceRange = f.custom.sliceRange;
+        s.settings.sliceBlur = f.custom.sliceBlur;
+        s.settings.sliceDither = f.custom.sliceDither;
+        s.settings.sliceAmbient = f.custom.sliceAmbient;
+        s.settings.noiseAmplitude = f.custom.noiseAmplitude;
+        s.settings.noiseScale = f.custom.noiseScale;
+        s.settings.noiseVelocity = f.custom.noiseVelocity;
     }
     checkSettings(s.settings);
+    if (!std::isfinite(f.timeSeconds)) fail("timeSeconds is not finite");
+    s.timeSeconds = f.timeSeconds;
 
     // Camera.
     const Camera& c = f.camera;
@@ -397,6 +424,9 @@ FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
     // Images.
     s.shadowed = l.shadowMapSize > 0;
     s.lightColor = f.lightColor.has_value();
+    s.noise = s.settings.noiseAmplitude > 0.0f;
+    s.engineNoise = f.noise.has_value();
+    s.depthAttachment = !withImages || (f.depth.usage & VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT) != 0;
     s.inscatterOut = f.inscatterOut.has_value();
     if (withImages) {
         checkImage(f.depth, "depth", VK_IMAGE_USAGE_SAMPLED_BIT, "SAMPLED");
@@ -426,6 +456,7 @@ FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
                      " does not match light.shadowMapSize " + std::to_string(l.shadowMapSize));
         }
         if (f.lightColor) checkImage(*f.lightColor, "lightColor", VK_IMAGE_USAGE_SAMPLED_BIT, "SAMPLED");
+        if (f.noise) checkImage(*f.noise, "noise", VK_IMAGE_USAGE_SAMPLED_BIT, "SAMPLED");
         if (f.inscatterOut) {
             checkImage(*f.inscatterOut, "inscatterOut", VK_IMAGE_USAGE_STORAGE_BIT, "STORAGE",
                        false);

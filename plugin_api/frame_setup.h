@@ -18,6 +18,10 @@ struct FrameSetup {
     bool shadowed = false;
     bool lightColor = false;
     bool inscatterOut = false;
+    bool noise = false;        // Settings::noiseAmplitude > 0
+    bool engineNoise = false;  // FrameDescription::noise given
+    bool depthAttachment = false;  // depth.usage allows a depth attachment (slices)
+    double timeSeconds = 0.0;
 };
 
 // Checks everything; `withImages` false skips the image handles (the budget has none).

@@ -12,7 +12,7 @@
 // Requirements on the engine's VkDevice: Vulkan 1.3, the extensions requiredDeviceExtensions()
 // lists (VK_KHR_push_descriptor) and the features requiredDeviceFeatures() turns on
 // (synchronization2, dynamicRendering, maintenance4; separateDepthStencilLayouts, hostQueryReset;
-// shaderStorageImageExtendedFormats). The engine tells the plugin what it enabled
+// shaderStorageImageExtendedFormats, shaderClipDistance). The engine tells the plugin what it enabled
 // (VulkanContext::enabledFeatures), and the plugin refuses a device that lacks one.
 //
 // Linking: CMake target lightscatter::plugin, from find_package(lightscatter CONFIG) on an
@@ -48,9 +48,9 @@ using Mat4 = std::array<float, 16>;  // column-major (GLM's layout), maps column
 
 // The methods (docs/methods.md): epipolar sampling (seed 000), brute-force per-pixel marching (the
 // GPU reference), seed 001's arctangent closed form (unshadowed point and spot lights), seed 003's
-// cone-limited fixed-count march, and Auto, which picks one per frame from what the frame holds
-// and says which and why in the FrameReport.
-enum class Method { Epipolar, BruteForce, Analytic, ConeMarch, Auto };
+// cone-limited fixed-count march, seed 002's view-aligned slice planes, and Auto, which picks one
+// per frame from what the frame holds and says which and why in the FrameReport.
+enum class Method { Epipolar, BruteForce, Analytic, ConeMarch, Slices, Auto };
 enum class Profile {
     HighQuality,      // 2048 slices x 1024 samples, 4096^2 shadow map (seed 000)
     Balanced,         // 1024 x 1024, 2048^2
@@ -67,6 +67,13 @@ enum class ShadowFilter { Nearest, Bilinear };
 // interpolating the shadowed fraction of the closed-form unshadowed Lin instead keeps the glow around
 // a light (which no sparse sampling resolves) exact, and changes nothing where there is no glow.
 enum class Interpolation { ShadowedFraction, Inscattering };
+// Where the slices method adds up its planes. Float16: an R16G16B16A16_SFLOAT target, Lin per
+// channel; its 11-bit mantissa stops the error falling beyond about 128 planes (docs/methods.md).
+// Float32: R32G32B32A32_SFLOAT, twice the memory, converges. Rgba8Channels: seed 002's trick for
+// 8-bit blending, monochrome: plane i goes into channel i mod 4 of an R8G8B8A8_UNORM target, the
+// four are summed at the end and tinted by the light's and medium's color; each channel holds a
+// quarter of Settings::sliceRange, and each blend rounds to 1/255 of that.
+enum class SliceTarget { Float16, Float32, Rgba8Channels };
 
 LIGHTSCATTER_API const char* methodName(Method m);    // "epipolar", "brute-force", "analytic", ...
 LIGHTSCATTER_API const char* profileName(Profile p);  // "high-quality", "balanced", ... "custom"
@@ -97,6 +104,32 @@ struct Settings {
     // false: seed 003's low-end mode, no shadow-map look-ups (shafts without shadows). Only
     // cone-march honours it; the other methods refuse it (Auto picks cone-march).
     bool shadowSampling = true;
+    // slices (seed 002). The plane count and target follow the profile (docs/methods.md); the rest
+    // is taken from `custom` with every profile.
+    uint32_t slicePlanes = 128;          // view-aligned planes across the light's volume, 2 to 4096
+    SliceTarget sliceTarget = SliceTarget::Float16;
+    // The seed's scaling of the count: fewer planes, down to an eighth, as the light's volume
+    // shrinks on screen (its depth extent over its distance from the camera).
+    bool slicePlaneScaling = false;
+    // Rgba8Channels only: the luminance of Lin, in Lin's units, that fills the four channels.
+    // 0: from the light and medium (docs/methods.md). Above it the target saturates.
+    float sliceRange = 0.0f;
+    // Rgba8Channels: round each plane's share up or down at random in proportion (stochastic
+    // rounding, after the seed's suggestion of interleaved sampling), so that shares under half an
+    // 8-bit step still add up; false is the seed's plain rounding, which loses them (banding).
+    bool sliceDither = true;
+    uint32_t sliceBlur = 0;              // seed 002's blur at composite: radius in pixels, 0 off
+    // The seed's ambient term beside the inverse square (point and spot lights, 1/m^2): art
+    // direction outside docs/model.md, 0 by default.
+    float sliceAmbient = 0.0f;
+    // Scrolling noise (seed 002): a density multiplier 1 + a (4 n1 n2 - 1), mean 1, from two
+    // samples of a tiling noise texture projected from the light (FrameDescription::noise, or the
+    // plugin's own). Art direction the model does not have; amplitude 0 turns it off. Honoured by
+    // slices only; the other methods refuse a non-zero amplitude.
+    float noiseAmplitude = 0.0f;         // a in [0, 1]
+    float noiseScale = 1.0f;             // a tile's size: metres (directional) or, for point and
+                                         // spot lights, the tangent of the angle it spans
+    std::array<float, 4> noiseVelocity{0.05f, 0.02f, -0.03f, 0.04f};  // tiles per second, two layers
 };
 
 // The settings of a profile (Custom returns the defaults).
@@ -200,6 +233,10 @@ struct FrameDescription {
     std::optional<ImageInput> shadowMap;   // the light's depth (sampled)
     std::optional<ImageInput> lightColor;  // optional light-space color (stained glass), sampled
     std::optional<ImageInput> inscatterOut;  // optional: Lin alone, R32G32B32A32_SFLOAT storage
+    // Optional tiling noise for Settings::noiseAmplitude (sampled, repeating; red and green are two
+    // independent layers with values in [0, 1] and mean 0.5). Without it the plugin makes its own.
+    std::optional<ImageInput> noise;
+    double timeSeconds = 0.0;  // scrolls the noise
     Camera camera;
     Light light;
     Medium medium;
@@ -272,10 +309,11 @@ struct Budget {
     std::optional<SeedFigure> seed;  // the seed's published figure for this profile
 };
 
-// The epipolar method's memory for a profile, screen and shadow-map size; needs no GPU.
+// A method's memory for a profile, screen and shadow-map size; needs no GPU. Epipolar and slices
+// (the methods whose textures depend on the profile).
 LIGHTSCATTER_API Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
                                uint32_t shadowMapSize, LightType light = LightType::Spot,
-                               const Settings* custom = nullptr);
+                               const Settings* custom = nullptr, Method method = Method::Epipolar);
 
 // The device extensions the plugin needs; add them to VkDeviceCreateInfo::ppEnabledExtensionNames.
 LIGHTSCATTER_API std::vector<const char*> requiredDeviceExtensions();

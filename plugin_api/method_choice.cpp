@@ -41,6 +41,14 @@ std::string analyticNotice(const FrameSetup& s) {
     return notice;
 }
 
+// Seed 002's noise is a density the model does not have; only the slice planes sample it.
+void refuseNoise(const FrameSetup& s, Method m) {
+    if (s.noise)
+        refuse("custom.noiseAmplitude > 0 (seed 002's scrolling noise) is honoured by slices only; "
+               "method " + std::string(methodName(m)) +
+               " integrates the model's homogeneous medium (use slices or auto, or amplitude 0)");
+}
+
 }  // namespace
 
 MethodChoice chooseMethod(Method requested, const FrameSetup& s, bool lightReachesView) {
@@ -56,6 +64,7 @@ MethodChoice chooseMethod(Method requested, const FrameSetup& s, bool lightReach
             if (s.shadowed)
                 refuse("method analytic (seed 001) cannot cast shadows; this frame has a shadow map "
                        "(use auto, epipolar, brute-force or cone-march)");
+            refuseNoise(s, requested);
             c.notice = analyticNotice(s);
             return c;
         case Method::Epipolar:
@@ -64,8 +73,15 @@ MethodChoice chooseMethod(Method requested, const FrameSetup& s, bool lightReach
                 refuse("custom.shadowSampling = false (seed 003's low-end mode) is honoured by "
                        "cone-march only; method " + std::string(methodName(requested)) +
                        " samples the shadow map (use cone-march or auto)");
+            refuseNoise(s, requested);
             return c;
         case Method::ConeMarch:
+            refuseNoise(s, requested);
+            return c;
+        case Method::Slices:
+            if (!s.depthAttachment)
+                refuse("method slices (seed 002) depth-tests its planes against the engine's depth: "
+                       "depth.usage needs DEPTH_STENCIL_ATTACHMENT beside SAMPLED");
             return c;
         case Method::Auto:
             break;
@@ -73,6 +89,13 @@ MethodChoice chooseMethod(Method requested, const FrameSetup& s, bool lightReach
     if (!lightReachesView) {
         c.method = Method::Epipolar;
         c.reason = "the light reaches no view ray (or nothing scatters): extinction only";
+    } else if (s.noise && s.depthAttachment) {
+        c.method = Method::Slices;
+        c.reason = "scrolling noise (custom.noiseAmplitude > 0): seed 002's slice planes, the only "
+                   "method that samples it";
+    } else if (s.noise) {
+        refuse("custom.noiseAmplitude > 0 needs method slices, which depth-tests against the "
+               "engine's depth: depth.usage needs DEPTH_STENCIL_ATTACHMENT beside SAMPLED");
     } else if (skipShadows) {
         c.method = Method::ConeMarch;
         c.reason = "shadow sampling is off: seed 003's low-end mode, which only cone-march has";

@@ -8,18 +8,22 @@ struct ProfileRow {
     Profile profile;
     const char* name;
     uint32_t slices, samples, shadowMap;
+    uint32_t planes;          // the slices method (seed 002)
+    SliceTarget sliceTarget;
 };
 
 // Seed 000, "Performance": 2560x1600 on a GeForce GTX 680 and the smaller set used on a Quadro 1000M
-// and Intel HD Graphics.
+// and Intel HD Graphics. The plane counts are ours (docs/methods.md); high-performance is seed 002's
+// own configuration, 100 planes into the four channels of an 8-bit target.
+constexpr SliceTarget kF16 = SliceTarget::Float16, kF32 = SliceTarget::Float32, kRgba8 = SliceTarget::Rgba8Channels;
 constexpr ProfileRow kProfiles[] = {
-    {Profile::HighQuality, "high-quality", 2048, 1024, 4096},
-    {Profile::Balanced, "balanced", 1024, 1024, 2048},
-    {Profile::HighPerformance, "high-performance", 1024, 512, 1024},
-    {Profile::LowHighQuality, "low-high-quality", 1024, 1024, 2048},
-    {Profile::LowBalanced, "low-balanced", 512, 512, 1024},
-    {Profile::LowHighPerformance, "low-high-performance", 512, 256, 512},
-    {Profile::Custom, "custom", 1024, 1024, 2048},
+    {Profile::HighQuality, "high-quality", 2048, 1024, 4096, 256, kF32},
+    {Profile::Balanced, "balanced", 1024, 1024, 2048, 128, kF16},
+    {Profile::HighPerformance, "high-performance", 1024, 512, 1024, 100, kRgba8},
+    {Profile::LowHighQuality, "low-high-quality", 1024, 1024, 2048, 128, kF16},
+    {Profile::LowBalanced, "low-balanced", 512, 512, 1024, 64, kF16},
+    {Profile::LowHighPerformance, "low-high-performance", 512, 256, 512, 48, kRgba8},
+    {Profile::Custom, "custom", 1024, 1024, 2048, 128, kF16},
 };
 
 constexpr std::pair<Method, const char*> kMethods[] = {
@@ -27,6 +31,7 @@ constexpr std::pair<Method, const char*> kMethods[] = {
     {Method::BruteForce, "brute-force"},
     {Method::Analytic, "analytic"},
     {Method::ConeMarch, "cone-march"},
+    {Method::Slices, "slices"},
     {Method::Auto, "auto"},
 };
 
@@ -75,6 +80,8 @@ Settings profileSettings(Profile profile) {
         s.slices = row.slices;
         s.samplesPerSlice = row.samples;
         s.shadowMapSize = row.shadowMap;
+        s.slicePlanes = row.planes;
+        s.sliceTarget = row.sliceTarget;
     }
     return s;
 }

@@ -8,6 +8,7 @@
 #include "method_choice.h"
 #include "lightscatter.h"
 #include "point_table.h"
+#include "tiling_noise.h"
 #include "rendergraph/compile.h"
 #include "rendergraph/device_caps_vulkan.h"
 #include "rendergraph/executor.h"
@@ -55,6 +56,7 @@ struct RecordedFrame {
     std::string method, reason, notice;
     std::vector<std::string> passNames;
     bool tableRefilled = false;
+    bool noiseMade = false;
 };
 
 }  // namespace
@@ -108,6 +110,14 @@ struct Plugin::Impl {
         if (frame.lightColor) c.lightColor = state(*frame.lightColor);
         if (frame.inscatterOut) c.inscatterOut = state(*frame.inscatterOut);
         c.poisonTransients = frame.debug.poisonTransients || poisonFromEnvironment();
+        c.reversedZ = setup.camera.reversedZ;
+        if (c.method == Method::Slices) {
+            c.sliceTarget = detail::sliceAccumulation(setup.settings.sliceTarget);
+            c.sliceBlur = setup.settings.sliceBlur;
+            c.sliceDither = setup.settings.sliceDither;
+            c.noise = setup.noise;
+            if (setup.noise && frame.noise) c.engineNoise = state(*frame.noise);
+        }
         // Only the table-based nodes (epipolar, brute force, the unshadowed closed form) read it.
         const bool needsTable = c.touchesView && c.light != ls::LightKind::Directional &&
                                 (c.method == Method::Epipolar || c.method == Method::BruteForce);
@@ -121,6 +131,23 @@ struct Plugin::Impl {
         shared->spec = spec;
         shared->constants = ls::makeFrameConstants(setup.camera, setup.light, setup.medium,
                                                    setup.epipolar, setup.screen, table);
+        if (c.method == Method::Slices) {
+            ls::SliceSettings ss;
+            ss.planes = setup.settings.slicePlanes;
+            ss.planeScaling = setup.settings.slicePlaneScaling;
+            ss.range = setup.settings.sliceRange;
+            ss.ambient = setup.settings.sliceAmbient;
+            ss.noiseAmplitude = setup.settings.noiseAmplitude;
+            ss.noiseScale = setup.settings.noiseScale;
+            const auto& v = setup.settings.noiseVelocity;
+            ss.noiseVelocity = {v[0], v[1], v[2], v[3]};
+            *slicePlacement = ls::placeSlices(setup.camera, setup.light, setup.medium, ss, setup.timeSeconds);
+        }
+        noiseMade = false;
+        if (c.noise && c.engineNoise.format == VK_FORMAT_UNDEFINED) {
+            if (!tilingNoise) tilingNoise = std::make_unique<detail::TilingNoise>(device);
+            noiseMade = tilingNoise->ensure(shared);
+        }
         if (needsTable) {
             if (!pointTable) pointTable = std::make_unique<detail::PointTable>(device, kTableWidth, kTableHeight);
             tableRefilled = pointTable->update(shared);
@@ -134,7 +161,7 @@ struct Plugin::Impl {
             executor.reset();
             config.reset();
             ++graphGeneration;
-            FrameGraph built = detail::buildFrameGraph(c, shared);
+            FrameGraph built = detail::buildFrameGraph(c, shared, slicePlacement);
             rg::CompileOptions options;
             options.poisonTransients = c.poisonTransients;
             rg::CompiledGraph compiled = rg::compile(*built.graph, caps, options);
@@ -151,6 +178,21 @@ struct Plugin::Impl {
             fg.graph->updateImport(fg.lightColor, detail::importDescription(*frame.lightColor));
         if (fg.inscatterOut.valid())
             fg.graph->updateImport(fg.inscatterOut, detail::importDescription(*frame.inscatterOut));
+        if (fg.noise.valid()) {
+            if (frame.noise) {
+                fg.graph->updateImport(fg.noise, detail::importDescription(*frame.noise));
+            } else {
+                rg::ImportedImage n = detail::importDescription(
+                    ImportState{detail::kNoiseFormat, detail::kNoiseExtent,
+                                VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT,
+                                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+                n.image = tilingNoise->image();
+                n.initialStages = n.finalStages = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+                n.initialAccess = VK_ACCESS_2_NONE;
+                n.finalAccess = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
+                fg.graph->updateImport(fg.noise, n);
+            }
+        }
         if (fg.table.valid()) {
             rg::ImportedImage t = detail::importDescription(c.table);
             t.image = pointTable->image();
@@ -181,6 +223,7 @@ struct Plugin::Impl {
         for (const auto& p : executor->compiled().passes)
             f.passNames.push_back(fg.graph->passes()[p.pass].name);
         f.tableRefilled = tableRefilled;
+        f.noiseMade = noiseMade;
         f.method = config && config->touchesView ? methodName(lastChoice.method) : "none";
         f.reason = lastChoice.reason.empty() ? fg.summary : lastChoice.reason;
         f.notice = lastChoice.notice;
@@ -222,6 +265,7 @@ struct Plugin::Impl {
         r.reason = f->reason;
         r.notice = f->notice;
         if (f->tableRefilled) r.setupPasses.push_back("point-light table");
+        if (f->noiseMade) r.setupPasses.push_back("tiling noise");
         return r;
     }
 
@@ -231,6 +275,10 @@ struct Plugin::Impl {
     VkFormat depthStencil = VK_FORMAT_UNDEFINED;
     std::unique_ptr<detail::PointTable> pointTable;
     bool tableRefilled = false;
+    std::unique_ptr<detail::TilingNoise> tilingNoise;
+    bool noiseMade = false;
+    // Where this frame's slice planes go; the slices nodes read it when they record.
+    std::shared_ptr<ls::SlicePlacement> slicePlacement = std::make_shared<ls::SlicePlacement>();
     std::optional<GraphConfig> config;
     bool rehearsed = false;
     detail::MethodChoice lastChoice;  // of the frame prepared last

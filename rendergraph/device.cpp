@@ -362,6 +362,7 @@ void Device::createDevice(const DeviceOptions& options) {
     VkPhysicalDeviceFeatures2& features = enabled_.core;
     features.pNext = &f11;
     features.features.shaderStorageImageExtendedFormats = supported.shaderStorageImageExtendedFormats;
+    features.features.shaderClipDistance = supported.shaderClipDistance;
     features.features.fragmentStoresAndAtomics = supported.fragmentStoresAndAtomics;
     features.features.shaderImageGatherExtended = supported.shaderImageGatherExtended;
     features.features.independentBlend = supported.independentBlend;

@@ -308,11 +308,21 @@ Samplers::Samplers(const Device& device) : device_(device.device()) {
         throw;
     }
     device.setName(linear_, VK_OBJECT_TYPE_SAMPLER, "linear clamp sampler");
+    info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+    try {
+        RG_VK_CREATE(vkCreateSampler(device_, &info, nullptr, &linearRepeat_));
+    } catch (...) {
+        vkDestroySampler(device_, nearest_, nullptr);
+        vkDestroySampler(device_, linear_, nullptr);
+        throw;
+    }
+    device.setName(linearRepeat_, VK_OBJECT_TYPE_SAMPLER, "linear repeat sampler");
 }
 
 Samplers::~Samplers() {
     vkDestroySampler(device_, nearest_, nullptr);
     vkDestroySampler(device_, linear_, nullptr);
+    vkDestroySampler(device_, linearRepeat_, nullptr);
 }
 
 }  // namespace rg

@@ -131,7 +131,8 @@ private:
     std::vector<Entry> entries_;
 };
 
-// The two samplers the passes need: nearest and linear, clamped to the edge.
+// The samplers the passes need: nearest and linear clamped to the edge, and linear repeating (for
+// tiling textures).
 class Samplers {
 public:
     explicit Samplers(const Device& device);
@@ -140,11 +141,13 @@ public:
     Samplers& operator=(const Samplers&) = delete;
     VkSampler nearest() const { return nearest_; }
     VkSampler linear() const { return linear_; }
+    VkSampler linearRepeat() const { return linearRepeat_; }
 
 private:
     VkDevice device_;
     VkSampler nearest_ = VK_NULL_HANDLE;
     VkSampler linear_ = VK_NULL_HANDLE;
+    VkSampler linearRepeat_ = VK_NULL_HANDLE;
 };
 
 }  // namespace rg

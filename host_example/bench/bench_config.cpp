@@ -71,10 +71,10 @@ class ConfigReader {
         for (const auto& [key, value] : sweeps.items())
             if (key != "slices" && key != "samples" && key != "initialStep" &&
                 key != "shadowMapSize" && key != "size" && key != "minMaxTrees" &&
-                key != "coneSamples" && key != "coneModes")
+                key != "coneSamples" && key != "coneModes" && key != "slicePlanes" && key != "sliceTargets")
                 fail("sweeps: unknown key '" + key +
                      "' (known: slices, samples, initialStep, shadowMapSize, size, minMaxTrees, "
-                     "coneSamples, coneModes)");
+                     "coneSamples, coneModes, slicePlanes, sliceTargets)");
         for (const std::string& scene : c.scenes) expand(c, scene, methods, profiles, sweeps);
         return c;
     }
@@ -241,6 +241,26 @@ class ConfigReader {
                 r.settings.coneSamples = samples;
                 r.settings.coneLimited = m != "naive";
                 r.settings.shadowSampling = m != "no-shadow-sampling";
+                c.runs.push_back(r);
+            }
+        }
+        // Seed 002: the slices method with each plane count and accumulation target.
+        const json planes = values("slicePlanes"), targets = values("sliceTargets");
+        if (!targets.empty() && planes.empty()) fail("sweeps.sliceTargets needs sweeps.slicePlanes");
+        for (const json& n : planes) {
+            const uint32_t count = whole(n, "sweeps.slicePlanes[]", 2, 4096);
+            for (const json& target : targets.empty() ? json::array({"float16"}) : targets) {
+                const std::string t = target.is_string() ? target.get<std::string>() : target.dump();
+                if (t != "float16" && t != "float32" && t != "rgba8" && t != "rgba8-dither")
+                    fail("sweeps.sliceTargets[] = " + target.dump() +
+                         ": must be float16, float32, rgba8 (the seed's rounding) or rgba8-dither");
+                BenchRun r = balanced("planes", "slices " + std::to_string(count) + " " + t);
+                r.method = lightscatter::Method::Slices;
+                r.settings.slicePlanes = count;
+                r.settings.sliceTarget = t == "float16"   ? lightscatter::SliceTarget::Float16
+                                         : t == "float32" ? lightscatter::SliceTarget::Float32
+                                                          : lightscatter::SliceTarget::Rgba8Channels;
+                r.settings.sliceDither = t == "rgba8-dither";
                 c.runs.push_back(r);
             }
         }

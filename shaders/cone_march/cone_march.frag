@@ -18,6 +18,7 @@ layout(binding = 6) uniform sampler2D shadowMap;
 layout(binding = 8) uniform sampler2D lightColorMap;
 #endif
 #include "light_color.glsl"
+#include "light_at.glsl"
 layout(location = 0) out vec4 outInscatter;
 
 // Options are specialisation constants: branching on push constants alone makes lavapipe (Mesa
@@ -29,36 +30,6 @@ layout(constant_id = 12) const bool kJitter = false;
 // Interleaved gradient noise (Jimenez 2014): a per-pixel offset in [0, 1) whose error looks like
 // fine noise instead of the bands a fixed offset leaves.
 float pixelNoise(vec2 p) { return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715)))); }
-
-// Irradiance times visibility and light color reaching P, and cos of the scattering angle.
-vec3 lightAt(vec3 P, vec3 v, out float cosTheta) {
-    vec3 irr;
-    if (kLightType == LIGHT_DIRECTIONAL) {
-        cosTheta = dot(v, -frame.lightDir.xyz);
-        irr = frame.lightIntensity.rgb;
-    } else {
-        vec3 toLight = frame.lightPos.xyz - P;
-        float r = length(toLight);
-        vec3 l = r > 0.0 ? toLight / r : -frame.lightDir.xyz;
-        cosTheta = dot(v, l);
-        float r0 = frame.betaT.w;
-        irr = frame.lightIntensity.rgb * exp(-frame.betaT.rgb * r) / (r * r + r0 * r0);
-        if (kLightType == LIGHT_SPOT && (dot(-l, frame.lightDir.xyz) < frame.lightDir.w ||
-                                         r > frame.lightIntensity.w))
-            return vec3(0.0);  // outside the cone or the range: the naive march pays for these
-    }
-#if LS_SHADOW_MAP || LS_LIGHT_COLOR
-    vec4 X = frame.lightViewProj * vec4(P, 1.0);
-    if (X.w > 0.0) {
-        vec2 uv = X.xy / X.w * 0.5 + 0.5;
-#if LS_SHADOW_MAP
-        irr *= shadowVisibility(uv, toStandardDepth(X.z / X.w));
-#endif
-        irr *= lightColorAt(uv);
-    }
-#endif
-    return irr;
-}
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -75,7 +46,7 @@ void main() {
             float s = t0 + (float(i) + offset) * step;
             vec3 P = C + s * v;
             float cosTheta;
-            vec3 irr = lightAt(P, v, cosTheta);
+            vec3 irr = lightAt(P, v, 0.0, cosTheta);
             lin += exp(-frame.betaT.rgb * s) * phaseSum(cosTheta) * irr;
         }
         lin *= step;

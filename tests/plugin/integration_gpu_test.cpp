@@ -139,6 +139,7 @@ TEST_F(PluginIntegrationGpu, ADeviceWithoutARequiredFeatureIsRefusedNamingIt) {
         {"synchronization2", [](auto& f) { f.vulkan13.synchronization2 = VK_FALSE; }},
         {"shaderStorageImageExtendedFormats",
          [](auto& f) { f.core.features.shaderStorageImageExtendedFormats = VK_FALSE; }},
+        {"shaderClipDistance", [](auto& f) { f.core.features.shaderClipDistance = VK_FALSE; }},
     };
     for (const Case& c : cases) {
         lightscatter::DeviceFeatures features = lightscatter::requiredDeviceFeatures();

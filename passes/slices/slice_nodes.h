@@ -1,0 +1,58 @@
+#pragma once
+// Seed 002 (Mitchell, "Light Shaft Rendering") as nodes: view-aligned planes across the light's
+// volume, additively blended into an accumulation target and depth-tested against the engine's
+// depth, then resolved into Lin. And the plugin's own tiling noise, made once.
+#include <memory>
+
+#include "shared/node_inputs.h"
+#include "slice_geometry.h"
+
+namespace ls {
+
+enum class SliceAccumulation { Float16, Float32, Rgba8Channels };
+
+// Updated by the plugin before each frame is recorded; the nodes read it when they record.
+using SlicePlacementRef = std::shared_ptr<const SlicePlacement>;
+
+struct SlicePlanesInputs {
+    rg::BufferRef constants;  // the frame's FrameConstants
+    rg::ImageRef depth;       // the engine's depth: a read-only depth attachment
+    rg::ImageRef shadowMap;   // invalid: no shadow-map sampling
+    rg::ImageRef lightColor;  // the cookie, in the shadow map's space; invalid without one
+    rg::ImageRef noise;       // tiling noise (red, green layers); invalid: no noise
+};
+
+struct SlicePlanesOptions {
+    SliceAccumulation target = SliceAccumulation::Float16;
+    bool dither = false;     // Rgba8Channels: stochastic rounding of each plane's share
+    bool reversedZ = false;  // the engine's depth convention, for the depth test's direction
+};
+
+// Returns the planes' sum: R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT (Lin, rgb), or R8G8B8A8_UNORM
+// (luminance, one quarter of the planes per channel), screen-sized.
+rg::ImageRef addSlicePlanes(rg::RenderGraph& graph, const Shared& shared, SlicePlacementRef placement,
+                            const SlicePlanesInputs& in, const SlicePlanesOptions& options);
+
+struct SliceResolveInputs {
+    rg::BufferRef constants;
+    rg::ImageRef cameraZ;   // R32F, screen
+    rg::ImageRef planeSum;  // addSlicePlanes' result
+};
+
+struct SliceResolveOptions {
+    SliceAccumulation target = SliceAccumulation::Float16;
+    uint32_t blurRadius = 0;            // pixels; 0: no blur
+    bool closedFormOutsideSlab = false; // directional lights: add the rays' parts outside the planes
+};
+
+// Whether the planes' sum needs resolving, or already is Lin.
+bool sliceResolveNeeded(const SliceResolveOptions& options);
+
+// Returns Lin (R16G16B16A16_SFLOAT, screen).
+rg::ImageRef addSliceResolve(rg::RenderGraph& graph, const Shared& shared, SlicePlacementRef placement,
+                             const SliceResolveInputs& in, const SliceResolveOptions& options);
+
+// Fills `noise` (R8G8_UNORM, storage) with two layers of tiling value noise.
+rg::ImageRef addTilingNoise(rg::RenderGraph& graph, const Shared& shared, rg::ImageRef noise);
+
+}  // namespace ls

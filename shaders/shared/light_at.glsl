@@ -1,0 +1,41 @@
+// What reaches one point of a camera ray from the light: the irradiance of docs/model.md (with the
+// light's extinction on the way, the spot's cone and range), times shadow-map visibility and the
+// light color when the including shader has them, and the cosine of the scattering angle. Used by
+// the methods that sample the integrand at points (cone-march, slices).
+// The including shader defines LS_SHADOW_MAP and LS_LIGHT_COLOR (0 or 1), declares `shadowMap` and
+// includes shadow.glsl when LS_SHADOW_MAP, and includes light_color.glsl.
+#ifndef LS_LIGHT_AT_GLSL
+#define LS_LIGHT_AT_GLSL
+#include "frame.glsl"
+
+// `ambient` (1/m^2, point and spot lights): seed 002's term beside the inverse square; 0 is the model.
+vec3 lightAt(vec3 P, vec3 v, float ambient, out float cosTheta) {
+    vec3 irr;
+    if (kLightType == LIGHT_DIRECTIONAL) {
+        cosTheta = dot(v, -frame.lightDir.xyz);
+        irr = frame.lightIntensity.rgb;
+    } else {
+        vec3 toLight = frame.lightPos.xyz - P;
+        float r = length(toLight);
+        vec3 l = r > 0.0 ? toLight / r : -frame.lightDir.xyz;
+        cosTheta = dot(v, l);
+        float r0 = frame.betaT.w;
+        irr = frame.lightIntensity.rgb * exp(-frame.betaT.rgb * r) * (1.0 / (r * r + r0 * r0) + ambient);
+        if (kLightType == LIGHT_SPOT && (dot(-l, frame.lightDir.xyz) < frame.lightDir.w ||
+                                         r > frame.lightIntensity.w))
+            return vec3(0.0);  // outside the cone or the range
+    }
+#if LS_SHADOW_MAP || LS_LIGHT_COLOR
+    vec4 X = frame.lightViewProj * vec4(P, 1.0);
+    if (X.w > 0.0) {
+        vec2 uv = X.xy / X.w * 0.5 + 0.5;
+#if LS_SHADOW_MAP
+        irr *= shadowVisibility(uv, toStandardDepth(X.z / X.w));
+#endif
+        irr *= lightColorAt(uv);
+    }
+#endif
+    return irr;
+}
+
+#endif

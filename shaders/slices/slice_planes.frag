@@ -1,0 +1,95 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// One plane's share of Lin at one pixel: the integrand of docs/model.md at the plane's point
+// (transmittance to the camera, phase function, the light's irradiance, shadow-map visibility,
+// light color as the seed's cookie) times the length of ray between two planes, spacing / cos of
+// the ray's angle to the view axis. The seed's scrolling noise multiplies the density. Planes
+// behind the scene never get here: the engine's depth rejects them.
+// Float16 target: rgb += the share. Rgba8Channels (kChannels): the share's luminance, scaled to the
+// target's range, goes to channel (plane mod 4) only (seed 002's precision trick).
+#include "camera.glsl"
+#include "math.glsl"
+#include "slice_push.glsl"
+#if LS_SHADOW_MAP
+layout(binding = 6) uniform sampler2D shadowMap;
+#include "shadow.glsl"
+#endif
+#if LS_LIGHT_COLOR
+layout(binding = 8) uniform sampler2D lightColorMap;
+#endif
+#include "light_color.glsl"
+#include "light_at.glsl"
+#if LS_NOISE
+layout(binding = 9) uniform sampler2D noiseMap;  // repeating
+#endif
+
+layout(constant_id = 10) const bool kChannels = false;
+// 8-bit target: round each plane's share to the target's grid up or down at random, in proportion
+// (stochastic rounding), so that shares below half a step add up on average instead of vanishing.
+layout(constant_id = 11) const bool kDither = false;
+
+layout(location = 0) in vec3 worldPos;
+layout(location = 1) flat in int plane;
+layout(location = 0) out vec4 outShare;
+
+const vec3 kLuminance = vec3(0.2126, 0.7152, 0.0722);
+
+#if LS_NOISE
+// Coordinates projected from the light: across a directional light's beam in metres, by angle
+// (tangent) from a point or spot light, on the cube face it faces for a point light.
+vec2 noiseCoordinates(vec3 P) {
+    vec3 a = frame.lightDir.xyz;
+    vec3 helper = abs(a.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
+    vec3 r = normalize(cross(a, helper)), u = cross(r, a);
+    if (kLightType == LIGHT_DIRECTIONAL) return vec2(dot(P, r), dot(P, u));
+    vec3 D = P - frame.lightPos.xyz;
+    if (kLightType == LIGHT_SPOT) return vec2(dot(D, r), dot(D, u)) / max(dot(D, a), 1e-6);
+    vec3 m = abs(D);
+    if (m.x >= m.y && m.x >= m.z) return D.yz / m.x;
+    if (m.y >= m.z) return D.xz / m.y;
+    return D.xy / m.z;
+}
+
+// Mean 1 for independent layers of mean 1/2; amplitude 0 gives exactly 1.
+float densityNoise(vec3 P) {
+    vec2 q = noiseCoordinates(P) * slice.params.z;
+    float n1 = texture(noiseMap, q + slice.noise.xy).r;
+    float n2 = texture(noiseMap, q * 1.37 + vec2(0.31, 0.73) + slice.noise.zw).g;
+    return max(1.0 + slice.params.y * (4.0 * n1 * n2 - 1.0), 0.0);
+}
+#endif
+
+// A uniform number in [0, 1) per pixel and plane.
+float planeHash(uvec2 p, uint k) {
+    uint h = p.x * 0x8da6b343u ^ p.y * 0xd8163841u ^ k * 0xcb1ab31fu;
+    h ^= h >> 15;
+    h *= 0x2c1b3c6du;
+    h ^= h >> 12;
+    h *= 0x297a2d39u;
+    h ^= h >> 15;
+    return float(h >> 8) / 16777216.0;
+}
+
+void main() {
+    vec3 C = frame.cameraPos.xyz;
+    vec3 d = worldPos - C;
+    float s = length(d);
+    if (s > slice.params.w) discard;  // past the sky distance
+    vec3 v = d / s;
+    float cosTheta;
+    vec3 irr = lightAt(worldPos, v, slice.params.x, cosTheta);
+    if (all(equal(irr, vec3(0.0)))) discard;
+    float ds = slice.boxMin.w / max(dot(v, frame.cameraForward.xyz), 1e-4);
+    vec3 share = exp(-frame.betaT.rgb * s) * phaseSum(cosTheta) * irr * ds;
+#if LS_NOISE
+    share *= densityNoise(worldPos);
+#endif
+    if (kChannels) {
+        vec4 mask = vec4(equal(ivec4(plane & 3), ivec4(0, 1, 2, 3)));
+        float value = dot(share, kLuminance) * slice.boxMax.w;
+        if (kDither) value = floor(value * 255.0 + planeHash(uvec2(gl_FragCoord.xy), uint(plane))) / 255.0;
+        outShare = mask * value;
+    } else {
+        outShare = vec4(share, 0.0);
+    }
+}

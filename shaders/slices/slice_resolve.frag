@@ -1,0 +1,51 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Turns the planes' sum into Lin: the four 8-bit channels summed and tinted (kChannels), seed
+// 002's blur at composite (kBlurRadius pixels, a 5x5 tent of bilinear taps), and for a directional
+// light the parts of each ray in front of and behind the planes' slab, in closed form: that light
+// reaches everywhere, and outside the shadow map's box nothing shadows it.
+#include "camera.glsl"
+#include "integrate.glsl"
+layout(binding = 1) uniform sampler2D cameraZ;
+layout(binding = 2) uniform sampler2D planeSum;  // linear, clamped
+
+layout(constant_id = 10) const bool kChannels = false;
+layout(constant_id = 11) const int kBlurRadius = 0;
+layout(constant_id = 12) const bool kClosedFormOutsideSlab = false;
+
+layout(push_constant) uniform ResolvePush {
+    vec4 tint;  // rgb: Lin per unit of the channels' sum (the light's and medium's color x range)
+    vec4 slab;  // x, y: the view depths the planes cover
+} resolve;
+
+layout(location = 0) out vec4 outInscatter;
+
+vec4 planeSumAt(vec2 pixelCenter) {
+    vec2 uv = pixelCenter * frame.screenSize.zw;
+    if (kBlurRadius == 0) return texelFetch(planeSum, ivec2(pixelCenter), 0);
+    vec4 sum = vec4(0.0);
+    float weights = 0.0;
+    float step = float(kBlurRadius) * 0.5;
+    for (int y = -2; y <= 2; ++y)
+        for (int x = -2; x <= 2; ++x) {
+            float w = float(3 - abs(x)) * float(3 - abs(y));
+            sum += w * textureLod(planeSum, uv + vec2(x, y) * step * frame.screenSize.zw, 0.0);
+            weights += w;
+        }
+    return sum / weights;
+}
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    vec4 p = planeSumAt(gl_FragCoord.xy);
+    vec3 lin = kChannels ? (p.r + p.g + p.b + p.a) * resolve.tint.rgb : p.rgb;
+    if (kClosedFormOutsideSlab && kLightType == LIGHT_DIRECTIONAL) {
+        vec3 C = frame.cameraPos.xyz;
+        vec3 v = pixelRayDirection(pixel);
+        float S = rayLength(texelFetch(cameraZ, pixel, 0).r, v);
+        float c = max(dot(v, frame.cameraForward.xyz), 1e-4);
+        lin += unshadowedInscatter(C, v, 0.0, min(S, resolve.slab.x / c));
+        lin += unshadowedInscatter(C, v, resolve.slab.y / c, S);
+    }
+    outInscatter = vec4(lin, 1.0);
+}
