@@ -7,8 +7,16 @@ namespace plugin_test {
 TestFrame::TestFrame(const rg::Device& device, FrameSpec spec) : device_(device), spec_(std::move(spec)) {
     light_ = spec_.light;
     const VkExtent2D s = spec_.screen;
-    depth_ = std::make_unique<TestImage>(device, VK_FORMAT_D32_SFLOAT, s, VK_IMAGE_USAGE_SAMPLED_BIT,
+    const VkImageUsageFlags depthUsage =
+        VK_IMAGE_USAGE_SAMPLED_BIT | (spec_.depthAttachment ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT : 0);
+    depth_ = std::make_unique<TestImage>(device, VK_FORMAT_D32_SFLOAT, s, depthUsage,
                                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, "test depth");
+    if (!spec_.noise.empty()) {
+        noise_ = std::make_unique<TestImage>(device, VK_FORMAT_R32G32B32A32_SFLOAT, VkExtent2D{16, 16},
+                                             VK_IMAGE_USAGE_SAMPLED_BIT, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                             "test noise");
+        noise_->upload(spec_.noise);
+    }
     depth_->upload(spec_.depthOverride.empty() ? renderDepth(spec_.scene, spec_.view, s.width, s.height)
                                                : spec_.depthOverride);
     color_ = std::make_unique<TestImage>(device, VK_FORMAT_R32G32B32A32_SFLOAT, s, VK_IMAGE_USAGE_STORAGE_BIT,
@@ -63,6 +71,7 @@ lightscatter::FrameDescription TestFrame::description(lightscatter::Method metho
     f.inscatterOut = out_->input();
     if (shadow_) f.shadowMap = shadow_->input();
     if (lightColor_) f.lightColor = lightColor_->input();
+    if (noise_) f.noise = noise_->input();
     f.camera = spec_.view.camera();
     f.light = light_;
     f.medium = spec_.medium;

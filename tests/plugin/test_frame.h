@@ -22,6 +22,8 @@ struct FrameSpec {
     bool shadowed = true;
     std::vector<float> depthOverride;              // replaces the ray-cast depth when not empty
     bool coloredLight = false;                     // stained glass: light-space color texture
+    bool depthAttachment = true;                   // the depth image allows a depth attachment
+    std::vector<float> noise;                      // 16x16 RGBA noise texels for slices; empty: none
 };
 
 class TestFrame {
@@ -39,7 +41,7 @@ private:
     const rg::Device& device_;
     FrameSpec spec_;
     lightscatter::Light light_;
-    std::unique_ptr<TestImage> depth_, color_, shadow_, out_, lightColor_;
+    std::unique_ptr<TestImage> depth_, color_, shadow_, out_, lightColor_, noise_;
 };
 
 // Default spot light over the grille, and a directional light through it.

@@ -1,0 +1,248 @@
+// Seed 002's slice planes (`slices`) on the GPU: convergence to the float64 model with the plane
+// count, the 8-bit channel target against the float target within its quantisation, the cookie's
+// stripes where brute force puts them, the noise's paths, and its refusals.
+#include <cmath>
+#include <cstdio>
+
+#include "float64_model/inscatter_integral.h"
+#include "model_conversion.h"
+#include "plugin_fixture.h"
+
+using namespace plugin_test;
+using lightscatter::Method;
+using lightscatter::SliceTarget;
+
+namespace {
+
+// The spot over the grille, without a shadow map: every ray's Lin is the model's unshadowed
+// integral, which ls::ref integrates to float64 precision.
+FrameSpec flatSpot() {
+    FrameSpec s;
+    s.screen = {48, 32};
+    s.view = defaultView(s.screen);
+    s.light = spotOverGrille();
+    s.medium = fog();
+    s.shadowed = false;
+    return s;
+}
+
+std::vector<float> float64Reference(const TestFrame& frame) {
+    const FrameSpec& s = frame.spec();
+    const auto medium = refMedium(s.medium);
+    const auto light = refLight(frame.light());
+    std::vector<float> want;
+    for (uint32_t y = 0; y < s.screen.height; ++y)
+        for (uint32_t x = 0; x < s.screen.width; ++x) {
+            const PixelRay r = pixelRay(s.scene, s.view, s.screen.width, s.screen.height, x, y, s.medium.maxDistance);
+            const glm::dvec3 v = ls::ref::integrateInscatter(medium, light, {r.origin, r.dir, r.S}).value;
+            want.insert(want.end(), {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z), 0.0f});
+        }
+    return want;
+}
+
+lightscatter::Settings sliceSettings(uint32_t planes, SliceTarget target) {
+    lightscatter::Settings s = smallSettings();
+    s.slicePlanes = planes;
+    s.sliceTarget = target;
+    return s;
+}
+
+double luminance(const float* p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }
+
+}  // namespace
+
+class SlicesGpu : public PluginGpuTest {};
+
+// More planes, closer to the model: the midpoint rule's error falls like 1/planes with a float32
+// target. A float16 target stops falling where its 11-bit mantissa rounds each plane's share.
+TEST_F(SlicesGpu, ConvergesToTheFloat64ModelAsPlanesGrow) {
+    TestFrame frame(dev(), flatSpot());
+    const std::vector<float> want = float64Reference(frame);
+    double previous = 1e30;
+    for (uint32_t planes : {32u, 64u, 128u, 256u}) {
+        frame.resetColor();
+        const auto report = run(frame, Method::Slices, sliceSettings(planes, SliceTarget::Float32));
+        EXPECT_EQ(report.method, "slices");
+        const ErrorStats e = compare(frame.inscatter(), want);
+        frame.resetColor();
+        run(frame, Method::Slices, sliceSettings(planes, SliceTarget::Float16));
+        const ErrorStats half = compare(frame.inscatter(), want);
+        std::printf("slices, %3u planes: mean error (of the peak) %.5f float32, %.5f float16; max %.4f\n", planes,
+                    e.meanRelative, half.meanRelative, e.maxRelative);
+        EXPECT_EQ(e.nonFinite, 0u);
+        EXPECT_LT(e.meanRelative, 0.8 * previous) << planes << " planes";
+        previous = e.meanRelative;
+    }
+    EXPECT_LT(previous, 0.002);
+    // A broken result fails the bound: nothing at all, or the light a metre off.
+    EXPECT_GT(compare(std::vector<float>(want.size(), 0.0f), want).meanRelative, 20 * previous);
+    FrameSpec moved = flatSpot();
+    moved.light.position[0] += 1.0f;
+    TestFrame shifted(dev(), moved);
+    run(shifted, Method::Slices, sliceSettings(256, SliceTarget::Float32));
+    EXPECT_GT(compare(shifted.inscatter(), want).meanRelative, 5 * previous);
+}
+
+// Seed 002's 8-bit target: plane i in channel i mod 4, each blend rounded to 1/255 of a channel's
+// quarter of the range. Against the float32 target (a gray medium and white light, so that the
+// luminance carries everything): every pixel within half a step per plane, plus float error. The
+// range lets one channel hold the brightest pixel whole: a ray past the apex gets most of its light
+// from one or two planes, which a range of the peak itself would saturate.
+TEST_F(SlicesGpu, EightBitChannelsHoldTheFloatTargetWithinTheirQuantisation) {
+    FrameSpec spec = flatSpot();
+    spec.light.intensity = {40.0f, 40.0f, 40.0f};
+    spec.medium.betaR = {0.0f, 0.0f, 0.0f};
+    spec.medium.betaM = {0.03f, 0.03f, 0.03f};
+    TestFrame frame(dev(), spec);
+    const uint32_t planes = 64;
+    run(frame, Method::Slices, sliceSettings(planes, SliceTarget::Float32));
+    const std::vector<float> full = frame.inscatter();
+    double peak = 0;
+    for (size_t i = 0; i < full.size(); i += 4) peak = std::max(peak, luminance(&full[i]));
+    for (bool dither : {false, true}) {
+        auto s = sliceSettings(planes, SliceTarget::Rgba8Channels);
+        s.sliceRange = static_cast<float>(4.4 * peak);
+        s.sliceDither = dither;
+        frame.resetColor();
+        run(frame, Method::Slices, s);
+        const std::vector<float> eight = frame.inscatter();
+        const double step = s.sliceRange / 4.0 / 255.0;
+        // Rounding to nearest loses at most half a step per plane; stochastic rounding at most one.
+        const double bound = planes * step * (dither ? 1.0 : 0.5) + 1e-3 * peak;
+        double worst = 0, sumDiff = 0;
+        for (size_t i = 0; i < full.size(); i += 4) {
+            const double d = std::fabs(luminance(&eight[i]) - luminance(&full[i]));
+            worst = std::max(worst, d);
+            sumDiff += d;
+        }
+        const double mean = sumDiff / static_cast<double>(full.size() / 4);
+        std::printf("8-bit channels, %u planes, %s: worst %.4f, mean %.5f of a peak of %.4f (bound %.4f)\n", planes,
+                    dither ? "stochastic rounding" : "the seed's rounding", worst, mean, peak, bound);
+        EXPECT_LE(worst, bound);
+        EXPECT_GT(mean, 0.0);  // the target really is 8-bit
+        if (dither) {
+            EXPECT_LT(mean, 0.01 * peak);
+        }
+    }
+}
+
+// The cookie (the light-color image, stripes of red, green and blue glass): each lit pixel's
+// dominant color is the one brute force gives it, so the stripes are where the light puts them.
+TEST_F(SlicesGpu, TheCookiesStripesLandWhereBruteForcePutsThem) {
+    FrameSpec spec = flatSpot();
+    spec.shadowed = true;
+    spec.coloredLight = true;
+    spec.medium.betaR = {0.0f, 0.0f, 0.0f};
+    spec.medium.betaM = {0.03f, 0.03f, 0.03f};
+    TestFrame frame(dev(), spec);
+    run(frame, Method::BruteForce);
+    const std::vector<float> brute = frame.inscatter();
+    frame.resetColor();
+    run(frame, Method::Slices, sliceSettings(256, SliceTarget::Float32));
+    const std::vector<float> slices = frame.inscatter();
+    double peak = 0;
+    for (size_t i = 0; i < brute.size(); i += 4) peak = std::max(peak, luminance(&brute[i]));
+    auto dominant = [](const float* p) { return p[0] >= p[1] && p[0] >= p[2] ? 0 : (p[1] >= p[2] ? 1 : 2); };
+    size_t lit = 0, same = 0;
+    std::array<size_t, 3> bands{};
+    for (size_t i = 0; i < brute.size(); i += 4) {
+        if (luminance(&brute[i]) < 0.02 * peak) continue;
+        ++lit;
+        ++bands[static_cast<size_t>(dominant(&brute[i]))];
+        same += dominant(&brute[i]) == dominant(&slices[i]);
+    }
+    std::printf("cookie: %zu lit pixels (%zu red, %zu green, %zu blue), %zu with brute force's color\n", lit,
+                bands[0], bands[1], bands[2], same);
+    ASSERT_GT(lit, 50u);
+    for (size_t b : bands) EXPECT_GT(b, lit / 10);  // all three stripes are in view
+    EXPECT_GE(static_cast<double>(same), 0.9 * static_cast<double>(lit));
+}
+
+// Noise: amplitude 0 is exactly no noise; an engine noise of 1/2 in both layers is a density of
+// exactly 1; the plugin's own noise changes the image and keeps its mean.
+TEST_F(SlicesGpu, NoiseAmplitudeZeroIsTheModelAndNoiseKeepsTheMean) {
+    const auto settings = sliceSettings(64, SliceTarget::Float32);
+    TestFrame frame(dev(), flatSpot());
+    run(frame, Method::Slices, settings);
+    const std::vector<float> plain = frame.inscatter();
+
+    FrameSpec halfSpec = flatSpot();
+    halfSpec.noise.assign(16 * 16 * 4, 0.5f);
+    TestFrame half(dev(), halfSpec);
+    auto noisy = settings;
+    noisy.noiseAmplitude = 1.0f;
+    const auto report = run(half, Method::Slices, noisy);
+    EXPECT_NE(report.reason.find("noise"), std::string::npos) << report.reason;
+    EXPECT_LT(compare(half.inscatter(), plain).maxRelative, 1e-5);
+
+    frame.resetColor();
+    noisy.noiseAmplitude = 0.8f;
+    noisy.noiseScale = 0.3f;
+    const auto own = run(frame, Method::Slices, noisy);
+    const std::vector<float> textured = frame.inscatter();
+    double sumPlain = 0, sumNoisy = 0, peak = 0;
+    for (size_t i = 0; i < plain.size(); i += 4) {
+        sumPlain += luminance(&plain[i]);
+        sumNoisy += luminance(&textured[i]);
+        peak = std::max(peak, luminance(&plain[i]));
+    }
+    size_t lit = 0, changed = 0;
+    for (size_t i = 0; i < plain.size(); i += 4) {
+        if (luminance(&plain[i]) < 0.02 * peak) continue;
+        ++lit;
+        changed += std::fabs(luminance(&textured[i]) / luminance(&plain[i]) - 1.0) > 0.05;
+    }
+    std::printf("own noise: mean changed by %.1f%%, %zu of %zu lit pixels changed by more than 5%%\n",
+                100.0 * (sumNoisy / sumPlain - 1.0), changed, lit);
+    EXPECT_GT(changed, lit / 5);                  // the noise is there
+    EXPECT_NEAR(sumNoisy / sumPlain, 1.0, 0.25);  // and keeps the density's mean
+
+    // Auto picks slices for a frame with noise; the methods that cannot sample it refuse it.
+    frame.resetColor();
+    EXPECT_EQ(run(frame, Method::Auto, noisy).method, "slices");
+    for (Method m : {Method::Epipolar, Method::BruteForce, Method::ConeMarch, Method::Analytic}) {
+        try {
+            run(frame, m, noisy);
+            ADD_FAILURE() << lightscatter::methodName(m) << " accepted noise";
+        } catch (const lightscatter::InvalidInput& e) {
+            EXPECT_NE(std::string(e.what()).find("custom.noiseAmplitude"), std::string::npos) << e.what();
+        }
+    }
+    (void)own;
+}
+
+// A depth image the planes cannot test against is refused in one line naming the field.
+TEST_F(SlicesGpu, ADepthWithoutAttachmentUsageIsRefused) {
+    FrameSpec spec = flatSpot();
+    spec.depthAttachment = false;
+    TestFrame frame(dev(), spec);
+    try {
+        run(frame, Method::Slices, sliceSettings(32, SliceTarget::Float16));
+        ADD_FAILURE() << "slices accepted a depth image without DEPTH_STENCIL_ATTACHMENT";
+    } catch (const lightscatter::InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("depth.usage"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(run(frame, Method::Epipolar).method, "epipolar");  // the other methods need no more
+}
+
+// Blur and the directional light's closed form outside the slab: finite, and a directional
+// light's Lin converges like the spot's.
+TEST_F(SlicesGpu, DirectionalLightAndBlurStayCloseToBruteForce) {
+    FrameSpec spec = flatSpot();
+    spec.light = sunThroughGrille();
+    spec.shadowed = true;
+    TestFrame frame(dev(), spec);
+    run(frame, Method::BruteForce);
+    const std::vector<float> brute = frame.inscatter();
+    for (uint32_t blur : {0u, 2u}) {
+        auto s = sliceSettings(256, SliceTarget::Float32);
+        s.sliceBlur = blur;
+        frame.resetColor();
+        run(frame, Method::Slices, s);
+        const ErrorStats e = compare(frame.inscatter(), brute);
+        std::printf("directional, 256 planes, blur %u: mean error %.4f of the peak, max %.3f\n", blur, e.meanRelative,
+                    e.maxRelative);
+        EXPECT_EQ(e.nonFinite, 0u);
+        EXPECT_LT(e.meanRelative, blur ? 0.03 : 0.01);
+    }
+}
