@@ -21,16 +21,18 @@ struct EngineImage {
     const rg::Device& dev;
     VkImage image = VK_NULL_HANDLE;
     VkDeviceMemory memory = VK_NULL_HANDLE;
-    EngineImage(const rg::Device& d, VkExtent2D e, const char* name) : dev(d) {
+    EngineImage(const rg::Device& d, VkExtent2D e, const char* name, VkFormat format = VK_FORMAT_R8G8B8A8_UNORM,
+                VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT)
+        : dev(d) {
         VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
         info.imageType = VK_IMAGE_TYPE_2D;
-        info.format = VK_FORMAT_R8G8B8A8_UNORM;
+        info.format = format;
         info.extent = {e.width, e.height, 1};
         info.mipLevels = 1;
         info.arrayLayers = 1;
         info.samples = VK_SAMPLE_COUNT_1_BIT;
         info.tiling = VK_IMAGE_TILING_OPTIMAL;
-        info.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+        info.usage = usage;
         RG_VK(vkCreateImage(dev.device(), &info, nullptr, &image));
         dev.setName(image, VK_OBJECT_TYPE_IMAGE, name);
         VkMemoryRequirements req;
@@ -120,5 +122,108 @@ TEST_F(ImportsGpu, RendersIntoEngineImagesAndLeavesThemInTheFinalLayout) {
             ASSERT_EQ(px[4 * i + 1], 255);
             ASSERT_EQ(px[4 * i + 2], 0);
         }
+    }
+}
+
+// The engine's depth as a read-only depth attachment: a full-screen triangle at depth 0 is drawn
+// where the engine's depth is farther (LESS) and nowhere where it is not, frame after frame, with
+// the engine clearing the depth between frames (a write the graph's first barrier waits for).
+TEST_F(ImportsGpu, EngineDepthIsAReadOnlyDepthAttachment) {
+    const VkExtent2D size{16, 8};
+    EngineImage color(dev(), size, "engine color");
+    EngineImage depth(dev(), size, "engine depth", VK_FORMAT_D32_SFLOAT,
+                      VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+    rg::HostBuffer host(dev(), 4 * size.width * size.height, VK_BUFFER_USAGE_TRANSFER_DST_BIT, "engine readback");
+
+    rg::ImportedImage c;
+    c.image = color.image;
+    c.format = VK_FORMAT_R8G8B8A8_UNORM;
+    c.extent = size;
+    c.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    c.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    c.finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    c.finalStages = VK_PIPELINE_STAGE_2_COPY_BIT;
+    c.finalAccess = VK_ACCESS_2_TRANSFER_READ_BIT;
+    rg::ImportedImage d;
+    d.image = depth.image;
+    d.format = VK_FORMAT_D32_SFLOAT;
+    d.extent = size;
+    d.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    d.initialLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;  // the engine's clear
+    d.initialStages = VK_PIPELINE_STAGE_2_CLEAR_BIT;
+    d.initialAccess = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+    d.finalLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;  // cleared again next frame
+    d.finalStages = VK_PIPELINE_STAGE_2_CLEAR_BIT;
+    d.finalAccess = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+
+    rg::RenderGraph g;
+    rg::ImageRef target = g.importImage("engine color", c);
+    rg::ImageRef engineDepth = g.importImage("engine depth", d);
+    auto pipeline = std::make_shared<rg::Pipeline>();
+    {
+        auto p = g.addPass("depth-tested triangle", rg::PassType::Graphics);
+        p.depthTest(engineDepth);
+        (void)p.colorAttachment(target, rg::LoadOp::Clear);
+        p.execute([pipeline, engineDepth](rg::PassContext& ctx) {
+            if (!*pipeline) {
+                rg::GraphicsPipelineDesc desc;
+                desc.vertex = rg::spirv(ls_spirv::fullscreen_vert);  // depth 0
+                desc.fragment = rg::spirv(ls_spirv::clear_color_frag);
+                desc.pushConstantBytes = 16;
+                desc.formats = ctx.renderingFormats();
+                desc.depthTest = true;
+                desc.depthWrite = false;
+                desc.depthCompare = VK_COMPARE_OP_LESS;
+                *pipeline = rg::Pipeline::graphics(ctx.device(), "depth-tested triangle", desc);
+            }
+            EXPECT_EQ(ctx.layout(engineDepth), VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
+            pipeline->bind(ctx.cmd());
+            pipeline->push(ctx.cmd(), std::array<float, 4>{0.0f, 1.0f, 0.0f, 1.0f});
+            vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
+        });
+    }
+    const rg::VulkanDeviceCaps caps(dev());
+    rg::GraphExecutor exec(dev(), g, rg::compile(g, caps));
+    bool first = true;
+    for (float clearDepth : {0.5f, 0.0f, 0.5f}) {
+        dev().submitAndWait([&](VkCommandBuffer cmd) {
+            VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+            b.srcStageMask = VK_PIPELINE_STAGE_2_CLEAR_BIT;
+            b.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+            b.dstStageMask = VK_PIPELINE_STAGE_2_CLEAR_BIT;
+            b.dstAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+            b.oldLayout = first ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+            b.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+            b.image = depth.image;
+            b.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
+            VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+            dep.imageMemoryBarrierCount = 1;
+            dep.pImageMemoryBarriers = &b;
+            vkCmdPipelineBarrier2(cmd, &dep);
+            VkClearDepthStencilValue value{clearDepth, 0};
+            VkImageSubresourceRange range{VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
+            vkCmdClearDepthStencilImage(cmd, depth.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &value, 1, &range);
+        });
+        first = false;
+        exec.run();
+        dev().submitAndWait([&](VkCommandBuffer cmd) {
+            VkBufferImageCopy region{};
+            region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+            region.imageExtent = {size.width, size.height, 1};
+            vkCmdCopyImageToBuffer(cmd, color.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, host.buffer(), 1, &region);
+            VkMemoryBarrier2 toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+            toHost.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
+            toHost.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+            toHost.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
+            toHost.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
+            VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+            dep.memoryBarrierCount = 1;
+            dep.pMemoryBarriers = &toHost;
+            vkCmdPipelineBarrier2(cmd, &dep);
+        });
+        const auto* px = static_cast<const uint8_t*>(host.data());
+        const int green = clearDepth > 0.0f ? 255 : 0;  // depth 0 < 0.5 passes; 0 < 0 does not
+        for (uint32_t i = 0; i < size.width * size.height; ++i)
+            ASSERT_EQ(px[4 * i + 1], green) << "engine depth " << clearDepth << ", pixel " << i;
     }
 }

@@ -153,3 +153,75 @@ TEST(Sync, SampledDepthUsesTheShaderReadLayout) {
             EXPECT_EQ(s.layout, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
         }
 }
+
+namespace {
+
+ImportedImage engineDepth(VkImageUsageFlags usage) {
+    ImportedImage d;
+    d.format = VK_FORMAT_D32_SFLOAT;
+    d.extent = {8, 8};
+    d.usage = usage;
+    d.initialLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+    d.initialStages = VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
+    d.initialAccess = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+    d.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+    return d;
+}
+
+}  // namespace
+
+// The engine's depth buffer sampled by one pass and then a read-only depth attachment of the next
+// (the slices method's planes): one read-only layout after the engine's writes, loaded and never
+// stored, and handed back to the engine in its own layout.
+TEST(Sync, ImportedDepthSampledThenTestedReadOnly) {
+    RenderGraph g;
+    ImageRef depth =
+        g.importImage("engine depth", engineDepth(VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT));
+    ImageRef z = g.createImage("z", ImageDesc::absolute(VK_FORMAT_R32_SFLOAT, 8, 8));
+    ImageRef out = g.createImage("out", ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT, 8, 8));
+    auto s = g.addPass("sample depth", PassType::Compute);
+    s.sampled(depth, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
+    z = s.storageWrite(z);
+    auto t = g.addPass("planes", PassType::Graphics);
+    t.sampled(z);
+    t.depthTest(depth);
+    g.markOutput(t.colorAttachment(out, LoadOp::Clear));
+    const CompiledGraph c = compile(g, graph_test::caps());
+    ASSERT_EQ(c.passes.size(), 2u);
+    const BarrierPlan* first = barrierFor(c.passes[0], depth.id);
+    ASSERT_NE(first, nullptr);
+    EXPECT_EQ(first->srcStages, VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT);
+    EXPECT_EQ(first->srcAccess, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
+    EXPECT_EQ(first->oldLayout, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL);
+    EXPECT_EQ(first->newLayout, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    const BarrierPlan* second = barrierFor(c.passes[1], depth.id);
+    ASSERT_NE(second, nullptr) << "a layout change from sampled to depth attachment";
+    EXPECT_EQ(second->oldLayout, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    EXPECT_EQ(second->newLayout, VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
+    EXPECT_NE(second->srcStages & VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, 0u);
+    EXPECT_NE(second->dstStages & VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT, 0u);
+    EXPECT_EQ(second->dstAccess, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
+    ASSERT_TRUE(c.passes[1].depth.has_value());
+    EXPECT_EQ(c.passes[1].depth->layout, VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
+    EXPECT_EQ(c.passes[1].depth->load, VK_ATTACHMENT_LOAD_OP_LOAD);
+    EXPECT_EQ(c.passes[1].depth->store, VK_ATTACHMENT_STORE_OP_NONE);
+    bool handedBack = false;
+    for (const auto& b : c.finalBarriers)
+        if (b.resource == depth.id) {
+            handedBack = true;
+            EXPECT_EQ(b.oldLayout, VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL);
+            EXPECT_EQ(b.newLayout, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL);
+        }
+    EXPECT_TRUE(handedBack);
+}
+
+// An engine depth created without DEPTH_STENCIL_ATTACHMENT cannot be a depth attachment.
+TEST(Sync, ImportedDepthWithoutAttachmentUsageIsRejected) {
+    RenderGraph g;
+    ImageRef depth = g.importImage("engine depth", engineDepth(VK_IMAGE_USAGE_SAMPLED_BIT));
+    ImageRef out = g.createImage("out", ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT, 8, 8));
+    auto t = g.addPass("planes", PassType::Graphics);
+    t.depthTest(depth);
+    g.markOutput(t.colorAttachment(out, LoadOp::Clear));
+    graph_test::expectRejected(g, Rule::UsageNotDeclared, {"planes", "engine depth", "depth test"});
+}
