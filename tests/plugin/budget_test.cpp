@@ -120,3 +120,37 @@ TEST(Budget, TinyShadowMapsHaveNoTrees) {
         }
     }
 }
+
+// The slices method's memory per profile: its accumulation target in the profile's format, and the
+// resolved Lin where the target is not Lin already; nothing of epipolar's.
+TEST(Budget, SlicesListsItsTargetPerProfile) {
+    struct Row {
+        Profile profile;
+        const char* target;
+        bool resolved;
+    };
+    for (const Row& row : {Row{Profile::HighQuality, "slice planes' sum R32G32B32A32_SFLOAT", false},
+                           Row{Profile::Balanced, "slice planes' sum R16G16B16A16_SFLOAT", false},
+                           Row{Profile::HighPerformance, "slice planes' sum (8-bit channels) R8G8B8A8_UNORM", true}}) {
+        const auto b = lightscatter::budget(row.profile, 1920, 1080, 2048, lightscatter::LightType::Spot, nullptr,
+                                            lightscatter::Method::Slices);
+        std::set<std::string> seen;
+        for (const auto& e : b.entries) seen.insert(e.name + " " + e.format);
+        std::string all;
+        for (const auto& s : seen) all += s + "; ";
+        std::printf("slices %-17s peak %6.1f MiB: %s\n", lightscatter::profileName(row.profile),
+                    static_cast<double>(b.peakBytes) / 1048576.0, all.c_str());
+        EXPECT_TRUE(seen.count(row.target)) << all;
+        EXPECT_TRUE(seen.count("camera-space z R32_SFLOAT") || !row.resolved) << all;
+        EXPECT_EQ(seen.count("in-scattering (screen) R16G16B16A16_SFLOAT"), row.resolved ? 1u : 0u) << all;
+        EXPECT_FALSE(seen.count("coordinate texture R32G32_SFLOAT")) << all;
+        for (const auto& e : b.entries) EXPECT_NE(e.name, "point-light table");
+    }
+    try {
+        (void)lightscatter::budget(Profile::Balanced, 1920, 1080, 2048, lightscatter::LightType::Spot, nullptr,
+                                   lightscatter::Method::BruteForce);
+        ADD_FAILURE() << "a budget for brute-force";
+    } catch (const lightscatter::InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("brute-force"), std::string::npos) << e.what();
+    }
+}
