@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Regenerates docs/performance.md and its plots: the benchmark of the shipped scenes (bench/report.json,
 # or the file given), the hard-case suite, the memory budget, then the plots and the page.
-#   scripts/make-report.sh                 # lavapipe-sized configuration (about 15 minutes on 2 cores)
+#   scripts/make-report.sh                 # lavapipe-sized configuration (about 15 minutes on 2 cores,
+#                                          # and about 20 more for bench/slices.json at 1920x1080;
+#                                          # LS_REPORT_SLICES=0 skips it)
 #   scripts/make-report.sh bench/full.json # the GPU machine's configuration
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -12,11 +14,21 @@ out=docs/performance
 mkdir -p "$out"
 ./build/host_example/lightscatter bench --config "$config" --out build/bench-report
 ./build/host_example/lightscatter bench --config bench/hard.json --out build/bench-hard
+if [[ "${LS_REPORT_SLICES:-1}" != 0 ]]; then
+  ./build/host_example/lightscatter bench --config bench/slices.json --out build/bench-slices
+fi
 ./build/host_example/lightscatter budget --json > build/bench-report/budget.json
 /usr/bin/python3 scripts/plot_bench.py build/bench-report "$out"
 rm -f "$out"/strip_*.png
 for s in build/bench-report/strips/*_epipolar_balanced.png build/bench-report/strips/*_brute-force.png; do
   cp "$s" "$out/strip_$(basename "$s")"
 done
-/usr/bin/python3 scripts/write_report.py build/bench-report build/bench-hard "$config" > docs/performance.md
+if [[ -f build/bench-slices/bench.json ]]; then
+  /usr/bin/python3 scripts/plot_slices.py build/bench-slices "$out"
+  rm -f "$out"/strip_slices_*.png
+  for s in build/bench-slices/strips/window_room_slices_256_rgba8*.png; do
+    [[ -f "$s" ]] && cp "$s" "$out/strip_slices_$(basename "$s" | sed 's/^window_room_//')"
+  done
+fi
+/usr/bin/python3 scripts/write_report.py build/bench-report build/bench-hard "$config" build/bench-slices > docs/performance.md
 echo "docs/performance.md regenerated"

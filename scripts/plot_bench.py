@@ -12,7 +12,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 COLORS = {"brute-force": "tab:red", "profiles": "tab:blue", "slices": "tab:green", "samples": "tab:olive",
-          "initialStep": "tab:purple", "trees": "tab:orange", "shadowMapSize": "tab:brown", "size": "tab:gray"}
+          "initialStep": "tab:purple", "trees": "tab:orange", "shadowMapSize": "tab:brown", "size": "tab:gray",
+          "planes": "tab:cyan"}
 
 
 def device_note(runs):

@@ -25,6 +25,7 @@ def fmt(x, digits=3):
 
 def main():
     bench_dir, hard_dir, config = Path(sys.argv[1]), Path(sys.argv[2]), sys.argv[3]
+    slices_dir = Path(sys.argv[4]) if len(sys.argv) > 4 else None
     runs = json.loads((bench_dir / "bench.json").read_text())["runs"]
     hard = json.loads((hard_dir / "bench.json").read_text())["runs"]
     budget = json.loads((bench_dir / "budget.json").read_text())
@@ -118,6 +119,42 @@ def main():
                   f"{fmt(100 * e['fractionOver5pct']) + '%' if e else '-'} |")
             p("")
 
+    if slices_dir and (slices_dir / "bench.json").exists():
+        slice_runs = json.loads((slices_dir / "bench.json").read_text())["runs"]
+        w, h = slice_runs[0]["size"]
+        p(f"## Seed 002: slice planes at {w}x{h}\n")
+        p(f"`slices` against epipolar (balanced) and brute force on the spot and directional scenes at {w}x{h} "
+          f"(`bench/slices.json`: {slice_runs[0]['frames']} frame after {slice_runs[0].get('warmup', 1)} of warm-up "
+          "per row, on the device above; at this size brute force takes seconds per frame on a CPU). Each "
+          "slices row is a plane count and an accumulation target (docs/methods.md): float16, float32, rgba8 "
+          "(seed 002's four 8-bit channels, rounded to nearest) and rgba8-dither (the same with stochastic "
+          "rounding). Speed-up and error of every row are against brute force in the same run.\n")
+        p(f"![slices against epipolar and brute force](performance/slices_{w}x{h}.png)\n")
+        for scene in sorted({r["scene"] for r in slice_runs}):
+            rows = [r for r in slice_runs if r["scene"] == scene]
+            brute = next((r for r in rows if r["method"] == "brute-force"), None)
+            p(f"### {scene}\n")
+            p("| configuration | median ms | speed-up over brute force | mean rel. error | brute force's error | "
+              "over 5% |")
+            p("|---|---|---|---|---|---|")
+            for r in rows:
+                t, e = r["time"], r.get("error", {})
+                speed = brute["time"]["median"] / t["median"] if brute and t["median"] > 0 else None
+                label = "slices balanced (128 planes, float16)" if r["method"] == "slices" and \
+                    r["family"] == "profiles" else r["label"]
+                p(f"| {label} | {fmt(t['median'])} | {fmt(speed) + 'x' if speed else '-'} | "
+                  f"{fmt(e.get('meanRelative'))} | {fmt(brute['error']['meanRelative']) if brute else '-'} | "
+                  f"{fmt(100 * e['fractionOver5pct']) + '%' if e else '-'} |")
+            p("")
+        banding = [r for r in slice_runs if r["method"] == "slices" and "rgba8" in r["label"]]
+        if banding:
+            p("The 8-bit targets' banding, window_room at 256 planes, seed 002's rounding and stochastic rounding "
+              "(reference, result, error heat map):\n")
+            for r in banding:
+                if r["scene"] == "window_room" and "256" in r["label"]:
+                    name = f"strip_slices_{r['label'].replace(' ', '_')}.png"
+                    p(f"{r['label']}:\n\n![{r['label']}](performance/{name})\n")
+
     p("## Scaling\n")
     for name, what in (("scaling_screen", "screen size"), ("scaling_shadow_map", "shadow-map size"),
                        ("scaling_slices_samples", "slices x samples")):
@@ -157,14 +194,19 @@ def main():
       "profile. `test_hard_suite` asserts finite pixels and the bound below for each (mean relative error); thin "
       "media must stay within 1% of float64. A point light is unshadowed in the plugin but shadowed in the "
       "reference, so its cases count the missing shadows as error.\n")
-    p("| case | epipolar error | bound | brute-force error | bound | non-finite |")
-    p("|---|---|---|---|---|---|")
+    slice_bounds = {n: float(v) for n, v in re.findall(r'\{"(\w+)", ([\d.]+)\}', test.split("kSlicesBounds")[1])}
+    slice_default = float(re.search(r"kSlicesDefault = ([\d.]+)", test).group(1))
+    p("| case | epipolar error | bound | brute-force error | bound | slices error | bound | non-finite |")
+    p("|---|---|---|---|---|---|---|---|")
     for scene in sorted({r["scene"] for r in hard}):
         epi = next(r for r in hard if r["scene"] == scene and r["method"] == "epipolar")
         bf = next(r for r in hard if r["scene"] == scene and r["method"] == "brute-force")
+        sl = next((r for r in hard if r["scene"] == scene and r["method"] == "slices"), None)
         b = bounds.get(scene, default)
+        nonfinite = epi['nonFinite'] + bf['nonFinite'] + (sl['nonFinite'] if sl else 0)
         p(f"| {scene.replace('_', ' ')} | {fmt(epi['error']['meanRelative'])} | {b[0]} | "
-          f"{fmt(bf['error']['meanRelative'])} | {b[1]} | {epi['nonFinite'] + bf['nonFinite']} |")
+          f"{fmt(bf['error']['meanRelative'])} | {b[1]} | {fmt(sl['error']['meanRelative']) if sl else '-'} | "
+          f"{slice_bounds.get(scene, slice_default)} | {nonfinite} |")
     p("")
 
     p("## Which profile for which budget\n")
