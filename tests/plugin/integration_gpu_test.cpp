@@ -255,8 +255,12 @@ TEST_F(PluginIntegrationGpu, AZeroShadowMatrixIsRefused) {
 TEST_F(PluginIntegrationGpu, LayoutsTheImageCannotHoldAreRefused) {
     expectRefused([](auto& d) { d.depth.layout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL; },
                   "depth.layout COLOR_ATTACHMENT_OPTIMAL", "color layout");
-    expectRefused([](auto& d) { d.depth.finalLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL; },
-                  "depth.finalLayout DEPTH_ATTACHMENT_OPTIMAL", "DEPTH_STENCIL_ATTACHMENT usage");
+    expectRefused(
+        [](auto& d) {
+            d.depth.usage = VK_IMAGE_USAGE_SAMPLED_BIT;  // as the engine says it created it
+            d.depth.finalLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+        },
+        "depth.finalLayout DEPTH_ATTACHMENT_OPTIMAL", "DEPTH_STENCIL_ATTACHMENT usage");
     expectRefused(
         [](auto& d) { d.shadowMap->layout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL; },
         "shadowMap.layout DEPTH_STENCIL_READ_ONLY_OPTIMAL");
