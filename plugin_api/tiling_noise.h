@@ -1,0 +1,26 @@
+#pragma once
+// The plugin's own tiling noise for seed 002's scrolling noise: a plugin-owned image that outlives
+// frames, made on the GPU the first time a frame asks for noise without an engine image.
+#include "rendergraph/device.h"
+#include "rendergraph/owned_image.h"
+#include "shared/shared_state.h"
+
+namespace lightscatter::detail {
+
+class TilingNoise {
+public:
+    explicit TilingNoise(const rg::Device& device);
+    TilingNoise(const TilingNoise&) = delete;
+    TilingNoise& operator=(const TilingNoise&) = delete;
+
+    // Makes the noise if it has not been made (waits for the GPU). Returns true when it did.
+    bool ensure(const ls::Shared& shared);
+    VkImage image() const { return image_.image(); }
+
+private:
+    const rg::Device& device_;
+    rg::OwnedImage image_;
+    bool made_ = false;
+};
+
+}  // namespace lightscatter::detail
