@@ -8,17 +8,21 @@ namespace {
 
 const char* kCommon =
     "common options: --device NAME (or LS_DEVICE), --validation, --help (-h)\n"
-    "methods: auto (default), epipolar, brute-force, analytic, cone-march; profiles: high-quality,\n"
-    "balanced (default), high-performance, low-high-quality, low-balanced, low-high-performance,\n"
-    "custom (with --settings)\n";
+    "methods: auto (default), epipolar, brute-force, analytic, cone-march, slices; profiles:\n"
+    "high-quality, balanced (default), high-performance, low-high-quality, low-balanced,\n"
+    "low-high-performance, custom (with --settings)\n";
 
 const char* kSettings =
-    "  --settings FILE.json  every field of lightscatter::Settings by name (slices, "
-    "samplesPerSlice,\n"
-    "                        initialSampleStep, refinementThreshold, bilateralThreshold,\n"
-    "                        minMaxTrees, shadowFilter, fixup, fixupMaxSteps, shadowDepthBias,\n"
-    "                        interpolation, shadowMapSize); fields it leaves out keep the values\n"
-    "                        of --profile, and the frame runs as the custom profile\n";
+    "  --settings FILE.json  every field of lightscatter::Settings by name (slices,\n"
+    "                        samplesPerSlice, initialSampleStep, refinementThreshold,\n"
+    "                        bilateralThreshold, minMaxTrees, shadowFilter, fixup, fixupMaxSteps,\n"
+    "                        shadowDepthBias, interpolation, shadowMapSize; cone-march's\n"
+    "                        coneSamples, coneLimited, coneJitter, shadowSampling; slices'\n"
+    "                        slicePlanes, sliceTarget (float16, float32, rgba8),\n"
+    "                        slicePlaneScaling, sliceRange, sliceDither, sliceBlur, sliceAmbient,\n"
+    "                        noiseAmplitude, noiseScale, noiseVelocity [4 numbers]); fields it\n"
+    "                        leaves out keep the values of --profile, and the frame runs as the\n"
+    "                        custom profile\n";
 
 struct Command {
     const char* name;
