@@ -46,9 +46,11 @@ const std::array kCommands{
         "Outputs are written all or nothing: each must be its own file and none may be an "
         "input.\n"},
     Command{"budget",
-            "budget [--profile NAME|all] [--settings FILE.json] [--size WxH] [--shadow-map N] "
-            "[--json]\n",
-            "Prints the epipolar method's GPU memory per profile without a GPU.\n"
+            "budget [--method epipolar|slices] [--profile NAME|all] [--settings FILE.json]\n"
+            "                    [--size WxH] [--shadow-map N] [--json]\n",
+            "Prints a method's GPU memory per profile without a GPU.\n"
+            "  --method NAME       epipolar (default) or slices, the methods whose textures\n"
+            "                      depend on the profile\n"
             "  --profile NAME|all  one profile, or all of them (default)\n"
             "  --size WxH          the screen, 1 to 16384 each (default 2560x1600)\n"
             "  --shadow-map N      the shadow map's size, 1 to 16384 (default: the profile's)\n"
