@@ -1,5 +1,5 @@
-// lightscatter budget [--profile NAME|all] [--settings FILE.json] [--size WxH] [--shadow-map N]
-//   [--json]
+// lightscatter budget [--method epipolar|slices] [--profile NAME|all] [--settings FILE.json]
+//   [--size WxH] [--shadow-map N] [--json]
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -7,15 +7,29 @@
 #include "command_options.h"
 #include "commands.h"
 #include "lightscatter.h"
+#include "settings_file.h"
 
 namespace host {
 namespace {
 
 double mib(uint64_t bytes) { return static_cast<double>(bytes) / (1024.0 * 1024.0); }
 
+// The methods whose textures depend on the profile, the ones lightscatter::budget knows.
+lightscatter::Method budgetMethod(const std::string& name) {
+    const auto m = lightscatter::parseMethod(name);
+    if (m == lightscatter::Method::Epipolar || m == lightscatter::Method::Slices) return *m;
+    if (!m)
+        throw std::runtime_error("unknown method '" + name + "' (budget knows: epipolar, slices)");
+    throw std::runtime_error("--method " + name +
+                             ": budget knows epipolar and slices only, the methods whose textures "
+                             "depend on the profile");
+}
+
 }  // namespace
 
 int runBudget(Args& args) {
+    const lightscatter::Method method = budgetMethod(args.take("--method", "epipolar"));
+    const bool slices = method == lightscatter::Method::Slices;
     const std::string settingsPath = args.take("--settings", "");
     const std::string profileName = args.take("--profile", settingsPath.empty() ? "all" : "balanced");
     const VkExtent2D size = parseSize(args.take("--size", "2560x1600"), "--size");
@@ -45,14 +59,21 @@ int runBudget(Args& args) {
     for (lightscatter::Profile p : profiles) {
         const auto s = p == lightscatter::Profile::Custom ? custom : lightscatter::profileSettings(p);
         const uint32_t shadow = shadowOverride ? shadowOverride : s.shadowMapSize;
-        const lightscatter::Budget b =
-            lightscatter::budget(p, size.width, size.height, shadow, lightscatter::LightType::Spot, &s);
+        const lightscatter::Budget b = lightscatter::budget(
+            p, size.width, size.height, shadow, lightscatter::LightType::Spot, &s, method);
         if (json) {
             nlohmann::json j;
+            j["method"] = lightscatter::methodName(method);
             j["profile"] = lightscatter::profileName(p);
             j["screen"] = {size.width, size.height};
-            j["slices"] = s.slices;
-            j["samplesPerSlice"] = s.samplesPerSlice;
+            if (slices) {
+                j["slicePlanes"] = s.slicePlanes;
+                j["sliceTarget"] = sliceTargetName(s.sliceTarget);
+                j["sliceBlur"] = s.sliceBlur;
+            } else {
+                j["slices"] = s.slices;
+                j["samplesPerSlice"] = s.samplesPerSlice;
+            }
             j["shadowMapSize"] = shadow;
             j["estimated"] = b.estimated;
             j["depthStencilFormat"] = b.depthStencilFormat;
@@ -63,21 +84,28 @@ int runBudget(Args& args) {
             j["resources"] = entries;
             j["totalBytes"] = b.totalBytes;
             j["peakBytes"] = b.peakBytes;
-            if (b.seed)
+            if (b.seed && !slices)  // seed 000's figures are the epipolar method's
                 j["seed"] = {{"screen", {b.seed->screenWidth, b.seed->screenHeight}},
                              {"megabytes", b.seed->megabytes}, {"milliseconds", b.seed->milliseconds}};
             all.push_back(j);
             continue;
         }
-        std::printf("%s: %u slices x %u samples, %u^2 shadow map, %ux%u screen (sizes %s)\n",
-                    lightscatter::profileName(p), s.slices, s.samplesPerSlice, shadow, size.width,
-                    size.height, b.estimated ? "estimated without a device" : "from the device");
+        const std::string what =
+            slices
+                ? std::to_string(s.slicePlanes) + " planes into " + sliceTargetName(s.sliceTarget) +
+                      (s.sliceBlur ? ", blur " + std::to_string(s.sliceBlur) : "")
+                : std::to_string(s.slices) + " slices x " + std::to_string(s.samplesPerSlice) +
+                      " samples";
+        std::printf("%s, %s: %s, %u^2 shadow map, %ux%u screen (sizes %s)\n",
+                    lightscatter::methodName(method), lightscatter::profileName(p), what.c_str(),
+                    shadow, size.width, size.height,
+                    b.estimated ? "estimated without a device" : "from the device");
         for (const auto& e : b.entries)
             std::printf("  %-40s %-22s %5u x %-5u %10.2f MiB%s\n", e.name.c_str(), e.format.c_str(), e.width,
                         e.height, mib(e.bytes), e.transient ? "" : "  (kept across frames)");
         std::printf("  total without aliasing %.1f MiB, peak with aliasing %.1f MiB", mib(b.totalBytes),
                     mib(b.peakBytes));
-        if (b.seed)
+        if (b.seed && !slices)
             std::printf("; seed 000: %.1f MB at %ux%u", b.seed->megabytes, b.seed->screenWidth,
                         b.seed->screenHeight);
         std::printf("\n\n");

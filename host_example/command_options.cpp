@@ -1,5 +1,6 @@
 #include "command_options.h"
 
+#include <cstdio>
 #include <stdexcept>
 
 #include "settings_file.h"
@@ -13,7 +14,18 @@ std::string joined(const std::vector<std::string>& names) {
     return s;
 }
 
+// The way nlohmann writes a float read from JSON: 0.5, not 0.500000.
+std::string shortNumber(float x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", static_cast<double>(x));
+    return buf;
+}
+
 }  // namespace
+
+bool honoursNoise(lightscatter::Method method) {
+    return method == lightscatter::Method::Slices || method == lightscatter::Method::Auto;
+}
 
 RenderOptions profileOptions(const std::string& profile, const std::string& settingsPath) {
     RenderOptions o;
@@ -46,6 +58,15 @@ SceneOptions takeSceneOptions(Args& args, const char* defaultSize) {
     o.settingsPath = args.take("--settings", "");
     o.render = profileOptions(profile, o.settingsPath);
     o.render.method = *m;
+    // Known before any device exists: seed 002's noise is a density only the slice planes sample
+    // (auto picks them when it is on); the plugin would refuse every other method's frame.
+    const float noise = o.render.custom.noiseAmplitude;
+    if (noise > 0.0f && !honoursNoise(*m))
+        throw std::runtime_error(
+            o.settingsPath + ": noiseAmplitude = " + shortNumber(noise) +
+            ": seed 002's scrolling noise is honoured by method slices only; --method " + method +
+            " integrates the model's homogeneous medium (use --method slices or auto, or "
+            "noiseAmplitude 0)");
     const std::string size = args.take("--size", defaultSize ? defaultSize : "");
     if (!size.empty()) o.size = parseSize(size, "--size");
     o.device.deviceName = args.take("--device", "");

@@ -16,8 +16,8 @@ struct SceneOptions {
     rg::DeviceOptions device;
 };
 
-// --method, --profile, --settings, --size, --device, --validation; names, numbers and the
-// settings file are checked before any device exists.
+// --method, --profile, --settings, --size, --device, --validation; names, numbers, the settings
+// file and its noise against the method are checked before any device exists.
 SceneOptions takeSceneOptions(Args& args, const char* defaultSize);
 VkExtent2D sceneSize(const SceneOptions& o, VkExtent2D fallback);
 
@@ -25,5 +25,9 @@ VkExtent2D sceneSize(const SceneOptions& o, VkExtent2D fallback);
 // on the profile's settings and makes the custom profile; --profile custom needs --settings.
 // `settingsPath` is "" when --settings was not given.
 RenderOptions profileOptions(const std::string& profile, const std::string& settingsPath);
+
+// Whether `method` samples Settings::noiseAmplitude (slices, and auto, which then picks slices);
+// the plugin refuses a non-zero amplitude with any other method.
+bool honoursNoise(lightscatter::Method method);
 
 }  // namespace host

@@ -2,21 +2,24 @@
 //   [--screenshot FILE.png] [--resize-at FRAME --resize-to WxH]
 //   [--animate-light] [--resizes N] [--memory-log FILE.csv]   (the soak test's options)
 // A GLFW window: WASD/QE move the camera, left-drag looks around, arrow keys move the light, M
-// cycles the methods, P cycles profiles, T toggles the min/max trees, Esc quits. The title shows the
-// plugin's GPU time per pass. Resizing rebuilds the graphs.
+// cycles the methods, P cycles profiles, T toggles the min/max trees, N steps the slices method's
+// scrolling noise (0, 0.25, 0.5, 1), Esc quits. The title shows the method, profile and noise, and
+// the plugin's GPU time per pass. Resizing rebuilds the graphs. Every frame carries the seconds
+// since the window opened, which scroll the noise.
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>
 
+#include <unistd.h>
 #include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 #include <iostream>
 #include <memory>
-#include <unistd.h>
 
 #include "command_options.h"
 #include "commands.h"
@@ -234,6 +237,15 @@ VkExtent2D soakSize(VkExtent2D base, int k) {
             std::max(16u, static_cast<uint32_t>(static_cast<float>(base.height) * f))};
 }
 
+// The title's word on the noise: nothing when it is off.
+std::string noiseTitle(float amplitude, lightscatter::Method method) {
+    if (amplitude <= 0.0f) return "";
+    char buf[64];
+    std::snprintf(buf, sizeof buf, " / noise %g%s", static_cast<double>(amplitude),
+                  honoursNoise(method) ? "" : " (slices and auto only: off)");
+    return buf;
+}
+
 // Resident set size of this process, in KiB (Linux).
 long residentKiB() {
     std::ifstream statm("/proc/self/statm");
@@ -323,8 +335,12 @@ int runView(Args& args) {
     const std::array profiles{lightscatter::Profile::HighQuality, lightscatter::Profile::Balanced,
                               lightscatter::Profile::HighPerformance, lightscatter::Profile::LowHighQuality,
                               lightscatter::Profile::LowBalanced, lightscatter::Profile::LowHighPerformance};
-    bool keyM = false, keyP = false, keyT = false;
-    auto last = std::chrono::steady_clock::now();
+    // N steps the noise's amplitude through these; it starts at the --settings file's.
+    constexpr std::array kNoiseSteps{0.0f, 0.25f, 0.5f, 1.0f};
+    float noise = options.custom.noiseAmplitude;
+    bool keyM = false, keyP = false, keyT = false, keyN = false;
+    const auto start = std::chrono::steady_clock::now();
+    auto last = start;
     double titleClock = 0.0;
     int frame = 0;
     bool firstWait = true;
@@ -351,9 +367,10 @@ int runView(Args& args) {
         };
         if (pressed(GLFW_KEY_M, keyM)) {
             // analytic only where seed 001 applies (an unshadowed point or spot light).
-            std::vector<lightscatter::Method> methods{lightscatter::Method::Auto, lightscatter::Method::Epipolar,
-                                                      lightscatter::Method::BruteForce,
-                                                      lightscatter::Method::ConeMarch};
+            std::vector<lightscatter::Method> methods{
+                lightscatter::Method::Auto, lightscatter::Method::Epipolar,
+                lightscatter::Method::BruteForce, lightscatter::Method::ConeMarch,
+                lightscatter::Method::Slices};
             const LightDesc& l = renderer.scene().light;
             if (l.type == LightKind::Point || (l.type == LightKind::Spot && l.shadowMapSize == 0))
                 methods.push_back(lightscatter::Method::Analytic);
@@ -365,6 +382,13 @@ int runView(Args& args) {
             options.profile = it == profiles.end() || it + 1 == profiles.end() ? profiles[0] : *(it + 1);
         }
         if (pressed(GLFW_KEY_T, keyT)) options.custom.minMaxTrees = !options.custom.minMaxTrees;
+        if (pressed(GLFW_KEY_N, keyN)) {
+            const auto next = std::upper_bound(kNoiseSteps.begin(), kNoiseSteps.end(), noise);
+            noise = next == kNoiseSteps.end() ? kNoiseSteps[0] : *next;
+        }
+        // Only slices samples the noise (auto picks slices for it); the other methods run without.
+        options.custom.noiseAmplitude = honoursNoise(options.method) ? noise : 0.0f;
+        options.timeSeconds = std::chrono::duration<double>(now - start).count();
         if (frame == resizeFrame) glfwSetWindowSize(window.handle, static_cast<int>(resizeSize.width),
                                                     static_cast<int>(resizeSize.height));
 
@@ -374,10 +398,13 @@ int runView(Args& args) {
             titleClock += dt;
             if (titleClock > 0.5 || frameLimit) {
                 titleClock = 0.0;
-                std::string title = std::string("lightscatter - ") + lightscatter::methodName(options.method) +
-                                    (options.method == lightscatter::Method::Auto ? " (" + t.plugin.method + ")" : "") +
-                                    " / " + lightscatter::profileName(options.profile) + " - " +
-                                    std::to_string(t.plugin.totalMilliseconds).substr(0, 6) + " ms";
+                std::string title =
+                    std::string("lightscatter - ") + lightscatter::methodName(options.method) +
+                    (options.method == lightscatter::Method::Auto ? " (" + t.plugin.method + ")"
+                                                                  : "") +
+                    " / " + lightscatter::profileName(options.profile) +
+                    noiseTitle(noise, options.method) + " - " +
+                    std::to_string(t.plugin.totalMilliseconds).substr(0, 6) + " ms";
                 std::vector<lightscatter::PassTime> top = t.plugin.passes;
                 std::sort(top.begin(), top.end(), [](auto& a, auto& b) { return a.milliseconds > b.milliseconds; });
                 for (size_t i = 0; i < top.size() && i < 3; ++i)

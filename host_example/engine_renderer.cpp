@@ -273,6 +273,7 @@ lightscatter::FrameDescription EngineRenderer::describe(const RenderOptions& opt
     f.method = options.method;
     f.profile = options.profile;
     f.custom = options.custom;
+    f.timeSeconds = options.timeSeconds;
     return f;
 }
 

@@ -20,6 +20,7 @@ struct RenderOptions {
     lightscatter::Method method = lightscatter::Method::Epipolar;
     lightscatter::Profile profile = lightscatter::Profile::Balanced;
     lightscatter::Settings custom;
+    double timeSeconds = 0.0;  // FrameDescription::timeSeconds: scrolls the slices method's noise
 };
 
 struct FrameOutput {

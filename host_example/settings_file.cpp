@@ -1,5 +1,6 @@
 #include "settings_file.h"
 
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -31,7 +32,17 @@ constexpr const char* kFields[] = {"slices",
                                    "coneSamples",
                                    "coneLimited",
                                    "coneJitter",
-                                   "shadowSampling"};
+                                   "shadowSampling",
+                                   "slicePlanes",
+                                   "sliceTarget",
+                                   "slicePlaneScaling",
+                                   "sliceRange",
+                                   "sliceDither",
+                                   "sliceBlur",
+                                   "sliceAmbient",
+                                   "noiseAmplitude",
+                                   "noiseScale",
+                                   "noiseVelocity"};
 
 std::string knownFields() {
     std::string s;
@@ -85,6 +96,33 @@ class SettingsReader {
                 s.coneJitter = boolean(v, key);
             else if (key == "shadowSampling")
                 s.shadowSampling = boolean(v, key);
+            else if (key == "slicePlanes")
+                s.slicePlanes = whole(v, key);
+            else if (key == "sliceTarget")
+                s.sliceTarget = oneOf<lightscatter::SliceTarget>(
+                    v, key,
+                    {{sliceTargetName(lightscatter::SliceTarget::Float16),
+                      lightscatter::SliceTarget::Float16},
+                     {sliceTargetName(lightscatter::SliceTarget::Float32),
+                      lightscatter::SliceTarget::Float32},
+                     {sliceTargetName(lightscatter::SliceTarget::Rgba8Channels),
+                      lightscatter::SliceTarget::Rgba8Channels}});
+            else if (key == "slicePlaneScaling")
+                s.slicePlaneScaling = boolean(v, key);
+            else if (key == "sliceRange")
+                s.sliceRange = number(v, key);
+            else if (key == "sliceDither")
+                s.sliceDither = boolean(v, key);
+            else if (key == "sliceBlur")
+                s.sliceBlur = whole(v, key);
+            else if (key == "sliceAmbient")
+                s.sliceAmbient = number(v, key);
+            else if (key == "noiseAmplitude")
+                s.noiseAmplitude = number(v, key);
+            else if (key == "noiseScale")
+                s.noiseScale = number(v, key);
+            else if (key == "noiseVelocity")
+                s.noiseVelocity = numbers<4>(v, key);
             else if (key == "shadowMapSize") {
                 s.shadowMapSize = whole(v, key);
                 if (s.shadowMapSize < 1 || s.shadowMapSize > 16384)
@@ -143,6 +181,16 @@ class SettingsReader {
         return static_cast<float>(d);
     }
 
+    template <size_t N>
+    std::array<float, N> numbers(const json& v, const std::string& key) const {
+        if (!v.is_array() || v.size() != N)
+            fail(key + " = " + v.dump() + ": must be an array of " + std::to_string(N) +
+                 " numbers");
+        std::array<float, N> out{};
+        for (size_t i = 0; i < N; ++i) out[i] = number(v[i], key + "[" + std::to_string(i) + "]");
+        return out;
+    }
+
     bool boolean(const json& v, const std::string& key) const {
         if (!v.is_boolean()) fail(key + " = " + v.dump() + ": must be true or false");
         return v.get<bool>();
@@ -180,6 +228,18 @@ class SettingsReader {
 
 lightscatter::Settings loadSettingsFile(const std::string& path, lightscatter::Settings base) {
     return SettingsReader(path).read(base);
+}
+
+const char* sliceTargetName(lightscatter::SliceTarget target) {
+    switch (target) {
+        case lightscatter::SliceTarget::Float16:
+            return "float16";
+        case lightscatter::SliceTarget::Float32:
+            return "float32";
+        case lightscatter::SliceTarget::Rgba8Channels:
+            return "rgba8";
+    }
+    return "unknown";
 }
 
 }  // namespace host

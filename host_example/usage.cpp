@@ -8,17 +8,21 @@ namespace {
 
 const char* kCommon =
     "common options: --device NAME (or LS_DEVICE), --validation, --help (-h)\n"
-    "methods: auto (default), epipolar, brute-force, analytic, cone-march; profiles: high-quality,\n"
-    "balanced (default), high-performance, low-high-quality, low-balanced, low-high-performance,\n"
-    "custom (with --settings)\n";
+    "methods: auto (default), epipolar, brute-force, analytic, cone-march, slices; profiles:\n"
+    "high-quality, balanced (default), high-performance, low-high-quality, low-balanced,\n"
+    "low-high-performance, custom (with --settings)\n";
 
 const char* kSettings =
-    "  --settings FILE.json  every field of lightscatter::Settings by name (slices, "
-    "samplesPerSlice,\n"
-    "                        initialSampleStep, refinementThreshold, bilateralThreshold,\n"
-    "                        minMaxTrees, shadowFilter, fixup, fixupMaxSteps, shadowDepthBias,\n"
-    "                        interpolation, shadowMapSize); fields it leaves out keep the values\n"
-    "                        of --profile, and the frame runs as the custom profile\n";
+    "  --settings FILE.json  every field of lightscatter::Settings by name (slices,\n"
+    "                        samplesPerSlice, initialSampleStep, refinementThreshold,\n"
+    "                        bilateralThreshold, minMaxTrees, shadowFilter, fixup, fixupMaxSteps,\n"
+    "                        shadowDepthBias, interpolation, shadowMapSize; cone-march's\n"
+    "                        coneSamples, coneLimited, coneJitter, shadowSampling; slices'\n"
+    "                        slicePlanes, sliceTarget (float16, float32, rgba8),\n"
+    "                        slicePlaneScaling, sliceRange, sliceDither, sliceBlur, sliceAmbient,\n"
+    "                        noiseAmplitude, noiseScale, noiseVelocity [4 numbers]); fields it\n"
+    "                        leaves out keep the values of --profile, and the frame runs as the\n"
+    "                        custom profile\n";
 
 struct Command {
     const char* name;
@@ -42,9 +46,11 @@ const std::array kCommands{
         "Outputs are written all or nothing: each must be its own file and none may be an "
         "input.\n"},
     Command{"budget",
-            "budget [--profile NAME|all] [--settings FILE.json] [--size WxH] [--shadow-map N] "
-            "[--json]\n",
-            "Prints the epipolar method's GPU memory per profile without a GPU.\n"
+            "budget [--method epipolar|slices] [--profile NAME|all] [--settings FILE.json]\n"
+            "                    [--size WxH] [--shadow-map N] [--json]\n",
+            "Prints a method's GPU memory per profile without a GPU.\n"
+            "  --method NAME       epipolar (default) or slices, the methods whose textures\n"
+            "                      depend on the profile\n"
             "  --profile NAME|all  one profile, or all of them (default)\n"
             "  --size WxH          the screen, 1 to 16384 each (default 2560x1600)\n"
             "  --shadow-map N      the shadow map's size, 1 to 16384 (default: the profile's)\n"
@@ -60,9 +66,10 @@ const std::array kCommands{
         "view SCENE.json [--method NAME] [--profile NAME] [--settings FILE.json] [--size WxH]\n"
         "                  [--frames N] [--screenshot FILE.png] [--resize-at N --resize-to WxH]\n"
         "                  [--animate-light] [--resizes N] [--memory-log FILE.csv]\n",
-        "Opens a window (needs a display; xvfb-run -a gives one). WASD/QE move, left-drag looks,\n"
-        "arrow keys move the light, M cycles the methods, P cycles profiles, T toggles the min/max\n"
-        "trees, Esc quits.\n"
+        "Opens a window (needs a display; xvfb-run -a gives one). WASD/QE move, left-drag\n"
+        "looks, arrow keys move the light, M cycles the methods, P cycles profiles, T toggles\n"
+        "the min/max trees, N steps the scrolling noise's amplitude (0, 0.25, 0.5, 1; slices\n"
+        "and auto only), Esc quits.\n"
         "  --size WxH          1 to 16384 each (default 960x540)\n"
         "  --frames N          close after N frames (1 to 100000)\n"
         "  --screenshot FILE   the last frame as a PNG (needs --frames)\n"

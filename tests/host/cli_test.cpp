@@ -59,7 +59,7 @@ TEST(Cli, RenderWritesPngLinAndTimings) {
 
 TEST(Cli, RenderEachSceneWithEachMethod) {
     for (const char* name : {"atrium", "window_room", "engine_spot", "point_fog"})
-        for (const char* method : {"epipolar", "brute-force", "cone-march", "auto"}) {
+        for (const char* method : {"epipolar", "brute-force", "cone-march", "slices", "auto"}) {
             const auto r = run(std::string("render ") + scene(name) + " --size 48x27 --method " +
                                method + " --out " + name + ".exr --validation");
             EXPECT_EQ(r.exitCode, 0) << name << " " << method << ": " << r.out;
@@ -80,6 +80,110 @@ TEST(Cli, RenderEachSceneWithEachMethod) {
                        "light is directional");
     refusedAfterDevice(run("render " + scene("window_room") + " --size 48x27 --method analytic --out w.exr"),
                        "cannot cast shadows");
+}
+
+// Seed 002's slice planes through the command line: an image, Lin, and timings naming the method.
+TEST(Cli, RenderWithSlicesWritesAnImage) {
+    const auto r = run("render " + scene("window_room") +
+                       " --size 48x27 --method slices --out slices.png --inscatter slices.exr"
+                       " --timings slices.json --validation");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_NE(r.out.find("slices"), std::string::npos) << r.out;
+    EXPECT_TRUE(exists("slices.png"));
+    const host::FloatImage lin = host::readExr(path("slices.exr"));
+    ASSERT_EQ(lin.width, 48u);
+    ASSERT_EQ(lin.height, 27u);
+    float most = 0;
+    for (size_t i = 0; i < lin.rgba.size(); ++i) {
+        if (i % 4 == 3) continue;
+        ASSERT_TRUE(std::isfinite(lin.rgba[i]));
+        EXPECT_GE(lin.rgba[i], 0.0f);
+        most = std::max(most, lin.rgba[i]);
+    }
+    EXPECT_GT(most, 0.0f);
+    std::ifstream t(path("slices.json"));
+    const auto j = nlohmann::json::parse(t);
+    EXPECT_EQ(j["method"], "slices");
+    EXPECT_EQ(j["methodRan"], "slices");
+}
+
+// Every slices field of --settings by name; the noise makes auto pick slices, and is refused in
+// one line, before any device, with a method that does not sample it.
+TEST(Cli, SlicesSettingsAndTheirNoise) {
+    writeFile("slices-settings.json", R"({"slicePlanes": 24, "sliceTarget": "rgba8",
+        "slicePlaneScaling": true, "sliceRange": 0, "sliceDither": false, "sliceBlur": 1,
+        "sliceAmbient": 0.001, "noiseAmplitude": 0.5, "noiseScale": 2,
+        "noiseVelocity": [0.1, 0, -0.1, 0.2]})");
+    const auto r = run("render " + scene("window_room") +
+                       " --size 48x27 --settings slices-settings.json --out n.png --timings n.json"
+                       " --validation");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    std::ifstream t(path("n.json"));
+    const auto j = nlohmann::json::parse(t);
+    EXPECT_EQ(j["profile"], "custom");
+    EXPECT_EQ(j["method"], "auto");
+    EXPECT_EQ(j["methodRan"], "slices");
+    EXPECT_NE(j["reason"].get<std::string>().find("noise"), std::string::npos) << j["reason"];
+
+    const auto refused = run("render " + scene("window_room") +
+                             " --size 48x27 --method cone-march --settings slices-settings.json"
+                             " --out c.png");
+    expectFailure(refused,
+                  "slices-settings.json: noiseAmplitude = 0.5: seed 002's scrolling noise "
+                  "is honoured by method slices only; --method cone-march");
+    EXPECT_EQ(refused.out.find("using Vulkan device"), std::string::npos) << refused.out;
+    expectFailure(run("graph " + scene("atrium") +
+                      " --json --method epipolar --settings slices-settings.json"),
+                  "noiseAmplitude");
+    EXPECT_FALSE(exists("c.png"));
+
+    writeFile("target.json", R"({"sliceTarget": "rgba16"})");
+    expectFailure(run("render " + scene("window_room") + " --method slices --settings target.json"),
+                  "target.json: sliceTarget = \"rgba16\": must be one of float16, float32, rgba8");
+    writeFile("amplitude.json", R"({"noiseAmplitude": 2})");
+    expectFailure(
+        run("render " + scene("window_room") + " --method slices --settings amplitude.json"),
+        "amplitude.json: noiseAmplitude = 2: must be in [0, 1]");
+    writeFile("velocity.json", R"({"noiseVelocity": [1, 2, 3]})");
+    expectFailure(run("view " + scene("window_room") + " --method slices --settings velocity.json"),
+                  "velocity.json: noiseVelocity = [1,2,3]: must be an array of 4 numbers");
+    writeFile("planes.json", R"({"slicePlanes": 1})");
+    expectFailure(run("budget --method slices --settings planes.json"),
+                  "planes.json: slicePlanes = 1: must be between 2 and 4096");
+}
+
+TEST(Cli, BudgetOfSlicesPrintsTheirTextures) {
+    const auto r = run("budget --method slices");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    for (const char* line : {"slices, high-quality: 256 planes into float32",
+                             "slices, balanced: 128 planes into float16",
+                             "slices, high-performance: 100 planes into rgba8",
+                             "slices, low-high-performance: 48 planes into rgba8"})
+        EXPECT_NE(r.out.find(line), std::string::npos) << line << "\n" << r.out;
+    EXPECT_NE(r.out.find("R32G32B32A32_SFLOAT"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("R8G8B8A8_UNORM"), std::string::npos) << r.out;
+    // Seed 000's figures are the epipolar method's, and no epipolar texture is listed.
+    EXPECT_EQ(r.out.find("seed 000"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("epipolar"), std::string::npos) << r.out;
+
+    const auto j = run("budget --method slices --profile high-performance --size 320x180 --json");
+    ASSERT_EQ(j.exitCode, 0) << j.out;
+    const auto parsed = nlohmann::json::parse(j.out);
+    ASSERT_EQ(parsed.size(), 1u);
+    EXPECT_EQ(parsed[0]["method"], "slices");
+    EXPECT_EQ(parsed[0]["slicePlanes"], 100);
+    EXPECT_EQ(parsed[0]["sliceTarget"], "rgba8");
+    EXPECT_FALSE(parsed[0].contains("seed"));
+    bool rgba8 = false;
+    for (const auto& e : parsed[0]["resources"]) rgba8 |= e["format"] == "R8G8B8A8_UNORM";
+    EXPECT_TRUE(rgba8) << parsed.dump();
+    const auto e = run("budget --profile balanced --json");
+    ASSERT_EQ(e.exitCode, 0) << e.out;
+    EXPECT_EQ(nlohmann::json::parse(e.out)[0]["method"], "epipolar");
+
+    expectFailure(run("budget --method cone-march"),
+                  "--method cone-march: budget knows epipolar and slices only");
+    expectFailure(run("budget --method raytrace"), "unknown method 'raytrace'");
 }
 
 TEST(Cli, BudgetPrintsEveryProfileBesideTheSeed) {

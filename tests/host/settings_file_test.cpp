@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <array>
+
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -61,6 +63,32 @@ TEST_F(HostSettingsFile, EveryFieldByName) {
     EXPECT_FLOAT_EQ(s.shadowDepthBias, -0.001f);
     EXPECT_EQ(s.interpolation, lightscatter::Interpolation::Inscattering);
     EXPECT_EQ(s.shadowMapSize, 1024u);
+
+    const lightscatter::Settings c = load(R"({"coneSamples": 64, "coneLimited": false,
+        "coneJitter": true, "shadowSampling": false})");
+    EXPECT_EQ(c.coneSamples, 64u);
+    EXPECT_FALSE(c.coneLimited);
+    EXPECT_TRUE(c.coneJitter);
+    EXPECT_FALSE(c.shadowSampling);
+
+    const lightscatter::Settings p = load(R"({"slicePlanes": 200, "sliceTarget": "rgba8",
+        "slicePlaneScaling": true, "sliceRange": 0.5, "sliceDither": false, "sliceBlur": 3,
+        "sliceAmbient": 0.02, "noiseAmplitude": 0.75, "noiseScale": 2.5,
+        "noiseVelocity": [0.1, -0.2, 0.3, -0.4]})");
+    EXPECT_EQ(p.slicePlanes, 200u);
+    EXPECT_EQ(p.sliceTarget, lightscatter::SliceTarget::Rgba8Channels);
+    EXPECT_TRUE(p.slicePlaneScaling);
+    EXPECT_FLOAT_EQ(p.sliceRange, 0.5f);
+    EXPECT_FALSE(p.sliceDither);
+    EXPECT_EQ(p.sliceBlur, 3u);
+    EXPECT_FLOAT_EQ(p.sliceAmbient, 0.02f);
+    EXPECT_FLOAT_EQ(p.noiseAmplitude, 0.75f);
+    EXPECT_FLOAT_EQ(p.noiseScale, 2.5f);
+    EXPECT_EQ(p.noiseVelocity, (std::array<float, 4>{0.1f, -0.2f, 0.3f, -0.4f}));
+    EXPECT_EQ(load(R"({"sliceTarget": "float16"})").sliceTarget,
+              lightscatter::SliceTarget::Float16);
+    EXPECT_EQ(load(R"({"sliceTarget": "float32"})").sliceTarget,
+              lightscatter::SliceTarget::Float32);
 }
 
 TEST_F(HostSettingsFile, FieldsLeftOutKeepTheProfilesValues) {
@@ -94,6 +122,24 @@ TEST_F(HostSettingsFile, BadFieldsAreNamed) {
     EXPECT_EQ(errorFor(R"({"interpolation": 2})"),
               "interpolation = 2: must be one of shadowed-fraction, inscattering");
     EXPECT_EQ(errorFor(R"({"shadowMapSize": 0})"), "shadowMapSize = 0: must be from 1 to 16384");
+    EXPECT_EQ(errorFor(R"({"sliceTarget": "rgba16"})"),
+              "sliceTarget = \"rgba16\": must be one of float16, float32, rgba8");
+    EXPECT_EQ(errorFor(R"({"noiseAmplitude": 2})"), "noiseAmplitude = 2: must be in [0, 1]");
+    EXPECT_EQ(errorFor(R"({"noiseAmplitude": "loud"})"),
+              "noiseAmplitude = \"loud\": must be a number");
+    EXPECT_EQ(errorFor(R"({"slicePlanes": 1})"), "slicePlanes = 1: must be between 2 and 4096");
+    EXPECT_EQ(errorFor(R"({"sliceBlur": 9})"), "sliceBlur = 9: at most 8 pixels");
+    EXPECT_EQ(errorFor(R"({"sliceDither": "yes"})"),
+              "sliceDither = \"yes\": must be true or false");
+    EXPECT_EQ(errorFor(R"({"noiseScale": 0})"), "noiseScale = 0: must be finite and > 0");
+    EXPECT_EQ(errorFor(R"({"noiseVelocity": [1, 2, 3]})"),
+              "noiseVelocity = [1,2,3]: must be an array of 4 numbers");
+    EXPECT_EQ(errorFor(R"({"noiseVelocity": 0.1})"),
+              "noiseVelocity = 0.1: must be an array of 4 numbers");
+    EXPECT_EQ(errorFor(R"({"noiseVelocity": [0, 0, true, 0]})"),
+              "noiseVelocity[2] = true: must be a number");
+    EXPECT_EQ(errorFor(R"({"noiseVelocity": [0, 0, 0, 1e39]})"),
+              "noiseVelocity[3] = 1e+39: must be a finite number");
     EXPECT_EQ(errorFor("[512]"), "the top level must be a JSON object of settings");
     EXPECT_EQ(errorFor("{").rfind("malformed JSON: ", 0), 0u);
 }

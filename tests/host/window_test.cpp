@@ -70,3 +70,23 @@ TEST(Window, VeryBrightPixelsStayWhite) {
     stbi_image_free(px);
     EXPECT_EQ(white, w * h);
 }
+
+// Seed 002's slice planes in the window, with the scrolling noise on: each frame carries the time
+// since the window opened (FrameDescription::timeSeconds).
+TEST(Window, SlicesWithScrollingNoise) {
+    ASSERT_EQ(std::system("command -v xvfb-run > /dev/null"), 0)
+        << "xvfb-run is missing (Debian package xvfb)";
+    const auto dir = std::filesystem::path(cli_test::scratch());
+    std::ofstream(dir / "noise.json") << R"({"noiseAmplitude": 0.5, "slicePlanes": 24})";
+    const auto r = cli_test::run("view " + cli_test::scene("window_room") +
+                                     " --method slices --settings noise.json --size 64x36"
+                                     " --frames 3 --screenshot noise.png --validation",
+                                 "xvfb-run -a -s '-screen 0 640x480x24'");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    int w = 0, h = 0, n = 0;
+    unsigned char* px = stbi_load((dir / "noise.png").string().c_str(), &w, &h, &n, 4);
+    ASSERT_NE(px, nullptr);
+    stbi_image_free(px);
+    EXPECT_EQ(w, 64);
+    EXPECT_EQ(h, 36);
+}
