@@ -92,6 +92,19 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
     }
     b.totalBytes = compiled.unaliasedBytes;
     b.peakBytes = compiled.aliasedBytes;
+    const bool noise = custom && custom->noiseAmplitude > 0.0f;  // read from custom with every profile
+    if (method == Method::Slices && noise) {
+        // The plugin's own tiling noise lives across frames (an engine's noise image replaces it).
+        VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+        info.format = detail::kNoiseFormat;
+        info.extent = {detail::kNoiseExtent.width, detail::kNoiseExtent.height, 1};
+        info.mipLevels = info.arrayLayers = 1;
+        const uint64_t bytes = caps.imageRequirements(info).size;
+        b.entries.push_back({"tiling noise", rg::formatName(detail::kNoiseFormat), detail::kNoiseExtent.width,
+                             detail::kNoiseExtent.height, bytes, false});
+        b.totalBytes += bytes;
+        b.peakBytes += bytes;
+    }
     if (light != LightType::Directional && method == Method::Epipolar) {
         // The table lives across frames, outside the graph's aliased memory.
         VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};

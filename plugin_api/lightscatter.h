@@ -310,7 +310,9 @@ struct Budget {
 };
 
 // A method's memory for a profile, screen and shadow-map size; needs no GPU. Epipolar and slices
-// (the methods whose textures depend on the profile).
+// (the methods whose textures depend on the profile). `custom` gives the settings of the Custom
+// profile, and with every profile the ones read from `custom` (slices: a noise amplitude above 0
+// adds the plugin's tiling noise).
 LIGHTSCATTER_API Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
                                uint32_t shadowMapSize, LightType light = LightType::Spot,
                                const Settings* custom = nullptr, Method method = Method::Epipolar);

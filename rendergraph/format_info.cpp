@@ -16,6 +16,7 @@ struct FormatFacts {
 
 constexpr std::array kFormats = {
     FormatFacts{VK_FORMAT_R8_UNORM, "R8_UNORM", 1, false, false},
+    FormatFacts{VK_FORMAT_R8G8_UNORM, "R8G8_UNORM", 2, false, false},
     FormatFacts{VK_FORMAT_R8G8B8A8_UNORM, "R8G8B8A8_UNORM", 4, false, false},
     FormatFacts{VK_FORMAT_R8G8B8A8_SRGB, "R8G8B8A8_SRGB", 4, false, false},
     FormatFacts{VK_FORMAT_B8G8R8A8_UNORM, "B8G8R8A8_UNORM", 4, false, false},

@@ -146,6 +146,13 @@ TEST(Budget, SlicesListsItsTargetPerProfile) {
         EXPECT_FALSE(seen.count("coordinate texture R32G32_SFLOAT")) << all;
         for (const auto& e : b.entries) EXPECT_NE(e.name, "point-light table");
     }
+    lightscatter::Settings noisy;
+    noisy.noiseAmplitude = 0.5f;
+    const auto withNoise = lightscatter::budget(Profile::Balanced, 1920, 1080, 2048, lightscatter::LightType::Spot,
+                                                &noisy, lightscatter::Method::Slices);
+    const auto without = lightscatter::budget(Profile::Balanced, 1920, 1080, 2048, lightscatter::LightType::Spot,
+                                              nullptr, lightscatter::Method::Slices);
+    EXPECT_EQ(withNoise.peakBytes - without.peakBytes, 256u * 256u * 2u);
     try {
         (void)lightscatter::budget(Profile::Balanced, 1920, 1080, 2048, lightscatter::LightType::Spot, nullptr,
                                    lightscatter::Method::BruteForce);
