@@ -1,0 +1,152 @@
+// Seed 004's beam tree on configurations whose visible set is known: a light at the origin looking
+// down -z, squares and boxes in front of it.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "beam_tree/beam_tree.h"
+#include "beam_tree/occluders.h"
+
+using namespace ls::beam;
+
+namespace {
+
+// A square of side `side` centred on the -z axis at depth z (< 0), facing the light.
+Polygon square(double side, double z, double x = 0.0, double y = 0.0) {
+    const double h = side / 2;
+    return {{x - h, y - h, z}, {x + h, y - h, z}, {x + h, y + h, z}, {x - h, y + h, z}};
+}
+
+double visibleArea(const BeamTree& t, bool backplate = false) {
+    double a = 0;
+    for (const auto& v : t.visibleSet())
+        if (v.backplate == backplate) a += area(v.polygon);
+    return a;
+}
+
+OrientedBox box(glm::dvec3 center, glm::dvec3 half) {
+    OrientedBox b;
+    b.center = center;
+    b.halfExtents = half;
+    return b;
+}
+
+}  // namespace
+
+TEST(BeamTree, ClassifiesPointsAroundOneSquare) {
+    BeamTree t({0, 0, 0}, {});
+    EXPECT_EQ(t.insert(square(2.0, -2.0)), 1u);
+    EXPECT_EQ(t.classify({0, 0, -1}), Region::Lit);         // between light and square
+    EXPECT_EQ(t.classify({0, 0, -3}), Region::Uncertain);   // behind it (no inner volume)
+    EXPECT_EQ(t.classify({0.9, 0.9, -3}), Region::Uncertain);  // behind its corner, inside the beam
+    EXPECT_EQ(t.classify({1.6, 0, -3}), Region::Lit);       // beside the beam (it widens to 1.5)
+    EXPECT_EQ(t.classify({0, 0, 3}), Region::Lit);          // behind the light
+    EXPECT_TRUE(t.isInside({0, 0, -10}));
+    EXPECT_FALSE(t.isInside({0, 0, -1.5}));
+    // A point on the square itself is in front of it (thick plane), so lit.
+    EXPECT_EQ(t.classify({0.3, 0.2, -2.0}), Region::Lit);
+}
+
+TEST(BeamTree, WallsBoundTheLightsFrustum) {
+    const LightFrustum f = spotFrustum({0, 0, 0}, {0, 0, -1}, 0.5, 10.0);
+    BeamTree t(f.position, f.walls);
+    EXPECT_EQ(t.classify({0, 0, -5}), Region::Lit);
+    EXPECT_EQ(t.classify({5, 0, -5}), Region::Outside);  // tan(0.5) = 0.55: x = 5 at z = -5 is out
+    EXPECT_EQ(t.classify({0, 0, 5}), Region::Outside);   // behind the spot
+    t.addBackplate(f.far);
+    const double side = 2 * 10.0 * std::tan(0.5);
+    EXPECT_NEAR(visibleArea(t, true), side * side, 1e-9);
+}
+
+// Front to back, a near square hides part of a far one: the far one's visible part is its area
+// minus the near square's shadow on it. Back to front, the far square claims the beams first and the
+// near one falls into its solid space, lost: the order is the caller's duty (seed 004, 4.2).
+TEST(BeamTree, FrontToBackInsertionGivesTheVisibleSet) {
+    BeamTree t({0, 0, 0}, {});
+    t.insert(square(1.0, -2.0));
+    t.insert(square(4.0, -6.0));
+    // The near square's shadow at z = -6 has side 3.
+    EXPECT_NEAR(visibleArea(t), 1.0 + (16.0 - 9.0), 1e-9);
+    EXPECT_EQ(t.classify({0, 0, -4}), Region::Uncertain);
+    EXPECT_EQ(t.classify({1.8, 0, -5.9}), Region::Lit);
+    EXPECT_EQ(t.classify({1.8, 0, -6.5}), Region::Uncertain);
+
+    BeamTree wrong({0, 0, 0}, {});
+    wrong.insert(square(4.0, -6.0));
+    wrong.insert(square(1.0, -2.0));
+    EXPECT_NEAR(visibleArea(wrong), 16.0, 1e-9);
+    EXPECT_EQ(wrong.classify({0, 0, -4}), Region::Lit);  // behind the near square, wrongly lit
+}
+
+// Seed 004's bounding volumes: a box behind a box, each the outer volume of an object with an inner
+// box inside. Visible set: the near box's light-facing face and the far box's face minus the near
+// one's shadow; behind an inner box the light is certainly gone.
+TEST(BeamTree, TheVisibleSetOfABoxBehindABox) {
+    const LightFrustum f = spotFrustum({0, 0, 0}, {0, 0, -1}, 0.8, 20.0);
+    std::vector<Occluder> boxes(2);
+    boxes[0].outer = box({0, 0, -6.5}, {2, 2, 0.5});   // far, listed first: the build sorts them
+    boxes[0].inner = box({0, 0, -6.5}, {1.5, 1.5, 0.4});
+    boxes[1].outer = box({0, 0, -2.5}, {0.5, 0.5, 0.5});
+    boxes[1].inner = box({0, 0, -2.5}, {0.25, 0.25, 0.25});
+    const LightVolume v = buildLightVolume(f, boxes);
+    // Light-facing faces: only the z = -2 and z = -6 faces (a light on the axis is behind the planes
+    // of every side face).
+    EXPECT_EQ(v.outerPolygons, 2u);
+    EXPECT_NEAR(visibleArea(v.tree), 1.0 + (16.0 - 9.0), 1e-9);
+    EXPECT_EQ(v.tree.classify({0, 0, -1.5}), Region::Lit);
+    EXPECT_EQ(v.tree.classify({0.45, 0, -2.1}), Region::Uncertain);  // inside the near outer box, not its inner
+    EXPECT_EQ(v.tree.classify({0, 0, -2.5}), Region::Unlit);         // behind the near inner box's face
+    EXPECT_EQ(v.tree.classify({0, 0, -4.0}), Region::Unlit);         // in its shadow
+    EXPECT_EQ(v.tree.classify({1.8, 0, -5.95}), Region::Lit);        // lit part of the far face
+    EXPECT_EQ(v.tree.classify({1.8, 0, -6.05}), Region::Uncertain);  // inside the far outer box only
+    EXPECT_EQ(v.tree.classify({0.5, 0, -8.0}), Region::Unlit);       // behind the far inner box
+    EXPECT_EQ(v.tree.classify({0, 0, 1.0}), Region::Outside);
+}
+
+// Coplanar input: two squares sharing an edge, and a duplicate of one. The thick planes keep the
+// shared edge from leaving slivers, and the duplicate adds nothing.
+TEST(BeamTree, ThickPlanesOnCoplanarInput) {
+    BeamTree t({0, 0, 0}, {});
+    EXPECT_EQ(t.insert(square(1.0, -2.0, -0.5)), 1u);
+    t.insert(square(1.0, -2.0, 0.5));
+    EXPECT_NEAR(visibleArea(t), 2.0, 1e-9);
+    EXPECT_EQ(t.insert(square(1.0, -2.0, -0.5)), 0u);  // the same square again: already solid
+    EXPECT_NEAR(visibleArea(t), 2.0, 1e-9);
+    // A point within the thickness of the shared edge's plane is classified the same way whichever
+    // way rounding falls: in front of both beams' edge planes (seed 004's rule for points on a
+    // plane), so lit, a seam epsilon wide. Beyond the thickness it is behind the squares.
+    const Region seam = t.classify({0.0, 0.2, -3.0});
+    EXPECT_EQ(t.classify({1e-9, 0.2, -3.0}), seam);
+    EXPECT_EQ(t.classify({-1e-9, 0.2, -3.0}), seam);
+    EXPECT_EQ(seam, Region::Lit);
+    EXPECT_EQ(t.classify({0.01, 0.2, -3.0}), Region::Uncertain);
+    EXPECT_EQ(t.classify({-0.01, 0.2, -3.0}), Region::Uncertain);
+    // A polygon seen edge-on from the light blocks nothing.
+    EXPECT_EQ(t.insert({{0, 0, -1}, {0, 1, -1}, {0, 1, -3}, {0, 0, -3}}), 0u);
+}
+
+// Partitioning a sampling plane (seed 004, 4.4 and 5.3): its parts by region add up to it, and each
+// part is where classify() says.
+TEST(BeamTree, PartitionSortsAPolygonsPartsByRegion) {
+    const LightFrustum f = spotFrustum({0, 0, 0}, {0, 0, -1}, 0.8, 20.0);
+    std::vector<Occluder> boxes(1);
+    boxes[0].outer = box({0, 0, -2.5}, {0.5, 0.5, 0.5});
+    boxes[0].inner = box({0, 0, -2.5}, {0.25, 0.25, 0.25});
+    const LightVolume v = buildLightVolume(f, boxes);
+    const Polygon plane = square(12.0, -4.0);  // larger than the frustum there (side 8.24)
+    const BeamTree::Parts parts = v.tree.partition(plane);
+    double lit = 0, uncertain = 0, unlit = 0;
+    for (const auto& p : parts.lit) lit += area(p);
+    for (const auto& p : parts.uncertain) uncertain += area(p);
+    for (const auto& p : parts.unlit) unlit += area(p);
+    const double frustumSide = 2 * 4.0 * std::tan(0.8);
+    // Shadows at z = -4: the outer box's front face (z = -2, side 1) spans side 2; the inner box's
+    // (z = -2.25, side 0.5) spans 0.5 * 4 / 2.25.
+    const double outerShadow = 2.0 * 2.0, innerShadow = std::pow(0.5 * 4.0 / 2.25, 2);
+    EXPECT_NEAR(lit + uncertain + unlit, frustumSide * frustumSide, 1e-6);
+    EXPECT_NEAR(unlit, innerShadow, 1e-6);
+    EXPECT_NEAR(uncertain, outerShadow - innerShadow, 1e-6);
+    for (const auto& p : parts.lit) EXPECT_EQ(v.tree.classify(centroid(p)), Region::Lit);
+    for (const auto& p : parts.uncertain) EXPECT_EQ(v.tree.classify(centroid(p)), Region::Uncertain);
+    for (const auto& p : parts.unlit) EXPECT_EQ(v.tree.classify(centroid(p)), Region::Unlit);
+}
