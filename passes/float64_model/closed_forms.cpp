@@ -99,4 +99,28 @@ glm::dvec3 pointArctanClosedForm(const Medium& medium, const Light& light, const
     return light.intensity * medium.betaM * (kIsotropicPhase * sum);
 }
 
+glm::dvec3 simplifiedClosedForm(const Medium& medium, const Light& light, const Ray& ray, double a0, double a1) {
+    const Interval whole{0.0, ray.length};
+    return simplifiedClosedForm(medium, light, ray, {&whole, 1}, a0, a1);
+}
+
+glm::dvec3 simplifiedClosedForm(const Medium& medium, const Light& light, const Ray& ray,
+                                std::span<const Interval> lit, double a0, double a1) {
+    if (light.type == Light::Directional)
+        throw std::invalid_argument("simplifiedClosedForm: needs a point or spot light");
+    if (!(a1 > 0.0) || !(a0 >= 0.0))
+        throw std::invalid_argument("simplifiedClosedForm: needs a1 > 0 and a0 >= 0");
+    const std::optional<Ray> maybeUnit = unitRay(ray);
+    if (!maybeUnit) return glm::dvec3(0.0);
+    const Ray& unit = *maybeUnit;
+    const double b = glm::dot(unit.direction, unit.origin - light.position);  // -z_s of (2.16)
+    const double h = lineDistance(unit, light.position);                      // r_0 of (2.16)
+    const double w = std::sqrt(h * h + a0 / a1);
+    const std::vector<Interval> lit01 =
+        intersectIntervals(normalizeIntervals(lit, unit.length), spotLitIntervals(light, unit));
+    double sum = 0.0;
+    for (const Interval& in : lit01) sum += arctanIntegral(b + in.begin, w, in.end - in.begin);
+    return light.intensity * (medium.betaR + medium.betaM) * (kIsotropicPhase * sum / a1);
+}
+
 }  // namespace ls::ref

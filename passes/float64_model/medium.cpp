@@ -21,8 +21,19 @@ double phaseCornetteShanks(double cosTheta, double g) {
            (denom * std::sqrt(denom));
 }
 
+double phaseHazy(double cosTheta) {
+    const double h = 0.5 * (1.0 + cosTheta);
+    const double h2 = h * h, h4 = h2 * h2;
+    return kHazyK * (1.0 + 9.0 * h4 * h4);
+}
+
 double Medium::pM(double cosTheta) const {
-    return miePhase == Isotropic ? kIsotropicPhase : phaseCornetteShanks(cosTheta, g);
+    switch (miePhase) {
+        case Isotropic: return kIsotropicPhase;
+        case Hazy: return phaseHazy(cosTheta);
+        case CornetteShanks: break;
+    }
+    return phaseCornetteShanks(cosTheta, g);
 }
 
 glm::dvec3 Medium::P(double cosTheta) const {
