@@ -24,6 +24,19 @@
 namespace host {
 namespace {
 
+// The node's axes made orthonormal (Gram-Schmidt from the first column; a degenerate column falls
+// back to the world axis), right-handed.
+glm::mat3 orthonormalAxes(const glm::mat3& m) {
+    auto unit = [](glm::vec3 v, glm::vec3 fallback) {
+        const float l = glm::length(v);
+        return l > 1e-12f && std::isfinite(l) ? v / l : fallback;
+    };
+    const glm::vec3 x = unit(m[0], {1, 0, 0});
+    glm::vec3 y = unit(m[1] - glm::dot(m[1], x) * x, {0, 0, 0});
+    if (glm::length(y) < 0.5f) y = unit(glm::cross(x, std::fabs(x.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0)), {0, 1, 0});
+    return glm::mat3(x, y, glm::cross(x, y));
+}
+
 constexpr uint32_t kGlbMagic = 0x46546C67u;  // "glTF"
 constexpr uint32_t kGlbJson = 0x4E4F534Au;   // "JSON"
 constexpr uint32_t kGlbBin = 0x004E4942u;    // "BIN\0"
@@ -600,6 +613,9 @@ class GltfFlattener {
         primitive.firstIndex = uint32_t(mesh_.indices.size());
         primitive.indexCount = uint32_t(local.triangles.size());
         primitive.material = local.material < 0 ? -1 : int(materialBase_) + local.material;
+        primitive.firstVertex = uint32_t(base);
+        primitive.vertexCount = uint32_t(local.positions.size());
+        primitive.axes = orthonormalAxes(linear);
         // A mirroring transform turns counter-clockwise triangles clockwise; swapping two corners
         // keeps the world-space front faces counter-clockwise, as the normals say.
         const bool mirrored = det < 0.0f;

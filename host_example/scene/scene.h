@@ -36,6 +36,8 @@ struct Primitive {
     uint32_t firstIndex = 0;  // into MeshData::indices
     uint32_t indexCount = 0;  // a multiple of 3: triangle lists (strips and fans are converted)
     int material = -1;        // index into MeshData::materials, -1: default white
+    uint32_t firstVertex = 0, vertexCount = 0;  // into MeshData::vertices
+    glm::mat3 axes{1.0f};     // its node's world axes, orthonormalised (for an oriented bounding box)
 };
 
 struct Bounds {
