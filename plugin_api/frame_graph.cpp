@@ -45,6 +45,20 @@ rg::ImportedImage importDescription(const ImageInput& in) {
     return d;
 }
 
+rg::ImportedImage persistentImport(const ImportState& s, VkImage image) {
+    rg::ImportedImage d = importDescription(s);
+    d.image = image;
+    d.initialStages = d.finalStages = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+    d.initialAccess = VK_ACCESS_2_NONE;
+    d.finalAccess = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
+    return d;
+}
+
+ImportState ownNoiseState() {
+    return {kNoiseFormat, kNoiseExtent, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT,
+            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+}
+
 rg::ImportedImage importDescription(const ImportState& s) {
     rg::ImportedImage d;
     d.format = s.format;
@@ -95,13 +109,8 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared, ls::S
         if (c.shadowed) planes.lightColor = fg.lightColor;
         if (c.noise) {
             fg.noise = g.importImage(c.engineNoise.format != VK_FORMAT_UNDEFINED ? "engine noise" : "tiling noise",
-                                     importDescription(c.engineNoise.format != VK_FORMAT_UNDEFINED
-                                                           ? c.engineNoise
-                                                           : ImportState{kNoiseFormat, kNoiseExtent,
-                                                                         VK_IMAGE_USAGE_SAMPLED_BIT |
-                                                                             VK_IMAGE_USAGE_STORAGE_BIT,
-                                                                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                                                                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL}));
+                                     importDescription(c.engineNoise.format != VK_FORMAT_UNDEFINED ? c.engineNoise
+                                                                                                 : ownNoiseState()));
             planes.noise = fg.noise;
         }
         ls::SlicePlanesOptions planeOptions;

@@ -63,6 +63,11 @@ ls::SliceAccumulation sliceAccumulation(SliceTarget target);
 
 rg::ImportedImage importDescription(const ImageInput& in);
 rg::ImportedImage importDescription(const ImportState& s);
+// An image the plugin owns across frames (the point-light table, the tiling noise): filled
+// outside the frame, sampled by fragment and compute shaders within it, left read-only.
+rg::ImportedImage persistentImport(const ImportState& s, VkImage image);
+// The plugin's own tiling noise, as the frame graph imports it.
+ImportState ownNoiseState();
 
 // The plugin's own tiling noise, when a slices frame uses it without an engine image.
 inline constexpr VkExtent2D kNoiseExtent{256, 256};

@@ -182,26 +182,10 @@ struct Plugin::Impl {
             if (frame.noise) {
                 fg.graph->updateImport(fg.noise, detail::importDescription(*frame.noise));
             } else {
-                rg::ImportedImage n = detail::importDescription(
-                    ImportState{detail::kNoiseFormat, detail::kNoiseExtent,
-                                VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT,
-                                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
-                n.image = tilingNoise->image();
-                n.initialStages = n.finalStages = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
-                n.initialAccess = VK_ACCESS_2_NONE;
-                n.finalAccess = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
-                fg.graph->updateImport(fg.noise, n);
+                fg.graph->updateImport(fg.noise, detail::persistentImport(detail::ownNoiseState(), tilingNoise->image()));
             }
         }
-        if (fg.table.valid()) {
-            rg::ImportedImage t = detail::importDescription(c.table);
-            t.image = pointTable->image();
-            t.initialStages = t.finalStages =
-                VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-            t.initialAccess = VK_ACCESS_2_NONE;
-            t.finalAccess = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
-            fg.graph->updateImport(fg.table, t);
-        }
+        if (fg.table.valid()) fg.graph->updateImport(fg.table, detail::persistentImport(c.table, pointTable->image()));
         if (!rehearsed) {
             // Passes build their pipelines on first use: do that on a command buffer of our own.
             try {

@@ -7,6 +7,8 @@
 #include "float64_model/inscatter_integral.h"
 #include "model_conversion.h"
 #include "plugin_fixture.h"
+#include "slices/slice_geometry.h"
+#include <glm/gtc/matrix_transform.hpp>
 
 using namespace plugin_test;
 using lightscatter::Method;
@@ -245,4 +247,39 @@ TEST_F(SlicesGpu, DirectionalLightAndBlurStayCloseToBruteForce) {
         EXPECT_EQ(e.nonFinite, 0u);
         EXPECT_LT(e.meanRelative, blur ? 0.03 : 0.01);
     }
+}
+
+// Where the planes go (no GPU): a camera inside the spot's volume starts them at its near plane,
+// and the seed's scaling of the count leaves a near volume all its planes and a far one fewer,
+// never under an eighth.
+TEST(SlicePlacement, FillsTheViewFromInsideAndScalesTheCountWithDistance) {
+    ls::CameraParams camera;
+    camera.view = glm::lookAt(glm::vec3(0, 1, 0), glm::vec3(0, 1, -1), glm::vec3(0, 1, 0));
+    camera.projection = glm::perspective(glm::radians(60.0f), 1.5f, 0.1f, 500.0f);
+    camera.nearPlane = 0.1f;
+    camera.farPlane = 500.0f;
+    ls::LightParams spot;
+    spot.kind = ls::LightKind::Spot;
+    spot.position = {0, 1, 1};
+    spot.direction = {0, 0, -1};
+    spot.cosHalfAngle = std::cos(0.5f);
+    spot.range = 20.0f;
+    ls::MediumParams medium;
+    medium.betaM = glm::vec3(0.02f);
+    ls::SliceSettings settings;
+    settings.planes = 128;
+    settings.planeScaling = true;
+    const ls::SlicePlacement inside = ls::placeSlices(camera, spot, medium, settings, 0.0);
+    EXPECT_EQ(inside.planes, 128u);
+    EXPECT_FLOAT_EQ(inside.push.boxMin.z, 0.1f);  // from the near plane
+    EXPECT_NEAR(inside.push.boxMin.z + 128 * inside.push.boxMin.w, 19.0f, 0.01f);  // to the range (z = 1 - 20)
+    spot.position = {0, 1, -200};
+    const ls::SlicePlacement far = ls::placeSlices(camera, spot, medium, settings, 0.0);
+    EXPECT_LT(far.planes, 128u);
+    EXPECT_GE(far.planes, 16u);
+    settings.planeScaling = false;
+    EXPECT_EQ(ls::placeSlices(camera, spot, medium, settings, 0.0).planes, 128u);
+    spot.direction = {0, 0, 1};  // pointing away, the volume all behind the camera
+    spot.position = {0, 1, 2};
+    EXPECT_EQ(ls::placeSlices(camera, spot, medium, settings, 0.0).planes, 0u);
 }

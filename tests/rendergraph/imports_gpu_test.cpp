@@ -49,6 +49,25 @@ struct EngineImage {
     }
 };
 
+// The engine's own use after the graph: a copy from TRANSFER_SRC_OPTIMAL into `host`, read on the CPU.
+void copyToHost(const rg::Device& dev, VkImage image, VkExtent2D size, rg::HostBuffer& host) {
+    dev.submitAndWait([&](VkCommandBuffer cmd) {
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageExtent = {size.width, size.height, 1};
+        vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, host.buffer(), 1, &region);
+        VkMemoryBarrier2 toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+        toHost.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
+        toHost.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+        toHost.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
+        toHost.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
+        VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+        dep.memoryBarrierCount = 1;
+        dep.pMemoryBarriers = &toHost;
+        vkCmdPipelineBarrier2(cmd, &dep);
+    });
+}
+
 }  // namespace
 
 class ImportsGpu : public GpuTest {};
@@ -99,22 +118,7 @@ TEST_F(ImportsGpu, RendersIntoEngineImagesAndLeavesThemInTheFinalLayout) {
         g.updateImport(target, describe(img.image));
         *colorValue = {static_cast<float>(frame) * 0.25f, 1.0f, 0.0f, 1.0f};
         exec.run();
-        // The engine's own use afterwards: a copy that expects TRANSFER_SRC_OPTIMAL.
-        dev().submitAndWait([&](VkCommandBuffer cmd) {
-            VkBufferImageCopy region{};
-            region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-            region.imageExtent = {size.width, size.height, 1};
-            vkCmdCopyImageToBuffer(cmd, img.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, host.buffer(), 1, &region);
-            VkMemoryBarrier2 toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-            toHost.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
-            toHost.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-            toHost.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-            toHost.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-            VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-            dep.memoryBarrierCount = 1;
-            dep.pMemoryBarriers = &toHost;
-            vkCmdPipelineBarrier2(cmd, &dep);
-        });
+        copyToHost(dev(), img.image, size, host);
         const auto* px = static_cast<const uint8_t*>(host.data());
         const int expectedRed = static_cast<int>(std::lround(frame * 0.25 * 255.0));
         for (uint32_t i = 0; i < size.width * size.height; ++i) {
@@ -206,21 +210,7 @@ TEST_F(ImportsGpu, EngineDepthIsAReadOnlyDepthAttachment) {
         });
         first = false;
         exec.run();
-        dev().submitAndWait([&](VkCommandBuffer cmd) {
-            VkBufferImageCopy region{};
-            region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-            region.imageExtent = {size.width, size.height, 1};
-            vkCmdCopyImageToBuffer(cmd, color.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, host.buffer(), 1, &region);
-            VkMemoryBarrier2 toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-            toHost.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
-            toHost.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-            toHost.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-            toHost.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-            VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-            dep.memoryBarrierCount = 1;
-            dep.pMemoryBarriers = &toHost;
-            vkCmdPipelineBarrier2(cmd, &dep);
-        });
+        copyToHost(dev(), color.image, size, host);
         const auto* px = static_cast<const uint8_t*>(host.data());
         const int green = clearDepth > 0.0f ? 255 : 0;  // depth 0 < 0.5 passes; 0 < 0 does not
         for (uint32_t i = 0; i < size.width * size.height; ++i)
