@@ -268,6 +268,64 @@ void setupCamera(const Camera& c, ls::CameraParams& out) {
 
 }  // namespace
 
+namespace {
+
+void checkBox(const OccluderBox& b, const std::string& field) {
+    const glm::vec3 c = vec(b.center, field + ".center", false);
+    const glm::vec3 h = vec(b.halfExtents, field + ".halfExtents", false);
+    for (int i = 0; i < 3; ++i)
+        if (!(h[i] > 0.0f)) fail(field + ".halfExtents[" + std::to_string(i) + "] = " + num(h[i]) + ": must be > 0");
+    glm::vec3 a[3];
+    for (int i = 0; i < 3; ++i) {
+        a[i] = vec(b.axes[static_cast<size_t>(i)], field + ".axes[" + std::to_string(i) + "]", false);
+        if (std::fabs(glm::length(a[i]) - 1.0f) > 1e-3f)
+            fail(field + ".axes[" + std::to_string(i) + "] has length " + num(glm::length(a[i])) + ": must be unit");
+    }
+    for (int i = 0; i < 3; ++i)
+        if (std::fabs(glm::dot(a[i], a[(i + 1) % 3])) > 1e-3f)
+            fail(field + ".axes[" + std::to_string(i) + "] and [" + std::to_string((i + 1) % 3) +
+                 "] are not orthogonal (dot " + num(glm::dot(a[i], a[(i + 1) % 3])) + ")");
+    (void)c;
+}
+
+// Every corner of `inner` within `outer` (to a millimetre or 1e-4 of its size).
+bool boxInside(const OccluderBox& inner, const OccluderBox& outer) {
+    const glm::vec3 oc(outer.center[0], outer.center[1], outer.center[2]);
+    const glm::vec3 ic(inner.center[0], inner.center[1], inner.center[2]);
+    const glm::vec3 oh(outer.halfExtents[0], outer.halfExtents[1], outer.halfExtents[2]);
+    const float tolerance = std::max(1e-3f, 1e-4f * glm::length(oh));
+    for (int corner = 0; corner < 8; ++corner) {
+        glm::vec3 p = ic;
+        for (int i = 0; i < 3; ++i) {
+            const auto& ax = inner.axes[static_cast<size_t>(i)];
+            const float s = (corner >> i & 1) ? 1.0f : -1.0f;
+            p += s * inner.halfExtents[static_cast<size_t>(i)] * glm::vec3(ax[0], ax[1], ax[2]);
+        }
+        for (int i = 0; i < 3; ++i) {
+            const auto& ax = outer.axes[static_cast<size_t>(i)];
+            if (std::fabs(glm::dot(p - oc, glm::vec3(ax[0], ax[1], ax[2]))) > oh[i] + tolerance) return false;
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
+void checkOccluders(const std::vector<Occluder>& occluders) {
+    if (occluders.size() > kMaxOccluders)
+        fail("occluders has " + std::to_string(occluders.size()) + " entries: at most " +
+             std::to_string(kMaxOccluders));
+    for (size_t i = 0; i < occluders.size(); ++i) {
+        const std::string field = "occluders[" + std::to_string(i) + "]";
+        checkBox(occluders[i].outer, field + ".outer");
+        if (!occluders[i].inner) continue;
+        checkBox(*occluders[i].inner, field + ".inner");
+        if (!boxInside(*occluders[i].inner, occluders[i].outer))
+            fail(field + ".inner is not inside " + field + ".outer: an inner box lies within the object, "
+                 "and the outer box encloses it");
+    }
+}
+
 void checkSettings(const Settings& s) {
     if (s.slices == 0 || s.slices % 4 != 0 || s.slices > 16384)
         fail("custom.slices = " + std::to_string(s.slices) +
@@ -366,6 +424,7 @@ FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
         s.settings.noiseVelocity = f.custom.noiseVelocity;
     }
     checkSettings(s.settings);
+    checkOccluders(f.occluders);
     if (!std::isfinite(f.timeSeconds)) fail("timeSeconds is not finite");
     s.timeSeconds = f.timeSeconds;
 

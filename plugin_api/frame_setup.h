@@ -28,6 +28,7 @@ struct FrameSetup {
 FrameSetup setupFrame(const FrameDescription& frame, bool withImages = true);
 
 void checkSettings(const Settings& s);
+void checkOccluders(const std::vector<Occluder>& occluders);
 
 // Throws InvalidInput naming every feature the plugin needs that `enabled` (the chain an engine
 // created its device with) does not turn on.

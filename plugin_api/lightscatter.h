@@ -217,6 +217,24 @@ struct ImageInput {
     VkAccessFlags2 finalAccess = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT;
 };
 
+// Seed 004's occluders: bounding volumes of the scene's objects, in world space (metres), from which
+// the beam-tree methods work out on the CPU which parts of a point or spot light's volume are
+// certainly lit, uncertain or certainly dark. An oriented box: `axes` orthonormal (to 1e-3),
+// `halfExtents` > 0 along them.
+struct OccluderBox {
+    Vec3 center{0, 0, 0};
+    std::array<Vec3, 3> axes{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+    Vec3 halfExtents{0.5f, 0.5f, 0.5f};
+};
+// `outer` encloses the object (every part of it is inside); `inner`, when given, lies inside the
+// object (every point of it is inside the object's solid), so light that reaches it stops there.
+// Boxes of different occluders must not overlap (seed 004 inserts them nearest first).
+struct Occluder {
+    OccluderBox outer;
+    std::optional<OccluderBox> inner;
+};
+inline constexpr size_t kMaxOccluders = 4096;
+
 // Debugging aids, off by default and free when off.
 struct DebugOptions {
     // Every transient texture and buffer of the plugin is filled with NaN (float formats) or all
@@ -237,6 +255,10 @@ struct FrameDescription {
     // independent layers with values in [0, 1] and mean 0.5). Without it the plugin makes its own.
     std::optional<ImageInput> noise;
     double timeSeconds = 0.0;  // scrolls the noise
+    // Optional: the scene's occluders for seed 004's methods (at most kMaxOccluders; each checked:
+    // finite, orthonormal axes, positive extents, the inner box inside the outer one). Methods
+    // that do not use them ignore them.
+    std::vector<Occluder> occluders;
     Camera camera;
     Light light;
     Medium medium;

@@ -408,3 +408,38 @@ TEST_F(PluginIntegrationGpu, ReportsOfFramesNoLongerHeldAreRefused) {
         EXPECT_TRUE(contains(e.what(), "rebuilt")) << e.what();
     }
 }
+
+// Seed 004's occluders: bad boxes are refused naming the occluder, the box and the rule.
+TEST_F(PluginIntegrationGpu, BadOccludersAreRefused) {
+    auto one = [](const std::function<void(lightscatter::Occluder&)>& change) {
+        return [change](lightscatter::FrameDescription& d) {
+            d.occluders.assign(3, lightscatter::Occluder{});
+            change(d.occluders[2]);
+        };
+    };
+    expectRefused(one([](auto& o) { o.outer.center[1] = std::nanf(""); }), "occluders[2].outer.center",
+                  "non-finite");
+    expectRefused(one([](auto& o) { o.outer.halfExtents[0] = -1.0f; }), "occluders[2].outer.halfExtents[0]",
+                  "must be > 0");
+    expectRefused(one([](auto& o) { o.outer.axes[1] = {0.0f, 2.0f, 0.0f}; }), "occluders[2].outer.axes[1]",
+                  "must be unit");
+    expectRefused(one([](auto& o) { o.outer.axes[1] = {1.0f, 0.0f, 0.0f}; }), "occluders[2].outer.axes[0] and [1]",
+                  "not orthogonal");
+    expectRefused(one([](auto& o) {
+                      o.inner = lightscatter::OccluderBox{};
+                      o.inner->center = {0.3f, 0.0f, 0.0f};  // pokes out of the outer box
+                  }),
+                  "occluders[2].inner is not inside occluders[2].outer");
+    expectRefused([](auto& d) { d.occluders.resize(lightscatter::kMaxOccluders + 1); }, "occluders has 4097 entries",
+                  "at most 4096");
+    // A good set is accepted (and, with no method reading it yet, changes nothing).
+    const auto plain = render([](auto&) {});
+    const auto withOccluders = render([](auto& d) {
+        d.occluders.assign(2, lightscatter::Occluder{});
+        d.occluders[1].outer.center = {0.0f, 0.0f, 3.0f};
+        d.occluders[1].inner = lightscatter::OccluderBox{};
+        d.occluders[1].inner->center = {0.0f, 0.0f, 3.0f};
+        d.occluders[1].inner->halfExtents = {0.25f, 0.25f, 0.25f};
+    });
+    EXPECT_EQ(plain, withOccluders);
+}
