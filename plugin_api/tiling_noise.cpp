@@ -10,8 +10,8 @@ namespace lightscatter::detail {
 
 TilingNoise::TilingNoise(const rg::Device& device)
     : device_(device),
-      image_(device, kNoiseFormat, kNoiseExtent, VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-             "tiling noise") {}
+      image_(device, kNoiseFormat, kNoiseExtent,
+             VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, "tiling noise") {}
 
 bool TilingNoise::ensure(const ls::Shared& shared) {
     if (made_) return false;

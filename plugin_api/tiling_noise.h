@@ -8,7 +8,7 @@
 namespace lightscatter::detail {
 
 class TilingNoise {
-public:
+  public:
     explicit TilingNoise(const rg::Device& device);
     TilingNoise(const TilingNoise&) = delete;
     TilingNoise& operator=(const TilingNoise&) = delete;
@@ -17,7 +17,7 @@ public:
     bool ensure(const ls::Shared& shared);
     VkImage image() const { return image_.image(); }
 
-private:
+  private:
     const rg::Device& device_;
     rg::OwnedImage image_;
     bool made_ = false;

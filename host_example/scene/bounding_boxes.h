@@ -1,7 +1,7 @@
 #pragma once
-// Occluders for seed 004's methods from a scene's triangles: one oriented box per glTF primitive, on
-// its node's axes, enclosing its vertices; and an inner box where the primitive is itself a solid
-// box (every vertex at a corner of that box), the same box shrunk by a millimetre.
+// Occluders for seed 004's methods from a scene's triangles: one oriented box per glTF primitive,
+// on its node's axes, enclosing its vertices; and an inner box where the primitive is itself a
+// solid box (every vertex at a corner of that box), the same box shrunk by a millimetre.
 #include <optional>
 #include <vector>
 

@@ -6,7 +6,9 @@ namespace ls::beam {
 namespace {
 
 // The plane of a polygon oriented so that the light is in front of it.
-Plane facingLight(const Plane& p, const glm::dvec3& light) { return p.distance(light) >= 0.0 ? p : p.flipped(); }
+Plane facingLight(const Plane& p, const glm::dvec3& light) {
+    return p.distance(light) >= 0.0 ? p : p.flipped();
+}
 
 }  // namespace
 
@@ -29,7 +31,8 @@ BeamTree::BeamTree(const glm::dvec3& light, const std::vector<Plane>& walls, dou
         Node outside;
         outside.kind = Kind::Outside;
         nodes_[self].back = add(outside);
-        nodes_[self].front = static_cast<uint32_t>(nodes_.size());  // the next wall, or the open leaf
+        nodes_[self].front =
+            static_cast<uint32_t>(nodes_.size());  // the next wall, or the open leaf
     }
     add(open);
 }
@@ -42,7 +45,8 @@ uint32_t BeamTree::add(Node node) {
 size_t BeamTree::insert(const Polygon& polygon) {
     const Plane plane = planeOf(polygon);
     // Seen edge-on from the light a polygon blocks nothing (its beam has no volume).
-    if (!plane.valid() || polygon.size() < 3 || std::abs(plane.distance(light_)) <= epsilon_) return 0;
+    if (!plane.valid() || polygon.size() < 3 || std::abs(plane.distance(light_)) <= epsilon_)
+        return 0;
     size_t added = 0;
     insertAt(root_, polygon, facingLight(plane, light_), added);
     return added;
@@ -124,7 +128,8 @@ void BeamTree::backplateAt(uint32_t node, const Polygon& polygon, const Plane& p
 
 void BeamTree::insertStopper(const Polygon& polygon) {
     const Plane plane = planeOf(polygon);
-    if (!plane.valid() || polygon.size() < 3 || std::abs(plane.distance(light_)) <= epsilon_) return;
+    if (!plane.valid() || polygon.size() < 3 || std::abs(plane.distance(light_)) <= epsilon_)
+        return;
     stopAt(root_, polygon, facingLight(plane, light_));
 }
 
@@ -137,7 +142,8 @@ void BeamTree::stopAt(uint32_t node, const Polygon& polygon, const Plane& plane)
         case Kind::Blocker:  // a nearer stopper already darkens this beam
             return;
         case Kind::Solid: {
-            // Seed 004, figure 5.5: the stopper's beam inside the solid beam becomes a blocker leaf.
+            // Seed 004, figure 5.5: the stopper's beam inside the solid beam becomes a blocker
+            // leaf.
             const Plane solid = n.solidPlane;
             attach(node, polygon, Kind::Blocker, solid, plane);
             return;
@@ -158,13 +164,17 @@ Region BeamTree::classify(const glm::dvec3& p) const {
         node = nodes_[node].plane.distance(p) < -epsilon_ ? nodes_[node].back : nodes_[node].front;
     const Node& n = nodes_[node];
     switch (n.kind) {
-        case Kind::Outside: return Region::Outside;
-        case Kind::Open: return Region::Lit;
-        case Kind::Solid: return n.solidPlane.distance(p) >= -epsilon_ ? Region::Lit : Region::Uncertain;
+        case Kind::Outside:
+            return Region::Outside;
+        case Kind::Open:
+            return Region::Lit;
+        case Kind::Solid:
+            return n.solidPlane.distance(p) >= -epsilon_ ? Region::Lit : Region::Uncertain;
         case Kind::Blocker:
             if (n.solidPlane.distance(p) >= -epsilon_) return Region::Lit;
             return n.stopperPlane.distance(p) >= -epsilon_ ? Region::Uncertain : Region::Unlit;
-        case Kind::Split: break;
+        case Kind::Split:
+            break;
     }
     return Region::Outside;
 }

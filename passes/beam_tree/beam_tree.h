@@ -29,7 +29,7 @@ struct VisiblePolygon {
 };
 
 class BeamTree {
-public:
+  public:
     // `walls`: planes through the light bounding its frustum, normals pointing into it (a spot's
     // four bounding walls, seed 004's footnote; none for a point light). `epsilon`: the planes'
     // thickness, in the scene's units (seed 004 suggests 1 mm for metres).
@@ -64,11 +64,11 @@ public:
     [[nodiscard]] const glm::dvec3& light() const { return light_; }
     [[nodiscard]] double epsilon() const { return epsilon_; }
 
-private:
+  private:
     enum class Kind : uint8_t { Split, Open, Solid, Blocker, Outside };
     struct Node {
         Kind kind = Kind::Open;
-        Plane plane;         // Split: front is the side the light's beam continues on
+        Plane plane;  // Split: front is the side the light's beam continues on
         uint32_t front = 0, back = 0;
         Plane solidPlane;    // Solid, Blocker: the visible polygon's plane, the light in front
         Plane stopperPlane;  // Blocker: the inner polygon's plane, the light in front
@@ -77,7 +77,8 @@ private:
     uint32_t add(Node node);
     void insertAt(uint32_t node, const Polygon& polygon, const Plane& plane, size_t& added);
     // Seed 004's attachPolygon (Program 4): turns an open leaf into the beam of `polygon`.
-    void attach(uint32_t leaf, const Polygon& polygon, Kind inside, const Plane& solidPlane, const Plane& stopper);
+    void attach(uint32_t leaf, const Polygon& polygon, Kind inside, const Plane& solidPlane,
+                const Plane& stopper);
     void stopAt(uint32_t node, const Polygon& polygon, const Plane& plane);
     void backplateAt(uint32_t node, const Polygon& polygon, const Plane& plane);
     void partitionAt(uint32_t node, const Polygon& polygon, Parts& parts) const;

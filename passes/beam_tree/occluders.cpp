@@ -23,22 +23,26 @@ std::vector<Polygon> lightFacingFaces(const OrientedBox& box, const glm::dvec3& 
             const glm::dvec3 centre = box.center + n * box.halfExtents[axis];
             if (glm::dot(n, light - centre) <= 0.0) continue;  // faces away from the light
             const int a = (axis + 1) % 3, b = (axis + 2) % 3;
-            const glm::dvec3 u = box.axes[a] * box.halfExtents[a], v = box.axes[b] * box.halfExtents[b];
+            const glm::dvec3 u = box.axes[a] * box.halfExtents[a],
+                             v = box.axes[b] * box.halfExtents[b];
             Polygon f{centre - u - v, centre + u - v, centre + u + v, centre - u + v};
-            if (glm::dot(glm::cross(f[1] - f[0], f[2] - f[0]), n) < 0.0) std::reverse(f.begin(), f.end());
+            if (glm::dot(glm::cross(f[1] - f[0], f[2] - f[0]), n) < 0.0)
+                std::reverse(f.begin(), f.end());
             faces.push_back(std::move(f));
         }
     return faces;
 }
 
-LightFrustum spotFrustum(const glm::dvec3& position, const glm::dvec3& axis, double halfAngle, double range) {
+LightFrustum spotFrustum(const glm::dvec3& position, const glm::dvec3& axis, double halfAngle,
+                         double range) {
     LightFrustum f;
     f.position = position;
     const glm::dvec3 a = glm::normalize(axis);
     const glm::dvec3 helper = std::abs(a.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
     const glm::dvec3 r = glm::normalize(glm::cross(a, helper)), u = glm::cross(r, a);
     const double t = std::tan(halfAngle);
-    const glm::dvec3 corners[4] = {a + t * (-r - u), a + t * (r - u), a + t * (r + u), a + t * (-r + u)};
+    const glm::dvec3 corners[4] = {a + t * (-r - u), a + t * (r - u), a + t * (r + u),
+                                   a + t * (-r + u)};
     for (int i = 0; i < 4; ++i) {
         Plane w = Plane::through(position, position + corners[i], position + corners[(i + 1) % 4]);
         if (w.distance(position + a) < 0.0) w = w.flipped();  // the axis is inside
@@ -48,13 +52,16 @@ LightFrustum spotFrustum(const glm::dvec3& position, const glm::dvec3& axis, dou
     return f;
 }
 
-LightVolume buildLightVolume(const LightFrustum& frustum, const std::vector<Occluder>& occluders, double epsilon) {
+LightVolume buildLightVolume(const LightFrustum& frustum, const std::vector<Occluder>& occluders,
+                             double epsilon) {
     LightVolume v{BeamTree(frustum.position, frustum.walls, epsilon)};
     std::vector<size_t> order(occluders.size());
     std::iota(order.begin(), order.end(), size_t{0});
     std::vector<double> distance(occluders.size());
-    for (size_t i = 0; i < occluders.size(); ++i) distance[i] = distanceToBox(occluders[i].outer, frustum.position);
-    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return distance[a] < distance[b]; });
+    for (size_t i = 0; i < occluders.size(); ++i)
+        distance[i] = distanceToBox(occluders[i].outer, frustum.position);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](size_t a, size_t b) { return distance[a] < distance[b]; });
     for (size_t i : order)
         for (const Polygon& face : lightFacingFaces(occluders[i].outer, frustum.position)) {
             v.tree.insert(face);

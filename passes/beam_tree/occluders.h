@@ -33,7 +33,8 @@ struct LightFrustum {
 };
 // A spot of half-angle `halfAngle` (radians) along unit `axis`, cut at `range` along the axis: the
 // four walls around its cone (seed 004's footnote) and the square far polygon.
-LightFrustum spotFrustum(const glm::dvec3& position, const glm::dvec3& axis, double halfAngle, double range);
+LightFrustum spotFrustum(const glm::dvec3& position, const glm::dvec3& axis, double halfAngle,
+                         double range);
 
 struct LightVolume {
     BeamTree tree;

@@ -17,7 +17,8 @@ Plane planeOf(const Polygon& p) {
     for (size_t i = 0; i < p.size(); ++i) {
         const glm::dvec3& a = p[i];
         const glm::dvec3& b = p[(i + 1) % p.size()];
-        n += glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+        n += glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x),
+                        (a.x - b.x) * (a.y + b.y));
     }
     const double len = glm::length(n);
     if (!(len > 0.0)) return {glm::dvec3(0.0), 0.0};

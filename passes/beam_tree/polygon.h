@@ -13,7 +13,8 @@ struct Plane {
     glm::dvec3 n{0.0, 0.0, 1.0};
     double d = 0.0;
     [[nodiscard]] double distance(const glm::dvec3& p) const { return glm::dot(n, p) + d; }
-    // Through three points, normal along (b - a) x (c - a); invalid (n = 0) when they are collinear.
+    // Through three points, normal along (b - a) x (c - a); invalid (n = 0) when they are
+    // collinear.
     static Plane through(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c);
     [[nodiscard]] Plane flipped() const { return {-n, -d}; }
     [[nodiscard]] bool valid() const { return glm::dot(n, n) > 0.5; }

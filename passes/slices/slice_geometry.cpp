@@ -63,16 +63,17 @@ glm::vec3 phaseSum(const MediumParams& m, float c) {
     const float rayleigh = 3.0f / (16.0f * kPi) * (1.0f + c * c);
     const float g = m.g, g2 = g * g;
     const float denom = std::max(1.0f + g2 - 2.0f * g * c, 1e-6f);
-    const float mie = m.isotropicMie ? 1.0f / (4.0f * kPi)
-                                     : 1.0f / (4.0f * kPi) * 3.0f * (1.0f - g2) / (2.0f * (2.0f + g2)) *
-                                           (1.0f + c * c) / (denom * std::sqrt(denom));
+    const float mie = m.isotropicMie
+                          ? 1.0f / (4.0f * kPi)
+                          : 1.0f / (4.0f * kPi) * 3.0f * (1.0f - g2) / (2.0f * (2.0f + g2)) *
+                                (1.0f + c * c) / (denom * std::sqrt(denom));
     return m.betaR * rayleigh + m.betaM * mie;
 }
 
 }  // namespace
 
-float estimatedSliceRange(const CameraParams& camera, const LightParams& light, const MediumParams& medium,
-                          float front, float back) {
+float estimatedSliceRange(const CameraParams& camera, const LightParams& light,
+                          const MediumParams& medium, float front, float back) {
     const glm::mat4 toWorld = glm::inverse(camera.view);
     const glm::vec3 C = glm::vec3(toWorld[3]);
     const glm::vec2 t = frustumTangents(camera);
@@ -83,7 +84,8 @@ float estimatedSliceRange(const CameraParams& camera, const LightParams& light, 
     std::vector<glm::vec3> rays;  // view space
     for (int y = 0; y <= 8; ++y)
         for (int x = 0; x <= 8; ++x)
-            rays.emplace_back((static_cast<float>(x) / 4.0f - 1.0f) * t.x, (static_cast<float>(y) / 4.0f - 1.0f) * t.y, -1.0f);
+            rays.emplace_back((static_cast<float>(x) / 4.0f - 1.0f) * t.x,
+                              (static_cast<float>(y) / 4.0f - 1.0f) * t.y, -1.0f);
     constexpr int kSteps = 256;
     float peak = 0.0f;
     for (const glm::vec3& r : rays) {
@@ -99,7 +101,8 @@ float estimatedSliceRange(const CameraParams& camera, const LightParams& light, 
             if (light.kind != LightKind::Directional) {
                 const glm::vec3 d = light.position - P;
                 const float dist = glm::length(d);
-                if (light.kind == LightKind::Spot && (glm::dot(-d, light.direction) < cosCone * dist || dist > light.range))
+                if (light.kind == LightKind::Spot &&
+                    (glm::dot(-d, light.direction) < cosCone * dist || dist > light.range))
                     continue;
                 cosTheta = dist > 0.0f ? glm::dot(v, d / dist) : 0.0f;
                 irr *= glm::exp(-betaT * dist) / (dist * dist + light.radius * light.radius);
@@ -111,8 +114,8 @@ float estimatedSliceRange(const CameraParams& camera, const LightParams& light, 
     return std::max(1.25f * peak, 1e-30f);
 }
 
-SlicePlacement placeSlices(const CameraParams& camera, const LightParams& light, const MediumParams& medium,
-                           const SliceSettings& settings, double time) {
+SlicePlacement placeSlices(const CameraParams& camera, const LightParams& light,
+                           const MediumParams& medium, const SliceSettings& settings, double time) {
     SlicePlacement out;
     const float zNear = camera.nearPlane;
     const float zFar = std::max(farthestViewDepth(camera, medium), zNear * 1.001f);
@@ -132,7 +135,8 @@ SlicePlacement placeSlices(const CameraParams& camera, const LightParams& light,
     if (bounded) {
         const glm::vec3 cameraPos = glm::vec3(glm::inverse(camera.view)[3]);
         glm::vec3 llo(1e30f), lhi(-1e30f);
-        for (const glm::vec3& w : lightVolumeCorners(light, glm::length(light.position - cameraPos) + reach)) {
+        for (const glm::vec3& w :
+             lightVolumeCorners(light, glm::length(light.position - cameraPos) + reach)) {
             const glm::vec3 p = glm::vec3(camera.view * glm::vec4(w, 1.0f));
             llo = glm::min(llo, p);
             lhi = glm::max(lhi, p);
@@ -150,12 +154,15 @@ SlicePlacement placeSlices(const CameraParams& camera, const LightParams& light,
     if (settings.planeScaling) {
         // Seed 002 draws fewer planes as the viewer moves away from the light's volume: its depth
         // extent over its distance, down to an eighth.
-        const float fraction = std::clamp((boxBack - boxFront) / std::max(boxFront, zNear), 0.125f, 1.0f);
-        planes = std::max(2u, static_cast<uint32_t>(std::ceil(static_cast<float>(planes) * fraction)));
+        const float fraction =
+            std::clamp((boxBack - boxFront) / std::max(boxFront, zNear), 0.125f, 1.0f);
+        planes =
+            std::max(2u, static_cast<uint32_t>(std::ceil(static_cast<float>(planes) * fraction)));
     }
     const float spacing = (boxBack - boxFront) / static_cast<float>(planes);
-    const float range =
-        settings.range > 0.0f ? settings.range : estimatedSliceRange(camera, light, medium, boxFront, boxBack);
+    const float range = settings.range > 0.0f
+                            ? settings.range
+                            : estimatedSliceRange(camera, light, medium, boxFront, boxBack);
 
     SlicePush& p = out.push;
     p.viewToWorld = glm::inverse(camera.view);
@@ -169,7 +176,8 @@ SlicePlacement placeSlices(const CameraParams& camera, const LightParams& light,
     // The 8-bit channels hold luminance; the medium and the light give it its color.
     const glm::vec3 color = (medium.betaR + medium.betaM) * light.intensity;
     const float luminance = glm::dot(color, kLuminance);
-    out.resolve.tint = glm::vec4(luminance > 0.0f ? color / luminance * (range / 4.0f) : glm::vec3(0.0f), 0.0f);
+    out.resolve.tint =
+        glm::vec4(luminance > 0.0f ? color / luminance * (range / 4.0f) : glm::vec3(0.0f), 0.0f);
     out.resolve.slab = {boxFront, boxBack, 0.0f, 0.0f};
     out.planes = planes;
     return out;

@@ -53,7 +53,7 @@ SlicePlacement placeSlices(const CameraParams& camera, const LightParams& light,
 // on the CPU. Unshadowed and to the end of the span, it bounds what those rays receive; a peak
 // between them (beside a point light) can saturate, and where shadows darken most of the view the
 // channels' steps are coarse: such scenes set Settings::sliceRange.
-float estimatedSliceRange(const CameraParams& camera, const LightParams& light, const MediumParams& medium,
-                          float front, float back);
+float estimatedSliceRange(const CameraParams& camera, const LightParams& light,
+                          const MediumParams& medium, float front, float back);
 
 }  // namespace ls

@@ -30,8 +30,9 @@ struct SlicePlanesOptions {
 
 // Returns the planes' sum: R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT (Lin, rgb), or R8G8B8A8_UNORM
 // (luminance, one quarter of the planes per channel), screen-sized.
-rg::ImageRef addSlicePlanes(rg::RenderGraph& graph, const Shared& shared, SlicePlacementRef placement,
-                            const SlicePlanesInputs& in, const SlicePlanesOptions& options);
+rg::ImageRef addSlicePlanes(rg::RenderGraph& graph, const Shared& shared,
+                            SlicePlacementRef placement, const SlicePlanesInputs& in,
+                            const SlicePlanesOptions& options);
 
 struct SliceResolveInputs {
     rg::BufferRef constants;
@@ -41,16 +42,18 @@ struct SliceResolveInputs {
 
 struct SliceResolveOptions {
     SliceAccumulation target = SliceAccumulation::Float16;
-    uint32_t blurRadius = 0;            // pixels; 0: no blur
-    bool closedFormOutsideSlab = false; // directional lights: add the rays' parts outside the planes
+    uint32_t blurRadius = 0;  // pixels; 0: no blur
+    bool closedFormOutsideSlab =
+        false;  // directional lights: add the rays' parts outside the planes
 };
 
 // Whether the planes' sum needs resolving, or already is Lin.
 bool sliceResolveNeeded(const SliceResolveOptions& options);
 
 // Returns Lin (R16G16B16A16_SFLOAT, screen).
-rg::ImageRef addSliceResolve(rg::RenderGraph& graph, const Shared& shared, SlicePlacementRef placement,
-                             const SliceResolveInputs& in, const SliceResolveOptions& options);
+rg::ImageRef addSliceResolve(rg::RenderGraph& graph, const Shared& shared,
+                             SlicePlacementRef placement, const SliceResolveInputs& in,
+                             const SliceResolveOptions& options);
 
 // Fills `noise` (R8G8_UNORM, storage) with two layers of tiling value noise.
 rg::ImageRef addTilingNoise(rg::RenderGraph& graph, const Shared& shared, rg::ImageRef noise);

@@ -36,11 +36,11 @@ OrientedBox box(glm::dvec3 center, glm::dvec3 half) {
 TEST(BeamTree, ClassifiesPointsAroundOneSquare) {
     BeamTree t({0, 0, 0}, {});
     EXPECT_EQ(t.insert(square(2.0, -2.0)), 1u);
-    EXPECT_EQ(t.classify({0, 0, -1}), Region::Lit);         // between light and square
-    EXPECT_EQ(t.classify({0, 0, -3}), Region::Uncertain);   // behind it (no inner volume)
+    EXPECT_EQ(t.classify({0, 0, -1}), Region::Lit);            // between light and square
+    EXPECT_EQ(t.classify({0, 0, -3}), Region::Uncertain);      // behind it (no inner volume)
     EXPECT_EQ(t.classify({0.9, 0.9, -3}), Region::Uncertain);  // behind its corner, inside the beam
-    EXPECT_EQ(t.classify({1.6, 0, -3}), Region::Lit);       // beside the beam (it widens to 1.5)
-    EXPECT_EQ(t.classify({0, 0, 3}), Region::Lit);          // behind the light
+    EXPECT_EQ(t.classify({1.6, 0, -3}), Region::Lit);          // beside the beam (it widens to 1.5)
+    EXPECT_EQ(t.classify({0, 0, 3}), Region::Lit);             // behind the light
     EXPECT_TRUE(t.isInside({0, 0, -10}));
     EXPECT_FALSE(t.isInside({0, 0, -1.5}));
     // A point on the square itself is in front of it (thick plane), so lit.
@@ -59,8 +59,8 @@ TEST(BeamTree, WallsBoundTheLightsFrustum) {
 }
 
 // Front to back, a near square hides part of a far one: the far one's visible part is its area
-// minus the near square's shadow on it. Back to front, the far square claims the beams first and the
-// near one falls into its solid space, lost: the order is the caller's duty (seed 004, 4.2).
+// minus the near square's shadow on it. Back to front, the far square claims the beams first and
+// the near one falls into its solid space, lost: the order is the caller's duty (seed 004, 4.2).
 TEST(BeamTree, FrontToBackInsertionGivesTheVisibleSet) {
     BeamTree t({0, 0, 0}, {});
     t.insert(square(1.0, -2.0));
@@ -84,22 +84,24 @@ TEST(BeamTree, FrontToBackInsertionGivesTheVisibleSet) {
 TEST(BeamTree, TheVisibleSetOfABoxBehindABox) {
     const LightFrustum f = spotFrustum({0, 0, 0}, {0, 0, -1}, 0.8, 20.0);
     std::vector<Occluder> boxes(2);
-    boxes[0].outer = box({0, 0, -6.5}, {2, 2, 0.5});   // far, listed first: the build sorts them
+    boxes[0].outer = box({0, 0, -6.5}, {2, 2, 0.5});  // far, listed first: the build sorts them
     boxes[0].inner = box({0, 0, -6.5}, {1.5, 1.5, 0.4});
     boxes[1].outer = box({0, 0, -2.5}, {0.5, 0.5, 0.5});
     boxes[1].inner = box({0, 0, -2.5}, {0.25, 0.25, 0.25});
     const LightVolume v = buildLightVolume(f, boxes);
-    // Light-facing faces: only the z = -2 and z = -6 faces (a light on the axis is behind the planes
-    // of every side face).
+    // Light-facing faces: only the z = -2 and z = -6 faces (a light on the axis is behind the
+    // planes of every side face).
     EXPECT_EQ(v.outerPolygons, 2u);
     EXPECT_NEAR(visibleArea(v.tree), 1.0 + (16.0 - 9.0), 1e-9);
     EXPECT_EQ(v.tree.classify({0, 0, -1.5}), Region::Lit);
-    EXPECT_EQ(v.tree.classify({0.45, 0, -2.1}), Region::Uncertain);  // inside the near outer box, not its inner
-    EXPECT_EQ(v.tree.classify({0, 0, -2.5}), Region::Unlit);         // behind the near inner box's face
-    EXPECT_EQ(v.tree.classify({0, 0, -4.0}), Region::Unlit);         // in its shadow
-    EXPECT_EQ(v.tree.classify({1.8, 0, -5.95}), Region::Lit);        // lit part of the far face
-    EXPECT_EQ(v.tree.classify({1.8, 0, -6.05}), Region::Uncertain);  // inside the far outer box only
-    EXPECT_EQ(v.tree.classify({0.5, 0, -8.0}), Region::Unlit);       // behind the far inner box
+    EXPECT_EQ(v.tree.classify({0.45, 0, -2.1}),
+              Region::Uncertain);  // inside the near outer box, not its inner
+    EXPECT_EQ(v.tree.classify({0, 0, -2.5}), Region::Unlit);   // behind the near inner box's face
+    EXPECT_EQ(v.tree.classify({0, 0, -4.0}), Region::Unlit);   // in its shadow
+    EXPECT_EQ(v.tree.classify({1.8, 0, -5.95}), Region::Lit);  // lit part of the far face
+    EXPECT_EQ(v.tree.classify({1.8, 0, -6.05}),
+              Region::Uncertain);                               // inside the far outer box only
+    EXPECT_EQ(v.tree.classify({0.5, 0, -8.0}), Region::Unlit);  // behind the far inner box
     EXPECT_EQ(v.tree.classify({0, 0, 1.0}), Region::Outside);
 }
 
@@ -147,6 +149,7 @@ TEST(BeamTree, PartitionSortsAPolygonsPartsByRegion) {
     EXPECT_NEAR(unlit, innerShadow, 1e-6);
     EXPECT_NEAR(uncertain, outerShadow - innerShadow, 1e-6);
     for (const auto& p : parts.lit) EXPECT_EQ(v.tree.classify(centroid(p)), Region::Lit);
-    for (const auto& p : parts.uncertain) EXPECT_EQ(v.tree.classify(centroid(p)), Region::Uncertain);
+    for (const auto& p : parts.uncertain)
+        EXPECT_EQ(v.tree.classify(centroid(p)), Region::Uncertain);
     for (const auto& p : parts.unlit) EXPECT_EQ(v.tree.classify(centroid(p)), Region::Unlit);
 }

@@ -7,7 +7,9 @@ using namespace ls::beam;
 
 namespace {
 
-Polygon unitSquare(double z = 0.0) { return {{0, 0, z}, {1, 0, z}, {1, 1, z}, {0, 1, z}}; }
+Polygon unitSquare(double z = 0.0) {
+    return {{0, 0, z}, {1, 0, z}, {1, 1, z}, {0, 1, z}};
+}
 const Plane kXHalf{{1, 0, 0}, -0.5};  // x = 0.5, front at x > 0.5
 
 }  // namespace

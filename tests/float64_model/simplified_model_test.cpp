@@ -35,14 +35,17 @@ Light spot() {
 }
 
 // The seed's integrand (2.12-2.15): sigma_s I(Omega) / (4 pi (a1 r^2 + a0)), by quadrature.
-glm::dvec3 simplifiedByQuadrature(const Medium& m, const Light& l, const Ray& ray, double a0, double a1) {
-    // Integrated over the spot's lit intervals, so that the cone's edges are ends, not kinks inside.
+glm::dvec3 simplifiedByQuadrature(const Medium& m, const Light& l, const Ray& ray, double a0,
+                                  double a1) {
+    // Integrated over the spot's lit intervals, so that the cone's edges are ends, not kinks
+    // inside.
     const std::vector<Interval> lit = spotLitIntervals(l, ray);
     const QuadResult r = integrateAdaptive(
         [&](double z) {
             const glm::dvec3 p = ray.origin + z * ray.direction;
             const glm::dvec3 d = p - l.position;
-            return l.intensity * (m.betaR + m.betaM) * (kIsotropicPhase / (a1 * glm::dot(d, d) + a0));
+            return l.intensity * (m.betaR + m.betaM) *
+                   (kIsotropicPhase / (a1 * glm::dot(d, d) + a0));
         },
         lit);
     return r.value;
@@ -55,9 +58,10 @@ TEST(SimplifiedModel, ClosedFormMatchesQuadratureOfItsIntegrand) {
     const Light l = spot();
     for (double a0 : {0.0025, 0.5, 4.0})
         for (double a1 : {0.5, 1.0, 3.0})
-            for (const Ray& ray : {Ray{{-6.0, 1.0, 0.5}, glm::normalize(glm::dvec3(1.0, 0.02, 0.0)), 12.0},
-                                   Ray{{0.3, 8.0, 0.0}, glm::normalize(glm::dvec3(0.0, -1.0, 0.01)), 10.0},
-                                   Ray{{5.0, 0.5, -5.0}, glm::normalize(glm::dvec3(-1.0, 0.1, 1.0)), 20.0}}) {
+            for (const Ray& ray :
+                 {Ray{{-6.0, 1.0, 0.5}, glm::normalize(glm::dvec3(1.0, 0.02, 0.0)), 12.0},
+                  Ray{{0.3, 8.0, 0.0}, glm::normalize(glm::dvec3(0.0, -1.0, 0.01)), 10.0},
+                  Ray{{5.0, 0.5, -5.0}, glm::normalize(glm::dvec3(-1.0, 0.1, 1.0)), 20.0}}) {
                 const glm::dvec3 closed = simplifiedClosedForm(m, l, ray, a0, a1);
                 const glm::dvec3 quad = simplifiedByQuadrature(m, l, ray, a0, a1);
                 for (int c = 0; c < 3; ++c) {

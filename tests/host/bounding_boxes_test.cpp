@@ -6,12 +6,15 @@
 
 namespace {
 
-std::string scenePath(const char* name) { return std::string(LS_SOURCE_DIR) + "/scenes/" + name; }
+std::string scenePath(const char* name) {
+    return std::string(LS_SOURCE_DIR) + "/scenes/" + name;
+}
 
 }  // namespace
 
 TEST(BoundingBoxes, EnclosePrimitivesOfTheShippedScenes) {
-    for (const char* name : {"window_room.json", "atrium.json", "engine_spot.json", "point_fog.json"}) {
+    for (const char* name :
+         {"window_room.json", "atrium.json", "engine_spot.json", "point_fog.json"}) {
         const host::SceneDesc scene = host::loadSceneFile(scenePath(name));
         const host::MeshData mesh = host::loadSceneMeshes(scene);
         const auto boxes = host::boundingBoxes(mesh);
@@ -26,15 +29,19 @@ TEST(BoundingBoxes, EnclosePrimitivesOfTheShippedScenes) {
                 EXPECT_GT(b.halfExtents[k], 0.0f);
             }
             for (uint32_t v = 0; v < p.vertexCount; ++v) {
-                const glm::vec3 local = glm::transpose(b.axes) * (mesh.vertices[p.firstVertex + v].position - b.center);
-                for (int k = 0; k < 3; ++k) EXPECT_LE(std::fabs(local[k]), b.halfExtents[k] * 1.0001f + 1e-5f) << name;
+                const glm::vec3 local =
+                    glm::transpose(b.axes) * (mesh.vertices[p.firstVertex + v].position - b.center);
+                for (int k = 0; k < 3; ++k)
+                    EXPECT_LE(std::fabs(local[k]), b.halfExtents[k] * 1.0001f + 1e-5f) << name;
             }
             if (boxes[i].inner) {
                 ++inner;
-                for (int k = 0; k < 3; ++k) EXPECT_LT(boxes[i].inner->halfExtents[k], b.halfExtents[k]);
+                for (int k = 0; k < 3; ++k)
+                    EXPECT_LT(boxes[i].inner->halfExtents[k], b.halfExtents[k]);
             }
         }
-        std::printf("%s: %zu primitives, %zu solid boxes with an inner box\n", name, boxes.size(), inner);
+        std::printf("%s: %zu primitives, %zu solid boxes with an inner box\n", name, boxes.size(),
+                    inner);
     }
 }
 
@@ -45,7 +52,9 @@ TEST(BoundingBoxes, ACubeIsASolidBoxAndATriangleIsNot) {
     const glm::mat3 axes(glm::vec3(c, 0, -s), glm::vec3(0, 1, 0), glm::vec3(s, 0, c));
     for (int k = 0; k < 8; ++k) {
         host::Vertex v;
-        v.position = axes * glm::vec3(k & 1 ? 0.5f : -0.5f, k & 2 ? 0.5f : -0.5f, k & 4 ? 0.5f : -0.5f) + glm::vec3(3, 1, 0);
+        v.position =
+            axes * glm::vec3(k & 1 ? 0.5f : -0.5f, k & 2 ? 0.5f : -0.5f, k & 4 ? 0.5f : -0.5f) +
+            glm::vec3(3, 1, 0);
         mesh.vertices.push_back(v);
     }
     host::Primitive cube;

@@ -4,11 +4,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include "float64_model/inscatter_integral.h"
 #include "model_conversion.h"
 #include "plugin_fixture.h"
 #include "slices/slice_geometry.h"
-#include <glm/gtc/matrix_transform.hpp>
 
 using namespace plugin_test;
 using lightscatter::Method;
@@ -35,9 +35,12 @@ std::vector<float> float64Reference(const TestFrame& frame) {
     std::vector<float> want;
     for (uint32_t y = 0; y < s.screen.height; ++y)
         for (uint32_t x = 0; x < s.screen.width; ++x) {
-            const PixelRay r = pixelRay(s.scene, s.view, s.screen.width, s.screen.height, x, y, s.medium.maxDistance);
-            const glm::dvec3 v = ls::ref::integrateInscatter(medium, light, {r.origin, r.dir, r.S}).value;
-            want.insert(want.end(), {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z), 0.0f});
+            const PixelRay r = pixelRay(s.scene, s.view, s.screen.width, s.screen.height, x, y,
+                                        s.medium.maxDistance);
+            const glm::dvec3 v =
+                ls::ref::integrateInscatter(medium, light, {r.origin, r.dir, r.S}).value;
+            want.insert(want.end(), {static_cast<float>(v.x), static_cast<float>(v.y),
+                                     static_cast<float>(v.z), 0.0f});
         }
     return want;
 }
@@ -49,7 +52,9 @@ lightscatter::Settings sliceSettings(uint32_t planes, SliceTarget target) {
     return s;
 }
 
-double luminance(const float* p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }
+double luminance(const float* p) {
+    return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+}
 
 }  // namespace
 
@@ -69,8 +74,9 @@ TEST_F(SlicesGpu, ConvergesToTheFloat64ModelAsPlanesGrow) {
         frame.resetColor();
         run(frame, Method::Slices, sliceSettings(planes, SliceTarget::Float16));
         const ErrorStats half = compare(frame.inscatter(), want);
-        std::printf("slices, %3u planes: mean error (of the peak) %.5f float32, %.5f float16; max %.4f\n", planes,
-                    e.meanRelative, half.meanRelative, e.maxRelative);
+        std::printf(
+            "slices, %3u planes: mean error (of the peak) %.5f float32, %.5f float16; max %.4f\n",
+            planes, e.meanRelative, half.meanRelative, e.maxRelative);
         EXPECT_EQ(e.nonFinite, 0u);
         EXPECT_LT(e.meanRelative, 0.8 * previous) << planes << " planes";
         previous = e.meanRelative;
@@ -118,8 +124,10 @@ TEST_F(SlicesGpu, EightBitChannelsHoldTheFloatTargetWithinTheirQuantisation) {
             sumDiff += d;
         }
         const double mean = sumDiff / static_cast<double>(full.size() / 4);
-        std::printf("8-bit channels, %u planes, %s: worst %.4f, mean %.5f of a peak of %.4f (bound %.4f)\n", planes,
-                    dither ? "stochastic rounding" : "the seed's rounding", worst, mean, peak, bound);
+        std::printf(
+            "8-bit channels, %u planes, %s: worst %.4f, mean %.5f of a peak of %.4f (bound %.4f)\n",
+            planes, dither ? "stochastic rounding" : "the seed's rounding", worst, mean, peak,
+            bound);
         EXPECT_LE(worst, bound);
         EXPECT_GT(mean, 0.0);  // the target really is 8-bit
         if (dither) {
@@ -144,7 +152,9 @@ TEST_F(SlicesGpu, TheCookiesStripesLandWhereBruteForcePutsThem) {
     const std::vector<float> slices = frame.inscatter();
     double peak = 0;
     for (size_t i = 0; i < brute.size(); i += 4) peak = std::max(peak, luminance(&brute[i]));
-    auto dominant = [](const float* p) { return p[0] >= p[1] && p[0] >= p[2] ? 0 : (p[1] >= p[2] ? 1 : 2); };
+    auto dominant = [](const float* p) {
+        return p[0] >= p[1] && p[0] >= p[2] ? 0 : (p[1] >= p[2] ? 1 : 2);
+    };
     size_t lit = 0, same = 0;
     std::array<size_t, 3> bands{};
     for (size_t i = 0; i < brute.size(); i += 4) {
@@ -153,8 +163,9 @@ TEST_F(SlicesGpu, TheCookiesStripesLandWhereBruteForcePutsThem) {
         ++bands[static_cast<size_t>(dominant(&brute[i]))];
         same += dominant(&brute[i]) == dominant(&slices[i]);
     }
-    std::printf("cookie: %zu lit pixels (%zu red, %zu green, %zu blue), %zu with brute force's color\n", lit,
-                bands[0], bands[1], bands[2], same);
+    std::printf(
+        "cookie: %zu lit pixels (%zu red, %zu green, %zu blue), %zu with brute force's color\n",
+        lit, bands[0], bands[1], bands[2], same);
     ASSERT_GT(lit, 50u);
     for (size_t b : bands) EXPECT_GT(b, lit / 10);  // all three stripes are in view
     EXPECT_GE(static_cast<double>(same), 0.9 * static_cast<double>(lit));
@@ -194,8 +205,9 @@ TEST_F(SlicesGpu, NoiseAmplitudeZeroIsTheModelAndNoiseKeepsTheMean) {
         ++lit;
         changed += std::fabs(luminance(&textured[i]) / luminance(&plain[i]) - 1.0) > 0.05;
     }
-    std::printf("own noise: mean changed by %.1f%%, %zu of %zu lit pixels changed by more than 5%%\n",
-                100.0 * (sumNoisy / sumPlain - 1.0), changed, lit);
+    std::printf(
+        "own noise: mean changed by %.1f%%, %zu of %zu lit pixels changed by more than 5%%\n",
+        100.0 * (sumNoisy / sumPlain - 1.0), changed, lit);
     EXPECT_GT(changed, lit / 5);                  // the noise is there
     EXPECT_NEAR(sumNoisy / sumPlain, 1.0, 0.25);  // and keeps the density's mean
 
@@ -207,7 +219,8 @@ TEST_F(SlicesGpu, NoiseAmplitudeZeroIsTheModelAndNoiseKeepsTheMean) {
             run(frame, m, noisy);
             ADD_FAILURE() << lightscatter::methodName(m) << " accepted noise";
         } catch (const lightscatter::InvalidInput& e) {
-            EXPECT_NE(std::string(e.what()).find("custom.noiseAmplitude"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("custom.noiseAmplitude"), std::string::npos)
+                << e.what();
         }
     }
     (void)own;
@@ -242,8 +255,8 @@ TEST_F(SlicesGpu, DirectionalLightAndBlurStayCloseToBruteForce) {
         frame.resetColor();
         run(frame, Method::Slices, s);
         const ErrorStats e = compare(frame.inscatter(), brute);
-        std::printf("directional, 256 planes, blur %u: mean error %.4f of the peak, max %.3f\n", blur, e.meanRelative,
-                    e.maxRelative);
+        std::printf("directional, 256 planes, blur %u: mean error %.4f of the peak, max %.3f\n",
+                    blur, e.meanRelative, e.maxRelative);
         EXPECT_EQ(e.nonFinite, 0u);
         EXPECT_LT(e.meanRelative, blur ? 0.03 : 0.01);
     }
@@ -272,7 +285,8 @@ TEST(SlicePlacement, FillsTheViewFromInsideAndScalesTheCountWithDistance) {
     const ls::SlicePlacement inside = ls::placeSlices(camera, spot, medium, settings, 0.0);
     EXPECT_EQ(inside.planes, 128u);
     EXPECT_FLOAT_EQ(inside.push.boxMin.z, 0.1f);  // from the near plane
-    EXPECT_NEAR(inside.push.boxMin.z + 128 * inside.push.boxMin.w, 19.0f, 0.01f);  // to the range (z = 1 - 20)
+    EXPECT_NEAR(inside.push.boxMin.z + 128 * inside.push.boxMin.w, 19.0f,
+                0.01f);  // to the range (z = 1 - 20)
     spot.position = {0, 1, -200};
     const ls::SlicePlacement far = ls::placeSlices(camera, spot, medium, settings, 0.0);
     EXPECT_LT(far.planes, 128u);
