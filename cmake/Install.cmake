@@ -12,7 +12,8 @@ else()
   # One archive with the plugin, the passes and the runtime, so that an engine links one library
   # with nothing to order; position-independent like the objects it is made of.
   add_library(lightscatter_package STATIC $<TARGET_OBJECTS:lightscatter_plugin>
-                                          $<TARGET_OBJECTS:ls_passes> $<TARGET_OBJECTS:rendergraph>)
+                                          $<TARGET_OBJECTS:ls_passes> $<TARGET_OBJECTS:ls_beam_tree>
+                                          $<TARGET_OBJECTS:rendergraph>)
   set_target_properties(lightscatter_package PROPERTIES OUTPUT_NAME lightscatter EXPORT_NAME plugin
                         LINKER_LANGUAGE CXX ARCHIVE_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/package)
   target_include_directories(lightscatter_package

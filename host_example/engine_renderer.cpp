@@ -5,6 +5,7 @@
 #include <glm/gtc/packing.hpp>
 
 #include "camera_math.h"
+#include "scene/bounding_boxes.h"
 #include "fullscreen_vert.h"
 #include "mesh_shadowed_frag.h"
 #include "mesh_unshadowed_frag.h"
@@ -63,6 +64,20 @@ EngineRenderer::EngineRenderer(const rg::Device& device, SceneDesc scene, const 
         Bounds b;
         for (uint32_t i = p.firstIndex; i < p.firstIndex + p.indexCount; ++i) b.add(mesh.vertices[mesh.indices[i]].position);
         partBounds_.push_back(b);
+    }
+    // Seed 004's occluders: the scene's oriented boxes, handed to the plugin with every frame.
+    auto toPlugin = [](const OrientedBox& b) {
+        lightscatter::OccluderBox o;
+        o.center = {b.center.x, b.center.y, b.center.z};
+        for (int i = 0; i < 3; ++i) o.axes[static_cast<size_t>(i)] = {b.axes[i].x, b.axes[i].y, b.axes[i].z};
+        o.halfExtents = {b.halfExtents.x, b.halfExtents.y, b.halfExtents.z};
+        return o;
+    };
+    for (const BoundingBoxes& b : boundingBoxes(mesh)) {
+        lightscatter::Occluder o;
+        o.outer = toPlugin(b.outer);
+        if (b.inner) o.inner = toPlugin(*b.inner);
+        occluders_.push_back(o);
     }
     mesh_ = std::make_unique<GpuMesh>(device, mesh);
     plugin_ = std::make_unique<lightscatter::Plugin>(lightscatter::VulkanContext{
@@ -247,6 +262,7 @@ lightscatter::FrameDescription EngineRenderer::describe(const RenderOptions& opt
                                                         VkPipelineStageFlags2 finalStages,
                                                         VkAccessFlags2 finalAccess) const {
     lightscatter::FrameDescription f;
+    f.occluders = occluders_;
     auto input = [](const GpuImage& img, VkImageLayout layout) {
         lightscatter::ImageInput in;
         in.image = img.image();

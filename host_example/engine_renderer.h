@@ -55,6 +55,7 @@ public:
     std::string engineGraphDot() const;
 
 private:
+    std::vector<lightscatter::Occluder> occluders_;
     struct Pipelines;
     void createTargets();
     void buildGraph();

@@ -8,7 +8,8 @@ namespace {
 
 const char* kCommon =
     "common options: --device NAME (or LS_DEVICE), --validation, --help (-h)\n"
-    "methods: auto (default), epipolar, brute-force, analytic, cone-march, slices; profiles:\n"
+    "methods: auto (default), epipolar, brute-force, analytic, cone-march, slices,\n"
+    "beam-tree-analytic; profiles:\n"
     "high-quality, balanced (default), high-performance, low-high-quality, low-balanced,\n"
     "low-high-performance, custom (with --settings)\n";
 

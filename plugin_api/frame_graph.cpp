@@ -17,7 +17,7 @@ bool GraphConfig::operator==(const GraphConfig& o) const {
            shadowMap == o.shadowMap && lightColor == o.lightColor &&
            inscatterOut == o.inscatterOut && table == o.table && extinction == o.extinction &&
            coneSamples == o.coneSamples && coneLimited == o.coneLimited && coneJitter == o.coneJitter &&
-           shadowSampling == o.shadowSampling && sliceTarget == o.sliceTarget && sliceBlur == o.sliceBlur && sliceDither == o.sliceDither && reversedZ == o.reversedZ &&
+           shadowSampling == o.shadowSampling && sliceTarget == o.sliceTarget && sliceBlur == o.sliceBlur && sliceDither == o.sliceDither && beamCapacity == o.beamCapacity && reversedZ == o.reversedZ &&
            noise == o.noise && engineNoise == o.engineNoise && poisonTransients == o.poisonTransients;
 }
 
@@ -69,7 +69,8 @@ rg::ImportedImage importDescription(const ImportState& s) {
     return d;
 }
 
-FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared, ls::SlicePlacementRef slices) {
+FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared, ls::SlicePlacementRef slices,
+                           ls::BeamTreeFrameRef beams) {
     FrameGraph fg;
     fg.graph = std::make_unique<rg::RenderGraph>();
     rg::RenderGraph& g = *fg.graph;
@@ -103,6 +104,17 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared, ls::S
     } else if (c.method == Method::Analytic) {
         lin = ls::addAnalytic(g, shared, {in.constants, cameraZ});
         fg.summary = "seed 001's arctangent closed form per pixel";
+    } else if (c.method == Method::BeamTreeAnalytic) {
+        fg.table = g.importImage("point-light table", importDescription(c.table));
+        ls::BeamTreeInputs beam{in.constants, cameraZ, in.depth, fg.table, {}, {}};
+        if (c.shadowed) {
+            beam.shadowMap = fg.shadowMap;
+            beam.lightColor = fg.lightColor;
+        }
+        lin = ls::addBeamTreeHybrid(g, shared, beams, beam, {c.beamCapacity, c.reversedZ});
+        fg.summary = std::string("seed 004's beam tree: lit pyramids in closed form") +
+                     (c.shadowed ? ", uncertain space sampled by planes with the shadow map"
+                                 : ", uncertain space sampled by planes as lit (no shadow map)");
     } else if (c.method == Method::Slices) {
         ls::SlicePlanesInputs planes{in.constants, in.depth, {}, {}, {}};
         if (c.shadowed && c.shadowSampling) planes.shadowMap = fg.shadowMap;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "shared/node_inputs.h"
+#include "beam_tree_hybrid/beam_tree_nodes.h"
 #include "slices/slice_nodes.h"
 #include "lightscatter.h"
 #include "rendergraph/render_graph.h"
@@ -47,6 +48,7 @@ struct GraphConfig {
     uint32_t sliceBlur = 0;
     bool sliceDither = false;
     bool reversedZ = false;         // the camera's depth convention (slices depth-tests)
+    uint32_t beamCapacity = 0;      // beam-tree-analytic: the triangle buffer, in points
     bool noise = false;             // slices samples a noise texture: the engine's (`noise` given) or ours
     ImportState engineNoise;        // format UNDEFINED: the plugin's own noise
     bool poisonTransients = false;
@@ -74,7 +76,8 @@ inline constexpr VkExtent2D kNoiseExtent{256, 256};
 inline constexpr VkFormat kNoiseFormat = VK_FORMAT_R8G8_UNORM;
 
 // `slices`: where the planes go, updated by the plugin before each frame (null for the budget).
+// `beams`: the beam tree's triangles, likewise (beam-tree-analytic).
 FrameGraph buildFrameGraph(const GraphConfig& config, const ls::Shared& shared,
-                           ls::SlicePlacementRef slices = nullptr);
+                           ls::SlicePlacementRef slices = nullptr, ls::BeamTreeFrameRef beams = nullptr);
 
 }  // namespace lightscatter::detail

@@ -425,6 +425,24 @@ FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
     }
     checkSettings(s.settings);
     checkOccluders(f.occluders);
+    s.occluders = f.occluders.size();
+    auto box = [](const OccluderBox& b) {
+        ls::beam::OrientedBox o;
+        o.center = {b.center[0], b.center[1], b.center[2]};
+        for (int i = 0; i < 3; ++i) {
+            const auto& a = b.axes[static_cast<size_t>(i)];
+            o.axes[i] = glm::normalize(glm::dvec3(a[0], a[1], a[2]));
+        }
+        o.halfExtents = {b.halfExtents[0], b.halfExtents[1], b.halfExtents[2]};
+        return o;
+    };
+    s.beamOccluders.reserve(f.occluders.size());
+    for (const Occluder& o : f.occluders) {
+        ls::beam::Occluder b;
+        b.outer = box(o.outer);
+        if (o.inner) b.inner = box(*o.inner);
+        s.beamOccluders.push_back(b);
+    }
     if (!std::isfinite(f.timeSeconds)) fail("timeSeconds is not finite");
     s.timeSeconds = f.timeSeconds;
 

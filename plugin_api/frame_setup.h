@@ -3,6 +3,7 @@
 // broken is an InvalidInput naming the field; nothing is recorded before this passes.
 #include <vulkan/vulkan.h>
 
+#include "beam_tree/occluders.h"
 #include "shared/scattering_params.h"
 #include "lightscatter.h"
 
@@ -22,6 +23,8 @@ struct FrameSetup {
     bool engineNoise = false;  // FrameDescription::noise given
     bool depthAttachment = false;  // depth.usage allows a depth attachment (slices)
     double timeSeconds = 0.0;
+    size_t occluders = 0;
+    std::vector<ls::beam::Occluder> beamOccluders;  // FrameDescription::occluders in double
 };
 
 // Checks everything; `withImages` false skips the image handles (the budget has none).

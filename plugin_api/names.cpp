@@ -32,6 +32,7 @@ constexpr std::pair<Method, const char*> kMethods[] = {
     {Method::Analytic, "analytic"},
     {Method::ConeMarch, "cone-march"},
     {Method::Slices, "slices"},
+    {Method::BeamTreeAnalytic, "beam-tree-analytic"},
     {Method::Auto, "auto"},
 };
 

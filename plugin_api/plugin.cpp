@@ -57,6 +57,7 @@ struct RecordedFrame {
     std::vector<std::string> passNames;
     bool tableRefilled = false;
     bool noiseMade = false;
+    std::vector<PassTime> cpuWork;
 };
 
 }  // namespace
@@ -120,7 +121,8 @@ struct Plugin::Impl {
         }
         // Only the table-based nodes (epipolar, brute force, the unshadowed closed form) read it.
         const bool needsTable = c.touchesView && c.light != ls::LightKind::Directional &&
-                                (c.method == Method::Epipolar || c.method == Method::BruteForce);
+                                (c.method == Method::Epipolar || c.method == Method::BruteForce ||
+                                 c.method == Method::BeamTreeAnalytic);
         if (needsTable)
             c.table = {VK_FORMAT_R32G32B32A32_SFLOAT, {kTableWidth, kTableHeight},
                        VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
@@ -143,6 +145,17 @@ struct Plugin::Impl {
             ss.noiseVelocity = {v[0], v[1], v[2], v[3]};
             *slicePlacement = ls::placeSlices(setup.camera, setup.light, setup.medium, ss, setup.timeSeconds);
         }
+        beamFrameBuilt = false;
+        if (c.method == Method::BeamTreeAnalytic && c.touchesView) {
+            ls::SliceSettings planes;
+            planes.planes = setup.settings.slicePlanes;
+            *beamFrame = ls::buildBeamTreeFrame(setup.camera, setup.light, setup.medium, setup.beamOccluders, planes);
+            beamFrameBuilt = true;
+            // The triangle buffer grows in powers of two (a rebuild), never shrinks.
+            uint32_t capacity = config ? std::max(config->beamCapacity, 3u * 4096u) : 3u * 4096u;
+            while (capacity < beamFrame->points.size()) capacity *= 2;
+            c.beamCapacity = capacity;
+        }
         noiseMade = false;
         if (c.noise && c.engineNoise.format == VK_FORMAT_UNDEFINED) {
             if (!tilingNoise) tilingNoise = std::make_unique<detail::TilingNoise>(device);
@@ -161,7 +174,7 @@ struct Plugin::Impl {
             executor.reset();
             config.reset();
             ++graphGeneration;
-            FrameGraph built = detail::buildFrameGraph(c, shared, slicePlacement);
+            FrameGraph built = detail::buildFrameGraph(c, shared, slicePlacement, beamFrame);
             rg::CompileOptions options;
             options.poisonTransients = c.poisonTransients;
             rg::CompiledGraph compiled = rg::compile(*built.graph, caps, options);
@@ -208,6 +221,7 @@ struct Plugin::Impl {
             f.passNames.push_back(fg.graph->passes()[p.pass].name);
         f.tableRefilled = tableRefilled;
         f.noiseMade = noiseMade;
+        if (beamFrameBuilt) f.cpuWork.push_back({"beam tree (CPU, seed 004)", beamFrame->buildMilliseconds});
         f.method = config && config->touchesView ? methodName(lastChoice.method) : "none";
         f.reason = lastChoice.reason.empty() ? fg.summary : lastChoice.reason;
         f.notice = lastChoice.notice;
@@ -250,6 +264,7 @@ struct Plugin::Impl {
         r.notice = f->notice;
         if (f->tableRefilled) r.setupPasses.push_back("point-light table");
         if (f->noiseMade) r.setupPasses.push_back("tiling noise");
+        r.cpuWork = f->cpuWork;
         return r;
     }
 
@@ -263,6 +278,9 @@ struct Plugin::Impl {
     bool noiseMade = false;
     // Where this frame's slice planes go; the slices nodes read it when they record.
     std::shared_ptr<ls::SlicePlacement> slicePlacement = std::make_shared<ls::SlicePlacement>();
+    // This frame's beam tree triangles (beam-tree-analytic); the nodes upload them when they record.
+    std::shared_ptr<ls::BeamTreeFrame> beamFrame = std::make_shared<ls::BeamTreeFrame>();
+    bool beamFrameBuilt = false;
     std::optional<GraphConfig> config;
     bool rehearsed = false;
     detail::MethodChoice lastChoice;  // of the frame prepared last

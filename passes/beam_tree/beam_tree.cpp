@@ -158,6 +158,15 @@ void BeamTree::stopAt(uint32_t node, const Polygon& polygon, const Plane& plane)
     }
 }
 
+void BeamTree::markAllUncertain() {
+    for (Node& n : nodes_)
+        if (n.kind == Kind::Open) {
+            n.kind = Kind::Solid;
+            n.solidPlane = Plane{glm::dvec3(0.0), -1.0};  // nothing is in front of it
+        }
+    visible_.clear();
+}
+
 Region BeamTree::classify(const glm::dvec3& p) const {
     uint32_t node = root_;
     while (nodes_[node].kind == Kind::Split)

@@ -49,6 +49,10 @@ class BeamTree {
     // every outer polygon.
     void insertStopper(const Polygon& polygon);
 
+    // An occluder's outer box holds the light: its object may stand anywhere around the light, so
+    // nothing the light reaches is certainly lit. Every open beam becomes uncertain.
+    void markAllUncertain();
+
     [[nodiscard]] Region classify(const glm::dvec3& p) const;
     // Seed 004's isInside (Program 2): whether p is behind the visible set (solid space).
     [[nodiscard]] bool isInside(const glm::dvec3& p) const;

@@ -41,8 +41,15 @@ struct LightVolume {
     size_t outerPolygons = 0, stopperPolygons = 0;
 };
 
-// Builds the tree: outer boxes sorted by the distance of their nearest point from the light (the
-// seed's order; boxes must not overlap), then the backplate, then the inner boxes as stoppers.
+// Seed 004 inserts occluders nearest first, which needs outer boxes that do not overlap (its
+// implementation's stated restriction). Overlapping outer boxes (their world bounds overlap) are
+// merged here into one box around the group, axis-aligned, keeping the largest inner box: larger
+// outer volumes only make more space uncertain, never wrongly lit.
+std::vector<Occluder> mergeOverlapping(const std::vector<Occluder>& occluders);
+
+// Builds the tree: outer boxes (merged where they overlap) sorted by the distance of their nearest
+// point from the light (the seed's order), then the backplate, then the inner boxes as stoppers. An
+// outer box that holds the light makes all of the light's volume uncertain.
 LightVolume buildLightVolume(const LightFrustum& frustum, const std::vector<Occluder>& occluders,
                              double epsilon = 1e-3);
 

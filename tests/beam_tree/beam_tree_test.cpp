@@ -153,3 +153,26 @@ TEST(BeamTree, PartitionSortsAPolygonsPartsByRegion) {
         EXPECT_EQ(v.tree.classify(centroid(p)), Region::Uncertain);
     for (const auto& p : parts.unlit) EXPECT_EQ(v.tree.classify(centroid(p)), Region::Unlit);
 }
+
+// Overlapping outer boxes cannot be inserted nearest first; they become one box around both, which
+// only widens the uncertain space. Disjoint boxes stay as they are.
+TEST(BeamTree, OverlappingOuterBoxesAreMerged) {
+    std::vector<Occluder> boxes(3);
+    boxes[0].outer = box({0, 0, -3}, {1, 1, 1});
+    boxes[0].inner = box({0, 0, -3}, {0.5, 0.5, 0.5});
+    boxes[1].outer = box({1.5, 0, -3}, {1, 0.5, 0.5});  // overlaps the first
+    boxes[2].outer = box({10, 0, -3}, {1, 1, 1});       // far from both
+    const std::vector<Occluder> merged = mergeOverlapping(boxes);
+    ASSERT_EQ(merged.size(), 2u);
+    const auto& group = merged[0].outer.center.x < 5 ? merged[0] : merged[1];
+    EXPECT_NEAR(group.outer.center.x, 0.75, 1e-12);
+    EXPECT_NEAR(group.outer.halfExtents.x, 1.75, 1e-12);
+    EXPECT_NEAR(group.outer.halfExtents.y, 1.0, 1e-12);
+    ASSERT_TRUE(group.inner.has_value());
+    EXPECT_NEAR(group.inner->halfExtents.x, 0.5, 1e-12);
+    // Behind the overlap, seen from a light in front: uncertain, never wrongly lit.
+    const LightFrustum f = spotFrustum({0.75, 0, 5}, {0, 0, -1}, 0.8, 30.0);
+    const LightVolume v = buildLightVolume(f, boxes);
+    EXPECT_EQ(v.tree.classify({2.3, 0.0, -3.0}), Region::Uncertain);
+    EXPECT_EQ(v.tree.classify({0.75, 0.0, 0.0}), Region::Lit);
+}

@@ -1,0 +1,30 @@
+#pragma once
+// Seed 004's CPU half for one frame: the beam tree of the occluders' bounding volumes, built anew
+// each frame, and the triangles it gives the GPU: the fully lit pyramids' surfaces, and the
+// uncertain parts of seed 002's sampling planes (5.4). Plain C++; the nodes upload the result.
+#include <memory>
+#include <vector>
+
+#include "beam_tree/occluders.h"
+#include "shared/scattering_params.h"
+#include "slices/slice_geometry.h"
+
+namespace ls {
+
+struct BeamTreeFrame {
+    std::vector<glm::vec4> points;  // triangles: the lit pyramids', then the uncertain planes'
+    uint32_t litPoints = 0, uncertainPoints = 0;
+    SlicePush slicePush;           // the sampling planes' placement (spacing) for their shading
+    double buildMilliseconds = 0;  // CPU: tree, pyramids and plane partition
+    size_t treeNodes = 0, visiblePolygons = 0;
+};
+using BeamTreeFrameRef = std::shared_ptr<const BeamTreeFrame>;
+
+// For a point or spot light. A spot's frustum is the four walls around its cone cut at its range; a
+// point light's is a cube around it as far as the view reaches. `planes`: the sampling planes.
+BeamTreeFrame buildBeamTreeFrame(const CameraParams& camera, const LightParams& light,
+                                 const MediumParams& medium,
+                                 const std::vector<beam::Occluder>& occluders,
+                                 const SliceSettings& planes);
+
+}  // namespace ls
