@@ -97,6 +97,7 @@ lightscatter::Medium toPluginMedium(const MediumDesc& m) {
     out.g = m.g;
     out.sigmaA = v3(m.sigmaA);
     out.phase = m.phase == PhaseKind::Isotropic ? lightscatter::MiePhase::Isotropic
+                : m.phase == PhaseKind::Hazy    ? lightscatter::MiePhase::Hazy
                                                 : lightscatter::MiePhase::CornetteShanks;
     out.maxDistance = m.maxDistance;
     return out;

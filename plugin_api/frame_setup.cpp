@@ -493,7 +493,10 @@ FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
     s.medium.sigmaA = vec(m.sigmaA, "medium.sigmaA", true);
     if (!(m.g > -1.0f && m.g < 1.0f)) fail("medium.g = " + num(m.g) + ": must be in (-1, 1)");
     s.medium.g = m.g;
+    if (m.phase != MiePhase::CornetteShanks && m.phase != MiePhase::Isotropic && m.phase != MiePhase::Hazy)
+        fail("medium.phase is not a MiePhase value");
     s.medium.isotropicMie = m.phase == MiePhase::Isotropic;
+    s.medium.hazyMie = m.phase == MiePhase::Hazy;
     if (!(m.maxDistance > 0.0f) || !finite(m.maxDistance))
         fail("medium.maxDistance = " + num(m.maxDistance) + ": must be > 0");
     s.medium.maxDistance = m.maxDistance;

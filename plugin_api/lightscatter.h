@@ -64,7 +64,9 @@ enum class Profile {
     Custom,           // Settings as given
 };
 enum class LightType { Directional, Spot, Point };
-enum class MiePhase { CornetteShanks, Isotropic };
+// The Mie lobe: Cornette-Shanks with Medium::g, isotropic, or seed 004's hazy atmosphere
+// (1 + 9 cos^16(alpha / 2)) / (8 pi), normalised over the sphere (docs/model.md), which ignores g.
+enum class MiePhase { CornetteShanks, Isotropic, Hazy };
 enum class ShadowFilter { Nearest, Bilinear };
 // What epipolar samples carry between ray marching and the screen. Seed 000 interpolates Lin itself;
 // interpolating the shadowed fraction of the closed-form unshadowed Lin instead keeps the glow around

@@ -80,6 +80,7 @@ struct Plugin::Impl {
         ls::ScatterSpec spec;
         spec.light = setup.light.kind;
         spec.isotropicMie = setup.medium.isotropicMie;
+        spec.hazyMie = setup.medium.hazyMie;
         spec.minMaxTrees = setup.epipolar.minMaxTrees;
         spec.lightColor = setup.lightColor;
         spec.bilinearShadow = setup.epipolar.bilinearShadow;

@@ -21,7 +21,8 @@ bool PointTable::update(const ls::Shared& shared) {
                                     c.betaM.x, c.betaM.y, c.betaM.z,
                                     c.betaT.x, c.betaT.y, c.betaT.z, c.betaT.w,  // w: r0
                                     c.lutInfo.x, c.lutInfo.y, c.lutInfo.z,
-                                    shared->spec.isotropicMie ? 1.0f : 0.0f, 0.0f};
+                                    shared->spec.isotropicMie ? 1.0f : 0.0f,
+                                    shared->spec.hazyMie ? 1.0f : 0.0f};
     if (filled_ && key == key_) return false;
 
     rg::RenderGraph g;

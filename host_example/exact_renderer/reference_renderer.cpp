@@ -36,6 +36,7 @@ ls::ref::Medium toReferenceMedium(const MediumDesc& m) {
     out.sigmaA = glm::dvec3(m.sigmaA);
     out.g = m.g;
     out.miePhase = m.phase == PhaseKind::Isotropic ? ls::ref::Medium::Isotropic
+                   : m.phase == PhaseKind::Hazy    ? ls::ref::Medium::Hazy
                                                    : ls::ref::Medium::CornetteShanks;
     out.maxDistance = m.maxDistance;
     return out;

@@ -65,7 +65,7 @@ struct MeshData {
 void appendGltf(MeshData& mesh, const std::string& path, const glm::mat4& transform = glm::mat4(1.0f));
 
 enum class LightKind { Directional, Spot, Point };
-enum class PhaseKind { CornetteShanks, Isotropic };
+enum class PhaseKind { CornetteShanks, Isotropic, Hazy };
 
 struct CameraDesc {
     glm::vec3 position{0.0f, 1.7f, 5.0f};

@@ -356,7 +356,8 @@ class SceneReader {
         if (const json* x = member(v, "phase")) {
             medium.phase = oneOf<PhaseKind>(*x, "medium.phase",
                                             {{"cornette-shanks", PhaseKind::CornetteShanks},
-                                             {"isotropic", PhaseKind::Isotropic}});
+                                             {"isotropic", PhaseKind::Isotropic},
+                                             {"hazy", PhaseKind::Hazy}});
         }
         if (const json* x = member(v, "maxDistance")) {
             medium.maxDistance = positive(*x, "medium.maxDistance");

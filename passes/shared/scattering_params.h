@@ -40,6 +40,7 @@ struct MediumParams {
     glm::vec3 sigmaA{0.0f};
     float g = 0.0f;
     bool isotropicMie = false;
+    bool hazyMie = false;  // seed 004's hazy lobe
     float maxDistance = 1000.0f;
     glm::vec3 betaT() const { return betaR + betaM + sigmaA; }
 };

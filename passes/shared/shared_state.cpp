@@ -5,14 +5,14 @@ namespace ls {
 rg::Specialization ScatterSpec::constants() const {
     rg::Specialization s;
     s.set(0, static_cast<int32_t>(light));
-    s.set(1, static_cast<int32_t>(isotropicMie ? 1 : 0));
+    s.set(1, static_cast<int32_t>(isotropicMie ? 1 : hazyMie ? 2 : 0));
     s.set(3, lightColor);
     s.set(4, bilinearShadow);
     return s;
 }
 
 std::string ScatterSpec::key() const {
-    return "L" + std::to_string(static_cast<int>(light)) + (isotropicMie ? "i" : "c") +
+    return "L" + std::to_string(static_cast<int>(light)) + (isotropicMie ? "i" : hazyMie ? "h" : "c") +
            (minMaxTrees ? "T" : "t") + (lightColor ? "C" : "c") + (bilinearShadow ? "B" : "b");
 }
 

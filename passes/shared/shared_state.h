@@ -17,6 +17,7 @@ namespace ls {
 struct ScatterSpec {
     LightKind light = LightKind::Directional;
     bool isotropicMie = false;
+    bool hazyMie = false;
     bool minMaxTrees = true;
     bool lightColor = false;
     bool bilinearShadow = true;

@@ -63,7 +63,9 @@ glm::vec3 phaseSum(const MediumParams& m, float c) {
     const float rayleigh = 3.0f / (16.0f * kPi) * (1.0f + c * c);
     const float g = m.g, g2 = g * g;
     const float denom = std::max(1.0f + g2 - 2.0f * g * c, 1e-6f);
-    const float mie = m.isotropicMie
+    const float h = 0.5f * (1.0f + c), h2 = h * h, h4 = h2 * h2;
+    const float mie = m.hazyMie ? (1.0f + 9.0f * h4 * h4) / (8.0f * kPi)
+                    : m.isotropicMie
                           ? 1.0f / (4.0f * kPi)
                           : 1.0f / (4.0f * kPi) * 3.0f * (1.0f - g2) / (2.0f * (2.0f + g2)) *
                                 (1.0f + c * c) / (denom * std::sqrt(denom));

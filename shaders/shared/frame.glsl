@@ -5,7 +5,7 @@
 #define LS_FRAME_GLSL
 
 layout(constant_id = 0) const int kLightType = 0;       // 0 directional, 1 spot, 2 point
-layout(constant_id = 1) const int kMiePhase = 0;        // 0 Cornette-Shanks, 1 isotropic
+layout(constant_id = 1) const int kMiePhase = 0;        // 0 Cornette-Shanks, 1 isotropic, 2 hazy
 layout(constant_id = 3) const bool kLightColor = false;  // colored shafts from a light-space texture
 layout(constant_id = 4) const bool kBilinearShadow = true;
 

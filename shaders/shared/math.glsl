@@ -12,9 +12,17 @@ float phaseCornetteShanks(float c, float g) {
            (denom * sqrt(denom));
 }
 
+// Seed 004's hazy atmosphere, (1 + 9 cos^16(alpha / 2)) / (8 pi): cos^16(alpha / 2) = ((1 + c) / 2)^8.
+float phaseHazy(float c) {
+    float h = 0.5 * (1.0 + c), h2 = h * h, h4 = h2 * h2;
+    return (1.0 + 9.0 * h4 * h4) / (8.0 * PI);
+}
+
 // betaR pR + betaM pM, per channel (1/(m sr)).
 vec3 phaseSum(float cosTheta) {
-    float mie = kMiePhase == 1 ? 1.0 / (4.0 * PI) : phaseCornetteShanks(cosTheta, frame.betaR.w);
+    float mie = kMiePhase == 1 ? 1.0 / (4.0 * PI)
+              : kMiePhase == 2 ? phaseHazy(cosTheta)
+                               : phaseCornetteShanks(cosTheta, frame.betaR.w);
     return frame.betaR.rgb * phaseRayleigh(cosTheta) + frame.betaM.rgb * mie;
 }
 

@@ -332,7 +332,7 @@ TEST_F(SceneFileTest, NamesAndPaths) {
     EXPECT_EQ(errorFor(R"({"light": {"type": "laser"}})"),
               "light.type 'laser' is not one of directional, spot, point");
     EXPECT_EQ(errorFor(R"({"medium": {"phase": "henyey-greenstein"}})"),
-              "medium.phase 'henyey-greenstein' is not one of cornette-shanks, isotropic");
+              "medium.phase 'henyey-greenstein' is not one of cornette-shanks, isotropic, hazy");
     EXPECT_EQ(errorFor(R"({"gltf": ""})"), "gltf must not be empty");
     EXPECT_EQ(errorFor(R"({"gltf": "nope.gltf"})"),
               "gltf 'nope.gltf' does not exist (looked for " + (dir_ / "nope.gltf").string() + ")");

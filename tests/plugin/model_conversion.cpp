@@ -12,6 +12,7 @@ ls::ref::Medium refMedium(const lightscatter::Medium& m) {
     r.sigmaA = {m.sigmaA[0], m.sigmaA[1], m.sigmaA[2]};
     r.g = m.g;
     r.miePhase = m.phase == lightscatter::MiePhase::Isotropic ? ls::ref::Medium::Isotropic
+                 : m.phase == lightscatter::MiePhase::Hazy    ? ls::ref::Medium::Hazy
                                                                : ls::ref::Medium::CornetteShanks;
     r.maxDistance = m.maxDistance;
     return r;
