@@ -1,4 +1,4 @@
-// lightscatter budget [--method epipolar|slices] [--profile NAME|all] [--settings FILE.json]
+// lightscatter budget [--method epipolar|slices|beam-tree-analytic] [--profile NAME|all] [--settings FILE.json]
 //   [--size WxH] [--shadow-map N] [--json]
 #include <cstdio>
 #include <iostream>
@@ -17,19 +17,22 @@ double mib(uint64_t bytes) { return static_cast<double>(bytes) / (1024.0 * 1024.
 // The methods whose textures depend on the profile, the ones lightscatter::budget knows.
 lightscatter::Method budgetMethod(const std::string& name) {
     const auto m = lightscatter::parseMethod(name);
-    if (m == lightscatter::Method::Epipolar || m == lightscatter::Method::Slices) return *m;
+    if (m == lightscatter::Method::Epipolar || m == lightscatter::Method::Slices ||
+        m == lightscatter::Method::BeamTreeAnalytic)
+        return *m;
     if (!m)
-        throw std::runtime_error("unknown method '" + name + "' (budget knows: epipolar, slices)");
+        throw std::runtime_error("unknown method '" + name +
+                                 "' (budget knows: epipolar, slices, beam-tree-analytic)");
     throw std::runtime_error("--method " + name +
-                             ": budget knows epipolar and slices only, the methods whose textures "
-                             "depend on the profile");
+                             ": budget knows epipolar, slices and beam-tree-analytic only, the methods whose "
+                             "textures depend on the profile");
 }
 
 }  // namespace
 
 int runBudget(Args& args) {
     const lightscatter::Method method = budgetMethod(args.take("--method", "epipolar"));
-    const bool slices = method == lightscatter::Method::Slices;
+    const bool slices = method != lightscatter::Method::Epipolar;  // planes: slices, beam-tree-analytic
     const std::string settingsPath = args.take("--settings", "");
     const std::string profileName = args.take("--profile", settingsPath.empty() ? "all" : "balanced");
     const VkExtent2D size = parseSize(args.take("--size", "2560x1600"), "--size");
@@ -84,14 +87,16 @@ int runBudget(Args& args) {
             j["resources"] = entries;
             j["totalBytes"] = b.totalBytes;
             j["peakBytes"] = b.peakBytes;
-            if (b.seed && !slices)  // seed 000's figures are the epipolar method's
+            if (b.seed && method == lightscatter::Method::Epipolar)  // seed 000's figures are epipolar's
                 j["seed"] = {{"screen", {b.seed->screenWidth, b.seed->screenHeight}},
                              {"megabytes", b.seed->megabytes}, {"milliseconds", b.seed->milliseconds}};
             all.push_back(j);
             continue;
         }
         const std::string what =
-            slices
+            method == lightscatter::Method::BeamTreeAnalytic
+                ? std::to_string(s.slicePlanes) + " sampling planes where uncertain, float32 target"
+            : slices
                 ? std::to_string(s.slicePlanes) + " planes into " + sliceTargetName(s.sliceTarget) +
                       (s.sliceBlur ? ", blur " + std::to_string(s.sliceBlur) : "")
                 : std::to_string(s.slices) + " slices x " + std::to_string(s.samplesPerSlice) +
@@ -105,7 +110,7 @@ int runBudget(Args& args) {
                         e.height, mib(e.bytes), e.transient ? "" : "  (kept across frames)");
         std::printf("  total without aliasing %.1f MiB, peak with aliasing %.1f MiB", mib(b.totalBytes),
                     mib(b.peakBytes));
-        if (b.seed && !slices)
+        if (b.seed && method == lightscatter::Method::Epipolar)
             std::printf("; seed 000: %.1f MB at %ux%u", b.seed->megabytes, b.seed->screenWidth,
                         b.seed->screenHeight);
         std::printf("\n\n");

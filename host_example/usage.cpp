@@ -47,11 +47,12 @@ const std::array kCommands{
         "Outputs are written all or nothing: each must be its own file and none may be an "
         "input.\n"},
     Command{"budget",
-            "budget [--method epipolar|slices] [--profile NAME|all] [--settings FILE.json]\n"
+            "budget [--method epipolar|slices|beam-tree-analytic] [--profile NAME|all]\n"
+            "                    [--settings FILE.json]\n"
             "                    [--size WxH] [--shadow-map N] [--json]\n",
             "Prints a method's GPU memory per profile without a GPU.\n"
-            "  --method NAME       epipolar (default) or slices, the methods whose textures\n"
-            "                      depend on the profile\n"
+            "  --method NAME       epipolar (default), slices or beam-tree-analytic, the methods\n"
+            "                      whose textures depend on the profile\n"
             "  --profile NAME|all  one profile, or all of them (default)\n"
             "  --size WxH          the screen, 1 to 16384 each (default 2560x1600)\n"
             "  --shadow-map N      the shadow map's size, 1 to 16384 (default: the profile's)\n"

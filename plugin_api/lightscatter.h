@@ -337,8 +337,8 @@ struct Budget {
     std::optional<SeedFigure> seed;  // the seed's published figure for this profile
 };
 
-// A method's memory for a profile, screen and shadow-map size; needs no GPU. Epipolar and slices
-// (the methods whose textures depend on the profile). `custom` gives the settings of the Custom
+// A method's memory for a profile, screen and shadow-map size; needs no GPU. Epipolar, slices and
+// beam-tree-analytic (its triangle buffer at its first size, 12288 points). `custom` gives the settings of the Custom
 // profile, and with every profile the ones read from `custom` (slices: a noise amplitude above 0
 // adds the plugin's tiling noise).
 LIGHTSCATTER_API Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,

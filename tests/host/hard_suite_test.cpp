@@ -52,6 +52,17 @@ const std::map<std::string, double> kSlicesBounds = {
 };
 constexpr double kSlicesDefault = 0.1;
 
+// beam-tree-analytic (seed 004, the shipped glTF's boxes as occluders) integrates the lit pyramids in
+// closed form and samples the uncertain space with slices' planes, so it shares slices' misses where
+// a light is at the camera or on screen (measured 0.854 point_at_camera, 0.784 spot_at_camera, 0.263
+// light_on_edge, 0.142 light_center, 0.102 ray_through_point_light) and is closer elsewhere (at most
+// 0.049; dense_medium 0.006 against slices' 0.135).
+const std::map<std::string, double> kBeamTreeBounds = {
+    {"point_at_camera", 1.0},  {"spot_at_camera", 0.95}, {"light_on_edge", 0.32},
+    {"light_center", 0.17},    {"ray_through_point_light", 0.13},
+};
+constexpr double kBeamTreeDefault = 0.07;
+
 }  // namespace
 
 class HardSuite : public testing_support::GpuTest {};
@@ -69,11 +80,14 @@ TEST_F(HardSuite, EveryCaseIsFiniteAndWithinItsBound) {
         const Bound bound = kBounds.count(name) ? kBounds.at(name) : kDefault;
         for (lightscatter::Method method : {lightscatter::Method::Epipolar, lightscatter::Method::BruteForce,
                                             lightscatter::Method::ConeMarch, lightscatter::Method::Analytic,
-                                            lightscatter::Method::Slices}) {
+                                            lightscatter::Method::Slices, lightscatter::Method::BeamTreeAnalytic}) {
             // Seed 001's closed form only takes unshadowed point and spot lights (refusals: Cli tests).
             const bool unshadowedPointLike = scene.light.type == host::LightKind::Point ||
                                              (scene.light.type == host::LightKind::Spot && scene.light.shadowMapSize == 0);
             if (method == lightscatter::Method::Analytic && !unshadowedPointLike) continue;
+            // Seed 004's beam tree is built from a point or spot light.
+            if (method == lightscatter::Method::BeamTreeAnalytic && scene.light.type == host::LightKind::Directional)
+                continue;
             host::RenderOptions options;
             options.method = method;
             const host::FrameOutput out = renderer.render(options);
@@ -85,8 +99,10 @@ TEST_F(HardSuite, EveryCaseIsFiniteAndWithinItsBound) {
                                  : method == lightscatter::Method::BruteForce ? bound.bruteForce
                                  : method == lightscatter::Method::ConeMarch  ? bound.coneMarch
                                  : method == lightscatter::Method::Analytic   ? bound.analytic
-                                 : kSlicesBounds.count(name)                  ? kSlicesBounds.at(name)
-                                                                              : kSlicesDefault;
+                                 : method == lightscatter::Method::BeamTreeAnalytic
+                                     ? (kBeamTreeBounds.count(name) ? kBeamTreeBounds.at(name) : kBeamTreeDefault)
+                                 : kSlicesBounds.count(name) ? kSlicesBounds.at(name)
+                                                             : kSlicesDefault;
             EXPECT_LE(e.meanRelative, limit) << name << " (" << lightscatter::methodName(method) << ")";
         }
         ++cases;

@@ -161,3 +161,22 @@ TEST(Budget, SlicesListsItsTargetPerProfile) {
         EXPECT_NE(std::string(e.what()).find("brute-force"), std::string::npos) << e.what();
     }
 }
+
+// Seed 004's hybrid: a float32 Lin, the triangle buffer and the point-light table; directional
+// lights have no beam tree.
+TEST(Budget, BeamTreeAnalyticListsItsBufferAndTarget) {
+    const auto b = lightscatter::budget(Profile::Balanced, 1920, 1080, 2048, lightscatter::LightType::Spot, nullptr,
+                                        lightscatter::Method::BeamTreeAnalytic);
+    std::set<std::string> seen;
+    for (const auto& e : b.entries) seen.insert(e.name + " " + e.format);
+    std::string all;
+    for (const auto& s : seen) all += s + "; ";
+    std::printf("beam-tree-analytic balanced: peak %.1f MiB: %s\n", static_cast<double>(b.peakBytes) / 1048576.0,
+                all.c_str());
+    EXPECT_TRUE(seen.count("beam-tree triangles buffer")) << all;
+    EXPECT_TRUE(seen.count("in-scattering (lit pyramids and uncertain planes) R32G32B32A32_SFLOAT")) << all;
+    EXPECT_TRUE(seen.count("point-light table R32G32B32A32_SFLOAT")) << all;
+    EXPECT_THROW((void)lightscatter::budget(Profile::Balanced, 1920, 1080, 2048, lightscatter::LightType::Directional,
+                                            nullptr, lightscatter::Method::BeamTreeAnalytic),
+                 lightscatter::InvalidInput);
+}
