@@ -4,33 +4,11 @@
 #include <cmath>
 #include <cstdio>
 
-#include "float64_model/inscatter_integral.h"
 #include "model_conversion.h"
 #include "plugin_fixture.h"
 
 using namespace plugin_test;
 using lightscatter::Method;
-
-namespace {
-
-std::vector<float> float64Unshadowed(const TestFrame& frame) {
-    const FrameSpec& s = frame.spec();
-    const auto medium = refMedium(s.medium);
-    const auto light = refLight(frame.light());
-    std::vector<float> want;
-    for (uint32_t y = 0; y < s.screen.height; ++y)
-        for (uint32_t x = 0; x < s.screen.width; ++x) {
-            const PixelRay r = pixelRay(s.scene, s.view, s.screen.width, s.screen.height, x, y,
-                                        s.medium.maxDistance);
-            const glm::dvec3 v =
-                ls::ref::integrateInscatter(medium, light, {r.origin, r.dir, r.S}).value;
-            want.insert(want.end(), {static_cast<float>(v.x), static_cast<float>(v.y),
-                                     static_cast<float>(v.z), 0.0f});
-        }
-    return want;
-}
-
-}  // namespace
 
 class BeamTreeGpu : public PluginGpuTest {};
 
@@ -75,8 +53,9 @@ TEST_F(BeamTreeGpu, WithoutOccludersTheLitVolumeIsTheUnshadowedModel) {
 
 // One occluder, a plate over the ground under the spot, given as a thin outer box: pixels whose
 // rays never pass behind the box (seen from the light) are fully lit, and there the closed form
-// over the lit pyramids matches the float64 model to 1e-3 of each pixel's value. Elsewhere the
-// planes sample the shadow map; the image's mean error stays at slices' level.
+// over the lit pyramids matches the float64 model to 1e-3 of the peak, and the frame without the
+// box to 1e-4 of each pixel (the point table's own per-pixel error is 3e-3). Elsewhere the planes
+// sample the shadow map.
 TEST_F(BeamTreeGpu, OneBoxOccluderMatchesTheFloat64ModelInFullyLitRegions) {
     FrameSpec spec;
     spec.screen = {48, 32};

@@ -1,5 +1,7 @@
 #include "model_conversion.h"
 
+#include "float64_model/inscatter_integral.h"
+
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -30,6 +32,20 @@ ls::ref::Light refLight(const lightscatter::Light& l) {
     r.range = l.range;
     r.r0 = l.radius;
     return r;
+}
+
+std::vector<float> float64Unshadowed(const TestFrame& frame) {
+    const FrameSpec& s = frame.spec();
+    const auto medium = refMedium(s.medium);
+    const auto light = refLight(frame.light());
+    std::vector<float> want;
+    for (uint32_t y = 0; y < s.screen.height; ++y)
+        for (uint32_t x = 0; x < s.screen.width; ++x) {
+            const PixelRay r = pixelRay(s.scene, s.view, s.screen.width, s.screen.height, x, y, s.medium.maxDistance);
+            const glm::dvec3 v = ls::ref::integrateInscatter(medium, light, {r.origin, r.dir, r.S}).value;
+            want.insert(want.end(), {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z), 0.0f});
+        }
+    return want;
 }
 
 }  // namespace plugin_test

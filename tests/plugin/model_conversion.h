@@ -1,7 +1,10 @@
 #pragma once
 // The plugin's medium and light as the float64 model's (passes/reference), for tests that hold
 // the GPU against it.
+#include <vector>
+
 #include "lightscatter.h"
+#include "test_frame.h"
 #include "float64_model/light.h"
 #include "float64_model/medium.h"
 
@@ -9,5 +12,9 @@ namespace plugin_test {
 
 ls::ref::Medium refMedium(const lightscatter::Medium& m);
 ls::ref::Light refLight(const lightscatter::Light& l);
+
+// The float64 model's unshadowed Lin of every pixel of a frame (RGBA, alpha 0): the reference for
+// frames whose light nothing shadows.
+std::vector<float> float64Unshadowed(const TestFrame& frame);
 
 }  // namespace plugin_test
