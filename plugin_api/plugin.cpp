@@ -138,6 +138,7 @@ struct Plugin::Impl {
             ls::SliceSettings ss;
             ss.planes = setup.settings.slicePlanes;
             ss.planeScaling = setup.settings.slicePlaneScaling;
+            ss.eightBitTarget = setup.settings.sliceTarget == SliceTarget::Rgba8Channels;
             ss.range = setup.settings.sliceRange;
             ss.ambient = setup.settings.sliceAmbient;
             ss.noiseAmplitude = setup.settings.noiseAmplitude;

@@ -65,7 +65,7 @@ glm::vec3 phaseSum(const MediumParams& m, float c) {
     const float denom = std::max(1.0f + g2 - 2.0f * g * c, 1e-6f);
     const float h = 0.5f * (1.0f + c), h2 = h * h, h4 = h2 * h2;
     const float mie = m.hazyMie ? (1.0f + 9.0f * h4 * h4) / (8.0f * kPi)
-                    : m.isotropicMie
+                      : m.isotropicMie
                           ? 1.0f / (4.0f * kPi)
                           : 1.0f / (4.0f * kPi) * 3.0f * (1.0f - g2) / (2.0f * (2.0f + g2)) *
                                 (1.0f + c * c) / (denom * std::sqrt(denom));
@@ -162,7 +162,9 @@ SlicePlacement placeSlices(const CameraParams& camera, const LightParams& light,
             std::max(2u, static_cast<uint32_t>(std::ceil(static_cast<float>(planes) * fraction)));
     }
     const float spacing = (boxBack - boxFront) / static_cast<float>(planes);
-    const float range = settings.range > 0.0f
+    // The estimate marches 81 rays on the CPU: only the 8-bit target reads the range.
+    const float range = !settings.eightBitTarget ? 1.0f
+                        : settings.range > 0.0f
                             ? settings.range
                             : estimatedSliceRange(camera, light, medium, boxFront, boxBack);
 

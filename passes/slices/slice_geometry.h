@@ -31,6 +31,7 @@ struct SliceResolvePush {
 struct SliceSettings {
     uint32_t planes = 128;
     bool planeScaling = false;  // seed 002: fewer planes as the light's volume recedes
+    bool eightBitTarget = false;  // the range below only matters to the 8-bit channel target
     float range = 0.0f;         // 8-bit target: Lin luminance at full scale; 0: estimated
     float ambient = 0.0f;
     float noiseAmplitude = 0.0f;
