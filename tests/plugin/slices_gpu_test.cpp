@@ -15,18 +15,6 @@ using lightscatter::SliceTarget;
 
 namespace {
 
-// The spot over the grille, without a shadow map: every ray's Lin is the model's unshadowed
-// integral, which ls::ref integrates to float64 precision.
-FrameSpec flatSpot() {
-    FrameSpec s;
-    s.screen = {48, 32};
-    s.view = defaultView(s.screen);
-    s.light = spotOverGrille();
-    s.medium = fog();
-    s.shadowed = false;
-    return s;
-}
-
 lightscatter::Settings sliceSettings(uint32_t planes, SliceTarget target) {
     lightscatter::Settings s = smallSettings();
     s.slicePlanes = planes;

@@ -81,6 +81,16 @@ lightscatter::FrameDescription TestFrame::description(lightscatter::Method metho
     return f;
 }
 
+FrameSpec flatSpot() {
+    FrameSpec s;
+    s.screen = {48, 32};
+    s.view = defaultView(s.screen);
+    s.light = spotOverGrille();
+    s.medium = fog();
+    s.shadowed = false;
+    return s;
+}
+
 lightscatter::Light spotOverGrille() {
     lightscatter::Light l;
     l.type = lightscatter::LightType::Spot;

@@ -48,6 +48,9 @@ private:
 lightscatter::Light spotOverGrille();
 lightscatter::Light sunThroughGrille();
 lightscatter::Medium fog();
+// The spot over the grille without a shadow map, 48x32: every ray's Lin is the model's unshadowed
+// integral (model_conversion.h's float64Unshadowed).
+FrameSpec flatSpot();
 View defaultView(VkExtent2D screen);
 
 // Test-sized settings (the profiles are far too large for lavapipe): about one slice per pixel of

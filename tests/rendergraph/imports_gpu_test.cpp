@@ -49,6 +49,20 @@ struct EngineImage {
     }
 };
 
+// An engine's RGBA8 color target as the graph imports it: overwritten, then handed to a copy.
+rg::ImportedImage engineColor(VkImage image, VkExtent2D size) {
+    rg::ImportedImage d;
+    d.image = image;
+    d.format = VK_FORMAT_R8G8B8A8_UNORM;
+    d.extent = size;
+    d.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    d.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    d.finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    d.finalStages = VK_PIPELINE_STAGE_2_COPY_BIT;
+    d.finalAccess = VK_ACCESS_2_TRANSFER_READ_BIT;
+    return d;
+}
+
 // The engine's own use after the graph: a copy from TRANSFER_SRC_OPTIMAL into `host`, read on the CPU.
 void copyToHost(const rg::Device& dev, VkImage image, VkExtent2D size, rg::HostBuffer& host) {
     dev.submitAndWait([&](VkCommandBuffer cmd) {
@@ -77,18 +91,7 @@ TEST_F(ImportsGpu, RendersIntoEngineImagesAndLeavesThemInTheFinalLayout) {
     EngineImage images[2] = {{dev(), size, "engine image 0"}, {dev(), size, "engine image 1"}};
     rg::HostBuffer host(dev(), 4 * size.width * size.height, VK_BUFFER_USAGE_TRANSFER_DST_BIT, "engine readback");
 
-    auto describe = [&](VkImage img) {
-        rg::ImportedImage d;
-        d.image = img;
-        d.format = VK_FORMAT_R8G8B8A8_UNORM;
-        d.extent = size;
-        d.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-        d.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-        d.finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-        d.finalStages = VK_PIPELINE_STAGE_2_COPY_BIT;
-        d.finalAccess = VK_ACCESS_2_TRANSFER_READ_BIT;
-        return d;
-    };
+    auto describe = [&](VkImage img) { return engineColor(img, size); };
     auto pipeline = std::make_shared<rg::Pipeline>();
     auto colorValue = std::make_shared<std::array<float, 4>>();
     rg::RenderGraph g;
@@ -139,15 +142,7 @@ TEST_F(ImportsGpu, EngineDepthIsAReadOnlyDepthAttachment) {
                       VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
     rg::HostBuffer host(dev(), 4 * size.width * size.height, VK_BUFFER_USAGE_TRANSFER_DST_BIT, "engine readback");
 
-    rg::ImportedImage c;
-    c.image = color.image;
-    c.format = VK_FORMAT_R8G8B8A8_UNORM;
-    c.extent = size;
-    c.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-    c.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    c.finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-    c.finalStages = VK_PIPELINE_STAGE_2_COPY_BIT;
-    c.finalAccess = VK_ACCESS_2_TRANSFER_READ_BIT;
+    const rg::ImportedImage c = engineColor(color.image, size);
     rg::ImportedImage d;
     d.image = depth.image;
     d.format = VK_FORMAT_D32_SFLOAT;
