@@ -150,7 +150,9 @@ int runBench(Args& args) {
             continue;
         }
         // Seed 004's beam tree is built from a point or spot light.
-        if (run.method == lightscatter::Method::BeamTreeAnalytic && scene.light.type == LightKind::Directional) {
+        if ((run.method == lightscatter::Method::BeamTreeAnalytic ||
+             run.method == lightscatter::Method::BeamTreeSampling) &&
+            scene.light.type == LightKind::Directional) {
             ++done;
             continue;
         }

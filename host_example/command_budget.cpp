@@ -1,4 +1,4 @@
-// lightscatter budget [--method epipolar|slices|beam-tree-analytic] [--profile NAME|all] [--settings FILE.json]
+// lightscatter budget [--method epipolar|slices|beam-tree-analytic|beam-tree-sampling] [--profile NAME|all] [--settings FILE.json]
 //   [--size WxH] [--shadow-map N] [--json]
 #include <cstdio>
 #include <iostream>
@@ -18,14 +18,14 @@ double mib(uint64_t bytes) { return static_cast<double>(bytes) / (1024.0 * 1024.
 lightscatter::Method budgetMethod(const std::string& name) {
     const auto m = lightscatter::parseMethod(name);
     if (m == lightscatter::Method::Epipolar || m == lightscatter::Method::Slices ||
-        m == lightscatter::Method::BeamTreeAnalytic)
+        m == lightscatter::Method::BeamTreeAnalytic || m == lightscatter::Method::BeamTreeSampling)
         return *m;
     if (!m)
         throw std::runtime_error("unknown method '" + name +
-                                 "' (budget knows: epipolar, slices, beam-tree-analytic)");
+                                 "' (budget knows: epipolar, slices, beam-tree-analytic, beam-tree-sampling)");
     throw std::runtime_error("--method " + name +
-                             ": budget knows epipolar, slices and beam-tree-analytic only, the methods whose "
-                             "textures depend on the profile");
+                             ": budget knows epipolar, slices, beam-tree-analytic and beam-tree-sampling only, the "
+                             "methods whose textures depend on the profile");
 }
 
 }  // namespace
@@ -96,6 +96,8 @@ int runBudget(Args& args) {
         const std::string what =
             method == lightscatter::Method::BeamTreeAnalytic
                 ? std::to_string(s.slicePlanes) + " sampling planes where uncertain, float32 target"
+            : method == lightscatter::Method::BeamTreeSampling
+                ? std::to_string(s.slicePlanes) + " sampling planes where lit or uncertain, float32 target"
             : slices
                 ? std::to_string(s.slicePlanes) + " planes into " + sliceTargetName(s.sliceTarget) +
                       (s.sliceBlur ? ", blur " + std::to_string(s.sliceBlur) : "")

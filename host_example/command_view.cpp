@@ -374,7 +374,10 @@ int runView(Args& args) {
             const LightDesc& l = renderer.scene().light;
             if (l.type == LightKind::Point || (l.type == LightKind::Spot && l.shadowMapSize == 0))
                 methods.push_back(lightscatter::Method::Analytic);
-            if (l.type != LightKind::Directional) methods.push_back(lightscatter::Method::BeamTreeAnalytic);
+            if (l.type != LightKind::Directional) {
+                methods.push_back(lightscatter::Method::BeamTreeAnalytic);
+                methods.push_back(lightscatter::Method::BeamTreeSampling);
+            }
             auto it = std::find(methods.begin(), methods.end(), options.method);
             options.method = it == methods.end() || it + 1 == methods.end() ? methods[0] : *(it + 1);
         }

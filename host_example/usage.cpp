@@ -9,7 +9,7 @@ namespace {
 const char* kCommon =
     "common options: --device NAME (or LS_DEVICE), --validation, --help (-h)\n"
     "methods: auto (default), epipolar, brute-force, analytic, cone-march, slices,\n"
-    "beam-tree-analytic; profiles:\n"
+    "beam-tree-analytic, beam-tree-sampling; profiles:\n"
     "high-quality, balanced (default), high-performance, low-high-quality, low-balanced,\n"
     "low-high-performance, custom (with --settings)\n";
 
@@ -47,12 +47,14 @@ const std::array kCommands{
         "Outputs are written all or nothing: each must be its own file and none may be an "
         "input.\n"},
     Command{"budget",
-            "budget [--method epipolar|slices|beam-tree-analytic] [--profile NAME|all]\n"
+            "budget [--method epipolar|slices|beam-tree-analytic|beam-tree-sampling]\n"
+            "                    [--profile NAME|all]\n"
             "                    [--settings FILE.json]\n"
             "                    [--size WxH] [--shadow-map N] [--json]\n",
             "Prints a method's GPU memory per profile without a GPU.\n"
-            "  --method NAME       epipolar (default), slices or beam-tree-analytic, the methods\n"
-            "                      whose textures depend on the profile\n"
+            "  --method NAME       epipolar (default), slices, beam-tree-analytic or\n"
+            "                      beam-tree-sampling, the methods whose textures depend on the\n"
+            "                      profile\n"
             "  --profile NAME|all  one profile, or all of them (default)\n"
             "  --size WxH          the screen, 1 to 16384 each (default 2560x1600)\n"
             "  --shadow-map N      the shadow map's size, 1 to 16384 (default: the profile's)\n"

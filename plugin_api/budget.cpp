@@ -28,11 +28,14 @@ std::optional<SeedFigure> seedFigure(Profile p) {
 
 Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint32_t shadowMapSize,
               LightType light, const Settings* custom, Method method) {
-    if (method != Method::Epipolar && method != Method::Slices && method != Method::BeamTreeAnalytic)
+    const bool beamTree = method == Method::BeamTreeAnalytic || method == Method::BeamTreeSampling;
+    if (method != Method::Epipolar && method != Method::Slices && !beamTree)
         throw InvalidInput(std::string("lightscatter: budget method ") + methodName(method) +
-                           ": only epipolar, slices and beam-tree-analytic have textures that depend on the profile");
-    if (method == Method::BeamTreeAnalytic && light == LightType::Directional)
-        throw InvalidInput("lightscatter: budget method beam-tree-analytic: needs a point or spot light");
+                           ": only epipolar, slices, beam-tree-analytic and beam-tree-sampling have textures that "
+                           "depend on the profile");
+    if (beamTree && light == LightType::Directional)
+        throw InvalidInput(std::string("lightscatter: budget method ") + methodName(method) +
+                           ": needs a point or spot light");
     if (screenWidth == 0 || screenHeight == 0 || screenWidth > 16384 || screenHeight > 16384)
         throw InvalidInput("lightscatter: budget screen " + std::to_string(screenWidth) + "x" +
                            std::to_string(screenHeight) + ": each side must be in [1, 16384]");
@@ -65,7 +68,9 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
                VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL};
     if (c.shadowed)
         c.shadowMap = {VK_FORMAT_D32_SFLOAT, {shadowMapSize, shadowMapSize}, VK_IMAGE_USAGE_SAMPLED_BIT, ro, ro};
-    if (light != LightType::Directional && method != Method::Slices)
+    // The point-light table: read by epipolar and beam-tree-analytic's closed form.
+    const bool table = light != LightType::Directional && method != Method::Slices && method != Method::BeamTreeSampling;
+    if (table)
         c.table = {VK_FORMAT_R32G32B32A32_SFLOAT, {512, 256},
                    VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, ro, ro};
 
@@ -108,7 +113,7 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
         b.totalBytes += bytes;
         b.peakBytes += bytes;
     }
-    if (light != LightType::Directional && method != Method::Slices) {
+    if (table) {
         // The table lives across frames, outside the graph's aliased memory.
         VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
         info.format = VK_FORMAT_R32G32B32A32_SFLOAT;

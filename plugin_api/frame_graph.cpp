@@ -115,6 +115,16 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared, ls::S
         fg.summary = std::string("seed 004's beam tree: lit pyramids in closed form") +
                      (c.shadowed ? ", uncertain space sampled by planes with the shadow map"
                                  : ", uncertain space sampled by planes as lit (no shadow map)");
+    } else if (c.method == Method::BeamTreeSampling) {
+        ls::BeamTreeSamplingInputs beam{in.constants, in.depth, {}, {}};
+        if (c.shadowed) {
+            beam.shadowMap = fg.shadowMap;
+            beam.lightColor = fg.lightColor;
+        }
+        lin = ls::addBeamTreeSampling(g, shared, beams, beam, {c.beamCapacity, c.reversedZ});
+        fg.summary = std::string("seed 004's beam tree clipping slices' planes: lit parts without shadow look-ups") +
+                     (c.shadowed ? ", uncertain parts with the shadow map"
+                                 : ", uncertain parts as lit (no shadow map)");
     } else if (c.method == Method::Slices) {
         ls::SlicePlanesInputs planes{in.constants, in.depth, {}, {}, {}};
         if (c.shadowed && c.shadowSampling) planes.shadowMap = fg.shadowMap;

@@ -48,12 +48,23 @@ using Mat4 = std::array<float, 16>;  // column-major (GLM's layout), maps column
 
 // The methods (docs/methods.md): epipolar sampling (seed 000), brute-force per-pixel marching (the
 // GPU reference), seed 001's arctangent closed form (unshadowed point and spot lights), seed 003's
-// cone-limited fixed-count march, seed 002's view-aligned slice planes, seed 004's hybrid
-// (BeamTreeAnalytic: a beam tree of FrameDescription::occluders, built on the CPU each frame, splits
-// a point or spot light's volume into lit space integrated in closed form, uncertain space sampled
-// with slices' planes and the shadow map, and dark space skipped), and Auto, which picks one per
-// frame from what the frame holds and says which and why in the FrameReport.
-enum class Method { Epipolar, BruteForce, Analytic, ConeMarch, Slices, BeamTreeAnalytic, Auto };
+// cone-limited fixed-count march, seed 002's view-aligned slice planes, seed 004's two methods (a
+// beam tree of FrameDescription::occluders, built on the CPU each frame, splits a point or spot
+// light's volume into lit, uncertain and dark space; dark space is never drawn. BeamTreeAnalytic
+// integrates lit space in closed form and samples uncertain space with slices' planes and the
+// shadow map; BeamTreeSampling samples both with the planes, skipping the shadow map in lit
+// space), and Auto, which picks one per frame from what the frame holds and says which and why in
+// the FrameReport.
+enum class Method {
+    Epipolar,
+    BruteForce,
+    Analytic,
+    ConeMarch,
+    Slices,
+    BeamTreeAnalytic,
+    BeamTreeSampling,
+    Auto,
+};
 enum class Profile {
     HighQuality,      // 2048 slices x 1024 samples, 4096^2 shadow map (seed 000)
     Balanced,         // 1024 x 1024, 2048^2

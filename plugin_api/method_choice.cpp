@@ -79,17 +79,22 @@ MethodChoice chooseMethod(Method requested, const FrameSetup& s, bool lightReach
             refuseNoise(s, requested);
             return c;
         case Method::BeamTreeAnalytic:
+        case Method::BeamTreeSampling: {
+            const std::string name = methodName(requested);
             if (!pointLike)
-                refuse("method beam-tree-analytic (seed 004) builds its beam tree from a point or spot light; "
+                refuse("method " + name + " (seed 004) builds its beam tree from a point or spot light; "
                        "this frame's light is directional (use auto, epipolar, slices or cone-march)");
             refuseNoise(s, requested);
             if (!s.depthAttachment)
-                refuse("method beam-tree-analytic (seed 004) depth-tests its sampling planes against the engine's "
+                refuse("method " + name + " (seed 004) depth-tests its sampling planes against the engine's "
                        "depth: depth.usage needs DEPTH_STENCIL_ATTACHMENT beside SAMPLED");
             if (s.occluders == 0)
-                c.notice = "beam-tree-analytic has no occluders (FrameDescription::occluders): it treats the whole "
-                           "light volume as lit, so nothing casts a shadow";
+                c.notice = name + " has no occluders (FrameDescription::occluders): it treats the whole light "
+                           "volume as lit, so " +
+                           (requested == Method::BeamTreeAnalytic ? "nothing casts a shadow"
+                                                                  : "it never looks the shadow map up");
             return c;
+        }
         case Method::Slices:
             if (!s.depthAttachment)
                 refuse("method slices (seed 002) depth-tests its planes against the engine's depth: "

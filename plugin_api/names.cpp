@@ -33,6 +33,7 @@ constexpr std::pair<Method, const char*> kMethods[] = {
     {Method::ConeMarch, "cone-march"},
     {Method::Slices, "slices"},
     {Method::BeamTreeAnalytic, "beam-tree-analytic"},
+    {Method::BeamTreeSampling, "beam-tree-sampling"},
     {Method::Auto, "auto"},
 };
 

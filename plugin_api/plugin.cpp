@@ -148,10 +148,12 @@ struct Plugin::Impl {
             *slicePlacement = ls::placeSlices(setup.camera, setup.light, setup.medium, ss, setup.timeSeconds);
         }
         beamFrameBuilt = false;
-        if (c.method == Method::BeamTreeAnalytic && c.touchesView) {
+        if ((c.method == Method::BeamTreeAnalytic || c.method == Method::BeamTreeSampling) && c.touchesView) {
             ls::SliceSettings planes;
             planes.planes = setup.settings.slicePlanes;
-            *beamFrame = ls::buildBeamTreeFrame(setup.camera, setup.light, setup.medium, setup.beamOccluders, planes);
+            *beamFrame = ls::buildBeamTreeFrame(
+                setup.camera, setup.light, setup.medium, setup.beamOccluders, planes,
+                c.method == Method::BeamTreeSampling ? ls::LitSpace::Planes : ls::LitSpace::ClosedForm);
             beamFrameBuilt = true;
             // The triangle buffer grows in powers of two (a rebuild), never shrinks.
             uint32_t capacity = config ? std::max(config->beamCapacity, 3u * 4096u) : 3u * 4096u;

@@ -28,7 +28,7 @@ std::vector<beam::Polygon> cubeFaces(const glm::dvec3& c, double r) {
 BeamTreeFrame buildBeamTreeFrame(const CameraParams& camera, const LightParams& light,
                                  const MediumParams& medium,
                                  const std::vector<beam::Occluder>& occluders,
-                                 const SliceSettings& planes) {
+                                 const SliceSettings& planes, LitSpace lit) {
     const auto start = std::chrono::steady_clock::now();
     BeamTreeFrame out;
     const glm::dvec3 L(light.position);
@@ -50,10 +50,11 @@ BeamTreeFrame buildBeamTreeFrame(const CameraParams& camera, const LightParams& 
     beam::LightVolume volume = beam::buildLightVolume(frustum, occluders);
     if (light.kind != LightKind::Spot)
         for (const beam::Polygon& face : cubeFaces(L, reach)) volume.tree.addBackplate(face);
-    beam::appendLitPyramids(volume.tree, out.points);
-    out.litPoints = static_cast<uint32_t>(out.points.size());
+    out.litAsPlanes = lit == LitSpace::Planes;
+    if (!out.litAsPlanes) beam::appendLitPyramids(volume.tree, out.points);
 
-    // Seed 002's planes across the light's volume, cut to its uncertain parts.
+    // Seed 002's planes across the light's volume, cut to its uncertain (and lit) parts.
+    std::vector<glm::vec4> uncertain;
     const SlicePlacement placement = placeSlices(camera, light, medium, planes, 0.0);
     out.slicePush = placement.push;
     const glm::mat4 toWorld = placement.push.viewToWorld;
@@ -64,9 +65,12 @@ BeamTreeFrame buildBeamTreeFrame(const CameraParams& camera, const LightParams& 
         beam::Polygon quad;
         for (const glm::vec2& c : {lo, glm::vec2(hi.x, lo.y), hi, glm::vec2(lo.x, hi.y)})
             quad.emplace_back(glm::vec3(toWorld * glm::vec4(c, -z, 1.0f)));
-        beam::appendPartitioned(volume.tree, quad, out.points);
+        beam::appendPartitioned(volume.tree, quad, uncertain,
+                                out.litAsPlanes ? &out.points : nullptr);
     }
-    out.uncertainPoints = static_cast<uint32_t>(out.points.size()) - out.litPoints;
+    out.litPoints = static_cast<uint32_t>(out.points.size());
+    out.uncertainPoints = static_cast<uint32_t>(uncertain.size());
+    out.points.insert(out.points.end(), uncertain.begin(), uncertain.end());
     out.treeNodes = volume.tree.nodeCount();
     out.visiblePolygons = volume.tree.visibleSet().size();
     out.buildMilliseconds =

@@ -1,7 +1,9 @@
 #pragma once
 // Seed 004's CPU half for one frame: the beam tree of the occluders' bounding volumes, built anew
-// each frame, and the triangles it gives the GPU: the fully lit pyramids' surfaces, and the
-// uncertain parts of seed 002's sampling planes (5.4). Plain C++; the nodes upload the result.
+// each frame, and the triangles it gives the GPU. The hybrid (5.4) gets the fully lit pyramids'
+// surfaces and the uncertain parts of seed 002's sampling planes; sampling with aggressive clipping
+// (5.3) gets the planes' lit parts and their uncertain parts. Unlit parts are never drawn. Plain
+// C++; the nodes upload the result.
 #include <memory>
 #include <vector>
 
@@ -12,8 +14,10 @@
 namespace ls {
 
 struct BeamTreeFrame {
-    std::vector<glm::vec4> points;  // triangles: the lit pyramids', then the uncertain planes'
+    // Triangles: the lit space's (pyramids or plane parts), then the uncertain planes' parts.
+    std::vector<glm::vec4> points;
     uint32_t litPoints = 0, uncertainPoints = 0;
+    bool litAsPlanes = false;      // the lit triangles are plane parts (5.3), not pyramids (5.4)
     SlicePush slicePush;           // the sampling planes' placement (spacing) for their shading
     double buildMilliseconds = 0;  // CPU: tree, pyramids and plane partition
     size_t treeNodes = 0, visiblePolygons = 0;
@@ -22,9 +26,10 @@ using BeamTreeFrameRef = std::shared_ptr<const BeamTreeFrame>;
 
 // For a point or spot light. A spot's frustum is the four walls around its cone cut at its range; a
 // point light's is a cube around it as far as the view reaches. `planes`: the sampling planes.
+enum class LitSpace { ClosedForm, Planes };
 BeamTreeFrame buildBeamTreeFrame(const CameraParams& camera, const LightParams& light,
                                  const MediumParams& medium,
                                  const std::vector<beam::Occluder>& occluders,
-                                 const SliceSettings& planes);
+                                 const SliceSettings& planes, LitSpace lit = LitSpace::ClosedForm);
 
 }  // namespace ls

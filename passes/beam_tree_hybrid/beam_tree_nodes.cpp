@@ -4,6 +4,7 @@
 
 #include "lit_volume_table_frag.h"
 #include "shared/pass_helpers.h"
+#include "slice_planes_color_frag.h"
 #include "slice_planes_plain_frag.h"
 #include "slice_planes_shadowed_color_frag.h"
 #include "slice_planes_shadowed_frag.h"
@@ -16,6 +17,9 @@ rg::Binding storageBufferBinding(uint32_t binding) {
     return {binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_ALL};
 }
 
+constexpr VkPipelineStageFlags2 kVertexAndFragment =
+    VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+
 // vkCmdUpdateBuffer takes at most 64 KiB a call.
 void upload(VkCommandBuffer cmd, VkBuffer buffer, const std::vector<glm::vec4>& points,
             size_t capacity) {
@@ -26,27 +30,91 @@ void upload(VkCommandBuffer cmd, VkBuffer buffer, const std::vector<glm::vec4>& 
                           reinterpret_cast<const char*>(points.data()) + offset);
 }
 
+rg::BufferRef addTriangleUpload(rg::RenderGraph& graph, BeamTreeFrameRef frame,
+                                uint32_t capacityPoints) {
+    const VkDeviceSize bytes = VkDeviceSize{capacityPoints} * sizeof(glm::vec4);
+    rg::BufferRef triangles = graph.createBuffer("beam-tree triangles", {bytes});
+    auto pass = graph.addPass("upload beam-tree triangles (seed 004)", rg::PassType::Transfer);
+    triangles = pass.transferDst(triangles);
+    const size_t capacity = capacityPoints;
+    pass.execute([frame, triangles, capacity](rg::PassContext& ctx) {
+        upload(ctx.cmd(), ctx.buffer(triangles), frame->points, capacity);
+    });
+    return triangles;
+}
+
+// Bindings only some frames have are build-time variants of the planes' shader.
+rg::ShaderCode planesShader(bool shadowMap, bool cookie) {
+    if (shadowMap)
+        return cookie ? rg::spirv(ls_spirv::slice_planes_shadowed_color_frag)
+                      : rg::spirv(ls_spirv::slice_planes_shadowed_frag);
+    return cookie ? rg::spirv(ls_spirv::slice_planes_color_frag)
+                  : rg::spirv(ls_spirv::slice_planes_plain_frag);
+}
+
+struct PlaneDraw {
+    uint32_t first = 0, count = 0;
+    bool shadow = false;  // the shadow map is looked up (uncertain space)
+};
+
+// Records sampling-plane triangles [first, first + count) of the uploaded buffer, depth-tested
+// against the engine's depth and added to the bound color target.
+void drawPlaneParts(rg::PassContext& ctx, const Shared& shared, const BeamTreeFrame& frame,
+                    rg::BufferRef constants, rg::ImageRef shadowMap, rg::ImageRef lightColor,
+                    rg::BufferRef triangles, const PlaneDraw& draw, bool reversedZ) {
+    if (draw.count == 0) return;
+    const bool cookie = lightColor.valid();
+    rg::GraphicsPipelineDesc desc;
+    desc.vertex = rg::spirv(ls_spirv::triangles_vert);
+    desc.fragment = planesShader(draw.shadow, cookie);
+    desc.formats = ctx.renderingFormats();
+    desc.bindings = {uniformBinding(0), storageBufferBinding(3)};
+    if (draw.shadow) desc.bindings.push_back(sampledBinding(6));
+    if (cookie) desc.bindings.push_back(sampledBinding(8));
+    desc.pushConstantBytes = sizeof(SlicePush);
+    desc.specialization = shared->spec.constants();
+    desc.depthTest = true;
+    desc.depthCompare = reversedZ ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_LESS;
+    desc.blend = rg::BlendMode::Additive;
+    const auto& p =
+        shared->pipelines.graphics(pipelineKey("beam-tree planes", ctx,
+                                               shared->spec.key() + (draw.shadow ? "S" : "s") +
+                                                   (cookie ? "C" : "c") + (reversedZ ? "r" : "f")),
+                                   desc);
+    p.bind(ctx.cmd());
+    auto set = frameSet(ctx, constants);
+    set.storageBuffer(3, ctx.buffer(triangles));
+    if (draw.shadow)
+        set.sampled(6, ctx.view(shadowMap, VK_IMAGE_ASPECT_DEPTH_BIT), ctx.layout(shadowMap),
+                    shared->samplers.nearest());
+    if (cookie)
+        set.sampled(8, ctx.view(lightColor), ctx.layout(lightColor), shared->samplers.linear());
+    set.push(ctx.device(), ctx.cmd(), p);
+    p.push(ctx.cmd(), frame.slicePush);
+    vkCmdDraw(ctx.cmd(), draw.count, 1, draw.first, 0);
+}
+
+// The plane pass's declarations: the frame's constants, the triangles, the engine's depth as a
+// read-only depth attachment, and the shadow map and cookie where given.
+void declarePlaneReads(rg::PassBuilder& pass, rg::BufferRef constants, rg::BufferRef triangles,
+                       rg::ImageRef depth, rg::ImageRef shadowMap, rg::ImageRef lightColor) {
+    pass.uniformBuffer(constants, kVertexAndFragment);
+    pass.storageBufferRead(triangles, VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT);
+    if (shadowMap.valid()) pass.sampled(shadowMap, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
+    if (lightColor.valid()) pass.sampled(lightColor);
+    pass.depthTest(depth);
+}
+
 }  // namespace
 
 rg::ImageRef addBeamTreeHybrid(rg::RenderGraph& graph, const Shared& shared, BeamTreeFrameRef frame,
                                const BeamTreeInputs& in, const BeamTreeOptions& options) {
-    const VkDeviceSize bytes = VkDeviceSize{options.capacityPoints} * sizeof(glm::vec4);
-    rg::BufferRef triangles = graph.createBuffer("beam-tree triangles", {bytes});
-    {
-        auto pass = graph.addPass("upload beam-tree triangles (seed 004)", rg::PassType::Transfer);
-        triangles = pass.transferDst(triangles);
-        const size_t capacity = options.capacityPoints;
-        pass.execute([frame, triangles, capacity](rg::PassContext& ctx) {
-            upload(ctx.cmd(), ctx.buffer(triangles), frame->points, capacity);
-        });
-    }
+    const rg::BufferRef triangles = addTriangleUpload(graph, frame, options.capacityPoints);
     rg::ImageRef lin = graph.createImage("in-scattering (lit pyramids and uncertain planes)",
                                          rg::ImageDesc::screen(VK_FORMAT_R32G32B32A32_SFLOAT));
-    const VkPipelineStageFlags2 both =
-        VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
     {
         auto pass = graph.addPass("lit pyramids in closed form (seed 004)", rg::PassType::Graphics);
-        pass.uniformBuffer(in.constants, both);
+        pass.uniformBuffer(in.constants, kVertexAndFragment);
         pass.storageBufferRead(triangles, VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT);
         pass.sampled(in.cameraZ);
         pass.sampled(in.table);
@@ -79,50 +147,39 @@ rg::ImageRef addBeamTreeHybrid(rg::RenderGraph& graph, const Shared& shared, Bea
         // Without a shadow map (a point light) the uncertain space is sampled as lit: then only the
         // inner boxes cast shadows.
         auto pass = graph.addPass("uncertain sampling planes (seed 004)", rg::PassType::Graphics);
-        pass.uniformBuffer(in.constants, both);
-        pass.storageBufferRead(triangles, VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT);
-        if (in.shadowMap.valid()) pass.sampled(in.shadowMap, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
-        if (in.lightColor.valid()) pass.sampled(in.lightColor);
-        pass.depthTest(in.depth);
+        declarePlaneReads(pass, in.constants, triangles, in.depth, in.shadowMap, in.lightColor);
         lin = pass.colorAttachment(lin, rg::LoadOp::Load);
         const bool reversedZ = options.reversedZ;
         pass.execute([shared, frame, in, triangles, reversedZ](rg::PassContext& ctx) {
-            const uint32_t count = frame->uncertainPoints;
-            if (count == 0) return;
-            const bool cookie = in.lightColor.valid(), shadow = in.shadowMap.valid();
-            rg::GraphicsPipelineDesc desc;
-            desc.vertex = rg::spirv(ls_spirv::triangles_vert);
-            desc.fragment = !shadow  ? rg::spirv(ls_spirv::slice_planes_plain_frag)
-                            : cookie ? rg::spirv(ls_spirv::slice_planes_shadowed_color_frag)
-                                     : rg::spirv(ls_spirv::slice_planes_shadowed_frag);
-            desc.formats = ctx.renderingFormats();
-            desc.bindings = {uniformBinding(0), storageBufferBinding(3)};
-            if (shadow) desc.bindings.push_back(sampledBinding(6));
-            if (cookie) desc.bindings.push_back(sampledBinding(8));
-            desc.pushConstantBytes = sizeof(SlicePush);
-            desc.specialization = shared->spec.constants();
-            desc.depthTest = true;
-            desc.depthCompare = reversedZ ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_LESS;
-            desc.blend = rg::BlendMode::Additive;
-            const auto& p = shared->pipelines.graphics(
-                pipelineKey("uncertain planes", ctx,
-                            shared->spec.key() + (shadow ? "S" : "s") + (cookie ? "C" : "c") +
-                                (reversedZ ? "r" : "f")),
-                desc);
-            p.bind(ctx.cmd());
-            auto set = frameSet(ctx, in.constants);
-            set.storageBuffer(3, ctx.buffer(triangles));
-            if (shadow)
-                set.sampled(6, ctx.view(in.shadowMap, VK_IMAGE_ASPECT_DEPTH_BIT),
-                            ctx.layout(in.shadowMap), shared->samplers.nearest());
-            if (cookie)
-                set.sampled(8, ctx.view(in.lightColor), ctx.layout(in.lightColor),
-                            shared->samplers.linear());
-            set.push(ctx.device(), ctx.cmd(), p);
-            p.push(ctx.cmd(), frame->slicePush);
-            vkCmdDraw(ctx.cmd(), count, 1, frame->litPoints, 0);
+            const PlaneDraw uncertain{frame->litPoints, frame->uncertainPoints,
+                                      in.shadowMap.valid()};
+            drawPlaneParts(ctx, shared, *frame, in.constants, in.shadowMap, in.lightColor,
+                           triangles, uncertain, reversedZ);
         });
     }
+    return lin;
+}
+
+rg::ImageRef addBeamTreeSampling(rg::RenderGraph& graph, const Shared& shared,
+                                 BeamTreeFrameRef frame, const BeamTreeSamplingInputs& in,
+                                 const BeamTreeOptions& options) {
+    const rg::BufferRef triangles = addTriangleUpload(graph, frame, options.capacityPoints);
+    rg::ImageRef lin = graph.createImage("in-scattering (lit and uncertain planes)",
+                                         rg::ImageDesc::screen(VK_FORMAT_R32G32B32A32_SFLOAT));
+    // One pass, two draws: the lit parts skip the shadow map, the uncertain parts look it up.
+    auto pass =
+        graph.addPass("clipped sampling planes (seed 004 method 1)", rg::PassType::Graphics);
+    declarePlaneReads(pass, in.constants, triangles, in.depth, in.shadowMap, in.lightColor);
+    lin = pass.colorAttachment(lin, rg::LoadOp::Clear);
+    const bool reversedZ = options.reversedZ;
+    pass.execute([shared, frame, in, triangles, reversedZ](rg::PassContext& ctx) {
+        const PlaneDraw lit{0, frame->litPoints, false};
+        const PlaneDraw uncertain{frame->litPoints, frame->uncertainPoints, in.shadowMap.valid()};
+        drawPlaneParts(ctx, shared, *frame, in.constants, in.shadowMap, in.lightColor, triangles,
+                       lit, reversedZ);
+        drawPlaneParts(ctx, shared, *frame, in.constants, in.shadowMap, in.lightColor, triangles,
+                       uncertain, reversedZ);
+    });
     return lin;
 }
 

@@ -1,7 +1,9 @@
 #pragma once
-// Seed 004's hybrid method (5.4, `beam-tree-analytic`) as nodes: the CPU's triangles uploaded, the
-// fully lit pyramids integrated in closed form, and the uncertain parts of the sampling planes
-// shaded with the shadow map. What is certainly dark is never drawn.
+// Seed 004's two methods as nodes. Both upload the CPU's triangles and never draw what the beam
+// tree says is certainly dark. `beam-tree-analytic` (5.4) integrates the fully lit pyramids in
+// closed form and samples only the uncertain parts of the planes, with the shadow map;
+// `beam-tree-sampling` (5.3) samples the lit parts of the planes without shadow look-ups and the
+// uncertain parts with them.
 #include "beam_tree_frame.h"
 #include "shared/node_inputs.h"
 
@@ -16,14 +18,26 @@ struct BeamTreeInputs {
     rg::ImageRef lightColor;  // invalid without one
 };
 
+struct BeamTreeSamplingInputs {
+    rg::BufferRef constants;
+    rg::ImageRef depth;       // the engine's depth: a read-only depth attachment for the planes
+    rg::ImageRef shadowMap;   // invalid: the uncertain parts are sampled as lit (a point light)
+    rg::ImageRef lightColor;  // invalid without one
+};
+
 struct BeamTreeOptions {
     uint32_t capacityPoints = 3 * 4096;  // the triangle buffer's size, in points
     bool reversedZ = false;
 };
 
 // Returns Lin (R32G32B32A32_SFLOAT, screen): exits add, entries subtract, so partial sums go
-// negative.
+// negative. `frame` was built with LitSpace::ClosedForm.
 rg::ImageRef addBeamTreeHybrid(rg::RenderGraph& graph, const Shared& shared, BeamTreeFrameRef frame,
                                const BeamTreeInputs& in, const BeamTreeOptions& options);
+
+// Returns Lin (R32G32B32A32_SFLOAT, screen). `frame` was built with LitSpace::Planes.
+rg::ImageRef addBeamTreeSampling(rg::RenderGraph& graph, const Shared& shared,
+                                 BeamTreeFrameRef frame, const BeamTreeSamplingInputs& in,
+                                 const BeamTreeOptions& options);
 
 }  // namespace ls

@@ -176,3 +176,23 @@ TEST(BeamTree, OverlappingOuterBoxesAreMerged) {
     EXPECT_EQ(v.tree.classify({2.3, 0.0, -3.0}), Region::Uncertain);
     EXPECT_EQ(v.tree.classify({0.75, 0.0, 0.0}), Region::Lit);
 }
+
+// The test frames' spot over a thin plate (a grille's outer box): everything under the plate, down
+// to the ground, is uncertain; the space around it lit.
+TEST(BeamTree, AThinPlateUnderASpotMakesTheSpaceBelowItUncertain) {
+    const glm::dvec3 light(0.3, 6.0, 0.2);
+    const LightFrustum f = spotFrustum(light, {0, -1, 0}, 30.0 * M_PI / 180.0, 20.0);
+    Occluder plate;
+    plate.outer = box({0.06, 3.0, -0.8}, {1.07, 0.01, 0.81});
+    LightVolume v = buildLightVolume(f, {plate});
+    for (double y : {2.9, 2.0, 1.0, 0.1})
+        for (double x : {-0.5, 0.0, 0.5})
+            for (double z : {-1.2, -0.8, -0.4}) {
+                // The beam from the light through the plate widens below it.
+                const glm::dvec3 p(light.x + (x - light.x) * (6.0 - y) / 3.0 * 0.9, y,
+                                   light.z + (z - light.z) * (6.0 - y) / 3.0 * 0.9);
+                EXPECT_EQ(v.tree.classify(p), Region::Uncertain) << p.x << " " << p.y << " " << p.z;
+            }
+    EXPECT_EQ(v.tree.classify({0.3, 4.0, 0.2}), Region::Lit);
+    EXPECT_EQ(v.tree.classify({2.5, 1.0, 0.2}), Region::Lit);
+}

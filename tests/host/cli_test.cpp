@@ -182,7 +182,7 @@ TEST(Cli, BudgetOfSlicesPrintsTheirTextures) {
     EXPECT_EQ(nlohmann::json::parse(e.out)[0]["method"], "epipolar");
 
     expectFailure(run("budget --method cone-march"),
-                  "--method cone-march: budget knows epipolar, slices and beam-tree-analytic only");
+                  "--method cone-march: budget knows epipolar, slices, beam-tree-analytic and beam-tree-sampling only");
     expectFailure(run("budget --method raytrace"), "unknown method 'raytrace'");
 }
 

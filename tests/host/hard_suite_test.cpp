@@ -63,6 +63,17 @@ const std::map<std::string, double> kBeamTreeBounds = {
 };
 constexpr double kBeamTreeDefault = 0.07;
 
+// beam-tree-sampling (seed 004 5.3) draws slices' planes where the tree says lit or uncertain (float32
+// target), so it has slices' errors: measured 0.854 point_at_camera, 0.784 spot_at_camera, 0.263
+// light_on_edge, 0.161 light_corner, 0.142 light_center, 0.134 dense_medium, 0.102
+// ray_through_point_light, at most 0.076 elsewhere.
+const std::map<std::string, double> kBeamTreeSamplingBounds = {
+    {"point_at_camera", 1.0},  {"spot_at_camera", 0.95},    {"light_on_edge", 0.32},
+    {"light_corner", 0.2},     {"light_center", 0.17},      {"dense_medium", 0.17},
+    {"ray_through_point_light", 0.14}, {"thin_medium_km", 0.002},
+};
+constexpr double kBeamTreeSamplingDefault = 0.1;
+
 }  // namespace
 
 class HardSuite : public testing_support::GpuTest {};
@@ -80,13 +91,16 @@ TEST_F(HardSuite, EveryCaseIsFiniteAndWithinItsBound) {
         const Bound bound = kBounds.count(name) ? kBounds.at(name) : kDefault;
         for (lightscatter::Method method : {lightscatter::Method::Epipolar, lightscatter::Method::BruteForce,
                                             lightscatter::Method::ConeMarch, lightscatter::Method::Analytic,
-                                            lightscatter::Method::Slices, lightscatter::Method::BeamTreeAnalytic}) {
+                                            lightscatter::Method::Slices, lightscatter::Method::BeamTreeAnalytic,
+                                            lightscatter::Method::BeamTreeSampling}) {
             // Seed 001's closed form only takes unshadowed point and spot lights (refusals: Cli tests).
             const bool unshadowedPointLike = scene.light.type == host::LightKind::Point ||
                                              (scene.light.type == host::LightKind::Spot && scene.light.shadowMapSize == 0);
             if (method == lightscatter::Method::Analytic && !unshadowedPointLike) continue;
             // Seed 004's beam tree is built from a point or spot light.
-            if (method == lightscatter::Method::BeamTreeAnalytic && scene.light.type == host::LightKind::Directional)
+            if ((method == lightscatter::Method::BeamTreeAnalytic ||
+                 method == lightscatter::Method::BeamTreeSampling) &&
+                scene.light.type == host::LightKind::Directional)
                 continue;
             host::RenderOptions options;
             options.method = method;
@@ -101,6 +115,9 @@ TEST_F(HardSuite, EveryCaseIsFiniteAndWithinItsBound) {
                                  : method == lightscatter::Method::Analytic   ? bound.analytic
                                  : method == lightscatter::Method::BeamTreeAnalytic
                                      ? (kBeamTreeBounds.count(name) ? kBeamTreeBounds.at(name) : kBeamTreeDefault)
+                                 : method == lightscatter::Method::BeamTreeSampling
+                                     ? (kBeamTreeSamplingBounds.count(name) ? kBeamTreeSamplingBounds.at(name)
+                                                                            : kBeamTreeSamplingDefault)
                                  : kSlicesBounds.count(name) ? kSlicesBounds.at(name)
                                                              : kSlicesDefault;
             EXPECT_LE(e.meanRelative, limit) << name << " (" << lightscatter::methodName(method) << ")";

@@ -180,3 +180,22 @@ TEST(Budget, BeamTreeAnalyticListsItsBufferAndTarget) {
                                             nullptr, lightscatter::Method::BeamTreeAnalytic),
                  lightscatter::InvalidInput);
 }
+
+// Seed 004's sampling with clipping: the planes' float32 target and the triangle buffer, no table
+// (nothing is integrated in closed form).
+TEST(Budget, BeamTreeSamplingListsItsBufferAndTargetButNoTable) {
+    const auto b = lightscatter::budget(Profile::Balanced, 1920, 1080, 2048, lightscatter::LightType::Spot, nullptr,
+                                        lightscatter::Method::BeamTreeSampling);
+    std::set<std::string> seen;
+    for (const auto& e : b.entries) seen.insert(e.name + " " + e.format);
+    std::string all;
+    for (const auto& s : seen) all += s + "; ";
+    std::printf("beam-tree-sampling balanced: peak %.1f MiB: %s\n", static_cast<double>(b.peakBytes) / 1048576.0,
+                all.c_str());
+    EXPECT_TRUE(seen.count("beam-tree triangles buffer")) << all;
+    EXPECT_TRUE(seen.count("in-scattering (lit and uncertain planes) R32G32B32A32_SFLOAT")) << all;
+    EXPECT_FALSE(seen.count("point-light table R32G32B32A32_SFLOAT")) << all;
+    EXPECT_THROW((void)lightscatter::budget(Profile::Balanced, 1920, 1080, 2048, lightscatter::LightType::Directional,
+                                            nullptr, lightscatter::Method::BeamTreeSampling),
+                 lightscatter::InvalidInput);
+}
