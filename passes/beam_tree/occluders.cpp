@@ -1,5 +1,7 @@
 #include "occluders.h"
 
+#include "front_to_back.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -13,69 +15,7 @@ double distanceToBox(const OrientedBox& b, const glm::dvec3& p) {
     return glm::length(outside);
 }
 
-// World bounds of a box.
-void bounds(const OrientedBox& b, glm::dvec3& lo, glm::dvec3& hi) {
-    glm::dvec3 extent(0.0);
-    for (int i = 0; i < 3; ++i) extent += glm::abs(b.axes[i]) * b.halfExtents[i];
-    lo = b.center - extent;
-    hi = b.center + extent;
-}
-
-double volume(const OrientedBox& b) {
-    return b.halfExtents.x * b.halfExtents.y * b.halfExtents.z;
-}
-
-size_t findRoot(std::vector<size_t>& parent, size_t i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-}
-
 }  // namespace
-
-std::vector<Occluder> mergeOverlapping(const std::vector<Occluder>& occluders) {
-    const size_t n = occluders.size();
-    std::vector<glm::dvec3> lo(n), hi(n);
-    for (size_t i = 0; i < n; ++i) bounds(occluders[i].outer, lo[i], hi[i]);
-    // Sweep along x: only boxes whose x ranges overlap are compared.
-    std::vector<size_t> order(n);
-    std::iota(order.begin(), order.end(), size_t{0});
-    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return lo[a].x < lo[b].x; });
-    std::vector<size_t> parent(n);
-    std::iota(parent.begin(), parent.end(), size_t{0});
-    for (size_t a = 0; a < n; ++a)
-        for (size_t b = a + 1; b < n && lo[order[b]].x <= hi[order[a]].x; ++b) {
-            const size_t i = order[a], j = order[b];
-            if (lo[i].y <= hi[j].y && lo[j].y <= hi[i].y && lo[i].z <= hi[j].z &&
-                lo[j].z <= hi[i].z)
-                parent[findRoot(parent, i)] = findRoot(parent, j);
-        }
-    std::vector<std::vector<size_t>> groups(n);
-    for (size_t i = 0; i < n; ++i) groups[findRoot(parent, i)].push_back(i);
-    std::vector<Occluder> out;
-    for (const auto& g : groups) {
-        if (g.empty()) continue;
-        if (g.size() == 1) {
-            out.push_back(occluders[g[0]]);
-            continue;
-        }
-        glm::dvec3 glo(1e300), ghi(-1e300);
-        const Occluder* biggestInner = nullptr;
-        for (size_t i : g) {
-            glo = glm::min(glo, lo[i]);
-            ghi = glm::max(ghi, hi[i]);
-            const auto& inner = occluders[i].inner;
-            if (inner && (!biggestInner || volume(*inner) > volume(*biggestInner->inner)))
-                biggestInner = &occluders[i];
-        }
-        Occluder merged;
-        merged.outer.center = 0.5 * (glo + ghi);
-        merged.outer.axes = glm::dmat3(1.0);
-        merged.outer.halfExtents = 0.5 * (ghi - glo);
-        if (biggestInner) merged.inner = biggestInner->inner;
-        out.push_back(merged);
-    }
-    return out;
-}
 
 std::vector<Polygon> lightFacingFaces(const OrientedBox& box, const glm::dvec3& light) {
     std::vector<Polygon> faces;
@@ -114,31 +54,26 @@ LightFrustum spotFrustum(const glm::dvec3& position, const glm::dvec3& axis, dou
     return f;
 }
 
-LightVolume buildLightVolume(const LightFrustum& frustum, const std::vector<Occluder>& given,
+LightVolume buildLightVolume(const LightFrustum& frustum, const std::vector<Occluder>& occluders,
                              double epsilon) {
     LightVolume v{BeamTree(frustum.position, frustum.walls, epsilon)};
-    const std::vector<Occluder> occluders = mergeOverlapping(given);
-    std::vector<size_t> order(occluders.size());
-    std::iota(order.begin(), order.end(), size_t{0});
-    std::vector<double> distance(occluders.size());
-    for (size_t i = 0; i < occluders.size(); ++i)
-        distance[i] = distanceToBox(occluders[i].outer, frustum.position);
-    std::stable_sort(order.begin(), order.end(),
-                     [&](size_t a, size_t b) { return distance[a] < distance[b]; });
-    for (size_t i : order)
-        for (const Polygon& face : lightFacingFaces(occluders[i].outer, frustum.position)) {
-            v.tree.insert(face);
-            ++v.outerPolygons;
-        }
-    for (const Occluder& o : occluders)
+    std::vector<Polygon> outer, inner;
+    for (const Occluder& o : occluders) {
         if (distanceToBox(o.outer, frustum.position) == 0.0) v.tree.markAllUncertain();
+        for (Polygon& face : lightFacingFaces(o.outer, frustum.position))
+            outer.push_back(std::move(face));
+        if (o.inner)
+            for (Polygon& face : lightFacingFaces(*o.inner, frustum.position))
+                inner.push_back(std::move(face));
+    }
+    for (const Polygon& piece : frontToBack(std::move(outer), frustum.position, epsilon)) {
+        v.tree.insert(piece);
+        ++v.outerPolygons;
+    }
     if (!frustum.far.empty()) v.tree.addBackplate(frustum.far);
-    for (size_t i : order) {
-        if (!occluders[i].inner) continue;
-        for (const Polygon& face : lightFacingFaces(*occluders[i].inner, frustum.position)) {
-            v.tree.insertStopper(face);
-            ++v.stopperPolygons;
-        }
+    for (const Polygon& piece : frontToBack(std::move(inner), frustum.position, epsilon)) {
+        v.tree.insertStopper(piece);
+        ++v.stopperPolygons;
     }
     return v;
 }

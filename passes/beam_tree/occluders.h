@@ -1,8 +1,8 @@
 #pragma once
 // Seed 004, 5.1-5.2: a light's volume classified from occluders' bounding volumes. Oriented boxes
 // stand for the objects: the outer box encloses an object, the optional inner box lies inside it.
-// The light-facing faces of the outer boxes, nearest box first, build the beam tree; the inner
-// boxes' light-facing faces become stoppers; the far polygon closes the light's frustum.
+// The light-facing faces of the outer boxes, front to back, build the beam tree; the inner boxes'
+// light-facing faces become stoppers; the far polygon closes the light's frustum.
 #include <optional>
 #include <vector>
 
@@ -41,15 +41,10 @@ struct LightVolume {
     size_t outerPolygons = 0, stopperPolygons = 0;
 };
 
-// Seed 004 inserts occluders nearest first, which needs outer boxes that do not overlap (its
-// implementation's stated restriction). Overlapping outer boxes (their world bounds overlap) are
-// merged here into one box around the group, axis-aligned, keeping the largest inner box: larger
-// outer volumes only make more space uncertain, never wrongly lit.
-std::vector<Occluder> mergeOverlapping(const std::vector<Occluder>& occluders);
-
-// Builds the tree: outer boxes (merged where they overlap) sorted by the distance of their nearest
-// point from the light (the seed's order), then the backplate, then the inner boxes as stoppers. An
-// outer box that holds the light makes all of the light's volume uncertain.
+// Builds the tree: the outer boxes' light-facing faces front to back from the light (a BSP order,
+// front_to_back.h, so boxes may overlap and a box is never lost behind a farther box's face), then
+// the backplate, then the inner boxes' faces as stoppers, front to back too. An outer box that holds
+// the light makes all of the light's volume uncertain.
 LightVolume buildLightVolume(const LightFrustum& frustum, const std::vector<Occluder>& occluders,
                              double epsilon = 1e-3);
 

@@ -154,27 +154,25 @@ TEST(BeamTree, PartitionSortsAPolygonsPartsByRegion) {
     for (const auto& p : parts.unlit) EXPECT_EQ(v.tree.classify(centroid(p)), Region::Unlit);
 }
 
-// Overlapping outer boxes cannot be inserted nearest first; they become one box around both, which
-// only widens the uncertain space. Disjoint boxes stay as they are.
-TEST(BeamTree, OverlappingOuterBoxesAreMerged) {
+// Overlapping outer boxes: their faces cut one another in the front-to-back order, and the parts
+// inside the other box fall behind its faces. Behind either box is uncertain, behind the first's
+// inner box dark, and beside both lit.
+TEST(BeamTree, OverlappingOuterBoxesKeepTheirOwnShadows) {
     std::vector<Occluder> boxes(3);
     boxes[0].outer = box({0, 0, -3}, {1, 1, 1});
     boxes[0].inner = box({0, 0, -3}, {0.5, 0.5, 0.5});
-    boxes[1].outer = box({1.5, 0, -3}, {1, 0.5, 0.5});  // overlaps the first
-    boxes[2].outer = box({10, 0, -3}, {1, 1, 1});       // far from both
-    const std::vector<Occluder> merged = mergeOverlapping(boxes);
-    ASSERT_EQ(merged.size(), 2u);
-    const auto& group = merged[0].outer.center.x < 5 ? merged[0] : merged[1];
-    EXPECT_NEAR(group.outer.center.x, 0.75, 1e-12);
-    EXPECT_NEAR(group.outer.halfExtents.x, 1.75, 1e-12);
-    EXPECT_NEAR(group.outer.halfExtents.y, 1.0, 1e-12);
-    ASSERT_TRUE(group.inner.has_value());
-    EXPECT_NEAR(group.inner->halfExtents.x, 0.5, 1e-12);
-    // Behind the overlap, seen from a light in front: uncertain, never wrongly lit.
+    boxes[1].outer = box({1.5, 0, -3.2}, {1, 0.5, 0.5});  // overlaps the first
+    boxes[2].outer = box({10, 0, -3}, {1, 1, 1});         // far from both
     const LightFrustum f = spotFrustum({0.75, 0, 5}, {0, 0, -1}, 0.8, 30.0);
     const LightVolume v = buildLightVolume(f, boxes);
-    EXPECT_EQ(v.tree.classify({2.3, 0.0, -3.0}), Region::Uncertain);
+    const glm::dvec3 L(0.75, 0, 5);
+    auto behind = [&](glm::dvec3 p, double t) { return L + t * (p - L); };
+    EXPECT_EQ(v.tree.classify(behind({2.3, 0.0, -2.7}, 1.3)), Region::Uncertain);  // the second's
+    EXPECT_EQ(v.tree.classify(behind({0.0, 0.0, -2.0}, 1.5)), Region::Unlit);      // first's inner
+    EXPECT_EQ(v.tree.classify(behind({0.0, 0.9, -2.0}, 1.3)), Region::Uncertain);
+    EXPECT_EQ(v.tree.classify(behind({2.3, 0.8, -2.7}, 1.3)), Region::Lit);  // over the second
     EXPECT_EQ(v.tree.classify({0.75, 0.0, 0.0}), Region::Lit);
+    EXPECT_EQ(v.tree.classify(behind({2.3, 0.0, -2.7}, 0.99)), Region::Lit);  // just in front of it
 }
 
 // The test frames' spot over a thin plate (a grille's outer box): everything under the plate, down
@@ -195,4 +193,23 @@ TEST(BeamTree, AThinPlateUnderASpotMakesTheSpaceBelowItUncertain) {
             }
     EXPECT_EQ(v.tree.classify({0.3, 4.0, 0.2}), Region::Lit);
     EXPECT_EQ(v.tree.classify({2.5, 1.0, 0.2}), Region::Lit);
+}
+
+// A box standing on a floor far from the light: the floor's nearest point is nearer the light than
+// the box's, yet the box hides part of the floor. The order must come from what hides what, not
+// from distances: the box's shadow on the floor is uncertain, never lit.
+TEST(BeamTree, ABoxOnAFloorFartherThanTheFloorsNearestPointStillCastsItsShadow) {
+    const glm::dvec3 light(0, 5, 0);
+    const LightFrustum f = spotFrustum(light, glm::normalize(glm::dvec3(1, -0.5, 0)), 1.0, 40.0);
+    std::vector<Occluder> scene(2);
+    scene[0].outer = box({0, -0.1, 0}, {20, 0.1, 20});  // nearest point 5 m below the light
+    scene[1].outer = box({8, 1, 0}, {0.5, 1, 0.5});     // nearest point 8 m away
+    scene[1].inner = box({8, 1, 0}, {0.4, 0.9, 0.4});
+    const LightVolume v = buildLightVolume(f, scene);
+    // On the line from the light through the box's centre, past the box, above the floor.
+    const glm::dvec3 d = glm::dvec3(8, 1, 0) - light;
+    EXPECT_EQ(v.tree.classify(light + 1.15 * d), Region::Unlit);     // behind the inner box
+    EXPECT_EQ(v.tree.classify(light + 0.5 * d), Region::Lit);        // between light and box
+    EXPECT_EQ(v.tree.classify({9.2, 0.05, 3.0}), Region::Lit);       // beside the shadow
+    EXPECT_EQ(v.tree.classify({4.0, -0.5, 0.0}), Region::Uncertain);  // under the floor's face
 }
