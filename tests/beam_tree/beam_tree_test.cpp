@@ -208,8 +208,8 @@ TEST(BeamTree, ABoxOnAFloorFartherThanTheFloorsNearestPointStillCastsItsShadow) 
     const LightVolume v = buildLightVolume(f, scene);
     // On the line from the light through the box's centre, past the box, above the floor.
     const glm::dvec3 d = glm::dvec3(8, 1, 0) - light;
-    EXPECT_EQ(v.tree.classify(light + 1.15 * d), Region::Unlit);     // behind the inner box
-    EXPECT_EQ(v.tree.classify(light + 0.5 * d), Region::Lit);        // between light and box
-    EXPECT_EQ(v.tree.classify({9.2, 0.05, 3.0}), Region::Lit);       // beside the shadow
+    EXPECT_EQ(v.tree.classify(light + 1.15 * d), Region::Unlit);      // behind the inner box
+    EXPECT_EQ(v.tree.classify(light + 0.5 * d), Region::Lit);         // between light and box
+    EXPECT_EQ(v.tree.classify({9.2, 0.05, 3.0}), Region::Lit);        // beside the shadow
     EXPECT_EQ(v.tree.classify({4.0, -0.5, 0.0}), Region::Uncertain);  // under the floor's face
 }
