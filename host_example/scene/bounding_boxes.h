@@ -1,7 +1,9 @@
 #pragma once
-// Occluders for seed 004's methods from a scene's triangles: one oriented box per glTF primitive,
-// on its node's axes, enclosing its vertices; and an inner box where the primitive is itself a
-// solid box (every vertex at a corner of that box), the same box shrunk by a millimetre.
+// Occluders for seed 004's methods from a scene's triangles: one oriented box per connected part of
+// each glTF primitive (a colonnade's pillars, a room's pieces of furniture), on its node's axes,
+// enclosing the part's vertices; and an inner box where the part is itself a solid box (every
+// vertex at a corner of that box), the same box shrunk by a millimetre. Separate parts give the
+// beam tree lit space between them that one box around the whole primitive would make uncertain.
 #include <optional>
 #include <vector>
 
