@@ -28,7 +28,8 @@ TEST(BoundingBoxes, EncloseThePartsOfTheShippedScenes) {
             }
             if (b.inner) {
                 ++inner;
-                for (int k = 0; k < 3; ++k) EXPECT_LT(b.inner->halfExtents[k], b.outer.halfExtents[k]);
+                for (int k = 0; k < 3; ++k)
+                    EXPECT_LT(b.inner->halfExtents[k], b.outer.halfExtents[k]);
             }
         }
         // Every triangle lies whole in one box.
