@@ -1,6 +1,6 @@
 // Seed 004's hybrid (beam-tree-analytic) on the GPU: without occluders the lit pyramids are the
 // whole light volume and the closed form must match the unshadowed model; with the camera inside
-// the cone looking at the light too.
+// the cone looking at the light too, and for a point light whose backplate lies past the far plane.
 #include <cmath>
 #include <cstdio>
 
@@ -30,6 +30,13 @@ TEST_F(BeamTreeGpu, WithoutOccludersTheLitVolumeIsTheUnshadowedModel) {
         s.medium = fog();
         s.shadowed = false;
         cases.push_back({"camera inside the cone, facing the light", s});
+    }
+    {
+        // The backplate cube lies past the far plane (50 m): the lit pass must not clip it there.
+        FrameSpec s = flatSpot();
+        s.light.type = lightscatter::LightType::Point;
+        s.light.position = {0.5f, 2.0f, 1.0f};
+        cases.push_back({"point light in view, its backplate past the far plane", s});
     }
     for (const Case& c : cases) {
         TestFrame frame(dev(), c.spec);
