@@ -191,6 +191,8 @@ int runBench(Args& args) {
         row["coneSamples"] = used.coneSamples;
         row["coneLimited"] = used.coneLimited;
         row["shadowSampling"] = used.shadowSampling;
+        row["lightModel"] =
+            used.lightModel == lightscatter::LightModel::Simplified ? "simplified" : "full";
         row["profile"] = run.custom ? "custom" : lightscatter::profileName(run.profile);
         row["size"] = {run.size.width, run.size.height};
         row["slices"] = used.slices;

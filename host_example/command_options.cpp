@@ -27,6 +27,11 @@ bool honoursNoise(lightscatter::Method method) {
     return method == lightscatter::Method::Slices || method == lightscatter::Method::Auto;
 }
 
+bool honoursLightModel(lightscatter::Method method) {
+    return method == lightscatter::Method::BeamTreeAnalytic ||
+           method == lightscatter::Method::Analytic || method == lightscatter::Method::Auto;
+}
+
 RenderOptions profileOptions(const std::string& profile, const std::string& settingsPath) {
     RenderOptions o;
     const auto p = lightscatter::parseProfile(profile);
@@ -67,6 +72,13 @@ SceneOptions takeSceneOptions(Args& args, const char* defaultSize) {
             ": seed 002's scrolling noise is honoured by method slices only; --method " + method +
             " integrates the model's homogeneous medium (use --method slices or auto, or "
             "noiseAmplitude 0)");
+    if (o.render.custom.lightModel == lightscatter::LightModel::Simplified &&
+        !honoursLightModel(*m))
+        throw std::runtime_error(
+            o.settingsPath + ": lightModel = \"simplified\": seed 004's simplified light model " +
+            "is honoured by methods beam-tree-analytic and analytic only; --method " + method +
+            " integrates the full model (use --method beam-tree-analytic, analytic or auto, or " +
+            "lightModel \"full\")");
     const std::string size = args.take("--size", defaultSize ? defaultSize : "");
     if (!size.empty()) o.size = parseSize(size, "--size");
     o.device.deviceName = args.take("--device", "");

@@ -30,4 +30,8 @@ RenderOptions profileOptions(const std::string& profile, const std::string& sett
 // the plugin refuses a non-zero amplitude with any other method.
 bool honoursNoise(lightscatter::Method method);
 
+// Whether `method` honours Settings::lightModel = Simplified (seed 004's light model):
+// beam-tree-analytic, analytic, and auto, which then picks one of them.
+bool honoursLightModel(lightscatter::Method method);
+
 }  // namespace host

@@ -338,6 +338,7 @@ int runView(Args& args) {
     // N steps the noise's amplitude through these; it starts at the --settings file's.
     constexpr std::array kNoiseSteps{0.0f, 0.25f, 0.5f, 1.0f};
     float noise = options.custom.noiseAmplitude;
+    const lightscatter::LightModel lightModel = options.custom.lightModel;
     bool keyM = false, keyP = false, keyT = false, keyN = false;
     const auto start = std::chrono::steady_clock::now();
     auto last = start;
@@ -392,6 +393,10 @@ int runView(Args& args) {
         }
         // Only slices samples the noise (auto picks slices for it); the other methods run without.
         options.custom.noiseAmplitude = honoursNoise(options.method) ? noise : 0.0f;
+        // Likewise seed 004's simplified light model: the methods that do not honour it run the
+        // full one.
+        options.custom.lightModel =
+            honoursLightModel(options.method) ? lightModel : lightscatter::LightModel::Full;
         options.timeSeconds = std::chrono::duration<double>(now - start).count();
         if (frame == resizeFrame) glfwSetWindowSize(window.handle, static_cast<int>(resizeSize.width),
                                                     static_cast<int>(resizeSize.height));

@@ -42,7 +42,10 @@ constexpr const char* kFields[] = {"slices",
                                    "sliceAmbient",
                                    "noiseAmplitude",
                                    "noiseScale",
-                                   "noiseVelocity"};
+                                   "noiseVelocity",
+                                   "lightModel",
+                                   "simplifiedA0",
+                                   "simplifiedA1"};
 
 std::string knownFields() {
     std::string s;
@@ -123,6 +126,17 @@ class SettingsReader {
                 s.noiseScale = number(v, key);
             else if (key == "noiseVelocity")
                 s.noiseVelocity = numbers<4>(v, key);
+            else if (key == "lightModel")
+                s.lightModel = oneOf<lightscatter::LightModel>(
+                    v, key,
+                    {{lightModelName(lightscatter::LightModel::Full),
+                      lightscatter::LightModel::Full},
+                     {lightModelName(lightscatter::LightModel::Simplified),
+                      lightscatter::LightModel::Simplified}});
+            else if (key == "simplifiedA0")
+                s.simplifiedA0 = number(v, key);
+            else if (key == "simplifiedA1")
+                s.simplifiedA1 = number(v, key);
             else if (key == "shadowMapSize") {
                 s.shadowMapSize = whole(v, key);
                 if (s.shadowMapSize < 1 || s.shadowMapSize > 16384)
@@ -228,6 +242,10 @@ class SettingsReader {
 
 lightscatter::Settings loadSettingsFile(const std::string& path, lightscatter::Settings base) {
     return SettingsReader(path).read(base);
+}
+
+const char* lightModelName(lightscatter::LightModel model) {
+    return model == lightscatter::LightModel::Simplified ? "simplified" : "full";
 }
 
 const char* sliceTargetName(lightscatter::SliceTarget target) {

@@ -14,4 +14,7 @@ lightscatter::Settings loadSettingsFile(const std::string& path, lightscatter::S
 // The name a settings file gives a slice target: "float16", "float32" or "rgba8".
 const char* sliceTargetName(lightscatter::SliceTarget target);
 
+// The name a settings file gives a light model: "full" or "simplified".
+const char* lightModelName(lightscatter::LightModel model);
+
 }  // namespace host

@@ -21,9 +21,10 @@ const char* kSettings =
     "                        coneSamples, coneLimited, coneJitter, shadowSampling; slices'\n"
     "                        slicePlanes, sliceTarget (float16, float32, rgba8),\n"
     "                        slicePlaneScaling, sliceRange, sliceDither, sliceBlur, sliceAmbient,\n"
-    "                        noiseAmplitude, noiseScale, noiseVelocity [4 numbers]); fields it\n"
-    "                        leaves out keep the values of --profile, and the frame runs as the\n"
-    "                        custom profile\n";
+    "                        noiseAmplitude, noiseScale, noiseVelocity [4 numbers]; seed 004's\n"
+    "                        lightModel (full, simplified), simplifiedA0, simplifiedA1); fields\n"
+    "                        it leaves out keep the values of --profile, and the frame runs as\n"
+    "                        the custom profile\n";
 
 struct Command {
     const char* name;

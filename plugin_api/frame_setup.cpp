@@ -361,6 +361,14 @@ void checkSettings(const Settings& s) {
     for (size_t i = 0; i < s.noiseVelocity.size(); ++i)
         if (!finite(s.noiseVelocity[i]))
             fail("custom.noiseVelocity[" + std::to_string(i) + "] is not finite");
+    if (s.lightModel != LightModel::Full && s.lightModel != LightModel::Simplified)
+        fail("custom.lightModel is not a LightModel value");
+    if (!(s.simplifiedA1 > 0.0f) || !finite(s.simplifiedA1))
+        fail("custom.simplifiedA1 = " + num(s.simplifiedA1) +
+             ": must be finite and > 0 (seed 004's falloff I / (a1 r^2 + a0))");
+    if (!(s.simplifiedA0 >= 0.0f) || !finite(s.simplifiedA0))
+        fail("custom.simplifiedA0 = " + num(s.simplifiedA0) +
+             ": must be finite and >= 0 (seed 004's falloff I / (a1 r^2 + a0))");
 }
 
 bool lightTouchesView(const ls::CameraParams& camera, const ls::LightParams& light,
@@ -422,6 +430,9 @@ FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
         s.settings.noiseAmplitude = f.custom.noiseAmplitude;
         s.settings.noiseScale = f.custom.noiseScale;
         s.settings.noiseVelocity = f.custom.noiseVelocity;
+        s.settings.lightModel = f.custom.lightModel;
+        s.settings.simplifiedA0 = f.custom.simplifiedA0;
+        s.settings.simplifiedA1 = f.custom.simplifiedA1;
     }
     checkSettings(s.settings);
     checkOccluders(f.occluders);
@@ -505,6 +516,7 @@ FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
     s.shadowed = l.shadowMapSize > 0;
     s.lightColor = f.lightColor.has_value();
     s.noise = s.settings.noiseAmplitude > 0.0f;
+    s.simplified = s.settings.lightModel == LightModel::Simplified;
     s.engineNoise = f.noise.has_value();
     s.depthAttachment = !withImages || (f.depth.usage & VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT) != 0;
     s.inscatterOut = f.inscatterOut.has_value();

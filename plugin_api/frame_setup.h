@@ -21,6 +21,7 @@ struct FrameSetup {
     bool inscatterOut = false;
     bool noise = false;        // Settings::noiseAmplitude > 0
     bool engineNoise = false;  // FrameDescription::noise given
+    bool simplified = false;   // Settings::lightModel == Simplified (seed 004's light model)
     bool depthAttachment = false;  // depth.usage allows a depth attachment (slices)
     double timeSeconds = 0.0;
     size_t occluders = 0;

@@ -90,6 +90,10 @@ enum class Interpolation { ShadowedFraction, Inscattering };
 // four are summed at the end and tinted by the light's and medium's color; each channel holds a
 // quarter of Settings::sliceRange, and each blend rounds to 1/255 of that.
 enum class SliceTarget { Float16, Float32, Rgba8Channels };
+// The light model the in-scattering integrates (Settings::lightModel). Full: docs/model.md's, with
+// transmittance and the phase functions. Simplified: seed 004's (eqs. 2.12-2.17), irradiance
+// I / (a1 r^2 + a0) with no transmittance anywhere and an isotropic phase.
+enum class LightModel { Full, Simplified };
 
 LIGHTSCATTER_API const char* methodName(Method m);    // "epipolar", "brute-force", "analytic", ...
 LIGHTSCATTER_API const char* profileName(Profile p);  // "high-quality", "balanced", ... "custom"
@@ -146,6 +150,19 @@ struct Settings {
     float noiseScale = 1.0f;             // a tile's size: metres (directional) or, for point and
                                          // spot lights, the tangent of the angle it spans
     std::array<float, 4> noiseVelocity{0.05f, 0.02f, -0.03f, 0.04f};  // tiles per second, two layers
+    // Seed 004's simplified light model (eqs. 2.12-2.17), taken from `custom` with every profile.
+    // It drops the transmittance from the light to each point and from each point to the camera,
+    // replaces the phase functions by 1/(4 pi) (scattering betaR + betaM) and the light's falloff
+    // 1 / (r^2 + r0^2) by 1 / (a1 r^2 + a0); a spot still lights only its cone within its range,
+    // and shadows still apply. Its integral along a ray is one arctangent (2.17), cheaper than the
+    // model's table, and it is the seed's own model: close to the full one in thin media over short
+    // distances, brighter where the medium is dense or the light far (docs/methods.md measures it).
+    // The composite still attenuates the engine's color by exp(-betaT S); only Lin changes.
+    // Honoured by beam-tree-analytic and analytic (and auto, which picks one of them); the other
+    // methods refuse Simplified. a1 = 1 and a0 = light.radius^2 is seed 001's closed form.
+    LightModel lightModel = LightModel::Full;
+    float simplifiedA0 = 0.0025f;  // a0 >= 0 (m^2): the default light radius 0.05 m, squared
+    float simplifiedA1 = 1.0f;     // a1 > 0
 };
 
 // The settings of a profile (Custom returns the defaults).

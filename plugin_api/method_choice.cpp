@@ -49,6 +49,23 @@ void refuseNoise(const FrameSetup& s, Method m) {
                " integrates the model's homogeneous medium (use slices or auto, or amplitude 0)");
 }
 
+// Seed 004's simplified light model is a different integrand; only the closed forms take it.
+void refuseSimplified(const FrameSetup& s, Method m) {
+    if (s.simplified)
+        refuse(
+            "custom.lightModel = simplified (seed 004's light model) is honoured by "
+            "beam-tree-analytic and analytic only; method " +
+            std::string(methodName(m)) +
+            " integrates docs/model.md's full model (use beam-tree-analytic, analytic or "
+            "auto, or lightModel full)");
+}
+
+std::string noOccludersNotice(Method m) {
+    return std::string(methodName(m)) +
+           " has no occluders (FrameDescription::occluders): it treats the whole light volume as lit, so " +
+           (m == Method::BeamTreeAnalytic ? "nothing casts a shadow" : "it never looks the shadow map up");
+}
+
 }  // namespace
 
 MethodChoice chooseMethod(Method requested, const FrameSetup& s, bool lightReachesView) {
@@ -65,7 +82,8 @@ MethodChoice chooseMethod(Method requested, const FrameSetup& s, bool lightReach
                 refuse("method analytic (seed 001) cannot cast shadows; this frame has a shadow map "
                        "(use auto, epipolar, brute-force or cone-march)");
             refuseNoise(s, requested);
-            c.notice = analyticNotice(s);
+            // The simplified model is seed 001's form by definition: nothing to warn about.
+            if (!s.simplified) c.notice = analyticNotice(s);
             return c;
         case Method::Epipolar:
         case Method::BruteForce:
@@ -74,9 +92,11 @@ MethodChoice chooseMethod(Method requested, const FrameSetup& s, bool lightReach
                        "cone-march only; method " + std::string(methodName(requested)) +
                        " samples the shadow map (use cone-march or auto)");
             refuseNoise(s, requested);
+            refuseSimplified(s, requested);
             return c;
         case Method::ConeMarch:
             refuseNoise(s, requested);
+            refuseSimplified(s, requested);
             return c;
         case Method::BeamTreeAnalytic:
         case Method::BeamTreeSampling: {
@@ -88,17 +108,14 @@ MethodChoice chooseMethod(Method requested, const FrameSetup& s, bool lightReach
             if (!s.depthAttachment)
                 refuse("method " + name + " (seed 004) depth-tests its sampling planes against the engine's "
                        "depth: depth.usage needs DEPTH_STENCIL_ATTACHMENT beside SAMPLED");
-            if (s.occluders == 0)
-                c.notice = name + " has no occluders (FrameDescription::occluders): it treats the whole light "
-                           "volume as lit, so " +
-                           (requested == Method::BeamTreeAnalytic ? "nothing casts a shadow"
-                                                                  : "it never looks the shadow map up");
+            if (s.occluders == 0) c.notice = noOccludersNotice(requested);
             return c;
         }
         case Method::Slices:
             if (!s.depthAttachment)
                 refuse("method slices (seed 002) depth-tests its planes against the engine's depth: "
                        "depth.usage needs DEPTH_STENCIL_ATTACHMENT beside SAMPLED");
+            refuseSimplified(s, requested);
             return c;
         case Method::Auto:
             break;
@@ -106,6 +123,39 @@ MethodChoice chooseMethod(Method requested, const FrameSetup& s, bool lightReach
     if (!lightReachesView) {
         c.method = Method::Epipolar;
         c.reason = "the light reaches no view ray (or nothing scatters): extinction only";
+    } else if (s.simplified) {
+        // Seed 004's light model: only its closed forms integrate it.
+        if (!pointLike)
+            refuse(
+                "custom.lightModel = simplified (seed 004's light model) needs a point or "
+                "spot light; this frame's light is directional (use lightModel full)");
+        if (s.noise)
+            refuse(
+                "custom.lightModel = simplified and custom.noiseAmplitude > 0: no method "
+                "honours both (the noise is slices', the simplified model "
+                "beam-tree-analytic's and analytic's)");
+        if (skipShadows)
+            refuse(
+                "custom.lightModel = simplified and custom.shadowSampling = false: no method "
+                "honours both (use shadowSampling true, or no shadow map, which analytic "
+                "then integrates)");
+        if (!s.shadowed) {
+            c.method = Method::Analytic;
+            c.reason =
+                "unshadowed point light, seed 004's simplified light model: its closed form "
+                "(2.17) per pixel";
+        } else if (s.depthAttachment) {
+            c.method = Method::BeamTreeAnalytic;
+            c.reason =
+                "shadowed light, seed 004's simplified light model: beam-tree-analytic, its closed "
+                "form in the lit space and sampling planes elsewhere";
+            if (s.occluders == 0) c.notice = noOccludersNotice(Method::BeamTreeAnalytic);
+        } else {
+            refuse(
+                "custom.lightModel = simplified with a shadow map needs method "
+                "beam-tree-analytic, which depth-tests its planes against the engine's depth: "
+                "depth.usage needs DEPTH_STENCIL_ATTACHMENT beside SAMPLED");
+        }
     } else if (s.noise && s.depthAttachment) {
         c.method = Method::Slices;
         c.reason = "scrolling noise (custom.noiseAmplitude > 0): seed 002's slice planes, the only "

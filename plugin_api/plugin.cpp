@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cstdlib>
 #include <deque>
 #include <optional>
@@ -84,6 +85,7 @@ struct Plugin::Impl {
         spec.minMaxTrees = setup.epipolar.minMaxTrees;
         spec.lightColor = setup.lightColor;
         spec.bilinearShadow = setup.epipolar.bilinearShadow;
+        spec.simplifiedModel = setup.simplified;
 
         const bool touchesView = detail::lightTouchesView(setup.camera, setup.light, setup.medium);
         const detail::MethodChoice choice = detail::chooseMethod(frame.method, setup, touchesView);
@@ -134,6 +136,12 @@ struct Plugin::Impl {
         shared->spec = spec;
         shared->constants = ls::makeFrameConstants(setup.camera, setup.light, setup.medium,
                                                    setup.epipolar, setup.screen, table);
+        // Seed 004's I / (a1 r^2 + a0) as (I / a1) / (r^2 + a0 / a1); the floor keeps a ray through
+        // the light finite when a0 is 0, as the floor on r0 does for the full model; the ceilings
+        // keep a denormal a1 from making them infinite.
+        const float a1 = setup.settings.simplifiedA1;
+        shared->constants.simplified = {std::clamp(setup.settings.simplifiedA0 / a1, 1e-12f, 1e30f),
+                                        std::min(1.0f / a1, 1e30f), 0.0f, 0.0f};
         if (c.method == Method::Slices) {
             ls::SliceSettings ss;
             ss.planes = setup.settings.slicePlanes;

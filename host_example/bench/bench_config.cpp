@@ -71,10 +71,11 @@ class ConfigReader {
         for (const auto& [key, value] : sweeps.items())
             if (key != "slices" && key != "samples" && key != "initialStep" &&
                 key != "shadowMapSize" && key != "size" && key != "minMaxTrees" &&
-                key != "coneSamples" && key != "coneModes" && key != "slicePlanes" && key != "sliceTargets")
+                key != "coneSamples" && key != "coneModes" && key != "slicePlanes" &&
+                key != "sliceTargets" && key != "lightModel")
                 fail("sweeps: unknown key '" + key +
                      "' (known: slices, samples, initialStep, shadowMapSize, size, minMaxTrees, "
-                     "coneSamples, coneModes, slicePlanes, sliceTargets)");
+                     "coneSamples, coneModes, slicePlanes, sliceTargets, lightModel)");
         for (const std::string& scene : c.scenes) expand(c, scene, methods, profiles, sweeps);
         return c;
     }
@@ -263,6 +264,29 @@ class ConfigReader {
                 r.settings.sliceDither = t == "rgba8-dither";
                 c.runs.push_back(r);
             }
+        }
+        // Seed 004's simplified light model against the full one, for each method of the
+        // configuration that honours it (beam-tree-analytic, analytic); both are measured against
+        // the full model's float64 reference.
+        for (const json& v : values("lightModel")) {
+            const std::string name = v.is_string() ? v.get<std::string>() : v.dump();
+            if (name != "full" && name != "simplified")
+                fail("sweeps.lightModel[] = " + v.dump() + ": must be full or simplified");
+            bool any = false;
+            for (lightscatter::Method m : methods) {
+                if (m != lightscatter::Method::BeamTreeAnalytic &&
+                    m != lightscatter::Method::Analytic)
+                    continue;
+                any = true;
+                BenchRun r = balanced(
+                    "lightModel", std::string(lightscatter::methodName(m)) + " lightModel=" + name);
+                r.method = m;
+                r.settings.lightModel = name == "simplified" ? lightscatter::LightModel::Simplified
+                                                             : lightscatter::LightModel::Full;
+                c.runs.push_back(r);
+            }
+            if (!any)
+                fail("sweeps.lightModel needs method beam-tree-analytic or analytic in methods");
         }
         for (const json& v : values("size")) {
             const VkExtent2D s = size(v, "sweeps.size[]");

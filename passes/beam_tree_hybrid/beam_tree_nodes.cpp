@@ -129,6 +129,7 @@ rg::ImageRef addBeamTreeHybrid(rg::RenderGraph& graph, const Shared& shared, Bea
             desc.bindings = {uniformBinding(0), sampledBinding(1), storageBufferBinding(3),
                              sampledBinding(7)};
             desc.specialization = shared->spec.constants();
+            desc.specialization.set(20, true);  // triangles.vert: no near or far clipping
             desc.blend =
                 rg::BlendMode::Additive;  // entries write -E: a float target subtracts them
             const auto& p = shared->pipelines.graphics(

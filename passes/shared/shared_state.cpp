@@ -8,12 +8,17 @@ rg::Specialization ScatterSpec::constants() const {
     s.set(1, static_cast<int32_t>(isotropicMie ? 1 : hazyMie ? 2 : 0));
     s.set(3, lightColor);
     s.set(4, bilinearShadow);
+    s.set(5, simplifiedModel);
     return s;
 }
 
 std::string ScatterSpec::key() const {
-    return "L" + std::to_string(static_cast<int>(light)) + (isotropicMie ? "i" : hazyMie ? "h" : "c") +
-           (minMaxTrees ? "T" : "t") + (lightColor ? "C" : "c") + (bilinearShadow ? "B" : "b");
+    return "L" + std::to_string(static_cast<int>(light)) +
+           (isotropicMie ? "i"
+            : hazyMie    ? "h"
+                         : "c") +
+           (minMaxTrees ? "T" : "t") + (lightColor ? "C" : "c") + (bilinearShadow ? "B" : "b") +
+           (simplifiedModel ? "+simplified" : "");
 }
 
 const rg::Pipeline& PipelineLibrary::compute(const std::string& key, rg::ShaderCode code,

@@ -21,6 +21,7 @@ struct ScatterSpec {
     bool minMaxTrees = true;
     bool lightColor = false;
     bool bilinearShadow = true;
+    bool simplifiedModel = false;  // seed 004's light model (Settings::lightModel)
     rg::Specialization constants() const;
     std::string key() const;
 };

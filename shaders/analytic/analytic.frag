@@ -6,21 +6,13 @@
 // with q = C - L, b = dot(v, q), w^2 = |cross(v, q)|^2 + r0^2 (the light's radius keeps a ray
 // through the light finite), and [t0, t1] the ray's part inside the spot's cone and range (all of
 // [0, S] for a point light). The phase function's shape and the extinction are what it ignores
-// (docs/methods.md measures what that costs).
+// (docs/methods.md measures what that costs). With kSimplifiedModel it is seed 004's simplified
+// model (simplified.glsl), the same integral with a1, a0 in place of 1, r0^2: then exactly so.
 #include "camera.glsl"
 #include "light_volume.glsl"
+#include "simplified.glsl"
 layout(binding = 1) uniform sampler2D cameraZ;
 layout(location = 0) out vec4 outInscatter;
-
-// integral over [t0, t1] of ds / ((s + b)^2 + w^2) = (atan((t1 + b)/w) - atan((t0 + b)/w)) / w.
-// The difference of arctangents is one angle: tan(x - y) = (X - Y)/(1 + X Y), and with
-// t1 >= t0 the numerator is never negative, so atan2 picks the right quadrant; nothing cancels,
-// whether the light lies before, within or behind the segment.
-float arctanIntegral(float t0, float t1, float b, float w) {
-    float num = (t1 - t0) * w;
-    float den = w * w + (t0 + b) * (t1 + b);
-    return atan(num, den) / w;
-}
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -30,7 +22,9 @@ void main() {
     float t0, t1;
     lightInterval(C, v, S, t0, t1);
     vec3 lin = vec3(0.0);
-    if (t0 < t1) {
+    if (kSimplifiedModel) {
+        lin = simplifiedInscatter(C, v, t0, t1);
+    } else if (t0 < t1) {
         vec3 q = C - frame.lightPos.xyz;
         float b = dot(v, q);
         vec3 h = cross(v, q);  // never |q|^2 - b^2, which cancels

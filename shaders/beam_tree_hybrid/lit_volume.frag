@@ -6,10 +6,12 @@
 // limited to the spot's cone and range). z is clamped to the ray's end S, so scene surfaces cut
 // the lit intervals wherever they are; a float target holds the negative partial sums, so seed
 // 004's numOverflow is not needed. A camera inside the lit volume sees only exits: E(0, b).
+// With kSimplifiedModel, E is seed 004's own closed form (2.17) of its simplified light model.
 layout(binding = 7) uniform sampler2D pointTable;
 #include "camera.glsl"
 #include "integrate.glsl"
 #include "light_volume.glsl"
+#include "simplified.glsl"
 layout(binding = 1) uniform sampler2D cameraZ;
 
 layout(location = 0) in vec3 worldPos;
@@ -24,7 +26,10 @@ void main() {
     float z = min(dot(worldPos - C, v), S);
     float t0, t1;
     lightInterval(C, v, S, t0, t1);
-    vec3 E = z > t0 && t0 < t1 ? unshadowedInscatter(C, v, t0, min(z, t1)) : vec3(0.0);
+    vec3 E = vec3(0.0);
+    if (z > t0 && t0 < t1)
+        E = kSimplifiedModel ? simplifiedInscatter(C, v, t0, min(z, t1))
+                             : unshadowedInscatter(C, v, t0, min(z, t1));
     // Triangles are wound counter-clockwise seen from outside: a front face is an entry.
     outLin = vec4(gl_FrontFacing ? -E : E, 0.0);
 }

@@ -8,6 +8,10 @@ layout(constant_id = 0) const int kLightType = 0;       // 0 directional, 1 spot
 layout(constant_id = 1) const int kMiePhase = 0;        // 0 Cornette-Shanks, 1 isotropic, 2 hazy
 layout(constant_id = 3) const bool kLightColor = false;  // colored shafts from a light-space texture
 layout(constant_id = 4) const bool kBilinearShadow = true;
+// Seed 004's simplified light model (Settings::lightModel, eqs. 2.12-2.17): irradiance
+// I / (a1 r^2 + a0), no transmittance, isotropic phase; the shaders that honour it read
+// frame.simplified (simplified.glsl, light_at.glsl).
+layout(constant_id = 5) const bool kSimplifiedModel = false;
 
 const int LIGHT_DIRECTIONAL = 0;
 const int LIGHT_SPOT = 1;
@@ -35,6 +39,7 @@ layout(std140, set = 0, binding = 0) uniform FrameConstants {
     vec4 epipolar2;      // x: bilateral threshold, y: fix-up max steps (0: all), z: tree levels,
                          // w: 1 when samples carry the shadowed fraction instead of Lin
     vec4 lutInfo;        // x: log range of hEff / r0, y: table width, z: table height, w: -
+    vec4 simplified;     // kSimplifiedModel: x: a0 / a1 (at least 1e-12), y: 1 / a1, zw: -
 } frame;
 
 #endif

@@ -1,12 +1,18 @@
 // What reaches one point of a camera ray from the light: the irradiance of docs/model.md (with the
 // light's extinction on the way, the spot's cone and range), times shadow-map visibility and the
 // light color when the including shader has them, and the cosine of the scattering angle. Used by
-// the methods that sample the integrand at points (cone-march, slices).
+// the methods that sample the integrand at points (cone-march, slices, the beam-tree methods'
+// sampling planes). With kSimplifiedModel (seed 004's light model, simplified.glsl) the irradiance
+// is I / (a1 r^2 + a0) without extinction, and towardCamera() drops the transmittance to the camera
+// and the phase function's shape: a shader that samples the integrand as
+// towardCamera(s, cosTheta) * lightAt(...) honours either model.
 // The including shader defines LS_SHADOW_MAP and LS_LIGHT_COLOR (0 or 1), declares `shadowMap` and
 // includes shadow.glsl when LS_SHADOW_MAP, and includes light_color.glsl.
 #ifndef LS_LIGHT_AT_GLSL
 #define LS_LIGHT_AT_GLSL
 #include "frame.glsl"
+#include "math.glsl"
+#include "simplified.glsl"
 
 // `ambient` (1/m^2, point and spot lights): seed 002's term beside the inverse square; 0 is the model.
 vec3 lightAt(vec3 P, vec3 v, float ambient, out float cosTheta) {
@@ -19,8 +25,12 @@ vec3 lightAt(vec3 P, vec3 v, float ambient, out float cosTheta) {
         float r = length(toLight);
         vec3 l = r > 0.0 ? toLight / r : -frame.lightDir.xyz;
         cosTheta = dot(v, l);
-        float r0 = frame.betaT.w;
-        irr = frame.lightIntensity.rgb * exp(-frame.betaT.rgb * r) * (1.0 / (r * r + r0 * r0) + ambient);
+        if (kSimplifiedModel) {
+            irr = frame.lightIntensity.rgb * (simplifiedFalloff(r * r) + ambient);
+        } else {
+            float r0 = frame.betaT.w;
+            irr = frame.lightIntensity.rgb * exp(-frame.betaT.rgb * r) * (1.0 / (r * r + r0 * r0) + ambient);
+        }
         if (kLightType == LIGHT_SPOT && (dot(-l, frame.lightDir.xyz) < frame.lightDir.w ||
                                          r > frame.lightIntensity.w))
             return vec3(0.0);  // outside the cone or the range
@@ -36,6 +46,14 @@ vec3 lightAt(vec3 P, vec3 v, float ambient, out float cosTheta) {
     }
 #endif
     return irr;
+}
+
+// What a point at distance s from the camera sends to it per unit length and unit irradiance, the
+// scattering angle's cosine being cosTheta: exp(-betaT s) P(t) of docs/model.md, or seed 004's
+// betaS / (4 pi) with kSimplifiedModel.
+vec3 towardCamera(float s, float cosTheta) {
+    if (kSimplifiedModel) return (frame.betaR.rgb + frame.betaM.rgb) / (4.0 * PI);
+    return exp(-frame.betaT.rgb * s) * phaseSum(cosTheta);
 }
 
 #endif

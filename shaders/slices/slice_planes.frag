@@ -3,7 +3,8 @@
 // One plane's share of Lin at one pixel: the integrand of docs/model.md at the plane's point
 // (transmittance to the camera, phase function, the light's irradiance, shadow-map visibility,
 // light color as the seed's cookie) times the length of ray between two planes, spacing / cos of
-// the ray's angle to the view axis. The seed's scrolling noise multiplies the density. Planes
+// the ray's angle to the view axis (towardCamera and lightAt: seed 004's simplified model with
+// kSimplifiedModel). The seed's scrolling noise multiplies the density. Planes
 // behind the scene never get here: the engine's depth rejects them.
 // Float16 target: rgb += the share. Rgba8Channels (kChannels): the share's luminance, scaled to the
 // target's range, goes to channel (plane mod 4) only (seed 002's precision trick).
@@ -80,7 +81,7 @@ void main() {
     vec3 irr = lightAt(worldPos, v, slice.params.x, cosTheta);
     if (all(equal(irr, vec3(0.0)))) discard;
     float ds = slice.boxMin.w / max(dot(v, frame.cameraForward.xyz), 1e-4);
-    vec3 share = exp(-frame.betaT.rgb * s) * phaseSum(cosTheta) * irr * ds;
+    vec3 share = towardCamera(s, cosTheta) * irr * ds;
 #if LS_NOISE
     share *= densityNoise(worldPos);
 #endif

@@ -152,6 +152,35 @@ TEST(Cli, SlicesSettingsAndTheirNoise) {
                   "planes.json: slicePlanes = 1: must be between 2 and 4096");
 }
 
+// Seed 004's simplified light model by --settings: beam-tree-analytic honours it; a method that
+// does not is refused in one line, before any device.
+TEST(Cli, SimplifiedLightModelSettings) {
+    writeFile("simplified.json",
+              R"({"lightModel": "simplified", "simplifiedA0": 0.01, "simplifiedA1": 1})");
+    const auto r =
+        run("render " + scene("point_fog") +
+            " --size 48x27 --method beam-tree-analytic --settings simplified.json --out s.png"
+            " --timings s.json --validation");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    std::ifstream t(path("s.json"));
+    const auto j = nlohmann::json::parse(t);
+    EXPECT_EQ(j["methodRan"], "beam-tree-analytic");
+
+    const auto refused =
+        run("render " + scene("point_fog") +
+            " --size 48x27 --method epipolar --settings simplified.json --out e.png");
+    expectFailure(
+        refused,
+        "simplified.json: lightModel = \"simplified\": seed 004's simplified light model is "
+        "honoured by methods beam-tree-analytic and analytic only; --method epipolar");
+    EXPECT_EQ(refused.out.find("using Vulkan device"), std::string::npos) << refused.out;
+    EXPECT_FALSE(exists("e.png"));
+    writeFile("a1.json", R"({"lightModel": "simplified", "simplifiedA1": -2})");
+    expectFailure(
+        run("render " + scene("point_fog") + " --method beam-tree-analytic --settings a1.json"),
+        "a1.json: simplifiedA1 = -2: must be finite and > 0");
+}
+
 TEST(Cli, BudgetOfSlicesPrintsTheirTextures) {
     const auto r = run("budget --method slices");
     ASSERT_EQ(r.exitCode, 0) << r.out;

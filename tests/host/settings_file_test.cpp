@@ -85,6 +85,12 @@ TEST_F(HostSettingsFile, EveryFieldByName) {
     EXPECT_FLOAT_EQ(p.noiseAmplitude, 0.75f);
     EXPECT_FLOAT_EQ(p.noiseScale, 2.5f);
     EXPECT_EQ(p.noiseVelocity, (std::array<float, 4>{0.1f, -0.2f, 0.3f, -0.4f}));
+    const lightscatter::Settings m =
+        load(R"({"lightModel": "simplified", "simplifiedA0": 0.04, "simplifiedA1": 0.5})");
+    EXPECT_EQ(m.lightModel, lightscatter::LightModel::Simplified);
+    EXPECT_FLOAT_EQ(m.simplifiedA0, 0.04f);
+    EXPECT_FLOAT_EQ(m.simplifiedA1, 0.5f);
+    EXPECT_EQ(load(R"({"lightModel": "full"})").lightModel, lightscatter::LightModel::Full);
     EXPECT_EQ(load(R"({"sliceTarget": "float16"})").sliceTarget,
               lightscatter::SliceTarget::Float16);
     EXPECT_EQ(load(R"({"sliceTarget": "float32"})").sliceTarget,
@@ -136,6 +142,14 @@ TEST_F(HostSettingsFile, BadFieldsAreNamed) {
               "noiseVelocity = [1,2,3]: must be an array of 4 numbers");
     EXPECT_EQ(errorFor(R"({"noiseVelocity": 0.1})"),
               "noiseVelocity = 0.1: must be an array of 4 numbers");
+    EXPECT_EQ(errorFor(R"({"lightModel": "cheap"})"),
+              "lightModel = \"cheap\": must be one of full, simplified");
+    EXPECT_EQ(errorFor(R"({"simplifiedA1": 0})"),
+              "simplifiedA1 = 0: must be finite and > 0 (seed 004's falloff I / (a1 r^2 + a0))");
+    EXPECT_EQ(errorFor(R"({"simplifiedA0": -1})"),
+              "simplifiedA0 = -1: must be finite and >= 0 (seed 004's falloff I / (a1 r^2 + a0))");
+    EXPECT_EQ(errorFor(R"({"simplifiedA0": "small"})"),
+              "simplifiedA0 = \"small\": must be a number");
     EXPECT_EQ(errorFor(R"({"noiseVelocity": [0, 0, true, 0]})"),
               "noiseVelocity[2] = true: must be a number");
     EXPECT_EQ(errorFor(R"({"noiseVelocity": [0, 0, 0, 1e39]})"),

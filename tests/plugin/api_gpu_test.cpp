@@ -60,6 +60,18 @@ TEST_F(PluginApiGpu, InitialStepMustBeAPowerOfTwo) {
     expectRefused([](auto& d) { d.custom.initialSampleStep = 12; }, "custom.initialSampleStep");
 }
 
+// Seed 004's simplified light model: I / (a1 r^2 + a0) needs a1 > 0 and a0 >= 0, both finite.
+TEST_F(PluginApiGpu, BadSimplifiedModelCoefficientsAreRefused) {
+    const float nan = std::numeric_limits<float>::quiet_NaN(),
+                inf = std::numeric_limits<float>::infinity();
+    for (float a1 : {0.0f, -1.0f, nan, inf})
+        expectRefused([a1](auto& d) { d.custom.simplifiedA1 = a1; }, "custom.simplifiedA1");
+    for (float a0 : {-0.01f, nan, inf})
+        expectRefused([a0](auto& d) { d.custom.simplifiedA0 = a0; }, "custom.simplifiedA0");
+    expectRefused([](auto& d) { d.custom.lightModel = static_cast<lightscatter::LightModel>(7); },
+                  "custom.lightModel");
+}
+
 TEST_F(PluginApiGpu, DepthThatIsNotADepthFormatIsRefused) {
     expectRefused([](auto& d) { d.depth.format = VK_FORMAT_R8G8B8A8_UNORM; }, "depth.format R8G8B8A8_UNORM");
 }

@@ -1,5 +1,6 @@
 #include "model_conversion.h"
 
+#include "float64_model/closed_forms.h"
 #include "float64_model/inscatter_integral.h"
 
 #include <glm/geometric.hpp>
@@ -44,6 +45,23 @@ std::vector<float> float64Unshadowed(const TestFrame& frame) {
             const PixelRay r = pixelRay(s.scene, s.view, s.screen.width, s.screen.height, x, y, s.medium.maxDistance);
             const glm::dvec3 v = ls::ref::integrateInscatter(medium, light, {r.origin, r.dir, r.S}).value;
             want.insert(want.end(), {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z), 0.0f});
+        }
+    return want;
+}
+
+std::vector<float> float64Simplified(const TestFrame& frame, double a0, double a1) {
+    const FrameSpec& s = frame.spec();
+    const auto medium = refMedium(s.medium);
+    const auto light = refLight(frame.light());
+    std::vector<float> want;
+    for (uint32_t y = 0; y < s.screen.height; ++y)
+        for (uint32_t x = 0; x < s.screen.width; ++x) {
+            const PixelRay r = pixelRay(s.scene, s.view, s.screen.width, s.screen.height, x, y,
+                                        s.medium.maxDistance);
+            const glm::dvec3 v =
+                ls::ref::simplifiedClosedForm(medium, light, {r.origin, r.dir, r.S}, a0, a1);
+            want.insert(want.end(), {static_cast<float>(v.x), static_cast<float>(v.y),
+                                     static_cast<float>(v.z), 0.0f});
         }
     return want;
 }

@@ -17,4 +17,7 @@ ls::ref::Light refLight(const lightscatter::Light& l);
 // frames whose light nothing shadows.
 std::vector<float> float64Unshadowed(const TestFrame& frame);
 
+// The same for seed 004's simplified light model (ls::ref::simplifiedClosedForm) with a0, a1.
+std::vector<float> float64Simplified(const TestFrame& frame, double a0, double a1);
+
 }  // namespace plugin_test
