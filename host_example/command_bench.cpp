@@ -95,7 +95,7 @@ std::vector<double> loadOrRenderReference(const SceneDesc& scene, const MeshData
 const char* kCsvHeader =
     "scene,label,family,method,profile,width,height,slices,samples,initialStep,minMaxTrees,shadowMap,"
     "frames,medianMs,p10Ms,p90Ms,minMs,maxMs,meanRelativeError,rmse,p99Error,maxError,fractionOver5pct,"
-    "psnrDb,nonFinite,device,cpuDevice";
+    "psnrDb,nonFinite,device,cpuDevice,cpuWorkMs,occluders";
 
 }  // namespace
 
@@ -172,15 +172,22 @@ int runBench(Args& args) {
         const lightscatter::Settings used = run.custom ? run.settings : lightscatter::profileSettings(run.profile);
 
         for (int i = 0; i < config.warmup; ++i) renderer->render(options);
-        std::vector<double> totals;
-        std::map<std::string, std::vector<double>> perPass;
+        std::vector<double> totals, cpuTotals;
+        std::map<std::string, std::vector<double>> perPass, perCpuWork;
         FrameOutput last;
         for (int i = 0; i < config.frames; ++i) {
             last = renderer->render(options);
             totals.push_back(last.plugin.totalMilliseconds);
             for (const auto& p : last.plugin.passes) perPass[p.name].push_back(p.milliseconds);
+            double cpu = 0.0;
+            for (const auto& w : last.plugin.cpuWork) {
+                perCpuWork[w.name].push_back(w.milliseconds);
+                cpu += w.milliseconds;
+            }
+            cpuTotals.push_back(cpu);
         }
         const bench::Spread t = bench::spreadOf(totals);
+        const bench::Spread cpu = bench::spreadOf(cpuTotals);
 
         nlohmann::json row;
         row["scene"] = fs::path(run.scene).stem().string();
@@ -208,6 +215,16 @@ int runBench(Args& args) {
             passes.push_back({{"name", p.name}, {"median", s.median}, {"p10", s.p10}, {"p90", s.p90}});
         }
         row["passes"] = passes;
+        // The plugin's CPU work per frame (the beam tree), outside the GPU time above.
+        row["cpuTime"] = {{"median", cpu.median}, {"p10", cpu.p10}, {"p90", cpu.p90}, {"min", cpu.min},
+                          {"max", cpu.max}};
+        nlohmann::json cpuWork = nlohmann::json::array();
+        for (const auto& w : last.plugin.cpuWork) {
+            const bench::Spread s = bench::spreadOf(perCpuWork[w.name]);
+            cpuWork.push_back({{"name", w.name}, {"median", s.median}, {"p10", s.p10}, {"p90", s.p90}});
+        }
+        row["cpuWork"] = cpuWork;
+        row["occluders"] = renderer->occluderCount();
         row["device"] = device.name();
         row["driver"] = device.driverName();
         row["cpuDevice"] = device.isCpu();
@@ -248,12 +265,13 @@ int runBench(Args& args) {
         }
         row["nonFinite"] = nonFinite;
         char line[1024];
-        std::snprintf(line, sizeof line, "%s,%s,%s,%s,%s,%u,%u,%u,%u,%u,%d,%u,%d,%.6f,%.6f,%.6f,%.6f,%.6f,%s,%zu,\"%s\",%d",
+        std::snprintf(line, sizeof line, "%s,%s,%s,%s,%s,%u,%u,%u,%u,%u,%d,%u,%d,%.6f,%.6f,%.6f,%.6f,%.6f,%s,%zu,\"%s\",%d,%.6f,%zu",
                       row["scene"].get<std::string>().c_str(), run.label.c_str(), run.family.c_str(),
                       lightscatter::methodName(run.method), row["profile"].get<std::string>().c_str(), run.size.width,
                       run.size.height, used.slices, used.samplesPerSlice, used.initialSampleStep,
                       used.minMaxTrees ? 1 : 0, sceneForRun.light.shadowMapSize, config.frames, t.median, t.p10, t.p90,
-                      t.min, t.max, errorColumns.c_str(), nonFinite, device.name().c_str(), device.isCpu() ? 1 : 0);
+                      t.min, t.max, errorColumns.c_str(), nonFinite, device.name().c_str(), device.isCpu() ? 1 : 0,
+                      cpu.median, renderer->occluderCount());
         csv << line << "\n" << std::flush;
         all.push_back(row);
         writeTextFile((out / "bench.json").string(),

@@ -52,6 +52,7 @@ public:
     const GpuImage& color() const { return *color_; }
     lightscatter::Plugin& plugin() { return *plugin_; }
     const Bounds& bounds() const { return bounds_; }
+    size_t occluderCount() const { return occluders_.size(); }  // seed 004's boxes, one a primitive
     std::string engineGraphDot() const;
 
 private:

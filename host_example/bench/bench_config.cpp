@@ -28,15 +28,22 @@ class ConfigReader {
         if (!j.is_object()) fail("the top level must be a JSON object");
         for (const auto& [key, value] : j.items())
             if (key != "name" && key != "frames" && key != "warmup" && key != "size" &&
-                key != "scenes" && key != "methods" && key != "profiles" && key != "sweeps")
+                key != "scenes" && key != "methods" && key != "profiles" && key != "sweeps" &&
+                key != "measureError")
                 fail("unknown key '" + key +
-                     "' (known: name, frames, warmup, size, scenes, methods, profiles, sweeps)");
+                     "' (known: name, frames, warmup, size, scenes, methods, profiles, sweeps, "
+                     "measureError)");
         BenchConfig c;
         c.name = j.contains("name") ? text(j["name"], "name")
                                     : std::filesystem::path(path_).stem().string();
         c.frames = int(whole(j, "frames", 10, 1, 10000));
         c.warmup = int(whole(j, "warmup", 3, 0, 10000));
         c.size = size(j.contains("size") ? j["size"] : json("480x270"), "size");
+        if (j.contains("measureError")) {
+            if (!j["measureError"].is_boolean())
+                fail("measureError = " + j["measureError"].dump() + ": must be true or false");
+            c.measureError = j["measureError"].get<bool>();
+        }
         if (!j.contains("scenes")) fail("scenes is required");
         for (const json& s : list(j["scenes"], "scenes")) {
             std::filesystem::path p = text(s, "scenes[]");
@@ -154,7 +161,7 @@ class ConfigReader {
         BenchRun base;
         base.scene = scene;
         base.size = c.size;
-        base.measureError = true;
+        base.measureError = c.measureError;
         for (lightscatter::Method m : methods) {
             // Only epipolar has the seed's profiles; the other methods run once, balanced.
             if (m != lightscatter::Method::Epipolar) {
@@ -295,7 +302,8 @@ class ConfigReader {
                                                   " size=" + v.get<std::string>());
                 r.method = m;
                 r.size = s;
-                r.measureError = r.size.width == c.size.width && r.size.height == c.size.height;
+                r.measureError = c.measureError && r.size.width == c.size.width &&
+                                 r.size.height == c.size.height;
                 c.runs.push_back(r);
             }
         }

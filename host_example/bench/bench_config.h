@@ -29,6 +29,7 @@ struct BenchConfig {
     int frames = 10;
     int warmup = 3;
     VkExtent2D size{480, 270};       // where errors are measured
+    bool measureError = true;        // false: timings only, no float64 reference (e.g. 1080p, many objects)
     std::vector<std::string> scenes;
     std::vector<BenchRun> runs;      // expanded
 };
