@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
 
@@ -56,4 +58,31 @@ TEST(CliBench, AnErrorDuringTheRunsStartsOnItsOwnLine) {
     EXPECT_EQ(r.out[line - 1], '\n') << r.out;
     EXPECT_NE(r.out.find("window_room_brute-force.png: is a directory"), std::string::npos)
         << r.out;
+}
+
+TEST(CliBench, TimingsOnlyRowsCarryTheBeamTreesCpuTime) {
+    writeFile("timings.json", R"({"frames": 1, "warmup": 0, "size": "32x18", "measureError": false,
+        "scenes": ["scenes/occluders_10.json"], "methods": ["beam-tree-analytic", "epipolar"]})");
+    const auto r = run("bench --config timings.json --out timings --validation");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    std::ifstream j(cli_test::path("timings/bench.json"));
+    const auto parsed = nlohmann::json::parse(j);
+    ASSERT_EQ(parsed["runs"].size(), 2u);
+    for (const auto& row : parsed["runs"]) {
+        EXPECT_FALSE(row.contains("error")) << row["label"] << ": no reference without measureError";
+        EXPECT_EQ(row["occluders"], 11) << row["label"];  // ten boxes and the floor
+        const bool tree = row["method"] == "beam-tree-analytic";
+        EXPECT_EQ(row["cpuWork"].size(), tree ? 1u : 0u) << row["label"];
+        if (tree) {
+            EXPECT_GT(row["cpuTime"]["median"].get<double>(), 0.0);
+        }
+    }
+    std::ifstream csv(cli_test::path("timings/bench.csv"));
+    std::string header;
+    std::getline(csv, header);
+    EXPECT_NE(header.find(",cpuWorkMs,occluders"), std::string::npos) << header;
+
+    writeFile("flag.json", R"({"measureError": "no", "scenes": ["scenes/occluders_1.json"]})");
+    expectFailure(run("bench --config flag.json --out flag"),
+                  "flag.json: measureError = \"no\": must be true or false");
 }
