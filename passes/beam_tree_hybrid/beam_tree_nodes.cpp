@@ -1,6 +1,8 @@
 #include "beam_tree_nodes.h"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 #include "lit_volume_table_frag.h"
 #include "shared/pass_helpers.h"
@@ -20,10 +22,16 @@ rg::Binding storageBufferBinding(uint32_t binding) {
 constexpr VkPipelineStageFlags2 kVertexAndFragment =
     VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
 
-// vkCmdUpdateBuffer takes at most 64 KiB a call.
+// vkCmdUpdateBuffer takes at most 64 KiB a call. The plugin sizes the buffer from the frame's
+// points before it builds the graph (plugin_api/plugin.cpp); a frame that does not fit is a bug
+// there, and is refused rather than drawn with triangles missing.
 void upload(VkCommandBuffer cmd, VkBuffer buffer, const std::vector<glm::vec4>& points,
             size_t capacity) {
-    const size_t bytes = std::min(points.size(), capacity) * sizeof(glm::vec4);
+    if (points.size() > capacity)
+        throw std::logic_error("beam-tree triangles: the frame has " +
+                               std::to_string(points.size()) + " points, the buffer holds " +
+                               std::to_string(capacity));
+    const size_t bytes = points.size() * sizeof(glm::vec4);
     constexpr size_t kChunk = 65536;
     for (size_t offset = 0; offset < bytes; offset += kChunk)
         vkCmdUpdateBuffer(cmd, buffer, offset, std::min(kChunk, bytes - offset),

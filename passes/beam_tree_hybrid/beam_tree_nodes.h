@@ -26,7 +26,9 @@ struct BeamTreeSamplingInputs {
 };
 
 struct BeamTreeOptions {
-    uint32_t capacityPoints = 3 * 4096;  // the triangle buffer's size, in points
+    // The triangle buffer's size, in points: at least the frame's (BeamTreeFrame::points). The
+    // plugin starts at 3 * 4096 and doubles it (a graph rebuild) when a frame needs more.
+    uint32_t capacityPoints = 3 * 4096;
     bool reversedZ = false;
 };
 
