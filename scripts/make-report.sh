@@ -3,7 +3,11 @@
 # or the file given), the hard-case suite, the memory budget, then the plots and the page.
 #   scripts/make-report.sh                 # lavapipe-sized configuration (about 15 minutes on 2 cores,
 #                                          # and about 20 more for bench/slices.json at 1920x1080;
-#                                          # LS_REPORT_SLICES=0 skips it)
+#                                          # LS_REPORT_SLICES=0 skips it; bench/occluders.json, the beam
+#                                          # tree against 1 to 1000 boxes at 1920x1080, is about 10 more:
+#                                          # LS_REPORT_OCCLUDERS=0 skips it)
+#   scripts/make-report.sh --occluders-only  # that benchmark alone, its plot, and its section spliced
+#                                          # into the existing docs/performance.md
 #   scripts/make-report.sh bench/full.json # the GPU machine's configuration
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -12,6 +16,16 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > /dev/null
 cmake --build build -j"$(nproc)" --target lightscatter > /dev/null
 out=docs/performance
 mkdir -p "$out"
+occluders() {
+  ./build/host_example/lightscatter bench --config bench/occluders.json --out build/bench-occluders
+  /usr/bin/python3 scripts/plot_occluders.py build/bench-occluders "$out"
+}
+if [[ "$config" == --occluders-only ]]; then
+  occluders
+  /usr/bin/python3 scripts/write_report.py --occluders-section build/bench-occluders docs/performance.md
+  echo "docs/performance.md: section 'Beam tree against scene complexity' replaced"
+  exit 0
+fi
 ./build/host_example/lightscatter bench --config "$config" --out build/bench-report
 ./build/host_example/lightscatter bench --config bench/hard.json --out build/bench-hard
 if [[ "${LS_REPORT_SLICES:-1}" != 0 ]]; then
@@ -32,5 +46,11 @@ if [[ -f build/bench-slices/bench.json ]]; then
       "$s" "$out/strip_slices_$(basename "$s" | sed 's/^window_room_//')"
   done
 fi
-/usr/bin/python3 scripts/write_report.py build/bench-report build/bench-hard "$config" build/bench-slices > docs/performance.md
+occluders_dir=""
+if [[ "${LS_REPORT_OCCLUDERS:-1}" != 0 ]]; then
+  occluders
+  occluders_dir=build/bench-occluders
+fi
+/usr/bin/python3 scripts/write_report.py build/bench-report build/bench-hard "$config" build/bench-slices \
+  "$occluders_dir" > docs/performance.md
 echo "docs/performance.md regenerated"
