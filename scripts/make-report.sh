@@ -17,7 +17,12 @@ cmake --build build -j"$(nproc)" --target lightscatter > /dev/null
 out=docs/performance
 mkdir -p "$out"
 occluders() {
+  # The load average around the run goes on the page: the tree and lavapipe share the CPU with
+  # whatever else runs.
+  mkdir -p build/bench-occluders
+  uptime > build/bench-occluders/load-before.txt
   ./build/host_example/lightscatter bench --config bench/occluders.json --out build/bench-occluders
+  uptime > build/bench-occluders/load-after.txt
   /usr/bin/python3 scripts/plot_occluders.py build/bench-occluders "$out"
 }
 if [[ "$config" == --occluders-only ]]; then

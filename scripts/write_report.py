@@ -3,6 +3,7 @@
 of the hard-case suite, and `lightscatter budget --json`. Every figure on the page is read from
 those files; nothing is typed in except the seed's published numbers."""
 import json
+import os
 import re
 import sys
 from datetime import date
@@ -52,6 +53,19 @@ def occluders_section(occ_dir):
       f"**{r0['device']}** ({kind}). CPU ms is the tree's build (`FrameReport::cpuWork`: the tree, the lit "
       f"pyramids and the sampling planes' partition), GPU ms the plugin's passes; no error is measured here "
       f"(`measureError: false`: a float64 reference at this size takes too long).\n")
+    loads, worst = [], 0.0
+    for when in ("before", "after"):
+        f = Path(occ_dir) / f"load-{when}.txt"
+        m = re.search(r"load average: ([\d.]+), ([\d.]+), ([\d.]+)", f.read_text()) if f.exists() else None
+        if m:
+            loads.append(f"{m.group(1)} {when} the run" + (" (the run's own threads included)" if when == "after" else ""))
+            if when == "before":
+                worst = float(m.group(1))
+    if loads:
+        cores = os.cpu_count() or 1
+        busy = ("other work shared the CPU, so treat single figures as rough; the trend over the counts is "
+                "what to read" if worst > 0.75 * cores else "the machine was otherwise quiet")
+        p(f"The machine's load average (1 minute) was {' and '.join(loads)}, on {cores} cores: {busy}.\n")
     p("![beam tree against scene complexity](performance/occluders_scaling.png)\n")
     head = "| boxes | occluders given |"
     rule = "|---|---|"
