@@ -81,7 +81,7 @@ def main():
     table = occluder_rows(runs)
     ref, ref_label = reference_ms(table)
     colors = ["tab:blue", "tab:green", "tab:purple", "tab:brown"]
-    fig, ax = plt.subplots(figsize=(7.5, 6.2))
+    fig, ax = plt.subplots(figsize=(8.6, 6.4))
     for color, method in zip(colors, beam_methods(table)):
         rows = table[method]
         n = [r[0] for r in rows]
@@ -91,6 +91,11 @@ def main():
         ax.plot(n, gpu, color=color, marker="o", linestyle="--", label=f"{method}: GPU")
         ax.plot(n, [c + g for c, g in zip(cpu, gpu)], color=color, marker="D", linestyle="-", linewidth=2,
                 label=f"{method}: CPU + GPU")
+        if ref is not None:
+            n_cross, how = crossover(rows, ref)
+            if how == "interpolated":
+                ax.axvline(n_cross, color=color, linestyle=(0, (1, 4)), linewidth=1.2,
+                           label=f"{method}: crossover with {ref_label}, ~{n_cross:.0f} boxes (interpolated)")
     if ref is not None:
         ax.axhline(ref, color="tab:red", linestyle="-.", label=f"{ref_label}: GPU ({ref:.0f} ms, reference)")
     ax.set_xscale("log")
