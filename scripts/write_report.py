@@ -121,9 +121,11 @@ def occluders_section(occ_dir):
               f"{fmt(top['median'])} of {fmt(last['time']['median'])} ms"
               + (f" ({fmt(top_first['median'])} ms at {po.boxes(first)} "
                  f"{'box' if po.boxes(first) == 1 else 'boxes'})" if top_first else "")
-              + ". More boxes give more pyramids, and each of their faces is rasterised over the screen area "
-              "it covers, so this pass grows with the pyramids' overlapping screen area, not with the pixel "
-              "count alone.\n")
+              + (". More boxes give more pyramids, and each of their faces is rasterised over the screen area "
+                 "it covers, so this pass grows with the pyramids' overlapping screen area, not with the pixel "
+                 "count alone." if "pyramid" in top["name"] else
+                 ". More boxes cut the sampling planes into more parts, each drawn over the screen area it "
+                 "covers." if "plane" in top["name"] else ".") + "\n")
     if ref is not None and r0["cpuDevice"]:
         text = ("On lavapipe both columns are CPU time, so the crossover above compares like with like only on "
                 "this machine. On a GPU the passes take a small fraction of these milliseconds while the tree's "
