@@ -95,7 +95,7 @@ def main():
             n_cross, how = crossover(rows, ref)
             if how == "interpolated":
                 ax.axvline(n_cross, color=color, linestyle=(0, (1, 4)), linewidth=1.2,
-                           label=f"{method}: crossover with {ref_label}, ~{n_cross:.0f} boxes (interpolated)")
+                           label=f"{method}: crossover, ~{n_cross:.0f} boxes (interpolated)")
     if ref is not None:
         ax.axhline(ref, color="tab:red", linestyle="-.", label=f"{ref_label}: GPU ({ref:.0f} ms, reference)")
     ax.set_xscale("log")
@@ -111,7 +111,7 @@ def main():
     ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=2, fontsize=8, frameon=False)
     fig.tight_layout()
     path = out / "occluders_scaling.png"
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=110, bbox_inches="tight")  # the legend below the axes is kept whole
     print(path)
 
 
