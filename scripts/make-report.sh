@@ -5,7 +5,8 @@
 #                                          # and about 20 more for bench/slices.json at 1920x1080;
 #                                          # LS_REPORT_SLICES=0 skips it; bench/occluders.json, the beam
 #                                          # tree against 1 to 1000 boxes at 1920x1080, is about 10 more:
-#                                          # LS_REPORT_OCCLUDERS=0 skips it)
+#                                          # LS_REPORT_OCCLUDERS=0 skips it; both then reuse
+#                                          # an earlier run's results where build/ has them)
 #   scripts/make-report.sh --occluders-only  # that benchmark alone, its plot, and its section spliced
 #                                          # into the existing docs/performance.md
 #   scripts/make-report.sh bench/full.json # the GPU machine's configuration
@@ -55,6 +56,8 @@ occluders_dir=""
 if [[ "${LS_REPORT_OCCLUDERS:-1}" != 0 ]]; then
   occluders
   occluders_dir=build/bench-occluders
+elif [[ -f build/bench-occluders/bench.json ]]; then
+  occluders_dir=build/bench-occluders  # an earlier run's, as for the slices benchmark
 fi
 /usr/bin/python3 scripts/write_report.py build/bench-report build/bench-hard "$config" build/bench-slices \
   "$occluders_dir" > docs/performance.md
