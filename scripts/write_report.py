@@ -349,20 +349,36 @@ def main():
       "profile. `test_hard_suite` asserts finite pixels and the bound below for each (mean relative error); thin "
       "media must stay within 1% of float64. A point light is unshadowed in the plugin but shadowed in the "
       "reference, so its cases count the missing shadows as error.\n")
-    slice_bounds = {n: float(v) for n, v in re.findall(r'\{"(\w+)", ([\d.]+)\}', test.split("kSlicesBounds")[1].split("kSlicesDefault")[0])}
-    slice_default = float(re.search(r"kSlicesDefault = ([\d.]+)", test).group(1))
-    p("| case | epipolar error | bound | brute-force error | bound | slices error | bound | non-finite |")
-    p("|---|---|---|---|---|---|---|---|")
+    def named_bounds(start, end):
+        block = test.split(start)[1].split(end)[0]
+        return ({n: float(v) for n, v in re.findall(r'\{"(\w+)", ([\d.]+)\}', block)},
+                float(re.search(end + r" = ([\d.]+)", test).group(1)))
+    # The methods beside epipolar and brute force, each with its bounds in the test.
+    others = [("slices", *named_bounds("kSlicesBounds", "kSlicesDefault")),
+              ("beam-tree-analytic", *named_bounds("kBeamTreeBounds", "kBeamTreeDefault")),
+              ("beam-tree-sampling", *named_bounds("kBeamTreeSamplingBounds", "kBeamTreeSamplingDefault"))]
+    header = "| case | epipolar error | bound | brute-force error | bound |"
+    for name, _, _ in others:
+        header += f" {name} error | bound |"
+    p(header + " non-finite |")
+    p("|---" * (5 + 2 * len(others) + 1) + "|")
     for scene in sorted({r["scene"] for r in hard}):
         epi = next(r for r in hard if r["scene"] == scene and r["method"] == "epipolar")
         bf = next(r for r in hard if r["scene"] == scene and r["method"] == "brute-force")
-        sl = next((r for r in hard if r["scene"] == scene and r["method"] == "slices"), None)
         b = bounds.get(scene, default)
-        nonfinite = epi['nonFinite'] + bf['nonFinite'] + (sl['nonFinite'] if sl else 0)
-        p(f"| {scene.replace('_', ' ')} | {fmt(epi['error']['meanRelative'])} | {b[0]} | "
-          f"{fmt(bf['error']['meanRelative'])} | {b[1]} | {fmt(sl['error']['meanRelative']) if sl else '-'} | "
-          f"{slice_bounds.get(scene, slice_default)} | {nonfinite} |")
-    p("")
+        nonfinite = epi['nonFinite'] + bf['nonFinite']
+        line = (f"| {scene.replace('_', ' ')} | {fmt(epi['error']['meanRelative'])} | {b[0]} | "
+                f"{fmt(bf['error']['meanRelative'])} | {b[1]} |")
+        for name, table, fallback in others:
+            r = next((r for r in hard if r["scene"] == scene and r["method"] == name), None)
+            if r:
+                nonfinite += r['nonFinite']
+                line += f" {fmt(r['error']['meanRelative'])} | {table.get(scene, fallback)} |"
+            else:
+                line += " - | - |"  # not run: the beam tree needs a point or spot light
+        p(line + f" {nonfinite} |")
+    p("\nThe beam-tree methods run on the point and spot cases only (\"-\": a directional light). The host "
+      "gives them one box per connected part of the scene's glTF primitives.\n")
 
     p("## Which profile for which budget\n")
     for scene in scenes:
