@@ -162,40 +162,32 @@ TEST(Budget, SlicesListsItsTargetPerProfile) {
     }
 }
 
-// Seed 004's hybrid: a float32 Lin, the triangle buffer and the point-light table; directional
-// lights have no beam tree.
-TEST(Budget, BeamTreeAnalyticListsItsBufferAndTarget) {
-    const auto b = lightscatter::budget(Profile::Balanced, 1920, 1080, 2048, lightscatter::LightType::Spot, nullptr,
-                                        lightscatter::Method::BeamTreeAnalytic);
-    std::set<std::string> seen;
-    for (const auto& e : b.entries) seen.insert(e.name + " " + e.format);
-    std::string all;
-    for (const auto& s : seen) all += s + "; ";
-    std::printf("beam-tree-analytic balanced: peak %.1f MiB: %s\n", static_cast<double>(b.peakBytes) / 1048576.0,
-                all.c_str());
-    EXPECT_TRUE(seen.count("beam-tree triangles buffer")) << all;
-    EXPECT_TRUE(seen.count("in-scattering (lit pyramids and uncertain planes) R32G32B32A32_SFLOAT")) << all;
-    EXPECT_TRUE(seen.count("point-light table R32G32B32A32_SFLOAT")) << all;
-    EXPECT_THROW((void)lightscatter::budget(Profile::Balanced, 1920, 1080, 2048, lightscatter::LightType::Directional,
-                                            nullptr, lightscatter::Method::BeamTreeAnalytic),
-                 lightscatter::InvalidInput);
-}
-
-// Seed 004's sampling with clipping: the planes' float32 target and the triangle buffer, no table
-// (nothing is integrated in closed form).
-TEST(Budget, BeamTreeSamplingListsItsBufferAndTargetButNoTable) {
-    const auto b = lightscatter::budget(Profile::Balanced, 1920, 1080, 2048, lightscatter::LightType::Spot, nullptr,
-                                        lightscatter::Method::BeamTreeSampling);
-    std::set<std::string> seen;
-    for (const auto& e : b.entries) seen.insert(e.name + " " + e.format);
-    std::string all;
-    for (const auto& s : seen) all += s + "; ";
-    std::printf("beam-tree-sampling balanced: peak %.1f MiB: %s\n", static_cast<double>(b.peakBytes) / 1048576.0,
-                all.c_str());
-    EXPECT_TRUE(seen.count("beam-tree triangles buffer")) << all;
-    EXPECT_TRUE(seen.count("in-scattering (lit and uncertain planes) R32G32B32A32_SFLOAT")) << all;
-    EXPECT_FALSE(seen.count("point-light table R32G32B32A32_SFLOAT")) << all;
-    EXPECT_THROW((void)lightscatter::budget(Profile::Balanced, 1920, 1080, 2048, lightscatter::LightType::Directional,
-                                            nullptr, lightscatter::Method::BeamTreeSampling),
-                 lightscatter::InvalidInput);
+// Seed 004's methods: a float32 Lin and the triangle buffer; the point-light table only for the
+// hybrid's closed form; directional lights have no beam tree.
+TEST(Budget, BeamTreeMethodsListTheirBufferAndTarget) {
+    struct Row {
+        lightscatter::Method method;
+        const char* target;
+        bool table;
+    };
+    for (const Row& row :
+         {Row{lightscatter::Method::BeamTreeAnalytic, "in-scattering (lit pyramids and uncertain planes)", true},
+          Row{lightscatter::Method::BeamTreeSampling, "in-scattering (lit and uncertain planes)", false}}) {
+        const char* name = lightscatter::methodName(row.method);
+        const auto b = lightscatter::budget(Profile::Balanced, 1920, 1080, 2048, lightscatter::LightType::Spot,
+                                            nullptr, row.method);
+        std::set<std::string> seen;
+        for (const auto& e : b.entries) seen.insert(e.name + " " + e.format);
+        std::string all;
+        for (const auto& s : seen) all += s + "; ";
+        std::printf("%s balanced: peak %.1f MiB: %s\n", name, static_cast<double>(b.peakBytes) / 1048576.0,
+                    all.c_str());
+        EXPECT_TRUE(seen.count("beam-tree triangles buffer")) << name << ": " << all;
+        EXPECT_TRUE(seen.count(std::string(row.target) + " R32G32B32A32_SFLOAT")) << name << ": " << all;
+        EXPECT_EQ(seen.count("point-light table R32G32B32A32_SFLOAT") == 1, row.table) << name << ": " << all;
+        EXPECT_THROW((void)lightscatter::budget(Profile::Balanced, 1920, 1080, 2048,
+                                                lightscatter::LightType::Directional, nullptr, row.method),
+                     lightscatter::InvalidInput)
+            << name;
+    }
 }

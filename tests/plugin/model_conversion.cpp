@@ -35,21 +35,11 @@ ls::ref::Light refLight(const lightscatter::Light& l) {
     return r;
 }
 
-std::vector<float> float64Unshadowed(const TestFrame& frame) {
-    const FrameSpec& s = frame.spec();
-    const auto medium = refMedium(s.medium);
-    const auto light = refLight(frame.light());
-    std::vector<float> want;
-    for (uint32_t y = 0; y < s.screen.height; ++y)
-        for (uint32_t x = 0; x < s.screen.width; ++x) {
-            const PixelRay r = pixelRay(s.scene, s.view, s.screen.width, s.screen.height, x, y, s.medium.maxDistance);
-            const glm::dvec3 v = ls::ref::integrateInscatter(medium, light, {r.origin, r.dir, r.S}).value;
-            want.insert(want.end(), {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z), 0.0f});
-        }
-    return want;
-}
+namespace {
 
-std::vector<float> float64Simplified(const TestFrame& frame, double a0, double a1) {
+// `lin(medium, light, ray)` for every pixel's ray, as RGBA with alpha 0.
+template <typename Lin>
+std::vector<float> perPixel(const TestFrame& frame, Lin lin) {
     const FrameSpec& s = frame.spec();
     const auto medium = refMedium(s.medium);
     const auto light = refLight(frame.light());
@@ -58,12 +48,25 @@ std::vector<float> float64Simplified(const TestFrame& frame, double a0, double a
         for (uint32_t x = 0; x < s.screen.width; ++x) {
             const PixelRay r = pixelRay(s.scene, s.view, s.screen.width, s.screen.height, x, y,
                                         s.medium.maxDistance);
-            const glm::dvec3 v =
-                ls::ref::simplifiedClosedForm(medium, light, {r.origin, r.dir, r.S}, a0, a1);
+            const glm::dvec3 v = lin(medium, light, ls::ref::Ray{r.origin, r.dir, r.S});
             want.insert(want.end(), {static_cast<float>(v.x), static_cast<float>(v.y),
                                      static_cast<float>(v.z), 0.0f});
         }
     return want;
+}
+
+}  // namespace
+
+std::vector<float> float64Unshadowed(const TestFrame& frame) {
+    return perPixel(frame, [](const auto& medium, const auto& light, const ls::ref::Ray& ray) {
+        return ls::ref::integrateInscatter(medium, light, ray).value;
+    });
+}
+
+std::vector<float> float64Simplified(const TestFrame& frame, double a0, double a1) {
+    return perPixel(frame, [a0, a1](const auto& medium, const auto& light, const ls::ref::Ray& ray) {
+        return ls::ref::simplifiedClosedForm(medium, light, ray, a0, a1);
+    });
 }
 
 }  // namespace plugin_test
