@@ -156,4 +156,22 @@ glm::mat4 shadowViewProjection(const LightDesc& light, const Bounds& scene, cons
     return p * view;
 }
 
+std::array<glm::mat4, 6> cubeFaceViewProjections(const LightDesc& light, const Bounds& scene) {
+    float farthest = 1.0f;
+    if (!scene.empty())
+        for (int c = 0; c < 8; ++c) {
+            const glm::vec3 corner((c & 1) ? scene.max.x : scene.min.x, (c & 2) ? scene.max.y : scene.min.y,
+                                   (c & 4) ? scene.max.z : scene.min.z);
+            farthest = std::max(farthest, glm::length(corner - light.position));
+        }
+    const float nearP = 0.02f, farP = 1.05f * farthest + 1.0f;
+    const glm::mat4 projection = glm::perspectiveRH_ZO(glm::radians(90.0f), 1.0f, nearP, farP);
+    static const glm::vec3 kAxes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    static const glm::vec3 kUps[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
+    std::array<glm::mat4, 6> faces;
+    for (size_t i = 0; i < 6; ++i)
+        faces[i] = projection * glm::lookAtRH(light.position, light.position + kAxes[i], kUps[i]);
+    return faces;
+}
+
 }  // namespace host

@@ -1,6 +1,7 @@
 #pragma once
 // Vulkan-convention projections (clip y down, depth in [0, 1]) in the four depth conventions the
 // plugin accepts, and the light's shadow projection for a scene.
+#include <array>
 #include <glm/glm.hpp>
 #include <vector>
 
@@ -22,5 +23,11 @@ glm::mat4 cameraProjection(const CameraDesc& camera, float aspect);
 // over kilometres.
 glm::mat4 shadowViewProjection(const LightDesc& light, const Bounds& scene, const std::vector<Bounds>& parts,
                                const CameraDesc& camera, float aspect);
+
+// A point light's cube shadow map: world -> clip of each face in Vulkan's layer order +X, -X, +Y,
+// -Y, +Z, -Z, oriented as Vulkan samples a cube (lightscatter.h, Light::cubeFaceViewProjections):
+// 90-degree GL-style perspectives (clip y up, depth [0, 1] increasing away from the light) with
+// the classic cube cameras' up vectors. The far plane reaches the scene's farthest corner.
+std::array<glm::mat4, 6> cubeFaceViewProjections(const LightDesc& light, const Bounds& scene);
 
 }  // namespace host

@@ -32,11 +32,11 @@ struct DrawPush {
     glm::vec4 baseColor;
 };
 
-rg::GraphicsPipelineDesc meshPipeline(rg::ShaderCode fragment, const rg::PassContext& ctx) {
+rg::GraphicsPipelineDesc meshPipeline(rg::ShaderCode fragment, const rg::RenderingFormats& formats) {
     rg::GraphicsPipelineDesc d;
     d.vertex = rg::spirv(ls_spirv::mesh_vert);
     d.fragment = fragment;
-    d.formats = ctx.renderingFormats();
+    d.formats = formats;
     d.pushConstantBytes = sizeof(DrawPush);
     d.vertexBindings = {{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX}};
     d.vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
@@ -52,7 +52,7 @@ rg::GraphicsPipelineDesc meshPipeline(rg::ShaderCode fragment, const rg::PassCon
 struct EngineRenderer::Pipelines {
     explicit Pipelines(const rg::Device& d) : samplers(d) {}
     rg::Samplers samplers;
-    rg::Pipeline shadow, forward;
+    rg::Pipeline shadow, forward, cubeShadow;
     Lighting lighting{};
     glm::mat4 viewProj{1.0f};
 };
@@ -104,6 +104,7 @@ EngineRenderer::~EngineRenderer() {
     graph_.reset();
     pipelines_.reset();
     plugin_.reset();
+    destroyCubeViews();
     vkDestroyFence(device_.device(), fence_, nullptr);
     vkDestroyCommandPool(device_.device(), pool_, nullptr);
 }
@@ -126,6 +127,25 @@ void EngineRenderer::createTargets() {
     linReadback_ = std::make_unique<rg::HostBuffer>(device_, pixels * 16, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                                     "in-scattering readback");
     shadowMap_.reset();
+    destroyCubeViews();
+    cubeShadow_.reset();
+    if (sm > 0 && scene_.light.type == LightKind::Point) {
+        cubeShadow_ = std::make_unique<GpuImage>(
+            device_, VK_FORMAT_D32_SFLOAT, VkExtent2D{sm, sm},
+            VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, "host cube shadow map", 6,
+            VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT);
+        static const char* kFaces[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
+        for (uint32_t i = 0; i < 6; ++i) {
+            VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+            info.image = cubeShadow_->image();
+            info.viewType = VK_IMAGE_VIEW_TYPE_2D;
+            info.format = VK_FORMAT_D32_SFLOAT;
+            info.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, i, 1};
+            RG_VK(vkCreateImageView(device_.device(), &info, nullptr, &cubeFaceViews_[i]));
+            device_.setName(cubeFaceViews_[i], VK_OBJECT_TYPE_IMAGE_VIEW,
+                            std::string("host cube shadow map face ") + kFaces[i]);
+        }
+    }
     if (sm > 0 && scene_.light.type != LightKind::Point)
         shadowMap_ = std::make_unique<GpuImage>(device_, VK_FORMAT_D32_SFLOAT, VkExtent2D{sm, sm},
                                                 VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
@@ -145,6 +165,74 @@ void EngineRenderer::createTargets() {
         dep.pImageMemoryBarriers = &b;
         vkCmdPipelineBarrier2(cmd, &dep);
     });
+}
+
+void EngineRenderer::destroyCubeViews() {
+    for (VkImageView& v : cubeFaceViews_) {
+        if (v) vkDestroyImageView(device_.device(), v, nullptr);
+        v = VK_NULL_HANDLE;
+    }
+}
+
+void EngineRenderer::recordCubeShadow(VkCommandBuffer cmd) {
+    if (!pipelines_->cubeShadow) {
+        rg::RenderingFormats formats;
+        formats.depth = VK_FORMAT_D32_SFLOAT;
+        auto d = meshPipeline(rg::spirv(ls_spirv::shadow_frag), formats);
+        d.depthBias = true;
+        d.cullMode = VK_CULL_MODE_NONE;
+        pipelines_->cubeShadow = rg::Pipeline::graphics(device_, "host cube shadow map", d);
+    }
+    device_.beginLabel(cmd, "host cube shadow map");
+    // The previous frame's plugin read the faces last (its final barrier made that visible to the
+    // fragment tests); they are redrawn from scratch.
+    VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+    b.srcStageMask = VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
+    b.srcAccessMask = VK_ACCESS_2_NONE;
+    b.dstStageMask = VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
+    b.dstAccessMask = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+    b.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    b.newLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.image = cubeShadow_->image();
+    b.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 6};
+    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dep.imageMemoryBarrierCount = 1;
+    dep.pImageMemoryBarriers = &b;
+    vkCmdPipelineBarrier2(cmd, &dep);
+
+    const std::array<glm::mat4, 6> faces = cubeFaceViewProjections(scene_.light, bounds_);
+    const VkExtent2D extent = cubeShadow_->extent();
+    const VkDeviceSize zero = 0;
+    const VkBuffer vertices = mesh_->vertices();
+    for (size_t i = 0; i < 6; ++i) {
+        VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+        depth.imageView = cubeFaceViews_[i];
+        depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+        depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+        depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        depth.clearValue.depthStencil = {1.0f, 0};
+        VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
+        info.renderArea = {{0, 0}, extent};
+        info.layerCount = 1;
+        info.pDepthAttachment = &depth;
+        vkCmdBeginRendering(cmd, &info);
+        const VkViewport viewport{0.0f, 0.0f, static_cast<float>(extent.width), static_cast<float>(extent.height),
+                                  0.0f, 1.0f};
+        const VkRect2D scissor{{0, 0}, extent};
+        vkCmdSetViewport(cmd, 0, 1, &viewport);
+        vkCmdSetScissor(cmd, 0, 1, &scissor);
+        pipelines_->cubeShadow.bind(cmd);
+        vkCmdSetDepthBias(cmd, 1.0f, 0.0f, 1.5f);
+        vkCmdBindVertexBuffers(cmd, 0, 1, &vertices, &zero);
+        vkCmdBindIndexBuffer(cmd, mesh_->indices(), 0, VK_INDEX_TYPE_UINT32);
+        for (const auto& d : mesh_->draws()) {
+            pipelines_->cubeShadow.push(cmd, DrawPush{faces[i], d.baseColor});
+            vkCmdDrawIndexed(cmd, d.indexCount, 1, d.firstIndex, 0, 0);
+        }
+        vkCmdEndRendering(cmd);
+    }
+    device_.endLabel(cmd);
 }
 
 void EngineRenderer::buildGraph() {
@@ -200,7 +288,7 @@ void EngineRenderer::buildGraph() {
         shadowRef_ = pass.depthWrite(shadowRef_, rg::LoadOp::Clear, 1.0f);
         pass.execute([pipes, drawAll](rg::PassContext& ctx) {
             if (!pipes->shadow) {
-                auto d = meshPipeline(rg::spirv(ls_spirv::shadow_frag), ctx);
+                auto d = meshPipeline(rg::spirv(ls_spirv::shadow_frag), ctx.renderingFormats());
                 d.depthBias = true;
                 d.cullMode = VK_CULL_MODE_NONE;
                 pipes->shadow = rg::Pipeline::graphics(ctx.device(), "host shadow map", d);
@@ -226,7 +314,7 @@ void EngineRenderer::buildGraph() {
             if (!pipes->forward) {
                 auto d = meshPipeline(shadowed ? rg::spirv(ls_spirv::mesh_shadowed_frag)
                                                : rg::spirv(ls_spirv::mesh_unshadowed_frag),
-                                      ctx);
+                                      ctx.renderingFormats());
                 d.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
                               {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT}};
                 if (shadowed)
@@ -281,10 +369,25 @@ lightscatter::FrameDescription EngineRenderer::describe(const RenderOptions& opt
     f.inscatterOut->finalStages = finalStages;
     f.inscatterOut->finalAccess = finalAccess;
     if (shadowMap_) f.shadowMap = input(*shadowMap_, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    if (cubeShadow_) {
+        // Left by the six face passes; left for the next frame's, which redraw it.
+        f.shadowMap = input(*cubeShadow_, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
+        f.shadowMap->arrayLayers = 6;
+        f.shadowMap->stages = VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
+        f.shadowMap->access = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+        f.shadowMap->finalStages =
+            VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
+        f.shadowMap->finalAccess = VK_ACCESS_2_NONE;
+    }
     const float aspect = static_cast<float>(size_.width) / static_cast<float>(size_.height);
     f.camera = toPluginCamera(scene_.camera, cameraView(scene_.camera), cameraProjection(scene_.camera, aspect));
     f.light = toPluginLight(scene_.light, shadowMap_ ? shadowViewProjection(scene_.light, bounds_, partBounds_, scene_.camera, aspect) : glm::mat4(1.0f),
                             shadowMap_ != nullptr);
+    if (cubeShadow_) {
+        f.light = toPluginLight(scene_.light, glm::mat4(1.0f), true);
+        const std::array<glm::mat4, 6> faces = cubeFaceViewProjections(scene_.light, bounds_);
+        for (size_t i = 0; i < 6; ++i) f.light.cubeFaceViewProjections[i] = toPluginMatrix(faces[i]);
+    }
     f.medium = toPluginMedium(scene_.medium);
     f.method = options.method;
     f.profile = options.profile;
@@ -311,6 +414,7 @@ void EngineRenderer::record(VkCommandBuffer cmd, const RenderOptions& options,
     l.betaT = glm::vec4(scene_.medium.betaR + scene_.medium.betaM + scene_.medium.sigmaA, light.radius);
     l.ambient = glm::vec4(scene_.ambient, 0.0f);
     l.shadowInfo = glm::vec4(static_cast<float>(light.shadowMapSize), 0.0f, 0.0f, 0.0f);
+    if (cubeShadow_) recordCubeShadow(cmd);
     executor_->record(cmd);
     try {
         plugin_->record(cmd, frame);

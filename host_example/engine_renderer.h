@@ -2,6 +2,7 @@
 // The host example's engine: a shadow-map pass and forward shading of a glTF scene (its own render
 // graph), then the plugin's light scattering composited into the HDR color, in one command buffer.
 // What an engine of any size does to integrate the plugin, at a small scale.
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -59,7 +60,11 @@ private:
     std::vector<lightscatter::Occluder> occluders_;
     struct Pipelines;
     void createTargets();
+    void destroyCubeViews();
     void buildGraph();
+    // A point light's cube shadow map: six depth passes, one per face (layer), recorded before the
+    // engine's graph; the plugin reads all six layers.
+    void recordCubeShadow(VkCommandBuffer cmd);
     lightscatter::FrameDescription describe(const RenderOptions& options, VkPipelineStageFlags2 finalStages,
                                             VkAccessFlags2 finalAccess) const;
 
@@ -70,6 +75,8 @@ private:
     VkExtent2D size_;
     std::unique_ptr<GpuMesh> mesh_;
     std::unique_ptr<GpuImage> depth_, color_, shadowMap_, inscatter_;
+    std::unique_ptr<GpuImage> cubeShadow_;        // point light with shadowMapSize > 0: 6 layers
+    std::array<VkImageView, 6> cubeFaceViews_{};  // one depth view per layer, the faces' targets
     std::unique_ptr<rg::HostBuffer> colorReadback_, linReadback_;  // sized with the targets
     std::unique_ptr<lightscatter::Plugin> plugin_;
     std::shared_ptr<Pipelines> pipelines_;

@@ -58,6 +58,8 @@ std::string pluginRefusalInSceneTerms(const std::string& message, const std::str
         {"camera.view", "the view made from camera.position, camera.target and camera.up"},
         {"camera.projection",
          "the projection made from camera.fovYDegrees, camera.near and camera.far"},
+        {"light.cubeFaceViewProjections",
+         "the cube shadow map's faces made from light.position and the scene's bounds"},
         {"light.shadowViewProjection",
          "the shadow map's projection made from the light and the scene's bounds"},
         {"light.shadowMapSize / shadowMap", "light.shadowMapSize"},

@@ -35,6 +35,7 @@ rg::ImportedImage importDescription(const ImageInput& in) {
     d.image = in.image;
     d.format = in.format;
     d.extent = in.extent;
+    d.arrayLayers = in.arrayLayers;
     d.usage = in.usage;
     d.initialLayout = in.layout;
     d.initialStages = in.stages;
@@ -63,6 +64,7 @@ rg::ImportedImage importDescription(const ImportState& s) {
     rg::ImportedImage d;
     d.format = s.format;
     d.extent = s.extent;
+    d.arrayLayers = s.arrayLayers;
     d.usage = s.usage;
     d.initialLayout = s.layout;
     d.finalLayout = s.finalLayout;

@@ -20,10 +20,11 @@ struct ImportState {
     VkImageUsageFlags usage = 0;
     VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
     VkImageLayout finalLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    uint32_t arrayLayers = 1;
     bool operator==(const ImportState& o) const {
         return format == o.format && extent.width == o.extent.width &&
                extent.height == o.extent.height && usage == o.usage && layout == o.layout &&
-               finalLayout == o.finalLayout;
+               finalLayout == o.finalLayout && arrayLayers == o.arrayLayers;
     }
 };
 

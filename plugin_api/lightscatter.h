@@ -192,9 +192,28 @@ struct Light {
     float range = 1e30f;          // spot: no light beyond it
     float radius = 0.05f;         // r0 of docs/model.md, > 0
     // The shadow map's projection (world -> light clip, Vulkan conventions) and size. Required with
-    // a shadow map (a singular matrix, such as the all-zero default, is refused); for a spot its
-    // frustum must contain the cone.
+    // a directional or spot light's shadow map (a singular matrix, such as the all-zero default, is
+    // refused); for a spot its frustum must contain the cone. Ignored for a point light.
     Mat4 shadowViewProjection{};
+    // A point light's cube shadow map (FrameDescription::shadowMap with 6 array layers, each
+    // shadowMapSize x shadowMapSize): the world -> clip matrix of each face, in Vulkan's cube
+    // layer order +X, -X, +Y, -Y, +Z, -Z (index = layer). Each face is a 90-degree square frustum
+    // with its apex at `position`, looking along its world axis, oriented as Vulkan samples a cube
+    // (the specification's "Cube Map Face Selection" table): a direction d from the light whose
+    // major axis is the face's lands at clip x/w = sc / |ma|, y/w = tc / |ma| with
+    //     +X: sc = -d.z, tc = -d.y     -X: sc = +d.z, tc = -d.y
+    //     +Y: sc = +d.x, tc = +d.z     -Y: sc = +d.x, tc = -d.z
+    //     +Z: sc = +d.x, tc = -d.y     -Z: sc = -d.x, tc = -d.y
+    // (Vulkan clip y points down the image: row 0 is y/w = -1.) With a GL-style perspective (clip y
+    // up, depth [0, 1], not flipped for Vulkan) that is lookAt(position, position + axis, up) with
+    // up -Y for the X and Z faces, +Z for +Y and -Z for -Y: the classic cube-map cameras. Depth is
+    // z/w in [0, 1] increasing away from the light, or decreasing with shadowReversedZ, as for a
+    // spot's map; near and far planes are the engine's. Every face is checked (to 1e-3 in clip
+    // x/w, y/w): a singular matrix, a frustum that is not centred on its axis at the light, a
+    // field of view other than 90 degrees, a mirrored face or depth against shadowReversedZ is
+    // refused naming light.cubeFaceViewProjections[i]. Only brute-force samples a cube shadow
+    // map; the other methods refuse it.
+    std::array<Mat4, 6> cubeFaceViewProjections{};
     uint32_t shadowMapSize = 0;   // 0: no shadow map
     bool shadowReversedZ = false;
 };
@@ -209,8 +228,8 @@ struct Medium {
 };
 
 // An engine image handed to the plugin for one frame: where it stands and where it must be left.
-// The plugin uses mip level 0 and array layer 0; it never keeps the image beyond the frame's
-// commands, and never names it (the engine's debug name stays).
+// The plugin uses mip level 0 and array layers 0 to arrayLayers - 1; it never keeps the image
+// beyond the frame's commands, and never names it (the engine's debug name stays).
 //
 // Within record(), the plugin's first command on the image is a barrier from (stages, access,
 // layout) to its own use, and its last a barrier from its own use to (finalStages, finalAccess,
@@ -227,6 +246,10 @@ struct Medium {
 //                 (for example LATE_FRAGMENT_TESTS + DEPTH_STENCIL_ATTACHMENT_WRITE after a depth
 //                 pass). The plugin's first barrier waits for them. The defaults wait for
 //                 everything.
+//   arrayLayers   the layers the plugin reads and transitions (0 to arrayLayers - 1), all in
+//                 `layout` at the start and left in `finalLayout`: 1 for every image but a point
+//                 light's shadow map, which has 6 (its cube faces, Light::cubeFaceViewProjections;
+//                 an image created cube-compatible or a plain 2D array, sampled as a 2D array).
 //   finalLayout   the layout the plugin leaves the image in (required; not
 //   UNDEFINED/PREINITIALIZED). finalStages/finalAccess  the engine's next use after the plugin: the
 //   plugin's last barrier makes
@@ -248,6 +271,7 @@ struct ImageInput {
     VkPipelineStageFlags2 finalStages =
         VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;  // the engine's next use
     VkAccessFlags2 finalAccess = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT;
+    uint32_t arrayLayers = 1;  // 6 for a point light's cube shadow map, else 1
 };
 
 // Seed 004's occluders: bounding volumes of the scene's objects, in world space (metres), from which
@@ -281,7 +305,7 @@ struct DebugOptions {
 struct FrameDescription {
     ImageInput depth;       // D16/D24/D32 (sampled); the camera's depth
     ImageInput color;       // linear HDR color (storage, R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT)
-    std::optional<ImageInput> shadowMap;   // the light's depth (sampled)
+    std::optional<ImageInput> shadowMap;   // the light's depth (sampled); 6 layers for a point light
     std::optional<ImageInput> lightColor;  // optional light-space color (stained glass), sampled
     std::optional<ImageInput> inscatterOut;  // optional: Lin alone, R32G32B32A32_SFLOAT storage
     // Optional tiling noise for Settings::noiseAmplitude (sampled, repeating; red and green are two

@@ -60,6 +60,16 @@ void refuseSimplified(const FrameSetup& s, Method m) {
             "auto, or lightModel full)");
 }
 
+bool cubeShadow(const FrameSetup& s) { return s.shadowed && s.light.kind == ls::LightKind::Point; }
+
+// A point light's cube shadow map: only brute force samples its six faces so far.
+void refuseCube(const FrameSetup& s, Method m) {
+    if (cubeShadow(s))
+        refuse("method " + std::string(methodName(m)) +
+               " cannot sample a point light's cube shadow map (light.shadowMapSize > 0 with a point "
+               "light): use brute-force or auto (epipolar's per-face chains are not built yet)");
+}
+
 std::string noOccludersNotice(Method m) {
     return std::string(methodName(m)) +
            " has no occluders (FrameDescription::occluders): it treats the whole light volume as lit, so " +
@@ -73,6 +83,7 @@ MethodChoice chooseMethod(Method requested, const FrameSetup& s, bool lightReach
     const bool skipShadows = !s.settings.shadowSampling && s.shadowed;
     MethodChoice c;
     c.method = requested;
+    if (requested != Method::BruteForce && requested != Method::Auto) refuseCube(s, requested);
     switch (requested) {
         case Method::Analytic:
             if (!pointLike)
@@ -123,6 +134,17 @@ MethodChoice chooseMethod(Method requested, const FrameSetup& s, bool lightReach
     if (!lightReachesView) {
         c.method = Method::Epipolar;
         c.reason = "the light reaches no view ray (or nothing scatters): extinction only";
+    } else if (cubeShadow(s)) {
+        if (s.simplified || s.noise || skipShadows)
+            refuse(std::string("a point light's cube shadow map is sampled by brute-force only, which "
+                               "does not honour ") +
+                   (s.simplified ? "custom.lightModel = simplified"
+                    : s.noise    ? "custom.noiseAmplitude > 0"
+                                 : "custom.shadowSampling = false") +
+                   " (remove the shadow map or that setting)");
+        c.method = Method::BruteForce;
+        c.reason = "shadowed point light (a cube shadow map): brute-force, the only method that samples "
+                   "its six faces";
     } else if (s.simplified) {
         // Seed 004's light model: only its closed forms integrate it.
         if (!pointLike)

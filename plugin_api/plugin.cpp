@@ -34,7 +34,7 @@ bool poisonFromEnvironment() {
 }
 
 ImportState state(const ImageInput& in) {
-    return {in.format, in.extent, in.usage, in.layout, in.finalLayout};
+    return {in.format, in.extent, in.usage, in.layout, in.finalLayout, in.arrayLayers};
 }
 
 // Refuses a context before anything is made from it.
@@ -86,6 +86,7 @@ struct Plugin::Impl {
         spec.lightColor = setup.lightColor;
         spec.bilinearShadow = setup.epipolar.bilinearShadow;
         spec.simplifiedModel = setup.simplified;
+        spec.cubeShadow = setup.shadowed && setup.light.kind == ls::LightKind::Point;
 
         const bool touchesView = detail::lightTouchesView(setup.camera, setup.light, setup.medium);
         const detail::MethodChoice choice = detail::chooseMethod(frame.method, setup, touchesView);

@@ -7,14 +7,16 @@
 namespace rg {
 
 OwnedImage::OwnedImage(const rg::Device& device, VkFormat format, VkExtent2D extent,
-                   VkImageUsageFlags usage, const std::string& name)
-    : device_(device), format_(format), extent_(extent), usage_(usage) {
+                   VkImageUsageFlags usage, const std::string& name, uint32_t layers,
+                   VkImageCreateFlags flags)
+    : device_(device), format_(format), extent_(extent), usage_(usage), layers_(layers) {
     VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.flags = flags;
     info.imageType = VK_IMAGE_TYPE_2D;
     info.format = format;
     info.extent = {extent.width, extent.height, 1};
     info.mipLevels = 1;
-    info.arrayLayers = 1;
+    info.arrayLayers = layers;
     info.samples = VK_SAMPLE_COUNT_1_BIT;
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = usage;

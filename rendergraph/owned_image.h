@@ -11,9 +11,10 @@ namespace rg {
 
 class OwnedImage {
 public:
-    // One mip level, one layer, optimal tiling, device-local memory.
+    // One mip level, `layers` array layers (created with `flags`, e.g. CUBE_COMPATIBLE for six),
+    // optimal tiling, device-local memory.
     OwnedImage(const Device& device, VkFormat format, VkExtent2D extent, VkImageUsageFlags usage,
-               const std::string& name);
+               const std::string& name, uint32_t layers = 1, VkImageCreateFlags flags = 0);
     ~OwnedImage();
     OwnedImage(const OwnedImage&) = delete;
     OwnedImage& operator=(const OwnedImage&) = delete;
@@ -22,12 +23,14 @@ public:
     VkFormat format() const { return format_; }
     VkExtent2D extent() const { return extent_; }
     VkImageUsageFlags usage() const { return usage_; }
+    uint32_t layers() const { return layers_; }
 
 private:
     const Device& device_;
     VkFormat format_;
     VkExtent2D extent_;
     VkImageUsageFlags usage_;
+    uint32_t layers_;
     VkImage image_ = VK_NULL_HANDLE;
     VkDeviceMemory memory_ = VK_NULL_HANDLE;
     VkDeviceSize memoryBytes_ = 0;  // counted by deviceMemoryInUse()

@@ -86,7 +86,8 @@ struct LightDesc {
     float halfAngleDegrees = 30.0f;
     float range = 1e30f;
     float radius = 0.05f;
-    uint32_t shadowMapSize = 2048;           // 0: no shadow map
+    uint32_t shadowMapSize = 2048;           // 0: no shadow map; point lights: 0 unless given (a
+                                             // cube map of six faces this size)
 };
 
 struct MediumDesc {

@@ -317,6 +317,9 @@ class SceneReader {
                                            {"spot", LightKind::Spot},
                                            {"point", LightKind::Point}});
         }
+        // A point light's shadow map is a cube of six faces, which only brute-force samples: it
+        // has one only when the scene asks (shadowMapSize > 0).
+        if (light.type == LightKind::Point) light.shadowMapSize = 0;
         if (const json* x = member(v, "position")) light.position = vec3(*x, "light.position");
         if (const json* x = member(v, "direction")) {
             light.direction = direction(*x, "light.direction");
@@ -380,11 +383,6 @@ MeshData loadSceneMeshes(const SceneDesc& scene) {
         Activity loading("loading " + model.path);
         appendGltf(mesh, model.path, model.transform);
     }
-    // Nothing the scene asks for is dropped without a word.
-    if (scene.light.type == LightKind::Point && scene.light.shadowMapSize > 0)
-        mesh.warnings.push_back(scene.path + ": light.shadowMapSize " + std::to_string(scene.light.shadowMapSize) +
-                                " is ignored: point lights cast no shadows yet (no cube shadow maps), so this "
-                                "light renders unshadowed");
     return mesh;
 }
 

@@ -4,6 +4,7 @@
 #include "pixel_march_directional_color_frag.h"
 #include "pixel_march_directional_frag.h"
 #include "pixel_march_table_color_frag.h"
+#include "pixel_march_table_cube_frag.h"
 #include "pixel_march_table_frag.h"
 
 namespace ls {
@@ -11,6 +12,8 @@ namespace {
 
 rg::ShaderCode pixelMarchShader(const ScatterSpec& spec) {
     const bool table = spec.light != LightKind::Directional;
+    // A point light's cube map (light color is refused with it).
+    if (spec.cubeShadow) return rg::spirv(ls_spirv::pixel_march_table_cube_frag);
     if (table) return spec.lightColor ? rg::spirv(ls_spirv::pixel_march_table_color_frag)
                                       : rg::spirv(ls_spirv::pixel_march_table_frag);
     return spec.lightColor ? rg::spirv(ls_spirv::pixel_march_directional_color_frag)

@@ -54,6 +54,7 @@ FrameConstants makeFrameConstants(const CameraParams& camera, const LightParams&
     f.viewProj = camera.projection * camera.view;
     f.invViewProj = glm::inverse(f.viewProj);
     f.lightViewProj = light.shadowViewProj;
+    for (int i = 0; i < 6; ++i) f.cubeFaceViewProj[i] = light.cubeFaceViewProj[i];
     const glm::mat4 invView = glm::inverse(camera.view);
     f.cameraPos = glm::vec4(glm::vec3(invView[3]), camera.nearPlane);
     f.cameraForward = glm::vec4(-glm::normalize(glm::vec3(invView[2])), camera.farPlane);

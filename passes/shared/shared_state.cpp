@@ -18,7 +18,7 @@ std::string ScatterSpec::key() const {
             : hazyMie    ? "h"
                          : "c") +
            (minMaxTrees ? "T" : "t") + (lightColor ? "C" : "c") + (bilinearShadow ? "B" : "b") +
-           (simplifiedModel ? "+simplified" : "");
+           (simplifiedModel ? "+simplified" : "") + (cubeShadow ? "+cube" : "");
 }
 
 const rg::Pipeline& PipelineLibrary::compute(const std::string& key, rg::ShaderCode code,

@@ -22,6 +22,7 @@ struct ScatterSpec {
     bool lightColor = false;
     bool bilinearShadow = true;
     bool simplifiedModel = false;  // seed 004's light model (Settings::lightModel)
+    bool cubeShadow = false;       // a point light's six-face shadow map (a 2D array of 6 layers)
     rg::Specialization constants() const;
     std::string key() const;
 };

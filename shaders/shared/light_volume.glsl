@@ -80,9 +80,9 @@ void lightInterval(vec3 C, vec3 v, float S, out float t0, out float t1) {
 
 // The part of [t0, t1] inside the shadow map's frustum (-w <= x, y <= w, 0 <= z <= w, w > 0): each
 // bound is linear in t along the ray in clip space.
-void clipToShadowFrustum(vec3 C, vec3 v, inout float t0, inout float t1) {
-    vec4 a = frame.lightViewProj * vec4(C, 1.0);
-    vec4 b = frame.lightViewProj * vec4(v, 0.0);
+void clipToFrustum(mat4 M, vec3 C, vec3 v, inout float t0, inout float t1) {
+    vec4 a = M * vec4(C, 1.0);
+    vec4 b = M * vec4(v, 0.0);
     clipHalfLine(a.w + a.x, b.w + b.x, t0, t1);
     clipHalfLine(a.w - a.x, b.w - b.x, t0, t1);
     clipHalfLine(a.w + a.y, b.w + b.y, t0, t1);
@@ -90,6 +90,24 @@ void clipToShadowFrustum(vec3 C, vec3 v, inout float t0, inout float t1) {
     clipHalfLine(a.z, b.z, t0, t1);
     clipHalfLine(a.w - a.z, b.w - b.z, t0, t1);
     clipHalfLine(a.w - 1e-6 * abs(a.w), b.w, t0, t1);
+}
+
+void clipToShadowFrustum(vec3 C, vec3 v, inout float t0, inout float t1) {
+    clipToFrustum(frame.lightViewProj, C, v, t0, t1);
+}
+
+// The part of [t0, t1] where cube face `face` (+X, -X, +Y, -Y, +Z, -Z) is the major axis of
+// P - L: s D[axis] >= |D[other]| for both other axes, four half-spaces through the light. The six
+// regions tile space without overlap, as Vulkan's cube face selection does.
+void clipToCubeFaceRegion(vec3 C, vec3 v, int face, inout float t0, inout float t1) {
+    vec3 a = C - frame.lightPos.xyz;
+    int axis = face >> 1;
+    float s = (face & 1) == 0 ? 1.0 : -1.0;
+    for (int k = 1; k <= 2; ++k) {
+        int o = (axis + k) % 3;
+        clipHalfLine(s * a[axis] - a[o], s * v[axis] - v[o], t0, t1);
+        clipHalfLine(s * a[axis] + a[o], s * v[axis] + v[o], t0, t1);
+    }
 }
 
 #endif

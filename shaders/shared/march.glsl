@@ -11,9 +11,10 @@
 
 // Adds [f0, f1] (inside the shadow map's frustum) to acc, one step per texel crossed (at most
 // maxSteps when that is not 0), each step's visibility taken at its end.
-void marchFrustumSegment(inout Inscatter acc, vec3 C, vec3 v, float f0, float f1, uint maxSteps) {
-    vec4 X0 = frame.lightViewProj * vec4(C + f0 * v, 1.0);
-    vec4 X1 = frame.lightViewProj * vec4(C + f1 * v, 1.0);
+void marchFrustumSegmentOf(mat4 M, inout Inscatter acc, vec3 C, vec3 v, float f0, float f1,
+                           uint maxSteps) {
+    vec4 X0 = M * vec4(C + f0 * v, 1.0);
+    vec4 X1 = M * vec4(C + f1 * v, 1.0);
     vec2 uv0 = X0.xy / X0.w * 0.5 + 0.5, uv1 = X1.xy / X1.w * 0.5 + 0.5;
     float z0 = toStandardDepth(X0.z / X0.w), z1 = toStandardDepth(X1.z / X1.w);
     float iw0 = 1.0 / X0.w, iw1 = 1.0 / X1.w;
@@ -26,6 +27,10 @@ void marchFrustumSegment(inout Inscatter acc, vec3 C, vec3 v, float f0, float f1
         float d = k == n ? f1 : mix(f0 * iw0, f1 * iw1, a) / mix(iw0, iw1, a);
         advance(acc, d, shadowVisibility(uv, mix(z0, z1, a)) * lightColorAt(uv));
     }
+}
+
+void marchFrustumSegment(inout Inscatter acc, vec3 C, vec3 v, float f0, float f1, uint maxSteps) {
+    marchFrustumSegmentOf(frame.lightViewProj, acc, C, v, f0, f1, maxSteps);
 }
 
 // Lin along C + d v, d in [0, S]; maxSteps 0 means one step per texel.
@@ -43,5 +48,42 @@ vec3 marchRay(vec3 C, vec3 v, float S, uint maxSteps) {
     advance(acc, t1, vec3(1.0));
     return finishInscatter(acc, v);
 }
+
+#if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
+// A point light's cube map: the ray is cut where the major axis of P - L changes (one interval
+// per face, since each face's region is a convex cone), each interval is clipped to its face's
+// frustum and marched through that face's layer, one step per texel; what lies outside every
+// frustum (within a near plane, beyond a far plane) is lit, as outside a spot's map.
+vec3 marchRayCube(vec3 C, vec3 v, float S, uint maxSteps) {
+    float t0, t1;
+    lightInterval(C, v, S, t0, t1);
+    if (!(t0 < t1)) return vec3(0.0);
+    Inscatter acc = beginInscatter(C, v, t0);
+    float lo[6], hi[6];
+    for (int f = 0; f < 6; ++f) {
+        lo[f] = t0;
+        hi[f] = t1;
+        clipToCubeFaceRegion(C, v, f, lo[f], hi[f]);
+        clipToFrustum(frame.cubeFaceViewProj[f], C, v, lo[f], hi[f]);
+    }
+    float done = t0;
+    for (int n = 0; n < 6; ++n) {
+        // The nearest interval not marched yet (at most three are non-empty).
+        int next = -1;
+        for (int f = 0; f < 6; ++f)
+            if (lo[f] < hi[f] && (next < 0 || lo[f] < lo[next])) next = f;
+        if (next < 0) break;
+        float f0 = max(lo[next], done), f1 = hi[next];
+        lo[next] = hi[next];
+        if (!(f0 < f1)) continue;
+        advance(acc, f0, vec3(1.0));
+        shadowFace = next;
+        marchFrustumSegmentOf(frame.cubeFaceViewProj[next], acc, C, v, f0, f1, maxSteps);
+        done = f1;
+    }
+    advance(acc, t1, vec3(1.0));
+    return finishInscatter(acc, v);
+}
+#endif
 
 #endif

@@ -5,7 +5,11 @@
 // with); the epipolar fix-up on the pixels its unwarp could not serve, with an optional step cap.
 #include "camera.glsl"
 layout(binding = 1) uniform sampler2D cameraZ;
+#if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
+layout(binding = 6) uniform sampler2DArray shadowMap;  // a point light's six cube faces
+#else
 layout(binding = 6) uniform sampler2D shadowMap;
+#endif
 #if LS_NEEDS_TABLE
 layout(binding = 7) uniform sampler2D pointTable;
 #endif
@@ -20,5 +24,9 @@ void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec3 v = pixelRayDirection(pixel);
     float S = rayLength(texelFetch(cameraZ, pixel, 0).r, v);
+#if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
+    outInscatter = vec4(marchRayCube(frame.cameraPos.xyz, v, S, pc.maxSteps), 1.0);
+#else
     outInscatter = vec4(marchRay(frame.cameraPos.xyz, v, S, pc.maxSteps), 1.0);
+#endif
 }

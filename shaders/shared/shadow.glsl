@@ -1,16 +1,25 @@
 // Shadow-map visibility in the standard depth convention (reversed maps are flipped on read), with
 // the footprint the min/max trees are built from: the 2x2 texels around the sample, clamped to the
 // map. Outside the map a point counts as lit; ray depths are clamped to [0, 1].
-// Needs `shadowMap` (sampler2D) declared by the including shader.
+// Needs `shadowMap` (sampler2D) declared by the including shader; with LS_CUBE_SHADOW, a point
+// light's cube map as a sampler2DArray of six layers (faces +X, -X, +Y, -Y, +Z, -Z), of which the
+// look-ups read layer `shadowFace`.
 #ifndef LS_SHADOW_GLSL
 #define LS_SHADOW_GLSL
 #include "frame.glsl"
 
 float toStandardDepth(float z) { return frame.shadowInfo.z > 0.5 ? 1.0 - z : z; }
 
+#if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
+int shadowFace = 0;  // the cube face (layer) the look-ups below read
+float shadowFetch(ivec2 p) { return texelFetch(shadowMap, ivec3(p, shadowFace), 0).r; }
+#else
+float shadowFetch(ivec2 p) { return texelFetch(shadowMap, p, 0).r; }
+#endif
+
 float shadowTexel(ivec2 p) {
     int size = int(frame.shadowInfo.x);
-    return toStandardDepth(texelFetch(shadowMap, clamp(p, ivec2(0), ivec2(size - 1)), 0).r);
+    return toStandardDepth(shadowFetch(clamp(p, ivec2(0), ivec2(size - 1))));
 }
 
 bool outsideShadowMap(vec2 uv) { return any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))); }

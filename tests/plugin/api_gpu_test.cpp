@@ -1,7 +1,11 @@
 // The plugin API on the device: bad descriptions are refused before anything is recorded and leave
 // the engine's images as they were; only the nodes a frame needs are built.
 #include <cmath>
+#include <cstring>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
 #include <limits>
+#include <utility>
 
 #include "plugin_fixture.h"
 
@@ -17,6 +21,28 @@ FrameSpec spotFrame() {
     s.light = spotOverGrille();
     s.medium = fog();
     return s;
+}
+
+// A point light's six faces at `p` as lightscatter.h documents them (Vulkan's order and
+// orientation): GL-style 90-degree perspectives with the classic cube cameras' up vectors.
+std::array<lightscatter::Mat4, 6> cubeFaces(const lightscatter::Vec3& p) {
+    const glm::vec3 L(p[0], p[1], p[2]);
+    const glm::mat4 projection = glm::perspectiveRH_ZO(glm::radians(90.0f), 1.0f, 0.05f, 50.0f);
+    const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    const glm::vec3 ups[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
+    std::array<lightscatter::Mat4, 6> faces;
+    for (size_t i = 0; i < 6; ++i) {
+        const glm::mat4 m = projection * glm::lookAtRH(L, L + axes[i], ups[i]);
+        std::memcpy(faces[i].data(), glm::value_ptr(m), sizeof(faces[i]));
+    }
+    return faces;
+}
+
+lightscatter::Mat4 times(const glm::mat4& left, const lightscatter::Mat4& m) {
+    const glm::mat4 r = left * glm::make_mat4(m.data());
+    lightscatter::Mat4 out;
+    std::memcpy(out.data(), glm::value_ptr(r), sizeof(out));
+    return out;
 }
 
 bool hasPass(const std::vector<std::string>& passes, const std::string& fragment) {
@@ -95,8 +121,60 @@ TEST_F(PluginApiGpu, ColorMustBeLinearHdr) {
     expectRefused([](auto& d) { d.color.format = VK_FORMAT_R8G8B8A8_UNORM; }, "color.format");
 }
 
-TEST_F(PluginApiGpu, PointLightsTakeNoShadowMap) {
-    expectRefused([](auto& d) { d.light.type = lightscatter::LightType::Point; }, "point lights are unshadowed");
+// A point light's shadow map is a cube: six layers and six face matrices in Vulkan's order and
+// orientation; each rule broken is refused naming the field (the frame's image has one layer).
+TEST_F(PluginApiGpu, PointLightShadowMapsAreCheckedAsCubes) {
+    using lightscatter::LightType;
+    auto point = [](lightscatter::FrameDescription& d) {
+        d.light.type = LightType::Point;
+        d.light.cubeFaceViewProjections = cubeFaces(d.light.position);
+    };
+    expectRefused([](auto& d) { d.light.type = LightType::Point; }, "light.cubeFaceViewProjections[0] is singular");
+    expectRefused(point, "shadowMap.arrayLayers = 1: must be 6");
+    expectRefused(
+        [&](auto& d) {
+            point(d);
+            std::swap(d.light.cubeFaceViewProjections[2], d.light.cubeFaceViewProjections[3]);
+        },
+        "light.cubeFaceViewProjections[2] puts the point 1 m along +Y");
+    expectRefused(
+        [&](auto& d) {  // 100 degrees wide instead of 90
+            point(d);
+            const float s = 1.0f / std::tan(glm::radians(50.0f));
+            d.light.cubeFaceViewProjections[4] =
+                times(glm::scale(glm::mat4(1.0f), glm::vec3(s, s, 1.0f)), d.light.cubeFaceViewProjections[4]);
+        },
+        "light.cubeFaceViewProjections[4] is not face +Z");
+    expectRefused(
+        [&](auto& d) {  // mirrored: clip x flipped
+            point(d);
+            d.light.cubeFaceViewProjections[1] =
+                times(glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, 1.0f, 1.0f)), d.light.cubeFaceViewProjections[1]);
+        },
+        "light.cubeFaceViewProjections[1] is not face -X");
+    expectRefused(
+        [&](auto& d) {  // the apex 10 cm off the light
+            point(d);
+            auto p = d.light.position;
+            p[1] += 0.1f;
+            d.light.cubeFaceViewProjections[5] = cubeFaces(p)[5];
+        },
+        "light.cubeFaceViewProjections[5] does not look along -Z");
+    expectRefused(
+        [&](auto& d) {
+            point(d);
+            d.light.shadowReversedZ = true;
+        },
+        "light.cubeFaceViewProjections[0] puts depth");
+    expectRefused(
+        [&](auto& d) {
+            point(d);
+            d.light.cubeFaceViewProjections[3][7] = std::numeric_limits<float>::quiet_NaN();
+        },
+        "light.cubeFaceViewProjections[3] element 7");
+    // Layers elsewhere: a spot's map and the other images have one.
+    expectRefused([](auto& d) { d.shadowMap->arrayLayers = 6; }, "shadowMap.arrayLayers = 6: must be 1");
+    expectRefused([](auto& d) { d.depth.arrayLayers = 2; }, "depth.arrayLayers");
 }
 
 TEST_F(PluginApiGpu, MediumAndLightRangesAreChecked) {

@@ -2,9 +2,11 @@
 // layout the engine asked for, and follows a new VkImage each frame (a swapchain's rotation).
 #include <array>
 #include <cmath>
+#include <cstring>
 
 #include "clear_color_frag.h"
 #include "fullscreen_vert.h"
+#include "read_layers_comp.h"
 #include "rendergraph/compile.h"
 #include "rendergraph/device_caps_vulkan.h"
 #include "rendergraph/executor.h"
@@ -22,14 +24,16 @@ struct EngineImage {
     VkImage image = VK_NULL_HANDLE;
     VkDeviceMemory memory = VK_NULL_HANDLE;
     EngineImage(const rg::Device& d, VkExtent2D e, const char* name, VkFormat format = VK_FORMAT_R8G8B8A8_UNORM,
-                VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT)
+                VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                uint32_t layers = 1, VkImageCreateFlags flags = 0)
         : dev(d) {
         VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+        info.flags = flags;
         info.imageType = VK_IMAGE_TYPE_2D;
         info.format = format;
         info.extent = {e.width, e.height, 1};
         info.mipLevels = 1;
-        info.arrayLayers = 1;
+        info.arrayLayers = layers;
         info.samples = VK_SAMPLE_COUNT_1_BIT;
         info.tiling = VK_IMAGE_TILING_OPTIMAL;
         info.usage = usage;
@@ -210,5 +214,126 @@ TEST_F(ImportsGpu, EngineDepthIsAReadOnlyDepthAttachment) {
         const int green = clearDepth > 0.0f ? 255 : 0;  // depth 0 < 0.5 passes; 0 < 0 does not
         for (uint32_t i = 0; i < size.width * size.height; ++i)
             ASSERT_EQ(px[4 * i + 1], green) << "engine depth " << clearDepth << ", pixel " << i;
+    }
+}
+
+// A six-layer depth image (a point light's cube shadow map: cube-compatible, or a plain 2D array)
+// imported whole: the graph samples every layer through one 2D-array view, its first barrier moves
+// all six layers out of the engine's layout and its last leaves all six in the final one. The
+// engine then copies each layer out of TRANSFER_SRC_OPTIMAL, which the validation layer checks
+// against the layout each layer is really in; a barrier covering layer 0 alone fails here.
+TEST_F(ImportsGpu, SixLayerDepthImageIsTransitionedWhole) {
+    constexpr uint32_t kLayers = 6;
+    const VkExtent2D size{4, 4};
+    for (const bool cube : {true, false}) {
+        SCOPED_TRACE(cube ? "cube-compatible" : "2D array");
+        const VkImageUsageFlags usage =
+            VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+        EngineImage depth(dev(), size, cube ? "engine cube depth" : "engine array depth", VK_FORMAT_D32_SFLOAT, usage,
+                          kLayers, cube ? VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT : 0);
+        rg::HostBuffer sampled(dev(), kLayers * sizeof(float), VK_BUFFER_USAGE_TRANSFER_DST_BIT, "sampled layers");
+        rg::HostBuffer copied(dev(), kLayers * size.width * size.height * sizeof(float),
+                              VK_BUFFER_USAGE_TRANSFER_DST_BIT, "copied layers");
+        const rg::Samplers samplers(dev());
+
+        rg::ImportedImage d;
+        d.image = depth.image;
+        d.format = VK_FORMAT_D32_SFLOAT;
+        d.extent = size;
+        d.arrayLayers = kLayers;
+        d.usage = usage;
+        d.initialLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;  // the engine's clears
+        d.initialStages = VK_PIPELINE_STAGE_2_CLEAR_BIT;
+        d.initialAccess = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+        d.finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;  // the engine's copy
+        d.finalStages = VK_PIPELINE_STAGE_2_COPY_BIT;
+        d.finalAccess = VK_ACCESS_2_TRANSFER_READ_BIT;
+
+        auto pipeline = std::make_shared<rg::Pipeline>();
+        rg::RenderGraph g;
+        const rg::ImageRef layers = g.importImage("engine six-layer depth", d);
+        rg::BufferRef values = g.createBuffer("layer values", {kLayers * sizeof(float)});
+        rg::BufferRef out = g.importBuffer("readback", sampled.asReadback());
+        {
+            auto p = g.addPass("read every layer", rg::PassType::Compute);
+            p.sampled(layers);
+            values = p.storageBufferWrite(values);
+            const rg::BufferRef target = values;
+            const VkSampler nearest = samplers.nearest();
+            p.execute([pipeline, layers, target, nearest](rg::PassContext& ctx) {
+                if (!*pipeline)
+                    *pipeline = rg::Pipeline::compute(
+                        ctx.device(), "read every layer", rg::spirv(ls_spirv::read_layers_comp),
+                        {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}}, 0);
+                pipeline->bind(ctx.cmd());
+                rg::DescriptorPush()
+                    .sampled(0, ctx.view(layers, VK_IMAGE_ASPECT_DEPTH_BIT), ctx.layout(layers), nearest)
+                    .storageBuffer(1, ctx.buffer(target))
+                    .push(ctx.device(), ctx.cmd(), *pipeline);
+                vkCmdDispatch(ctx.cmd(), 1, 1, 1);
+            });
+        }
+        {
+            auto p = g.addPass("copy out", rg::PassType::Transfer);
+            p.transferSrc(values);
+            out = p.transferDst(out);
+            const rg::BufferRef src = values, dst = out;
+            p.execute([src, dst](rg::PassContext& ctx) {
+                VkBufferCopy region{0, 0, kLayers * sizeof(float)};
+                vkCmdCopyBuffer(ctx.cmd(), ctx.buffer(src), ctx.buffer(dst), 1, &region);
+            });
+        }
+        const rg::VulkanDeviceCaps caps(dev());
+        rg::GraphExecutor exec(dev(), g, rg::compile(g, caps));
+        for (int frame = 0; frame < 2; ++frame) {
+            auto layerDepth = [&](uint32_t layer) { return 0.1f * static_cast<float>(layer + 1) + 0.05f * static_cast<float>(frame); };
+            dev().submitAndWait([&](VkCommandBuffer cmd) {
+                VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+                b.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
+                b.srcAccessMask = VK_ACCESS_2_TRANSFER_READ_BIT;
+                b.dstStageMask = VK_PIPELINE_STAGE_2_CLEAR_BIT;
+                b.dstAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+                b.oldLayout = frame == 0 ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+                b.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+                b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+                b.image = depth.image;
+                b.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, kLayers};
+                VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+                dep.imageMemoryBarrierCount = 1;
+                dep.pImageMemoryBarriers = &b;
+                vkCmdPipelineBarrier2(cmd, &dep);
+                for (uint32_t layer = 0; layer < kLayers; ++layer) {
+                    const VkClearDepthStencilValue value{layerDepth(layer), 0};
+                    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, layer, 1};
+                    vkCmdClearDepthStencilImage(cmd, depth.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &value, 1,
+                                                &range);
+                }
+            });
+            exec.run();
+            const auto* v = static_cast<const float*>(sampled.data());
+            for (uint32_t layer = 0; layer < kLayers; ++layer)
+                EXPECT_FLOAT_EQ(v[layer], layerDepth(layer)) << "layer " << layer << ", frame " << frame;
+
+            // The engine's next use, after the graph's last barrier: a copy of every layer.
+            dev().submitAndWait([&](VkCommandBuffer cmd) {
+                VkBufferImageCopy region{};
+                region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, kLayers};
+                region.imageExtent = {size.width, size.height, 1};
+                vkCmdCopyImageToBuffer(cmd, depth.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, copied.buffer(), 1,
+                                       &region);
+                VkMemoryBarrier2 toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+                toHost.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
+                toHost.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+                toHost.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
+                toHost.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
+                VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+                dep.memoryBarrierCount = 1;
+                dep.pMemoryBarriers = &toHost;
+                vkCmdPipelineBarrier2(cmd, &dep);
+            });
+            const auto* texels = static_cast<const float*>(copied.data());
+            for (uint32_t layer = 0; layer < kLayers; ++layer)
+                EXPECT_FLOAT_EQ(texels[layer * size.width * size.height], layerDepth(layer)) << "layer " << layer;
+        }
     }
 }

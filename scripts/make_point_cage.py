@@ -1,0 +1,133 @@
+#!/usr/bin/env python3
+"""Writes scenes/point_cage.json (+ .gltf, .bin): a shadowed point light in a cage, in fog.
+
+A point light hangs 2 m above a floor inside a cubic cage of square bars (1.2 m across, bars 8 cm
+thick, 22 cm gaps) with bars on all six sides, so shafts leave the cage in every direction: up,
+down onto the floor, sideways and towards the camera, which stands outside. The light has a cube
+shadow map (shadowMapSize), which brute-force samples face by face; the cage's bars cross every
+face of the cube and the seams between faces. Deterministic; standard library only.
+
+    python3 scripts/make_point_cage.py [OUT_DIR]
+
+OUT_DIR defaults to the repository's scenes/. Do not edit the generated files by hand.
+"""
+import argparse
+import json
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from make_occluder_scenes import compact, cube_buffer, r6  # noqa: E402
+
+LIGHT = (0.0, 2.0, 0.0)
+HALF = 0.6     # the cage's half-size, metres
+BAR = 0.08     # the bars' thickness
+STEPS = (-0.3, 0.0, 0.3)  # inner bar positions along a side
+FLOOR_HALF = 15.0
+FLOOR_THICK = 0.2
+
+
+def bars():
+    """(centre, size) of every bar of the cage, in world space."""
+    lx, ly, lz = LIGHT
+    out = []
+    # Vertical bars on the four walls, corner posts included once.
+    posts = set()
+    for s in (-HALF, HALF):
+        for t in (-HALF,) + STEPS + (HALF,):
+            posts.add((t, s))
+            posts.add((s, t))
+    for (x, z) in sorted(posts):
+        out.append(((lx + x, ly, lz + z), (BAR, 2 * HALF + BAR, BAR)))
+    # Roof and base: bars along x over z, and a frame along z at the edges.
+    for y in (-HALF, HALF):
+        for z in STEPS:
+            out.append(((lx, ly + y, lz + z), (2 * HALF, BAR, BAR)))
+        for x in (-HALF, HALF):
+            out.append(((lx + x, ly + y, lz), (BAR, BAR, 2 * HALF)))
+        for z in (-HALF, HALF):
+            out.append(((lx, ly + y, lz + z), (2 * HALF, BAR, BAR)))
+    return out
+
+
+def gltf_document(bin_name, bin_bytes, vertex_count, index_count):
+    v = vertex_count
+    accessors = [
+        {"bufferView": 0, "componentType": 5126, "count": v, "type": "VEC3",
+         "min": [-0.5, -0.5, -0.5], "max": [0.5, 0.5, 0.5]},
+        {"bufferView": 1, "componentType": 5126, "count": v, "type": "VEC3"},
+        {"bufferView": 2, "componentType": 5126, "count": v, "type": "VEC2"},
+        {"bufferView": 3, "componentType": 5123, "count": index_count, "type": "SCALAR"},
+    ]
+    views = [
+        {"buffer": 0, "byteOffset": 0, "byteLength": 12 * v, "target": 34962},
+        {"buffer": 0, "byteOffset": 12 * v, "byteLength": 12 * v, "target": 34962},
+        {"buffer": 0, "byteOffset": 24 * v, "byteLength": 8 * v, "target": 34962},
+        {"buffer": 0, "byteOffset": 32 * v, "byteLength": 2 * index_count, "target": 34963},
+    ]
+    attributes = {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2}
+    meshes = [
+        {"name": "floor", "primitives": [{"attributes": attributes, "indices": 3, "material": 0, "mode": 4}]},
+        {"name": "bar", "primitives": [{"attributes": attributes, "indices": 3, "material": 1, "mode": 4}]},
+    ]
+    materials = [
+        {"name": "stone", "pbrMetallicRoughness": {"baseColorFactor": [0.35, 0.33, 0.3, 1.0],
+                                                   "metallicFactor": 0.0, "roughnessFactor": 0.9}},
+        {"name": "iron", "pbrMetallicRoughness": {"baseColorFactor": [0.12, 0.11, 0.1, 1.0],
+                                                  "metallicFactor": 0.0, "roughnessFactor": 0.7}},
+    ]
+    nodes = [{"name": "floor", "mesh": 0, "translation": [0.0, -0.5 * FLOOR_THICK, 0.0],
+              "scale": [2 * FLOOR_HALF, FLOOR_THICK, 2 * FLOOR_HALF]}]
+    for k, (c, size) in enumerate(bars()):
+        nodes.append({"name": "bar%d" % k, "mesh": 1, "translation": [r6(x) for x in c],
+                      "scale": [r6(x) for x in size]})
+    doc = {
+        "asset": {"version": "2.0", "generator": "lightscatter scripts/make_point_cage.py"},
+        "scene": 0,
+        "scenes": [{"name": "point_cage", "nodes": list(range(len(nodes)))}],
+        "nodes": "@NODES@",
+        "meshes": meshes,
+        "materials": materials,
+        "accessors": accessors,
+        "bufferViews": views,
+        "buffers": [{"uri": bin_name, "byteLength": len(bin_bytes)}],
+    }
+    text = compact(json.dumps(doc, indent=1))
+    node_lines = ",\n".join("  " + json.dumps(n, separators=(",", ":")) for n in nodes)
+    return text.replace('"@NODES@"', "[\n" + node_lines + "\n ]") + "\n", len(nodes)
+
+
+def scene_document():
+    return {
+        "gltf": "point_cage.gltf",
+        "camera": {"position": [2.2, 2.6, 6.5], "target": [0.0, 1.7, 0.0], "up": [0.0, 1.0, 0.0],
+                   "fovYDegrees": 60.0, "near": 0.1, "far": 100.0, "reversedZ": False, "infiniteFar": False},
+        "light": {"type": "point", "position": list(LIGHT), "intensity": [60.0, 52.0, 40.0],
+                  "radius": 0.05, "shadowMapSize": 512},
+        "medium": {"betaR": [0.0, 0.0, 0.0], "betaM": [0.1, 0.1, 0.1], "g": 0.0,
+                   "sigmaA": [0.0, 0.0, 0.0], "phase": "isotropic", "maxDistance": 100.0},
+        "sky": {"color": [0.0, 0.0, 0.0]},
+        "ambient": [0.01, 0.01, 0.012],
+        "exposure": 1.0,
+    }
+
+
+def main():
+    here = os.path.dirname(os.path.abspath(__file__))
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("out", nargs="?", default=os.path.join(here, "..", "scenes"))
+    args = parser.parse_args()
+    os.makedirs(args.out, exist_ok=True)
+    data, vertex_count, index_count = cube_buffer()
+    with open(os.path.join(args.out, "point_cage.bin"), "wb") as f:
+        f.write(data)
+    text, count = gltf_document("point_cage.bin", data, vertex_count, index_count)
+    with open(os.path.join(args.out, "point_cage.gltf"), "w") as f:
+        f.write(text)
+    with open(os.path.join(args.out, "point_cage.json"), "w") as f:
+        f.write(compact(json.dumps(scene_document(), indent=2)) + "\n")
+    print("wrote %s (.json, .gltf, .bin): %d nodes" % (os.path.join(args.out, "point_cage"), count))
+
+
+if __name__ == "__main__":
+    main()
