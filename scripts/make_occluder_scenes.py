@@ -89,22 +89,28 @@ def r6(x):
     return round(x, 6)
 
 
-def gltf_document(name, bin_name, bin_bytes, vertex_count, index_count, field):
+def cube_mesh_layout(vertex_count, index_count):
+    """The accessors, buffer views and attributes of cube_buffer()'s data: positions, normals,
+    texture coordinates, then 16-bit indices, one after another in one buffer."""
+    v = vertex_count
     accessors = [
-        {"bufferView": 0, "componentType": 5126, "count": vertex_count, "type": "VEC3",
+        {"bufferView": 0, "componentType": 5126, "count": v, "type": "VEC3",
          "min": [-0.5, -0.5, -0.5], "max": [0.5, 0.5, 0.5]},
-        {"bufferView": 1, "componentType": 5126, "count": vertex_count, "type": "VEC3"},
-        {"bufferView": 2, "componentType": 5126, "count": vertex_count, "type": "VEC2"},
+        {"bufferView": 1, "componentType": 5126, "count": v, "type": "VEC3"},
+        {"bufferView": 2, "componentType": 5126, "count": v, "type": "VEC2"},
         {"bufferView": 3, "componentType": 5123, "count": index_count, "type": "SCALAR"},
     ]
-    v = vertex_count
     views = [
         {"buffer": 0, "byteOffset": 0, "byteLength": 12 * v, "target": 34962},
         {"buffer": 0, "byteOffset": 12 * v, "byteLength": 12 * v, "target": 34962},
         {"buffer": 0, "byteOffset": 24 * v, "byteLength": 8 * v, "target": 34962},
         {"buffer": 0, "byteOffset": 32 * v, "byteLength": 2 * index_count, "target": 34963},
     ]
-    attributes = {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2}
+    return accessors, views, {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2}
+
+
+def gltf_document(name, bin_name, bin_bytes, vertex_count, index_count, field):
+    accessors, views, attributes = cube_mesh_layout(vertex_count, index_count)
     meshes = [
         {"name": "floor", "primitives": [{"attributes": attributes, "indices": 3, "material": 0, "mode": 4}]},
         {"name": "box", "primitives": [{"attributes": attributes, "indices": 3, "material": 1, "mode": 4}]},

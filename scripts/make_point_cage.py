@@ -17,7 +17,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from make_occluder_scenes import compact, cube_buffer, r6  # noqa: E402
+from make_occluder_scenes import compact, cube_buffer, cube_mesh_layout, r6  # noqa: E402
 
 LIGHT = (0.0, 2.0, 0.0)
 HALF = 0.6     # the cage's half-size, metres
@@ -51,21 +51,7 @@ def bars():
 
 
 def gltf_document(bin_name, bin_bytes, vertex_count, index_count):
-    v = vertex_count
-    accessors = [
-        {"bufferView": 0, "componentType": 5126, "count": v, "type": "VEC3",
-         "min": [-0.5, -0.5, -0.5], "max": [0.5, 0.5, 0.5]},
-        {"bufferView": 1, "componentType": 5126, "count": v, "type": "VEC3"},
-        {"bufferView": 2, "componentType": 5126, "count": v, "type": "VEC2"},
-        {"bufferView": 3, "componentType": 5123, "count": index_count, "type": "SCALAR"},
-    ]
-    views = [
-        {"buffer": 0, "byteOffset": 0, "byteLength": 12 * v, "target": 34962},
-        {"buffer": 0, "byteOffset": 12 * v, "byteLength": 12 * v, "target": 34962},
-        {"buffer": 0, "byteOffset": 24 * v, "byteLength": 8 * v, "target": 34962},
-        {"buffer": 0, "byteOffset": 32 * v, "byteLength": 2 * index_count, "target": 34963},
-    ]
-    attributes = {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2}
+    accessors, views, attributes = cube_mesh_layout(vertex_count, index_count)
     meshes = [
         {"name": "floor", "primitives": [{"attributes": attributes, "indices": 3, "material": 0, "mode": 4}]},
         {"name": "bar", "primitives": [{"attributes": attributes, "indices": 3, "material": 1, "mode": 4}]},
