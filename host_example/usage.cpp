@@ -76,9 +76,9 @@ const std::array kCommands{
         "                  [--frames N] [--screenshot FILE.png] [--resize-at N --resize-to WxH]\n"
         "                  [--animate-light] [--resizes N] [--memory-log FILE.csv]\n",
         "Opens a window (needs a display; xvfb-run -a gives one). WASD/QE move, left-drag\n"
-        "looks, arrow keys move the light, M cycles the methods, P cycles profiles, T toggles\n"
-        "the min/max trees, N steps the scrolling noise's amplitude (0, 0.25, 0.5, 1; slices\n"
-        "and auto only), Esc quits.\n"
+        "looks, arrow keys move the selected light (L selects the next of several), M cycles\n"
+        "the methods, P cycles profiles, T toggles the min/max trees, N steps the scrolling\n"
+        "noise's amplitude (0, 0.25, 0.5, 1; slices and auto only), Esc quits.\n"
         "  --size WxH          1 to 16384 each (default 960x540)\n"
         "  --frames N          close after N frames (1 to 100000)\n"
         "  --screenshot FILE   the last frame as a PNG (needs --frames)\n"
