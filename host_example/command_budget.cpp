@@ -1,7 +1,10 @@
 // lightscatter budget [--method epipolar|slices|beam-tree-analytic|beam-tree-sampling] [--profile NAME|all] [--settings FILE.json]
-//   [--size WxH] [--shadow-map N] [--json]
+//   [--size WxH] [--shadow-map N] [--lights sun,spot,point] [--json]
 #include <cstdio>
 #include <iostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
 #include <nlohmann/json.hpp>
 
 #include "command_options.h"
@@ -28,6 +31,35 @@ lightscatter::Method budgetMethod(const std::string& name) {
                              "methods whose textures depend on the profile");
 }
 
+// --lights: a comma-separated list of sun (or directional), spot and point.
+std::vector<lightscatter::LightType> parseLights(const std::string& list) {
+    std::vector<lightscatter::LightType> lights;
+    size_t start = 0;
+    while (true) {
+        const size_t comma = list.find(',', start);
+        const std::string name = list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        if (name == "sun" || name == "directional")
+            lights.push_back(lightscatter::LightType::Directional);
+        else if (name == "spot")
+            lights.push_back(lightscatter::LightType::Spot);
+        else if (name == "point")
+            lights.push_back(lightscatter::LightType::Point);
+        else
+            throw std::runtime_error("--lights " + list + ": unknown light '" + name +
+                                     "' (a comma-separated list of sun, directional, spot and point)");
+        if (comma == std::string::npos) return lights;
+        start = comma + 1;
+    }
+}
+
+std::string lightsName(const std::vector<lightscatter::LightType>& lights) {
+    std::string s;
+    for (auto l : lights)
+        s += std::string(s.empty() ? "" : ",") +
+             (l == lightscatter::LightType::Directional ? "sun" : l == lightscatter::LightType::Spot ? "spot" : "point");
+    return s;
+}
+
 }  // namespace
 
 int runBudget(Args& args) {
@@ -37,6 +69,7 @@ int runBudget(Args& args) {
     const std::string profileName = args.take("--profile", settingsPath.empty() ? "all" : "balanced");
     const VkExtent2D size = parseSize(args.take("--size", "2560x1600"), "--size");
     const std::string sm = args.take("--shadow-map", "");
+    const std::vector<lightscatter::LightType> lights = parseLights(args.take("--lights", "spot"));
     const bool json = args.flag("--json");
     args.finish();
     std::vector<lightscatter::Profile> profiles;
@@ -63,7 +96,7 @@ int runBudget(Args& args) {
         const auto s = p == lightscatter::Profile::Custom ? custom : lightscatter::profileSettings(p);
         const uint32_t shadow = shadowOverride ? shadowOverride : s.shadowMapSize;
         const lightscatter::Budget b = lightscatter::budget(
-            p, size.width, size.height, shadow, lightscatter::LightType::Spot, &s, method);
+            p, size.width, size.height, shadow, lights, &s, method);
         if (json) {
             nlohmann::json j;
             j["method"] = lightscatter::methodName(method);
@@ -78,6 +111,7 @@ int runBudget(Args& args) {
                 j["samplesPerSlice"] = s.samplesPerSlice;
             }
             j["shadowMapSize"] = shadow;
+            j["lights"] = lightsName(lights);
             j["estimated"] = b.estimated;
             j["depthStencilFormat"] = b.depthStencilFormat;
             nlohmann::json entries = nlohmann::json::array();
@@ -103,9 +137,9 @@ int runBudget(Args& args) {
                       (s.sliceBlur ? ", blur " + std::to_string(s.sliceBlur) : "")
                 : std::to_string(s.slices) + " slices x " + std::to_string(s.samplesPerSlice) +
                       " samples";
-        std::printf("%s, %s: %s, %u^2 shadow map, %ux%u screen (sizes %s)\n",
+        std::printf("%s, %s: %s, %u^2 shadow map, %ux%u screen, light%s %s (sizes %s)\n",
                     lightscatter::methodName(method), lightscatter::profileName(p), what.c_str(),
-                    shadow, size.width, size.height,
+                    shadow, size.width, size.height, lights.size() > 1 ? "s" : "", lightsName(lights).c_str(),
                     b.estimated ? "estimated without a device" : "from the device");
         for (const auto& e : b.entries)
             std::printf("  %-40s %-22s %5u x %-5u %10.2f MiB%s\n", e.name.c_str(), e.format.c_str(), e.width,

@@ -1,7 +1,8 @@
 // lightscatter view SCENE.json [--method NAME] [--profile NAME] [--size WxH] [--frames N]
 //   [--screenshot FILE.png] [--resize-at FRAME --resize-to WxH]
 //   [--animate-light] [--resizes N] [--memory-log FILE.csv]   (the soak test's options)
-// A GLFW window: WASD/QE move the camera, left-drag looks around, arrow keys move the light, M
+// A GLFW window: WASD/QE move the camera, left-drag looks around, arrow keys move the selected
+// light (L selects the next of a scene's "lights"), M
 // cycles the methods, P cycles profiles, T toggles the min/max trees, N steps the slices method's
 // scrolling noise (0, 0.25, 0.5, 1), Esc quits. The title shows the method, profile and noise, and
 // the plugin's GPU time per pass. Resizing rebuilds the graphs. Every frame carries the seconds
@@ -339,7 +340,8 @@ int runView(Args& args) {
     constexpr std::array kNoiseSteps{0.0f, 0.25f, 0.5f, 1.0f};
     float noise = options.custom.noiseAmplitude;
     const lightscatter::LightModel lightModel = options.custom.lightModel;
-    bool keyM = false, keyP = false, keyT = false, keyN = false;
+    bool keyM = false, keyP = false, keyT = false, keyN = false, keyL = false;
+    size_t selectedLight = 0;  // the light the arrow keys move; L selects the next
     const auto start = std::chrono::steady_clock::now();
     auto last = start;
     double titleClock = 0.0;
@@ -353,7 +355,7 @@ int runView(Args& args) {
         const float dt = std::min(std::chrono::duration<float>(now - last).count(), 0.1f);
         last = now;
         moveCamera(window.handle, renderer.scene().camera, speed, dt, controls);
-        moveLight(window.handle, renderer.scene().light, speed, dt);
+        moveLight(window.handle, renderer.scene().lightAt(selectedLight), speed, dt);
         if (animate) animateLight(renderer.scene().light, scene.light, frame);
         if (resizes > 0 && frame > 0 && frame % (frameLimit / (resizes + 1)) == 0 &&
             frame / (frameLimit / (resizes + 1)) <= resizes) {
@@ -366,6 +368,7 @@ int runView(Args& args) {
             held = down;
             return edge;
         };
+        if (pressed(GLFW_KEY_L, keyL)) selectedLight = (selectedLight + 1) % renderer.scene().lightCount();
         if (pressed(GLFW_KEY_M, keyM)) {
             // analytic only where seed 001 applies (an unshadowed point or spot light).
             std::vector<lightscatter::Method> methods{

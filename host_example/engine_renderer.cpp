@@ -2,6 +2,7 @@
 
 #include <cstring>
 #include <functional>
+#include <map>
 #include <glm/gtc/packing.hpp>
 
 #include "camera_math.h"
@@ -54,6 +55,10 @@ struct EngineRenderer::Pipelines {
     rg::Samplers samplers;
     rg::Pipeline shadow, forward, cubeShadow;
     Lighting lighting{};
+    // The lights after the first: each one's lighting (no ambient: the first light's pass adds it)
+    // and additive forward pipelines by light type and shadowing.
+    std::vector<Lighting> moreLighting;
+    std::map<int, rg::Pipeline> additive;
     glm::mat4 viewProj{1.0f};
 };
 
@@ -151,6 +156,17 @@ void EngineRenderer::createTargets() {
                                                 VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
                                                     VK_IMAGE_USAGE_SAMPLED_BIT,
                                                 "host shadow map");
+    moreShadowMaps_.clear();
+    for (size_t i = 0; i < scene_.moreLights.size(); ++i) {
+        const LightDesc& l = scene_.moreLights[i];
+        if (l.shadowMapSize > 0 && l.type != LightKind::Point)
+            moreShadowMaps_.push_back(std::make_unique<GpuImage>(
+                device_, VK_FORMAT_D32_SFLOAT, VkExtent2D{l.shadowMapSize, l.shadowMapSize},
+                VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                "host shadow map (light " + std::to_string(i + 1) + ")"));
+        else
+            moreShadowMaps_.push_back(nullptr);
+    }
     // The Lin output stays in GENERAL from frame to frame, as the plugin expects it.
     device_.submitAndWait([&](VkCommandBuffer cmd) {
         VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
@@ -335,6 +351,77 @@ void EngineRenderer::buildGraph() {
             });
         });
     }
+    // The lights after the first: a shadow pass each where it has a map, then its direct light
+    // added onto the shaded color (same geometry, depth tested against the first pass's depth).
+    pipes->moreLighting.resize(scene_.moreLights.size());
+    moreShadowRefs_.assign(scene_.moreLights.size(), rg::ImageRef{});
+    for (size_t i = 0; i < scene_.moreLights.size(); ++i) {
+        const std::string which = " (light " + std::to_string(i + 1) + ")";
+        const bool lit = moreShadowMaps_[i] != nullptr;
+        rg::BufferRef buffer = g.createBuffer("host lighting" + which, {sizeof(Lighting)});
+        {
+            auto pass = g.addPass("upload lighting" + which, rg::PassType::Transfer);
+            buffer = pass.transferDst(buffer);
+            pass.execute([pipes, buffer, i](rg::PassContext& ctx) {
+                vkCmdUpdateBuffer(ctx.cmd(), ctx.buffer(buffer), 0, sizeof(Lighting), &pipes->moreLighting[i]);
+            });
+        }
+        rg::ImageRef shadow;
+        if (lit) {
+            shadow = g.importImage("host shadow map" + which,
+                                   imported(*moreShadowMaps_[i], VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL));
+            auto pass = g.addPass("shadow map" + which, rg::PassType::Graphics);
+            shadow = pass.depthWrite(shadow, rg::LoadOp::Clear, 1.0f);
+            pass.execute([pipes, drawAll, i](rg::PassContext& ctx) {
+                if (!pipes->shadow) {
+                    auto d = meshPipeline(rg::spirv(ls_spirv::shadow_frag), ctx.renderingFormats());
+                    d.depthBias = true;
+                    d.cullMode = VK_CULL_MODE_NONE;
+                    pipes->shadow = rg::Pipeline::graphics(ctx.device(), "host shadow map", d);
+                }
+                pipes->shadow.bind(ctx.cmd());
+                vkCmdSetDepthBias(ctx.cmd(), 1.0f, 0.0f, 1.5f);
+                drawAll(ctx.cmd(), pipes->shadow, pipes->moreLighting[i].lightViewProj, {});
+            });
+            moreShadowRefs_[i] = shadow;
+        }
+        auto pass = g.addPass("forward shading" + which, rg::PassType::Graphics);
+        pass.uniformBuffer(buffer);
+        if (lit) pass.sampled(shadow, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
+        colorRef_ = pass.colorAttachment(colorRef_, rg::LoadOp::Load);
+        pass.depthTest(depthRef_);
+        const bool reversed = scene_.camera.reversedZ;
+        const LightKind kind = scene_.moreLights[i].type;
+        const int32_t lightType = kind == LightKind::Directional ? 0 : kind == LightKind::Spot ? 1 : 2;
+        pass.execute([pipes, drawAll, buffer, shadow, lit, reversed, lightType](rg::PassContext& ctx) {
+            const int key = lightType * 2 + (lit ? 1 : 0);
+            auto it = pipes->additive.find(key);
+            if (it == pipes->additive.end()) {
+                auto d = meshPipeline(lit ? rg::spirv(ls_spirv::mesh_shadowed_frag)
+                                          : rg::spirv(ls_spirv::mesh_unshadowed_frag),
+                                      ctx.renderingFormats());
+                d.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
+                              {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT}};
+                if (lit) d.bindings.push_back({2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT});
+                d.depthWrite = false;
+                d.depthCompare = reversed ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL;
+                d.blend = rg::BlendMode::Additive;
+                d.specialization.set(0, lightType);
+                it = pipes->additive.emplace(key, rg::Pipeline::graphics(ctx.device(), "host additive shading", d)).first;
+            }
+            const rg::Pipeline& p = it->second;
+            p.bind(ctx.cmd());
+            drawAll(ctx.cmd(), p, pipes->viewProj, [&](const GpuMesh::Draw& draw) {
+                rg::DescriptorPush set;
+                set.uniform(0, ctx.buffer(buffer))
+                    .sampled(1, draw.texture, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, pipes->samplers.linear());
+                if (lit)
+                    set.sampled(2, ctx.view(shadow, VK_IMAGE_ASPECT_DEPTH_BIT), ctx.layout(shadow),
+                                pipes->samplers.nearest());
+                set.push(ctx.device(), ctx.cmd(), p);
+            });
+        });
+    }
     const rg::VulkanDeviceCaps caps(device_);
     executor_ = std::make_unique<rg::GraphExecutor>(device_, g, rg::compile(g, caps));
 }
@@ -388,6 +475,21 @@ lightscatter::FrameDescription EngineRenderer::describe(const RenderOptions& opt
         const std::array<glm::mat4, 6> faces = cubeFaceViewProjections(scene_.light, bounds_);
         for (size_t i = 0; i < 6; ++i) f.light.cubeFaceViewProjections[i] = toPluginMatrix(faces[i]);
     }
+    if (!scene_.moreLights.empty()) {
+        // Several lights: the first one's fields move into the list, the others follow.
+        f.lights.push_back({f.light, f.shadowMap, std::nullopt});
+        f.light = {};
+        f.shadowMap.reset();
+        for (size_t i = 0; i < scene_.moreLights.size(); ++i) {
+            const LightDesc& l = scene_.moreLights[i];
+            lightscatter::LightInput in;
+            const bool lit = moreShadowMaps_[i] != nullptr;
+            in.light = toPluginLight(l, lit ? shadowViewProjection(l, bounds_, partBounds_, scene_.camera, aspect) : glm::mat4(1.0f),
+                                     lit);
+            if (lit) in.shadowMap = input(*moreShadowMaps_[i], VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+            f.lights.push_back(in);
+        }
+    }
     f.medium = toPluginMedium(scene_.medium);
     f.method = options.method;
     f.profile = options.profile;
@@ -414,6 +516,20 @@ void EngineRenderer::record(VkCommandBuffer cmd, const RenderOptions& options,
     l.betaT = glm::vec4(scene_.medium.betaR + scene_.medium.betaM + scene_.medium.sigmaA, light.radius);
     l.ambient = glm::vec4(scene_.ambient, 0.0f);
     l.shadowInfo = glm::vec4(static_cast<float>(light.shadowMapSize), 0.0f, 0.0f, 0.0f);
+    pipelines_->moreLighting.resize(scene_.moreLights.size());
+    for (size_t i = 0; i < scene_.moreLights.size(); ++i) {
+        const LightDesc& m = scene_.moreLights[i];
+        Lighting& e = pipelines_->moreLighting[i];
+        e = l;
+        e.lightViewProj = moreShadowMaps_[i] ? shadowViewProjection(m, bounds_, partBounds_, scene_.camera, aspect)
+                                             : glm::mat4(1.0f);
+        e.lightPos = glm::vec4(m.position, 0.0f);
+        e.lightDir = glm::vec4(glm::normalize(m.direction), std::cos(glm::radians(m.halfAngleDegrees)));
+        e.lightIntensity = glm::vec4(m.intensity, m.range);
+        e.betaT.w = m.radius;
+        e.ambient = glm::vec4(0.0f);  // added once, by the first light's pass
+        e.shadowInfo = glm::vec4(static_cast<float>(m.shadowMapSize), 0.0f, 0.0f, 0.0f);
+    }
     if (cubeShadow_) recordCubeShadow(cmd);
     executor_->record(cmd);
     try {

@@ -78,6 +78,10 @@ private:
     std::unique_ptr<GpuImage> cubeShadow_;        // point light with shadowMapSize > 0: 6 layers
     std::array<VkImageView, 6> cubeFaceViews_{};  // one depth view per layer, the faces' targets
     std::unique_ptr<rg::HostBuffer> colorReadback_, linReadback_;  // sized with the targets
+    // The scene's lights after the first ("lights"): each one's shadow map (a sun or spot with
+    // shadowMapSize > 0; null otherwise), drawn and shaded by passes of their own.
+    std::vector<std::unique_ptr<GpuImage>> moreShadowMaps_;
+    std::vector<rg::ImageRef> moreShadowRefs_;
     std::unique_ptr<lightscatter::Plugin> plugin_;
     std::shared_ptr<Pipelines> pipelines_;
     std::unique_ptr<rg::RenderGraph> graph_;

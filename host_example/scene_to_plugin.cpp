@@ -49,6 +49,14 @@ lightscatter::Light toPluginLight(const LightDesc& l, const glm::mat4& shadowVie
 std::string pluginRefusalInSceneTerms(const std::string& message, const std::string& scenePath) {
     std::string m = message;
     while (m.rfind("lightscatter: ", 0) == 0) m.erase(0, 14);
+    if (m.rfind("lights[", 0) == 0) {
+        // A light of the scene's "lights": the plugin's "lights[i]: lights[i].light.x" is the
+        // scene's "lights[i].x".
+        const size_t colon = m.find("]: ");
+        if (colon != std::string::npos) m.erase(0, colon + 3);
+        for (size_t at; (at = m.find("].light.")) != std::string::npos;) m.erase(at + 1, 6);
+        return scenePath + ": " + m + " (refused by the plugin)";
+    }
     // Longest first: a phrase, then the fields whose SCENE.json names differ. The matrices are
     // made by the host from several scene fields, so those are named instead.
     static const std::pair<const char*, const char*> kTerms[] = {

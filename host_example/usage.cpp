@@ -51,7 +51,8 @@ const std::array kCommands{
             "budget [--method epipolar|slices|beam-tree-analytic|beam-tree-sampling]\n"
             "                    [--profile NAME|all]\n"
             "                    [--settings FILE.json]\n"
-            "                    [--size WxH] [--shadow-map N] [--json]\n",
+            "                    [--size WxH] [--shadow-map N] [--lights sun,spot,point]\n"
+            "                    [--json]\n",
             "Prints a method's GPU memory per profile without a GPU.\n"
             "  --method NAME       epipolar (default), slices, beam-tree-analytic or\n"
             "                      beam-tree-sampling, the methods whose textures depend on the\n"
@@ -59,6 +60,9 @@ const std::array kCommands{
             "  --profile NAME|all  one profile, or all of them (default)\n"
             "  --size WxH          the screen, 1 to 16384 each (default 2560x1600)\n"
             "  --shadow-map N      the shadow map's size, 1 to 16384 (default: the profile's)\n"
+            "  --lights LIST       the frame's lights, comma-separated: sun, spot, point\n"
+            "                      (default spot); sun and spot have a shadow map, point\n"
+            "                      none; several lights: epipolar only\n"
             "  --json              JSON instead of text\n"},
     Command{
         "graph",
@@ -72,9 +76,9 @@ const std::array kCommands{
         "                  [--frames N] [--screenshot FILE.png] [--resize-at N --resize-to WxH]\n"
         "                  [--animate-light] [--resizes N] [--memory-log FILE.csv]\n",
         "Opens a window (needs a display; xvfb-run -a gives one). WASD/QE move, left-drag\n"
-        "looks, arrow keys move the light, M cycles the methods, P cycles profiles, T toggles\n"
-        "the min/max trees, N steps the scrolling noise's amplitude (0, 0.25, 0.5, 1; slices\n"
-        "and auto only), Esc quits.\n"
+        "looks, arrow keys move the selected light (L selects the next of several), M cycles\n"
+        "the methods, P cycles profiles, T toggles the min/max trees, N steps the scrolling\n"
+        "noise's amplitude (0, 0.25, 0.5, 1; slices and auto only), Esc quits.\n"
         "  --size WxH          1 to 16384 each (default 960x540)\n"
         "  --frames N          close after N frames (1 to 100000)\n"
         "  --screenshot FILE   the last frame as a PNG (needs --frames)\n"

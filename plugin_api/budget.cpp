@@ -1,6 +1,9 @@
 // The memory budget of the epipolar method for a profile, computed without a GPU: the frame graph
 // is built and compiled against the offline device model, so the numbers are the compiler's own
 // (per-resource sizes, the sum without aliasing, the peak with it).
+#include <string>
+#include <vector>
+
 #include "frame_graph.h"
 #include "frame_setup.h"
 #include "lightscatter.h"
@@ -121,6 +124,77 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
         info.mipLevels = info.arrayLayers = 1;
         const uint64_t bytes = caps.imageRequirements(info).size;
         b.entries.push_back({"point-light table", "R32G32B32A32_SFLOAT", 512, 256, bytes, false});
+        b.totalBytes += bytes;
+        b.peakBytes += bytes;
+    }
+    return b;
+}
+
+Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint32_t shadowMapSize,
+              const std::vector<LightType>& lights, const Settings* custom, Method method) {
+    if (lights.empty()) throw InvalidInput("lightscatter: budget lights: the list is empty");
+    if (lights.size() == 1) return budget(profile, screenWidth, screenHeight, shadowMapSize, lights[0], custom, method);
+    if (method != Method::Epipolar)
+        throw InvalidInput(std::string("lightscatter: budget method ") + methodName(method) +
+                           ": several lights are budgeted for epipolar only");
+    // The single light's checks (screen, shadow-map size, settings) and the textures it does not
+    // repeat per light come from the first light's budget.
+    Budget b = budget(profile, screenWidth, screenHeight, shadowMapSize, lights[0], custom, method);
+    const Settings& s = b.settings;
+
+    detail::GraphConfig c;
+    c.method = method;
+    c.fixup = s.fixup;
+    c.slices = s.slices;
+    c.samples = s.samplesPerSlice;
+    c.screen = {screenWidth, screenHeight};
+    const rg::OfflineDeviceCaps caps;
+    c.depthStencil = rg::firstSupported(caps, {VK_FORMAT_D24_UNORM_S8_UINT, VK_FORMAT_D32_SFLOAT_S8_UINT},
+                                        VK_FORMAT_FEATURE_2_DEPTH_STENCIL_ATTACHMENT_BIT);
+    const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    c.depth = {VK_FORMAT_D32_SFLOAT, c.screen,
+               VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, ro, ro};
+    c.color = {VK_FORMAT_R16G16B16A16_SFLOAT, c.screen, VK_IMAGE_USAGE_STORAGE_BIT, VK_IMAGE_LAYOUT_GENERAL,
+               VK_IMAGE_LAYOUT_GENERAL};
+    std::vector<size_t> tables;  // the lights with a point-light table
+    for (LightType type : lights) {
+        detail::LightChainConfig l;
+        l.light = static_cast<ls::LightKind>(static_cast<int>(type));
+        l.shadowed = type != LightType::Point;
+        l.minMaxTrees = s.minMaxTrees && ls::treesFit(shadowMapSize);
+        l.shadowMapSize = shadowMapSize;
+        if (l.shadowed)
+            l.shadowMap = {VK_FORMAT_D32_SFLOAT, {shadowMapSize, shadowMapSize}, VK_IMAGE_USAGE_SAMPLED_BIT, ro, ro};
+        if (type != LightType::Directional) {
+            l.table = {VK_FORMAT_R32G32B32A32_SFLOAT, {512, 256}, VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                       ro, ro};
+            tables.push_back(c.lights.size());
+        }
+        c.lights.push_back(l);
+    }
+    const detail::FrameGraph fg = detail::buildFrameGraph(c, nullptr);
+    const rg::CompiledGraph compiled = rg::compile(*fg.graph, caps);
+    b.estimated = !compiled.exactSizes;
+    b.seed.reset();  // seed 000's figures are for one light
+    b.entries.clear();
+    for (uint32_t id = 0; id < fg.graph->resources().size(); ++id) {
+        const auto& r = fg.graph->resource(id);
+        const auto& p = compiled.resources[id];
+        if (r.imported || !p.used) continue;
+        b.entries.push_back({r.name, r.buffer ? "buffer" : rg::formatName(r.image.format), p.extent.width,
+                             p.extent.height, p.memory.size, true});
+    }
+    b.totalBytes = compiled.unaliasedBytes;
+    b.peakBytes = compiled.aliasedBytes;
+    // Each point or spot light's table lives across frames, outside the graph's aliased memory.
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.format = VK_FORMAT_R32G32B32A32_SFLOAT;
+    info.extent = {512, 256, 1};
+    info.mipLevels = info.arrayLayers = 1;
+    const uint64_t bytes = caps.imageRequirements(info).size;
+    for (size_t i : tables) {
+        b.entries.push_back({"point-light table (light " + std::to_string(i) + ")", "R32G32B32A32_SFLOAT", 512, 256,
+                             bytes, false});
         b.totalBytes += bytes;
         b.peakBytes += bytes;
     }

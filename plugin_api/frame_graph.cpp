@@ -18,7 +18,8 @@ bool GraphConfig::operator==(const GraphConfig& o) const {
            inscatterOut == o.inscatterOut && table == o.table && extinction == o.extinction &&
            coneSamples == o.coneSamples && coneLimited == o.coneLimited && coneJitter == o.coneJitter &&
            shadowSampling == o.shadowSampling && sliceTarget == o.sliceTarget && sliceBlur == o.sliceBlur && sliceDither == o.sliceDither && beamCapacity == o.beamCapacity && reversedZ == o.reversedZ &&
-           noise == o.noise && engineNoise == o.engineNoise && poisonTransients == o.poisonTransients;
+           noise == o.noise && engineNoise == o.engineNoise && poisonTransients == o.poisonTransients &&
+           lights == o.lights;
 }
 
 ls::SliceAccumulation sliceAccumulation(SliceTarget target) {
@@ -71,8 +72,96 @@ rg::ImportedImage importDescription(const ImportState& s) {
     return d;
 }
 
+namespace {
+
+// Several lights: one chain per light whose volume reaches the view, one after the other. The first
+// chain's composite applies the extinction and adds its Lin; each later chain adds its Lin to the
+// color (and to inscatterOut) as soon as it is done, so that its transients are dead before the
+// next chain starts and the next one may reuse their memory: no sum image is kept.
+FrameGraph buildLightsGraph(const GraphConfig& c, const std::vector<ls::Shared>& lightShared) {
+    FrameGraph fg;
+    fg.graph = std::make_unique<rg::RenderGraph>();
+    rg::RenderGraph& g = *fg.graph;
+    g.setScreenExtent(c.screen);
+    auto sharedOf = [&](size_t i) { return i < lightShared.size() ? lightShared[i] : ls::Shared{}; };
+
+    ls::NodeInputs base;
+    base.shared = sharedOf(0);
+    base.screen = c.screen;
+    base.depthStencil = c.depthStencil;
+    fg.depth = base.depth = g.importImage("engine depth", importDescription(c.depth));
+    fg.color = g.importImage("engine color", importDescription(c.color));
+    if (c.inscatterOut.format != VK_FORMAT_UNDEFINED)
+        fg.inscatterOut = g.importImage("in-scattering output", importDescription(c.inscatterOut));
+    fg.lights.resize(c.lights.size());
+    bool anyTouches = false;
+    for (size_t i = 0; i < c.lights.size(); ++i) {
+        const LightChainConfig& l = c.lights[i];
+        const std::string which = " (light " + std::to_string(i) + ")";
+        if (l.shadowMap.format != VK_FORMAT_UNDEFINED)
+            fg.lights[i].shadowMap = g.importImage("engine shadow map" + which, importDescription(l.shadowMap));
+        if (l.lightColor.format != VK_FORMAT_UNDEFINED)
+            fg.lights[i].lightColor = g.importImage("light color" + which, importDescription(l.lightColor));
+        anyTouches = anyTouches || l.touchesView;
+    }
+    if (!anyTouches && !c.extinction && !fg.inscatterOut.valid()) {
+        fg.summary = "no light scatters and nothing absorbs: no pass at all";
+        return fg;
+    }
+    // The camera and the medium are every light's: light 0's constants serve camera z and the
+    // composite.
+    base.constants = ls::addUploadConstants(g, base.shared);
+    const rg::ImageRef cameraZ = ls::addCameraZ(g, base);
+
+    rg::ImageRef color = fg.color, linOut = fg.inscatterOut;
+    size_t chains = 0;
+    for (size_t i = 0; i < c.lights.size(); ++i) {
+        const LightChainConfig& l = c.lights[i];
+        if (!l.touchesView) continue;  // a light whose volume misses the view costs nothing
+        // Each chain's resources and passes are named for its light.
+        g.setNameSuffix(" (light " + std::to_string(i) + ")");
+        ls::NodeInputs in = base;
+        in.shared = sharedOf(i);
+        in.constants = i == 0 ? base.constants : ls::addUploadConstants(g, in.shared);
+        in.shadowMapSize = l.shadowMapSize;
+        if (l.light != ls::LightKind::Directional)
+            fg.lights[i].table = in.table = g.importImage("point-light table", importDescription(l.table));
+        if (l.shadowed) {
+            in.shadowMap = fg.lights[i].shadowMap;
+            in.lightColor = fg.lights[i].lightColor;
+        }
+        rg::ImageRef lin;
+        if (!l.shadowed) {
+            lin = ls::addUnshadowed(g, in, cameraZ);
+        } else if (c.method == Method::BruteForce) {
+            lin = ls::addBruteForce(g, in, cameraZ);
+        } else {
+            ls::EpipolarSizes sizes{c.slices, c.samples, l.shadowMapSize};
+            ls::EpipolarOptions options{l.minMaxTrees, c.fixup};
+            lin = ls::addEpipolarNodes(g, in, sizes, options, cameraZ).screenInscatter;
+        }
+        // The first chain's composite applies the extinction; the others add their Lin.
+        const ls::CompositeOutputs o = chains == 0 ? ls::addComposite(g, in, color, cameraZ, lin, linOut)
+                                                   : ls::addInscatter(g, in, color, lin, linOut);
+        color = o.color;
+        linOut = o.inscatterOut;
+        ++chains;
+    }
+    g.setNameSuffix({});
+    if (chains == 0) ls::addComposite(g, base, color, cameraZ, {}, linOut);  // extinction only
+    fg.summary = std::to_string(c.lights.size()) + " lights, " + std::to_string(chains) + " reaching the view: " +
+                 (c.method == Method::BruteForce ? "brute-force ray marching"
+                                                 : std::string("epipolar sampling") + (c.fixup ? ", fix-up" : "")) +
+                 " per shadowed light, closed form per unshadowed one; the first composite applies the "
+                 "extinction, each light's Lin is added to the color as its chain ends";
+    return fg;
+}
+
+}  // namespace
+
 FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared, ls::SlicePlacementRef slices,
-                           ls::BeamTreeFrameRef beams) {
+                           ls::BeamTreeFrameRef beams, const std::vector<ls::Shared>& lightShared) {
+    if (!c.lights.empty()) return buildLightsGraph(c, lightShared);
     FrameGraph fg;
     fg.graph = std::make_unique<rg::RenderGraph>();
     rg::RenderGraph& g = *fg.graph;

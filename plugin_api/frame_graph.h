@@ -28,6 +28,21 @@ struct ImportState {
     }
 };
 
+// One light's chain in a frame of several lights (GraphConfig::lights).
+struct LightChainConfig {
+    ls::LightKind light = ls::LightKind::Directional;
+    bool shadowed = false;
+    bool touchesView = true;
+    bool minMaxTrees = true;
+    uint32_t shadowMapSize = 0;
+    ImportState shadowMap, lightColor, table;  // format UNDEFINED: absent
+    bool operator==(const LightChainConfig& o) const {
+        return light == o.light && shadowed == o.shadowed && touchesView == o.touchesView &&
+               minMaxTrees == o.minMaxTrees && shadowMapSize == o.shadowMapSize && shadowMap == o.shadowMap &&
+               lightColor == o.lightColor && table == o.table;
+    }
+};
+
 struct GraphConfig {
     Method method = Method::Epipolar;
     ls::LightKind light = ls::LightKind::Directional;
@@ -53,6 +68,10 @@ struct GraphConfig {
     bool noise = false;             // slices samples a noise texture: the engine's (`noise` given) or ours
     ImportState engineNoise;        // format UNDEFINED: the plugin's own noise
     bool poisonTransients = false;
+    // Several lights (epipolar or brute-force): one chain each, in this order; when not empty, the
+    // single light's fields above (light, shadowed, touchesView, minMaxTrees, shadowMapSize,
+    // shadowMap, lightColor, table) are unused.
+    std::vector<LightChainConfig> lights;
     bool operator==(const GraphConfig& o) const;
 };
 
@@ -60,6 +79,10 @@ struct FrameGraph {
     std::unique_ptr<rg::RenderGraph> graph;
     rg::ImageRef depth, color, shadowMap, lightColor, inscatterOut, table, noise;
     std::string summary;  // which nodes were chosen, and why
+    struct LightImages {
+        rg::ImageRef shadowMap, lightColor, table;
+    };
+    std::vector<LightImages> lights;  // several lights: each one's imports (GraphConfig::lights)
 };
 
 ls::SliceAccumulation sliceAccumulation(SliceTarget target);
@@ -78,7 +101,10 @@ inline constexpr VkFormat kNoiseFormat = VK_FORMAT_R8G8_UNORM;
 
 // `slices`: where the planes go, updated by the plugin before each frame (null for the budget).
 // `beams`: the beam tree's triangles, likewise (beam-tree-analytic).
+// `lightShared`: several lights, each one's state (its constants and shader options), in the order
+// of config.lights; empty for the budget.
 FrameGraph buildFrameGraph(const GraphConfig& config, const ls::Shared& shared,
-                           ls::SlicePlacementRef slices = nullptr, ls::BeamTreeFrameRef beams = nullptr);
+                           ls::SlicePlacementRef slices = nullptr, ls::BeamTreeFrameRef beams = nullptr,
+                           const std::vector<ls::Shared>& lightShared = {});
 
 }  // namespace lightscatter::detail

@@ -1,6 +1,7 @@
 #include "frame_setup.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <glm/gtc/type_ptr.hpp>
@@ -657,6 +658,80 @@ FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
     s.epipolar.shadowDepthBias = s.settings.shadowDepthBias;
     s.epipolar.interpolateFraction = s.settings.interpolation == Interpolation::ShadowedFraction;
     return s;
+}
+
+namespace {
+
+bool defaultLight(const Light& l) {
+    const Light d;
+    return l.type == d.type && l.position == d.position && l.direction == d.direction &&
+           l.intensity == d.intensity && l.halfAngleDegrees == d.halfAngleDegrees && l.range == d.range &&
+           l.radius == d.radius && l.shadowViewProjection == d.shadowViewProjection &&
+           l.cubeFaceViewProjections == d.cubeFaceViewProjections && l.shadowMapSize == d.shadowMapSize &&
+           l.shadowReversedZ == d.shadowReversedZ;
+}
+
+bool identifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '['; }
+
+}  // namespace
+
+FrameDescription withLight(const FrameDescription& frame, size_t i) {
+    FrameDescription f = frame;
+    f.lights.clear();
+    f.light = frame.lights[i].light;
+    f.shadowMap = frame.lights[i].shadowMap;
+    f.lightColor = frame.lights[i].lightColor;
+    return f;
+}
+
+std::string lightMessage(const std::string& message, size_t i) {
+    const std::string prefix = "lights[" + std::to_string(i) + "].";
+    const std::string lead = "lightscatter: ";
+    std::string m = message.rfind(lead, 0) == 0 ? message.substr(lead.size()) : message;
+    std::string out;
+    for (size_t k = 0; k < m.size();) {
+        const bool start = k == 0 || !identifierChar(m[k - 1]);
+        bool matched = false;
+        for (const char* field : {"light.", "shadowMap", "lightColor"}) {
+            const std::string f = field;
+            if (!start || m.compare(k, f.size(), f) != 0) continue;
+            const size_t end = k + f.size();
+            // "shadowMap" and "lightColor" as whole names only (not "shadowMapSize").
+            if (f.back() != '.' && end < m.size() && std::isalnum(static_cast<unsigned char>(m[end]))) continue;
+            out += prefix + f;
+            k = end;
+            matched = true;
+            break;
+        }
+        if (!matched) out += m[k++];
+    }
+    return lead + "lights[" + std::to_string(i) + "]: " + out;
+}
+
+std::vector<FrameSetup> setupLights(const FrameDescription& frame, bool withImages) {
+    std::string both;
+    if (!defaultLight(frame.light)) both = "light";
+    if (frame.shadowMap) both += both.empty() ? "shadowMap" : ", shadowMap";
+    if (frame.lightColor) both += both.empty() ? "lightColor" : ", lightColor";
+    if (!both.empty())
+        fail("lights holds " + std::to_string(frame.lights.size()) + " lights and " + both +
+             " is given too: give the single light (light, shadowMap, lightColor) or the list (lights), "
+             "never both");
+    // The frame without its lights (an unshadowed default light, which breaks no rule): whatever
+    // fails here is not about a light.
+    FrameDescription bare = frame;
+    bare.lights.clear();
+    setupFrame(bare, withImages);
+    std::vector<FrameSetup> setups;
+    setups.reserve(frame.lights.size());
+    for (size_t i = 0; i < frame.lights.size(); ++i) {
+        try {
+            setups.push_back(setupFrame(withLight(frame, i), withImages));
+        } catch (const InvalidInput& e) {
+            throw InvalidInput(lightMessage(e.what(), i));
+        }
+    }
+    return setups;
 }
 
 }  // namespace lightscatter::detail

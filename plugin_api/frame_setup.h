@@ -3,6 +3,9 @@
 // broken is an InvalidInput naming the field; nothing is recorded before this passes.
 #include <vulkan/vulkan.h>
 
+#include <string>
+#include <vector>
+
 #include "beam_tree/occluders.h"
 #include "shared/scattering_params.h"
 #include "lightscatter.h"
@@ -30,6 +33,17 @@ struct FrameSetup {
 
 // Checks everything; `withImages` false skips the image handles (the budget has none).
 FrameSetup setupFrame(const FrameDescription& frame, bool withImages = true);
+
+// Several lights (FrameDescription::lights): refuses a frame that gives both the list and the single
+// light's fields, checks the frame without its lights, then each light as the frame's one light
+// (errors name lights[i].field). Returns each light's setup, in order.
+std::vector<FrameSetup> setupLights(const FrameDescription& frame, bool withImages = true);
+// The frame with lights[i] as its single light (light, shadowMap, lightColor) and no list.
+FrameDescription withLight(const FrameDescription& frame, size_t i);
+// A message about the frame's single light, retold about lights[i]: "light.x" becomes
+// "lights[i].light.x", "shadowMap" and "lightColor" become "lights[i].shadowMap" and so on, and
+// the message says which light it is about.
+std::string lightMessage(const std::string& message, size_t i);
 
 void checkSettings(const Settings& s);
 void checkOccluders(const std::vector<Occluder>& occluders);

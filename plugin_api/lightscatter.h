@@ -302,6 +302,14 @@ struct DebugOptions {
     bool poisonTransients = false;
 };
 
+// One light of a frame of several (FrameDescription::lights): the light and its own images, with
+// the meaning and rules of FrameDescription::light, shadowMap and lightColor.
+struct LightInput {
+    Light light;
+    std::optional<ImageInput> shadowMap;   // the light's depth (sampled); 6 layers for a point light
+    std::optional<ImageInput> lightColor;  // optional light-space color (stained glass), sampled
+};
+
 struct FrameDescription {
     ImageInput depth;       // D16/D24/D32 (sampled); the camera's depth
     ImageInput color;       // linear HDR color (storage, R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT)
@@ -318,6 +326,14 @@ struct FrameDescription {
     std::vector<Occluder> occluders;
     Camera camera;
     Light light;
+    // Several lights: when not empty, these replace `light`, `shadowMap` and `lightColor` (which
+    // must then be left at their defaults; a frame giving both is refused naming the fields).
+    // Each light gets its own chain of nodes writing its own Lin; the Lins are summed and
+    // composited once: color = color * exp(-betaT S) + sum of Lin (inscatterOut receives the sum).
+    // A light whose volume misses the view adds no node. Errors name lights[i].field. With two
+    // lights or more only epipolar and brute-force (and auto, which picks one of them for the
+    // whole frame) build chains so far; the other methods refuse the frame.
+    std::vector<LightInput> lights;
     Medium medium;
     Method method = Method::Epipolar;
     Profile profile = Profile::Balanced;
@@ -395,6 +411,14 @@ struct Budget {
 // adds the plugin's tiling noise).
 LIGHTSCATTER_API Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
                                uint32_t shadowMapSize, LightType light = LightType::Spot,
+                               const Settings* custom = nullptr, Method method = Method::Epipolar);
+
+// The budget of a frame of several lights, one entry of `lights` per light (a directional or spot
+// light with a shadow map of shadowMapSize, a point light without one): epipolar only so far.
+// Transients of the lights' chains alias each other (the chains run one after the other); each
+// point or spot light adds its own point-light table.
+LIGHTSCATTER_API Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
+                               uint32_t shadowMapSize, const std::vector<LightType>& lights,
                                const Settings* custom = nullptr, Method method = Method::Epipolar);
 
 // The device extensions the plugin needs; add them to VkDeviceCreateInfo::ppEnabledExtensionNames.

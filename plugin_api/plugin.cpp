@@ -77,7 +77,21 @@ struct Plugin::Impl {
     }
 
     void prepare(const FrameDescription& frame) {
-        const detail::FrameSetup setup = detail::setupFrame(frame);  // throws before any recording
+        if (frame.lights.size() >= 2) return prepareLights(frame);
+        if (frame.lights.size() == 1) {
+            // One light in the list is the single light: every method takes it.
+            detail::setupLights(frame);
+            try {
+                prepareOne(detail::withLight(frame, 0));
+            } catch (const InvalidInput& e) {
+                throw InvalidInput(detail::lightMessage(e.what(), 0));
+            }
+            return;
+        }
+        prepareOne(frame);
+    }
+
+    static ls::ScatterSpec scatterSpec(const detail::FrameSetup& setup) {
         ls::ScatterSpec spec;
         spec.light = setup.light.kind;
         spec.isotropicMie = setup.medium.isotropicMie;
@@ -87,6 +101,147 @@ struct Plugin::Impl {
         spec.bilinearShadow = setup.epipolar.bilinearShadow;
         spec.simplifiedModel = setup.simplified;
         spec.cubeShadow = setup.shadowed && setup.light.kind == ls::LightKind::Point;
+        return spec;
+    }
+
+    // One light's constants and shader options.
+    static void fillShared(ls::SharedState& s, const detail::FrameSetup& setup) {
+        const ls::TableLayout table = ls::tableLayoutFor(setup.medium, setup.light.radius, kTableWidth, kTableHeight);
+        s.spec = scatterSpec(setup);
+        s.constants = ls::makeFrameConstants(setup.camera, setup.light, setup.medium, setup.epipolar, setup.screen, table);
+        // Seed 004's I / (a1 r^2 + a0) as (I / a1) / (r^2 + a0 / a1); the floor keeps a ray through
+        // the light finite when a0 is 0, as the floor on r0 does for the full model; the ceilings
+        // keep a denormal a1 from making them infinite.
+        const float a1 = setup.settings.simplifiedA1;
+        s.constants.simplified = {std::clamp(setup.settings.simplifiedA0 / a1, 1e-12f, 1e30f),
+                                  std::min(1.0f / a1, 1e30f), 0.0f, 0.0f};
+    }
+
+    static ImportState tableState() {
+        return {VK_FORMAT_R32G32B32A32_SFLOAT, {kTableWidth, kTableHeight},
+                VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    }
+
+    // Builds the graph for `c` unless the current one was built for it.
+    void ensureGraph(const GraphConfig& c) {
+        if (config && *config == c) return;
+        // The old graph's memory goes first (the new one may need it); until the new one is
+        // complete there is none, so that a failure leaves nothing half-built behind.
+        executor.reset();
+        config.reset();
+        ++graphGeneration;
+        FrameGraph built = detail::buildFrameGraph(c, shared, slicePlacement, beamFrame, lightShared);
+        rg::CompileOptions options;
+        options.poisonTransients = c.poisonTransients;
+        rg::CompiledGraph compiled = rg::compile(*built.graph, caps, options);
+        fg = std::move(built);
+        executor = std::make_unique<rg::GraphExecutor>(device, *fg.graph, std::move(compiled));
+        rehearsed = false;
+        config = c;
+    }
+
+    void rehearseOnce() {
+        if (rehearsed) return;
+        // Passes build their pipelines on first use: do that on a command buffer of our own.
+        try {
+            executor->rehearse();
+        } catch (...) {
+            executor.reset();
+            config.reset();
+            throw;
+        }
+        rehearsed = true;
+    }
+
+    // Several lights: one method for the frame, one chain per light that reaches the view.
+    void prepareLights(const FrameDescription& frame) {
+        const std::vector<detail::FrameSetup> setups = detail::setupLights(frame);  // throws first
+        const size_t n = setups.size();
+        detail::MethodChoice choice;
+        choice.method = frame.method;
+        if (frame.method == Method::Auto) {
+            bool cube = false;
+            for (const auto& s : setups) cube = cube || (s.shadowed && s.light.kind == ls::LightKind::Point);
+            choice.method = cube ? Method::BruteForce : Method::Epipolar;
+            choice.reason = std::to_string(n) + " lights: " +
+                            (cube ? "brute-force, the only method that samples a point light's cube shadow map"
+                                  : "epipolar sampling per shadowed light");
+        } else if (frame.method != Method::Epipolar && frame.method != Method::BruteForce) {
+            throw InvalidInput(std::string("lightscatter: method ") + methodName(frame.method) +
+                               " renders one light per frame so far; lights holds " + std::to_string(n) +
+                               " (use epipolar, brute-force or auto, or one light)");
+        }
+        std::vector<bool> touches(n);
+        bool anyTouches = false;
+        for (size_t i = 0; i < n; ++i) {
+            touches[i] = detail::lightTouchesView(setups[i].camera, setups[i].light, setups[i].medium);
+            anyTouches = anyTouches || touches[i];
+            try {
+                detail::chooseMethod(choice.method, setups[i], touches[i]);
+            } catch (const InvalidInput& e) {
+                throw InvalidInput(detail::lightMessage(e.what(), i));
+            }
+        }
+        lastChoice = choice;
+        const detail::FrameSetup& first = setups[0];
+        GraphConfig c;
+        c.method = choice.method;
+        c.touchesView = anyTouches;
+        c.extinction = glm::any(glm::greaterThan(first.medium.betaT(), glm::vec3(0.0f)));
+        c.fixup = first.epipolar.fixup;
+        c.slices = first.epipolar.slices;
+        c.samples = first.epipolar.samples;
+        c.screen = first.screen;
+        c.depthStencil = depthStencil;
+        c.depth = state(frame.depth);
+        c.color = state(frame.color);
+        if (frame.inscatterOut) c.inscatterOut = state(*frame.inscatterOut);
+        c.poisonTransients = frame.debug.poisonTransients || poisonFromEnvironment();
+        c.reversedZ = first.camera.reversedZ;
+        while (lightShared.size() < n) lightShared.push_back(ls::SharedState::sibling(*shared));
+        lightTables.resize(std::max(lightTables.size(), n));
+        tableRefilled = false;
+        for (size_t i = 0; i < n; ++i) {
+            const detail::FrameSetup& s = setups[i];
+            detail::LightChainConfig l;
+            l.light = s.light.kind;
+            l.shadowed = s.shadowed;
+            l.touchesView = touches[i];
+            l.minMaxTrees = s.epipolar.minMaxTrees;
+            l.shadowMapSize = s.light.shadowMapSize;
+            if (frame.lights[i].shadowMap) l.shadowMap = state(*frame.lights[i].shadowMap);
+            if (frame.lights[i].lightColor) l.lightColor = state(*frame.lights[i].lightColor);
+            fillShared(*lightShared[i], s);
+            if (touches[i] && l.light != ls::LightKind::Directional) {
+                l.table = tableState();
+                if (!lightTables[i])
+                    lightTables[i] = std::make_unique<detail::PointTable>(device, kTableWidth, kTableHeight);
+                tableRefilled = lightTables[i]->update(lightShared[i]) || tableRefilled;
+            }
+            c.lights.push_back(l);
+        }
+        beamFrameBuilt = false;
+        noiseMade = false;
+        ensureGraph(c);
+        fg.graph->updateImport(fg.depth, detail::importDescription(frame.depth));
+        fg.graph->updateImport(fg.color, detail::importDescription(frame.color));
+        if (fg.inscatterOut.valid())
+            fg.graph->updateImport(fg.inscatterOut, detail::importDescription(*frame.inscatterOut));
+        for (size_t i = 0; i < n; ++i) {
+            const auto& images = fg.lights[i];
+            if (images.shadowMap.valid())
+                fg.graph->updateImport(images.shadowMap, detail::importDescription(*frame.lights[i].shadowMap));
+            if (images.lightColor.valid())
+                fg.graph->updateImport(images.lightColor, detail::importDescription(*frame.lights[i].lightColor));
+            if (images.table.valid())
+                fg.graph->updateImport(images.table, detail::persistentImport(c.lights[i].table, lightTables[i]->image()));
+        }
+        rehearseOnce();
+    }
+
+    void prepareOne(const FrameDescription& frame) {
+        const detail::FrameSetup setup = detail::setupFrame(frame);  // throws before any recording
 
         const bool touchesView = detail::lightTouchesView(setup.camera, setup.light, setup.medium);
         const detail::MethodChoice choice = detail::chooseMethod(frame.method, setup, touchesView);
@@ -127,22 +282,9 @@ struct Plugin::Impl {
         const bool needsTable = c.touchesView && c.light != ls::LightKind::Directional &&
                                 (c.method == Method::Epipolar || c.method == Method::BruteForce ||
                                  c.method == Method::BeamTreeAnalytic);
-        if (needsTable)
-            c.table = {VK_FORMAT_R32G32B32A32_SFLOAT, {kTableWidth, kTableHeight},
-                       VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+        if (needsTable) c.table = tableState();
 
-        const ls::TableLayout table =
-            ls::tableLayoutFor(setup.medium, setup.light.radius, kTableWidth, kTableHeight);
-        shared->spec = spec;
-        shared->constants = ls::makeFrameConstants(setup.camera, setup.light, setup.medium,
-                                                   setup.epipolar, setup.screen, table);
-        // Seed 004's I / (a1 r^2 + a0) as (I / a1) / (r^2 + a0 / a1); the floor keeps a ray through
-        // the light finite when a0 is 0, as the floor on r0 does for the full model; the ceilings
-        // keep a denormal a1 from making them infinite.
-        const float a1 = setup.settings.simplifiedA1;
-        shared->constants.simplified = {std::clamp(setup.settings.simplifiedA0 / a1, 1e-12f, 1e30f),
-                                        std::min(1.0f / a1, 1e30f), 0.0f, 0.0f};
+        fillShared(*shared, setup);
         if (c.method == Method::Slices) {
             ls::SliceSettings ss;
             ss.planes = setup.settings.slicePlanes;
@@ -181,21 +323,7 @@ struct Plugin::Impl {
             tableRefilled = false;
         }
 
-        if (!config || !(*config == c)) {
-            // The old graph's memory goes first (the new one may need it); until the new one is
-            // complete there is none, so that a failure leaves nothing half-built behind.
-            executor.reset();
-            config.reset();
-            ++graphGeneration;
-            FrameGraph built = detail::buildFrameGraph(c, shared, slicePlacement, beamFrame);
-            rg::CompileOptions options;
-            options.poisonTransients = c.poisonTransients;
-            rg::CompiledGraph compiled = rg::compile(*built.graph, caps, options);
-            fg = std::move(built);
-            executor = std::make_unique<rg::GraphExecutor>(device, *fg.graph, std::move(compiled));
-            rehearsed = false;
-            config = c;
-        }
+        ensureGraph(c);
         // This frame's handles and stages; layouts are part of the configuration.
         fg.graph->updateImport(fg.depth, detail::importDescription(frame.depth));
         fg.graph->updateImport(fg.color, detail::importDescription(frame.color));
@@ -212,17 +340,7 @@ struct Plugin::Impl {
             }
         }
         if (fg.table.valid()) fg.graph->updateImport(fg.table, detail::persistentImport(c.table, pointTable->image()));
-        if (!rehearsed) {
-            // Passes build their pipelines on first use: do that on a command buffer of our own.
-            try {
-                executor->rehearse();
-            } catch (...) {
-                executor.reset();
-                config.reset();
-                throw;
-            }
-            rehearsed = true;
-        }
+        rehearseOnce();
     }
 
     // Numbers the frame just prepared and keeps what its report will need.
@@ -294,6 +412,10 @@ struct Plugin::Impl {
     // This frame's beam tree triangles (beam-tree-analytic); the nodes upload them when they record.
     std::shared_ptr<ls::BeamTreeFrame> beamFrame = std::make_shared<ls::BeamTreeFrame>();
     bool beamFrameBuilt = false;
+    // Several lights: each one's constants and options (over `shared`'s pipelines), and each
+    // point or spot light's table.
+    std::vector<ls::Shared> lightShared;
+    std::vector<std::unique_ptr<detail::PointTable>> lightTables;
     std::optional<GraphConfig> config;
     bool rehearsed = false;
     detail::MethodChoice lastChoice;  // of the frame prepared last

@@ -25,7 +25,7 @@ RenderGraph::RenderGraph() : id_(gNextGraphId.fetch_add(1)) {}
 
 ImageRef RenderGraph::createImage(std::string name, const ImageDesc& desc) {
     ResourceDecl r;
-    r.name = std::move(name);
+    r.name = std::move(name) + nameSuffix_;
     r.image = desc;
     resources_.push_back(std::move(r));
     return ImageRef{id_, static_cast<uint32_t>(resources_.size() - 1), 0};
@@ -33,7 +33,7 @@ ImageRef RenderGraph::createImage(std::string name, const ImageDesc& desc) {
 
 BufferRef RenderGraph::createBuffer(std::string name, const BufferDesc& desc) {
     ResourceDecl r;
-    r.name = std::move(name);
+    r.name = std::move(name) + nameSuffix_;
     r.buffer = true;
     r.bufferDesc = desc;
     resources_.push_back(std::move(r));
@@ -42,7 +42,7 @@ BufferRef RenderGraph::createBuffer(std::string name, const BufferDesc& desc) {
 
 ImageRef RenderGraph::importImage(std::string name, const ImportedImage& image) {
     ResourceDecl r;
-    r.name = std::move(name);
+    r.name = std::move(name) + nameSuffix_;
     r.imported = true;
     r.importedImage = image;
     r.image = ImageDesc::absolute(image.format, image.extent.width, image.extent.height);
@@ -54,7 +54,7 @@ ImageRef RenderGraph::importImage(std::string name, const ImportedImage& image) 
 
 BufferRef RenderGraph::importBuffer(std::string name, const ImportedBuffer& buffer) {
     ResourceDecl r;
-    r.name = std::move(name);
+    r.name = std::move(name) + nameSuffix_;
     r.buffer = true;
     r.imported = true;
     r.importedBuffer = buffer;
@@ -65,7 +65,7 @@ BufferRef RenderGraph::importBuffer(std::string name, const ImportedBuffer& buff
 
 PassBuilder RenderGraph::addPass(std::string name, PassType type) {
     PassDecl p;
-    p.name = std::move(name);
+    p.name = std::move(name) + nameSuffix_;
     p.type = type;
     passes_.push_back(std::move(p));
     return PassBuilder(*this, static_cast<uint32_t>(passes_.size() - 1));

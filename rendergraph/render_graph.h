@@ -80,6 +80,10 @@ public:
     void markOutput(ImageRef image);
     void markOutput(BufferRef buffer);
 
+    // Appended to the name of every resource and pass declared from now on (empty: none), so that
+    // one builder can add the same nodes more than once (a chain per light: " (light 1)").
+    void setNameSuffix(std::string suffix) { nameSuffix_ = std::move(suffix); }
+
     void setScreenExtent(VkExtent2D extent) { screen_ = extent; }
     VkExtent2D screenExtent() const { return screen_; }
 
@@ -101,6 +105,7 @@ private:
     friend class PassBuilder;
     uint32_t id_;
     VkExtent2D screen_{0, 0};
+    std::string nameSuffix_;
     std::vector<ResourceDecl> resources_;
     std::vector<PassDecl> passes_;
 };

@@ -108,7 +108,12 @@ struct SceneDesc {
     std::string path;                   // the SCENE.json itself
     std::vector<ModelInstance> models;  // "gltf" first (identity), then "models" in order
     CameraDesc camera;
-    LightDesc light;
+    LightDesc light;                    // "light", or the first of "lights"
+    std::vector<LightDesc> moreLights;  // the rest of "lights" (a sun or spot; a point light unshadowed)
+    bool lightList = false;             // the scene gave "lights" (its fields are named lights[i])
+    size_t lightCount() const { return 1 + moreLights.size(); }
+    LightDesc& lightAt(size_t i) { return i == 0 ? light : moreLights.at(i - 1); }
+    const LightDesc& lightAt(size_t i) const { return i == 0 ? light : moreLights.at(i - 1); }
     MediumDesc medium;
     glm::vec3 skyColor{0.0f};           // radiance of the sky behind everything (linear)
     glm::vec3 ambient{0.0f};            // irradiance added to every surface, W/m^2 (linear)

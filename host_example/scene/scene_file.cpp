@@ -48,11 +48,15 @@ class SceneReader {
         const json root = parse();
         if (!root.is_object()) fail("the top level must be a JSON object");
         checkKeys(root, "",
-                  {"gltf", "models", "camera", "light", "medium", "sky", "ambient", "exposure"});
+                  {"gltf", "models", "camera", "light", "lights", "medium", "sky", "ambient", "exposure"});
+        if (member(root, "light") && member(root, "lights"))
+            fail("\"light\" and \"lights\" are both given: a scene has one light (\"light\") or a list of "
+                 "them (\"lights\"), never both");
         if (const json* v = member(root, "gltf")) scene.models.push_back({modelPath(*v, "gltf")});
         if (const json* v = member(root, "models")) readModels(*v, scene.models);
         if (const json* v = member(root, "camera")) readCamera(*v, scene.camera);
-        if (const json* v = member(root, "light")) readLight(*v, scene.light);
+        if (const json* v = member(root, "light")) readLight(*v, scene.light, "light");
+        if (const json* v = member(root, "lights")) readLights(*v, scene);
         if (const json* v = member(root, "medium")) readMedium(*v, scene.medium);
         if (const json* v = member(root, "sky")) {
             checkKeys(*v, "sky", {"color"});
@@ -307,12 +311,32 @@ class SceneReader {
         if (!(sine > 1e-6)) fail("camera.up is parallel to the view direction");
     }
 
-    void readLight(const json& v, LightDesc& light) const {
-        checkKeys(v, "light",
+    // "lights": an array of light objects, the first one the scene's `light`.
+    void readLights(const json& v, SceneDesc& scene) const {
+        if (!v.is_array() || v.empty()) fail("lights must be a non-empty array of light objects");
+        scene.lightList = true;
+        for (size_t i = 0; i < v.size(); ++i) {
+            const std::string name = "lights[" + std::to_string(i) + "]";
+            if (!v[i].is_object()) fail(name + " must be an object");
+            LightDesc light;
+            readLight(v[i], light, name);
+            // The host draws a point light's cube shadow map for a scene's single light only.
+            if (v.size() > 1 && light.type == LightKind::Point && light.shadowMapSize > 0)
+                fail(name + ".shadowMapSize: a point light's cube shadow map is drawn for a scene of one light "
+                            "only; with several, give the point light shadowMapSize 0");
+            if (i == 0)
+                scene.light = light;
+            else
+                scene.moreLights.push_back(light);
+        }
+    }
+
+    void readLight(const json& v, LightDesc& light, const std::string& name) const {
+        checkKeys(v, name,
                   {"type", "position", "direction", "intensity", "halfAngleDegrees", "range",
                    "radius", "shadowMapSize"});
         if (const json* x = member(v, "type")) {
-            light.type = oneOf<LightKind>(*x, "light.type",
+            light.type = oneOf<LightKind>(*x, name + ".type",
                                           {{"directional", LightKind::Directional},
                                            {"spot", LightKind::Spot},
                                            {"point", LightKind::Point}});
@@ -320,20 +344,20 @@ class SceneReader {
         // A point light's shadow map is a cube of six faces, which only brute-force samples: it
         // has one only when the scene asks (shadowMapSize > 0).
         if (light.type == LightKind::Point) light.shadowMapSize = 0;
-        if (const json* x = member(v, "position")) light.position = vec3(*x, "light.position");
+        if (const json* x = member(v, "position")) light.position = vec3(*x, name + ".position");
         if (const json* x = member(v, "direction")) {
-            light.direction = direction(*x, "light.direction");
+            light.direction = direction(*x, name + ".direction");
         }
         if (const json* x = member(v, "intensity")) {
-            light.intensity = nonNegativeVec3(*x, "light.intensity");
+            light.intensity = nonNegativeVec3(*x, name + ".intensity");
         }
         if (const json* x = member(v, "halfAngleDegrees")) {
-            light.halfAngleDegrees = inRange(*x, "light.halfAngleDegrees", 0.0, 89.0, true);
+            light.halfAngleDegrees = inRange(*x, name + ".halfAngleDegrees", 0.0, 89.0, true);
         }
-        if (const json* x = member(v, "range")) light.range = positive(*x, "light.range");
-        if (const json* x = member(v, "radius")) light.radius = positive(*x, "light.radius");
+        if (const json* x = member(v, "range")) light.range = positive(*x, name + ".range");
+        if (const json* x = member(v, "radius")) light.radius = positive(*x, name + ".radius");
         if (const json* x = member(v, "shadowMapSize")) {
-            light.shadowMapSize = shadowMapSize(*x, "light.shadowMapSize");
+            light.shadowMapSize = shadowMapSize(*x, name + ".shadowMapSize");
         }
     }
 

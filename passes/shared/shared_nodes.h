@@ -24,6 +24,12 @@ struct CompositeOutputs {
 CompositeOutputs addComposite(rg::RenderGraph& graph, const NodeInputs& in, rg::ImageRef color,
                               rg::ImageRef cameraZ, rg::ImageRef lin, rg::ImageRef inscatterOut);
 
+// Several lights: adds one more light's Lin into the color, after the first light's composite
+// (which applied the extinction), and into `inscatterOut` when it is valid (which then holds the
+// sum). Each light's Lin is dead after it, so the next light's chain may reuse its memory.
+CompositeOutputs addInscatter(rg::RenderGraph& graph, const NodeInputs& in, rg::ImageRef color, rg::ImageRef lin,
+                              rg::ImageRef inscatterOut);
+
 // Fills the point-light table (R32G32B32A32_SFLOAT) for the current medium and light radius.
 rg::ImageRef addPointTable(rg::RenderGraph& graph, const Shared& shared, rg::BufferRef constants,
                            rg::ImageRef table);

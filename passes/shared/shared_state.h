@@ -5,6 +5,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "frame_constants.h"
 #include "rendergraph/pipeline.h"
@@ -41,13 +42,37 @@ private:
     std::map<std::string, rg::Pipeline> pipelines_;
 };
 
-struct SharedState {
-    explicit SharedState(const rg::Device& d) : device(d), samplers(d), pipelines(d) {}
-    const rg::Device& device;
+// What every light's state shares: the samplers and the pipelines built so far.
+struct SharedResources {
+    explicit SharedResources(const rg::Device& d) : samplers(d), pipelines(d) {}
     rg::Samplers samplers;
     PipelineLibrary pipelines;
+};
+
+// One light's view of the shared state: its constants and shader options, over the resources
+// every light shares. A frame of several lights has one per light (sibling()).
+struct SharedState {
+    explicit SharedState(const rg::Device& d)
+        : resources(std::make_shared<SharedResources>(d)),
+          device(d),
+          samplers(resources->samplers),
+          pipelines(resources->pipelines) {}
+    SharedState(const SharedState&) = delete;
+    SharedState& operator=(const SharedState&) = delete;
+    // Another light's state over the same device, samplers and pipelines.
+    static std::shared_ptr<SharedState> sibling(const SharedState& s) {
+        return std::shared_ptr<SharedState>(new SharedState(s.resources, s.device));
+    }
+    std::shared_ptr<SharedResources> resources;
+    const rg::Device& device;
+    rg::Samplers& samplers;
+    PipelineLibrary& pipelines;
     FrameConstants constants{};
     ScatterSpec spec;
+
+private:
+    SharedState(std::shared_ptr<SharedResources> r, const rg::Device& d)
+        : resources(std::move(r)), device(d), samplers(resources->samplers), pipelines(resources->pipelines) {}
 };
 
 using Shared = std::shared_ptr<SharedState>;

@@ -57,6 +57,27 @@ TEST(Cli, RenderWritesPngLinAndTimings) {
     EXPECT_GT(j["totalMilliseconds"].get<double>(), 0.0);
 }
 
+// A sun and two spots ("lights") in one frame: epipolar and brute force, Lin summed into --inscatter.
+TEST(Cli, RenderASunAndTwoSpots) {
+    for (const char* method : {"epipolar", "brute-force", "auto"}) {
+        const auto r = run("render " + scene("atrium_lights") + " --size 48x27 --method " + method +
+                           " --out lights.png --inscatter lights.exr --timings lights.json --validation");
+        ASSERT_EQ(r.exitCode, 0) << method << ": " << r.out;
+        std::ifstream t(path("lights.json"));
+        const auto j = nlohmann::json::parse(t);
+        EXPECT_NE(j["reason"].get<std::string>().find("3 lights"), std::string::npos) << j["reason"];
+        const host::FloatImage lin = host::readExr(path("lights.exr"));
+        float most = 0;
+        for (size_t i = 0; i < lin.rgba.size(); ++i)
+            if (i % 4 != 3) most = std::max(most, lin.rgba[i]);
+        EXPECT_GT(most, 0.0f);
+    }
+    // Several lights run epipolar or brute-force only so far.
+    const auto slices = run("render " + scene("atrium_lights") + " --size 48x27 --method slices --out s.png");
+    EXPECT_NE(slices.exitCode, 0);
+    EXPECT_NE(slices.out.find("method slices renders one light per frame"), std::string::npos) << slices.out;
+}
+
 TEST(Cli, RenderEachSceneWithEachMethod) {
     for (const char* name : {"atrium", "window_room", "engine_spot", "point_fog"})
         for (const char* method : {"epipolar", "brute-force", "cone-march", "slices", "auto"}) {

@@ -287,7 +287,7 @@ TEST_F(SceneFileTest, ValuesAreCheckedAsTheFloatsTheyBecome) {
 
 TEST_F(SceneFileTest, UnknownKeysAreRefusedWithTheKnownOnes) {
     EXPECT_EQ(errorFor(R"({"camra": {}})"),
-              "unknown key 'camra' (known keys: gltf, models, camera, light, medium, sky, ambient, "
+              "unknown key 'camra' (known keys: gltf, models, camera, light, lights, medium, sky, ambient, "
               "exposure)");
     EXPECT_EQ(
         errorFor(R"({"camera": {"fov": 60}})"),
@@ -401,3 +401,38 @@ TEST_F(SceneFileTest, Directions) {
 }
 
 }  // namespace
+
+// "lights": an array of light objects beside the single "light", one of the two.
+TEST_F(SceneFileTest, ALightListGivesEveryLight) {
+    const std::string file = write("lights.json", R"({"lights": [
+        {"type": "directional", "direction": [0, -1, 0], "shadowMapSize": 512},
+        {"type": "spot", "position": [1, 5, 0], "halfAngleDegrees": 20, "shadowMapSize": 256},
+        {"type": "point", "position": [0, 2, 0]}]})");
+    const host::SceneDesc s = host::loadSceneFile(file);
+    EXPECT_TRUE(s.lightList);
+    ASSERT_EQ(s.lightCount(), 3u);
+    EXPECT_EQ(s.light.type, host::LightKind::Directional);
+    EXPECT_EQ(s.lightAt(1).type, host::LightKind::Spot);
+    EXPECT_EQ(s.lightAt(1).shadowMapSize, 256u);
+    EXPECT_FLOAT_EQ(s.lightAt(1).halfAngleDegrees, 20.0f);
+    EXPECT_EQ(s.lightAt(2).type, host::LightKind::Point);
+    EXPECT_EQ(s.lightAt(2).shadowMapSize, 0u);
+}
+
+TEST_F(SceneFileTest, ALightListHasItsOwnRules) {
+    EXPECT_EQ(errorFor(R"({"light": {"type": "spot"}, "lights": [{"type": "spot"}]})"),
+              "\"light\" and \"lights\" are both given: a scene has one light (\"light\") or a list of them "
+              "(\"lights\"), never both");
+    EXPECT_EQ(errorFor(R"({"lights": []})"), "lights must be a non-empty array of light objects");
+    EXPECT_EQ(errorFor(R"({"lights": {"type": "spot"}})"), "lights must be a non-empty array of light objects");
+    EXPECT_EQ(errorFor(R"({"lights": [{"type": "spot"}, 3]})"), "lights[1] must be an object");
+    EXPECT_EQ(errorFor(R"({"lights": [{"type": "spot"}, {"type": "spot", "halfAngleDegrees": 95}]})")
+                  .rfind("lights[1].halfAngleDegrees", 0),
+              0u);
+    EXPECT_EQ(errorFor(R"({"lights": [{"type": "spot"}, {"type": "spot", "colour": 1}]})").rfind("lights[1]: unknown key 'colour'", 0), 0u);
+    EXPECT_EQ(errorFor(R"({"lights": [{"type": "spot"}, {"type": "point", "shadowMapSize": 64}]})").rfind(
+                  "lights[1].shadowMapSize: a point light's cube shadow map", 0),
+              0u);
+    // One point light with a cube map in a list of one is the single light.
+    EXPECT_EQ(errorFor(R"({"lights": [{"type": "point", "shadowMapSize": 64}]})"), "(no error)");
+}

@@ -3,6 +3,7 @@
 
 #include <cstdio>
 #include <set>
+#include <vector>
 
 #include "lightscatter.h"
 
@@ -83,6 +84,36 @@ TEST(Budget, BadRequestsAreRefused) {
     } catch (const lightscatter::InvalidInput& e) {
         EXPECT_NE(std::string(e.what()).find("custom.slices"), std::string::npos);
     }
+}
+
+// Several lights: the chains run one after the other, so the second light's transients reuse the
+// first's memory; the peak with two lights stays well below twice the peak with one.
+TEST(Budget, LightsAliasEachOther) {
+    using lightscatter::LightType;
+    const auto s = lightscatter::profileSettings(Profile::Balanced);
+    const auto one = lightscatter::budget(Profile::Balanced, 2560, 1600, s.shadowMapSize, LightType::Spot);
+    const auto two = lightscatter::budget(Profile::Balanced, 2560, 1600, s.shadowMapSize,
+                                          std::vector<LightType>{LightType::Spot, LightType::Spot});
+    const auto three = lightscatter::budget(Profile::Balanced, 2560, 1600, s.shadowMapSize,
+                                            std::vector<LightType>{LightType::Directional, LightType::Spot, LightType::Point});
+    std::printf("balanced 2560x1600: one spot peak %.1f MiB (total %.1f), two spots %.1f (total %.1f), "
+                "sun+spot+point %.1f (total %.1f)\n",
+                static_cast<double>(one.peakBytes) / 1048576.0, static_cast<double>(one.totalBytes) / 1048576.0,
+                static_cast<double>(two.peakBytes) / 1048576.0, static_cast<double>(two.totalBytes) / 1048576.0,
+                static_cast<double>(three.peakBytes) / 1048576.0, static_cast<double>(three.totalBytes) / 1048576.0);
+    EXPECT_LT(two.peakBytes, 2 * one.peakBytes);
+    EXPECT_GT(two.peakBytes, one.peakBytes);
+    EXPECT_GT(two.totalBytes, two.peakBytes);  // aliasing saves something
+    // One light in the list is the single light's budget.
+    EXPECT_EQ(lightscatter::budget(Profile::Balanced, 2560, 1600, s.shadowMapSize, std::vector<LightType>{LightType::Spot})
+                  .peakBytes,
+              one.peakBytes);
+    EXPECT_THROW(lightscatter::budget(Profile::Balanced, 256, 256, 256, std::vector<LightType>{}),
+                 lightscatter::InvalidInput);
+    EXPECT_THROW(lightscatter::budget(Profile::Balanced, 256, 256, 256,
+                                      std::vector<LightType>{LightType::Spot, LightType::Spot}, nullptr,
+                                      lightscatter::Method::Slices),
+                 lightscatter::InvalidInput);
 }
 
 TEST(Names, MethodsAndProfilesRoundTrip) {

@@ -20,22 +20,30 @@ uint64_t recordLightShafts(Engine& engine) {
     frame.color = {engine.hdrColor, VK_FORMAT_R16G16B16A16_SFLOAT, engine.extent,
                    VK_IMAGE_USAGE_STORAGE_BIT, VK_IMAGE_LAYOUT_GENERAL};
     frame.color.finalLayout = VK_IMAGE_LAYOUT_GENERAL;
-    frame.shadowMap = lightscatter::ImageInput{engine.shadowMap, VK_FORMAT_D32_SFLOAT, {1024, 1024},
-                                               VK_IMAGE_USAGE_SAMPLED_BIT,
-                                               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    frame.shadowMap->finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
 
     // The near and far planes are read from the projection.
     frame.camera.view = engine.view;
     frame.camera.projection = engine.projection;
 
-    frame.light.type = lightscatter::LightType::Spot;
-    frame.light.position = {0.0f, 6.0f, 0.0f};
-    frame.light.direction = {0.0f, -1.0f, 0.0f};
-    frame.light.intensity = {40.0f, 38.0f, 35.0f};  // W/sr
-    frame.light.halfAngleDegrees = 30.0f;
-    frame.light.shadowViewProjection = engine.lightViewProjection;
-    frame.light.shadowMapSize = 1024;
+    // The lights, each with its own shadow map (or none). One light may go in frame.light and
+    // frame.shadowMap instead.
+    lightscatter::LightInput spot;
+    spot.light.type = lightscatter::LightType::Spot;
+    spot.light.position = {0.0f, 6.0f, 0.0f};
+    spot.light.direction = {0.0f, -1.0f, 0.0f};
+    spot.light.intensity = {40.0f, 38.0f, 35.0f};  // W/sr
+    spot.light.halfAngleDegrees = 30.0f;
+    spot.light.shadowViewProjection = engine.lightViewProjection;
+    spot.light.shadowMapSize = 1024;
+    spot.shadowMap = lightscatter::ImageInput{engine.shadowMap, VK_FORMAT_D32_SFLOAT, {1024, 1024},
+                                              VK_IMAGE_USAGE_SAMPLED_BIT,
+                                              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    spot.shadowMap->finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    lightscatter::LightInput sun;  // no shadow map: its closed form
+    sun.light.type = lightscatter::LightType::Directional;
+    sun.light.direction = {0.3f, -1.0f, 0.2f};
+    sun.light.intensity = {0.5f, 0.5f, 0.45f};  // W/m^2
+    frame.lights = {spot, sun};
 
     frame.medium.betaM = {0.03f, 0.03f, 0.03f};  // 1/m
     frame.method = lightscatter::Method::Epipolar;

@@ -1,0 +1,168 @@
+// Several lights in one frame (FrameDescription::lights): the summed Lin of two lights equals the
+// sum of the two single-light renders, for epipolar and brute force; a light whose volume misses
+// the view adds no node; the refusals name the fields.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "plugin_fixture.h"
+
+using namespace plugin_test;
+using lightscatter::Method;
+
+namespace {
+
+FrameSpec sceneWith(lightscatter::Light light) {
+    FrameSpec s;
+    s.screen = {64, 48};
+    s.view = defaultView(s.screen);
+    s.light = light;
+    s.medium = fog();
+    return s;
+}
+
+lightscatter::Light secondSpot() {
+    lightscatter::Light l = spotOverGrille();
+    l.position = {-1.5f, 5.0f, 0.8f};
+    l.direction = {0.25f, -1.0f, -0.1f};
+    l.intensity = {15.0f, 25.0f, 40.0f};
+    l.halfAngleDegrees = 22.0f;
+    return l;
+}
+
+lightscatter::LightInput input(const lightscatter::FrameDescription& d) {
+    return {d.light, d.shadowMap, d.lightColor};
+}
+
+// `d` with its single light replaced by `lights`.
+lightscatter::FrameDescription withLights(lightscatter::FrameDescription d,
+                                          std::vector<lightscatter::LightInput> lights) {
+    d.lights = std::move(lights);
+    d.light = {};
+    d.shadowMap.reset();
+    d.lightColor.reset();
+    return d;
+}
+
+double peakOf(const std::vector<float>& v) {
+    double peak = 0;
+    for (size_t i = 0; i < v.size(); ++i)
+        if (i % 4 != 3) peak = std::max(peak, static_cast<double>(v[i]));
+    return peak;
+}
+
+std::string refusal(const lightscatter::FrameDescription& d) {
+    try {
+        plugin().render(d);
+    } catch (const lightscatter::InvalidInput& e) {
+        return e.what();
+    }
+    return "(accepted)";
+}
+
+}  // namespace
+
+class LightsGpu : public PluginGpuTest {
+  protected:
+    // Two spots' summed Lin against the sum of their single-light renders.
+    void checkSum(Method method) {
+        TestFrame a(dev(), sceneWith(spotOverGrille()));
+        TestFrame b(dev(), sceneWith(secondSpot()));
+        const auto settings = smallSettings(a.spec().screen);
+        const auto da = a.description(method, lightscatter::Profile::Custom, settings);
+        const auto db = b.description(method, lightscatter::Profile::Custom, settings);
+        a.resetColor();
+        plugin().render(da);
+        const auto linA = a.inscatter();
+        b.resetColor();
+        plugin().render(db);
+        const auto linB = b.inscatter();
+        a.resetColor();
+        const auto report = plugin().render(withLights(da, {input(da), input(db)}));
+        const auto sum = a.inscatter();
+        EXPECT_EQ(report.method, lightscatter::methodName(method));
+        ASSERT_GT(peakOf(linA), 0.0);
+        ASSERT_GT(peakOf(linB), 0.0);
+        const double peak = peakOf(sum);
+        double worst = 0;
+        for (size_t i = 0; i < sum.size(); ++i) {
+            if (i % 4 == 3) continue;
+            const double expected = static_cast<double>(linA[i]) + static_cast<double>(linB[i]);
+            worst = std::max(worst, std::fabs(static_cast<double>(sum[i]) - expected));
+        }
+        std::printf(
+            "%s: two spots' summed Lin vs the sum of single renders: max |diff| %.3g, peak %.3g\n",
+            lightscatter::methodName(method), worst, peak);
+        EXPECT_LE(worst, 1e-6 * peak);
+    }
+};
+
+TEST_F(LightsGpu, EpipolarTwoSpotsSumToTheSingleRenders) {
+    checkSum(Method::Epipolar);
+}
+TEST_F(LightsGpu, BruteForceTwoSpotsSumToTheSingleRenders) {
+    checkSum(Method::BruteForce);
+}
+
+TEST_F(LightsGpu, SunAndTwoSpotsInOneFrame) {
+    TestFrame a(dev(), sceneWith(spotOverGrille()));
+    TestFrame b(dev(), sceneWith(secondSpot()));
+    TestFrame sun(dev(), sceneWith(sunThroughGrille()));
+    const auto settings = smallSettings(a.spec().screen);
+    const auto da = a.description(Method::Auto, lightscatter::Profile::Custom, settings);
+    const auto db = b.description(Method::Auto, lightscatter::Profile::Custom, settings);
+    const auto ds = sun.description(Method::Auto, lightscatter::Profile::Custom, settings);
+    a.resetColor();
+    const auto report = plugin().render(withLights(da, {input(ds), input(da), input(db)}));
+    EXPECT_EQ(report.method, "epipolar");
+    EXPECT_NE(report.reason.find("3 lights"), std::string::npos) << report.reason;
+    const auto lin = a.inscatter();
+    EXPECT_GT(peakOf(lin), 0.0);
+    for (float v : lin) ASSERT_TRUE(std::isfinite(v));
+}
+
+TEST_F(LightsGpu, ALightThatMissesTheViewAddsNoNode) {
+    TestFrame a(dev(), sceneWith(spotOverGrille()));
+    const auto settings = smallSettings(a.spec().screen);
+    const auto da = a.description(Method::BruteForce, lightscatter::Profile::Custom, settings);
+    lightscatter::LightInput away{spotOverGrille(), std::nullopt, std::nullopt};
+    away.light.shadowMapSize = 0;
+    away.light.position = {0.0f, 500.0f, 0.0f};  // far above, pointing up, short range
+    away.light.direction = {0.0f, 1.0f, 0.0f};
+    away.light.range = 1.0f;
+    const auto one = plugin().render(withLights(da, {input(da), input(da)}));
+    const auto two = plugin().render(withLights(da, {input(da), away}));
+    EXPECT_NE(two.reason.find("1 reaching the view"), std::string::npos) << two.reason;
+    EXPECT_LT(two.passNames.size(), one.passNames.size());
+}
+
+TEST_F(LightsGpu, RefusalsNameTheFields) {
+    TestFrame a(dev(), sceneWith(spotOverGrille()));
+    const auto settings = smallSettings(a.spec().screen);
+    const auto da = a.description(Method::Epipolar, lightscatter::Profile::Custom, settings);
+    // Both the single light and the list.
+    auto both = withLights(da, {input(da), input(da)});
+    both.shadowMap = da.shadowMap;
+    const std::string b = refusal(both);
+    EXPECT_NE(b.find("lights"), std::string::npos) << b;
+    EXPECT_NE(b.find("shadowMap"), std::string::npos) << b;
+    EXPECT_NE(b.find("never both"), std::string::npos) << b;
+    // A broken light names its index and field.
+    auto bad = withLights(da, {input(da), input(da)});
+    bad.lights[1].light.halfAngleDegrees = 95.0f;
+    const std::string h = refusal(bad);
+    EXPECT_NE(h.find("lights[1].light.halfAngleDegrees"), std::string::npos) << h;
+    auto missing = withLights(da, {input(da), input(da)});
+    missing.lights[1].shadowMap.reset();
+    const std::string m = refusal(missing);
+    EXPECT_NE(m.find("lights[1].shadowMap is missing"), std::string::npos) << m;
+    // A method without chains for several lights refuses them, naming itself.
+    auto slices = withLights(da, {input(da), input(da)});
+    slices.method = Method::Slices;
+    const std::string s = refusal(slices);
+    EXPECT_NE(s.find("method slices"), std::string::npos) << s;
+    // One light in the list is the single light, whatever the method.
+    auto single = withLights(da, {input(da)});
+    single.method = Method::ConeMarch;
+    EXPECT_EQ(plugin().render(single).method, "cone-march");
+}
