@@ -27,6 +27,18 @@ std::optional<SeedFigure> seedFigure(Profile p) {
     }
 }
 
+// The engine's images as a typical engine hands them over (D32 depth, RGBA16F color), and the
+// camera depth-stencil format the device would give, for a budget computed without a device.
+void describeEngineImages(detail::GraphConfig& c, const rg::OfflineDeviceCaps& caps) {
+    c.depthStencil = rg::firstSupported(caps, {VK_FORMAT_D24_UNORM_S8_UINT, VK_FORMAT_D32_SFLOAT_S8_UINT},
+                                        VK_FORMAT_FEATURE_2_DEPTH_STENCIL_ATTACHMENT_BIT);
+    const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    c.depth = {VK_FORMAT_D32_SFLOAT, c.screen,
+               VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, ro, ro};
+    c.color = {VK_FORMAT_R16G16B16A16_SFLOAT, c.screen, VK_IMAGE_USAGE_STORAGE_BIT, VK_IMAGE_LAYOUT_GENERAL,
+               VK_IMAGE_LAYOUT_GENERAL};
+}
+
 }  // namespace
 
 Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint32_t shadowMapSize,
@@ -62,13 +74,8 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
     c.shadowMapSize = shadowMapSize;
     c.screen = {screenWidth, screenHeight};
     const rg::OfflineDeviceCaps caps;
-    c.depthStencil = rg::firstSupported(caps, {VK_FORMAT_D24_UNORM_S8_UINT, VK_FORMAT_D32_SFLOAT_S8_UINT},
-                                        VK_FORMAT_FEATURE_2_DEPTH_STENCIL_ATTACHMENT_BIT);
+    describeEngineImages(c, caps);
     const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    c.depth = {VK_FORMAT_D32_SFLOAT, c.screen,
-               VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, ro, ro};
-    c.color = {VK_FORMAT_R16G16B16A16_SFLOAT, c.screen, VK_IMAGE_USAGE_STORAGE_BIT,
-               VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL};
     if (c.shadowed)
         c.shadowMap = {VK_FORMAT_D32_SFLOAT, {shadowMapSize, shadowMapSize}, VK_IMAGE_USAGE_SAMPLED_BIT, ro, ro};
     // The point-light table: read by epipolar and beam-tree-analytic's closed form.
@@ -149,13 +156,8 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
     c.samples = s.samplesPerSlice;
     c.screen = {screenWidth, screenHeight};
     const rg::OfflineDeviceCaps caps;
-    c.depthStencil = rg::firstSupported(caps, {VK_FORMAT_D24_UNORM_S8_UINT, VK_FORMAT_D32_SFLOAT_S8_UINT},
-                                        VK_FORMAT_FEATURE_2_DEPTH_STENCIL_ATTACHMENT_BIT);
+    describeEngineImages(c, caps);
     const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    c.depth = {VK_FORMAT_D32_SFLOAT, c.screen,
-               VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, ro, ro};
-    c.color = {VK_FORMAT_R16G16B16A16_SFLOAT, c.screen, VK_IMAGE_USAGE_STORAGE_BIT, VK_IMAGE_LAYOUT_GENERAL,
-               VK_IMAGE_LAYOUT_GENERAL};
     std::vector<size_t> tables;  // the lights with a point-light table
     for (LightType type : lights) {
         detail::LightChainConfig l;
