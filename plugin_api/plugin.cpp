@@ -155,6 +155,22 @@ struct Plugin::Impl {
     }
 
     // Several lights: one method for the frame, one chain per light that reaches the view.
+    // What every frame's graph takes from the engine and the (first) light's setup: the epipolar
+    // sampling, the screen, the engine's images and the debug options.
+    void describeFrame(GraphConfig& c, const FrameDescription& frame,
+                       const detail::FrameSetup& setup) const {
+        c.fixup = setup.epipolar.fixup;
+        c.slices = setup.epipolar.slices;
+        c.samples = setup.epipolar.samples;
+        c.screen = setup.screen;
+        c.depthStencil = depthStencil;
+        c.depth = state(frame.depth);
+        c.color = state(frame.color);
+        if (frame.inscatterOut) c.inscatterOut = state(*frame.inscatterOut);
+        c.poisonTransients = frame.debug.poisonTransients || poisonFromEnvironment();
+        c.reversedZ = setup.camera.reversedZ;
+    }
+
     void prepareLights(const FrameDescription& frame) {
         const std::vector<detail::FrameSetup> setups = detail::setupLights(frame);  // throws first
         const size_t n = setups.size();
@@ -189,16 +205,7 @@ struct Plugin::Impl {
         c.method = choice.method;
         c.touchesView = anyTouches;
         c.extinction = glm::any(glm::greaterThan(first.medium.betaT(), glm::vec3(0.0f)));
-        c.fixup = first.epipolar.fixup;
-        c.slices = first.epipolar.slices;
-        c.samples = first.epipolar.samples;
-        c.screen = first.screen;
-        c.depthStencil = depthStencil;
-        c.depth = state(frame.depth);
-        c.color = state(frame.color);
-        if (frame.inscatterOut) c.inscatterOut = state(*frame.inscatterOut);
-        c.poisonTransients = frame.debug.poisonTransients || poisonFromEnvironment();
-        c.reversedZ = first.camera.reversedZ;
+        describeFrame(c, frame, first);
         while (lightShared.size() < n) lightShared.push_back(ls::SharedState::sibling(*shared));
         lightTables.resize(std::max(lightTables.size(), n));
         tableRefilled = false;
@@ -258,19 +265,10 @@ struct Plugin::Impl {
         c.coneJitter = setup.settings.coneJitter;
         c.shadowSampling = setup.settings.shadowSampling;
         c.minMaxTrees = setup.epipolar.minMaxTrees;
-        c.fixup = setup.epipolar.fixup;
-        c.slices = setup.epipolar.slices;
-        c.samples = setup.epipolar.samples;
+        describeFrame(c, frame, setup);
         c.shadowMapSize = setup.light.shadowMapSize;
-        c.screen = setup.screen;
-        c.depthStencil = depthStencil;
-        c.depth = state(frame.depth);
-        c.color = state(frame.color);
         if (frame.shadowMap) c.shadowMap = state(*frame.shadowMap);
         if (frame.lightColor) c.lightColor = state(*frame.lightColor);
-        if (frame.inscatterOut) c.inscatterOut = state(*frame.inscatterOut);
-        c.poisonTransients = frame.debug.poisonTransients || poisonFromEnvironment();
-        c.reversedZ = setup.camera.reversedZ;
         if (c.method == Method::Slices) {
             c.sliceTarget = detail::sliceAccumulation(setup.settings.sliceTarget);
             c.sliceBlur = setup.settings.sliceBlur;
