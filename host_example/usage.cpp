@@ -62,7 +62,8 @@ const std::array kCommands{
             "  --shadow-map N      the shadow map's size, 1 to 16384 (default: the profile's)\n"
             "  --lights LIST       the frame's lights, comma-separated: sun, spot, point\n"
             "                      (default spot); sun and spot have a shadow map, point\n"
-            "                      none; several lights: epipolar only\n"
+            "                      a cube map of six (epipolar; none with the other\n"
+            "                      methods); several lights: epipolar only\n"
             "  --json              JSON instead of text\n"},
     Command{
         "graph",

@@ -39,6 +39,12 @@ void describeEngineImages(detail::GraphConfig& c, const rg::OfflineDeviceCaps& c
                VK_IMAGE_LAYOUT_GENERAL};
 }
 
+// The engine's shadow map: D32, one layer, or six for a point light's cube map.
+detail::ImportState engineShadowMap(LightType light, uint32_t size) {
+    const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    return {VK_FORMAT_D32_SFLOAT, {size, size}, VK_IMAGE_USAGE_SAMPLED_BIT, ro, ro, light == LightType::Point ? 6u : 1u};
+}
+
 }  // namespace
 
 Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint32_t shadowMapSize,
@@ -66,7 +72,8 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
     c.sliceBlur = s.sliceBlur;
     c.beamCapacity = 3 * 4096;  // the triangle buffer's first size; it doubles when a frame needs more
     c.light = static_cast<ls::LightKind>(static_cast<int>(light));
-    c.shadowed = light != LightType::Point;
+    // Epipolar budgets a point light with its cube shadow map; slices and the beam trees refuse one.
+    c.shadowed = light != LightType::Point || method == Method::Epipolar;
     c.minMaxTrees = s.minMaxTrees && ls::treesFit(shadowMapSize);
     c.fixup = s.fixup;
     c.slices = s.slices;
@@ -76,8 +83,7 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
     const rg::OfflineDeviceCaps caps;
     describeEngineImages(c, caps);
     const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    if (c.shadowed)
-        c.shadowMap = {VK_FORMAT_D32_SFLOAT, {shadowMapSize, shadowMapSize}, VK_IMAGE_USAGE_SAMPLED_BIT, ro, ro};
+    if (c.shadowed) c.shadowMap = engineShadowMap(light, shadowMapSize);
     // The point-light table: read by epipolar and beam-tree-analytic's closed form.
     const bool table = light != LightType::Directional && method != Method::Slices && method != Method::BeamTreeSampling;
     if (table)
@@ -162,11 +168,10 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
     for (LightType type : lights) {
         detail::LightChainConfig l;
         l.light = static_cast<ls::LightKind>(static_cast<int>(type));
-        l.shadowed = type != LightType::Point;
+        l.shadowed = true;  // a point light with its cube map
         l.minMaxTrees = s.minMaxTrees && ls::treesFit(shadowMapSize);
         l.shadowMapSize = shadowMapSize;
-        if (l.shadowed)
-            l.shadowMap = {VK_FORMAT_D32_SFLOAT, {shadowMapSize, shadowMapSize}, VK_IMAGE_USAGE_SAMPLED_BIT, ro, ro};
+        l.shadowMap = engineShadowMap(type, shadowMapSize);
         if (type != LightType::Directional) {
             l.table = {VK_FORMAT_R32G32B32A32_SFLOAT, {512, 256}, VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
                        ro, ro};

@@ -137,7 +137,7 @@ FrameGraph buildLightsGraph(const GraphConfig& c, const std::vector<ls::Shared>&
             lin = ls::addBruteForce(g, in, cameraZ);
         } else {
             ls::EpipolarSizes sizes{c.slices, c.samples, l.shadowMapSize};
-            ls::EpipolarOptions options{l.minMaxTrees, c.fixup};
+            ls::EpipolarOptions options{l.minMaxTrees, c.fixup, l.light == ls::LightKind::Point};
             lin = ls::addEpipolarNodes(g, in, sizes, options, cameraZ).screenInscatter;
         }
         // The first chain's composite applies the extinction; the others add their Lin.
@@ -264,10 +264,11 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared, ls::S
             fg.summary = "brute-force ray marching";
         } else {
             ls::EpipolarSizes sizes{c.slices, c.samples, c.shadowMapSize};
-            ls::EpipolarOptions options{c.minMaxTrees, c.fixup};
+            const bool cube = c.light == ls::LightKind::Point;  // a shadowed point light's cube map
+            ls::EpipolarOptions options{c.minMaxTrees, c.fixup, cube};
             lin = ls::addEpipolarNodes(g, in, sizes, options, cameraZ).screenInscatter;
             fg.summary = std::string("epipolar sampling") + (c.minMaxTrees ? " with min/max trees" : "") +
-                         (c.fixup ? ", fix-up" : "");
+                         (cube ? " per cube face" : "") + (c.fixup ? ", fix-up" : "");
         }
     }
     ls::addComposite(g, in, fg.color, cameraZ, lin, fg.inscatterOut);

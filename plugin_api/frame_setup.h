@@ -57,5 +57,10 @@ void checkEnabledFeatures(const VkPhysicalDeviceFeatures2* enabled);
 // the view frustum.
 bool lightTouchesView(const ls::CameraParams& camera, const ls::LightParams& light,
                       const ls::MediumParams& medium);
+// Whether cube face `face` (+X, -X, +Y, -Y, +Z, -Z) of a point light reaches a view ray: its
+// square pyramid against the view frustum, each bounded by how far the view reaches (conservative:
+// true when unsure).
+bool cubeFaceTouchesView(const ls::CameraParams& camera, const ls::LightParams& light,
+                         const ls::MediumParams& medium, int face);
 
 }  // namespace lightscatter::detail

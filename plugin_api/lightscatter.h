@@ -211,8 +211,8 @@ struct Light {
     // spot's map; near and far planes are the engine's. Every face is checked (to 1e-3 in clip
     // x/w, y/w): a singular matrix, a frustum that is not centred on its axis at the light, a
     // field of view other than 90 degrees, a mirrored face or depth against shadowReversedZ is
-    // refused naming light.cubeFaceViewProjections[i]. Only brute-force samples a cube shadow
-    // map; the other methods refuse it.
+    // refused naming light.cubeFaceViewProjections[i]. Epipolar (face by face) and brute-force
+    // sample a cube shadow map; the other methods refuse it.
     std::array<Mat4, 6> cubeFaceViewProjections{};
     uint32_t shadowMapSize = 0;   // 0: no shadow map
     bool shadowReversedZ = false;
@@ -408,13 +408,15 @@ struct Budget {
 // A method's memory for a profile, screen and shadow-map size; needs no GPU. Epipolar, slices and
 // beam-tree-analytic (its triangle buffer at its first size, 12288 points). `custom` gives the settings of the Custom
 // profile, and with every profile the ones read from `custom` (slices: a noise amplitude above 0
-// adds the plugin's tiling noise).
+// adds the plugin's tiling noise). Epipolar budgets a point light with a cube shadow map of six
+// shadowMapSize faces (its per-face lines and trees alias each other), the other methods without.
 LIGHTSCATTER_API Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
                                uint32_t shadowMapSize, LightType light = LightType::Spot,
                                const Settings* custom = nullptr, Method method = Method::Epipolar);
 
 // The budget of a frame of several lights, one entry of `lights` per light (a directional or spot
-// light with a shadow map of shadowMapSize, a point light without one): epipolar only so far.
+// light with a shadow map of shadowMapSize, a point light with a cube map of six such faces):
+// epipolar only so far.
 // Transients of the lights' chains alias each other (the chains run one after the other); each
 // point or spot light adds its own point-light table.
 LIGHTSCATTER_API Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,

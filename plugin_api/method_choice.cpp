@@ -62,12 +62,27 @@ void refuseSimplified(const FrameSetup& s, Method m) {
 
 bool cubeShadow(const FrameSetup& s) { return s.shadowed && s.light.kind == ls::LightKind::Point; }
 
-// A point light's cube shadow map: only brute force samples its six faces so far.
+// A point light's cube shadow map: epipolar (face by face) and brute force sample its six faces.
 void refuseCube(const FrameSetup& s, Method m) {
     if (cubeShadow(s))
         refuse("method " + std::string(methodName(m)) +
                " cannot sample a point light's cube shadow map (light.shadowMapSize > 0 with a point "
-               "light): use brute-force or auto (epipolar's per-face chains are not built yet)");
+               "light): use epipolar, brute-force or auto");
+}
+
+// Epipolar sampling for a shadowed light, unless the screen is too small for it to pay.
+void epipolarOrBruteForce(const FrameSetup& s, MethodChoice& c, const std::string& light) {
+    const uint64_t pixels = uint64_t{s.screen.width} * s.screen.height;
+    const uint64_t samples = uint64_t{s.settings.slices} * s.settings.samplesPerSlice;
+    if (pixels * kEpipolarPixelsPerSample < samples) {
+        c.method = Method::BruteForce;
+        c.reason = light + " on a screen of " + std::to_string(pixels) + " pixels, fewer than " +
+                   std::to_string(samples / kEpipolarPixelsPerSample) +
+                   " (epipolar samples / 8): per-pixel marching is cheaper";
+    } else {
+        c.method = Method::Epipolar;
+        c.reason = light + ": epipolar sampling";
+    }
 }
 
 std::string noOccludersNotice(Method m) {
@@ -83,7 +98,8 @@ MethodChoice chooseMethod(Method requested, const FrameSetup& s, bool lightReach
     const bool skipShadows = !s.settings.shadowSampling && s.shadowed;
     MethodChoice c;
     c.method = requested;
-    if (requested != Method::BruteForce && requested != Method::Auto) refuseCube(s, requested);
+    if (requested != Method::BruteForce && requested != Method::Epipolar && requested != Method::Auto)
+        refuseCube(s, requested);
     switch (requested) {
         case Method::Analytic:
             if (!pointLike)
@@ -136,15 +152,13 @@ MethodChoice chooseMethod(Method requested, const FrameSetup& s, bool lightReach
         c.reason = "the light reaches no view ray (or nothing scatters): extinction only";
     } else if (cubeShadow(s)) {
         if (s.simplified || s.noise || skipShadows)
-            refuse(std::string("a point light's cube shadow map is sampled by brute-force only, which "
-                               "does not honour ") +
+            refuse(std::string("a point light's cube shadow map is sampled by epipolar and brute-force only, "
+                               "which do not honour ") +
                    (s.simplified ? "custom.lightModel = simplified"
                     : s.noise    ? "custom.noiseAmplitude > 0"
                                  : "custom.shadowSampling = false") +
                    " (remove the shadow map or that setting)");
-        c.method = Method::BruteForce;
-        c.reason = "shadowed point light (a cube shadow map): brute-force, the only method that samples "
-                   "its six faces";
+        epipolarOrBruteForce(s, c, "shadowed point light (a cube shadow map, marched face by face)");
     } else if (s.simplified) {
         // Seed 004's light model: only its closed forms integrate it.
         if (!pointLike)
@@ -206,17 +220,7 @@ MethodChoice chooseMethod(Method requested, const FrameSetup& s, bool lightReach
         c.method = Method::Epipolar;
         c.reason = "unshadowed directional light: closed form per pixel";
     } else {
-        const uint64_t pixels = uint64_t{s.screen.width} * s.screen.height;
-        const uint64_t samples = uint64_t{s.settings.slices} * s.settings.samplesPerSlice;
-        if (pixels * kEpipolarPixelsPerSample < samples) {
-            c.method = Method::BruteForce;
-            c.reason = "shadowed light on a screen of " + std::to_string(pixels) + " pixels, fewer than " +
-                       std::to_string(samples / kEpipolarPixelsPerSample) +
-                       " (epipolar samples / 8): per-pixel marching is cheaper";
-        } else {
-            c.method = Method::Epipolar;
-            c.reason = "shadowed light: epipolar sampling";
-        }
+        epipolarOrBruteForce(s, c, "shadowed light");
     }
     return c;
 }

@@ -115,6 +115,17 @@ struct Plugin::Impl {
         const float a1 = setup.settings.simplifiedA1;
         s.constants.simplified = {std::clamp(setup.settings.simplifiedA0 / a1, 1e-12f, 1e30f),
                                   std::min(1.0f / a1, 1e30f), 0.0f, 0.0f};
+        if (!s.spec.cubeShadow) return;
+        // Epipolar marches a cube map face by face, each as a spot light's map with its own matrix.
+        for (int face = 0; face < 6; ++face) {
+            auto& f = s.cubeFaces[face];
+            if (!f) f = ls::SharedState::sibling(s);
+            f->spec = s.spec;
+            f->constants = s.constants;
+            f->constants.lightViewProj = s.constants.cubeFaceViewProj[face];
+            const bool inView = detail::cubeFaceTouchesView(setup.camera, setup.light, setup.medium, face);
+            f->constants.cubeFace = {static_cast<float>(face), inView ? 1.0f : 0.0f, 0.0f, 0.0f};
+        }
     }
 
     static ImportState tableState() {
@@ -177,12 +188,8 @@ struct Plugin::Impl {
         detail::MethodChoice choice;
         choice.method = frame.method;
         if (frame.method == Method::Auto) {
-            bool cube = false;
-            for (const auto& s : setups) cube = cube || (s.shadowed && s.light.kind == ls::LightKind::Point);
-            choice.method = cube ? Method::BruteForce : Method::Epipolar;
-            choice.reason = std::to_string(n) + " lights: " +
-                            (cube ? "brute-force, the only method that samples a point light's cube shadow map"
-                                  : "epipolar sampling per shadowed light");
+            choice.method = Method::Epipolar;
+            choice.reason = std::to_string(n) + " lights: epipolar sampling per shadowed light";
         } else if (frame.method != Method::Epipolar && frame.method != Method::BruteForce) {
             throw InvalidInput(std::string("lightscatter: method ") + methodName(frame.method) +
                                " renders one light per frame so far; lights holds " + std::to_string(n) +
@@ -341,6 +348,29 @@ struct Plugin::Impl {
         rehearseOnce();
     }
 
+    // Epipolar marches a point light's cube map face by face, and only the faces that reach the
+    // view do work: which ones did, per cube-shadowed light.
+    std::string cubeFacesNote() const {
+        if (!config || config->method != Method::Epipolar) return {};
+        static const char* const kFaces[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
+        auto faces = [](const ls::SharedState& s) {
+            std::string list;
+            for (int f = 0; f < 6; ++f)
+                if (s.cubeFaces[f] && s.cubeFaces[f]->inView()) list += std::string(list.empty() ? "" : ", ") + kFaces[f];
+            return list.empty() ? std::string("none") : list;
+        };
+        std::string note;
+        if (config->lights.empty()) {
+            if (config->touchesView && shared->spec.cubeShadow)
+                note = "; cube faces reaching the view: " + faces(*shared);
+        } else {
+            for (size_t i = 0; i < config->lights.size(); ++i)
+                if (config->lights[i].touchesView && lightShared[i]->spec.cubeShadow)
+                    note += "; light " + std::to_string(i) + "'s cube faces reaching the view: " + faces(*lightShared[i]);
+        }
+        return note.empty() ? note : note + " (the others' passes record no work)";
+    }
+
     // Numbers the frame just prepared and keeps what its report will need.
     uint64_t nextFrame() {
         RecordedFrame f;
@@ -352,7 +382,7 @@ struct Plugin::Impl {
         f.noiseMade = noiseMade;
         if (beamFrameBuilt) f.cpuWork.push_back({"beam tree (CPU, seed 004)", beamFrame->buildMilliseconds});
         f.method = config && config->touchesView ? methodName(lastChoice.method) : "none";
-        f.reason = lastChoice.reason.empty() ? fg.summary : lastChoice.reason;
+        f.reason = (lastChoice.reason.empty() ? fg.summary : lastChoice.reason) + cubeFacesNote();
         f.notice = lastChoice.notice;
         frames.push_back(std::move(f));
         while (frames.size() > kTimedFrames) frames.pop_front();

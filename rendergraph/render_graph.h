@@ -83,6 +83,7 @@ public:
     // Appended to the name of every resource and pass declared from now on (empty: none), so that
     // one builder can add the same nodes more than once (a chain per light: " (light 1)").
     void setNameSuffix(std::string suffix) { nameSuffix_ = std::move(suffix); }
+    const std::string& nameSuffix() const { return nameSuffix_; }
 
     void setScreenExtent(VkExtent2D extent) { screen_ = extent; }
     VkExtent2D screenExtent() const { return screen_; }

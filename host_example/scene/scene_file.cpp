@@ -341,8 +341,8 @@ class SceneReader {
                                            {"spot", LightKind::Spot},
                                            {"point", LightKind::Point}});
         }
-        // A point light's shadow map is a cube of six faces, which only brute-force samples: it
-        // has one only when the scene asks (shadowMapSize > 0).
+        // A point light's shadow map is a cube of six faces (six depth passes for the host, six
+        // per-face passes for epipolar): it has one only when the scene asks (shadowMapSize > 0).
         if (light.type == LightKind::Point) light.shadowMapSize = 0;
         if (const json* x = member(v, "position")) light.position = vec3(*x, name + ".position");
         if (const json* x = member(v, "direction")) {

@@ -1,5 +1,7 @@
 #include "epipolar_nodes.h"
 
+#include "shared/shared_nodes.h"
+
 namespace ls {
 
 EpipolarResult addEpipolarNodes(rg::RenderGraph& g, const NodeInputs& in,
@@ -8,12 +10,31 @@ EpipolarResult addEpipolarNodes(rg::RenderGraph& g, const NodeInputs& in,
     const rg::ImageRef endPoints = addSliceEndPoints(g, in, sizes);
     const EpipolarCoordinates samples = addEpipolarCoordinates(g, in, sizes, endPoints, cameraZ);
     const rg::ImageRef sources = addRefineSamples(g, in, sizes, samples.epipolarZ);
-    const rg::ImageRef uvFrame = addSliceUvFrame(g, in, sizes, endPoints);
-    const MinMaxTrees trees =
-        options.minMaxTrees ? addMinMaxTrees(g, in, sizes, uvFrame) : MinMaxTrees{};
     const rg::ImageRef marking = addMarkRayMarchSamples(g, in, sources, samples.epipolarStencil);
-    const rg::ImageRef marched = addEpipolarRayMarch(
-        g, in, sizes, {samples.coordinates, samples.epipolarZ, uvFrame, marking, trees});
+    // The shadow map's part: the line of every slice in it, the trees along those lines and the
+    // march. A point light's cube map repeats it per face, each face adding its part of every ray
+    // to the same samples; the faces' lines and trees die with their march, so they alias.
+    auto march = [&](const NodeInputs& light, rg::ImageRef accumulate) {
+        const rg::ImageRef uvFrame = addSliceUvFrame(g, light, sizes, endPoints);
+        const MinMaxTrees trees = options.minMaxTrees ? addMinMaxTrees(g, light, sizes, uvFrame) : MinMaxTrees{};
+        return addEpipolarRayMarch(g, light, sizes,
+                                   {samples.coordinates, samples.epipolarZ, uvFrame, marking, trees, accumulate});
+    };
+    rg::ImageRef marched;
+    if (!options.cubeShadow) {
+        marched = march(in, {});
+    } else {
+        static const char* const kFaces[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
+        const std::string suffix = g.nameSuffix();
+        for (uint32_t face = 0; face < 6; ++face) {
+            g.setNameSuffix(suffix + " (cube face " + kFaces[face] + ")");
+            NodeInputs f = in;
+            f.shared = in.shared ? in.shared->cubeFaces[face] : nullptr;
+            f.constants = addUploadConstants(g, f.shared);
+            marched = march(f, marched);
+        }
+        g.setNameSuffix(suffix);
+    }
     const rg::ImageRef interpolated = addInterpolate(g, in, sizes, sources, marched, marking);
     const UnwarpOutputs screen =
         addUnwarp(g, in, {endPoints, samples.epipolarZ, interpolated, cameraZ}, options.fixup);

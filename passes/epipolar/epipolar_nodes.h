@@ -51,10 +51,14 @@ rg::ImageRef addMarkRayMarchSamples(rg::RenderGraph& g, const NodeInputs& in,
 
 // Lin (or the shadowed fraction) of the ray-marching samples: RGBA16F, samples x slices. Reads the
 // light's images; without trees (both handles invalid) every sample is marched texel by texel.
+// A point light's cube map is marched one face per pass (in.shared is the face's state): the first
+// face's pass writes a new texture, each later one adds its part of every ray to `accumulate`
+// (and returns its new version); alpha, the sample's validity, is the first face's.
 struct EpipolarRayMarchInputs {
     rg::ImageRef coordinates, epipolarZ, sliceUvFrame;
     rg::ImageRef epipolarStencil;  // after the marking
     MinMaxTrees trees;
+    rg::ImageRef accumulate;  // invalid: a new texture
 };
 rg::ImageRef addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
                                  const EpipolarRayMarchInputs& i);
@@ -81,10 +85,14 @@ UnwarpOutputs addUnwarp(rg::RenderGraph& g, const NodeInputs& in, const UnwarpIn
 rg::ImageRef addFixup(rg::RenderGraph& g, const NodeInputs& in, rg::ImageRef cameraZ,
                       rg::ImageRef cameraStencil, rg::ImageRef screenInscatter);
 
-// The whole chain, from camera-space z to the screen's in-scattering (before compositing).
+// The whole chain, from camera-space z to the screen's in-scattering (before compositing). With
+// cubeShadow (a point light's six-layer shadow map) the samples are shared by the six faces and
+// each face adds its own line frames, trees and march (in.shared->cubeFaces; each face's constants
+// are uploaded by the chain); the fix-up marches the whole cube.
 struct EpipolarOptions {
     bool minMaxTrees = true;
     bool fixup = true;
+    bool cubeShadow = false;
 };
 struct EpipolarResult {
     rg::ImageRef screenInscatter;  // RGBA16F, screen

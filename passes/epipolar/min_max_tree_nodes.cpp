@@ -1,6 +1,7 @@
 #include "shared/pass_helpers.h"
 #include "epipolar_nodes.h"
 #include "min_max_first_level_comp.h"
+#include "min_max_first_level_cube_comp.h"
 #include "min_max_next_level_comp.h"
 
 namespace ls {
@@ -25,8 +26,13 @@ MinMaxTrees addMinMaxTrees(rg::RenderGraph& g, const NodeInputs& in, const Epipo
         t.odd = pass.storageWrite(t.odd);
         const rg::ImageRef level1 = t.odd;
         pass.execute([in, sliceUvFrame, level1, s, n](rg::PassContext& ctx) {
+            if (!in.shared->inView()) return;  // a cube face out of view
+            // A point light's cube map: the face's layer of the 2D array.
+            const bool cube = in.shared->spec.cubeShadow;
             const auto& p = in.shared->pipelines.compute(
-                "min/max trees level 1", rg::spirv(ls_spirv::min_max_first_level_comp),
+                cube ? "min/max trees level 1 (cube face)" : "min/max trees level 1",
+                cube ? rg::spirv(ls_spirv::min_max_first_level_cube_comp)
+                     : rg::spirv(ls_spirv::min_max_first_level_comp),
                 {uniformBinding(0), sampledBinding(1), sampledBinding(2), storageBinding(3)}, 0, {});
             p.bind(ctx.cmd());
             frameSet(ctx, in.constants)
@@ -51,6 +57,7 @@ MinMaxTrees addMinMaxTrees(rg::RenderGraph& g, const NodeInputs& in, const Epipo
         if (toEven) evenWritten = true;
         const rg::ImageRef finer = src, coarser = dst;
         pass.execute([in, finer, coarser, level, n, s](rg::PassContext& ctx) {
+            if (!in.shared->inView()) return;
             const auto& p = in.shared->pipelines.compute(
                 "min/max trees next level", rg::spirv(ls_spirv::min_max_next_level_comp),
                 {storageBinding(0), storageBinding(1)}, 8, {});

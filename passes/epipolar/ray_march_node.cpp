@@ -5,6 +5,8 @@
 #include "ray_march_directional_trees_frag.h"
 #include "ray_march_table_color_frag.h"
 #include "ray_march_table_color_trees_frag.h"
+#include "ray_march_table_cube_frag.h"
+#include "ray_march_table_cube_trees_frag.h"
 #include "ray_march_table_frag.h"
 #include "ray_march_table_trees_frag.h"
 #include "shared/pass_helpers.h"
@@ -15,6 +17,10 @@ namespace {
 rg::ShaderCode rayMarchShader(const ScatterSpec& spec) {
     const bool table = spec.light != LightKind::Directional;
     const bool color = spec.lightColor;
+    // A point light's cube map (light color is refused with it).
+    if (spec.cubeShadow)
+        return spec.minMaxTrees ? rg::spirv(ls_spirv::ray_march_table_cube_trees_frag)
+                                : rg::spirv(ls_spirv::ray_march_table_cube_frag);
     if (spec.minMaxTrees) {
         if (table) return color ? rg::spirv(ls_spirv::ray_march_table_color_trees_frag)
                                 : rg::spirv(ls_spirv::ray_march_table_trees_frag);
@@ -31,9 +37,11 @@ rg::ShaderCode rayMarchShader(const ScatterSpec& spec) {
 
 rg::ImageRef addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
                                  const EpipolarRayMarchInputs& i) {
-    rg::ImageRef marched = g.createImage(
-        "in-scattering (ray-marched samples)",
-        rg::ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT, s.samples, s.slices));
+    const bool adds = i.accumulate.valid();
+    rg::ImageRef marched =
+        adds ? i.accumulate
+             : g.createImage("in-scattering (ray-marched samples)",
+                             rg::ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT, s.samples, s.slices));
     const bool trees = i.trees.odd.valid();
     auto pass = g.addPass(trees ? "ray march with min/max trees" : "ray march", rg::PassType::Graphics);
     pass.uniformBuffer(in.constants);
@@ -46,8 +54,10 @@ rg::ImageRef addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in, const
     }
     declareMarchInputs(pass, in);
     pass.stencilTest(i.epipolarStencil);
-    marched = pass.colorAttachment(marched, rg::LoadOp::Clear);
-    pass.execute([in, i, trees](rg::PassContext& ctx) {
+    marched = pass.colorAttachment(marched, adds ? rg::LoadOp::Load : rg::LoadOp::Clear);
+    pass.execute([in, i, trees, adds](rg::PassContext& ctx) {
+        // A cube face out of view adds nothing (the first face's pass writes every sample's alpha).
+        if (adds && !in.shared->inView()) return;
         ScatterSpec spec = in.shared->spec;
         spec.minMaxTrees = trees;
         std::vector<rg::Binding> b{uniformBinding(0), sampledBinding(1), sampledBinding(2),
@@ -62,7 +72,12 @@ rg::ImageRef addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in, const
         desc.stencilTest = true;
         desc.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP,
                         VK_COMPARE_OP_EQUAL, 0xff, 0, 2};
-        const auto& p = in.shared->pipelines.graphics(pipelineKey("ray march", ctx, spec.key()), desc);
+        if (adds) {
+            desc.blend = rg::BlendMode::Additive;
+            desc.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT;
+        }
+        const auto& p = in.shared->pipelines.graphics(
+            pipelineKey(adds ? "ray march (adding a face)" : "ray march", ctx, spec.key()), desc);
         p.bind(ctx.cmd());
         vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 2);
         const auto& sm = in.shared->samplers;

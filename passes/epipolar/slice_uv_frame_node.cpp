@@ -14,6 +14,7 @@ rg::ImageRef addSliceUvFrame(rg::RenderGraph& g, const NodeInputs& in, const Epi
     pass.sampled(sliceEndPoints);
     uvFrame = pass.storageWrite(uvFrame);
     pass.execute([in, sliceEndPoints, uvFrame, s](rg::PassContext& ctx) {
+        if (!in.shared->inView()) return;  // a cube face out of view: no ray reads its lines
         const auto& p = in.shared->pipelines.compute(
             "slice uv origin and direction", rg::spirv(ls_spirv::slice_uv_frame_comp),
             {uniformBinding(0), sampledBinding(1), storageBinding(2)}, 0, {});

@@ -24,8 +24,9 @@ struct FrameConstants {
     glm::vec4 epipolar2;       // bilateral threshold, fix-up max steps, tree levels, ratio mode
     glm::vec4 lutInfo;         // log range of hEff / r0, width, height, -
     glm::vec4 simplified;      // seed 004's light model: a0 / a1 (at least 1e-12), 1 / a1, -, -
+    glm::vec4 cubeFace;        // x: the cube face an epipolar per-face pass marches, y: 1 in view
     glm::mat4 cubeFaceViewProj[6];  // point light's cube shadow map: world -> clip per face
 };
-static_assert(sizeof(FrameConstants) == 3 * 64 + 16 * 16 + 6 * 64, "std140 layout of frame.glsl");
+static_assert(sizeof(FrameConstants) == 3 * 64 + 17 * 16 + 6 * 64, "std140 layout of frame.glsl");
 
 }  // namespace ls

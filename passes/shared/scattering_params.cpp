@@ -77,6 +77,7 @@ FrameConstants makeFrameConstants(const CameraParams& camera, const LightParams&
     f.epipolar2 = {settings.bilateralThreshold, static_cast<float>(settings.fixupMaxSteps),
                    static_cast<float>(treeLevels(light.shadowMapSize)),
                    settings.interpolateFraction ? 1.0f : 0.0f};
+    f.cubeFace = {0.0f, 1.0f, 0.0f, 0.0f};  // no per-face pass: in view
     f.lutInfo = {table.logRange, static_cast<float>(table.width), static_cast<float>(table.height), 0.0f};
     return f;
 }

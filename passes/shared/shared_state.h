@@ -2,6 +2,7 @@
 // State the scattering passes share for as long as the plugin lives: the device, samplers, the
 // pipelines built so far, and this frame's constants (updated before each recording; the upload
 // pass copies them into the command buffer, so frames in flight never share them).
+#include <array>
 #include <map>
 #include <memory>
 #include <string>
@@ -69,6 +70,12 @@ struct SharedState {
     PipelineLibrary& pipelines;
     FrameConstants constants{};
     ScatterSpec spec;
+    // A point light's cube shadow map under epipolar: one state per face (+X, -X, +Y, -Y, +Z, -Z),
+    // whose constants carry the face's matrix as lightViewProj and its index in cubeFace.x.
+    // A face whose frustum misses the view has constants.cubeFace.y 0: its passes stay in the graph
+    // (a face moving into view rebuilds nothing) and record no work.
+    std::array<std::shared_ptr<SharedState>, 6> cubeFaces;
+    bool inView() const { return constants.cubeFace.y > 0.5f; }
 
 private:
     SharedState(std::shared_ptr<SharedResources> r, const rg::Device& d)

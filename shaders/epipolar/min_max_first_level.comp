@@ -6,12 +6,19 @@
 #include "min_max_tree.glsl"
 #include "frame.glsl"
 layout(local_size_x = 64) in;
+#if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
+layout(binding = 1) uniform sampler2DArray shadowMap;  // a point light's cube: the face cubeFace.x
+#else
 layout(binding = 1) uniform sampler2D shadowMap;
+#endif
 layout(binding = 2) uniform sampler2D sliceUvFrame;
 layout(binding = 3, rg16f) uniform writeonly image2D level1;
 #include "shadow.glsl"
 
 void main() {
+#if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
+    shadowFace = int(frame.cubeFace.x);
+#endif
     int node = int(gl_GlobalInvocationID.x);
     int slice = int(gl_GlobalInvocationID.y);
     int n = int(frame.shadowInfo.x);

@@ -4,6 +4,9 @@
 // map, skipping whole lit or shadowed runs with the slice's 1D min/max tree. Sample i of the line
 // (uv = origin + i dir) decides the visibility of the ray over (i - 1, i]; the ray's light-space
 // depth is affine in i, its distance is perspective-correct (1/w and d/w are affine in i).
+// With LS_CUBE_SHADOW (a point light's cube map) the pass marches one face: lightViewProj is the
+// face's matrix, the look-ups read its layer, and each ray keeps only the part of it where that face
+// is the major axis, so that the six faces' passes add up to the whole ray without overlap or gap.
 #include "camera.glsl"
 #include "min_max_tree.glsl"
 layout(binding = 1) uniform sampler2D coordinates;
@@ -13,7 +16,11 @@ layout(binding = 3) uniform sampler2D sliceUvFrame;
 layout(binding = 4) uniform sampler2D treeOdd;
 layout(binding = 5) uniform sampler2D treeEven;
 #endif
+#if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
+layout(binding = 6) uniform sampler2DArray shadowMap;
+#else
 layout(binding = 6) uniform sampler2D shadowMap;
+#endif
 #if LS_NEEDS_TABLE
 layout(binding = 7) uniform sampler2D pointTable;
 #endif
@@ -100,6 +107,11 @@ void marchLine(inout Inscatter acc, LineRay r, int slice) {
 vec3 marchSample(vec3 C, vec3 v, float S, int slice) {
     float t0, t1;
     lightInterval(C, v, S, t0, t1);
+#if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
+    clipToCubeFaceRegion(C, v, shadowFace, t0, t1);
+    // The first face's pass runs even out of view, for the alpha of every sample.
+    if (frame.cubeFace.y < 0.5) t1 = t0;
+#endif
     if (!(t0 < t1)) return vec3(0.0);
     Inscatter acc = beginInscatter(C, v, t0);
     float f0 = t0, f1 = t1;
@@ -138,6 +150,9 @@ vec3 marchSample(vec3 C, vec3 v, float S, int slice) {
 }
 
 void main() {
+#if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
+    shadowFace = int(frame.cubeFace.x);
+#endif
     ivec2 p = ivec2(gl_FragCoord.xy);
     vec2 ndc = texelFetch(coordinates, p, 0).xy;
     float z = texelFetch(epipolarZ, p, 0).r;

@@ -40,6 +40,9 @@ layout(std140, set = 0, binding = 0) uniform FrameConstants {
                          // w: 1 when samples carry the shadowed fraction instead of Lin
     vec4 lutInfo;        // x: log range of hEff / r0, y: table width, z: table height, w: -
     vec4 simplified;     // kSimplifiedModel: x: a0 / a1 (at least 1e-12), y: 1 / a1, zw: -
+    vec4 cubeFace;       // x: the cube face (layer) an epipolar per-face pass marches, in the
+                         // order below (lightViewProj is then that face's matrix); y: 1 when the
+                         // face's frustum reaches the view (always 1 outside per-face passes)
     // A point light's cube shadow map (LS_CUBE_SHADOW): world -> clip of each face, in Vulkan's
     // face order +X, -X, +Y, -Y, +Z, -Z (the layers of the shadow map).
     mat4 cubeFaceViewProj[6];

@@ -116,6 +116,31 @@ TEST(Budget, LightsAliasEachOther) {
                  lightscatter::InvalidInput);
 }
 
+// A point light's cube map: epipolar marches it face by face over one set of samples, and each
+// face's lines and trees die with its march, so the six faces cost about what one spot costs.
+TEST(Budget, CubeFacesAliasEachOther) {
+    using lightscatter::LightType;
+    for (Profile p : {Profile::HighQuality, Profile::Balanced, Profile::HighPerformance}) {
+        const auto s = lightscatter::profileSettings(p);
+        const auto spot = lightscatter::budget(p, 2560, 1600, s.shadowMapSize, LightType::Spot);
+        const auto point = lightscatter::budget(p, 2560, 1600, s.shadowMapSize, LightType::Point);
+        uint64_t trees = 0;
+        size_t faceTrees = 0;
+        for (const auto& e : point.entries)
+            if (e.name.find("1D min/max trees") == 0) {
+                trees = e.bytes;
+                ++faceTrees;
+            }
+        std::printf("%s 2560x1600: spot peak %.1f MiB (total %.1f), cube-shadowed point %.1f (total %.1f)\n",
+                    lightscatter::profileName(p), static_cast<double>(spot.peakBytes) / 1048576.0,
+                    static_cast<double>(spot.totalBytes) / 1048576.0, static_cast<double>(point.peakBytes) / 1048576.0,
+                    static_cast<double>(point.totalBytes) / 1048576.0);
+        EXPECT_EQ(faceTrees, 12u) << "odd and even trees per face";
+        EXPECT_GT(point.totalBytes, spot.totalBytes + 10 * trees);  // six faces' trees, each its own
+        EXPECT_LT(point.peakBytes, spot.peakBytes + trees);         // ... sharing one's memory
+    }
+}
+
 TEST(Names, MethodsAndProfilesRoundTrip) {
     for (const auto& n : lightscatter::methodNames()) {
         const auto m = lightscatter::parseMethod(n);
