@@ -16,7 +16,7 @@ EpipolarResult addEpipolarNodes(rg::RenderGraph& g, const NodeInputs& in,
     // to the same samples; the faces' lines and trees die with their march, so they alias.
     auto march = [&](const NodeInputs& light, rg::ImageRef accumulate) {
         const rg::ImageRef uvFrame = addSliceUvFrame(g, light, sizes, endPoints);
-        const MinMaxTrees trees = options.minMaxTrees ? addMinMaxTrees(g, light, sizes, uvFrame) : MinMaxTrees{};
+        const rg::ImageRef trees = options.minMaxTrees ? addMinMaxTrees(g, light, sizes, uvFrame) : rg::ImageRef{};
         return addEpipolarRayMarch(g, light, sizes,
                                    {samples.coordinates, samples.epipolarZ, uvFrame, marking, trees, accumulate});
     };

@@ -36,12 +36,9 @@ rg::ImageRef addRefineSamples(rg::RenderGraph& g, const NodeInputs& in, const Ep
 rg::ImageRef addSliceUvFrame(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
                              rg::ImageRef sliceEndPoints);
 
-// The 1D min/max trees of in.shadowMap along each slice's line, odd levels in one texture and
-// even levels in the other: RG16F, shadow-map size x slices.
-struct MinMaxTrees {
-    rg::ImageRef odd, even;
-};
-MinMaxTrees addMinMaxTrees(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
+// The 1D min/max trees of in.shadowMap along each slice's line, every level in one texture:
+// RG16F, shadow-map size x slices.
+rg::ImageRef addMinMaxTrees(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
                            rg::ImageRef sliceUvFrame);
 
 // Raises the ray-marching samples to stencil 2; returns the stencil's new version.
@@ -50,14 +47,14 @@ rg::ImageRef addMarkRayMarchSamples(rg::RenderGraph& g, const NodeInputs& in,
                                     rg::ImageRef epipolarStencil);
 
 // Lin (or the shadowed fraction) of the ray-marching samples: RGBA16F, samples x slices. Reads the
-// light's images; without trees (both handles invalid) every sample is marched texel by texel.
+// light's images; without trees every sample is marched texel by texel.
 // A point light's cube map is marched one face per pass (in.shared is the face's state): the first
 // face's pass writes a new texture, each later one adds its part of every ray to `accumulate`
 // (and returns its new version); alpha, the sample's validity, is the first face's.
 struct EpipolarRayMarchInputs {
     rg::ImageRef coordinates, epipolarZ, sliceUvFrame;
     rg::ImageRef epipolarStencil;  // after the marking
-    MinMaxTrees trees;
+    rg::ImageRef trees;  // invalid: marched without trees
     rg::ImageRef accumulate;  // invalid: a new texture
 };
 rg::ImageRef addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,

@@ -6,25 +6,22 @@
 
 namespace ls {
 
-// One node per tree level: the first from the shadow map, each coarser one from the level below,
-// flip/flopping between the two textures (odd levels in one, even levels in the other). Later
-// levels keep what earlier levels wrote to the same texture, so they read-modify-write it.
-MinMaxTrees addMinMaxTrees(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
-                           rg::ImageRef sliceUvFrame) {
+// One node per tree level: the first from the shadow map, each coarser one from the level below.
+// Every level lives in one texture (the levels' columns are disjoint): each pass reads the level
+// below and writes its own, and keeps what earlier passes wrote, so it read-modify-writes it.
+rg::ImageRef addMinMaxTrees(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
+                            rg::ImageRef sliceUvFrame) {
     const uint32_t n = s.shadowMapSize;
     const uint32_t levels = treeLevels(n);
-    MinMaxTrees t;
-    t.odd = g.createImage("1D min/max trees (odd levels)",
-                          rg::ImageDesc::absolute(VK_FORMAT_R16G16_SFLOAT, n, s.slices));
-    t.even = g.createImage("1D min/max trees (even levels)",
-                           rg::ImageDesc::absolute(VK_FORMAT_R16G16_SFLOAT, n, s.slices));
+    rg::ImageRef tree =
+        g.createImage("1D min/max trees", rg::ImageDesc::absolute(VK_FORMAT_R16G16_SFLOAT, n, s.slices));
     {
         auto pass = g.addPass("min/max trees level 1", rg::PassType::Compute);
         pass.uniformBuffer(in.constants);
         pass.sampled(in.shadowMap, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
         pass.sampled(sliceUvFrame);
-        t.odd = pass.storageWrite(t.odd);
-        const rg::ImageRef level1 = t.odd;
+        tree = pass.storageWrite(tree);
+        const rg::ImageRef level1 = tree;
         pass.execute([in, sliceUvFrame, level1, s, n](rg::PassContext& ctx) {
             if (!in.shared->inView()) return;  // a cube face out of view
             // A point light's cube map: the face's layer of the 2D array.
@@ -45,33 +42,22 @@ MinMaxTrees addMinMaxTrees(rg::RenderGraph& g, const NodeInputs& in, const Epipo
             vkCmdDispatch(ctx.cmd(), groupCount(n / 2, 64), s.slices, 1);
         });
     }
-    bool evenWritten = false;
     for (uint32_t level = 2; level <= levels; ++level) {
-        const bool toEven = (level % 2) == 0;
         auto pass = g.addPass("min/max trees level " + std::to_string(level), rg::PassType::Compute);
-        rg::ImageRef& src = toEven ? t.odd : t.even;
-        rg::ImageRef& dst = toEven ? t.even : t.odd;
-        pass.storageRead(src);
-        const bool firstWrite = toEven && !evenWritten;
-        dst = firstWrite ? pass.storageWrite(dst) : pass.storageReadWrite(dst);
-        if (toEven) evenWritten = true;
-        const rg::ImageRef finer = src, coarser = dst;
-        pass.execute([in, finer, coarser, level, n, s](rg::PassContext& ctx) {
+        tree = pass.storageReadWrite(tree);
+        const rg::ImageRef written = tree;
+        pass.execute([in, written, level, n, s](rg::PassContext& ctx) {
             if (!in.shared->inView()) return;
             const auto& p = in.shared->pipelines.compute(
-                "min/max trees next level", rg::spirv(ls_spirv::min_max_next_level_comp),
-                {storageBinding(0), storageBinding(1)}, 8, {});
+                "min/max trees next level", rg::spirv(ls_spirv::min_max_next_level_comp), {storageBinding(0)}, 8, {});
             p.bind(ctx.cmd());
-            rg::DescriptorPush()
-                .storage(0, ctx.view(finer))
-                .storage(1, ctx.view(coarser))
-                .push(ctx.device(), ctx.cmd(), p);
+            rg::DescriptorPush().storage(0, ctx.view(written)).push(ctx.device(), ctx.cmd(), p);
             const int32_t push[2] = {static_cast<int32_t>(level), static_cast<int32_t>(n)};
             p.push(ctx.cmd(), push);
             vkCmdDispatch(ctx.cmd(), groupCount(n >> level, 64), s.slices, 1);
         });
     }
-    return t;
+    return tree;
 }
 
 }  // namespace ls

@@ -42,15 +42,14 @@ rg::ImageRef addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in, const
         adds ? i.accumulate
              : g.createImage("in-scattering (ray-marched samples)",
                              rg::ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT, s.samples, s.slices));
-    const bool trees = i.trees.odd.valid();
+    const bool trees = i.trees.valid();
     auto pass = g.addPass(trees ? "ray march with min/max trees" : "ray march", rg::PassType::Graphics);
     pass.uniformBuffer(in.constants);
     pass.sampled(i.coordinates);
     pass.sampled(i.epipolarZ);
     pass.sampled(i.sliceUvFrame);
     if (trees) {
-        pass.sampled(i.trees.odd);
-        pass.sampled(i.trees.even);
+        pass.sampled(i.trees);
     }
     declareMarchInputs(pass, in);
     pass.stencilTest(i.epipolarStencil);
@@ -62,10 +61,7 @@ rg::ImageRef addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in, const
         spec.minMaxTrees = trees;
         std::vector<rg::Binding> b{uniformBinding(0), sampledBinding(1), sampledBinding(2),
                                    sampledBinding(3)};
-        if (trees) {
-            b.push_back(sampledBinding(4));
-            b.push_back(sampledBinding(5));
-        }
+        if (trees) b.push_back(sampledBinding(4));
         appendMarchBindings(b, in);
         auto desc = fullscreenPipeline(rayMarchShader(spec), ctx, b);
         desc.specialization = spec.constants();
@@ -86,8 +82,7 @@ rg::ImageRef addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in, const
             .sampled(2, ctx.view(i.epipolarZ), ctx.layout(i.epipolarZ), sm.nearest())
             .sampled(3, ctx.view(i.sliceUvFrame), ctx.layout(i.sliceUvFrame), sm.nearest());
         if (trees) {
-            set.sampled(4, ctx.view(i.trees.odd), ctx.layout(i.trees.odd), sm.nearest())
-                .sampled(5, ctx.view(i.trees.even), ctx.layout(i.trees.even), sm.nearest());
+            set.sampled(4, ctx.view(i.trees), ctx.layout(i.trees), sm.nearest());
         }
         pushMarchInputs(set, ctx, in);
         set.push(ctx.device(), ctx.cmd(), p);

@@ -1,10 +1,10 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// A coarser tree level from the one below it, read from the other texture of the pair.
+// A coarser tree level from the one below it, in the same texture (the levels' columns are
+// disjoint, so the pass reads one range and writes another).
 #include "min_max_tree.glsl"
 layout(local_size_x = 64) in;
-layout(binding = 0, rg16f) uniform readonly image2D finer;
-layout(binding = 1, rg16f) uniform image2D coarser;
+layout(binding = 0, rg16f) uniform image2D tree;
 layout(push_constant) uniform Push { int level; int n; } pc;
 
 void main() {
@@ -12,8 +12,8 @@ void main() {
     int slice = int(gl_GlobalInvocationID.y);
     if (node >= (pc.n >> pc.level)) return;
     int src = treeLevelOffset(pc.level - 1, pc.n) + 2 * node;
-    vec2 a = imageLoad(finer, ivec2(src, slice)).xy;
-    vec2 b = imageLoad(finer, ivec2(src + 1, slice)).xy;
-    imageStore(coarser, ivec2(treeLevelOffset(pc.level, pc.n) + node, slice),
+    vec2 a = imageLoad(tree, ivec2(src, slice)).xy;
+    vec2 b = imageLoad(tree, ivec2(src + 1, slice)).xy;
+    imageStore(tree, ivec2(treeLevelOffset(pc.level, pc.n) + node, slice),
                vec4(min(a.x, b.x), max(a.y, b.y), 0.0, 0.0));
 }

@@ -1,7 +1,8 @@
 // Layout of the 1D min/max binary trees: one row per slice, level l (1..levels) of a map of N
 // texels holds N >> l nodes starting at column N - (N >> (l - 1)); node k of level l covers samples
-// [k 2^l, (k + 1) 2^l - 1]. Odd levels live in the first texture, even levels in the second (the
-// flip/flop of seed 000).
+// [k 2^l, (k + 1) 2^l - 1]. All levels share one texture of N - 1 columns (seed 000 flip/flops
+// between two, as a pixel shader cannot read the texture it renders to; a compute pass reads one
+// level and writes the next of the same storage image).
 #ifndef LS_MIN_MAX_TREE_GLSL
 #define LS_MIN_MAX_TREE_GLSL
 

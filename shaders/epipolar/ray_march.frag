@@ -13,8 +13,7 @@ layout(binding = 1) uniform sampler2D coordinates;
 layout(binding = 2) uniform sampler2D epipolarZ;
 layout(binding = 3) uniform sampler2D sliceUvFrame;
 #if LS_TREES
-layout(binding = 4) uniform sampler2D treeOdd;
-layout(binding = 5) uniform sampler2D treeEven;
+layout(binding = 4) uniform sampler2D trees;
 #endif
 #if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
 layout(binding = 6) uniform sampler2DArray shadowMap;
@@ -35,7 +34,7 @@ const bool kMinMaxTrees = LS_TREES != 0;
 vec2 treeNode(int level, int node, int slice, int n) {
 #if LS_TREES
     ivec2 p = ivec2(treeLevelOffset(level, n) + node, slice);
-    return (level & 1) == 1 ? texelFetch(treeOdd, p, 0).xy : texelFetch(treeEven, p, 0).xy;
+    return texelFetch(trees, p, 0).xy;
 #else
     return vec2(0.0, 1.0);
 #endif
