@@ -9,7 +9,7 @@
 #                                          # an earlier run's results where build/ has them)
 #   scripts/make-report.sh --occluders-only  # that benchmark alone, its plot, and its section spliced
 #                                          # into the existing docs/performance.md
-#   scripts/make-report.sh bench/full.json # the GPU machine's configuration
+#   LS_REPORT_GPU=DIR scripts/make-report.sh # with the GPU section from scripts/gpu-bench.sh's results
 set -euo pipefail
 cd "$(dirname "$0")/.."
 config="${1:-bench/report.json}"

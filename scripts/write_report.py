@@ -164,7 +164,68 @@ def splice_section(page, heading, lines, before="## Scaling"):
     return "\n".join(text[:at] + section + text[at:])
 
 
+GPU_HEADING = "## GPU timings"
+
+
+def gpu_section(gpu_dir):
+    """The GPU machine's run of bench/full.json (scripts/gpu-bench.sh): per scene, every run's median
+    frame time and its speed-up over brute force in the same run, and the per-pass times of epipolar
+    balanced; without that run, a line saying so."""
+    out = [GPU_HEADING, ""]
+    p = out.append
+    path = gpu_dir / "bench.json" if gpu_dir else None
+    if not path or not path.exists():
+        p("No GPU machine has been lent to a session since this section was added, so it has no figures. On one, "
+          "`scripts/gpu-bench.sh prepare` (here) and `scripts/gpu-bench.sh run OUT` (there, with `.gl` and "
+          "`build-gpu/stage` carried) run `bench/full.json` in under 10 minutes, and "
+          "`scripts/write_report.py --gpu-section OUT docs/performance.md` fills this section.\n")
+        return out
+    runs = [r for r in json.loads(path.read_text())["runs"] if not r["cpuDevice"]]
+    if not runs:
+        p(f"`{path}` holds CPU timings only: not a GPU run.\n")
+        return out
+    first = runs[0]
+    p(f"Device **{first['device']}**, driver {first['driver']}: GPU timestamps, median of {first['frames']} frames "
+      "after warm-up (`scripts/gpu-bench.sh run`, bench/full.json). Speed-up is brute force's median over the "
+      "run's, same scene and size, same run. Errors are not measured there (they do not depend on the device; "
+      "the tables above give them).\n")
+    for scene in sorted({r["scene"] for r in runs}):
+        rows = [r for r in runs if r["scene"] == scene and r["family"] == "profiles"]
+        brute = {tuple(r["size"]): r["time"]["median"] for r in runs
+                 if r["scene"] == scene and r["method"] == "brute-force"}
+        if not rows:
+            continue
+        p(f"### {scene}\n")
+        p("| run | size | median ms | p90 ms | speed-up over brute force |")
+        p("|---|---|---|---|---|")
+        for r in rows:
+            b = brute.get(tuple(r["size"]))
+            t = r["time"]
+            p(f"| {r['label']} | {r['size'][0]}x{r['size'][1]} | {fmt(t['median'])} | {fmt(t['p90'])} | "
+              f"{fmt(b / t['median']) + 'x' if b and t['median'] > 0 else '-'} |")
+        p("")
+        balanced = next((r for r in rows if r["method"] == "epipolar" and r.get("profile") == "balanced"), None)
+        if balanced:
+            total = sum(x["median"] for x in balanced["passes"]) or 1.0
+            p(f"Epipolar balanced, per pass ({scene}):\n")
+            p("| pass | median ms | share |")
+            p("|---|---|---|")
+            for x in balanced["passes"]:
+                p(f"| {x['name']} | {fmt(x['median'])} | {100.0 * x['median'] / total:.1f}% |")
+            p("")
+    return out
+
+
 def main():
+    if len(sys.argv) > 1 and sys.argv[1] == "--gpu-section":
+        # write_report.py --gpu-section GPU_DIR [PAGE.md]: the GPU machine's figures, alone or spliced.
+        lines = gpu_section(Path(sys.argv[2]))
+        if len(sys.argv) > 3:
+            page = Path(sys.argv[3])
+            page.write_text(splice_section(page.read_text(), GPU_HEADING, lines))
+        else:
+            print("\n".join(lines))
+        return
     if len(sys.argv) > 1 and sys.argv[1] == "--occluders-section":
         # write_report.py --occluders-section BENCH_DIR [PAGE.md]: the section alone, or spliced into
         # the page in place (the rest of the page is left as it is).
@@ -198,9 +259,8 @@ def main():
       "'over 5%' counts pixels off by more than 5% of that percentile; PSNR is of the tone-mapped 8-bit "
       "images.\n")
     if cpu:
-        p("> No GPU machine was lent to the session that made this page, so it carries no H100 figures. On one, "
-          "`scripts/make-report.sh bench/full.json` (1920x1080 and 2560x1600, every profile and sweep, "
-          "60 frames) regenerates it with GPU timings.\n")
+        p("> No GPU figures on this page's tables: they are lavapipe's. The section [GPU timings](#gpu-timings) "
+          "holds a GPU machine's run of bench/full.json when one was lent (`scripts/gpu-bench.sh`).\n")
 
     scenes = sorted({r["scene"] for r in runs})
     for scene in scenes:
@@ -422,6 +482,9 @@ def main():
         p("\nThe epipolar method's cost grows with slices x samples and the shadow map, hardly with the screen; "
           "brute force's grows with every pixel. Where the table shows brute force ahead, the screen is too small "
           "for the fixed cost to pay off on this device.\n")
+    # The GPU machine's run, kept where scripts/gpu-bench.sh's results were copied (LS_REPORT_GPU).
+    gpu_dir = os.environ.get("LS_REPORT_GPU", "")
+    out += gpu_section(Path(gpu_dir) if gpu_dir else None)
     print("\n".join(out))
 
 
