@@ -108,10 +108,8 @@ FrameGraph buildLightsGraph(const GraphConfig& c, const std::vector<ls::Shared>&
         fg.summary = "no light scatters and nothing absorbs: no pass at all";
         return fg;
     }
-    // The camera and the medium are every light's: light 0's constants serve camera z and the
-    // composite.
+    // The camera and the medium are every light's: light 0's constants serve the composite.
     base.constants = ls::addUploadConstants(g, base.shared);
-    const rg::ImageRef cameraZ = ls::addCameraZ(g, base);
 
     rg::ImageRef color = fg.color, linOut = fg.inscatterOut;
     size_t chains = 0;
@@ -132,23 +130,23 @@ FrameGraph buildLightsGraph(const GraphConfig& c, const std::vector<ls::Shared>&
         }
         rg::ImageRef lin;
         if (!l.shadowed) {
-            lin = ls::addUnshadowed(g, in, cameraZ);
+            lin = ls::addUnshadowed(g, in);
         } else if (c.method == Method::BruteForce) {
-            lin = ls::addBruteForce(g, in, cameraZ);
+            lin = ls::addBruteForce(g, in);
         } else {
             ls::EpipolarSizes sizes{c.slices, c.samples, l.shadowMapSize};
             ls::EpipolarOptions options{l.minMaxTrees, c.fixup, l.light == ls::LightKind::Point};
-            lin = ls::addEpipolarNodes(g, in, sizes, options, cameraZ).screenInscatter;
+            lin = ls::addEpipolarNodes(g, in, sizes, options).screenInscatter;
         }
         // The first chain's composite applies the extinction; the others add their Lin.
-        const ls::CompositeOutputs o = chains == 0 ? ls::addComposite(g, in, color, cameraZ, lin, linOut)
+        const ls::CompositeOutputs o = chains == 0 ? ls::addComposite(g, in, color, lin, linOut)
                                                    : ls::addInscatter(g, in, color, lin, linOut);
         color = o.color;
         linOut = o.inscatterOut;
         ++chains;
     }
     g.setNameSuffix({});
-    if (chains == 0) ls::addComposite(g, base, color, cameraZ, {}, linOut);  // extinction only
+    if (chains == 0) ls::addComposite(g, base, color, {}, linOut);  // extinction only
     fg.summary = std::to_string(c.lights.size()) + " lights, " + std::to_string(chains) + " reaching the view: " +
                  (c.method == Method::BruteForce ? "brute-force ray marching"
                                                  : std::string("epipolar sampling") + (c.fixup ? ", fix-up" : "")) +
@@ -187,17 +185,16 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared, ls::S
         return fg;
     }
     in.constants = ls::addUploadConstants(g, shared);
-    const rg::ImageRef cameraZ = ls::addCameraZ(g, in);
 
     rg::ImageRef lin;
     if (!c.touchesView) {
         fg.summary = "the light reaches no view ray (or nothing scatters): extinction only";
     } else if (c.method == Method::Analytic) {
-        lin = ls::addAnalytic(g, shared, {in.constants, cameraZ});
+        lin = ls::addAnalytic(g, shared, {in.constants, in.depth});
         fg.summary = "seed 001's arctangent closed form per pixel";
     } else if (c.method == Method::BeamTreeAnalytic) {
         fg.table = g.importImage("point-light table", importDescription(c.table));
-        ls::BeamTreeInputs beam{in.constants, cameraZ, in.depth, fg.table, {}, {}};
+        ls::BeamTreeInputs beam{in.constants, in.depth, fg.table, {}, {}};
         if (c.shadowed) {
             beam.shadowMap = fg.shadowMap;
             beam.lightColor = fg.lightColor;
@@ -232,7 +229,7 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared, ls::S
         planeOptions.reversedZ = c.reversedZ;
         const rg::ImageRef sum = ls::addSlicePlanes(g, shared, slices, planes, planeOptions);
         const ls::SliceResolveOptions resolve{c.sliceTarget, c.sliceBlur, c.light == ls::LightKind::Directional};
-        lin = ls::sliceResolveNeeded(resolve) ? ls::addSliceResolve(g, shared, slices, {in.constants, cameraZ, sum}, resolve)
+        lin = ls::sliceResolveNeeded(resolve) ? ls::addSliceResolve(g, shared, slices, {in.constants, in.depth, sum}, resolve)
                                               : sum;
         fg.summary = std::string("seed 002's view-aligned slice planes") +
                      (c.sliceTarget == ls::SliceAccumulation::Rgba8Channels ? " into 8-bit channels"
@@ -240,7 +237,7 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared, ls::S
                      (c.shadowed && !c.shadowSampling ? ", no shadow-map sampling" : "") +
                      (c.noise ? ", scrolling noise" : "") + (c.sliceBlur ? ", blurred" : "");
     } else if (c.method == Method::ConeMarch) {
-        ls::ConeMarchInputs cone{in.constants, cameraZ, {}, fg.lightColor};
+        ls::ConeMarchInputs cone{in.constants, in.depth, {}, fg.lightColor};
         if (c.shadowed && c.shadowSampling) cone.shadowMap = fg.shadowMap;
         lin = ls::addConeMarch(g, shared, cone, {c.coneSamples, c.coneLimited, c.coneJitter});
         fg.summary = std::string(c.coneLimited ? "cone-limited" : "naive full-ray") + " march, " +
@@ -255,23 +252,23 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared, ls::S
             in.lightColor = fg.lightColor;
         }
         if (!c.shadowed) {
-            lin = ls::addUnshadowed(g, in, cameraZ);
+            lin = ls::addUnshadowed(g, in);
             fg.summary = c.light == ls::LightKind::Directional
                              ? "unshadowed directional light: closed form per pixel"
                              : "unshadowed light: the point-light table in closed form per pixel";
         } else if (c.method == Method::BruteForce) {
-            lin = ls::addBruteForce(g, in, cameraZ);
+            lin = ls::addBruteForce(g, in);
             fg.summary = "brute-force ray marching";
         } else {
             ls::EpipolarSizes sizes{c.slices, c.samples, c.shadowMapSize};
             const bool cube = c.light == ls::LightKind::Point;  // a shadowed point light's cube map
             ls::EpipolarOptions options{c.minMaxTrees, c.fixup, cube};
-            lin = ls::addEpipolarNodes(g, in, sizes, options, cameraZ).screenInscatter;
+            lin = ls::addEpipolarNodes(g, in, sizes, options).screenInscatter;
             fg.summary = std::string("epipolar sampling") + (c.minMaxTrees ? " with min/max trees" : "") +
                          (cube ? " per cube face" : "") + (c.fixup ? ", fix-up" : "");
         }
     }
-    ls::addComposite(g, in, fg.color, cameraZ, lin, fg.inscatterOut);
+    ls::addComposite(g, in, fg.color, lin, fg.inscatterOut);
     return fg;
 }
 

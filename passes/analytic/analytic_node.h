@@ -6,7 +6,7 @@ namespace ls {
 
 struct AnalyticInputs {
     rg::BufferRef constants;  // the frame's FrameConstants
-    rg::ImageRef cameraZ;     // R32F, screen: where each pixel's ray ends
+    rg::ImageRef depth;       // the engine's depth: where each pixel's ray ends
 };
 
 // Returns Lin (R16G16B16A16_SFLOAT, screen).

@@ -124,7 +124,7 @@ rg::ImageRef addBeamTreeHybrid(rg::RenderGraph& graph, const Shared& shared, Bea
         auto pass = graph.addPass("lit pyramids in closed form (seed 004)", rg::PassType::Graphics);
         pass.uniformBuffer(in.constants, kVertexAndFragment);
         pass.storageBufferRead(triangles, VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT);
-        pass.sampled(in.cameraZ);
+        pass.sampled(in.depth, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
         pass.sampled(in.table);
         lin = pass.colorAttachment(lin, rg::LoadOp::Clear);
         pass.execute([shared, frame, in, triangles](rg::PassContext& ctx) {
@@ -144,7 +144,7 @@ rg::ImageRef addBeamTreeHybrid(rg::RenderGraph& graph, const Shared& shared, Bea
                 pipelineKey("lit pyramids", ctx, shared->spec.key()), desc);
             p.bind(ctx.cmd());
             frameSet(ctx, in.constants)
-                .sampled(1, ctx.view(in.cameraZ), ctx.layout(in.cameraZ),
+                .sampled(1, ctx.view(in.depth, VK_IMAGE_ASPECT_DEPTH_BIT), ctx.layout(in.depth),
                          shared->samplers.nearest())
                 .storageBuffer(3, ctx.buffer(triangles))
                 .sampled(7, ctx.view(in.table), ctx.layout(in.table), shared->samplers.nearest())

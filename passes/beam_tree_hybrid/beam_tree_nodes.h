@@ -11,8 +11,8 @@ namespace ls {
 
 struct BeamTreeInputs {
     rg::BufferRef constants;
-    rg::ImageRef cameraZ;     // R32F, screen
-    rg::ImageRef depth;       // the engine's depth: a read-only depth attachment for the planes
+    rg::ImageRef depth;       // the engine's depth: where each pixel's ray ends, and a read-only
+                              // depth attachment for the planes
     rg::ImageRef table;       // the point-light table
     rg::ImageRef shadowMap;   // invalid: the uncertain parts are not sampled (a point light)
     rg::ImageRef lightColor;  // invalid without one

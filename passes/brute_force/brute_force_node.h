@@ -6,6 +6,6 @@
 namespace ls {
 
 // Lin (R16G16B16A16_SFLOAT, screen).
-rg::ImageRef addBruteForce(rg::RenderGraph& graph, const NodeInputs& in, rg::ImageRef cameraZ);
+rg::ImageRef addBruteForce(rg::RenderGraph& graph, const NodeInputs& in);
 
 }  // namespace ls

@@ -28,7 +28,7 @@ rg::ImageRef addConeMarch(rg::RenderGraph& graph, const Shared& shared, const Co
                                                  : "naive ray march (seed 003's baseline)";
     auto pass = graph.addPass(name, rg::PassType::Graphics);
     pass.uniformBuffer(in.constants);
-    pass.sampled(in.cameraZ);
+    pass.sampled(in.depth, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
     if (in.shadowMap.valid()) pass.sampled(in.shadowMap, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
     if (in.lightColor.valid()) pass.sampled(in.lightColor);
     lin = pass.colorAttachment(lin, rg::LoadOp::DontCare);
@@ -47,7 +47,7 @@ rg::ImageRef addConeMarch(rg::RenderGraph& graph, const Shared& shared, const Co
         const auto& p = shared->pipelines.graphics(pipelineKey("cone march", ctx, variant), desc);
         p.bind(ctx.cmd());
         auto set = frameSet(ctx, in.constants);
-        set.sampled(1, ctx.view(in.cameraZ), ctx.layout(in.cameraZ), shared->samplers.nearest());
+        set.sampled(1, ctx.view(in.depth, VK_IMAGE_ASPECT_DEPTH_BIT), ctx.layout(in.depth), shared->samplers.nearest());
         if (shadow)
             set.sampled(6, ctx.view(in.shadowMap, VK_IMAGE_ASPECT_DEPTH_BIT), ctx.layout(in.shadowMap),
                         shared->samplers.nearest());

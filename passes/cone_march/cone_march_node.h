@@ -13,7 +13,7 @@ struct ConeMarchOptions {
 
 struct ConeMarchInputs {
     rg::BufferRef constants;  // the frame's FrameConstants
-    rg::ImageRef cameraZ;     // R32F, screen
+    rg::ImageRef depth;       // the engine's depth: where each pixel's ray ends
     rg::ImageRef shadowMap;   // the light's depth; invalid: no shadow sampling (the low-end mode)
     rg::ImageRef lightColor;  // light-space color; invalid without one
 };

@@ -5,8 +5,7 @@
 namespace ls {
 
 EpipolarCoordinates addEpipolarCoordinates(rg::RenderGraph& g, const NodeInputs& in,
-                                           const EpipolarSizes& s, rg::ImageRef sliceEndPoints,
-                                           rg::ImageRef cameraZ) {
+                                           const EpipolarSizes& s, rg::ImageRef sliceEndPoints) {
     auto perSample = [&s](VkFormat format) {
         return rg::ImageDesc::absolute(format, s.samples, s.slices);
     };
@@ -17,14 +16,14 @@ EpipolarCoordinates addEpipolarCoordinates(rg::RenderGraph& g, const NodeInputs&
     auto pass = g.addPass("coordinates and epipolar z", rg::PassType::Graphics);
     pass.uniformBuffer(in.constants);
     pass.sampled(sliceEndPoints);
-    pass.sampled(cameraZ);
+    pass.sampled(in.depth, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
     // Cleared to values no valid sample has: the later passes tell valid samples by them too.
     out.coordinates =
         pass.colorAttachment(out.coordinates, rg::LoadOp::Clear, {{-1e4f, -1e4f, 0.0f, 0.0f}});
     out.epipolarZ =
         pass.colorAttachment(out.epipolarZ, rg::LoadOp::Clear, {{-1.0f, 0.0f, 0.0f, 0.0f}});
     out.epipolarStencil = pass.stencilWrite(out.epipolarStencil, rg::LoadOp::Clear, 0);
-    pass.execute([in, sliceEndPoints, cameraZ](rg::PassContext& ctx) {
+    pass.execute([in, sliceEndPoints](rg::PassContext& ctx) {
         auto desc = fullscreenPipeline(rg::spirv(ls_spirv::epipolar_coordinates_frag), ctx,
                                        {uniformBinding(0), sampledBinding(1), sampledBinding(2)});
         desc.stencilTest = true;
@@ -36,7 +35,7 @@ EpipolarCoordinates addEpipolarCoordinates(rg::RenderGraph& g, const NodeInputs&
         frameSet(ctx, in.constants)
             .sampled(1, ctx.view(sliceEndPoints), ctx.layout(sliceEndPoints),
                      in.shared->samplers.nearest())
-            .sampled(2, ctx.view(cameraZ), ctx.layout(cameraZ), in.shared->samplers.nearest())
+            .sampled(2, ctx.view(in.depth, VK_IMAGE_ASPECT_DEPTH_BIT), ctx.layout(in.depth), in.shared->samplers.nearest())
             .push(ctx.device(), ctx.cmd(), p);
         vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
     });

@@ -5,10 +5,9 @@
 namespace ls {
 
 EpipolarResult addEpipolarNodes(rg::RenderGraph& g, const NodeInputs& in,
-                                const EpipolarSizes& sizes, const EpipolarOptions& options,
-                                rg::ImageRef cameraZ) {
+                                const EpipolarSizes& sizes, const EpipolarOptions& options) {
     const rg::ImageRef endPoints = addSliceEndPoints(g, in, sizes);
-    const EpipolarCoordinates samples = addEpipolarCoordinates(g, in, sizes, endPoints, cameraZ);
+    const EpipolarCoordinates samples = addEpipolarCoordinates(g, in, sizes, endPoints);
     const rg::ImageRef sources = addRefineSamples(g, in, sizes, samples.epipolarZ);
     const rg::ImageRef marking = addMarkRayMarchSamples(g, in, sources, samples.epipolarStencil);
     // The shadow map's part: the line of every slice in it, the trees along those lines and the
@@ -37,9 +36,9 @@ EpipolarResult addEpipolarNodes(rg::RenderGraph& g, const NodeInputs& in,
     }
     const rg::ImageRef interpolated = addInterpolate(g, in, sizes, sources, marched, marking);
     const UnwarpOutputs screen =
-        addUnwarp(g, in, {endPoints, samples.epipolarZ, interpolated, cameraZ}, options.fixup);
+        addUnwarp(g, in, {endPoints, samples.epipolarZ, interpolated}, options.fixup);
     if (!options.fixup) return {screen.screenInscatter};
-    return {addFixup(g, in, cameraZ, screen.cameraStencil, screen.screenInscatter)};
+    return {addFixup(g, in, screen.cameraStencil, screen.screenInscatter)};
 }
 
 }  // namespace ls

@@ -18,15 +18,15 @@ struct EpipolarSizes {
 // Entry and exit of each slice's line in NDC: RGBA32F, slices x 1.
 rg::ImageRef addSliceEndPoints(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s);
 
-// Each sample's NDC position and the camera-space z under it; valid samples get stencil 1.
+// Each sample's NDC position and the camera-space z under it (from in.depth); valid samples get
+// stencil 1.
 struct EpipolarCoordinates {
     rg::ImageRef coordinates;      // RG32F, samples x slices
     rg::ImageRef epipolarZ;        // R32F, samples x slices
     rg::ImageRef epipolarStencil;  // depth-stencil, samples x slices
 };
 EpipolarCoordinates addEpipolarCoordinates(rg::RenderGraph& g, const NodeInputs& in,
-                                           const EpipolarSizes& s, rg::ImageRef sliceEndPoints,
-                                           rg::ImageRef cameraZ);
+                                           const EpipolarSizes& s, rg::ImageRef sliceEndPoints);
 
 // Each sample's two interpolation sources: RG16UI, samples x slices.
 rg::ImageRef addRefineSamples(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
@@ -68,7 +68,7 @@ rg::ImageRef addInterpolate(rg::RenderGraph& g, const NodeInputs& in, const Epip
 // The samples unwarped to the screen, and with markForFixup the pixels no sample could serve
 // marked 1 in a camera stencil. Reads in.table.
 struct UnwarpInputs {
-    rg::ImageRef sliceEndPoints, epipolarZ, interpolated, cameraZ;
+    rg::ImageRef sliceEndPoints, epipolarZ, interpolated;
 };
 struct UnwarpOutputs {
     rg::ImageRef screenInscatter;  // RGBA16F, screen
@@ -79,10 +79,10 @@ UnwarpOutputs addUnwarp(rg::RenderGraph& g, const NodeInputs& in, const UnwarpIn
 
 // Marches the pixels marked in cameraStencil on their own into screenInscatter; returns its new
 // version. Reads the light's images.
-rg::ImageRef addFixup(rg::RenderGraph& g, const NodeInputs& in, rg::ImageRef cameraZ,
+rg::ImageRef addFixup(rg::RenderGraph& g, const NodeInputs& in,
                       rg::ImageRef cameraStencil, rg::ImageRef screenInscatter);
 
-// The whole chain, from camera-space z to the screen's in-scattering (before compositing). With
+// The whole chain, from the engine's depth to the screen's in-scattering (before compositing). With
 // cubeShadow (a point light's six-layer shadow map) the samples are shared by the six faces and
 // each face adds its own line frames, trees and march (in.shared->cubeFaces; each face's constants
 // are uploaded by the chain); the fix-up marches the whole cube.
@@ -95,7 +95,6 @@ struct EpipolarResult {
     rg::ImageRef screenInscatter;  // RGBA16F, screen
 };
 EpipolarResult addEpipolarNodes(rg::RenderGraph& g, const NodeInputs& in,
-                                const EpipolarSizes& sizes, const EpipolarOptions& options,
-                                rg::ImageRef cameraZ);
+                                const EpipolarSizes& sizes, const EpipolarOptions& options);
 
 }  // namespace ls

@@ -17,7 +17,7 @@ UnwarpOutputs addUnwarp(rg::RenderGraph& g, const NodeInputs& in, const UnwarpIn
     pass.sampled(i.sliceEndPoints);
     pass.sampled(i.epipolarZ);
     pass.sampled(i.interpolated);
-    pass.sampled(i.cameraZ);
+    pass.sampled(in.depth, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
     if (in.table.valid()) pass.sampled(in.table);
     out.screenInscatter = pass.colorAttachment(out.screenInscatter, rg::LoadOp::DontCare);
     if (markForFixup) {
@@ -42,7 +42,7 @@ UnwarpOutputs addUnwarp(rg::RenderGraph& g, const NodeInputs& in, const UnwarpIn
         set.sampled(1, ctx.view(i.sliceEndPoints), ctx.layout(i.sliceEndPoints), sm.nearest())
             .sampled(2, ctx.view(i.epipolarZ), ctx.layout(i.epipolarZ), sm.nearest())
             .sampled(3, ctx.view(i.interpolated), ctx.layout(i.interpolated), sm.nearest())
-            .sampled(4, ctx.view(i.cameraZ), ctx.layout(i.cameraZ), sm.nearest());
+            .sampled(4, ctx.view(in.depth, VK_IMAGE_ASPECT_DEPTH_BIT), ctx.layout(in.depth), sm.nearest());
         if (in.table.valid()) set.sampled(7, ctx.view(in.table), ctx.layout(in.table), sm.nearest());
         set.push(ctx.device(), ctx.cmd(), write);
         int32_t mode = 0;

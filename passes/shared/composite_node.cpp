@@ -34,16 +34,16 @@ rg::ShaderCode compositeShader(VkFormat color, bool lin, bool out) {
 }  // namespace
 
 CompositeOutputs addComposite(rg::RenderGraph& graph, const NodeInputs& in, rg::ImageRef color,
-                              rg::ImageRef cameraZ, rg::ImageRef lin, rg::ImageRef inscatterOut) {
+                              rg::ImageRef lin, rg::ImageRef inscatterOut) {
     auto pass = graph.addPass("composite", rg::PassType::Compute);
     pass.uniformBuffer(in.constants);
-    pass.sampled(cameraZ);
+    pass.sampled(in.depth, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
     if (lin.valid()) pass.sampled(lin);
     const rg::ImageRef out = pass.storageReadWrite(color);
     rg::ImageRef linOut;
     if (inscatterOut.valid()) linOut = pass.storageWrite(inscatterOut);
     const VkFormat format = graph.resource(color.id).image.format;
-    pass.execute([in, cameraZ, lin, out, linOut, format](rg::PassContext& ctx) {
+    pass.execute([in, lin, out, linOut, format](rg::PassContext& ctx) {
         std::vector<rg::Binding> b{uniformBinding(0), sampledBinding(1), storageBinding(2)};
         if (lin.valid()) b.push_back(sampledBinding(3));
         if (linOut.valid()) b.push_back(storageBinding(4));
@@ -53,7 +53,7 @@ CompositeOutputs addComposite(rg::RenderGraph& graph, const NodeInputs& in, rg::
             key, compositeShader(format, lin.valid(), linOut.valid()), b, 0, {});
         p.bind(ctx.cmd());
         auto set = frameSet(ctx, in.constants);
-        set.sampled(1, ctx.view(cameraZ), ctx.layout(cameraZ), in.shared->samplers.nearest())
+        set.sampled(1, ctx.view(in.depth, VK_IMAGE_ASPECT_DEPTH_BIT), ctx.layout(in.depth), in.shared->samplers.nearest())
             .storage(2, ctx.view(out));
         if (lin.valid()) set.sampled(3, ctx.view(lin), ctx.layout(lin), in.shared->samplers.nearest());
         if (linOut.valid()) set.storage(4, ctx.view(linOut));

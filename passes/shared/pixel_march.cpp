@@ -22,13 +22,13 @@ rg::ShaderCode pixelMarchShader(const ScatterSpec& spec) {
 
 }  // namespace
 
-void declarePixelMarch(rg::PassBuilder& pass, const NodeInputs& in, rg::ImageRef cameraZ) {
+void declarePixelMarch(rg::PassBuilder& pass, const NodeInputs& in) {
     pass.uniformBuffer(in.constants);
-    pass.sampled(cameraZ);
+    pass.sampled(in.depth, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
     declareMarchInputs(pass, in);
 }
 
-void drawPixelMarch(rg::PassContext& ctx, const NodeInputs& in, rg::ImageRef cameraZ,
+void drawPixelMarch(rg::PassContext& ctx, const NodeInputs& in,
                     const PixelMarchDraw& draw) {
     const ScatterSpec& spec = in.shared->spec;
     std::vector<rg::Binding> b{uniformBinding(0), sampledBinding(1)};
@@ -47,7 +47,7 @@ void drawPixelMarch(rg::PassContext& ctx, const NodeInputs& in, rg::ImageRef cam
     if (draw.whereStencilIsOne)
         vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 1);
     auto set = frameSet(ctx, in.constants);
-    set.sampled(1, ctx.view(cameraZ), ctx.layout(cameraZ), in.shared->samplers.nearest());
+    set.sampled(1, ctx.view(in.depth, VK_IMAGE_ASPECT_DEPTH_BIT), ctx.layout(in.depth), in.shared->samplers.nearest());
     pushMarchInputs(set, ctx, in);
     set.push(ctx.device(), ctx.cmd(), p);
     p.push(ctx.cmd(), draw.maxSteps);

@@ -9,8 +9,8 @@
 
 namespace ls {
 
-// The march's reads: the frame constants, camera-space z and the light's images.
-void declarePixelMarch(rg::PassBuilder& pass, const NodeInputs& in, rg::ImageRef cameraZ);
+// The march's reads: the frame constants, the engine's depth and the light's images.
+void declarePixelMarch(rg::PassBuilder& pass, const NodeInputs& in);
 
 struct PixelMarchDraw {
     const char* pipeline = "";       // names the pipeline, with the light's variant and the targets
@@ -19,7 +19,6 @@ struct PixelMarchDraw {
 };
 
 // Records the march as one full-screen draw of the pass.
-void drawPixelMarch(rg::PassContext& ctx, const NodeInputs& in, rg::ImageRef cameraZ,
-                    const PixelMarchDraw& draw);
+void drawPixelMarch(rg::PassContext& ctx, const NodeInputs& in, const PixelMarchDraw& draw);
 
 }  // namespace ls

@@ -1,5 +1,5 @@
 #pragma once
-// Nodes every method shares: the frame constants, camera-space z, the point-light table, the
+// Nodes every method shares: the frame constants, the point-light table, the
 // closed form for lights without a shadow map (whatever the method), and the composite. Each
 // function adds one pass to the graph, takes the handles it reads and returns those it writes.
 #include "node_inputs.h"
@@ -9,11 +9,8 @@ namespace ls {
 // Copies this frame's constants into a graph buffer (vkCmdUpdateBuffer, recorded per frame).
 rg::BufferRef addUploadConstants(rg::RenderGraph& graph, const Shared& shared);
 
-// Camera-space z of every pixel's ray end (R32_SFLOAT, screen), from in.depth.
-rg::ImageRef addCameraZ(rg::RenderGraph& graph, const NodeInputs& in);
-
 // Closed-form Lin for a light without a shadow map (R16G16B16A16_SFLOAT, screen); reads in.table.
-rg::ImageRef addUnshadowed(rg::RenderGraph& graph, const NodeInputs& in, rg::ImageRef cameraZ);
+rg::ImageRef addUnshadowed(rg::RenderGraph& graph, const NodeInputs& in);
 
 // color = color * exp(-betaT S) + Lin, and Lin alone into `inscatterOut` when it is valid.
 // Without Lin (the light's volume misses the view) only the extinction is applied.
@@ -22,7 +19,7 @@ struct CompositeOutputs {
     rg::ImageRef inscatterOut;  // invalid when none was given
 };
 CompositeOutputs addComposite(rg::RenderGraph& graph, const NodeInputs& in, rg::ImageRef color,
-                              rg::ImageRef cameraZ, rg::ImageRef lin, rg::ImageRef inscatterOut);
+                              rg::ImageRef lin, rg::ImageRef inscatterOut);
 
 // Several lights: adds one more light's Lin into the color, after the first light's composite
 // (which applied the extinction), and into `inscatterOut` when it is valid (which then holds the

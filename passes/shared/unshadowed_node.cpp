@@ -13,15 +13,15 @@ rg::ShaderCode unshadowedShader(const ScatterSpec& spec) {
 
 }  // namespace
 
-rg::ImageRef addUnshadowed(rg::RenderGraph& graph, const NodeInputs& in, rg::ImageRef cameraZ) {
+rg::ImageRef addUnshadowed(rg::RenderGraph& graph, const NodeInputs& in) {
     rg::ImageRef lin = graph.createImage("in-scattering (screen)",
                                          rg::ImageDesc::screen(VK_FORMAT_R16G16B16A16_SFLOAT));
     auto pass = graph.addPass("unshadowed in-scattering", rg::PassType::Graphics);
     pass.uniformBuffer(in.constants);
-    pass.sampled(cameraZ);
+    pass.sampled(in.depth, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
     declareMarchInputs(pass, in);  // the table; an unshadowed frame has nothing else
     lin = pass.colorAttachment(lin, rg::LoadOp::DontCare);
-    pass.execute([in, cameraZ](rg::PassContext& ctx) {
+    pass.execute([in](rg::PassContext& ctx) {
         const ScatterSpec& spec = in.shared->spec;
         std::vector<rg::Binding> b{uniformBinding(0), sampledBinding(1)};
         appendMarchBindings(b, in);
@@ -31,7 +31,7 @@ rg::ImageRef addUnshadowed(rg::RenderGraph& graph, const NodeInputs& in, rg::Ima
             pipelineKey("unshadowed in-scattering", ctx, spec.key()), desc);
         p.bind(ctx.cmd());
         auto set = frameSet(ctx, in.constants);
-        set.sampled(1, ctx.view(cameraZ), ctx.layout(cameraZ), in.shared->samplers.nearest());
+        set.sampled(1, ctx.view(in.depth, VK_IMAGE_ASPECT_DEPTH_BIT), ctx.layout(in.depth), in.shared->samplers.nearest());
         pushMarchInputs(set, ctx, in);
         set.push(ctx.device(), ctx.cmd(), p);
         vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);

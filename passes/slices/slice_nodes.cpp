@@ -109,7 +109,7 @@ rg::ImageRef addSliceResolve(rg::RenderGraph& graph, const Shared& shared,
                                          rg::ImageDesc::screen(VK_FORMAT_R16G16B16A16_SFLOAT));
     auto pass = graph.addPass("resolve slice planes", rg::PassType::Graphics);
     pass.uniformBuffer(in.constants);
-    pass.sampled(in.cameraZ);
+    pass.sampled(in.depth, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
     pass.sampled(in.planeSum);
     lin = pass.colorAttachment(lin, rg::LoadOp::DontCare);
     pass.execute([shared, placement, in, options](rg::PassContext& ctx) {
@@ -129,7 +129,7 @@ rg::ImageRef addSliceResolve(rg::RenderGraph& graph, const Shared& shared,
             shared->pipelines.graphics(pipelineKey("resolve slice planes", ctx, variant), desc);
         p.bind(ctx.cmd());
         frameSet(ctx, in.constants)
-            .sampled(1, ctx.view(in.cameraZ), ctx.layout(in.cameraZ), shared->samplers.nearest())
+            .sampled(1, ctx.view(in.depth, VK_IMAGE_ASPECT_DEPTH_BIT), ctx.layout(in.depth), shared->samplers.nearest())
             .sampled(2, ctx.view(in.planeSum), ctx.layout(in.planeSum), shared->samplers.linear())
             .push(ctx.device(), ctx.cmd(), p);
         SliceResolvePush push = placement->resolve;

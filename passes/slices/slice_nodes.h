@@ -36,7 +36,7 @@ rg::ImageRef addSlicePlanes(rg::RenderGraph& graph, const Shared& shared,
 
 struct SliceResolveInputs {
     rg::BufferRef constants;
-    rg::ImageRef cameraZ;   // R32F, screen
+    rg::ImageRef depth;     // the engine's depth: where each pixel's ray ends
     rg::ImageRef planeSum;  // addSlicePlanes' result
 };
 

@@ -11,14 +11,14 @@
 #include "camera.glsl"
 #include "light_volume.glsl"
 #include "simplified.glsl"
-layout(binding = 1) uniform sampler2D cameraZ;
+layout(binding = 1) uniform sampler2D depthBuffer;  // the engine's depth
 layout(location = 0) out vec4 outInscatter;
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec3 C = frame.cameraPos.xyz;
     vec3 v = pixelRayDirection(pixel);
-    float S = rayLength(texelFetch(cameraZ, pixel, 0).r, v);
+    float S = rayLength(pixelCameraZ(depthBuffer, pixel), v);
     float t0, t1;
     lightInterval(C, v, S, t0, t1);
     vec3 lin = vec3(0.0);

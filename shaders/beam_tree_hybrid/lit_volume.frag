@@ -12,7 +12,7 @@ layout(binding = 7) uniform sampler2D pointTable;
 #include "integrate.glsl"
 #include "light_volume.glsl"
 #include "simplified.glsl"
-layout(binding = 1) uniform sampler2D cameraZ;
+layout(binding = 1) uniform sampler2D depthBuffer;  // the engine's depth
 
 layout(location = 0) in vec3 worldPos;
 layout(location = 1) flat in int plane;
@@ -22,7 +22,7 @@ void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec3 C = frame.cameraPos.xyz;
     vec3 v = pixelRayDirection(pixel);
-    float S = rayLength(texelFetch(cameraZ, pixel, 0).r, v);
+    float S = rayLength(pixelCameraZ(depthBuffer, pixel), v);
     float z = min(dot(worldPos - C, v), S);
     float t0, t1;
     lightInterval(C, v, S, t0, t1);

@@ -9,7 +9,7 @@
 #include "camera.glsl"
 #include "light_volume.glsl"
 #include "math.glsl"
-layout(binding = 1) uniform sampler2D cameraZ;
+layout(binding = 1) uniform sampler2D depthBuffer;  // the engine's depth
 #if LS_SHADOW_MAP
 layout(binding = 6) uniform sampler2D shadowMap;
 #include "shadow.glsl"
@@ -35,7 +35,7 @@ void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec3 C = frame.cameraPos.xyz;
     vec3 v = pixelRayDirection(pixel);
-    float S = rayLength(texelFetch(cameraZ, pixel, 0).r, v);
+    float S = rayLength(pixelCameraZ(depthBuffer, pixel), v);
     float t0 = 0.0, t1 = S;
     if (kConeLimited) lightInterval(C, v, S, t0, t1);
     vec3 lin = vec3(0.0);

@@ -5,7 +5,7 @@
 #include "epipolar_geometry.glsl"
 #include "camera.glsl"
 layout(binding = 1) uniform sampler2D sliceEndPoints;
-layout(binding = 2) uniform sampler2D cameraZ;
+layout(binding = 2) uniform sampler2D depthBuffer;  // the engine's depth
 layout(location = 0) out vec2 outCoordinate;
 layout(location = 1) out float outCameraZ;
 
@@ -18,5 +18,5 @@ void main() {
     if (!insideBoundary(pos, 1e-5)) discard;
     ivec2 pixel = clamp(ivec2(floor(ndcToPixel(pos))), ivec2(0), ivec2(frame.screenSize.xy) - 1);
     outCoordinate = pos;
-    outCameraZ = texelFetch(cameraZ, pixel, 0).r;
+    outCameraZ = pixelCameraZ(depthBuffer, pixel);
 }

@@ -11,7 +11,7 @@
 layout(binding = 1) uniform sampler2D sliceEndPoints;
 layout(binding = 2) uniform sampler2D epipolarZ;
 layout(binding = 3) uniform sampler2D inscatter;
-layout(binding = 4) uniform sampler2D cameraZ;
+layout(binding = 4) uniform sampler2D depthBuffer;  // the engine's depth
 #if LS_NEEDS_TABLE
 layout(binding = 7) uniform sampler2D pointTable;
 #endif
@@ -23,7 +23,7 @@ layout(location = 0) out vec4 outInscatter;
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec2 p = pixelToNdc(vec2(pixel) + 0.5);
-    float z = texelFetch(cameraZ, pixel, 0).r;
+    float z = pixelCameraZ(depthBuffer, pixel);
     vec2 light = frame.lightScreen.xy;
     vec2 d = p - light;
     if (dot(d, d) < 1e-12) d = vec2(1e-6, 0.0);

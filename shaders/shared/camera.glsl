@@ -16,8 +16,8 @@ vec2 ndcToPixel(vec2 ndc) { return (ndc * 0.5 + 0.5) * frame.screenSize.xy; }
 // Unit direction of the ray through a pixel's centre.
 vec3 pixelRayDirection(ivec2 pixel) { return rayDirection(pixelToNdc(vec2(pixel) + 0.5)); }
 
-// S: the distance along unit ray v to its end, whose camera-space z is z (the camera-space z
-// texture's value). The floor keeps rays at right angles to the view axis finite.
+// S: the distance along unit ray v to its end, whose camera-space z is z (pixelCameraZ). The
+// floor keeps rays at right angles to the view axis finite.
 float rayLength(float z, vec3 v) { return z / max(dot(v, frame.cameraForward.xyz), 1e-4); }
 
 bool isSkyDepth(float d) {
@@ -42,6 +42,12 @@ float rayEndCameraZ(float depth, float cosAxis) {
     float sky = frame.betaM.w;
     if (frame.depthInfo.y < 0.5) sky = min(frame.depthInfo.w / c, sky);
     return sky * c;
+}
+
+// Camera-space z of the end of a pixel's ray, from the engine's depth buffer. No screen-sized
+// texture of it is kept: each reader derives it where it reads the depth.
+float pixelCameraZ(sampler2D depthBuffer, ivec2 pixel) {
+    return rayEndCameraZ(texelFetch(depthBuffer, pixel, 0).r, dot(pixelRayDirection(pixel), frame.cameraForward.xyz));
 }
 
 #endif

@@ -4,7 +4,7 @@
 // optionally Lin alone into an output image. Nothing else: no tone mapping, no exposure.
 #include "camera.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 1) uniform sampler2D cameraZ;
+layout(binding = 1) uniform sampler2D depthBuffer;  // the engine's depth
 #if LS_COLOR_RGBA32F
 layout(binding = 2, rgba32f) uniform image2D color;
 #else
@@ -21,7 +21,7 @@ void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(p, imageSize(color)))) return;
     vec3 v = pixelRayDirection(p);
-    float S = rayLength(texelFetch(cameraZ, p, 0).r, v);
+    float S = rayLength(pixelCameraZ(depthBuffer, p), v);
 #if LS_WITH_LIN
     vec3 lin = texelFetch(inscatter, p, 0).rgb;
 #else

@@ -4,7 +4,7 @@
 // crosses. Brute force runs it on every pixel (the on-GPU reference the other methods are compared
 // with); the epipolar fix-up on the pixels its unwarp could not serve, with an optional step cap.
 #include "camera.glsl"
-layout(binding = 1) uniform sampler2D cameraZ;
+layout(binding = 1) uniform sampler2D depthBuffer;  // the engine's depth
 #if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
 layout(binding = 6) uniform sampler2DArray shadowMap;  // a point light's six cube faces
 #else
@@ -23,7 +23,7 @@ layout(location = 0) out vec4 outInscatter;
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec3 v = pixelRayDirection(pixel);
-    float S = rayLength(texelFetch(cameraZ, pixel, 0).r, v);
+    float S = rayLength(pixelCameraZ(depthBuffer, pixel), v);
 #if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
     outInscatter = vec4(marchRayCube(frame.cameraPos.xyz, v, S, pc.maxSteps), 1.0);
 #else

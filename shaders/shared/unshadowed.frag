@@ -3,7 +3,7 @@
 // Lights without a shadow map: Lin in closed form per pixel (Hoffman-Preetham for a directional
 // light, the seed's table for point and spot lights, the spot clipped to its cone and range).
 #include "camera.glsl"
-layout(binding = 1) uniform sampler2D cameraZ;
+layout(binding = 1) uniform sampler2D depthBuffer;  // the engine's depth
 #if LS_NEEDS_TABLE
 layout(binding = 7) uniform sampler2D pointTable;
 #endif
@@ -15,7 +15,7 @@ void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec3 C = frame.cameraPos.xyz;
     vec3 v = pixelRayDirection(pixel);
-    float S = rayLength(texelFetch(cameraZ, pixel, 0).r, v);
+    float S = rayLength(pixelCameraZ(depthBuffer, pixel), v);
     float t0, t1;
     lightInterval(C, v, S, t0, t1);
     vec3 lin = vec3(0.0);

@@ -6,7 +6,7 @@
 // reaches everywhere, and outside the shadow map's box nothing shadows it.
 #include "camera.glsl"
 #include "integrate.glsl"
-layout(binding = 1) uniform sampler2D cameraZ;
+layout(binding = 1) uniform sampler2D depthBuffer;  // the engine's depth
 layout(binding = 2) uniform sampler2D planeSum;  // linear, clamped
 
 layout(constant_id = 10) const bool kChannels = false;
@@ -42,7 +42,7 @@ void main() {
     if (kClosedFormOutsideSlab && kLightType == LIGHT_DIRECTIONAL) {
         vec3 C = frame.cameraPos.xyz;
         vec3 v = pixelRayDirection(pixel);
-        float S = rayLength(texelFetch(cameraZ, pixel, 0).r, v);
+        float S = rayLength(pixelCameraZ(depthBuffer, pixel), v);
         float c = max(dot(v, frame.cameraForward.xyz), 1e-4);
         lin += unshadowedInscatter(C, v, 0.0, min(S, resolve.slab.x / c));
         lin += unshadowedInscatter(C, v, resolve.slab.y / c, S);

@@ -28,7 +28,9 @@ TEST(Budget, SeedProfilesAt2560x1600) {
         // The seed's auxiliary textures, with its formats.
         std::set<std::string> seen;
         for (const auto& e : b.entries) seen.insert(e.name + " " + e.format);
-        for (const char* want : {"camera-space z R32_SFLOAT", "coordinate texture R32G32_SFLOAT",
+        // No screen-sized camera-space z: every reader derives it from the engine's depth.
+        EXPECT_FALSE(seen.count("camera-space z R32_SFLOAT"));
+        for (const char* want : {"coordinate texture R32G32_SFLOAT",
                                  "epipolar camera-space z R32_SFLOAT", "interpolation source R16G16_UINT",
                                  "in-scattering (ray-marched samples) R16G16B16A16_SFLOAT",
                                  "in-scattering (all samples) R16G16B16A16_SFLOAT",
@@ -53,7 +55,7 @@ TEST(Budget, EntriesHaveTheSeedsSizes) {
             EXPECT_EQ(e.width, 2048u);
             EXPECT_EQ(e.height, 1024u);
         }
-        if (e.name == "camera-space z") {
+        if (e.name == "in-scattering (screen)") {
             EXPECT_EQ(e.width, 1920u);
             EXPECT_EQ(e.height, 1080u);
         }
@@ -196,7 +198,6 @@ TEST(Budget, SlicesListsItsTargetPerProfile) {
         std::printf("slices %-17s peak %6.1f MiB: %s\n", lightscatter::profileName(row.profile),
                     static_cast<double>(b.peakBytes) / 1048576.0, all.c_str());
         EXPECT_TRUE(seen.count(row.target)) << all;
-        EXPECT_TRUE(seen.count("camera-space z R32_SFLOAT") || !row.resolved) << all;
         EXPECT_EQ(seen.count("in-scattering (screen) R16G16B16A16_SFLOAT"), row.resolved ? 1u : 0u) << all;
         EXPECT_FALSE(seen.count("coordinate texture R32G32_SFLOAT")) << all;
         for (const auto& e : b.entries) EXPECT_NE(e.name, "point-light table");
