@@ -93,9 +93,9 @@ std::vector<double> loadOrRenderReference(const SceneDesc& scene, const MeshData
 }
 
 const char* kCsvHeader =
-    "scene,label,family,method,profile,width,height,slices,samples,initialStep,minMaxTrees,shadowMap,"
-    "frames,medianMs,p10Ms,p90Ms,minMs,maxMs,meanRelativeError,rmse,p99Error,maxError,fractionOver5pct,"
-    "psnrDb,nonFinite,device,cpuDevice,cpuWorkMs,occluders";
+    "scene,label,family,method,profile,width,height,slices,samples,initialStep,minMaxTrees,"
+    "shadowMap,frames,medianMs,p10Ms,p90Ms,minMs,maxMs,meanRelativeError,rmse,p99Error,maxError,"
+    "fractionOver5pct,psnrDb,nonFinite,device,cpuDevice,cpuWorkMs,occluders,lights";
 
 }  // namespace
 
@@ -225,6 +225,7 @@ int runBench(Args& args) {
         }
         row["cpuWork"] = cpuWork;
         row["occluders"] = renderer->occluderCount();
+        row["lights"] = scene.lightCount();
         row["device"] = device.name();
         row["driver"] = device.driverName();
         row["cpuDevice"] = device.isCpu();
@@ -265,13 +266,17 @@ int runBench(Args& args) {
         }
         row["nonFinite"] = nonFinite;
         char line[1024];
-        std::snprintf(line, sizeof line, "%s,%s,%s,%s,%s,%u,%u,%u,%u,%u,%d,%u,%d,%.6f,%.6f,%.6f,%.6f,%.6f,%s,%zu,\"%s\",%d,%.6f,%zu",
-                      row["scene"].get<std::string>().c_str(), run.label.c_str(), run.family.c_str(),
-                      lightscatter::methodName(run.method), row["profile"].get<std::string>().c_str(), run.size.width,
-                      run.size.height, used.slices, used.samplesPerSlice, used.initialSampleStep,
-                      used.minMaxTrees ? 1 : 0, sceneForRun.light.shadowMapSize, config.frames, t.median, t.p10, t.p90,
-                      t.min, t.max, errorColumns.c_str(), nonFinite, device.name().c_str(), device.isCpu() ? 1 : 0,
-                      cpu.median, renderer->occluderCount());
+        std::snprintf(line, sizeof line,
+                      "%s,%s,%s,%s,%s,%u,%u,%u,%u,%u,%d,%u,%d,"
+                      "%.6f,%.6f,%.6f,%.6f,%.6f,%s,%zu,\"%s\",%d,%.6f,%zu,%zu",
+                      row["scene"].get<std::string>().c_str(), run.label.c_str(),
+                      run.family.c_str(), lightscatter::methodName(run.method),
+                      row["profile"].get<std::string>().c_str(), run.size.width, run.size.height,
+                      used.slices, used.samplesPerSlice, used.initialSampleStep,
+                      used.minMaxTrees ? 1 : 0, sceneForRun.light.shadowMapSize, config.frames,
+                      t.median, t.p10, t.p90, t.min, t.max, errorColumns.c_str(), nonFinite,
+                      device.name().c_str(), device.isCpu() ? 1 : 0, cpu.median,
+                      renderer->occluderCount(), scene.lightCount());
         csv << line << "\n" << std::flush;
         all.push_back(row);
         writeTextFile((out / "bench.json").string(),

@@ -48,17 +48,31 @@ rg::GraphicsPipelineDesc meshPipeline(rg::ShaderCode fragment, const rg::Renderi
     return d;
 }
 
+// Every draw of the mesh with `p` bound; `bind` pushes a draw's descriptors first.
+void drawMesh(VkCommandBuffer cmd, const GpuMesh& mesh, const rg::Pipeline& p,
+              const glm::mat4& viewProj,
+              const std::function<void(const GpuMesh::Draw&)>& bind = {}) {
+    const VkDeviceSize zero = 0;
+    const VkBuffer vertices = mesh.vertices();
+    vkCmdBindVertexBuffers(cmd, 0, 1, &vertices, &zero);
+    vkCmdBindIndexBuffer(cmd, mesh.indices(), 0, VK_INDEX_TYPE_UINT32);
+    for (const auto& d : mesh.draws()) {
+        if (bind) bind(d);
+        p.push(cmd, DrawPush{viewProj, d.baseColor});
+        vkCmdDrawIndexed(cmd, d.indexCount, 1, d.firstIndex, 0, 0);
+    }
+}
+
 }  // namespace
 
 struct EngineRenderer::Pipelines {
     explicit Pipelines(const rg::Device& d) : samplers(d) {}
     rg::Samplers samplers;
-    rg::Pipeline shadow, forward, cubeShadow;
-    Lighting lighting{};
-    // The lights after the first: each one's lighting (no ambient: the first light's pass adds it)
-    // and additive forward pipelines by light type and shadowing.
-    std::vector<Lighting> moreLighting;
-    std::map<int, rg::Pipeline> additive;
+    rg::Pipeline shadow, cubeShadow;
+    // Each light's lighting (ambient in the first light's only: its pass adds it once), and the
+    // shading pipelines by pass (the first light's or an added one), light type and shadowing.
+    std::vector<Lighting> lighting;
+    std::map<int, rg::Pipeline> shading;
     glm::mat4 viewProj{1.0f};
 };
 
@@ -109,13 +123,11 @@ EngineRenderer::~EngineRenderer() {
     graph_.reset();
     pipelines_.reset();
     plugin_.reset();
-    destroyCubeViews();
     vkDestroyFence(device_.device(), fence_, nullptr);
     vkDestroyCommandPool(device_.device(), pool_, nullptr);
 }
 
 void EngineRenderer::createTargets() {
-    const uint32_t sm = scene_.light.shadowMapSize;
     depth_ = std::make_unique<GpuImage>(device_, VK_FORMAT_D32_SFLOAT, size_,
                                         VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
                                         "host depth");
@@ -131,41 +143,21 @@ void EngineRenderer::createTargets() {
                                                       "color readback");
     linReadback_ = std::make_unique<rg::HostBuffer>(device_, pixels * 16, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                                     "in-scattering readback");
-    shadowMap_.reset();
-    destroyCubeViews();
-    cubeShadow_.reset();
-    if (sm > 0 && scene_.light.type == LightKind::Point) {
-        cubeShadow_ = std::make_unique<GpuImage>(
-            device_, VK_FORMAT_D32_SFLOAT, VkExtent2D{sm, sm},
-            VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, "host cube shadow map", 6,
-            VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT);
-        static const char* kFaces[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
-        for (uint32_t i = 0; i < 6; ++i) {
-            VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-            info.image = cubeShadow_->image();
-            info.viewType = VK_IMAGE_VIEW_TYPE_2D;
-            info.format = VK_FORMAT_D32_SFLOAT;
-            info.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, i, 1};
-            RG_VK(vkCreateImageView(device_.device(), &info, nullptr, &cubeFaceViews_[i]));
-            device_.setName(cubeFaceViews_[i], VK_OBJECT_TYPE_IMAGE_VIEW,
-                            std::string("host cube shadow map face ") + kFaces[i]);
-        }
-    }
-    if (sm > 0 && scene_.light.type != LightKind::Point)
-        shadowMap_ = std::make_unique<GpuImage>(device_, VK_FORMAT_D32_SFLOAT, VkExtent2D{sm, sm},
-                                                VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
-                                                    VK_IMAGE_USAGE_SAMPLED_BIT,
-                                                "host shadow map");
-    moreShadowMaps_.clear();
-    for (size_t i = 0; i < scene_.moreLights.size(); ++i) {
-        const LightDesc& l = scene_.moreLights[i];
-        if (l.shadowMapSize > 0 && l.type != LightKind::Point)
-            moreShadowMaps_.push_back(std::make_unique<GpuImage>(
-                device_, VK_FORMAT_D32_SFLOAT, VkExtent2D{l.shadowMapSize, l.shadowMapSize},
-                VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                "host shadow map (light " + std::to_string(i + 1) + ")"));
+    lights_.clear();
+    lights_.resize(scene_.lightCount());
+    for (size_t i = 0; i < lights_.size(); ++i) {
+        const LightDesc& l = scene_.lightAt(i);
+        const uint32_t sm = l.shadowMapSize;
+        if (sm == 0) continue;
+        const std::string which = i == 0 ? "" : " (light " + std::to_string(i) + ")";
+        if (l.type == LightKind::Point)
+            lights_[i].cubeShadow =
+                std::make_unique<CubeShadowMap>(device_, sm, "host cube shadow map" + which);
         else
-            moreShadowMaps_.push_back(nullptr);
+            lights_[i].shadowMap = std::make_unique<GpuImage>(
+                device_, VK_FORMAT_D32_SFLOAT, VkExtent2D{sm, sm},
+                VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                "host shadow map" + which);
     }
     // The Lin output stays in GENERAL from frame to frame, as the plugin expects it.
     device_.submitAndWait([&](VkCommandBuffer cmd) {
@@ -183,72 +175,26 @@ void EngineRenderer::createTargets() {
     });
 }
 
-void EngineRenderer::destroyCubeViews() {
-    for (VkImageView& v : cubeFaceViews_) {
-        if (v) vkDestroyImageView(device_.device(), v, nullptr);
-        v = VK_NULL_HANDLE;
-    }
-}
-
-void EngineRenderer::recordCubeShadow(VkCommandBuffer cmd) {
-    if (!pipelines_->cubeShadow) {
-        rg::RenderingFormats formats;
-        formats.depth = VK_FORMAT_D32_SFLOAT;
-        auto d = meshPipeline(rg::spirv(ls_spirv::shadow_frag), formats);
-        d.depthBias = true;
-        d.cullMode = VK_CULL_MODE_NONE;
-        pipelines_->cubeShadow = rg::Pipeline::graphics(device_, "host cube shadow map", d);
-    }
-    device_.beginLabel(cmd, "host cube shadow map");
-    // The previous frame's plugin read the faces last (its final barrier made that visible to the
-    // fragment tests); they are redrawn from scratch.
-    VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-    b.srcStageMask = VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
-    b.srcAccessMask = VK_ACCESS_2_NONE;
-    b.dstStageMask = VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
-    b.dstAccessMask = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
-    b.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    b.newLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.image = cubeShadow_->image();
-    b.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 6};
-    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    dep.imageMemoryBarrierCount = 1;
-    dep.pImageMemoryBarriers = &b;
-    vkCmdPipelineBarrier2(cmd, &dep);
-
-    const std::array<glm::mat4, 6> faces = cubeFaceViewProjections(scene_.light, bounds_);
-    const VkExtent2D extent = cubeShadow_->extent();
-    const VkDeviceSize zero = 0;
-    const VkBuffer vertices = mesh_->vertices();
-    for (size_t i = 0; i < 6; ++i) {
-        VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-        depth.imageView = cubeFaceViews_[i];
-        depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-        depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-        depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-        depth.clearValue.depthStencil = {1.0f, 0};
-        VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
-        info.renderArea = {{0, 0}, extent};
-        info.layerCount = 1;
-        info.pDepthAttachment = &depth;
-        vkCmdBeginRendering(cmd, &info);
-        const VkViewport viewport{0.0f, 0.0f, static_cast<float>(extent.width), static_cast<float>(extent.height),
-                                  0.0f, 1.0f};
-        const VkRect2D scissor{{0, 0}, extent};
-        vkCmdSetViewport(cmd, 0, 1, &viewport);
-        vkCmdSetScissor(cmd, 0, 1, &scissor);
-        pipelines_->cubeShadow.bind(cmd);
-        vkCmdSetDepthBias(cmd, 1.0f, 0.0f, 1.5f);
-        vkCmdBindVertexBuffers(cmd, 0, 1, &vertices, &zero);
-        vkCmdBindIndexBuffer(cmd, mesh_->indices(), 0, VK_INDEX_TYPE_UINT32);
-        for (const auto& d : mesh_->draws()) {
-            pipelines_->cubeShadow.push(cmd, DrawPush{faces[i], d.baseColor});
-            vkCmdDrawIndexed(cmd, d.indexCount, 1, d.firstIndex, 0, 0);
+void EngineRenderer::recordCubeShadows(VkCommandBuffer cmd) {
+    for (size_t i = 0; i < lights_.size(); ++i) {
+        if (!lights_[i].cubeShadow) continue;
+        if (!pipelines_->cubeShadow) {
+            rg::RenderingFormats formats;
+            formats.depth = VK_FORMAT_D32_SFLOAT;
+            auto d = meshPipeline(rg::spirv(ls_spirv::shadow_frag), formats);
+            d.depthBias = true;
+            d.cullMode = VK_CULL_MODE_NONE;
+            pipelines_->cubeShadow = rg::Pipeline::graphics(device_, "host cube shadow map", d);
         }
-        vkCmdEndRendering(cmd);
+        const rg::Pipeline& pipeline = pipelines_->cubeShadow;
+        const GpuMesh& mesh = *mesh_;
+        lights_[i].cubeShadow->record(cmd, cubeFaceViewProjections(scene_.lightAt(i), bounds_),
+                                      [&](VkCommandBuffer c, const glm::mat4& face) {
+                                          pipeline.bind(c);
+                                          vkCmdSetDepthBias(c, 1.0f, 0.0f, 1.5f);
+                                          drawMesh(c, mesh, pipeline, face);
+                                      });
     }
-    device_.endLabel(cmd);
 }
 
 void EngineRenderer::buildGraph() {
@@ -272,107 +218,36 @@ void EngineRenderer::buildGraph() {
         return d;
     };
     colorRef_ = g.importImage("host hdr color", imported(*color_, VK_IMAGE_LAYOUT_GENERAL));
-    depthRef_ = g.importImage("host depth", imported(*depth_, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL));
-    const bool shadowed = shadowMap_ != nullptr;
-    if (shadowed)
-        shadowRef_ = g.importImage("host shadow map", imported(*shadowMap_, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL));
-
+    depthRef_ =
+        g.importImage("host depth", imported(*depth_, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL));
     auto pipes = pipelines_;
     const GpuMesh* mesh = mesh_.get();
-    rg::BufferRef lighting = g.createBuffer("host lighting", {sizeof(Lighting)});
-    {
-        auto pass = g.addPass("upload lighting", rg::PassType::Transfer);
-        lighting = pass.transferDst(lighting);
-        pass.execute([pipes, lighting](rg::PassContext& ctx) {
-            vkCmdUpdateBuffer(ctx.cmd(), ctx.buffer(lighting), 0, sizeof(Lighting), &pipes->lighting);
-        });
-    }
-    auto drawAll = [mesh](VkCommandBuffer cmd, const rg::Pipeline& p, const glm::mat4& viewProj,
-                          const std::function<void(const GpuMesh::Draw&)>& bind) {
-        const VkDeviceSize zero = 0;
-        const VkBuffer vertices = mesh->vertices();
-        vkCmdBindVertexBuffers(cmd, 0, 1, &vertices, &zero);
-        vkCmdBindIndexBuffer(cmd, mesh->indices(), 0, VK_INDEX_TYPE_UINT32);
-        for (const auto& d : mesh->draws()) {
-            if (bind) bind(d);
-            p.push(cmd, DrawPush{viewProj, d.baseColor});
-            vkCmdDrawIndexed(cmd, d.indexCount, 1, d.firstIndex, 0, 0);
-        }
-    };
-    if (shadowed) {
-        auto pass = g.addPass("shadow map", rg::PassType::Graphics);
-        shadowRef_ = pass.depthWrite(shadowRef_, rg::LoadOp::Clear, 1.0f);
-        pass.execute([pipes, drawAll](rg::PassContext& ctx) {
-            if (!pipes->shadow) {
-                auto d = meshPipeline(rg::spirv(ls_spirv::shadow_frag), ctx.renderingFormats());
-                d.depthBias = true;
-                d.cullMode = VK_CULL_MODE_NONE;
-                pipes->shadow = rg::Pipeline::graphics(ctx.device(), "host shadow map", d);
-            }
-            pipes->shadow.bind(ctx.cmd());
-            vkCmdSetDepthBias(ctx.cmd(), 1.0f, 0.0f, 1.5f);
-            drawAll(ctx.cmd(), pipes->shadow, pipes->lighting.lightViewProj, {});
-        });
-    }
-    {
-        auto pass = g.addPass("forward shading", rg::PassType::Graphics);
-        pass.uniformBuffer(lighting);
-        if (shadowed) pass.sampled(shadowRef_, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
-        const glm::vec3 sky = scene_.skyColor;
-        colorRef_ = pass.colorAttachment(colorRef_, rg::LoadOp::Clear, {{sky.r, sky.g, sky.b, 1.0f}});
-        const bool reversed = scene_.camera.reversedZ;
-        depthRef_ = pass.depthWrite(depthRef_, rg::LoadOp::Clear, reversed ? 0.0f : 1.0f);
-        const rg::ImageRef shadow = shadowRef_;
-        const int32_t lightType = scene_.light.type == LightKind::Directional ? 0
-                                  : scene_.light.type == LightKind::Spot      ? 1
-                                                                              : 2;
-        pass.execute([pipes, drawAll, lighting, shadow, shadowed, reversed, lightType](rg::PassContext& ctx) {
-            if (!pipes->forward) {
-                auto d = meshPipeline(shadowed ? rg::spirv(ls_spirv::mesh_shadowed_frag)
-                                               : rg::spirv(ls_spirv::mesh_unshadowed_frag),
-                                      ctx.renderingFormats());
-                d.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
-                              {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT}};
-                if (shadowed)
-                    d.bindings.push_back({2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT});
-                d.depthCompare = reversed ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL;
-                d.specialization.set(0, lightType);
-                pipes->forward = rg::Pipeline::graphics(ctx.device(), "host forward shading", d);
-            }
-            pipes->forward.bind(ctx.cmd());
-            drawAll(ctx.cmd(), pipes->forward, pipes->viewProj, [&](const GpuMesh::Draw& draw) {
-                rg::DescriptorPush set;
-                set.uniform(0, ctx.buffer(lighting))
-                    .sampled(1, draw.texture, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, pipes->samplers.linear());
-                if (shadowed)
-                    set.sampled(2, ctx.view(shadow, VK_IMAGE_ASPECT_DEPTH_BIT), ctx.layout(shadow),
-                                pipes->samplers.nearest());
-                set.push(ctx.device(), ctx.cmd(), pipes->forward);
-            });
-        });
-    }
-    // The lights after the first: a shadow pass each where it has a map, then its direct light
-    // added onto the shaded color (same geometry, depth tested against the first pass's depth).
-    pipes->moreLighting.resize(scene_.moreLights.size());
-    moreShadowRefs_.assign(scene_.moreLights.size(), rg::ImageRef{});
-    for (size_t i = 0; i < scene_.moreLights.size(); ++i) {
-        const std::string which = " (light " + std::to_string(i + 1) + ")";
-        const bool lit = moreShadowMaps_[i] != nullptr;
-        rg::BufferRef buffer = g.createBuffer("host lighting" + which, {sizeof(Lighting)});
+    pipes->lighting.resize(scene_.lightCount());
+    // Each light: its lighting uploaded, its shadow map drawn where it has a 2D one, then its
+    // direct light shaded. The first light's pass clears the color to the sky, writes depth and
+    // adds the ambient; each later one adds its light onto that color, depth tested against the
+    // same depth.
+    for (size_t i = 0; i < scene_.lightCount(); ++i) {
+        const bool first = i == 0;
+        const std::string which = first ? "" : " (light " + std::to_string(i) + ")";
+        rg::BufferRef lighting = g.createBuffer("host lighting" + which, {sizeof(Lighting)});
         {
             auto pass = g.addPass("upload lighting" + which, rg::PassType::Transfer);
-            buffer = pass.transferDst(buffer);
-            pass.execute([pipes, buffer, i](rg::PassContext& ctx) {
-                vkCmdUpdateBuffer(ctx.cmd(), ctx.buffer(buffer), 0, sizeof(Lighting), &pipes->moreLighting[i]);
+            lighting = pass.transferDst(lighting);
+            pass.execute([pipes, lighting, i](rg::PassContext& ctx) {
+                vkCmdUpdateBuffer(ctx.cmd(), ctx.buffer(lighting), 0, sizeof(Lighting),
+                                  &pipes->lighting[i]);
             });
         }
+        const bool shadowed = lights_[i].shadowMap != nullptr;
         rg::ImageRef shadow;
-        if (lit) {
-            shadow = g.importImage("host shadow map" + which,
-                                   imported(*moreShadowMaps_[i], VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL));
+        if (shadowed) {
+            shadow = g.importImage(
+                "host shadow map" + which,
+                imported(*lights_[i].shadowMap, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL));
             auto pass = g.addPass("shadow map" + which, rg::PassType::Graphics);
             shadow = pass.depthWrite(shadow, rg::LoadOp::Clear, 1.0f);
-            pass.execute([pipes, drawAll, i](rg::PassContext& ctx) {
+            pass.execute([pipes, mesh, i](rg::PassContext& ctx) {
                 if (!pipes->shadow) {
                     auto d = meshPipeline(rg::spirv(ls_spirv::shadow_frag), ctx.renderingFormats());
                     d.depthBias = true;
@@ -381,41 +256,58 @@ void EngineRenderer::buildGraph() {
                 }
                 pipes->shadow.bind(ctx.cmd());
                 vkCmdSetDepthBias(ctx.cmd(), 1.0f, 0.0f, 1.5f);
-                drawAll(ctx.cmd(), pipes->shadow, pipes->moreLighting[i].lightViewProj, {});
+                drawMesh(ctx.cmd(), *mesh, pipes->shadow, pipes->lighting[i].lightViewProj);
             });
-            moreShadowRefs_[i] = shadow;
         }
         auto pass = g.addPass("forward shading" + which, rg::PassType::Graphics);
-        pass.uniformBuffer(buffer);
-        if (lit) pass.sampled(shadow, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
-        colorRef_ = pass.colorAttachment(colorRef_, rg::LoadOp::Load);
-        pass.depthTest(depthRef_);
+        pass.uniformBuffer(lighting);
+        if (shadowed) pass.sampled(shadow, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
         const bool reversed = scene_.camera.reversedZ;
-        const LightKind kind = scene_.moreLights[i].type;
+        if (first) {
+            const glm::vec3 sky = scene_.skyColor;
+            colorRef_ =
+                pass.colorAttachment(colorRef_, rg::LoadOp::Clear, {{sky.r, sky.g, sky.b, 1.0f}});
+            depthRef_ = pass.depthWrite(depthRef_, rg::LoadOp::Clear, reversed ? 0.0f : 1.0f);
+        } else {
+            colorRef_ = pass.colorAttachment(colorRef_, rg::LoadOp::Load);
+            pass.depthTest(depthRef_);
+        }
+        const LightKind kind = scene_.lightAt(i).type;
         const int32_t lightType = kind == LightKind::Directional ? 0 : kind == LightKind::Spot ? 1 : 2;
-        pass.execute([pipes, drawAll, buffer, shadow, lit, reversed, lightType](rg::PassContext& ctx) {
-            const int key = lightType * 2 + (lit ? 1 : 0);
-            auto it = pipes->additive.find(key);
-            if (it == pipes->additive.end()) {
-                auto d = meshPipeline(lit ? rg::spirv(ls_spirv::mesh_shadowed_frag)
-                                          : rg::spirv(ls_spirv::mesh_unshadowed_frag),
+        pass.execute([pipes, mesh, lighting, shadow, shadowed, reversed, lightType,
+                      first](rg::PassContext& ctx) {
+            const int key = (first ? 8 : 0) + lightType * 2 + (shadowed ? 1 : 0);
+            auto it = pipes->shading.find(key);
+            if (it == pipes->shading.end()) {
+                auto d = meshPipeline(shadowed ? rg::spirv(ls_spirv::mesh_shadowed_frag)
+                                               : rg::spirv(ls_spirv::mesh_unshadowed_frag),
                                       ctx.renderingFormats());
                 d.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
                               {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT}};
-                if (lit) d.bindings.push_back({2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT});
-                d.depthWrite = false;
+                if (shadowed)
+                    d.bindings.push_back({2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                          VK_SHADER_STAGE_FRAGMENT_BIT});
                 d.depthCompare = reversed ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL;
-                d.blend = rg::BlendMode::Additive;
+                if (!first) {
+                    d.depthWrite = false;
+                    d.blend = rg::BlendMode::Additive;
+                }
                 d.specialization.set(0, lightType);
-                it = pipes->additive.emplace(key, rg::Pipeline::graphics(ctx.device(), "host additive shading", d)).first;
+                it = pipes->shading
+                         .emplace(key,
+                                  rg::Pipeline::graphics(
+                                      ctx.device(),
+                                      first ? "host forward shading" : "host additive shading", d))
+                         .first;
             }
             const rg::Pipeline& p = it->second;
             p.bind(ctx.cmd());
-            drawAll(ctx.cmd(), p, pipes->viewProj, [&](const GpuMesh::Draw& draw) {
+            drawMesh(ctx.cmd(), *mesh, p, pipes->viewProj, [&](const GpuMesh::Draw& draw) {
                 rg::DescriptorPush set;
-                set.uniform(0, ctx.buffer(buffer))
-                    .sampled(1, draw.texture, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, pipes->samplers.linear());
-                if (lit)
+                set.uniform(0, ctx.buffer(lighting))
+                    .sampled(1, draw.texture, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                             pipes->samplers.linear());
+                if (shadowed)
                     set.sampled(2, ctx.view(shadow, VK_IMAGE_ASPECT_DEPTH_BIT), ctx.layout(shadow),
                                 pipes->samplers.nearest());
                 set.push(ctx.device(), ctx.cmd(), p);
@@ -433,62 +325,69 @@ void EngineRenderer::resize(VkExtent2D size) {
     buildGraph();
 }
 
+namespace {
+
+lightscatter::ImageInput imageInput(const GpuImage& img, VkImageLayout layout) {
+    lightscatter::ImageInput in;
+    in.image = img.image();
+    in.format = img.format();
+    in.extent = img.extent();
+    in.usage = img.usage();
+    in.layout = layout;
+    in.finalLayout = layout;
+    return in;
+}
+
+}  // namespace
+
+lightscatter::LightInput EngineRenderer::pluginLight(size_t i, float aspect) const {
+    const LightDesc& l = scene_.lightAt(i);
+    const LightTargets& t = lights_[i];
+    lightscatter::LightInput in;
+    if (t.shadowMap) {
+        in.light = toPluginLight(
+            l, shadowViewProjection(l, bounds_, partBounds_, scene_.camera, aspect), true);
+        in.shadowMap = imageInput(*t.shadowMap, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    } else if (t.cubeShadow) {
+        in.light = toPluginLight(l, glm::mat4(1.0f), true);
+        const std::array<glm::mat4, 6> faces = cubeFaceViewProjections(l, bounds_);
+        for (size_t f = 0; f < 6; ++f)
+            in.light.cubeFaceViewProjections[f] = toPluginMatrix(faces[f]);
+        // Left by the six face passes; left for the next frame's, which redraw it.
+        in.shadowMap = imageInput(t.cubeShadow->image(), VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
+        in.shadowMap->arrayLayers = 6;
+        in.shadowMap->stages = VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
+        in.shadowMap->access = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+        in.shadowMap->finalStages = VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT |
+                                    VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
+        in.shadowMap->finalAccess = VK_ACCESS_2_NONE;
+    } else {
+        in.light = toPluginLight(l, glm::mat4(1.0f), false);
+    }
+    return in;
+}
+
 lightscatter::FrameDescription EngineRenderer::describe(const RenderOptions& options,
                                                         VkPipelineStageFlags2 finalStages,
                                                         VkAccessFlags2 finalAccess) const {
     lightscatter::FrameDescription f;
     f.occluders = occluders_;
-    auto input = [](const GpuImage& img, VkImageLayout layout) {
-        lightscatter::ImageInput in;
-        in.image = img.image();
-        in.format = img.format();
-        in.extent = img.extent();
-        in.usage = img.usage();
-        in.layout = layout;
-        in.finalLayout = layout;
-        return in;
-    };
-    f.depth = input(*depth_, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-    f.color = input(*color_, VK_IMAGE_LAYOUT_GENERAL);
+    f.depth = imageInput(*depth_, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    f.color = imageInput(*color_, VK_IMAGE_LAYOUT_GENERAL);
     f.color.finalStages = finalStages;
     f.color.finalAccess = finalAccess;
-    f.inscatterOut = input(*inscatter_, VK_IMAGE_LAYOUT_GENERAL);
+    f.inscatterOut = imageInput(*inscatter_, VK_IMAGE_LAYOUT_GENERAL);
     f.inscatterOut->finalStages = finalStages;
     f.inscatterOut->finalAccess = finalAccess;
-    if (shadowMap_) f.shadowMap = input(*shadowMap_, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-    if (cubeShadow_) {
-        // Left by the six face passes; left for the next frame's, which redraw it.
-        f.shadowMap = input(*cubeShadow_, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL);
-        f.shadowMap->arrayLayers = 6;
-        f.shadowMap->stages = VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
-        f.shadowMap->access = VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
-        f.shadowMap->finalStages =
-            VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
-        f.shadowMap->finalAccess = VK_ACCESS_2_NONE;
-    }
     const float aspect = static_cast<float>(size_.width) / static_cast<float>(size_.height);
     f.camera = toPluginCamera(scene_.camera, cameraView(scene_.camera), cameraProjection(scene_.camera, aspect));
-    f.light = toPluginLight(scene_.light, shadowMap_ ? shadowViewProjection(scene_.light, bounds_, partBounds_, scene_.camera, aspect) : glm::mat4(1.0f),
-                            shadowMap_ != nullptr);
-    if (cubeShadow_) {
-        f.light = toPluginLight(scene_.light, glm::mat4(1.0f), true);
-        const std::array<glm::mat4, 6> faces = cubeFaceViewProjections(scene_.light, bounds_);
-        for (size_t i = 0; i < 6; ++i) f.light.cubeFaceViewProjections[i] = toPluginMatrix(faces[i]);
-    }
-    if (!scene_.moreLights.empty()) {
-        // Several lights: the first one's fields move into the list, the others follow.
-        f.lights.push_back({f.light, f.shadowMap, std::nullopt});
-        f.light = {};
-        f.shadowMap.reset();
-        for (size_t i = 0; i < scene_.moreLights.size(); ++i) {
-            const LightDesc& l = scene_.moreLights[i];
-            lightscatter::LightInput in;
-            const bool lit = moreShadowMaps_[i] != nullptr;
-            in.light = toPluginLight(l, lit ? shadowViewProjection(l, bounds_, partBounds_, scene_.camera, aspect) : glm::mat4(1.0f),
-                                     lit);
-            if (lit) in.shadowMap = input(*moreShadowMaps_[i], VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-            f.lights.push_back(in);
-        }
+    // One light is the plugin's single light; several are its list.
+    if (lights_.size() == 1) {
+        lightscatter::LightInput only = pluginLight(0, aspect);
+        f.light = only.light;
+        f.shadowMap = only.shadowMap;
+    } else {
+        for (size_t i = 0; i < lights_.size(); ++i) f.lights.push_back(pluginLight(i, aspect));
     }
     f.medium = toPluginMedium(scene_.medium);
     f.method = options.method;
@@ -507,30 +406,23 @@ void EngineRenderer::record(VkCommandBuffer cmd, const RenderOptions& options,
     frame.inscatterOut->finalLayout = finalLayout;
     const float aspect = static_cast<float>(size_.width) / static_cast<float>(size_.height);
     pipelines_->viewProj = cameraProjection(scene_.camera, aspect) * cameraView(scene_.camera);
-    Lighting& l = pipelines_->lighting;
-    const LightDesc& light = scene_.light;
-    l.lightViewProj = shadowMap_ ? shadowViewProjection(light, bounds_, partBounds_, scene_.camera, aspect) : glm::mat4(1.0f);
-    l.lightPos = glm::vec4(light.position, 0.0f);
-    l.lightDir = glm::vec4(glm::normalize(light.direction), std::cos(glm::radians(light.halfAngleDegrees)));
-    l.lightIntensity = glm::vec4(light.intensity, light.range);
-    l.betaT = glm::vec4(scene_.medium.betaR + scene_.medium.betaM + scene_.medium.sigmaA, light.radius);
-    l.ambient = glm::vec4(scene_.ambient, 0.0f);
-    l.shadowInfo = glm::vec4(static_cast<float>(light.shadowMapSize), 0.0f, 0.0f, 0.0f);
-    pipelines_->moreLighting.resize(scene_.moreLights.size());
-    for (size_t i = 0; i < scene_.moreLights.size(); ++i) {
-        const LightDesc& m = scene_.moreLights[i];
-        Lighting& e = pipelines_->moreLighting[i];
-        e = l;
-        e.lightViewProj = moreShadowMaps_[i] ? shadowViewProjection(m, bounds_, partBounds_, scene_.camera, aspect)
-                                             : glm::mat4(1.0f);
-        e.lightPos = glm::vec4(m.position, 0.0f);
-        e.lightDir = glm::vec4(glm::normalize(m.direction), std::cos(glm::radians(m.halfAngleDegrees)));
-        e.lightIntensity = glm::vec4(m.intensity, m.range);
-        e.betaT.w = m.radius;
-        e.ambient = glm::vec4(0.0f);  // added once, by the first light's pass
-        e.shadowInfo = glm::vec4(static_cast<float>(m.shadowMapSize), 0.0f, 0.0f, 0.0f);
+    pipelines_->lighting.resize(lights_.size());
+    const glm::vec3 betaT = scene_.medium.betaR + scene_.medium.betaM + scene_.medium.sigmaA;
+    for (size_t i = 0; i < lights_.size(); ++i) {
+        const LightDesc& light = scene_.lightAt(i);
+        Lighting& l = pipelines_->lighting[i];
+        l.lightViewProj = lights_[i].shadowMap ? shadowViewProjection(light, bounds_, partBounds_,
+                                                                      scene_.camera, aspect)
+                                               : glm::mat4(1.0f);
+        l.lightPos = glm::vec4(light.position, 0.0f);
+        l.lightDir = glm::vec4(glm::normalize(light.direction),
+                               std::cos(glm::radians(light.halfAngleDegrees)));
+        l.lightIntensity = glm::vec4(light.intensity, light.range);
+        l.betaT = glm::vec4(betaT, light.radius);
+        l.ambient = glm::vec4(i == 0 ? scene_.ambient : glm::vec3(0.0f), 0.0f);  // added once
+        l.shadowInfo = glm::vec4(static_cast<float>(light.shadowMapSize), 0.0f, 0.0f, 0.0f);
     }
-    if (cubeShadow_) recordCubeShadow(cmd);
+    recordCubeShadows(cmd);
     executor_->record(cmd);
     try {
         plugin_->record(cmd, frame);

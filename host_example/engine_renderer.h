@@ -2,11 +2,11 @@
 // The host example's engine: a shadow-map pass and forward shading of a glTF scene (its own render
 // graph), then the plugin's light scattering composited into the HDR color, in one command buffer.
 // What an engine of any size does to integrate the plugin, at a small scale.
-#include <array>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "cube_shadow_map.h"
 #include "gpu_image.h"
 #include "gpu_mesh.h"
 #include "lightscatter.h"
@@ -59,12 +59,19 @@ public:
 private:
     std::vector<lightscatter::Occluder> occluders_;
     struct Pipelines;
+    // One light of the scene ("light", or each of "lights"), the first one included: its shadow
+    // map, if it has one. A sun or spot with shadowMapSize > 0 gets a 2D map drawn in the engine's
+    // graph; a point light with one gets a cube map drawn before it. Each light's direct light is
+    // shaded by a pass of its own: the first clears and writes depth, the others add onto it.
+    struct LightTargets {
+        std::unique_ptr<GpuImage> shadowMap;
+        std::unique_ptr<CubeShadowMap> cubeShadow;
+    };
     void createTargets();
-    void destroyCubeViews();
     void buildGraph();
-    // A point light's cube shadow map: six depth passes, one per face (layer), recorded before the
-    // engine's graph; the plugin reads all six layers.
-    void recordCubeShadow(VkCommandBuffer cmd);
+    void recordCubeShadows(VkCommandBuffer cmd);
+    // Light i as the plugin takes it: the light with its shadow map's matrices, and the map.
+    lightscatter::LightInput pluginLight(size_t i, float aspect) const;
     lightscatter::FrameDescription describe(const RenderOptions& options, VkPipelineStageFlags2 finalStages,
                                             VkAccessFlags2 finalAccess) const;
 
@@ -74,19 +81,14 @@ private:
     std::vector<Bounds> partBounds_;  // one per draw: what the sun's shadow box is fitted to
     VkExtent2D size_;
     std::unique_ptr<GpuMesh> mesh_;
-    std::unique_ptr<GpuImage> depth_, color_, shadowMap_, inscatter_;
-    std::unique_ptr<GpuImage> cubeShadow_;        // point light with shadowMapSize > 0: 6 layers
-    std::array<VkImageView, 6> cubeFaceViews_{};  // one depth view per layer, the faces' targets
+    std::unique_ptr<GpuImage> depth_, color_, inscatter_;
+    std::vector<LightTargets> lights_;  // one per scene light, in the scene's order
     std::unique_ptr<rg::HostBuffer> colorReadback_, linReadback_;  // sized with the targets
-    // The scene's lights after the first ("lights"): each one's shadow map (a sun or spot with
-    // shadowMapSize > 0; null otherwise), drawn and shaded by passes of their own.
-    std::vector<std::unique_ptr<GpuImage>> moreShadowMaps_;
-    std::vector<rg::ImageRef> moreShadowRefs_;
     std::unique_ptr<lightscatter::Plugin> plugin_;
     std::shared_ptr<Pipelines> pipelines_;
     std::unique_ptr<rg::RenderGraph> graph_;
     std::unique_ptr<rg::GraphExecutor> executor_;
-    rg::ImageRef colorRef_, depthRef_, shadowRef_;
+    rg::ImageRef colorRef_, depthRef_;
     VkCommandPool pool_ = VK_NULL_HANDLE;
     VkCommandBuffer cmd_ = VK_NULL_HANDLE;
     VkFence fence_ = VK_NULL_HANDLE;

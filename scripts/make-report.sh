@@ -9,6 +9,11 @@
 #                                          # an earlier run's results where build/ has them)
 #   scripts/make-report.sh --occluders-only  # that benchmark alone, its plot, and its section spliced
 #                                          # into the existing docs/performance.md
+#   scripts/make-report.sh --lights-only   # the same for "Several lights": bench/lights.json (time and
+#                                          # error at 240x135) and bench/lights_scaling.json (1 to 8
+#                                          # shadowed spots at 1920x1080, timings only: run it on a quiet
+#                                          # machine); LS_REPORT_LIGHTS=0 skips both in a full run and
+#                                          # reuses an earlier run's results, as above
 #   LS_REPORT_GPU=DIR scripts/make-report.sh # with the GPU section from scripts/gpu-bench.sh's results
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -26,6 +31,26 @@ occluders() {
   uptime > build/bench-occluders/load-after.txt
   /usr/bin/python3 scripts/plot_occluders.py build/bench-occluders "$out"
 }
+lights() {
+  mkdir -p build/bench-lights-scaling
+  uptime > build/bench-lights-scaling/load-before.txt
+  ./build/host_example/lightscatter bench --config bench/lights_scaling.json --out build/bench-lights-scaling
+  uptime > build/bench-lights-scaling/load-after.txt
+  ./build/host_example/lightscatter bench --config bench/lights.json --out build/bench-lights
+  /usr/bin/python3 scripts/plot_lights.py build/bench-lights-scaling "$out"
+  rm -f "$out"/strip_lights_*.png
+  for s in build/bench-lights/strips/atrium_lights_epipolar_balanced.png \
+           build/bench-lights/strips/point_cage_brute-force.png; do
+    if [[ -f "$s" ]]; then cp "$s" "$out/strip_lights_$(basename "$s")"; fi
+  done
+}
+if [[ "$config" == --lights-only ]]; then
+  lights
+  /usr/bin/python3 scripts/write_report.py --lights-section build/bench-lights-scaling build/bench-lights \
+    docs/performance.md
+  echo "docs/performance.md: section 'Several lights' replaced"
+  exit 0
+fi
 if [[ "$config" == --occluders-only ]]; then
   occluders
   /usr/bin/python3 scripts/write_report.py --occluders-section build/bench-occluders docs/performance.md
@@ -59,6 +84,13 @@ if [[ "${LS_REPORT_OCCLUDERS:-1}" != 0 ]]; then
 elif [[ -f build/bench-occluders/bench.json ]]; then
   occluders_dir=build/bench-occluders  # an earlier run's, as for the slices benchmark
 fi
+lights_dirs=("" "")
+if [[ "${LS_REPORT_LIGHTS:-1}" != 0 ]]; then
+  lights
+  lights_dirs=(build/bench-lights-scaling build/bench-lights)
+elif [[ -f build/bench-lights/bench.json ]]; then
+  lights_dirs=(build/bench-lights-scaling build/bench-lights)  # an earlier run's
+fi
 /usr/bin/python3 scripts/write_report.py build/bench-report build/bench-hard "$config" build/bench-slices \
-  "$occluders_dir" > docs/performance.md
+  "$occluders_dir" "${lights_dirs[@]}" > docs/performance.md
 echo "docs/performance.md regenerated"

@@ -12,12 +12,13 @@ boxes get smaller as N grows. Deterministic (a fixed seed); standard library onl
 OUT_DIR defaults to the repository's scenes/. Do not edit the generated files by hand.
 """
 import argparse
-import json
 import math
 import os
 import random
-import re
-import struct
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cube_scenes import cube_buffer, cube_gltf, floor_node, material, r6, write_scene  # noqa: E402
 
 FIELD = 16.0        # metres, the side of the square the boxes stand in
 FLOOR_HALF = 20.0   # the floor is 40 m x 40 m
@@ -27,34 +28,6 @@ FLOOR_THICK = 0.2
 # ordering of faces also takes overlapping ones, but the field should be the seed's case).
 LIFT = 0.005
 COUNTS = (1, 10, 100, 1000)
-
-
-def cube_buffer():
-    """The unit cube ([-0.5, 0.5]^3): 24 vertices (normal and uv per face), 36 16-bit indices."""
-    positions, normals, uvs, indices = [], [], [], []
-    for axis in range(3):
-        for sign in (-1.0, 1.0):
-            n = [0.0, 0.0, 0.0]
-            n[axis] = sign
-            a, b = (axis + 1) % 3, (axis + 2) % 3
-            if sign < 0:
-                a, b = b, a  # keep the winding counter-clockwise seen from outside
-            base = len(positions)
-            for (u, v) in ((-0.5, -0.5), (0.5, -0.5), (0.5, 0.5), (-0.5, 0.5)):
-                p = [0.0, 0.0, 0.0]
-                p[axis] = 0.5 * sign
-                p[a] = u
-                p[b] = v
-                positions.append(p)
-                normals.append(n)
-                uvs.append([u + 0.5, v + 0.5])
-            indices += [base, base + 1, base + 2, base, base + 2, base + 3]
-    data = b"".join(struct.pack("<3f", *p) for p in positions)
-    data += b"".join(struct.pack("<3f", *n) for n in normals)
-    data += b"".join(struct.pack("<2f", *t) for t in uvs)
-    data += b"".join(struct.pack("<H", i) for i in indices)
-    data += b"\0" * (-len(data) % 4)
-    return data, len(positions), len(indices)
 
 
 def boxes(count, rng):
@@ -79,70 +52,17 @@ def boxes(count, rng):
     return out
 
 
-def compact(text):
-    """json.dumps(indent=...) text with arrays of plain numbers on one line each."""
-    return re.sub(r"\[\s*([-0-9.e+,\s]*?)\s*\]",
-                  lambda m: "[" + ", ".join(x.strip() for x in m.group(1).split(",")) + "]", text)
-
-
-def r6(x):
-    return round(x, 6)
-
-
-def cube_mesh_layout(vertex_count, index_count):
-    """The accessors, buffer views and attributes of cube_buffer()'s data: positions, normals,
-    texture coordinates, then 16-bit indices, one after another in one buffer."""
-    v = vertex_count
-    accessors = [
-        {"bufferView": 0, "componentType": 5126, "count": v, "type": "VEC3",
-         "min": [-0.5, -0.5, -0.5], "max": [0.5, 0.5, 0.5]},
-        {"bufferView": 1, "componentType": 5126, "count": v, "type": "VEC3"},
-        {"bufferView": 2, "componentType": 5126, "count": v, "type": "VEC2"},
-        {"bufferView": 3, "componentType": 5123, "count": index_count, "type": "SCALAR"},
-    ]
-    views = [
-        {"buffer": 0, "byteOffset": 0, "byteLength": 12 * v, "target": 34962},
-        {"buffer": 0, "byteOffset": 12 * v, "byteLength": 12 * v, "target": 34962},
-        {"buffer": 0, "byteOffset": 24 * v, "byteLength": 8 * v, "target": 34962},
-        {"buffer": 0, "byteOffset": 32 * v, "byteLength": 2 * index_count, "target": 34963},
-    ]
-    return accessors, views, {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2}
-
-
 def gltf_document(name, bin_name, bin_bytes, vertex_count, index_count, field):
-    accessors, views, attributes = cube_mesh_layout(vertex_count, index_count)
-    meshes = [
-        {"name": "floor", "primitives": [{"attributes": attributes, "indices": 3, "material": 0, "mode": 4}]},
-        {"name": "box", "primitives": [{"attributes": attributes, "indices": 3, "material": 1, "mode": 4}]},
-    ]
-    materials = [
-        {"name": "concrete", "pbrMetallicRoughness": {"baseColorFactor": [0.32, 0.31, 0.29, 1.0],
-                                                      "metallicFactor": 0.0, "roughnessFactor": 0.9}},
-        {"name": "painted_wood", "pbrMetallicRoughness": {"baseColorFactor": [0.55, 0.42, 0.3, 1.0],
-                                                          "metallicFactor": 0.0, "roughnessFactor": 0.8}},
-    ]
-    nodes = [{"name": "floor", "mesh": 0, "translation": [0.0, -0.5 * FLOOR_THICK, 0.0],
-              "scale": [2 * FLOOR_HALF, FLOOR_THICK, 2 * FLOOR_HALF]}]
+    nodes = [floor_node(FLOOR_HALF, FLOOR_THICK)]
     for k, (x, z, half, height, yaw) in enumerate(field):
         nodes.append({"name": "box%d" % k, "mesh": 1,
                       "translation": [r6(x), r6(LIFT + 0.5 * height), r6(z)],
                       "rotation": [0.0, r6(math.sin(0.5 * yaw)), 0.0, r6(math.cos(0.5 * yaw))],
                       "scale": [r6(2 * half), r6(height), r6(2 * half)]})
-    doc = {
-        "asset": {"version": "2.0", "generator": "lightscatter scripts/make_occluder_scenes.py"},
-        "scene": 0,
-        "scenes": [{"name": name, "nodes": list(range(len(nodes)))}],
-        "nodes": "@NODES@",
-        "meshes": meshes,
-        "materials": materials,
-        "accessors": accessors,
-        "bufferViews": views,
-        "buffers": [{"uri": bin_name, "byteLength": len(bin_bytes)}],
-    }
-    # One node a line: a thousand nodes stay readable and small.
-    text = compact(json.dumps(doc, indent=1))
-    node_lines = ",\n".join("  " + json.dumps(n, separators=(",", ":")) for n in nodes)
-    return text.replace('"@NODES@"', "[\n" + node_lines + "\n ]") + "\n"
+    meshes = [("floor", material("concrete", (0.32, 0.31, 0.29), 0.9)),
+              ("box", material("painted_wood", (0.55, 0.42, 0.3), 0.8))]
+    return cube_gltf(name, "scripts/make_occluder_scenes.py", bin_name, len(bin_bytes), vertex_count,
+                     index_count, meshes, nodes)
 
 
 LIGHT = (-9.0, 13.0, -4.0)
@@ -183,12 +103,9 @@ def main():
     for count in counts:
         name = "occluders_%d" % count
         field = boxes(count, random.Random(4000 + count))
-        with open(os.path.join(args.out, name + ".bin"), "wb") as f:
-            f.write(data)
-        with open(os.path.join(args.out, name + ".gltf"), "w") as f:
-            f.write(gltf_document(name, name + ".bin", data, vertex_count, index_count, field))
-        with open(os.path.join(args.out, name + ".json"), "w") as f:
-            f.write(compact(json.dumps(scene_document(name), indent=2)) + "\n")
+        write_scene(args.out, name, data,
+                    gltf_document(name, name + ".bin", data, vertex_count, index_count, field),
+                    scene_document(name))
         print("wrote %s (.json, .gltf, .bin): %d boxes and the floor" % (os.path.join(args.out, name), count))
 
 

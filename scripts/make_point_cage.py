@@ -12,12 +12,11 @@ face of the cube and the seams between faces. Deterministic; standard library on
 OUT_DIR defaults to the repository's scenes/. Do not edit the generated files by hand.
 """
 import argparse
-import json
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from make_occluder_scenes import compact, cube_buffer, cube_mesh_layout, r6  # noqa: E402
+from cube_scenes import cube_buffer, cube_gltf, floor_node, material, r6, write_scene  # noqa: E402
 
 LIGHT = (0.0, 2.0, 0.0)
 HALF = 0.6     # the cage's half-size, metres
@@ -51,36 +50,14 @@ def bars():
 
 
 def gltf_document(bin_name, bin_bytes, vertex_count, index_count):
-    accessors, views, attributes = cube_mesh_layout(vertex_count, index_count)
-    meshes = [
-        {"name": "floor", "primitives": [{"attributes": attributes, "indices": 3, "material": 0, "mode": 4}]},
-        {"name": "bar", "primitives": [{"attributes": attributes, "indices": 3, "material": 1, "mode": 4}]},
-    ]
-    materials = [
-        {"name": "stone", "pbrMetallicRoughness": {"baseColorFactor": [0.35, 0.33, 0.3, 1.0],
-                                                   "metallicFactor": 0.0, "roughnessFactor": 0.9}},
-        {"name": "iron", "pbrMetallicRoughness": {"baseColorFactor": [0.12, 0.11, 0.1, 1.0],
-                                                  "metallicFactor": 0.0, "roughnessFactor": 0.7}},
-    ]
-    nodes = [{"name": "floor", "mesh": 0, "translation": [0.0, -0.5 * FLOOR_THICK, 0.0],
-              "scale": [2 * FLOOR_HALF, FLOOR_THICK, 2 * FLOOR_HALF]}]
+    nodes = [floor_node(FLOOR_HALF, FLOOR_THICK)]
     for k, (c, size) in enumerate(bars()):
         nodes.append({"name": "bar%d" % k, "mesh": 1, "translation": [r6(x) for x in c],
                       "scale": [r6(x) for x in size]})
-    doc = {
-        "asset": {"version": "2.0", "generator": "lightscatter scripts/make_point_cage.py"},
-        "scene": 0,
-        "scenes": [{"name": "point_cage", "nodes": list(range(len(nodes)))}],
-        "nodes": "@NODES@",
-        "meshes": meshes,
-        "materials": materials,
-        "accessors": accessors,
-        "bufferViews": views,
-        "buffers": [{"uri": bin_name, "byteLength": len(bin_bytes)}],
-    }
-    text = compact(json.dumps(doc, indent=1))
-    node_lines = ",\n".join("  " + json.dumps(n, separators=(",", ":")) for n in nodes)
-    return text.replace('"@NODES@"', "[\n" + node_lines + "\n ]") + "\n", len(nodes)
+    meshes = [("floor", material("stone", (0.35, 0.33, 0.3), 0.9)),
+              ("bar", material("iron", (0.12, 0.11, 0.1), 0.7))]
+    return cube_gltf("point_cage", "scripts/make_point_cage.py", bin_name, len(bin_bytes), vertex_count,
+                     index_count, meshes, nodes), len(nodes)
 
 
 def scene_document():
@@ -105,13 +82,8 @@ def main():
     args = parser.parse_args()
     os.makedirs(args.out, exist_ok=True)
     data, vertex_count, index_count = cube_buffer()
-    with open(os.path.join(args.out, "point_cage.bin"), "wb") as f:
-        f.write(data)
     text, count = gltf_document("point_cage.bin", data, vertex_count, index_count)
-    with open(os.path.join(args.out, "point_cage.gltf"), "w") as f:
-        f.write(text)
-    with open(os.path.join(args.out, "point_cage.json"), "w") as f:
-        f.write(compact(json.dumps(scene_document(), indent=2)) + "\n")
+    write_scene(args.out, "point_cage", data, text, scene_document())
     print("wrote %s (.json, .gltf, .bin): %d nodes" % (os.path.join(args.out, "point_cage"), count))
 
 

@@ -45,12 +45,6 @@ class ConfigReader {
             c.measureError = j["measureError"].get<bool>();
         }
         if (!j.contains("scenes")) fail("scenes is required");
-        for (const json& s : list(j["scenes"], "scenes")) {
-            std::filesystem::path p = text(s, "scenes[]");
-            if (p.is_relative()) p = std::filesystem::path(root_) / p;
-            c.scenes.push_back(p.string());
-        }
-        if (c.scenes.empty()) fail("scenes is empty");
         std::vector<lightscatter::Profile> profiles;
         for (const json& p :
              list(j.contains("profiles") ? j["profiles"] : json::array({"balanced"}), "profiles")) {
@@ -60,19 +54,38 @@ class ConfigReader {
                 fail("profiles: unknown profile '" + name + "'");
             profiles.push_back(*parsed);
         }
-        std::vector<lightscatter::Method> methods;
-        for (const json& m :
-             list(j.contains("methods") ? j["methods"] : json::array({"epipolar", "brute-force"}),
-                  "methods")) {
-            const std::string name = text(m, "methods[]");
-            const auto parsed = lightscatter::parseMethod(name);
-            if (!parsed) {
-                std::string known;
-                for (const auto& n : lightscatter::methodNames()) known += (known.empty() ? "" : ", ") + n;
-                fail("methods: unknown method '" + name + "' (known: " + known + ")");
+        const std::vector<lightscatter::Method> methods = methodList(
+            j.contains("methods") ? j["methods"] : json::array({"epipolar", "brute-force"}),
+            "methods");
+        // A scene is its file's path, or {"scene": path, "methods": [...]} with methods of its
+        // own: those that take its lights (a cube shadow map or several lights are not every
+        // method's).
+        std::vector<std::vector<lightscatter::Method>> sceneMethods;
+        const json scenes = list(j["scenes"], "scenes");
+        for (size_t k = 0; k < scenes.size(); ++k) {
+            const json& s = scenes[k];
+            const std::string where = "scenes[" + std::to_string(k) + "]";
+            std::filesystem::path p;
+            sceneMethods.push_back(methods);
+            if (s.is_object()) {
+                for (const auto& [key, value] : s.items())
+                    if (key != "scene" && key != "methods")
+                        fail(where + ": unknown key '" + key + "' (known: scene, methods)");
+                if (!s.contains("scene")) fail(where + ".scene is required");
+                p = text(s["scene"], where + ".scene");
+                if (s.contains("methods"))
+                    sceneMethods.back() = methodList(s["methods"], where + ".methods");
+            } else if (s.is_string()) {
+                p = s.get<std::string>();
+            } else {
+                fail(where +
+                     " must be a scene file's path or an object {\"scene\": path, \"methods\": "
+                     "[...]}");
             }
-            methods.push_back(*parsed);
+            if (p.is_relative()) p = std::filesystem::path(root_) / p;
+            c.scenes.push_back(p.string());
         }
+        if (c.scenes.empty()) fail("scenes is empty");
         const json sweeps = j.contains("sweeps") ? j["sweeps"] : json::object();
         if (!sweeps.is_object()) fail("sweeps must be an object");
         for (const auto& [key, value] : sweeps.items())
@@ -83,7 +96,8 @@ class ConfigReader {
                 fail("sweeps: unknown key '" + key +
                      "' (known: slices, samples, initialStep, shadowMapSize, size, minMaxTrees, "
                      "coneSamples, coneModes, slicePlanes, sliceTargets, lightModel)");
-        for (const std::string& scene : c.scenes) expand(c, scene, methods, profiles, sweeps);
+        for (size_t k = 0; k < c.scenes.size(); ++k)
+            expand(c, c.scenes[k], sceneMethods[k], profiles, sweeps);
         return c;
     }
 
@@ -109,6 +123,22 @@ class ConfigReader {
     std::string text(const json& v, const std::string& name) const {
         if (!v.is_string()) fail(name + " must be a string");
         return v.get<std::string>();
+    }
+
+    std::vector<lightscatter::Method> methodList(const json& v, const std::string& name) const {
+        std::vector<lightscatter::Method> methods;
+        for (const json& m : list(v, name)) {
+            const std::string method = text(m, name + "[]");
+            const auto parsed = lightscatter::parseMethod(method);
+            if (!parsed) {
+                std::string known;
+                for (const auto& n : lightscatter::methodNames())
+                    known += (known.empty() ? "" : ", ") + n;
+                fail(name + ": unknown method '" + method + "' (known: " + known + ")");
+            }
+            methods.push_back(*parsed);
+        }
+        return methods;
     }
 
     // By value: callers pass temporaries (a default list) and iterate over the result.

@@ -46,9 +46,11 @@ ReferenceScene::ReferenceScene(const SceneDesc& scene, const MeshData& mesh, uin
                                uint32_t height, const ReferenceOptions& options)
     : camera_(scene.camera, width, height),
       bvh_(Bvh::fromMesh(mesh)),
-      light_(toReferenceLight(scene.light)),
       medium_(toReferenceMedium(scene.medium)),
-      options_(options) {}
+      options_(options) {
+    for (std::size_t i = 0; i < scene.lightCount(); ++i)
+        lights_.push_back(toReferenceLight(scene.lightAt(i)));
+}
 
 ls::ref::Ray ReferenceScene::pixelRay(uint32_t x, uint32_t y) const {
     return viewRay(camera_.pixelDirection(x, y));
@@ -59,21 +61,30 @@ ls::ref::Ray ReferenceScene::viewRay(const glm::dvec3& direction) const {
     return {camera_.eye(), direction, end.distance};
 }
 
-std::vector<ls::ref::Interval> ReferenceScene::litIntervals(const ls::ref::Ray& ray) const {
+std::vector<ls::ref::Interval> ReferenceScene::litIntervals(const ls::ref::Ray& ray,
+                                                            std::size_t light) const {
     const LitSearch search{options_.visibilitySamples, options_.boundaryRelTol, options_.shadows};
-    return reference::litIntervals(LightVisibility(bvh_, light_), light_, ray, search);
+    const ls::ref::Light& l = lights_.at(light);
+    return reference::litIntervals(LightVisibility(bvh_, l), l, ray, search);
 }
 
-glm::dvec3 ReferenceScene::inscatter(const ls::ref::Ray& ray) const {
-    const std::vector<ls::ref::Interval> lit = litIntervals(ray);
+glm::dvec3 ReferenceScene::inscatter(const ls::ref::Ray& ray, std::size_t light) const {
+    const std::vector<ls::ref::Interval> lit = litIntervals(ray, light);
+    const ls::ref::Light& l = lights_.at(light);
     // Along a directional light's ray P(t) and E are constant, so the closed form is the exact
     // integral; quadrature would only add its tolerance.
-    if (light_.type == ls::ref::Light::Directional) {
-        return ls::ref::directionalClosedForm(medium_, light_, ray, lit);
+    if (l.type == ls::ref::Light::Directional) {
+        return ls::ref::directionalClosedForm(medium_, l, ray, lit);
     }
     ls::ref::QuadOptions quad;
     quad.relTol = options_.relTol;
-    return ls::ref::integrateInscatter(medium_, light_, ray, lit, quad).value;
+    return ls::ref::integrateInscatter(medium_, l, ray, lit, quad).value;
+}
+
+glm::dvec3 ReferenceScene::inscatter(const ls::ref::Ray& ray) const {
+    glm::dvec3 sum(0.0);
+    for (std::size_t i = 0; i < lights_.size(); ++i) sum += inscatter(ray, i);
+    return sum;
 }
 
 ReferenceImage renderReference(const SceneDesc& scene, const MeshData& mesh, uint32_t width,

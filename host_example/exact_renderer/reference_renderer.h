@@ -3,10 +3,14 @@
 // float64, with exact visibility traced against the scene's triangles (a BVH, not a shadow map).
 // Every GPU method is judged against this image.
 //
-// Point lights: the plugin does not shadow them (it has no cube maps), but docs/model.md's V is
-// exact visibility, so this reference does shadow them by default. A comparison of the GPU's point
-// light against it therefore counts the missing shadows as error, which is the model's intended
-// judging; pass `shadows = false` for the unshadowed image instead.
+// A scene of several lights ("lights") gets the sum of each light's Lin, each light with its own
+// exact visibility: a frame of several lights is judged as the plugin composites it.
+//
+// Point lights: docs/model.md's V is exact visibility, so this reference shadows them by default,
+// whether or not the GPU is given a cube shadow map. A comparison of an unshadowed GPU point light
+// against it therefore counts the missing shadows as error, which is the model's intended judging;
+// pass `shadows = false` for the unshadowed image instead.
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -43,8 +47,8 @@ struct ReferenceImage {
 [[nodiscard]] ls::ref::Light toReferenceLight(const LightDesc& light);
 [[nodiscard]] ls::ref::Medium toReferenceMedium(const MediumDesc& medium);
 
-// One scene prepared for a screen size: BVH, camera, light and medium. For callers (and tests) that
-// need single rays; renderReference runs it over every pixel.
+// One scene prepared for a screen size: BVH, camera, lights and medium. For callers (and tests)
+// that need single rays; renderReference runs it over every pixel.
 class ReferenceScene {
   public:
     ReferenceScene(const SceneDesc& scene, const MeshData& mesh, uint32_t width, uint32_t height,
@@ -54,22 +58,29 @@ class ReferenceScene {
     [[nodiscard]] ls::ref::Ray pixelRay(uint32_t x, uint32_t y) const;
     // The view ray along any unit direction from the eye, ending as a pixel's would.
     [[nodiscard]] ls::ref::Ray viewRay(const glm::dvec3& direction) const;
-    // The lit intervals of a ray with a unit direction (see litIntervals in visibility.h).
-    [[nodiscard]] std::vector<ls::ref::Interval> litIntervals(const ls::ref::Ray& ray) const;
-    // Lin along a ray with a unit direction: the directional closed form over the lit intervals
-    // (exact), or ls::ref::integrateInscatter to relTol for point and spot lights.
+    // The lit intervals of a ray with a unit direction for lights()[light] (see litIntervals in
+    // visibility.h).
+    [[nodiscard]] std::vector<ls::ref::Interval> litIntervals(const ls::ref::Ray& ray,
+                                                              std::size_t light = 0) const;
+    // Lin of lights()[light] along a ray with a unit direction: the directional closed form over
+    // the lit intervals (exact), or ls::ref::integrateInscatter to relTol for point and spot
+    // lights.
+    [[nodiscard]] glm::dvec3 inscatter(const ls::ref::Ray& ray, std::size_t light) const;
+    // Lin of every light along the ray: the sum of the above, in the scene's order of lights.
     [[nodiscard]] glm::dvec3 inscatter(const ls::ref::Ray& ray) const;
 
     [[nodiscard]] const PixelCamera& camera() const { return camera_; }
     [[nodiscard]] const Bvh& bvh() const { return bvh_; }
-    [[nodiscard]] const ls::ref::Light& light() const { return light_; }
+    // The scene's lights in its order ("light", or "lights"); never empty.
+    [[nodiscard]] const std::vector<ls::ref::Light>& lights() const { return lights_; }
+    [[nodiscard]] const ls::ref::Light& light() const { return lights_.front(); }
     [[nodiscard]] const ls::ref::Medium& medium() const { return medium_; }
     [[nodiscard]] const ReferenceOptions& options() const { return options_; }
 
   private:
     PixelCamera camera_;
     Bvh bvh_;
-    ls::ref::Light light_;
+    std::vector<ls::ref::Light> lights_;
     ls::ref::Medium medium_;
     ReferenceOptions options_;
 };

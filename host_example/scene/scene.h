@@ -109,7 +109,7 @@ struct SceneDesc {
     std::vector<ModelInstance> models;  // "gltf" first (identity), then "models" in order
     CameraDesc camera;
     LightDesc light;                    // "light", or the first of "lights"
-    std::vector<LightDesc> moreLights;  // the rest of "lights" (a sun or spot; a point light unshadowed)
+    std::vector<LightDesc> moreLights;  // the rest of "lights"
     bool lightList = false;             // the scene gave "lights" (its fields are named lights[i])
     size_t lightCount() const { return 1 + moreLights.size(); }
     LightDesc& lightAt(size_t i) { return i == 0 ? light : moreLights.at(i - 1); }

@@ -320,10 +320,6 @@ class SceneReader {
             if (!v[i].is_object()) fail(name + " must be an object");
             LightDesc light;
             readLight(v[i], light, name);
-            // The host draws a point light's cube shadow map for a scene's single light only.
-            if (v.size() > 1 && light.type == LightKind::Point && light.shadowMapSize > 0)
-                fail(name + ".shadowMapSize: a point light's cube shadow map is drawn for a scene of one light "
-                            "only; with several, give the point light shadowMapSize 0");
             if (i == 0)
                 scene.light = light;
             else

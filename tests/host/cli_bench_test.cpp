@@ -86,3 +86,38 @@ TEST(CliBench, TimingsOnlyRowsCarryTheBeamTreesCpuTime) {
     expectFailure(run("bench --config flag.json --out flag"),
                   "flag.json: measureError = \"no\": must be true or false");
 }
+
+// A scene may name methods of its own (those that take its lights); rows carry the light count.
+TEST(CliBench, AScenesOwnMethodsAndItsLightCount) {
+    writeFile("own.json", R"({"frames": 1, "warmup": 0, "size": "16x9", "methods": ["epipolar"],
+        "scenes": ["scenes/window_room.json",
+                   {"scene": "scenes/atrium_lights.json", "methods": ["brute-force"]}]})");
+    const auto r = run("bench --config own.json --out own --validation");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    std::ifstream j(cli_test::path("own/bench.json"));
+    const auto runs = nlohmann::json::parse(j)["runs"];
+    ASSERT_EQ(runs.size(), 2u);
+    EXPECT_EQ(runs[0]["scene"], "window_room");
+    EXPECT_EQ(runs[0]["method"], "epipolar");
+    EXPECT_EQ(runs[0]["lights"], 1);
+    EXPECT_EQ(runs[1]["scene"], "atrium_lights");
+    EXPECT_EQ(runs[1]["method"], "brute-force");
+    EXPECT_EQ(runs[1]["lights"], 3);
+    for (const auto& row : runs) EXPECT_TRUE(row.contains("error")) << row["label"];
+
+    writeFile("badscene.json",
+              R"({"scenes": [{"scene": "scenes/atrium.json", "methods": ["nope"]}]})");
+    expectFailure(run("bench --config badscene.json --out badscene"),
+                  "badscene.json: scenes[0].methods: unknown method 'nope' (known: ");
+    writeFile("nofile.json", R"({"scenes": [{"methods": ["epipolar"]}]})");
+    expectFailure(run("bench --config nofile.json --out nofile"),
+                  "nofile.json: scenes[0].scene is required");
+    writeFile("key.json", R"({"scenes": [{"scene": "scenes/atrium.json", "size": "8x8"}]})");
+    expectFailure(run("bench --config key.json --out key"),
+                  "key.json: scenes[0]: unknown key 'size' (known: scene, methods)");
+    writeFile("number.json", R"({"scenes": [3]})");
+    expectFailure(
+        run("bench --config number.json --out number"),
+        "number.json: scenes[0] must be a scene file's path or an object {\"scene\": path, "
+        "\"methods\": [...]}");
+}

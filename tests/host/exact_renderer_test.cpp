@@ -474,6 +474,49 @@ TEST(ReferenceRenderer, SkyPixelsUseTheFarPlaneOrMaxDistance) {
     check("infinite far, reversed", 1.0f, true, true, 42.0f, [](double) { return 42.0; });
 }
 
+// A scene of several lights is the sum of its lights' single renders, each shadowed by the plate
+// through its own visibility (the sun's slab, the spot's and the point light's pyramids from
+// different positions): no light is dropped, counted twice or shadowed from another's position.
+TEST(ReferenceRenderer, SeveralLightsAreTheSumOfTheirSingleRenders) {
+    ShadowCase c = pyramidCase(host::LightKind::Spot);
+    c.options.relTol = 1e-6;
+    host::LightDesc sun = baseScene().light;
+    host::LightDesc point = c.scene.light;
+    point.type = host::LightKind::Point;
+    point.position = {1.5f, 3.0f, -0.5f};
+    point.intensity = {5.0f, 8.0f, 12.0f};
+    host::SceneDesc all = c.scene;
+    all.moreLights = {sun, point};
+    all.lightList = true;
+    const uint32_t w = 20, h = 11;
+    const ReferenceImage sum = renderReference(all, c.mesh, w, h, c.options);
+    std::vector<double> expected(sum.rgb.size(), 0.0);
+    for (std::size_t i = 0; i < all.lightCount(); ++i) {
+        host::SceneDesc one = c.scene;
+        one.light = all.lightAt(i);
+        const ReferenceImage single = renderReference(one, c.mesh, w, h, c.options);
+        ASSERT_GT(*std::max_element(single.rgb.begin(), single.rgb.end()), 0.0) << "light " << i;
+        for (std::size_t k = 0; k < expected.size(); ++k) expected[k] += single.rgb[k];
+    }
+    for (std::size_t k = 0; k < expected.size(); ++k)
+        EXPECT_NEAR(sum.rgb[k], expected[k], 1e-14 * expected[k]) << k;
+
+    const ReferenceScene scene(all, c.mesh, w, h, c.options);
+    ASSERT_EQ(scene.lights().size(), 3u);
+    EXPECT_EQ(scene.lights()[1].type, ls::ref::Light::Directional);
+    EXPECT_EQ(scene.lights()[2].position, glm::dvec3(1.5, 3.0, -0.5));
+    // A vertical ray just under the plate's centre, down to the floor: the spot straight above
+    // sees none of it; the point light at (1.5, 3, -0.5) sees the plate from aside, so its segment
+    // to (0, y, 0) crosses y = 2 at x = 1.5 (2 - y) / (3 - y), inside the plate (x <= 0.5) only for
+    // y >= 1.5. Lit for the point light: y from 1.5 down to the floor.
+    const ls::ref::Ray down{{0.0, 1.999, 0.0}, {0.0, -1.0, 0.0}, 1.999};
+    EXPECT_TRUE(scene.litIntervals(down, 0).empty());
+    const std::vector<Interval> pointLit = scene.litIntervals(down, 2);
+    ASSERT_EQ(pointLit.size(), 1u);
+    EXPECT_NEAR(pointLit[0].begin, 1.999 - 1.5, 1e-8);
+    EXPECT_NEAR(pointLit[0].end, 1.999, 1e-8);
+}
+
 // Both images within rel of each other per value (absolute floor: 1e-12 of the largest).
 void expectSameImage(const ReferenceImage& a, const ReferenceImage& b, double rel) {
     ASSERT_EQ(a.rgb.size(), b.rgb.size());

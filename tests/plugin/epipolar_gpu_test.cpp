@@ -10,15 +10,6 @@ using lightscatter::Method;
 
 namespace {
 
-FrameSpec sceneWith(lightscatter::Light light) {
-    FrameSpec s;
-    s.screen = {64, 48};
-    s.view = defaultView(s.screen);
-    s.light = light;
-    s.medium = fog();
-    return s;
-}
-
 // Fraction of pixels where the two images differ by more than `tolerance` x peak.
 double fractionOver(const std::vector<float>& a, const std::vector<float>& b, double tolerance) {
     double peak = 0;

@@ -29,12 +29,7 @@ glm::vec3 throughNdc(const View& v, float x, float y, float d) {
 lightscatter::Vec3 v3(glm::vec3 v) { return {v.x, v.y, v.z}; }
 
 FrameSpec base(lightscatter::Light light) {
-    FrameSpec s;
-    s.screen = kScreen;
-    s.view = defaultView(s.screen);
-    s.light = light;
-    s.medium = fog();
-    return s;
+    return sceneWith(light, kScreen);
 }
 
 lightscatter::Light spotAt(glm::vec3 position, glm::vec3 direction, float halfAngle = 35.0f) {

@@ -12,15 +12,6 @@ using lightscatter::Method;
 
 namespace {
 
-FrameSpec sceneWith(lightscatter::Light light) {
-    FrameSpec s;
-    s.screen = {64, 48};
-    s.view = defaultView(s.screen);
-    s.light = light;
-    s.medium = fog();
-    return s;
-}
-
 lightscatter::Light secondSpot() {
     lightscatter::Light l = spotOverGrille();
     l.position = {-1.5f, 5.0f, 0.8f};

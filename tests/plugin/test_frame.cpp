@@ -81,12 +81,17 @@ lightscatter::FrameDescription TestFrame::description(lightscatter::Method metho
     return f;
 }
 
-FrameSpec flatSpot() {
+FrameSpec sceneWith(lightscatter::Light light, VkExtent2D screen) {
     FrameSpec s;
-    s.screen = {48, 32};
+    s.screen = screen;
     s.view = defaultView(s.screen);
-    s.light = spotOverGrille();
+    s.light = light;
     s.medium = fog();
+    return s;
+}
+
+FrameSpec flatSpot() {
+    FrameSpec s = sceneWith(spotOverGrille(), {48, 32});
     s.shadowed = false;
     return s;
 }

@@ -52,6 +52,8 @@ lightscatter::Medium fog();
 // integral (model_conversion.h's float64Unshadowed).
 FrameSpec flatSpot();
 View defaultView(VkExtent2D screen);
+// The grille scene in fog under `light` (shadowed), seen from the default view.
+FrameSpec sceneWith(lightscatter::Light light, VkExtent2D screen = {64, 48});
 
 // Test-sized settings (the profiles are far too large for lavapipe): about one slice per pixel of
 // the screen's perimeter and one sample per pixel along the longest line, so that the epipolar

@@ -1,0 +1,71 @@
+#!/usr/bin/env python3
+"""Writes the light-count scaling scenes scenes/atrium_spots_<N>.json for N in 1, 2, 4, 8.
+
+Each is the atrium (scenes/atrium.json's glTF, camera, medium, sky, ambient and exposure) lit by N
+shadowed spots and nothing else, given as a "lights" array: the first N of eight spots hung 6 m
+up over the court, each pointing down and a little askew, in turn warm and cold. Every spot's cone
+reaches the court the camera looks at, so every light reaches the view and costs its chain: the
+scenes measure the cost of N lights (bench/lights_scaling.json). Each spot is as bright whatever N
+(400/250/120 or 120/250/400 W/sr, atrium_lights' two spots), so scene N + 1 adds a light to scene N.
+Deterministic; standard library only.
+
+    python3 scripts/make_lights_scenes.py [OUT_DIR] [--counts 1,2,4,8]
+
+OUT_DIR defaults to the repository's scenes/. The glTF is the atrium's (not copied: OUT_DIR must
+hold atrium.gltf for the scenes to load). Do not edit the generated files by hand.
+"""
+import argparse
+import json
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cube_scenes import write_scene_json  # noqa: E402
+
+COUNTS = (1, 2, 4, 8)
+# (x, z) over the court, and where each spot's axis leans (x, z per metre down).
+SPOTS = [((-3.0, 2.0), (0.3, 0.2)), ((3.0, 5.0), (-0.2, -0.1)), ((0.0, 8.0), (0.1, -0.3)),
+         ((-2.0, 6.5), (0.25, -0.15)), ((2.5, 1.0), (-0.3, 0.25)), ((-4.0, 4.0), (0.35, 0.0)),
+         ((4.0, 8.5), (-0.3, -0.2)), ((0.5, 3.5), (0.0, 0.3))]
+HEIGHT = 6.0
+WARM, COLD = (400.0, 250.0, 120.0), (120.0, 250.0, 400.0)
+
+
+def spot(k):
+    (x, z), (dx, dz) = SPOTS[k]
+    color = WARM if k % 2 == 0 else COLD
+    return {"type": "spot", "position": [x, HEIGHT, z], "direction": [dx, -1.0, dz],
+            "intensity": list(color), "halfAngleDegrees": 20.0, "range": 30.0,
+            "shadowMapSize": 1024}
+
+
+def scene_document(atrium, count):
+    scene = {key: atrium[key] for key in ("gltf", "camera")}
+    scene["lights"] = [spot(k) for k in range(count)]
+    for key in ("medium", "sky", "ambient", "exposure"):
+        scene[key] = atrium[key]
+    return scene
+
+
+def main():
+    here = os.path.dirname(os.path.abspath(__file__))
+    scenes = os.path.join(here, "..", "scenes")
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("out", nargs="?", default=scenes)
+    parser.add_argument("--counts", default=",".join(str(c) for c in COUNTS),
+                        help="comma-separated light counts (default 1,2,4,8)")
+    args = parser.parse_args()
+    counts = [int(c) for c in args.counts.split(",") if c]
+    if any(c < 1 or c > len(SPOTS) for c in counts):
+        parser.error("--counts: each count must be from 1 to %d" % len(SPOTS))
+    with open(os.path.join(scenes, "atrium.json")) as f:
+        atrium = json.load(f)
+    os.makedirs(args.out, exist_ok=True)
+    for count in counts:
+        name = "atrium_spots_%d" % count
+        write_scene_json(args.out, name, scene_document(atrium, count))
+        print("wrote %s: %d shadowed spot(s)" % (os.path.join(args.out, name + ".json"), count))
+
+
+if __name__ == "__main__":
+    main()
