@@ -1,6 +1,7 @@
 #include "memory_placement.h"
 
 #include <algorithm>
+#include <functional>
 #include <numeric>
 #include <string>
 
@@ -33,8 +34,12 @@ bool lifetimesOverlap(const PlacementItem& a, const PlacementItem& b) {
     return a.first <= b.last && b.first <= a.last;
 }
 
-PlacementResult placeResources(const std::vector<PlacementItem>& items, VkDeviceSize granularity,
-                               bool aliasing) {
+namespace {
+
+// Places the items in `order`, each at the best fit among the gaps the already placed ones leave
+// while it is alive.
+PlacementResult placeInOrder(const std::vector<PlacementItem>& items, const std::vector<uint32_t>& order,
+                             VkDeviceSize granularity, bool aliasing) {
     PlacementResult result;
     result.placements.resize(items.size());
     std::vector<uint32_t> blockOfType;  // memory type -> block index (one block per type)
@@ -46,13 +51,6 @@ PlacementResult placeResources(const std::vector<PlacementItem>& items, VkDevice
         }
         return blockOfType[memoryType];
     };
-
-    std::vector<uint32_t> order(items.size());
-    std::iota(order.begin(), order.end(), 0u);
-    std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
-        if (items[a].size != items[b].size) return items[a].size > items[b].size;
-        return items[a].first < items[b].first;
-    });
 
     std::vector<uint32_t> placed;
     for (uint32_t i : order) {
@@ -90,6 +88,44 @@ PlacementResult placeResources(const std::vector<PlacementItem>& items, VkDevice
         placed.push_back(i);
     }
     return result;
+}
+
+VkDeviceSize totalSize(const PlacementResult& r) {
+    VkDeviceSize total = 0;
+    for (const auto& b : r.blocks) total += b.size;
+    return total;
+}
+
+}  // namespace
+
+PlacementResult placeResources(const std::vector<PlacementItem>& items, VkDeviceSize granularity,
+                               bool aliasing) {
+    // Best fit depends on the order the items go in, and no one order wins on every graph (largest
+    // first leaves gaps a long-lived middle-sized item cannot use): try a few, keep the smallest.
+    const auto length = [&](uint32_t i) { return VkDeviceSize{items[i].last - items[i].first + 1}; };
+    using Key = std::function<bool(uint32_t, uint32_t)>;
+    const Key orders[] = {
+        [&](uint32_t a, uint32_t b) { return items[a].size > items[b].size; },
+        [&](uint32_t a, uint32_t b) { return items[a].size * length(a) > items[b].size * length(b); },
+        [&](uint32_t a, uint32_t b) {
+            return length(a) != length(b) ? length(a) > length(b) : items[a].size > items[b].size;
+        },
+        [&](uint32_t a, uint32_t b) {
+            return items[a].first != items[b].first ? items[a].first < items[b].first : items[a].size > items[b].size;
+        },
+    };
+    PlacementResult best;
+    bool any = false;
+    for (const Key& before : orders) {
+        std::vector<uint32_t> order(items.size());
+        std::iota(order.begin(), order.end(), 0u);
+        std::stable_sort(order.begin(), order.end(), before);
+        PlacementResult r = placeInOrder(items, order, granularity, aliasing);
+        if (!any || totalSize(r) < totalSize(best)) best = std::move(r);
+        any = true;
+        if (!aliasing) break;  // every order gives the same sum
+    }
+    return best;
 }
 
 std::string checkPlacement(const std::vector<PlacementItem>& items, const PlacementResult& result,

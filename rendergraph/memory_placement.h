@@ -33,9 +33,10 @@ struct PlacementResult {
     std::vector<MemoryBlockPlan> blocks;
 };
 
-// Best fit over lifetime x size rectangles: largest first, each into the smallest gap left free by
-// the resources alive at the same time (as AMD's Render Pipeline Shaders places its heaps). With
-// aliasing off every resource gets memory of its own.
+// Best fit over lifetime x size rectangles: each item into the smallest gap left free by the
+// resources alive at the same time (as AMD's Render Pipeline Shaders places its heaps), the items
+// taken in a few orders (largest, largest area, longest-lived first, and by first use), keeping the
+// order that needs the least memory. With aliasing off every resource gets memory of its own.
 PlacementResult placeResources(const std::vector<PlacementItem>& items, VkDeviceSize granularity,
                                bool aliasing);
 

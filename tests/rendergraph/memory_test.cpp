@@ -125,3 +125,33 @@ TEST(Memory, GranularitySeparatesLinearFromOptimal) {
     const VkDeviceSize a = r.placements[0].offset, b = r.placements[1].offset;
     EXPECT_GE(a > b ? a - b : b - a, 4096u);
 }
+
+// The epipolar chain's lifetimes (balanced profile, sizes in MiB): placing the largest first puts
+// the screen-sized stencil at offset 0 and stacks the long-lived samples textures above every
+// short-lived one, 44 MiB; the most ever alive at once is 36 MiB (at the ray march), and another
+// order reaches it.
+TEST(Memory, PlacementTriesOrdersAndReachesTheLivePeak) {
+    constexpr VkDeviceSize MiB = 1 << 20;
+    const std::vector<PlacementItem> items{
+        {16 * MiB, 1, 19, 20, 0, false},  // camera depth-stencil
+        {8 * MiB, 1, 2, 17, 0, false},    // coordinates
+        {8 * MiB, 1, 6, 17, 0, false},    // trees
+        {8 * MiB, 1, 17, 18, 0, false},   // ray-marched samples
+        {8 * MiB, 1, 18, 19, 0, false},   // all samples
+        {4 * MiB, 1, 2, 19, 0, false},    // epipolar z
+        {4 * MiB, 1, 2, 18, 0, false},    // epipolar stencil
+        {4 * MiB, 1, 3, 18, 0, false},    // interpolation source
+    };
+    VkDeviceSize livePeak = 0;
+    for (uint32_t pass = 0; pass <= 20; ++pass) {
+        VkDeviceSize alive = 0;
+        for (const auto& i : items)
+            if (i.first <= pass && pass <= i.last) alive += i.size;
+        livePeak = std::max(livePeak, alive);
+    }
+    EXPECT_EQ(livePeak, 36 * MiB);
+    const PlacementResult r = placeResources(items, 1, true);
+    EXPECT_TRUE(checkPlacement(items, r, 1).empty());
+    ASSERT_EQ(r.blocks.size(), 1u);
+    EXPECT_EQ(r.blocks[0].size, livePeak);
+}
