@@ -174,6 +174,7 @@ void deriveSync(const RenderGraph& graph, CompiledGraph& out) {
 
     for (auto& plan : out.passes) {
         const PassDecl& pass = graph.passes()[plan.pass];
+        if (pass.type == PassType::Graphics) plan.renderExtent = pass.renderArea;  // no attachment
         std::map<uint32_t, std::vector<const ResourceUse*>> byResource;
         for (const auto& u : pass.uses) byResource[u.resource].push_back(&u);
 

@@ -238,10 +238,17 @@ void checkPass(const RenderGraph& graph, const DeviceCaps& caps, const PassDecl&
             }
         }
     }
-    if (pass.type == PassType::Graphics && !hasAttachment)
+    const bool area = pass.renderArea.width > 0 && pass.renderArea.height > 0;
+    if (pass.type == PassType::Graphics && !hasAttachment && !area)
         throw GraphError(Rule::WrongPassType,
-                         where + " is a graphics pass without attachments; make it a compute pass "
-                                 "or give it a render target");
+                         where + " is a graphics pass without attachments; make it a compute pass, "
+                                 "give it a render target or declare its render area");
+    if (pass.type != PassType::Graphics && (pass.renderArea.width > 0 || pass.renderArea.height > 0))
+        throw GraphError(Rule::WrongPassType, where + " declares a render area but is not a graphics pass");
+    if (hasAttachment && (pass.renderArea.width > 0 || pass.renderArea.height > 0))
+        throw GraphError(Rule::ExtentMismatch,
+                         where + " declares a render area and has attachments; it renders over the "
+                                 "attachments' extent, so declare one or the other");
 }
 
 }  // namespace

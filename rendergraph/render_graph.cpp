@@ -249,4 +249,9 @@ PassBuilder& PassBuilder::sideEffect() {
     return *this;
 }
 
+PassBuilder& PassBuilder::renderArea(VkExtent2D extent) {
+    graph_->passes_[pass_].renderArea = extent;
+    return *this;
+}
+
 }  // namespace rg

@@ -56,6 +56,9 @@ public:
 
     PassBuilder& execute(std::function<void(PassContext&)> fn);
     PassBuilder& sideEffect();
+    // A graphics pass with no attachment renders over `extent` (its fragments write storage
+    // images); a pass with attachments renders over theirs.
+    PassBuilder& renderArea(VkExtent2D extent);
     uint32_t index() const { return pass_; }
 
 private:

@@ -205,6 +205,42 @@ TEST(CompileRules, GraphicsPassWithoutAttachments) {
     expectRejected(g, Rule::WrongPassType, {"'no targets'", "without attachments"});
 }
 
+// A graphics pass whose fragments only write storage images declares the area it renders over;
+// with attachments it renders over theirs, so it may not declare one too.
+TEST(CompileRules, RenderAreaOnlyWithoutAttachments) {
+    {
+        RenderGraph g;
+        ImageRef c = color(g, "color");
+        auto p = g.addPass("storage only", PassType::Graphics);
+        c = p.storageWrite(c);
+        p.renderArea({16, 16});
+        p.sideEffect();
+        const rg::OfflineDeviceCaps caps;
+        const rg::CompiledGraph compiled = rg::compile(g, caps);
+        ASSERT_EQ(compiled.passes.size(), 1u);
+        EXPECT_EQ(compiled.passes[0].renderExtent.width, 16u);
+        EXPECT_EQ(compiled.passes[0].renderExtent.height, 16u);
+    }
+    {
+        RenderGraph g;
+        ImageRef c = color(g, "color");
+        auto p = g.addPass("both", PassType::Graphics);
+        c = p.colorAttachment(c, LoadOp::Clear);
+        p.renderArea({16, 16});
+        p.sideEffect();
+        expectRejected(g, Rule::ExtentMismatch, {"'both'", "render area and has attachments"});
+    }
+    {
+        RenderGraph g;
+        ImageRef c = color(g, "color");
+        auto p = g.addPass("compute area", PassType::Compute);
+        c = p.storageWrite(c);
+        p.renderArea({16, 16});
+        p.sideEffect();
+        expectRejected(g, Rule::WrongPassType, {"'compute area'", "not a graphics pass"});
+    }
+}
+
 TEST(CompileRules, BadDescriptions) {
     {
         RenderGraph g;
