@@ -64,6 +64,10 @@ const Need kNeeds[] = {
      kCoreOffset + offsetof(VkPhysicalDeviceFeatures, shaderClipDistance),
      "VkPhysicalDeviceFeatures2::features", VK_STRUCTURE_TYPE_MAX_ENUM, 0, nullptr,
      "the slices method clips its planes to a spot's pyramid with clip distances"},
+    {"fragmentStoresAndAtomics", VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2,
+     kCoreOffset + offsetof(VkPhysicalDeviceFeatures, fragmentStoresAndAtomics),
+     "VkPhysicalDeviceFeatures2::features", VK_STRUCTURE_TYPE_MAX_ENUM, 0, nullptr,
+     "epipolar's unwarp and fix-up composite into the engine's color from fragment shaders"},
 };
 
 template <typename Base>

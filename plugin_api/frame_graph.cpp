@@ -4,6 +4,7 @@
 #include "brute_force/brute_force_node.h"
 #include "cone_march/cone_march_node.h"
 #include "epipolar/epipolar_nodes.h"
+#include "shared/composite_target.h"
 #include "shared/shared_nodes.h"
 
 namespace lightscatter::detail {
@@ -128,19 +129,18 @@ FrameGraph buildLightsGraph(const GraphConfig& c, const std::vector<ls::Shared>&
             in.shadowMap = fg.lights[i].shadowMap;
             in.lightColor = fg.lights[i].lightColor;
         }
-        rg::ImageRef lin;
-        if (!l.shadowed) {
-            lin = ls::addUnshadowed(g, in);
-        } else if (c.method == Method::BruteForce) {
-            lin = ls::addBruteForce(g, in);
-        } else {
+        // The first chain's composite applies the extinction; the others add their Lin. Epipolar
+        // composites in its own unwarp and fix-up; the others leave a screen Lin to a composite.
+        const ls::CompositeTarget target{color, linOut, chains != 0};
+        ls::CompositeOutputs o;
+        if (l.shadowed && c.method == Method::Epipolar) {
             ls::EpipolarSizes sizes{c.slices, c.samples, l.shadowMapSize};
             ls::EpipolarOptions options{l.minMaxTrees, c.fixup, l.light == ls::LightKind::Point};
-            lin = ls::addEpipolarNodes(g, in, sizes, options).screenInscatter;
+            o = ls::addEpipolarNodes(g, in, sizes, options, target);
+        } else {
+            const rg::ImageRef lin = l.shadowed ? ls::addBruteForce(g, in) : ls::addUnshadowed(g, in);
+            o = chains == 0 ? ls::addComposite(g, in, color, lin, linOut) : ls::addInscatter(g, in, color, lin, linOut);
         }
-        // The first chain's composite applies the extinction; the others add their Lin.
-        const ls::CompositeOutputs o = chains == 0 ? ls::addComposite(g, in, color, lin, linOut)
-                                                   : ls::addInscatter(g, in, color, lin, linOut);
         color = o.color;
         linOut = o.inscatterOut;
         ++chains;
@@ -263,9 +263,12 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared, ls::S
             ls::EpipolarSizes sizes{c.slices, c.samples, c.shadowMapSize};
             const bool cube = c.light == ls::LightKind::Point;  // a shadowed point light's cube map
             ls::EpipolarOptions options{c.minMaxTrees, c.fixup, cube};
-            lin = ls::addEpipolarNodes(g, in, sizes, options).screenInscatter;
+            // Composited in the chain's unwarp and fix-up: no composite pass.
+            ls::addEpipolarNodes(g, in, sizes, options, {fg.color, fg.inscatterOut, false});
             fg.summary = std::string("epipolar sampling") + (c.minMaxTrees ? " with min/max trees" : "") +
-                         (cube ? " per cube face" : "") + (c.fixup ? ", fix-up" : "");
+                         (cube ? " per cube face" : "") + (c.fixup ? ", fix-up" : "") +
+                         ", composited in the unwarp";
+            return fg;
         }
     }
     ls::addComposite(g, in, fg.color, lin, fg.inscatterOut);

@@ -12,8 +12,9 @@
 // Requirements on the engine's VkDevice: Vulkan 1.3, the extensions requiredDeviceExtensions()
 // lists (VK_KHR_push_descriptor) and the features requiredDeviceFeatures() turns on
 // (synchronization2, dynamicRendering, maintenance4; separateDepthStencilLayouts, hostQueryReset;
-// shaderStorageImageExtendedFormats, shaderClipDistance). The engine tells the plugin what it enabled
-// (VulkanContext::enabledFeatures), and the plugin refuses a device that lacks one.
+// shaderStorageImageExtendedFormats, shaderClipDistance, fragmentStoresAndAtomics). The engine tells
+// the plugin what it enabled (VulkanContext::enabledFeatures), and the plugin refuses a device that
+// lacks one.
 //
 // Linking: CMake target lightscatter::plugin, from find_package(lightscatter CONFIG) on an
 // installed tree or from add_subdirectory on the source tree (README.md, "Integrating the plugin").

@@ -4,8 +4,8 @@
 
 namespace ls {
 
-EpipolarResult addEpipolarNodes(rg::RenderGraph& g, const NodeInputs& in,
-                                const EpipolarSizes& sizes, const EpipolarOptions& options) {
+CompositeOutputs addEpipolarNodes(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& sizes,
+                                  const EpipolarOptions& options, const CompositeTarget& target) {
     const rg::ImageRef endPoints = addSliceEndPoints(g, in, sizes);
     const EpipolarCoordinates samples = addEpipolarCoordinates(g, in, sizes, endPoints);
     const rg::ImageRef sources = addRefineSamples(g, in, sizes, samples.epipolarZ);
@@ -36,9 +36,10 @@ EpipolarResult addEpipolarNodes(rg::RenderGraph& g, const NodeInputs& in,
     }
     const rg::ImageRef interpolated = addInterpolate(g, in, sizes, sources, marched, marking);
     const UnwarpOutputs screen =
-        addUnwarp(g, in, {endPoints, samples.epipolarZ, interpolated}, options.fixup);
-    if (!options.fixup) return {screen.screenInscatter};
-    return {addFixup(g, in, screen.cameraStencil, screen.screenInscatter)};
+        addUnwarp(g, in, {endPoints, samples.epipolarZ, interpolated}, target, options.fixup);
+    if (!options.fixup) return screen.composited;
+    return addFixup(g, in, screen.cameraStencil,
+                    {screen.composited.color, screen.composited.inscatterOut, target.addOnly});
 }
 
 }  // namespace ls

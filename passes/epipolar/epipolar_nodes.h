@@ -5,6 +5,7 @@
 // with the depth-stencil format the device offers) and the stencil writes and tests as uses, so
 // the runtime orders the passes, derives their barriers and aliases what it can. Every node also
 // reads the frame's constants and, where it says so, the light's images from NodeInputs.
+#include "shared/composite_target.h"
 #include "shared/node_inputs.h"
 
 namespace ls {
@@ -65,24 +66,25 @@ rg::ImageRef addInterpolate(rg::RenderGraph& g, const NodeInputs& in, const Epip
                             rg::ImageRef interpolationSource, rg::ImageRef marched,
                             rg::ImageRef epipolarStencil);
 
-// The samples unwarped to the screen, and with markForFixup the pixels no sample could serve
-// marked 1 in a camera stencil. Reads in.table.
+// The samples unwarped to the screen and composited into the target (no screen-sized Lin), and with
+// markForFixup the pixels no sample could serve left to the fix-up, marked 1 in a camera stencil.
+// Reads in.table and in.depth.
 struct UnwarpInputs {
     rg::ImageRef sliceEndPoints, epipolarZ, interpolated;
 };
 struct UnwarpOutputs {
-    rg::ImageRef screenInscatter;  // RGBA16F, screen
-    rg::ImageRef cameraStencil;    // depth-stencil, screen; invalid without markForFixup
+    CompositeOutputs composited;  // the target's new versions
+    rg::ImageRef cameraStencil;   // depth-stencil, screen; invalid without markForFixup
 };
 UnwarpOutputs addUnwarp(rg::RenderGraph& g, const NodeInputs& in, const UnwarpInputs& i,
-                        bool markForFixup);
+                        const CompositeTarget& target, bool markForFixup);
 
-// Marches the pixels marked in cameraStencil on their own into screenInscatter; returns its new
-// version. Reads the light's images.
-rg::ImageRef addFixup(rg::RenderGraph& g, const NodeInputs& in,
-                      rg::ImageRef cameraStencil, rg::ImageRef screenInscatter);
+// Marches the pixels marked in cameraStencil on their own and composites them into the target
+// (the unwarp's new versions); returns the target's new versions. Reads the light's images.
+CompositeOutputs addFixup(rg::RenderGraph& g, const NodeInputs& in, rg::ImageRef cameraStencil,
+                          const CompositeTarget& target);
 
-// The whole chain, from the engine's depth to the screen's in-scattering (before compositing). With
+// The whole chain, from the engine's depth to the composited color. With
 // cubeShadow (a point light's six-layer shadow map) the samples are shared by the six faces and
 // each face adds its own line frames, trees and march (in.shared->cubeFaces; each face's constants
 // are uploaded by the chain); the fix-up marches the whole cube.
@@ -91,10 +93,9 @@ struct EpipolarOptions {
     bool fixup = true;
     bool cubeShadow = false;
 };
-struct EpipolarResult {
-    rg::ImageRef screenInscatter;  // RGBA16F, screen
-};
-EpipolarResult addEpipolarNodes(rg::RenderGraph& g, const NodeInputs& in,
-                                const EpipolarSizes& sizes, const EpipolarOptions& options);
+// Returns the target's new versions: the chain composites its Lin where the unwarp and the fix-up
+// make it.
+CompositeOutputs addEpipolarNodes(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& sizes,
+                                  const EpipolarOptions& options, const CompositeTarget& target);
 
 }  // namespace ls

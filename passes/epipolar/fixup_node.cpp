@@ -3,20 +3,26 @@
 
 namespace ls {
 
-// Pixels the unwarp could not interpolate (stencil 1) are ray-marched on their own, without trees.
-rg::ImageRef addFixup(rg::RenderGraph& g, const NodeInputs& in,
-                      rg::ImageRef cameraStencil, rg::ImageRef screenInscatter) {
+// Pixels the unwarp could not interpolate (stencil 1) are ray-marched on their own, without trees,
+// and composited into the engine's color like the unwarp's.
+CompositeOutputs addFixup(rg::RenderGraph& g, const NodeInputs& in, rg::ImageRef cameraStencil,
+                          const CompositeTarget& target) {
     auto pass = g.addPass("fix-up ray march", rg::PassType::Graphics);
     declarePixelMarch(pass, in);
     pass.stencilTest(cameraStencil);
-    const rg::ImageRef out = pass.colorAttachment(screenInscatter, rg::LoadOp::Load);
-    pass.execute([in](rg::PassContext& ctx) {
+    const CompositeOutputs written = declareCompositeTarget(pass, target);
+    const bool addOnly = target.addOnly;
+    pass.execute([in, written, addOnly](rg::PassContext& ctx) {
         // The cap is a setting, read per frame like the other constants.
         const auto maxSteps = static_cast<uint32_t>(in.shared->constants.epipolar2.y);
         drawPixelMarch(ctx, in,
-                       {.pipeline = "fix-up", .maxSteps = maxSteps, .whereStencilIsOne = true});
+                       {.pipeline = "fix-up",
+                        .maxSteps = maxSteps,
+                        .whereStencilIsOne = true,
+                        .composite = &written,
+                        .addOnly = addOnly});
     });
-    return out;
+    return written;
 }
 
 }  // namespace ls

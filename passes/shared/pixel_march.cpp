@@ -1,11 +1,32 @@
 #include "pixel_march.h"
 
+#include "composite_target.h"
 #include "pass_helpers.h"
 #include "pixel_march_directional_color_frag.h"
 #include "pixel_march_directional_frag.h"
 #include "pixel_march_table_color_frag.h"
 #include "pixel_march_table_cube_frag.h"
 #include "pixel_march_table_frag.h"
+#include "pixel_march_fixup_directional_rgba16f_frag.h"
+#include "pixel_march_fixup_directional_rgba16f_out_frag.h"
+#include "pixel_march_fixup_directional_rgba32f_frag.h"
+#include "pixel_march_fixup_directional_rgba32f_out_frag.h"
+#include "pixel_march_fixup_table_rgba16f_frag.h"
+#include "pixel_march_fixup_table_rgba16f_out_frag.h"
+#include "pixel_march_fixup_table_rgba32f_frag.h"
+#include "pixel_march_fixup_table_rgba32f_out_frag.h"
+#include "pixel_march_fixup_directional_color_rgba16f_frag.h"
+#include "pixel_march_fixup_directional_color_rgba16f_out_frag.h"
+#include "pixel_march_fixup_directional_color_rgba32f_frag.h"
+#include "pixel_march_fixup_directional_color_rgba32f_out_frag.h"
+#include "pixel_march_fixup_table_color_rgba16f_frag.h"
+#include "pixel_march_fixup_table_color_rgba16f_out_frag.h"
+#include "pixel_march_fixup_table_color_rgba32f_frag.h"
+#include "pixel_march_fixup_table_color_rgba32f_out_frag.h"
+#include "pixel_march_fixup_table_cube_rgba16f_frag.h"
+#include "pixel_march_fixup_table_cube_rgba16f_out_frag.h"
+#include "pixel_march_fixup_table_cube_rgba32f_frag.h"
+#include "pixel_march_fixup_table_cube_rgba32f_out_frag.h"
 
 namespace ls {
 namespace {
@@ -18,6 +39,38 @@ rg::ShaderCode pixelMarchShader(const ScatterSpec& spec) {
                                       : rg::spirv(ls_spirv::pixel_march_table_frag);
     return spec.lightColor ? rg::spirv(ls_spirv::pixel_march_directional_color_frag)
                            : rg::spirv(ls_spirv::pixel_march_directional_frag);
+}
+
+// The fix-up's variants, compositing into the engine's color.
+const CompositeVariants& fixupShaders(const ScatterSpec& spec) {
+    static const CompositeVariants directional{
+        rg::spirv(ls_spirv::pixel_march_fixup_directional_rgba16f_frag),
+        rg::spirv(ls_spirv::pixel_march_fixup_directional_rgba16f_out_frag),
+        rg::spirv(ls_spirv::pixel_march_fixup_directional_rgba32f_frag),
+        rg::spirv(ls_spirv::pixel_march_fixup_directional_rgba32f_out_frag)};
+    static const CompositeVariants table{
+        rg::spirv(ls_spirv::pixel_march_fixup_table_rgba16f_frag),
+        rg::spirv(ls_spirv::pixel_march_fixup_table_rgba16f_out_frag),
+        rg::spirv(ls_spirv::pixel_march_fixup_table_rgba32f_frag),
+        rg::spirv(ls_spirv::pixel_march_fixup_table_rgba32f_out_frag)};
+    static const CompositeVariants directionalColor{
+        rg::spirv(ls_spirv::pixel_march_fixup_directional_color_rgba16f_frag),
+        rg::spirv(ls_spirv::pixel_march_fixup_directional_color_rgba16f_out_frag),
+        rg::spirv(ls_spirv::pixel_march_fixup_directional_color_rgba32f_frag),
+        rg::spirv(ls_spirv::pixel_march_fixup_directional_color_rgba32f_out_frag)};
+    static const CompositeVariants tableColor{
+        rg::spirv(ls_spirv::pixel_march_fixup_table_color_rgba16f_frag),
+        rg::spirv(ls_spirv::pixel_march_fixup_table_color_rgba16f_out_frag),
+        rg::spirv(ls_spirv::pixel_march_fixup_table_color_rgba32f_frag),
+        rg::spirv(ls_spirv::pixel_march_fixup_table_color_rgba32f_out_frag)};
+    static const CompositeVariants tableCube{
+        rg::spirv(ls_spirv::pixel_march_fixup_table_cube_rgba16f_frag),
+        rg::spirv(ls_spirv::pixel_march_fixup_table_cube_rgba16f_out_frag),
+        rg::spirv(ls_spirv::pixel_march_fixup_table_cube_rgba32f_frag),
+        rg::spirv(ls_spirv::pixel_march_fixup_table_cube_rgba32f_out_frag)};
+    if (spec.cubeShadow) return tableCube;
+    if (spec.light != LightKind::Directional) return spec.lightColor ? tableColor : table;
+    return spec.lightColor ? directionalColor : directional;
 }
 
 }  // namespace
@@ -33,8 +86,10 @@ void drawPixelMarch(rg::PassContext& ctx, const NodeInputs& in,
     const ScatterSpec& spec = in.shared->spec;
     std::vector<rg::Binding> b{uniformBinding(0), sampledBinding(1)};
     appendMarchBindings(b, in);
-    auto desc = fullscreenPipeline(pixelMarchShader(spec), ctx, b);
-    desc.pushConstantBytes = 4;
+    if (draw.composite) appendCompositeBindings(b, *draw.composite);
+    auto desc = fullscreenPipeline(draw.composite ? fixupShaders(spec).pick(ctx, *draw.composite) : pixelMarchShader(spec),
+                                   ctx, b);
+    desc.pushConstantBytes = draw.composite ? 8 : 4;
     desc.specialization = spec.constants();
     if (draw.whereStencilIsOne) {
         desc.stencilTest = true;
@@ -42,15 +97,23 @@ void drawPixelMarch(rg::PassContext& ctx, const NodeInputs& in,
                         VK_COMPARE_OP_EQUAL, 0xff, 0, 1};
     }
     const auto& p =
-        in.shared->pipelines.graphics(pipelineKey(draw.pipeline, ctx, spec.key()), desc);
+        in.shared->pipelines.graphics(
+            pipelineKey(draw.pipeline, ctx, spec.key() + (draw.composite ? "/" + compositeKey(ctx, *draw.composite) : "")),
+            desc);
     p.bind(ctx.cmd());
     if (draw.whereStencilIsOne)
         vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 1);
     auto set = frameSet(ctx, in.constants);
     set.sampled(1, ctx.view(in.depth, VK_IMAGE_ASPECT_DEPTH_BIT), ctx.layout(in.depth), in.shared->samplers.nearest());
     pushMarchInputs(set, ctx, in);
+    if (draw.composite) pushCompositeTarget(set, ctx, *draw.composite);
     set.push(ctx.device(), ctx.cmd(), p);
-    p.push(ctx.cmd(), draw.maxSteps);
+    if (draw.composite) {
+        const uint32_t push[2] = {draw.maxSteps, draw.addOnly ? 1u : 0u};
+        p.push(ctx.cmd(), push);
+    } else {
+        p.push(ctx.cmd(), draw.maxSteps);
+    }
     vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
 }
 

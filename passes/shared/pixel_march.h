@@ -4,6 +4,7 @@
 // epipolar fix-up over the pixels its unwarp marked in a stencil, with an optional step cap. The
 // caller adds the pass, its target and any stencil it tests; these add the march's reads and draw.
 #include "node_inputs.h"
+#include "shared_nodes.h"
 #include "rendergraph/pass_context.h"
 #include "rendergraph/render_graph.h"
 
@@ -16,6 +17,10 @@ struct PixelMarchDraw {
     const char* pipeline = "";       // names the pipeline, with the light's variant and the targets
     uint32_t maxSteps = 0;           // steps per ray at most; 0: one per texel crossed
     bool whereStencilIsOne = false;  // draw only where the pass's stencil attachment holds 1
+    // Composite into these (declared by the pass with declareCompositeTarget) instead of writing
+    // Lin to the pass's color attachment: the epipolar fix-up.
+    const CompositeOutputs* composite = nullptr;
+    bool addOnly = false;  // with composite: a frame's later light
 };
 
 // Records the march as one full-screen draw of the pass.

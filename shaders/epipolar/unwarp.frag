@@ -2,8 +2,10 @@
 #extension GL_GOOGLE_include_directive : require
 // Epipolar -> screen (seed 000): find the slice through the pixel and its place along it, and
 // filter the 2 x 2 nearest samples bilaterally (weights zeroed where their camera z differs from
-// the pixel's). Mode 0 writes the result; mode 1 (stencil pass) keeps only the pixels no sample can
-// serve, for the fix-up pass. Without fix-up those pixels fall back to plain bilinear weights.
+// the pixel's), and composite the result into the engine's color (composite_into.glsl): no
+// screen-sized Lin texture and no composite pass. With fix-up, a pixel no sample can serve is left
+// to the fix-up, which composites it; a second draw (mode 1) keeps only those pixels' fragments,
+// marking them in the camera stencil. Without fix-up they fall back to plain bilinear weights.
 // In ratio mode the samples carry the shadowed fraction, and the pixel's own unshadowed Lin (closed
 // form) scales it back: the glow around a light, which no sparse sampling resolves, stays exact.
 #include "epipolar_geometry.glsl"
@@ -17,8 +19,12 @@ layout(binding = 7) uniform sampler2D pointTable;
 #endif
 #include "integrate.glsl"
 #include "light_volume.glsl"
-layout(push_constant) uniform Push { int mode; } pc;
-layout(location = 0) out vec4 outInscatter;
+#include "composite_into.glsl"
+layout(push_constant) uniform Push {
+    int mode;     // 0: composite (leaving the fix-up's pixels alone with fix-up), 1: mark them
+    int fixup;    // 1: the fix-up serves the pixels no sample can
+    int addOnly;  // 1: a frame's later light (compositeInto)
+} pc;
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -64,18 +70,20 @@ void main() {
         }
     }
     bool resolved = weight > 1e-3;
+    // The mark draw stores nothing: a surviving fragment writes the stencil.
     if (pc.mode == 1) {
         if (resolved) discard;
-        outInscatter = vec4(0.0);
         return;
     }
+    if (pc.fixup != 0 && !resolved) return;  // the fix-up's
     vec4 value = resolved ? sum / weight : (plainWeight > 0.0 ? plain / plainWeight : vec4(0.0));
+    vec3 v = rayDirection(p);
+    float S = rayLength(z, v);
     if (frame.epipolar2.w > 0.5) {
         vec3 C = frame.cameraPos.xyz;
-        vec3 v = rayDirection(p);
         float t0, t1;
-        lightInterval(C, v, rayLength(z, v), t0, t1);
+        lightInterval(C, v, S, t0, t1);
         value.rgb *= unshadowedInscatter(C, v, t0, t1);
     }
-    outInscatter = vec4(value.rgb, 1.0);
+    compositeInto(pixel, value.rgb, S, pc.addOnly != 0);
 }

@@ -2,7 +2,8 @@
 #extension GL_GOOGLE_include_directive : require
 // Seed 000's starting point: a pixel marches its own ray through every shadow-map texel it
 // crosses. Brute force runs it on every pixel (the on-GPU reference the other methods are compared
-// with); the epipolar fix-up on the pixels its unwarp could not serve, with an optional step cap.
+// with); the epipolar fix-up on the pixels its unwarp could not serve, with an optional step cap,
+// compositing what it marches into the engine's color (LS_COMPOSITE) as the unwarp does.
 #include "camera.glsl"
 layout(binding = 1) uniform sampler2D depthBuffer;  // the engine's depth
 #if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
@@ -17,16 +18,32 @@ layout(binding = 7) uniform sampler2D pointTable;
 layout(binding = 8) uniform sampler2D lightColorMap;
 #endif
 #include "march.glsl"
+#if defined(LS_COMPOSITE) && LS_COMPOSITE
+#include "composite_into.glsl"
+// The stencil test before the shader: a fragment that fails it must not store (late tests would
+// run the shader, stores and all, for every pixel).
+layout(early_fragment_tests) in;
+layout(push_constant) uniform Push {
+    uint maxSteps;  // 0: one step per texel
+    uint addOnly;   // a frame's later light
+} pc;
+#else
 layout(push_constant) uniform Push { uint maxSteps; } pc;  // 0: one step per texel
 layout(location = 0) out vec4 outInscatter;
+#endif
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec3 v = pixelRayDirection(pixel);
     float S = rayLength(pixelCameraZ(depthBuffer, pixel), v);
 #if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
-    outInscatter = vec4(marchRayCube(frame.cameraPos.xyz, v, S, pc.maxSteps), 1.0);
+    vec3 lin = marchRayCube(frame.cameraPos.xyz, v, S, pc.maxSteps);
 #else
-    outInscatter = vec4(marchRay(frame.cameraPos.xyz, v, S, pc.maxSteps), 1.0);
+    vec3 lin = marchRay(frame.cameraPos.xyz, v, S, pc.maxSteps);
+#endif
+#if defined(LS_COMPOSITE) && LS_COMPOSITE
+    compositeInto(pixel, lin, S, pc.addOnly != 0u);
+#else
+    outInscatter = vec4(lin, 1.0);
 #endif
 }

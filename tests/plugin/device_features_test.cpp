@@ -29,6 +29,7 @@ TEST(DeviceFeatures, TheChainTurnsOnWhatThePluginNeeds) {
     EXPECT_TRUE(f.vulkan12.hostQueryReset);
     EXPECT_TRUE(f.core.features.shaderStorageImageExtendedFormats);
     EXPECT_TRUE(f.core.features.shaderClipDistance);
+    EXPECT_TRUE(f.core.features.fragmentStoresAndAtomics);
     EXPECT_FALSE(f.vulkan12.timelineSemaphore);  // nothing the plugin does not need
     EXPECT_FALSE(f.core.features.geometryShader);
     const auto extensions = lightscatter::requiredDeviceExtensions();
@@ -60,6 +61,7 @@ TEST(DeviceFeatures, AnEnginesOwnChainIsCompleted) {
     EXPECT_TRUE(core.features.geometryShader);
     EXPECT_TRUE(core.features.shaderStorageImageExtendedFormats);
     EXPECT_TRUE(core.features.shaderClipDistance);
+    EXPECT_TRUE(core.features.fragmentStoresAndAtomics);
     EXPECT_TRUE(v13.shaderDemoteToHelperInvocation);
     EXPECT_TRUE(v13.synchronization2 && v13.dynamicRendering && v13.maintenance4);
     EXPECT_TRUE(layouts.separateDepthStencilLayouts);

@@ -1,5 +1,6 @@
 // The epipolar method against brute force on small scenes, for each shadowed light type; min/max
 // trees on and off; both interpolation modes; colored shafts; the composite.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -130,12 +131,21 @@ TEST_F(EpipolarGpu, SeedInterpolationOfLinMatchesAwayFromTheLight) {
     EXPECT_LT(e.meanRelative, 1e-2);
 }
 
-TEST_F(EpipolarGpu, CompositeAttenuatesTheEngineColorAndAddsLin) {
+// Epipolar composites in its unwarp and fix-up (no composite pass): every pixel once, whether the
+// unwarp or the fix-up serves it, and with fix-up off the unwarp alone, rendering without an
+// attachment.
+class EpipolarComposite : public EpipolarGpu, public testing::WithParamInterface<bool> {};
+
+TEST_P(EpipolarComposite, AttenuatesTheEngineColorAndAddsLin) {
     FrameSpec spec = sceneWith(spotOverGrille());
     spec.background = 0.5f;
     TestFrame frame(dev(), spec);
     frame.resetColor();
-    run(frame, Method::Epipolar);
+    auto settings = smallSettings(spec.screen);
+    settings.fixup = GetParam();
+    const auto report = run(frame, Method::Epipolar, settings);
+    EXPECT_EQ(std::count(report.passNames.begin(), report.passNames.end(), "composite"), 0);
+    EXPECT_EQ(std::count(report.passNames.begin(), report.passNames.end(), "fix-up ray march"), GetParam() ? 1 : 0);
     const auto lin = frame.inscatter();
     const auto color = frame.color();
     const lightscatter::Medium& m = spec.medium;
@@ -153,6 +163,9 @@ TEST_F(EpipolarGpu, CompositeAttenuatesTheEngineColorAndAddsLin) {
         }
     EXPECT_LT(worst, 1e-3);
 }
+
+INSTANTIATE_TEST_SUITE_P(FixUp, EpipolarComposite, testing::Bool(),
+                         [](const testing::TestParamInfo<bool>& i) { return i.param ? "On" : "Off"; });
 
 TEST_F(EpipolarGpu, ColoredShaftsMatchBruteForceWithTreesOnAndOff) {
     FrameSpec spec = sceneWith(spotOverGrille());

@@ -140,6 +140,7 @@ TEST_F(PluginIntegrationGpu, ADeviceWithoutARequiredFeatureIsRefusedNamingIt) {
         {"shaderStorageImageExtendedFormats",
          [](auto& f) { f.core.features.shaderStorageImageExtendedFormats = VK_FALSE; }},
         {"shaderClipDistance", [](auto& f) { f.core.features.shaderClipDistance = VK_FALSE; }},
+        {"fragmentStoresAndAtomics", [](auto& f) { f.core.features.fragmentStoresAndAtomics = VK_FALSE; }},
     };
     for (const Case& c : cases) {
         lightscatter::DeviceFeatures features = lightscatter::requiredDeviceFeatures();

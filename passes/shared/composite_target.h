@@ -1,0 +1,37 @@
+#pragma once
+// Compositing where Lin is made (shaders/shared/composite_into.glsl): the pass that makes Lin
+// read-modify-writes the engine's color, and the Lin output when the frame has one, so no
+// screen-sized Lin texture and no pass of its own are needed. The epipolar unwarp and fix-up do
+// it; the composite node does it for the methods that leave Lin in a screen texture.
+#include <string>
+#include <vector>
+
+#include "rendergraph/pass_context.h"
+#include "rendergraph/pipeline.h"
+#include "rendergraph/render_graph.h"
+#include "shared_nodes.h"
+
+namespace ls {
+
+struct CompositeTarget {
+    rg::ImageRef color;         // the engine's color: RGBA16F or RGBA32F, storage
+    rg::ImageRef inscatterOut;  // RGBA32F; invalid: none
+    bool addOnly = false;       // a frame's later light: add Lin, the first applied the extinction
+};
+
+// Declares the pass's read-modify-write of the target's images; returns their new versions.
+CompositeOutputs declareCompositeTarget(rg::PassBuilder& pass, const CompositeTarget& target);
+
+// Bindings 10 (color) and 11 (the output, when there is one) of composite_into.glsl.
+void appendCompositeBindings(std::vector<rg::Binding>& bindings, const CompositeOutputs& written);
+void pushCompositeTarget(rg::DescriptorPush& set, const rg::PassContext& ctx, const CompositeOutputs& written);
+
+// A shader built for each color format, with and without the output image.
+struct CompositeVariants {
+    rg::ShaderCode rgba16f, rgba16fOut, rgba32f, rgba32fOut;
+    rg::ShaderCode pick(const rg::PassContext& ctx, const CompositeOutputs& written) const;
+};
+// The variant, for a pipeline's key.
+std::string compositeKey(const rg::PassContext& ctx, const CompositeOutputs& written);
+
+}  // namespace ls

@@ -1,0 +1,29 @@
+// The composite, done where Lin is made: color = color * exp(-betaT S) + Lin in the engine's
+// image, and Lin alone into the output image when the frame asked for one. A frame's later lights
+// (addOnly) add their Lin to both: the first light's composite applied the extinction. Each
+// invocation touches its own pixel only. The engine color's format and the output image are
+// build-time variants (LS_COLOR_RGBA32F, LS_WITH_OUTPUT): a storage image read needs its format.
+#ifndef LS_COMPOSITE_INTO_GLSL
+#define LS_COMPOSITE_INTO_GLSL
+#include "frame.glsl"
+
+#if LS_COLOR_RGBA32F
+layout(binding = 10, rgba32f) uniform image2D engineColor;
+#else
+layout(binding = 10, rgba16f) uniform image2D engineColor;
+#endif
+#if LS_WITH_OUTPUT
+layout(binding = 11, rgba32f) uniform image2D inscatterOut;
+#endif
+
+void compositeInto(ivec2 p, vec3 lin, float S, bool addOnly) {
+    vec4 c = imageLoad(engineColor, p);
+    c.rgb = addOnly ? c.rgb + lin : c.rgb * exp(-frame.betaT.rgb * S) + lin;
+    imageStore(engineColor, p, c);
+#if LS_WITH_OUTPUT
+    vec3 earlier = addOnly ? imageLoad(inscatterOut, p).rgb : vec3(0.0);
+    imageStore(inscatterOut, p, vec4(earlier + lin, 1.0));
+#endif
+}
+
+#endif
