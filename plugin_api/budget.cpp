@@ -30,8 +30,8 @@ std::optional<SeedFigure> seedFigure(Profile p) {
 // The engine's images as a typical engine hands them over (D32 depth, RGBA16F color), and the
 // camera depth-stencil format the device would give, for a budget computed without a device.
 void describeEngineImages(detail::GraphConfig& c, const rg::OfflineDeviceCaps& caps) {
-    c.depthStencil = rg::firstSupported(caps, {VK_FORMAT_D24_UNORM_S8_UINT, VK_FORMAT_D32_SFLOAT_S8_UINT},
-                                        VK_FORMAT_FEATURE_2_DEPTH_STENCIL_ATTACHMENT_BIT);
+    c.depthStencil = detail::stencilFormat(caps);
+    c.coordinates = detail::coordinateFormat(caps);
     const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     c.depth = {VK_FORMAT_D32_SFLOAT, c.screen,
                VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, ro, ro};

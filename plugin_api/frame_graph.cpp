@@ -14,7 +14,7 @@ bool GraphConfig::operator==(const GraphConfig& o) const {
            touchesView == o.touchesView && minMaxTrees == o.minMaxTrees && fixup == o.fixup &&
            slices == o.slices && samples == o.samples && shadowMapSize == o.shadowMapSize &&
            screen.width == o.screen.width && screen.height == o.screen.height &&
-           depthStencil == o.depthStencil && depth == o.depth && color == o.color &&
+           depthStencil == o.depthStencil && coordinates == o.coordinates && depth == o.depth && color == o.color &&
            shadowMap == o.shadowMap && lightColor == o.lightColor &&
            inscatterOut == o.inscatterOut && table == o.table && extinction == o.extinction &&
            coneSamples == o.coneSamples && coneLimited == o.coneLimited && coneJitter == o.coneJitter &&
@@ -30,6 +30,17 @@ ls::SliceAccumulation sliceAccumulation(SliceTarget target) {
         case SliceTarget::Float16: break;
     }
     return ls::SliceAccumulation::Float16;
+}
+
+VkFormat stencilFormat(const rg::DeviceCaps& caps) {
+    return rg::firstSupported(caps, {VK_FORMAT_S8_UINT, VK_FORMAT_D24_UNORM_S8_UINT, VK_FORMAT_D32_SFLOAT_S8_UINT},
+                              VK_FORMAT_FEATURE_2_DEPTH_STENCIL_ATTACHMENT_BIT);
+}
+
+VkFormat coordinateFormat(const rg::DeviceCaps& caps) {
+    const VkFormat f = rg::firstSupported(caps, {VK_FORMAT_R16G16_UNORM, VK_FORMAT_R32G32_SFLOAT},
+                                          VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BIT);
+    return f == VK_FORMAT_UNDEFINED ? VK_FORMAT_R32G32_SFLOAT : f;
 }
 
 rg::ImportedImage importDescription(const ImageInput& in) {
@@ -90,6 +101,7 @@ FrameGraph buildLightsGraph(const GraphConfig& c, const std::vector<ls::Shared>&
     base.shared = sharedOf(0);
     base.screen = c.screen;
     base.depthStencil = c.depthStencil;
+    base.coordinateFormat = c.coordinates;
     fg.depth = base.depth = g.importImage("engine depth", importDescription(c.depth));
     fg.color = g.importImage("engine color", importDescription(c.color));
     if (c.inscatterOut.format != VK_FORMAT_UNDEFINED)
@@ -169,6 +181,7 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared, ls::S
     in.shared = shared;
     in.screen = c.screen;
     in.depthStencil = c.depthStencil;
+    in.coordinateFormat = c.coordinates;
     in.shadowMapSize = c.shadowMapSize;
     fg.depth = in.depth = g.importImage("engine depth", importDescription(c.depth));
     fg.color = g.importImage("engine color", importDescription(c.color));

@@ -10,6 +10,7 @@
 #include "beam_tree_hybrid/beam_tree_nodes.h"
 #include "slices/slice_nodes.h"
 #include "lightscatter.h"
+#include "rendergraph/device_caps.h"
 #include "rendergraph/render_graph.h"
 
 namespace lightscatter::detail {
@@ -53,6 +54,7 @@ struct GraphConfig {
     uint32_t slices = 0, samples = 0, shadowMapSize = 0;
     VkExtent2D screen{0, 0};
     VkFormat depthStencil = VK_FORMAT_UNDEFINED;
+    VkFormat coordinates = VK_FORMAT_R32G32_SFLOAT;  // epipolar's coordinate texture (coordinateFormat)
     ImportState depth, color, shadowMap, lightColor, inscatterOut;  // format UNDEFINED: absent
     ImportState table;
     bool extinction = true;         // betaT > 0 in some channel: the composite has work
@@ -94,6 +96,15 @@ rg::ImportedImage importDescription(const ImportState& s);
 rg::ImportedImage persistentImport(const ImportState& s, VkImage image);
 // The plugin's own tiling noise, as the frame graph imports it.
 ImportState ownNoiseState();
+
+// The format of the stencil textures (epipolar's sample marking, the fix-up's pixel marking),
+// which hold stencil only: S8 where the device renders to it (a quarter of a depth-stencil texel),
+// else D24S8, else D32S8; UNDEFINED when none is an attachment format.
+VkFormat stencilFormat(const rg::DeviceCaps& caps);
+
+// The format of epipolar's coordinate texture (each sample's NDC position): R16G16_UNORM where the
+// device renders to it (2 / 65535 of NDC: 0.04 pixel at 2560 pixels across), else R32G32_SFLOAT.
+VkFormat coordinateFormat(const rg::DeviceCaps& caps);
 
 // The plugin's own tiling noise, when a slices frame uses it without an engine image.
 inline constexpr VkExtent2D kNoiseExtent{256, 256};

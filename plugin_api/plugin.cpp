@@ -69,8 +69,8 @@ struct Plugin::Impl {
                                     c.queueFamily}),
           caps(device),
           shared(std::make_shared<ls::SharedState>(device)) {
-        depthStencil = rg::firstSupported(caps, {VK_FORMAT_D24_UNORM_S8_UINT, VK_FORMAT_D32_SFLOAT_S8_UINT},
-                                          VK_FORMAT_FEATURE_2_DEPTH_STENCIL_ATTACHMENT_BIT);
+        depthStencil = detail::stencilFormat(caps);
+        coordinates = detail::coordinateFormat(caps);
         if (depthStencil == VK_FORMAT_UNDEFINED)
             throw std::runtime_error(
                 "lightscatter: the device has no depth-stencil format with stencil");
@@ -175,6 +175,7 @@ struct Plugin::Impl {
         c.samples = setup.epipolar.samples;
         c.screen = setup.screen;
         c.depthStencil = depthStencil;
+        c.coordinates = coordinates;
         c.depth = state(frame.depth);
         c.color = state(frame.color);
         if (frame.inscatterOut) c.inscatterOut = state(*frame.inscatterOut);
@@ -431,6 +432,7 @@ struct Plugin::Impl {
     rg::VulkanDeviceCaps caps;
     ls::Shared shared;
     VkFormat depthStencil = VK_FORMAT_UNDEFINED;
+    VkFormat coordinates = VK_FORMAT_R32G32_SFLOAT;
     std::unique_ptr<detail::PointTable> pointTable;
     bool tableRefilled = false;
     std::unique_ptr<detail::TilingNoise> tilingNoise;

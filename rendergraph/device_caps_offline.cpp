@@ -34,11 +34,13 @@ VkFormatFeatureFlags2 OfflineDeviceCaps::optimalFeatures(VkFormat format) const 
         case VK_FORMAT_B8G8R8A8_UNORM:
         case VK_FORMAT_R8G8B8A8_SRGB:
         case VK_FORMAT_B8G8R8A8_SRGB: f = kSampled | kFilter | kColor | kBlend; break;
+        case VK_FORMAT_R16G16_UNORM: f = kSampled | kFilter | kColor | kBlend; break;
         case VK_FORMAT_R16G16_UINT:
         case VK_FORMAT_R32_UINT:
         case VK_FORMAT_R32G32_UINT:
         case VK_FORMAT_R16_UINT: f = kSampled | kStorage | kColor; break;
         case VK_FORMAT_D16_UNORM:
+        case VK_FORMAT_S8_UINT:
         case VK_FORMAT_D32_SFLOAT:
         case VK_FORMAT_D32_SFLOAT_S8_UINT: f = kSampled | kDepth; break;
         case VK_FORMAT_D24_UNORM_S8_UINT: f = hasD24S8_ ? (kSampled | kDepth) : 0; break;

@@ -10,16 +10,16 @@ EpipolarCoordinates addEpipolarCoordinates(rg::RenderGraph& g, const NodeInputs&
         return rg::ImageDesc::absolute(format, s.samples, s.slices);
     };
     EpipolarCoordinates out;
-    out.coordinates = g.createImage("coordinate texture", perSample(VK_FORMAT_R32G32_SFLOAT));
+    out.coordinates = g.createImage("coordinate texture", perSample(in.coordinateFormat));
     out.epipolarZ = g.createImage("epipolar camera-space z", perSample(VK_FORMAT_R32_SFLOAT));
     out.epipolarStencil = g.createImage("epipolar depth-stencil", perSample(in.depthStencil));
     auto pass = g.addPass("coordinates and epipolar z", rg::PassType::Graphics);
     pass.uniformBuffer(in.constants);
     pass.sampled(sliceEndPoints);
     pass.sampled(in.depth, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
-    // Cleared to values no valid sample has: the later passes tell valid samples by them too.
-    out.coordinates =
-        pass.colorAttachment(out.coordinates, rg::LoadOp::Clear, {{-1e4f, -1e4f, 0.0f, 0.0f}});
+    // Invalid samples keep the clear values: epipolar z -1, which no valid sample has, tells them
+    // apart besides the stencil (the coordinates of invalid samples are never read).
+    out.coordinates = pass.colorAttachment(out.coordinates, rg::LoadOp::Clear);
     out.epipolarZ =
         pass.colorAttachment(out.epipolarZ, rg::LoadOp::Clear, {{-1.0f, 0.0f, 0.0f, 0.0f}});
     out.epipolarStencil = pass.stencilWrite(out.epipolarStencil, rg::LoadOp::Clear, 0);

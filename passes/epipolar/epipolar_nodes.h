@@ -22,7 +22,7 @@ rg::ImageRef addSliceEndPoints(rg::RenderGraph& g, const NodeInputs& in, const E
 // Each sample's NDC position and the camera-space z under it (from in.depth); valid samples get
 // stencil 1.
 struct EpipolarCoordinates {
-    rg::ImageRef coordinates;      // RG32F, samples x slices
+    rg::ImageRef coordinates;      // in.coordinateFormat (RG16 unorm or RG32F), samples x slices
     rg::ImageRef epipolarZ;        // R32F, samples x slices
     rg::ImageRef epipolarStencil;  // depth-stencil, samples x slices
 };

@@ -18,6 +18,9 @@ struct NodeInputs {
     rg::ImageRef table;       // point-light table; invalid for directional lights
     VkExtent2D screen{0, 0};
     VkFormat depthStencil = VK_FORMAT_UNDEFINED;  // for the stencil textures
+    // Epipolar's coordinate texture: R16G16_UNORM (NDC * 0.5 + 0.5) or R32G32_SFLOAT (NDC); the
+    // shaders read and write NDC through a [0, 1] encoding either way.
+    VkFormat coordinateFormat = VK_FORMAT_R32G32_SFLOAT;
     uint32_t shadowMapSize = 0;
 };
 

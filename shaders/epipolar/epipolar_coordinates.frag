@@ -1,6 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// One fragment per epipolar sample (x: sample, y: slice): its screen position and camera-space z.
+// One fragment per epipolar sample (x: sample, y: slice): its screen position (NDC mapped to [0, 1])
+// and camera-space z.
 // Samples off the screen or on culled slices are discarded, so only valid ones reach the stencil.
 #include "epipolar_geometry.glsl"
 #include "camera.glsl"
@@ -17,6 +18,6 @@ void main() {
     vec2 pos = mix(ends.xy, ends.zw, t);
     if (!insideBoundary(pos, 1e-5)) discard;
     ivec2 pixel = clamp(ivec2(floor(ndcToPixel(pos))), ivec2(0), ivec2(frame.screenSize.xy) - 1);
-    outCoordinate = pos;
+    outCoordinate = pos * 0.5 + 0.5;  // [0, 1]: stored as unorm16 where the device has it
     outCameraZ = pixelCameraZ(depthBuffer, pixel);
 }

@@ -153,7 +153,7 @@ void main() {
     shadowFace = int(frame.cubeFace.x);
 #endif
     ivec2 p = ivec2(gl_FragCoord.xy);
-    vec2 ndc = texelFetch(coordinates, p, 0).xy;
+    vec2 ndc = texelFetch(coordinates, p, 0).xy * 2.0 - 1.0;
     float z = texelFetch(epipolarZ, p, 0).r;
     vec3 v = rayDirection(ndc);
     vec3 C = frame.cameraPos.xyz;

@@ -30,16 +30,31 @@ TEST(Budget, SeedProfilesAt2560x1600) {
         for (const auto& e : b.entries) seen.insert(e.name + " " + e.format);
         // No screen-sized camera-space z: every reader derives it from the engine's depth.
         EXPECT_FALSE(seen.count("camera-space z R32_SFLOAT"));
-        for (const char* want : {"coordinate texture R32G32_SFLOAT",
+        for (const char* want : {"coordinate texture R16G16_UNORM",
                                  "epipolar camera-space z R32_SFLOAT", "interpolation source R16G16_UINT",
                                  "in-scattering (ray-marched samples) R16G16B16A16_SFLOAT",
                                  "in-scattering (all samples) R16G16B16A16_SFLOAT",
                                  "slice end points R32G32B32A32_SFLOAT",
                                  "slice uv origin and direction R32G32B32A32_SFLOAT",
                                  "1D min/max trees R16G16_SFLOAT",
-                                 "epipolar depth-stencil D24_UNORM_S8_UINT",
-                                 "camera depth-stencil D24_UNORM_S8_UINT"})
+                                 "epipolar depth-stencil S8_UINT",
+                                 "camera depth-stencil S8_UINT"})
             EXPECT_TRUE(seen.count(want)) << want << " missing from the " << lightscatter::profileName(p) << " budget";
+        // Nothing screen-sized but the fix-up's stencil: epipolar composites where it makes Lin.
+        EXPECT_FALSE(seen.count("in-scattering (screen) R16G16B16A16_SFLOAT"));
+    }
+}
+
+// The goal: the peak with aliasing at or below seed 000's figure for each profile at 2560x1600
+// (88 / 44 / 18 MB, taken as 10^6 bytes, the stricter reading), a spot light's point-light table
+// (2 MiB, kept across frames) included. On the offline device model: S8 stencils and an RG16 unorm
+// coordinate texture. Measured 76.1 / 31.1 / 16.6 MiB.
+TEST(Budget, PeaksMeetTheSeedsFigures) {
+    for (Profile p : {Profile::HighQuality, Profile::Balanced, Profile::HighPerformance}) {
+        const auto s = lightscatter::profileSettings(p);
+        const auto b = lightscatter::budget(p, 2560, 1600, s.shadowMapSize);
+        ASSERT_TRUE(b.seed.has_value());
+        EXPECT_LE(static_cast<double>(b.peakBytes), b.seed->megabytes * 1e6) << lightscatter::profileName(p);
     }
 }
 
@@ -49,7 +64,7 @@ TEST(Budget, EntriesHaveTheSeedsSizes) {
         if (e.name == "coordinate texture") {
             EXPECT_EQ(e.width, 1024u);  // samples
             EXPECT_EQ(e.height, 1024u); // slices
-            EXPECT_GE(e.bytes, 1024u * 1024u * 8u);
+            EXPECT_GE(e.bytes, 1024u * 1024u * 4u);  // RG16 unorm
         }
         if (e.name == "1D min/max trees") {  // every level in one texture
             EXPECT_EQ(e.width, 2048u);
