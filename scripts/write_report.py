@@ -502,7 +502,7 @@ def main():
         p(f"| {prof} | {ms} | {SEED['brute-force'][0] / ms:.1f}x | {fmt(ours) + 'x' if ours else '-'} | {mb} | "
           f"{bud['peakBytes'] / 2**20:.1f} | {bud['totalBytes'] / 2**20:.1f} |")
     p("\nMemory sizes come from `lightscatter budget` (estimated without a device: texels packed, 64 KiB "
-      "alignment); docs/epipolar.md explains why ours exceed the seed's column.\n")
+      "alignment); docs/epipolar.md says what brought them to the seed's column.\n")
 
     p("## The hard-case suite\n")
     bounds = {}
