@@ -59,8 +59,9 @@ public:
         const double left = done ? elapsed / static_cast<double>(done) * static_cast<double>(total_ - done) : 0.0;
         const int width = 30;
         const int filled = static_cast<int>(width * done / std::max<size_t>(total_, 1));
-        std::fprintf(stderr, "\r[%s%s] %zu/%zu, %s elapsed, %s left  %-50.50s", std::string(filled, '#').c_str(),
-                     std::string(width - filled, ' ').c_str(), done, total_, duration(elapsed).c_str(),
+        std::fprintf(stderr, "\r[%s%s] %zu/%zu, %s elapsed, %s left  %-60.60s",
+                     std::string(filled, '#').c_str(), std::string(width - filled, ' ').c_str(),
+                     done, total_, duration(elapsed).c_str(),
                      done ? ("~" + duration(left)).c_str() : "?", what.c_str());
         std::fflush(stderr);
     }
@@ -76,6 +77,21 @@ const char* kCsvHeader =
     "shadowMap,frames,medianMs,p10Ms,p90Ms,minMs,maxMs,meanRelativeError,rmse,p99Error,maxError,"
     "fractionOver5pct,psnrDb,nonFinite,device,cpuDevice,cpuWorkMs,occluders,motion,framePairs,"
     "meanExcessFlicker,p99ExcessFlicker,meanErrorChange,referenceChange,motionMeanRelativeError";
+
+nlohmann::json spreadJson(const bench::Spread& s) {
+    return {{"median", s.median}, {"p10", s.p10}, {"p90", s.p90}, {"min", s.min}, {"max", s.max}};
+}
+
+// Each named entry of the last frame (a pass, a piece of CPU work) with its spread over the frames.
+nlohmann::json namedSpreads(const std::vector<lightscatter::PassTime>& entries,
+                            std::map<std::string, std::vector<double>>& perName) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const auto& e : entries) {
+        const bench::Spread s = bench::spreadOf(perName[e.name]);
+        list.push_back({{"name", e.name}, {"median", s.median}, {"p10", s.p10}, {"p90", s.p90}});
+    }
+    return list;
+}
 
 }  // namespace
 
@@ -206,7 +222,7 @@ int runBench(Args& args) {
                 if (motion) {
                     lastReference =
                         &reference(run.scene + "|" + motionName + "|" + std::to_string(i),
-                                   " " + motionName + " frame " + std::to_string(i + 1) + "/" +
+                                   " " + motionName + " " + std::to_string(i + 1) + "/" +
                                        std::to_string(frames));
                     flicker.add(last.inscatter, *lastReference);
                 }
@@ -235,31 +251,11 @@ int runBench(Args& args) {
             row["minMaxTrees"] = used.minMaxTrees;
             row["shadowMapSize"] = sceneForRun.light.shadowMapSize;
             row["frames"] = frames;
-            row["time"] = {{"median", t.median},
-                           {"p10", t.p10},
-                           {"p90", t.p90},
-                           {"min", t.min},
-                           {"max", t.max}};
-            nlohmann::json passTimes = nlohmann::json::array();
-            for (const auto& p : last.plugin.passes) {
-                const bench::Spread s = bench::spreadOf(perPass[p.name]);
-                passTimes.push_back(
-                    {{"name", p.name}, {"median", s.median}, {"p10", s.p10}, {"p90", s.p90}});
-            }
-            row["passes"] = passTimes;
+            row["time"] = spreadJson(t);
+            row["passes"] = namedSpreads(last.plugin.passes, perPass);
             // The plugin's CPU work per frame (the beam tree), outside the GPU time above.
-            row["cpuTime"] = {{"median", cpu.median},
-                              {"p10", cpu.p10},
-                              {"p90", cpu.p90},
-                              {"min", cpu.min},
-                              {"max", cpu.max}};
-            nlohmann::json cpuWork = nlohmann::json::array();
-            for (const auto& w : last.plugin.cpuWork) {
-                const bench::Spread s = bench::spreadOf(perCpuWork[w.name]);
-                cpuWork.push_back(
-                    {{"name", w.name}, {"median", s.median}, {"p10", s.p10}, {"p90", s.p90}});
-            }
-            row["cpuWork"] = cpuWork;
+            row["cpuTime"] = spreadJson(cpu);
+            row["cpuWork"] = namedSpreads(last.plugin.cpuWork, perCpuWork);
             row["occluders"] = renderer->occluderCount();
             row["device"] = device.name();
             row["driver"] = device.driverName();

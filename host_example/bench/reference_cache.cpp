@@ -1,7 +1,10 @@
 #include "reference_cache.h"
 
 #include <cctype>
+#include <chrono>
 #include <cstdio>
+#include <nlohmann/json.hpp>
+#include <thread>
 
 #include "exact_renderer/reference_renderer.h"
 #include "image_io.h"
@@ -102,8 +105,11 @@ std::vector<double> loadOrRenderReference(const SceneDesc& scene, const MeshData
             return rgb;
         }
     }
+    const auto start = std::chrono::steady_clock::now();
     const reference::ReferenceImage ref =
         reference::renderReference(scene, mesh, size.width, size.height, {}, progress);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::vector<float> rgba(size_t{size.width} * size.height * 4, 1.0f);
     for (size_t p = 0; p < rgb.size() / 3; ++p)
         for (size_t c = 0; c < 3; ++c) {
@@ -111,6 +117,14 @@ std::vector<double> loadOrRenderReference(const SceneDesc& scene, const MeshData
             rgb[p * 3 + c] = rgba[p * 4 + c];
         }
     writeExr(cache.string(), size.width, size.height, rgba);
+    // What it cost, beside it: the report says why its references are as small as they are.
+    writeTextFile(fs::path(cache).replace_extension(".json").string(),
+                  nlohmann::json{{"scene", fs::path(scene.path).stem().string()},
+                                 {"size", {size.width, size.height}},
+                                 {"seconds", seconds},
+                                 {"threads", std::thread::hardware_concurrency()}}
+                          .dump() +
+                      "\n");
     return rgb;
 }
 

@@ -23,8 +23,9 @@ namespace host::bench {
                                        VkExtent2D size);
 
 // The reference for the scene as it is now, read from `folder` or rendered and written there
-// (RGB, 3 per pixel). Values are rounded to float either way (the cache is a float EXR), so a
-// rerun from the cache reproduces a first run's figures exactly.
+// (RGB, 3 per pixel), with the seconds it took in a JSON file beside it. Values are rounded to
+// float either way (the cache is a float EXR), so a rerun from the cache reproduces a first run's
+// figures exactly.
 [[nodiscard]] std::vector<double> loadOrRenderReference(
     const SceneDesc& scene, const MeshData& mesh, VkExtent2D size,
     const std::filesystem::path& folder, const std::function<void(double)>& progress);
