@@ -89,10 +89,11 @@ class ConfigReader {
             if (key != "slices" && key != "samples" && key != "initialStep" &&
                 key != "shadowMapSize" && key != "size" && key != "minMaxTrees" &&
                 key != "coneSamples" && key != "coneModes" && key != "slicePlanes" &&
-                key != "sliceTargets" && key != "lightModel")
+                key != "sliceTargets" && key != "lightModel" && key != "refinementThreshold")
                 fail("sweeps: unknown key '" + key +
-                     "' (known: slices, samples, initialStep, shadowMapSize, size, minMaxTrees, "
-                     "coneSamples, coneModes, slicePlanes, sliceTargets, lightModel)");
+                     "' (known: slices, samples, initialStep, refinementThreshold, shadowMapSize, "
+                     "size, minMaxTrees, coneSamples, coneModes, slicePlanes, sliceTargets, "
+                     "lightModel)");
         for (const std::string& scene : c.scenes) expand(c, scene, methods, profiles, sweeps);
         return c;
     }
@@ -278,6 +279,17 @@ class ConfigReader {
             BenchRun r = balanced("initialStep", "initialStep=" + std::to_string(n));
             r.settings.initialSampleStep = n;
             checkSettings(r, "sweeps.initialStep");
+            c.runs.push_back(r);
+        }
+        // Epipolar's depth breaks: a smaller threshold marches more samples where the depth steps
+        // a little (temporal stability: bench/flicker.json).
+        for (const json& v : values("refinementThreshold")) {
+            if (!v.is_number())
+                fail("sweeps.refinementThreshold[] = " + v.dump() + ": must be a number");
+            BenchRun r = balanced("refinementThreshold",
+                                  "refinementThreshold=" + shortNumber(v.get<double>()));
+            r.settings.refinementThreshold = v.get<float>();
+            checkSettings(r, "sweeps.refinementThreshold");
             c.runs.push_back(r);
         }
         for (const json& v : values("minMaxTrees")) {

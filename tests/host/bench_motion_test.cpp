@@ -281,6 +281,16 @@ TEST(BenchConfigMotion, EachBadValueIsOneLineNamingTheField) {
               "at every pose");
 }
 
+TEST(BenchConfigMotion, TheRefinementThresholdSweepFollowsThePluginsRule) {
+    EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"],
+                              "sweeps": {"refinementThreshold": [0.01, 0]}})"),
+              "sweeps.refinementThreshold (run 'refinementThreshold=0'): refinementThreshold = 0: "
+              "must be > 0");
+    EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"],
+                              "sweeps": {"refinementThreshold": ["small"]}})"),
+              "sweeps.refinementThreshold[] = \"small\": must be a number");
+}
+
 TEST(BenchConfigMotion, DefaultsAndBothMotions) {
     const auto dir = std::filesystem::temp_directory_path() / "ls_bench_motion_test";
     std::filesystem::create_directories(dir);
