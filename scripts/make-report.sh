@@ -9,6 +9,13 @@
 #                                          # an earlier run's results where build/ has them)
 #   scripts/make-report.sh --occluders-only  # that benchmark alone, its plot, and its section spliced
 #                                          # into the existing docs/performance.md
+#   scripts/make-report.sh --flicker-only  # bench/flicker.json alone (temporal stability: 60 frames of a
+#                                          # moving light, then camera, per scene and method at 160x90;
+#                                          # about an hour on 2 cores the first time, most of it the float64
+#                                          # references, which build/bench-flicker/references keeps for
+#                                          # the next run) and its section spliced into the page; a full
+#                                          # run does the same unless LS_REPORT_FLICKER=0, which reuses
+#                                          # an earlier run's results
 #   scripts/make-report.sh bench/full.json # the GPU machine's configuration
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -26,6 +33,16 @@ occluders() {
   uptime > build/bench-occluders/load-after.txt
   /usr/bin/python3 scripts/plot_occluders.py build/bench-occluders "$out"
 }
+flicker() {
+  # Flicker and error do not depend on the machine's speed: no quiet machine needed.
+  ./build/host_example/lightscatter bench --config bench/flicker.json --out build/bench-flicker
+}
+if [[ "$config" == --flicker-only ]]; then
+  flicker
+  /usr/bin/python3 scripts/write_report.py --flicker-section build/bench-flicker docs/performance.md
+  echo "docs/performance.md: section 'Temporal stability' replaced"
+  exit 0
+fi
 if [[ "$config" == --occluders-only ]]; then
   occluders
   /usr/bin/python3 scripts/write_report.py --occluders-section build/bench-occluders docs/performance.md
@@ -59,6 +76,13 @@ if [[ "${LS_REPORT_OCCLUDERS:-1}" != 0 ]]; then
 elif [[ -f build/bench-occluders/bench.json ]]; then
   occluders_dir=build/bench-occluders  # an earlier run's, as for the slices benchmark
 fi
+flicker_dir=""
+if [[ "${LS_REPORT_FLICKER:-1}" != 0 ]]; then
+  flicker
+  flicker_dir=build/bench-flicker
+elif [[ -f build/bench-flicker/bench.json ]]; then
+  flicker_dir=build/bench-flicker  # an earlier run's
+fi
 /usr/bin/python3 scripts/write_report.py build/bench-report build/bench-hard "$config" build/bench-slices \
-  "$occluders_dir" > docs/performance.md
+  "$occluders_dir" "$flicker_dir" > docs/performance.md
 echo "docs/performance.md regenerated"
