@@ -8,6 +8,7 @@ own it prints the section:
 With IMAGE_DIR, the flicker heat maps of epipolar (balanced) and brute force are copied there for
 the page (docs/performance)."""
 import json
+import math
 import os
 import re
 import shutil
@@ -28,7 +29,13 @@ def load(bench_dir):
     return [r for r in json.loads((Path(bench_dir) / "bench.json").read_text())["runs"] if "flicker" in r]
 
 
+# Sweep families that start from epipolar's balanced profile (bench_config.cpp: balanced()).
+EPIPOLAR_SWEEPS = ("slices", "samples", "initialStep", "refinementThreshold", "trees")
+
+
 def label(r):
+    if r["family"] in EPIPOLAR_SWEEPS:
+        return f"epipolar balanced, {r['label']}"
     if r["method"] == "cone-march":
         return f"cone-march ({r.get('coneSamples', 32)} samples)"
     if r["method"] == "auto" and r.get("methodRan"):
@@ -67,9 +74,11 @@ def epipolar_findings(runs, scenes, w, h):
             not any(r["method"] == "brute-force" for r in runs):
         return out
     p("**Epipolar's own part.** Brute force marches every pixel through the same shadow map as epipolar, so "
-      "its excess is what the shadow map adds (texels against exact visibility, a sun's map refitted to "
-      "the view every frame); epipolar's excess above brute force's is its sampling's. The sweeps from the "
-      "balanced profile show where that part comes from (mean excess):\n")
+      "its excess is what the shadow map adds (its texels against exact visibility; for a sun under camera "
+      "motion, a map refitted to the view every frame); epipolar's excess above brute force's is its "
+      "sampling's. The sweeps from the balanced profile show where that part comes from (mean excess; "
+      "scenes whose light the plugin does not shadow are left out, as both methods compute the same closed "
+      "form there):\n")
     head = "| scene | motion | brute force | epipolar balanced |" + "".join(f" {s} |" for s in have)
     p(head)
     p("|---" * (4 + len(have)) + "|")
@@ -77,8 +86,8 @@ def epipolar_findings(runs, scenes, w, h):
     for scene in scenes:
         for what in ("light", "camera"):
             bf, epi = excess(runs, scene, "brute-force", what), excess(runs, scene, "epipolar balanced", what)
-            if bf is None or epi is None:
-                continue
+            if bf is None or epi is None or epi == bf:
+                continue  # an unshadowed light: both compute the same closed form, nothing is sampled
             line = f"| {scene} | {what} | {pct(bf)} | {pct(epi)} |"
             for sw in have:
                 v = excess(runs, scene, sw, what)
@@ -93,7 +102,7 @@ def epipolar_findings(runs, scenes, w, h):
     share = {sw: mean(v) for sw, v in closed.items()}
     if "initialStep=1" in share and share["initialStep=1"] is not None:
         p(f"Marching every sample (initialStep=1, no interpolation along the lines) removes on average "
-          f"{fmt(100 * share['initialStep=1'])}% of epipolar's part (the gap to brute force), so most of it is "
+          f"{fmt(100 * share['initialStep=1'], 2)}% of epipolar's part (the gap to brute force), so most of it is "
           "interpolation between ray-marching samples. The cause: depth-break refinement looks at camera depth "
           "alone. Where a shadow edge crosses an epipolar line without a depth step above `refinementThreshold` "
           "(3% by default), in the open medium or on a surface whose depth steps a little (a window's recess, "
@@ -101,11 +110,11 @@ def epipolar_findings(runs, scenes, w, h):
           "samples (`initialSampleStep` samples apart) take a shadowed fraction interpolated across the edge. "
           "As the light's or the camera's screen position moves, every slice's line turns and its samples "
           "slide along it, so the ray-marching samples land elsewhere on the edge each frame and the "
-          "interpolated edge jumps: flicker along the epipolar lines (the streaks in the heat maps above).")
+          "interpolated edge jumps: flicker along the epipolar lines (the streaks in the heat maps below).")
         for sw in ("refinementThreshold=0.01", "refinementThreshold=0.003"):
             if share.get(sw) is not None:
                 p(f"A lower threshold, {sw.split('=')[1]}, marches the small steps too and removes "
-                  f"{fmt(100 * share[sw])}% of it on average.")
+                  f"{fmt(100 * share[sw], 2)}% of it on average.")
         p(f"At {w}x{h} the lines are short, so every profile places one sample per pixel along them and the "
           "threshold is crossed by a pixel's depth step; on a larger screen a surface's step per sample is "
           "smaller and fewer samples are marched at the same threshold. Refinement on in-scattering "
@@ -182,6 +191,11 @@ def flicker_section(bench_dir, image_dir=None):
     p("")
     goal_misses = []
     scenes = sorted({r["scene"] for r in runs})
+    profile_rows = [r for r in runs if r["family"] == "profiles" and r["method"] == "epipolar"]
+    if profile_rows and all(r["slices"] >= 2 * (w + h) and r["samples"] >= math.hypot(w, h) for r in profile_rows):
+        p(f"Epipolar's profiles sample alike at {w}x{h}: each has more slices than the screen has boundary pixels "
+          f"({2 * (w + h)}) and more samples per slice than the longest line has pixels (lines are then stretched "
+          "to one sample per pixel), so their rows differ little.\n")
     for scene in scenes:
         rows = [r for r in runs if r["scene"] == scene]
         p(f"### {scene}\n")
