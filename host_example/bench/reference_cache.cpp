@@ -24,12 +24,12 @@ class Fnv {
         const auto* p = static_cast<const unsigned char*>(data);
         for (size_t i = 0; i < n; ++i) h_ = (h_ ^ p[i]) * 0x100000001b3ull;
     }
-    template <typename T>
-    void value(const T& v) {
-        bytes(&v, sizeof v);
+    template <typename... T>
+    void values(const T&... v) {
+        (bytes(&v, sizeof v), ...);
     }
     void text(const std::string& s) {
-        value(s.size());
+        values(s.size());
         bytes(s.data(), s.size());
     }
     [[nodiscard]] std::string hex() const {
@@ -44,13 +44,7 @@ class Fnv {
 
 void light(Fnv& f, const LightDesc& l) {
     // Not the shadow map's size: the reference traces exact visibility.
-    f.value(l.type);
-    f.value(l.position);
-    f.value(l.direction);
-    f.value(l.intensity);
-    f.value(l.halfAngleDegrees);
-    f.value(l.range);
-    f.value(l.radius);
+    f.values(l.type, l.position, l.direction, l.intensity, l.halfAngleDegrees, l.range, l.radius);
 }
 
 }  // namespace
@@ -65,26 +59,14 @@ std::string referenceKey(const SceneDesc& scene, const MeshData& mesh, VkExtent2
     Fnv f;
     f.text(LS_REFERENCE_CODE_HASH);
     f.text(readInputFile(scene.path, "scene file", 16 * kMiB));
-    f.value(size.width);
-    f.value(size.height);
+    f.values(size.width, size.height);
     const CameraDesc& c = scene.camera;
-    f.value(c.position);
-    f.value(c.target);
-    f.value(c.up);
-    f.value(c.fovYDegrees);
-    f.value(c.nearPlane);
-    f.value(c.farPlane);
-    f.value(c.reversedZ);
-    f.value(c.infiniteFar);
+    f.values(c.position, c.target, c.up, c.fovYDegrees, c.nearPlane, c.farPlane, c.reversedZ,
+             c.infiniteFar);
     for (size_t i = 0; i < scene.lightCount(); ++i) light(f, scene.lightAt(i));
     const MediumDesc& m = scene.medium;
-    f.value(m.betaR);
-    f.value(m.betaM);
-    f.value(m.g);
-    f.value(m.sigmaA);
-    f.value(m.phase);
-    f.value(m.maxDistance);
-    for (const Vertex& v : mesh.vertices) f.value(v.position);
+    f.values(m.betaR, m.betaM, m.g, m.sigmaA, m.phase, m.maxDistance);
+    for (const Vertex& v : mesh.vertices) f.values(v.position);
     f.bytes(mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t));
     return f.hex();
 }

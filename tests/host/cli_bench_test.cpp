@@ -115,12 +115,22 @@ TEST(CliBench, AMotionRowCarriesItsFlickerAndARerunReusesTheReferences) {
     EXPECT_EQ(runs[1]["motion"]["what"], "camera");
     EXPECT_TRUE(
         cli_test::exists("motion/strips/window_room_brute-force_motion-camera_flicker.png"));
-    // Frame 0 is the scene's own pose under both motions: 1 + 2 + 2 references.
+    // Frame 0 is the scene's own pose under both motions: 1 + 2 + 2 references, each with what it
+    // cost beside it.
     namespace fs = std::filesystem;
     std::map<std::string, fs::file_time_type> references;
-    for (const auto& e : fs::directory_iterator(cli_test::path("motion/references")))
+    size_t images = 0;
+    for (const auto& e : fs::directory_iterator(cli_test::path("motion/references"))) {
         references[e.path().filename().string()] = fs::last_write_time(e.path());
-    EXPECT_EQ(references.size(), 5u);
+        if (e.path().extension() != ".exr") continue;
+        ++images;
+        std::ifstream cost(fs::path(e.path()).replace_extension(".json"));
+        const auto parsed = nlohmann::json::parse(cost);
+        EXPECT_EQ(parsed["scene"], "window_room");
+        EXPECT_GT(parsed["seconds"].get<double>(), 0.0);
+    }
+    EXPECT_EQ(images, 5u);
+    EXPECT_EQ(references.size(), 10u);
 
     // The rerun renders no reference (the files are as they were) and, judged against the
     // cached images, reproduces the figures exactly.
