@@ -4,6 +4,9 @@
 // against the float64 reference with exact visibility. Results go to DIR/bench.csv (a row per run,
 // written as each run ends, so an interrupted benchmark keeps what it finished), DIR/bench.json,
 // DIR/strips/*.png (reference | method | error heat map) and DIR/references/*.exr (cached).
+// With "motion" in the configuration, each run renders the motion's frames instead (the light or
+// the camera moving slowly) and its row also carries the flicker against the reference's own
+// change from frame to frame (bench/flicker.h), with a heat map of where it is (*_flicker.png).
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -12,28 +15,23 @@
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "activity.h"
 #include "bench/bench_config.h"
+#include "bench/flicker.h"
 #include "bench/image_strip.h"
 #include "bench/metrics.h"
+#include "bench/reference_cache.h"
 #include "commands.h"
 #include "engine_renderer.h"
 #include "image_io.h"
-#include "exact_renderer/reference_renderer.h"
-#include "scene/input_file.h"
 #include "temp_files.h"
 
 namespace host {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string fileSafe(std::string s) {
-    for (char& c : s)
-        if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '.') c = '_';
-    return s;
-}
 
 std::string duration(double seconds) {
     char buf[32];
@@ -61,8 +59,9 @@ public:
         const double left = done ? elapsed / static_cast<double>(done) * static_cast<double>(total_ - done) : 0.0;
         const int width = 30;
         const int filled = static_cast<int>(width * done / std::max<size_t>(total_, 1));
-        std::fprintf(stderr, "\r[%s%s] %zu/%zu, %s elapsed, %s left  %-50.50s", std::string(filled, '#').c_str(),
-                     std::string(width - filled, ' ').c_str(), done, total_, duration(elapsed).c_str(),
+        std::fprintf(stderr, "\r[%s%s] %zu/%zu, %s elapsed, %s left  %-60.60s",
+                     std::string(filled, '#').c_str(), std::string(width - filled, ' ').c_str(),
+                     done, total_, duration(elapsed).c_str(),
                      done ? ("~" + duration(left)).c_str() : "?", what.c_str());
         std::fflush(stderr);
     }
@@ -73,29 +72,26 @@ private:
     bool open_ = false;
 };
 
-std::vector<double> loadOrRenderReference(const SceneDesc& scene, const MeshData& mesh, VkExtent2D size,
-                                          const fs::path& cache, const std::function<void(double)>& progress) {
-    if (fs::exists(cache)) {
-        const FloatImage img = readExr(cache.string());
-        if (img.width == size.width && img.height == size.height) {
-            std::vector<double> rgb(size_t{size.width} * size.height * 3);
-            for (size_t p = 0; p < rgb.size() / 3; ++p)
-                for (size_t c = 0; c < 3; ++c) rgb[p * 3 + c] = img.rgba[p * 4 + c];
-            return rgb;
-        }
-    }
-    const reference::ReferenceImage ref = reference::renderReference(scene, mesh, size.width, size.height, {}, progress);
-    std::vector<float> rgba(size_t{size.width} * size.height * 4, 1.0f);
-    for (size_t p = 0; p < rgba.size() / 4; ++p)
-        for (size_t c = 0; c < 3; ++c) rgba[p * 4 + c] = static_cast<float>(ref.rgb[p * 3 + c]);
-    writeExr(cache.string(), size.width, size.height, rgba);
-    return ref.rgb;
-}
-
 const char* kCsvHeader =
     "scene,label,family,method,profile,width,height,slices,samples,initialStep,minMaxTrees,"
     "shadowMap,frames,medianMs,p10Ms,p90Ms,minMs,maxMs,meanRelativeError,rmse,p99Error,maxError,"
-    "fractionOver5pct,psnrDb,nonFinite,device,cpuDevice,cpuWorkMs,occluders,lights";
+    "fractionOver5pct,psnrDb,nonFinite,device,cpuDevice,cpuWorkMs,occluders,lights,motion,framePairs,"
+    "meanExcessFlicker,p99ExcessFlicker,meanErrorChange,referenceChange,motionMeanRelativeError";
+
+nlohmann::json spreadJson(const bench::Spread& s) {
+    return {{"median", s.median}, {"p10", s.p10}, {"p90", s.p90}, {"min", s.min}, {"max", s.max}};
+}
+
+// Each named entry of the last frame (a pass, a piece of CPU work) with its spread over the frames.
+nlohmann::json namedSpreads(const std::vector<lightscatter::PassTime>& entries,
+                            std::map<std::string, std::vector<double>>& perName) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const auto& e : entries) {
+        const bench::Spread s = bench::spreadOf(perName[e.name]);
+        list.push_back({{"name", e.name}, {"median", s.median}, {"p10", s.p10}, {"p90", s.p90}});
+    }
+    return list;
+}
 
 }  // namespace
 
@@ -134,12 +130,17 @@ int runBench(Args& args) {
     Progress progress(config.runs.size());
 
     std::map<std::string, std::vector<double>> references;
+    std::string referencesScene;
     std::unique_ptr<EngineRenderer> renderer;
     std::string rendererKey;
     size_t done = 0;
     for (const bench::BenchRun& run : config.runs) {
         const std::string what = fs::path(run.scene).stem().string() + ": " + run.label;
         progress.show(done, what);
+        // The runs come scene by scene: a motion's references (one per frame) are kept in memory
+        // for the runs of their scene only.
+        if (run.scene != referencesScene) references.clear();
+        referencesScene = run.scene;
         auto& [scene, mesh] = scenes.at(run.scene);
         // Seed 001's closed form takes unshadowed point and spot lights only; elsewhere there is
         // nothing to measure.
@@ -171,116 +172,167 @@ int runBench(Args& args) {
         if (run.custom) options.custom = run.settings;
         const lightscatter::Settings used = run.custom ? run.settings : lightscatter::profileSettings(run.profile);
 
-        for (int i = 0; i < config.warmup; ++i) renderer->render(options);
-        std::vector<double> totals, cpuTotals;
-        std::map<std::string, std::vector<double>> perPass, perCpuWork;
-        FrameOutput last;
-        for (int i = 0; i < config.frames; ++i) {
-            last = renderer->render(options);
-            totals.push_back(last.plugin.totalMilliseconds);
-            for (const auto& p : last.plugin.passes) perPass[p.name].push_back(p.milliseconds);
-            double cpu = 0.0;
-            for (const auto& w : last.plugin.cpuWork) {
-                perCpuWork[w.name].push_back(w.milliseconds);
-                cpu += w.milliseconds;
-            }
-            cpuTotals.push_back(cpu);
-        }
-        const bench::Spread t = bench::spreadOf(totals);
-        const bench::Spread cpu = bench::spreadOf(cpuTotals);
-
-        nlohmann::json row;
-        row["scene"] = fs::path(run.scene).stem().string();
-        row["label"] = run.label;
-        row["family"] = run.family;
-        row["method"] = lightscatter::methodName(run.method);
-        row["methodRan"] = last.plugin.method;  // with auto, the method it picked
-        row["coneSamples"] = used.coneSamples;
-        row["coneLimited"] = used.coneLimited;
-        row["shadowSampling"] = used.shadowSampling;
-        row["lightModel"] =
-            used.lightModel == lightscatter::LightModel::Simplified ? "simplified" : "full";
-        row["profile"] = run.custom ? "custom" : lightscatter::profileName(run.profile);
-        row["size"] = {run.size.width, run.size.height};
-        row["slices"] = used.slices;
-        row["samples"] = used.samplesPerSlice;
-        row["initialStep"] = used.initialSampleStep;
-        row["minMaxTrees"] = used.minMaxTrees;
-        row["shadowMapSize"] = sceneForRun.light.shadowMapSize;
-        row["frames"] = config.frames;
-        row["time"] = {{"median", t.median}, {"p10", t.p10}, {"p90", t.p90}, {"min", t.min}, {"max", t.max}};
-        nlohmann::json passes = nlohmann::json::array();
-        for (const auto& p : last.plugin.passes) {
-            const bench::Spread s = bench::spreadOf(perPass[p.name]);
-            passes.push_back({{"name", p.name}, {"median", s.median}, {"p10", s.p10}, {"p90", s.p90}});
-        }
-        row["passes"] = passes;
-        // The plugin's CPU work per frame (the beam tree), outside the GPU time above.
-        row["cpuTime"] = {{"median", cpu.median}, {"p10", cpu.p10}, {"p90", cpu.p90}, {"min", cpu.min},
-                          {"max", cpu.max}};
-        nlohmann::json cpuWork = nlohmann::json::array();
-        for (const auto& w : last.plugin.cpuWork) {
-            const bench::Spread s = bench::spreadOf(perCpuWork[w.name]);
-            cpuWork.push_back({{"name", w.name}, {"median", s.median}, {"p10", s.p10}, {"p90", s.p90}});
-        }
-        row["cpuWork"] = cpuWork;
-        row["occluders"] = renderer->occluderCount();
-        row["lights"] = scene.lightCount();
-        row["device"] = device.name();
-        row["driver"] = device.driverName();
-        row["cpuDevice"] = device.isCpu();
-
-        std::string errorColumns = ",,,,,,";
-        size_t nonFinite = 0;
-        for (float v : last.inscatter) nonFinite += std::isfinite(v) ? 0 : 1;
-        if (run.measureError) {
-            const std::string refKey = run.scene;
-            if (!references.count(refKey)) {
-                // Keyed by the scene file's contents too, so an edited scene is never judged against
-                // the reference of its earlier version.
-                const std::string text = readInputFile(run.scene, "scene file", 16 * kMiB);
-                char hash[32];
-                std::snprintf(hash, sizeof hash, "%016zx", std::hash<std::string>{}(text));
-                const fs::path cache = out / "references" /
-                                       (fileSafe(fs::path(run.scene).stem().string()) + "_" +
-                                        std::to_string(run.size.width) + "x" + std::to_string(run.size.height) + "_" +
-                                        hash + ".exr");
+        // The reference for the renderer's scene as it stands, once per pose in memory, and on
+        // disk across runs of the benchmark.
+        auto reference = [&](const std::string& memo,
+                             const std::string& doing) -> const std::vector<double>& {
+            if (!references.count(memo)) {
                 int shown = -1;
-                references[refKey] = loadOrRenderReference(scene, mesh, run.size, cache, [&](double f) {
-                    const int percent = static_cast<int>(f * 100);
-                    if (percent / 10 == shown / 10) return;  // a line every 10%, not every row
-                    shown = percent;
-                    progress.show(done, what + " (reference " + std::to_string(percent) + "%)");
-                });
+                references[memo] = bench::loadOrRenderReference(
+                    renderer->scene(), mesh, run.size, out / "references", [&](double f) {
+                        const int percent = static_cast<int>(f * 100);
+                        if (percent / 10 == shown / 10) return;  // a line every 10%, not every row
+                        shown = percent;
+                        progress.show(done, what + " (reference" + doing + " " +
+                                                std::to_string(percent) + "%)");
+                    });
             }
-            const bench::ErrorMetrics e = bench::compareToReference(last.inscatter, references[refKey], scene.exposure);
-            nonFinite = e.nonFinite;
-            row["error"] = {{"meanRelative", e.meanRelative}, {"rmse", e.rmse}, {"p99", e.p99}, {"max", e.max},
-                            {"fractionOver5pct", e.fractionOver}, {"psnrDb", e.psnr}};
-            char buf[256];
-            std::snprintf(buf, sizeof buf, "%.6g,%.6g,%.6g,%.6g,%.6g,%.3f", e.meanRelative, e.rmse, e.p99, e.max,
-                          e.fractionOver, e.psnr);
-            errorColumns = buf;
-            bench::writeStrip((out / "strips" / (fileSafe(row["scene"].get<std::string>() + "_" + run.label) + ".png")).string(),
-                              run.size.width, run.size.height, references[refKey], last.inscatter, scene.exposure);
+            return references[memo];
+        };
+        // Still frames, or (with a motion) each motion in turn from the scene's own pose.
+        std::vector<std::optional<bench::MotionKind>> passes{std::nullopt};
+        if (config.motion && run.measureError)
+            passes.assign(config.motion->what.begin(), config.motion->what.end());
+        for (const std::optional<bench::MotionKind>& motion : passes) {
+            renderer->scene().camera = sceneForRun.camera;
+            renderer->scene().light = sceneForRun.light;
+            for (int i = 0; i < config.warmup; ++i) renderer->render(options);
+            std::vector<double> totals, cpuTotals;
+            std::map<std::string, std::vector<double>> perPass, perCpuWork;
+            FrameOutput last;
+            bench::FlickerMeter flicker;
+            const std::vector<double>* lastReference = nullptr;
+            const int frames = motion ? config.motion->frames : config.frames;
+            const std::string motionName = motion ? bench::motionName(*motion) : "";
+            for (int i = 0; i < frames; ++i) {
+                if (motion) {
+                    const SceneDesc pose = bench::poseAt(sceneForRun, *motion, *config.motion, i);
+                    renderer->scene().camera = pose.camera;
+                    renderer->scene().light = pose.light;
+                }
+                last = renderer->render(options);
+                totals.push_back(last.plugin.totalMilliseconds);
+                for (const auto& p : last.plugin.passes) perPass[p.name].push_back(p.milliseconds);
+                double cpu = 0.0;
+                for (const auto& w : last.plugin.cpuWork) {
+                    perCpuWork[w.name].push_back(w.milliseconds);
+                    cpu += w.milliseconds;
+                }
+                cpuTotals.push_back(cpu);
+                if (motion) {
+                    lastReference =
+                        &reference(run.scene + "|" + motionName + "|" + std::to_string(i),
+                                   " " + motionName + " " + std::to_string(i + 1) + "/" +
+                                       std::to_string(frames));
+                    flicker.add(last.inscatter, *lastReference);
+                }
+            }
+            renderer->scene().camera = sceneForRun.camera;
+            renderer->scene().light = sceneForRun.light;
+            const bench::Spread t = bench::spreadOf(totals);
+            const bench::Spread cpu = bench::spreadOf(cpuTotals);
+
+            nlohmann::json row;
+            row["scene"] = fs::path(run.scene).stem().string();
+            row["label"] = run.label;
+            row["family"] = run.family;
+            row["method"] = lightscatter::methodName(run.method);
+            row["methodRan"] = last.plugin.method;  // with auto, the method it picked
+            row["coneSamples"] = used.coneSamples;
+            row["coneLimited"] = used.coneLimited;
+            row["shadowSampling"] = used.shadowSampling;
+            row["lightModel"] =
+                used.lightModel == lightscatter::LightModel::Simplified ? "simplified" : "full";
+            row["profile"] = run.custom ? "custom" : lightscatter::profileName(run.profile);
+            row["size"] = {run.size.width, run.size.height};
+            row["slices"] = used.slices;
+            row["samples"] = used.samplesPerSlice;
+            row["initialStep"] = used.initialSampleStep;
+            row["minMaxTrees"] = used.minMaxTrees;
+            row["shadowMapSize"] = sceneForRun.light.shadowMapSize;
+            row["frames"] = frames;
+            row["time"] = spreadJson(t);
+            row["passes"] = namedSpreads(last.plugin.passes, perPass);
+            // The plugin's CPU work per frame (the beam tree), outside the GPU time above.
+            row["cpuTime"] = spreadJson(cpu);
+            row["cpuWork"] = namedSpreads(last.plugin.cpuWork, perCpuWork);
+            row["occluders"] = renderer->occluderCount();
+            row["lights"] = scene.lightCount();
+            row["device"] = device.name();
+            row["driver"] = device.driverName();
+            row["cpuDevice"] = device.isCpu();
+
+            std::string errorColumns = ",,,,,,", motionColumns = ",,,,,,";
+            size_t nonFinite = 0;
+            for (float v : last.inscatter) nonFinite += std::isfinite(v) ? 0 : 1;
+            if (run.measureError) {
+                // A motion's row is judged on its last frame here, and on every frame below.
+                const std::vector<double>& ref = motion ? *lastReference : reference(run.scene, "");
+                const bench::ErrorMetrics e =
+                    bench::compareToReference(last.inscatter, ref, scene.exposure);
+                nonFinite = e.nonFinite;
+                row["error"] = {{"meanRelative", e.meanRelative},
+                                {"rmse", e.rmse},
+                                {"p99", e.p99},
+                                {"max", e.max},
+                                {"fractionOver5pct", e.fractionOver},
+                                {"psnrDb", e.psnr}};
+                char buf[256];
+                std::snprintf(buf, sizeof buf, "%.6g,%.6g,%.6g,%.6g,%.6g,%.3f", e.meanRelative,
+                              e.rmse, e.p99, e.max, e.fractionOver, e.psnr);
+                errorColumns = buf;
+                const std::string strip = row["scene"].get<std::string>() + "_" + run.label +
+                                          (motion ? "_motion-" + motionName : "");
+                bench::writeStrip((out / "strips" / (bench::fileSafe(strip) + ".png")).string(),
+                                  run.size.width, run.size.height, ref, last.inscatter,
+                                  scene.exposure);
+                if (motion) {
+                    const bench::FlickerMetrics f = flicker.result();
+                    const bench::Motion& m = *config.motion;
+                    row["motion"] = {{"what", motionName},
+                                     {"frames", m.frames},
+                                     {"lightDegreesPerFrame", m.lightDegreesPerFrame},
+                                     {"lightMetresPerFrame", m.lightMetresPerFrame},
+                                     {"cameraMetresPerFrame", m.cameraMetresPerFrame},
+                                     {"cameraDegreesPerFrame", m.cameraDegreesPerFrame}};
+                    row["flicker"] = {{"framePairs", f.framePairs},
+                                      {"meanExcess", f.meanExcess},
+                                      {"p99Excess", f.p99Excess},
+                                      {"maxExcess", f.maxExcess},
+                                      {"meanErrorChange", f.meanErrorChange},
+                                      {"p99ErrorChange", f.p99ErrorChange},
+                                      {"methodChange", f.methodChange},
+                                      {"referenceChange", f.referenceChange},
+                                      {"meanRelativeError", f.meanRelativeError},
+                                      {"nonFinite", f.nonFinite}};
+                    std::snprintf(buf, sizeof buf, "%s,%zu,%.6g,%.6g,%.6g,%.6g,%.6g",
+                                  motionName.c_str(), f.framePairs, f.meanExcess, f.p99Excess,
+                                  f.meanErrorChange, f.referenceChange, f.meanRelativeError);
+                    motionColumns = buf;
+                    bench::writeFlickerStrip(
+                        (out / "strips" / (bench::fileSafe(strip) + "_flicker.png")).string(),
+                        run.size.width, run.size.height, flicker.referenceChangeMap(),
+                        flicker.excessMap());
+                }
+            }
+            row["nonFinite"] = nonFinite;
+            char line[1024];
+            std::snprintf(
+                line, sizeof line,
+                "%s,%s,%s,%s,%s,%u,%u,%u,%u,%u,%d,%u,%d,%.6f,%.6f,%.6f,%.6f,%.6f,%s,%zu,\"%s\",%d,%"
+                ".6f,%zu,%zu,%s",
+                row["scene"].get<std::string>().c_str(), run.label.c_str(), run.family.c_str(),
+                lightscatter::methodName(run.method), row["profile"].get<std::string>().c_str(),
+                run.size.width, run.size.height, used.slices, used.samplesPerSlice,
+                used.initialSampleStep, used.minMaxTrees ? 1 : 0, sceneForRun.light.shadowMapSize,
+                frames, t.median, t.p10, t.p90, t.min, t.max, errorColumns.c_str(), nonFinite,
+                device.name().c_str(), device.isCpu() ? 1 : 0, cpu.median,
+                renderer->occluderCount(), scene.lightCount(), motionColumns.c_str());
+            csv << line << "\n" << std::flush;
+            all.push_back(row);
+            writeTextFile((out / "bench.json").string(),
+                          nlohmann::json{{"config", config.name}, {"runs", all}}.dump(2) + "\n");
         }
-        row["nonFinite"] = nonFinite;
-        char line[1024];
-        std::snprintf(line, sizeof line,
-                      "%s,%s,%s,%s,%s,%u,%u,%u,%u,%u,%d,%u,%d,"
-                      "%.6f,%.6f,%.6f,%.6f,%.6f,%s,%zu,\"%s\",%d,%.6f,%zu,%zu",
-                      row["scene"].get<std::string>().c_str(), run.label.c_str(),
-                      run.family.c_str(), lightscatter::methodName(run.method),
-                      row["profile"].get<std::string>().c_str(), run.size.width, run.size.height,
-                      used.slices, used.samplesPerSlice, used.initialSampleStep,
-                      used.minMaxTrees ? 1 : 0, sceneForRun.light.shadowMapSize, config.frames,
-                      t.median, t.p10, t.p90, t.min, t.max, errorColumns.c_str(), nonFinite,
-                      device.name().c_str(), device.isCpu() ? 1 : 0, cpu.median,
-                      renderer->occluderCount(), scene.lightCount());
-        csv << line << "\n" << std::flush;
-        all.push_back(row);
-        writeTextFile((out / "bench.json").string(),
-                      nlohmann::json{{"config", config.name}, {"runs", all}}.dump(2) + "\n");
         ++done;
     }
     progress.show(done, "done");

@@ -15,6 +15,13 @@
 #                                          # machine); LS_REPORT_LIGHTS=0 skips both in a full run and
 #                                          # reuses an earlier run's results, as above
 #   LS_REPORT_GPU=DIR scripts/make-report.sh # with the GPU section from scripts/gpu-bench.sh's results
+#   scripts/make-report.sh --flicker-only  # bench/flicker.json alone (temporal stability: 60 frames of a
+#                                          # moving light, then camera, per scene and method at 160x90;
+#                                          # about an hour on 2 cores the first time, most of it the float64
+#                                          # references, which build/bench-flicker/references keeps for
+#                                          # the next run) and its section spliced into the page; a full
+#                                          # run does the same unless LS_REPORT_FLICKER=0, which reuses
+#                                          # an earlier run's results
 set -euo pipefail
 cd "$(dirname "$0")/.."
 config="${1:-bench/report.json}"
@@ -49,6 +56,16 @@ if [[ "$config" == --lights-only ]]; then
   /usr/bin/python3 scripts/write_report.py --lights-section build/bench-lights-scaling build/bench-lights \
     docs/performance.md
   echo "docs/performance.md: section 'Several lights' replaced"
+  exit 0
+fi
+flicker() {
+  # Flicker and error do not depend on the machine's speed: no quiet machine needed.
+  ./build/host_example/lightscatter bench --config bench/flicker.json --out build/bench-flicker
+}
+if [[ "$config" == --flicker-only ]]; then
+  flicker
+  /usr/bin/python3 scripts/write_report.py --flicker-section build/bench-flicker docs/performance.md
+  echo "docs/performance.md: section 'Temporal stability' replaced"
   exit 0
 fi
 if [[ "$config" == --occluders-only ]]; then
@@ -91,6 +108,13 @@ if [[ "${LS_REPORT_LIGHTS:-1}" != 0 ]]; then
 elif [[ -f build/bench-lights/bench.json ]]; then
   lights_dirs=(build/bench-lights-scaling build/bench-lights)  # an earlier run's
 fi
+flicker_dir=""
+if [[ "${LS_REPORT_FLICKER:-1}" != 0 ]]; then
+  flicker
+  flicker_dir=build/bench-flicker
+elif [[ -f build/bench-flicker/bench.json ]]; then
+  flicker_dir=build/bench-flicker  # an earlier run's
+fi
 /usr/bin/python3 scripts/write_report.py build/bench-report build/bench-hard "$config" build/bench-slices \
-  "$occluders_dir" "${lights_dirs[@]}" > docs/performance.md
+  "$occluders_dir" "${lights_dirs[@]}" "$flicker_dir" > docs/performance.md
 echo "docs/performance.md regenerated"

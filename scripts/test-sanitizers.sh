@@ -9,11 +9,11 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Release -DLS_WERROR=ON -DLS_SANITIZE=ON
 cmake --build build-asan -j"$(nproc)" --target test_rendergraph_compile test_float64_model test_plugin_budget \
-    test_host_scene test_host_camera test_rendergraph_gpu test_plugin_gpu
+    test_host_scene test_host_camera test_host_bench test_rendergraph_gpu test_plugin_gpu
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 cd build-asan
 for suite in tests/test_rendergraph_compile tests/float64_model/test_float64_model tests/plugin/test_plugin_budget \
-             tests/host/test_host_scene tests/host/test_host_camera; do
+             tests/host/test_host_scene tests/host/test_host_camera tests/host/test_host_bench; do
     echo "sanitizers: $suite"
     ASAN_OPTIONS=detect_leaks=1 "./$suite" --gtest_brief=1
 done

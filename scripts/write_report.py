@@ -320,6 +320,18 @@ def main():
         else:
             print("\n".join(lines))
         return
+    if len(sys.argv) > 1 and sys.argv[1] == "--flicker-section":
+        # write_report.py --flicker-section BENCH_DIR [PAGE.md]: as --occluders-section, for
+        # bench/flicker.json's run (scripts/report_flicker.py); its heat maps go beside the page.
+        sys.path.insert(0, str(Path(__file__).resolve().parent))
+        import report_flicker as rf
+        page = Path(sys.argv[3]) if len(sys.argv) > 3 else None
+        lines = rf.flicker_section(Path(sys.argv[2]), page.parent / "performance" if page else None)
+        if page:
+            page.write_text(splice_section(page.read_text(), rf.FLICKER_HEADING, lines))
+        else:
+            print("\n".join(lines))
+        return
     if len(sys.argv) > 1 and sys.argv[1] == "--occluders-section":
         # write_report.py --occluders-section BENCH_DIR [PAGE.md]: the section alone, or spliced into
         # the page in place (the rest of the page is left as it is).
@@ -344,6 +356,7 @@ def main():
     occluders_dir = Path(sys.argv[5]) if len(sys.argv) > 5 and sys.argv[5] else None
     lights_scaling_dir = Path(sys.argv[6]) if len(sys.argv) > 6 and sys.argv[6] else None
     lights_dir = Path(sys.argv[7]) if len(sys.argv) > 7 and sys.argv[7] else None
+    flicker_dir = Path(sys.argv[8]) if len(sys.argv) > 8 and sys.argv[8] else None
     runs = json.loads((bench_dir / "bench.json").read_text())["runs"]
     hard = json.loads((hard_dir / "bench.json").read_text())["runs"]
     budget = json.loads((bench_dir / "budget.json").read_text())
@@ -476,6 +489,11 @@ def main():
         out += occluders_section(occluders_dir)
     if lights_scaling_dir or lights_dir:
         out += lights_section(lights_scaling_dir, lights_dir)
+
+    if flicker_dir and (flicker_dir / "bench.json").exists():
+        sys.path.insert(0, str(Path(__file__).resolve().parent))
+        import report_flicker as rf
+        out += rf.flicker_section(flicker_dir, "docs/performance")
 
     p("## Scaling\n")
     for name, what in (("scaling_screen", "screen size"), ("scaling_shadow_map", "shadow-map size"),

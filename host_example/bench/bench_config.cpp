@@ -1,5 +1,8 @@
 #include "bench_config.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -29,10 +32,10 @@ class ConfigReader {
         for (const auto& [key, value] : j.items())
             if (key != "name" && key != "frames" && key != "warmup" && key != "size" &&
                 key != "scenes" && key != "methods" && key != "profiles" && key != "sweeps" &&
-                key != "measureError")
+                key != "measureError" && key != "motion")
                 fail("unknown key '" + key +
                      "' (known: name, frames, warmup, size, scenes, methods, profiles, sweeps, "
-                     "measureError)");
+                     "measureError, motion)");
         BenchConfig c;
         c.name = j.contains("name") ? text(j["name"], "name")
                                     : std::filesystem::path(path_).stem().string();
@@ -43,6 +46,13 @@ class ConfigReader {
             if (!j["measureError"].is_boolean())
                 fail("measureError = " + j["measureError"].dump() + ": must be true or false");
             c.measureError = j["measureError"].get<bool>();
+        }
+        if (j.contains("motion")) {
+            c.motion = motion(j["motion"]);
+            if (!c.measureError)
+                fail(
+                    "motion needs measureError: the flicker is measured against the float64 "
+                    "reference at every pose");
         }
         if (!j.contains("scenes")) fail("scenes is required");
         std::vector<lightscatter::Profile> profiles;
@@ -92,10 +102,11 @@ class ConfigReader {
             if (key != "slices" && key != "samples" && key != "initialStep" &&
                 key != "shadowMapSize" && key != "size" && key != "minMaxTrees" &&
                 key != "coneSamples" && key != "coneModes" && key != "slicePlanes" &&
-                key != "sliceTargets" && key != "lightModel")
+                key != "sliceTargets" && key != "lightModel" && key != "refinementThreshold")
                 fail("sweeps: unknown key '" + key +
-                     "' (known: slices, samples, initialStep, shadowMapSize, size, minMaxTrees, "
-                     "coneSamples, coneModes, slicePlanes, sliceTargets, lightModel)");
+                     "' (known: slices, samples, initialStep, refinementThreshold, shadowMapSize, "
+                     "size, minMaxTrees, coneSamples, coneModes, slicePlanes, sliceTargets, "
+                     "lightModel)");
         for (size_t k = 0; k < c.scenes.size(); ++k)
             expand(c, c.scenes[k], sceneMethods[k], profiles, sweeps);
         return c;
@@ -160,6 +171,60 @@ class ConfigReader {
     uint32_t whole(const json& object, const char* key, uint32_t fallback, uint32_t lo,
                    uint32_t hi) const {
         return object.contains(key) ? whole(object[key], key, lo, hi) : fallback;
+    }
+
+    static std::string shortNumber(double x) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%g", x);
+        return buf;
+    }
+
+    // A finite number from lo to hi.
+    double number(const json& object, const char* key, double fallback, double lo,
+                  double hi) const {
+        if (!object.contains(key)) return fallback;
+        const json& v = object[key];
+        const std::string name = std::string("motion.") + key;
+        if (!v.is_number() || !std::isfinite(v.get<double>()) || v.get<double>() < lo ||
+            v.get<double>() > hi)
+            fail(name + " = " + v.dump() + ": must be a number from " + shortNumber(lo) + " to " +
+                 shortNumber(hi));
+        return v.get<double>();
+    }
+
+    Motion motion(const json& v) const {
+        const char* known =
+            "what, frames, lightDegreesPerFrame, lightMetresPerFrame, cameraMetresPerFrame, "
+            "cameraDegreesPerFrame";
+        if (!v.is_object()) fail(std::string("motion must be an object (keys: ") + known + ")");
+        for (const auto& [key, value] : v.items())
+            if (key != "what" && key != "frames" && key != "lightDegreesPerFrame" &&
+                key != "lightMetresPerFrame" && key != "cameraMetresPerFrame" &&
+                key != "cameraDegreesPerFrame")
+                fail("motion: unknown key '" + key + "' (known: " + known + ")");
+        if (!v.contains("what"))
+            fail("motion.what is required: \"light\", \"camera\" or both in an array");
+        Motion m;
+        const json what = v["what"].is_string() ? json::array({v["what"]}) : v["what"];
+        if (!what.is_array() || what.empty())
+            fail("motion.what = " + v["what"].dump() +
+                 ": must be \"light\", \"camera\" or a non-empty array of them");
+        for (const json& w : what) {
+            if (w != "light" && w != "camera")
+                fail("motion.what[] = " + w.dump() + ": must be \"light\" or \"camera\"");
+            const MotionKind kind = w == "light" ? MotionKind::Light : MotionKind::Camera;
+            if (std::find(m.what.begin(), m.what.end(), kind) != m.what.end())
+                fail("motion.what lists " + w.dump() + " twice");
+            m.what.push_back(kind);
+        }
+        // Two frames make the first pair; the flicker is a change from one frame to the next.
+        if (v.contains("frames")) m.frames = int(whole(v["frames"], "motion.frames", 2, 10000));
+        m.lightDegreesPerFrame = number(v, "lightDegreesPerFrame", m.lightDegreesPerFrame, 0, 10);
+        m.lightMetresPerFrame = number(v, "lightMetresPerFrame", m.lightMetresPerFrame, 0, 10);
+        m.cameraMetresPerFrame = number(v, "cameraMetresPerFrame", m.cameraMetresPerFrame, 0, 10);
+        m.cameraDegreesPerFrame =
+            number(v, "cameraDegreesPerFrame", m.cameraDegreesPerFrame, 0, 10);
+        return m;
     }
 
     VkExtent2D size(const json& v, const std::string& name) const {
@@ -244,6 +309,17 @@ class ConfigReader {
             BenchRun r = balanced("initialStep", "initialStep=" + std::to_string(n));
             r.settings.initialSampleStep = n;
             checkSettings(r, "sweeps.initialStep");
+            c.runs.push_back(r);
+        }
+        // Epipolar's depth breaks: a smaller threshold marches more samples where the depth steps
+        // a little (temporal stability: bench/flicker.json).
+        for (const json& v : values("refinementThreshold")) {
+            if (!v.is_number())
+                fail("sweeps.refinementThreshold[] = " + v.dump() + ": must be a number");
+            BenchRun r = balanced("refinementThreshold",
+                                  "refinementThreshold=" + shortNumber(v.get<double>()));
+            r.settings.refinementThreshold = v.get<float>();
+            checkSettings(r, "sweeps.refinementThreshold");
             c.runs.push_back(r);
         }
         for (const json& v : values("minMaxTrees")) {

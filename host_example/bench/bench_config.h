@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "lightscatter.h"
+#include "motion.h"
 #include <vulkan/vulkan.h>
 
 namespace host::bench {
@@ -32,6 +33,10 @@ struct BenchConfig {
     bool measureError = true;        // false: timings only, no float64 reference (e.g. 1080p, many objects)
     std::vector<std::string> scenes;
     std::vector<BenchRun> runs;      // expanded
+    // The temporal-stability mode: every run that measures error renders the motion's frames
+    // (for each motion in turn) instead of `frames` still ones, and is judged against the
+    // reference at every pose.
+    std::optional<Motion> motion;
 };
 
 // Throws std::runtime_error naming the file and field.

@@ -4,9 +4,17 @@
 #include <cmath>
 
 #include "image_io.h"
+#include "metrics.h"
 #include "tonemap.h"
 
 namespace host::bench {
+
+std::array<uint8_t, 4> heatColor(double t) {
+    t = std::clamp(t, 0.0, 1.0);
+    return {static_cast<uint8_t>(std::lround(255 * std::min(1.0, 3 * t))),
+            static_cast<uint8_t>(std::lround(255 * std::clamp(3 * t - 1, 0.0, 1.0))),
+            static_cast<uint8_t>(std::lround(255 * std::clamp(3 * t - 2, 0.0, 1.0))), 255};
+}
 
 void writeStrip(const std::string& path, unsigned width, unsigned height, const std::vector<double>& reference,
                 const std::vector<float>& method, float exposure) {
@@ -31,10 +39,7 @@ void writeStrip(const std::string& path, unsigned width, unsigned height, const 
                 const double m = method[p * 4 + c];
                 err = std::max(err, std::isfinite(m) ? std::fabs(m - reference[p * 3 + c]) : 1e30);
             }
-            const double t = std::clamp(err / scale, 0.0, 1.0);
-            const uint8_t heat[4] = {static_cast<uint8_t>(std::lround(255 * std::min(1.0, 3 * t))),
-                                     static_cast<uint8_t>(std::lround(255 * std::clamp(3 * t - 1, 0.0, 1.0))),
-                                     static_cast<uint8_t>(std::lround(255 * std::clamp(3 * t - 2, 0.0, 1.0))), 255};
+            const std::array<uint8_t, 4> heat = heatColor(err / scale);
             for (size_t c = 0; c < 4; ++c) {
                 strip[y * stride + (x)*4 + c] = a[p * 4 + c];
                 strip[y * stride + (width + x) * 4 + c] = b[p * 4 + c];
@@ -42,6 +47,22 @@ void writeStrip(const std::string& path, unsigned width, unsigned height, const 
             }
         }
     writePng(path, width * 3, height, strip);
+}
+
+void writeFlickerStrip(const std::string& path, unsigned width, unsigned height,
+                       const std::vector<double>& referenceChange,
+                       const std::vector<double>& excess) {
+    const double scale =
+        std::max({percentile(referenceChange, 0.99), percentile(excess, 0.99), 1e-30});
+    std::vector<uint8_t> strip(size_t{width} * height * 2 * 4);
+    for (unsigned y = 0; y < height; ++y)
+        for (unsigned x = 0; x < width; ++x) {
+            const size_t p = size_t{y} * width + x, row = size_t{y} * width * 2;
+            const auto a = heatColor(referenceChange[p] / scale), b = heatColor(excess[p] / scale);
+            std::copy(a.begin(), a.end(), strip.begin() + static_cast<long>((row + x) * 4));
+            std::copy(b.begin(), b.end(), strip.begin() + static_cast<long>((row + width + x) * 4));
+        }
+    writePng(path, width * 2, height, strip);
 }
 
 }  // namespace host::bench

@@ -7,7 +7,6 @@
 #include "tonemap.h"
 
 namespace host::bench {
-namespace {
 
 double percentile(std::vector<double> v, double p) {
     if (v.empty()) return 0;
@@ -15,8 +14,6 @@ double percentile(std::vector<double> v, double p) {
     std::nth_element(v.begin(), v.begin() + static_cast<long>(k), v.end());
     return v[k];
 }
-
-}  // namespace
 
 ErrorMetrics compareToReference(const std::vector<float>& method, const std::vector<double>& reference,
                                 float exposure) {

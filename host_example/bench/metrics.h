@@ -20,6 +20,9 @@ struct ErrorMetrics {
 ErrorMetrics compareToReference(const std::vector<float>& method, const std::vector<double>& reference,
                                 float exposure);
 
+// The p-th quantile (0..1) of `values`, nearest rank; 0 for none.
+double percentile(std::vector<double> values, double p);
+
 struct Spread {
     double median = 0, p10 = 0, p90 = 0, min = 0, max = 0;
 };

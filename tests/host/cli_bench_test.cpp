@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
@@ -120,4 +121,66 @@ TEST(CliBench, AScenesOwnMethodsAndItsLightCount) {
         run("bench --config number.json --out number"),
         "number.json: scenes[0] must be a scene file's path or an object {\"scene\": path, "
         "\"methods\": [...]}");
+}
+
+TEST(CliBench, AMotionRowCarriesItsFlickerAndARerunReusesTheReferences) {
+    writeFile("motion.json",
+              R"({"warmup": 0, "size": "32x18", "scenes": ["scenes/window_room.json"],
+        "methods": ["epipolar", "brute-force"], "profiles": ["balanced"],
+        "motion": {"what": ["light", "camera"], "frames": 3}})");
+    const auto first = run("bench --config motion.json --out motion --validation");
+    ASSERT_EQ(first.exitCode, 0) << first.out;
+    auto rows = [] {
+        std::ifstream j(cli_test::path("motion/bench.json"));
+        return nlohmann::json::parse(j)["runs"];
+    };
+    const auto runs = rows();
+    ASSERT_EQ(runs.size(), 4u);  // two methods, each under both motions
+    for (const auto& row : runs) {
+        EXPECT_EQ(row["frames"], 3) << row["label"];
+        EXPECT_EQ(row["motion"]["frames"], 3);
+        EXPECT_EQ(row["flicker"]["framePairs"], 2);
+        EXPECT_GT(row["flicker"]["referenceChange"].get<double>(), 0.0) << row["label"];
+        EXPECT_GE(row["flicker"]["meanExcess"].get<double>(), 0.0);
+        EXPECT_GE(row["flicker"]["meanErrorChange"].get<double>(),
+                  row["flicker"]["meanExcess"].get<double>());
+        EXPECT_TRUE(row.contains("error"));
+    }
+    EXPECT_EQ(runs[0]["motion"]["what"], "light");
+    EXPECT_EQ(runs[1]["motion"]["what"], "camera");
+    EXPECT_TRUE(
+        cli_test::exists("motion/strips/window_room_brute-force_motion-camera_flicker.png"));
+    // Frame 0 is the scene's own pose under both motions: 1 + 2 + 2 references, each with what it
+    // cost beside it.
+    namespace fs = std::filesystem;
+    std::map<std::string, fs::file_time_type> references;
+    size_t images = 0;
+    for (const auto& e : fs::directory_iterator(cli_test::path("motion/references"))) {
+        references[e.path().filename().string()] = fs::last_write_time(e.path());
+        if (e.path().extension() != ".exr") continue;
+        ++images;
+        std::ifstream cost(fs::path(e.path()).replace_extension(".json"));
+        const auto parsed = nlohmann::json::parse(cost);
+        EXPECT_EQ(parsed["scene"], "window_room");
+        EXPECT_GT(parsed["seconds"].get<double>(), 0.0);
+    }
+    EXPECT_EQ(images, 5u);
+    EXPECT_EQ(references.size(), 10u);
+
+    // The rerun renders no reference (the files are as they were) and, judged against the
+    // cached images, reproduces the figures exactly.
+    const auto second = run("bench --config motion.json --out motion --validation");
+    ASSERT_EQ(second.exitCode, 0) << second.out;
+    EXPECT_EQ(second.out.find("(reference"), std::string::npos) << second.out;
+    for (const auto& e : fs::directory_iterator(cli_test::path("motion/references")))
+        EXPECT_EQ(references.at(e.path().filename().string()), fs::last_write_time(e.path()));
+    const auto again = rows();
+    for (size_t i = 0; i < runs.size(); ++i)
+        EXPECT_EQ(again[i]["flicker"], runs[i]["flicker"]) << runs[i]["label"];
+
+    writeFile("still.json",
+              R"({"scenes": ["scenes/window_room.json"], "motion": {"what": "wind"}})");
+    expectFailure(run("bench --config still.json --out still"),
+                  "still.json: motion.what[] = \"wind\": must be \"light\" or \"camera\"");
+    EXPECT_FALSE(cli_test::exists("still/bench.csv"));
 }

@@ -1,0 +1,312 @@
+// The benchmark's temporal-stability mode without a device: the flicker measure on images whose
+// answer is known, the motions' poses, the reference cache's key, and the configuration's rules
+// for "motion" (each bad value one line naming the file and the field).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <stdexcept>
+
+#include <glm/geometric.hpp>
+
+#include "bench/bench_config.h"
+#include "bench/flicker.h"
+#include "bench/motion.h"
+#include "bench/reference_cache.h"
+
+namespace {
+
+using host::bench::FlickerMeter;
+using host::bench::FlickerMetrics;
+
+constexpr size_t kPixels = 64 * 36;
+
+// A reference whose values vary from pixel to pixel (1 to 2), shifted by `frame` pixels, so that
+// consecutive frames differ.
+std::vector<double> reference(int frame) {
+    std::vector<double> r(kPixels * 3);
+    for (size_t p = 0; p < kPixels; ++p)
+        for (size_t c = 0; c < 3; ++c)
+            r[p * 3 + c] =
+                1.5 + 0.5 * std::sin(0.1 * static_cast<double>(p + size_t(frame)) + double(c));
+    return r;
+}
+
+std::vector<float> asMethod(const std::vector<double>& rgb, double scale = 1.0) {
+    std::vector<float> rgba(kPixels * 4, 1.0f);
+    for (size_t p = 0; p < kPixels; ++p)
+        for (size_t c = 0; c < 3; ++c) rgba[p * 4 + c] = static_cast<float>(scale * rgb[p * 3 + c]);
+    return rgba;
+}
+
+// Values stored as float, as the cache and the GPU do, so that "equal" below is exact.
+std::vector<double> rounded(std::vector<double> rgb) {
+    for (double& v : rgb) v = static_cast<float>(v);
+    return rgb;
+}
+
+TEST(Flicker, AStillSceneRenderedTheSameEveryFrameHasNone) {
+    FlickerMeter meter;
+    const std::vector<double> ref = reference(0);
+    const std::vector<float> method = asMethod(ref, 1.05);  // 5% off, the same every frame
+    for (int k = 0; k < 6; ++k) meter.add(method, ref);
+    const FlickerMetrics f = meter.result();
+    EXPECT_EQ(f.framePairs, 5u);
+    EXPECT_EQ(f.meanExcess, 0.0);
+    EXPECT_EQ(f.p99Excess, 0.0);
+    EXPECT_EQ(f.maxExcess, 0.0);
+    EXPECT_EQ(f.meanErrorChange, 0.0);
+    EXPECT_EQ(f.referenceChange, 0.0);
+    EXPECT_NEAR(f.meanRelativeError, 0.05, 1e-6);
+}
+
+TEST(Flicker, AMethodThatFollowsTheMotionExactlyHasNone) {
+    FlickerMeter meter;
+    for (int k = 0; k < 6; ++k) {
+        const std::vector<double> ref = rounded(reference(k));
+        meter.add(asMethod(ref), ref);
+    }
+    const FlickerMetrics f = meter.result();
+    EXPECT_GT(f.referenceChange, 0.01);
+    EXPECT_EQ(f.methodChange, f.referenceChange);
+    EXPECT_EQ(f.meanExcess, 0.0);
+    EXPECT_EQ(f.meanErrorChange, 0.0);
+    EXPECT_EQ(f.meanRelativeError, 0.0);
+}
+
+TEST(Flicker, InjectedNoiseIsMeasuredAtItsExpectedSize) {
+    // L_k = R (1 + a u_k), u uniform in [-1, 1] and new every frame and pixel, R still: the excess
+    // is a R |u_k - u_{k-1}|, whose mean over R is a E|u - u'| = 2a/3, and whose 99th percentile
+    // (R = 1 here) solves (1 - x/2)^2 = 0.01: x = 1.8a.
+    const double a = 0.02;
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    std::vector<double> ref(kPixels * 3, 1.0);
+    FlickerMeter meter;
+    for (int k = 0; k < 20; ++k) {
+        std::vector<float> method(kPixels * 4, 1.0f);
+        for (size_t p = 0; p < kPixels; ++p)
+            for (size_t c = 0; c < 3; ++c) method[p * 4 + c] = static_cast<float>(1.0 + a * u(rng));
+        meter.add(method, ref);
+    }
+    const FlickerMetrics f = meter.result();
+    EXPECT_NEAR(f.meanExcess, 2.0 * a / 3.0, 0.02 * a);
+    EXPECT_NEAR(f.p99Excess, 1.8 * a, 0.05 * a);
+    EXPECT_NEAR(f.meanErrorChange, f.meanExcess, 1e-9);  // nothing moves: the two agree
+    EXPECT_EQ(f.referenceChange, 0.0);
+    EXPECT_NEAR(f.meanRelativeError, a / 2.0, 0.02 * a);  // E|a u| = a/2
+    // The heat map holds the same mean per pixel.
+    double sum = 0;
+    for (double v : meter.excessMap()) sum += v;
+    EXPECT_NEAR(sum / kPixels, 2.0 * a / 3.0, 0.02 * a);
+}
+
+TEST(Flicker, ABiasThatMovesWithTheShaftsIsNotFlickerButItsErrorChanges) {
+    // 10% too bright everywhere: the method changes 1.1 times as much as the reference, so the
+    // excess is a tenth of the reference's change; the error changes by the same amount.
+    FlickerMeter meter;
+    for (int k = 0; k < 6; ++k) {
+        const std::vector<double> ref = reference(k);
+        meter.add(asMethod(ref, 1.1), ref);
+    }
+    const FlickerMetrics f = meter.result();
+    EXPECT_NEAR(f.meanExcess, 0.1 * f.referenceChange, 1e-6);
+    EXPECT_NEAR(f.meanErrorChange, 0.1 * f.referenceChange, 1e-6);
+
+    // A method that does not move at all has no excess (it changes less than the reference), but
+    // its error changes exactly as the reference does: the second measure sees what the first
+    // does not.
+    FlickerMeter frozen;
+    const std::vector<float> still = asMethod(reference(0));
+    for (int k = 0; k < 6; ++k) frozen.add(still, reference(k));
+    const FlickerMetrics g = frozen.result();
+    EXPECT_EQ(g.meanExcess, 0.0);
+    EXPECT_NEAR(g.meanErrorChange, g.referenceChange, 1e-6);
+}
+
+TEST(Flicker, NonFiniteValuesAreCountedNotAveraged) {
+    FlickerMeter meter;
+    const std::vector<double> ref = reference(0);
+    std::vector<float> method = asMethod(ref);
+    meter.add(method, ref);
+    method[5 * 4 + 1] = NAN;
+    meter.add(method, ref);
+    meter.add(asMethod(ref), ref);
+    const FlickerMetrics f = meter.result();
+    EXPECT_EQ(f.nonFinite, 1u);
+    EXPECT_EQ(f.meanExcess, 0.0);
+    EXPECT_TRUE(std::isfinite(f.meanErrorChange));
+}
+
+TEST(Flicker, ImagesOfDifferentSizesAreRefused) {
+    FlickerMeter meter;
+    const std::vector<double> ref = reference(0);
+    EXPECT_THROW(meter.add(std::vector<float>(8, 0.0f), ref), std::logic_error);
+    meter.add(asMethod(ref), ref);
+    EXPECT_THROW(meter.add(std::vector<float>(8, 0.0f), std::vector<double>(6, 0.0)),
+                 std::logic_error);
+}
+
+host::SceneDesc scene(const char* name) {
+    return host::loadSceneFile(std::string(LS_SOURCE_DIR) + "/scenes/" + name + ".json");
+}
+
+double degreesBetween(glm::vec3 a, glm::vec3 b) {
+    return glm::degrees(std::acos(
+        std::clamp(double(glm::dot(glm::normalize(glm::dvec3(a)), glm::normalize(glm::dvec3(b)))),
+                   -1.0, 1.0)));
+}
+
+TEST(Motion, TheCameraMovesRightAndTurnsRightBySteps) {
+    const host::SceneDesc start = scene("atrium");
+    host::bench::Motion m;
+    m.cameraMetresPerFrame = 0.05;
+    m.cameraDegreesPerFrame = 0.2;
+    const auto& c0 = start.camera;
+    const glm::vec3 right = glm::normalize(glm::cross(c0.target - c0.position, c0.up));
+    const host::SceneDesc p0 = host::bench::poseAt(start, host::bench::MotionKind::Camera, m, 0);
+    EXPECT_EQ(p0.camera.position, c0.position);
+    EXPECT_EQ(p0.light.direction, start.light.direction);
+    const host::SceneDesc p10 = host::bench::poseAt(start, host::bench::MotionKind::Camera, m, 10);
+    EXPECT_NEAR(glm::length(p10.camera.position - c0.position), 0.5, 1e-5);
+    EXPECT_NEAR(glm::dot(p10.camera.position - c0.position, right), 0.5, 1e-5);
+    // The turn is about up: 2 degrees between the view directions as seen from above.
+    const glm::vec3 up = glm::normalize(c0.up);
+    auto flat = [&](glm::vec3 v) { return v - glm::dot(v, up) * up; };
+    const glm::vec3 f0 = c0.target - c0.position, f10 = p10.camera.target - p10.camera.position;
+    EXPECT_NEAR(degreesBetween(flat(f0), flat(f10)), 2.0, 1e-3);
+    EXPECT_GT(glm::dot(glm::normalize(f10), right), 0.0f) << "turned left";
+    EXPECT_EQ(p10.light.direction, start.light.direction) << "the light stays";
+}
+
+TEST(Motion, ASunTurnsTowardsTheCamerasRightAndASpotMoves) {
+    host::bench::Motion m;
+    const host::SceneDesc sun = scene("atrium");
+    ASSERT_EQ(sun.light.type, host::LightKind::Directional);
+    const auto& c = sun.camera;
+    const glm::vec3 right = glm::normalize(glm::cross(c.target - c.position, c.up));
+    const host::SceneDesc s30 = host::bench::poseAt(sun, host::bench::MotionKind::Light, m, 30);
+    EXPECT_NEAR(degreesBetween(sun.light.direction, s30.light.direction), 3.0, 1e-3);
+    EXPECT_GT(glm::dot(s30.light.direction - sun.light.direction, right), 0.0f);
+    EXPECT_EQ(s30.camera.position, c.position) << "the camera stays";
+
+    const host::SceneDesc spot = scene("window_room");
+    ASSERT_EQ(spot.light.type, host::LightKind::Spot);
+    const host::SceneDesc p30 = host::bench::poseAt(spot, host::bench::MotionKind::Light, m, 30);
+    EXPECT_NEAR(glm::length(p30.light.position - spot.light.position), 0.6, 1e-5);
+    EXPECT_EQ(p30.light.direction, spot.light.direction);
+}
+
+TEST(ReferenceCache, TheKeyChangesWithWhatTheReferenceDependsOn) {
+    const host::SceneDesc s = scene("window_room");
+    host::MeshData mesh;
+    mesh.vertices.resize(3);
+    mesh.vertices[1].position = {1, 0, 0};
+    mesh.vertices[2].position = {0, 1, 0};
+    mesh.indices = {0, 1, 2};
+    const VkExtent2D size{160, 90};
+    const std::string key = host::bench::referenceKey(s, mesh, size);
+    EXPECT_EQ(key, host::bench::referenceKey(s, mesh, size)) << "not deterministic";
+    EXPECT_NE(key, host::bench::referenceKey(s, mesh, {240, 135}));
+    host::bench::Motion m;
+    EXPECT_NE(key, host::bench::referenceKey(
+                       host::bench::poseAt(s, host::bench::MotionKind::Light, m, 1), mesh, size));
+    EXPECT_NE(key, host::bench::referenceKey(
+                       host::bench::poseAt(s, host::bench::MotionKind::Camera, m, 1), mesh, size));
+    host::SceneDesc fog = s;
+    fog.medium.betaM *= 2.0f;
+    EXPECT_NE(key, host::bench::referenceKey(fog, mesh, size));
+    host::MeshData moved = mesh;
+    moved.vertices[2].position.z = 1e-3f;
+    EXPECT_NE(key, host::bench::referenceKey(s, moved, size));
+    // The shadow map is the GPU's; the reference traces the triangles.
+    host::SceneDesc smaller = s;
+    smaller.light.shadowMapSize = 512;
+    EXPECT_EQ(key, host::bench::referenceKey(smaller, mesh, size));
+}
+
+// A configuration file in a folder of its own; loadBenchConfig's message for it.
+std::string configError(const std::string& text) {
+    const auto dir = std::filesystem::temp_directory_path() / "ls_bench_motion_test";
+    std::filesystem::create_directories(dir);
+    const auto file = dir / "motion.json";
+    std::ofstream(file) << text;
+    try {
+        (void)host::bench::loadBenchConfig(file.string(), LS_SOURCE_DIR);
+    } catch (const std::runtime_error& e) {
+        const std::string what = e.what();
+        const std::string prefix = file.string() + ": ";
+        EXPECT_EQ(what.rfind(prefix, 0), 0u) << what;
+        return what.substr(prefix.size());
+    }
+    return "(accepted)";
+}
+
+std::string withMotion(const std::string& motion) {
+    return R"({"size": "32x18", "scenes": ["scenes/atrium.json"], "motion": )" + motion + "}";
+}
+
+TEST(BenchConfigMotion, EachBadValueIsOneLineNamingTheField) {
+    EXPECT_EQ(configError(withMotion("3")),
+              "motion must be an object (keys: what, frames, lightDegreesPerFrame, "
+              "lightMetresPerFrame, cameraMetresPerFrame, cameraDegreesPerFrame)");
+    EXPECT_EQ(configError(withMotion(R"({"what": "light", "speed": 2})")),
+              "motion: unknown key 'speed' (known: what, frames, lightDegreesPerFrame, "
+              "lightMetresPerFrame, cameraMetresPerFrame, cameraDegreesPerFrame)");
+    EXPECT_EQ(configError(withMotion(R"({"frames": 60})")),
+              "motion.what is required: \"light\", \"camera\" or both in an array");
+    EXPECT_EQ(configError(withMotion(R"({"what": []})")),
+              "motion.what = []: must be \"light\", \"camera\" or a non-empty array of them");
+    EXPECT_EQ(configError(withMotion(R"({"what": "sun"})")),
+              "motion.what[] = \"sun\": must be \"light\" or \"camera\"");
+    EXPECT_EQ(configError(withMotion(R"({"what": ["light", "light"]})")),
+              "motion.what lists \"light\" twice");
+    EXPECT_EQ(configError(withMotion(R"({"what": "light", "frames": 1})")),
+              "motion.frames = 1: must be a whole number from 2 to 10000");
+    EXPECT_EQ(configError(withMotion(R"({"what": "light", "frames": 4294967298})")),
+              "motion.frames = 4294967298: must be a whole number from 2 to 10000");
+    EXPECT_EQ(configError(withMotion(R"({"what": "light", "lightDegreesPerFrame": -0.1})")),
+              "motion.lightDegreesPerFrame = -0.1: must be a number from 0 to 10");
+    EXPECT_EQ(configError(withMotion(R"({"what": "camera", "cameraMetresPerFrame": "0.1"})")),
+              "motion.cameraMetresPerFrame = \"0.1\": must be a number from 0 to 10");
+    EXPECT_EQ(configError(withMotion(R"({"what": "camera", "cameraDegreesPerFrame": 11})")),
+              "motion.cameraDegreesPerFrame = 11: must be a number from 0 to 10");
+    EXPECT_EQ(configError(withMotion(R"({"what": "light", "lightMetresPerFrame": null})")),
+              "motion.lightMetresPerFrame = null: must be a number from 0 to 10");
+    EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"], "measureError": false,
+                              "motion": {"what": "light"}})"),
+              "motion needs measureError: the flicker is measured against the float64 reference "
+              "at every pose");
+}
+
+TEST(BenchConfigMotion, TheRefinementThresholdSweepFollowsThePluginsRule) {
+    EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"],
+                              "sweeps": {"refinementThreshold": [0.01, 0]}})"),
+              "sweeps.refinementThreshold (run 'refinementThreshold=0'): refinementThreshold = 0: "
+              "must be > 0");
+    EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"],
+                              "sweeps": {"refinementThreshold": ["small"]}})"),
+              "sweeps.refinementThreshold[] = \"small\": must be a number");
+}
+
+TEST(BenchConfigMotion, DefaultsAndBothMotions) {
+    const auto dir = std::filesystem::temp_directory_path() / "ls_bench_motion_test";
+    std::filesystem::create_directories(dir);
+    const auto file = dir / "good.json";
+    std::ofstream(file) << withMotion(R"({"what": ["camera", "light"], "lightMetresPerFrame": 0})");
+    const host::bench::BenchConfig c = host::bench::loadBenchConfig(file.string(), LS_SOURCE_DIR);
+    ASSERT_TRUE(c.motion);
+    ASSERT_EQ(c.motion->what.size(), 2u);
+    EXPECT_EQ(c.motion->what[0], host::bench::MotionKind::Camera);
+    EXPECT_EQ(c.motion->what[1], host::bench::MotionKind::Light);
+    EXPECT_EQ(c.motion->frames, 60);
+    EXPECT_EQ(c.motion->lightMetresPerFrame, 0.0);
+    EXPECT_EQ(c.motion->lightDegreesPerFrame, 0.1);
+
+    std::ofstream(file) << R"({"scenes": ["scenes/atrium.json"]})";
+    EXPECT_FALSE(host::bench::loadBenchConfig(file.string(), LS_SOURCE_DIR).motion);
+}
+
+}  // namespace
