@@ -310,44 +310,31 @@ def gpu_section(gpu_dir):
     return out
 
 
+def flicker_lines(bench_dir, page):
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    import report_flicker as rf
+    # Its heat maps go beside the page.
+    return rf.flicker_section(bench_dir, page.parent / "performance" if page else None), rf.FLICKER_HEADING
+
+
+# write_report.py --NAME-section DIR... [PAGE.md]: one section alone, or spliced into the page in
+# place (the rest of the page is left as it is). NAME: its result folders, and how to make it.
+SECTIONS = {
+    "--gpu-section": (1, lambda dirs, page: (gpu_section(dirs[0]), GPU_HEADING)),
+    "--flicker-section": (1, lambda dirs, page: flicker_lines(dirs[0], page)),
+    "--occluders-section": (1, lambda dirs, page: (occluders_section(dirs[0]), OCCLUDERS_HEADING)),
+    "--lights-section": (2, lambda dirs, page: (lights_section(dirs[0], dirs[1]), LIGHTS_HEADING)),
+}
+
+
 def main():
-    if len(sys.argv) > 1 and sys.argv[1] == "--gpu-section":
-        # write_report.py --gpu-section GPU_DIR [PAGE.md]: the GPU machine's figures, alone or spliced.
-        lines = gpu_section(Path(sys.argv[2]))
-        if len(sys.argv) > 3:
-            page = Path(sys.argv[3])
-            page.write_text(splice_section(page.read_text(), GPU_HEADING, lines))
-        else:
-            print("\n".join(lines))
-        return
-    if len(sys.argv) > 1 and sys.argv[1] == "--flicker-section":
-        # write_report.py --flicker-section BENCH_DIR [PAGE.md]: as --occluders-section, for
-        # bench/flicker.json's run (scripts/report_flicker.py); its heat maps go beside the page.
-        sys.path.insert(0, str(Path(__file__).resolve().parent))
-        import report_flicker as rf
-        page = Path(sys.argv[3]) if len(sys.argv) > 3 else None
-        lines = rf.flicker_section(Path(sys.argv[2]), page.parent / "performance" if page else None)
+    if len(sys.argv) > 1 and sys.argv[1] in SECTIONS:
+        count, make = SECTIONS[sys.argv[1]]
+        dirs = [Path(d) for d in sys.argv[2:2 + count]]
+        page = Path(sys.argv[2 + count]) if len(sys.argv) > 2 + count else None
+        lines, heading = make(dirs, page)
         if page:
-            page.write_text(splice_section(page.read_text(), rf.FLICKER_HEADING, lines))
-        else:
-            print("\n".join(lines))
-        return
-    if len(sys.argv) > 1 and sys.argv[1] == "--occluders-section":
-        # write_report.py --occluders-section BENCH_DIR [PAGE.md]: the section alone, or spliced into
-        # the page in place (the rest of the page is left as it is).
-        lines = occluders_section(Path(sys.argv[2]))
-        if len(sys.argv) > 3:
-            page = Path(sys.argv[3])
-            page.write_text(splice_section(page.read_text(), OCCLUDERS_HEADING, lines))
-        else:
-            print("\n".join(lines))
-        return
-    if len(sys.argv) > 1 and sys.argv[1] == "--lights-section":
-        # write_report.py --lights-section SCALING_DIR ROWS_DIR [PAGE.md]: the same for "Several lights".
-        lines = lights_section(Path(sys.argv[2]), Path(sys.argv[3]))
-        if len(sys.argv) > 4:
-            page = Path(sys.argv[4])
-            page.write_text(splice_section(page.read_text(), LIGHTS_HEADING, lines))
+            page.write_text(splice_section(page.read_text(), heading, lines))
         else:
             print("\n".join(lines))
         return

@@ -24,7 +24,8 @@ CompositeOutputs declareCompositeTarget(rg::PassBuilder& pass, const CompositeTa
 
 // Bindings 10 (color) and 11 (the output, when there is one) of composite_into.glsl.
 void appendCompositeBindings(std::vector<rg::Binding>& bindings, const CompositeOutputs& written);
-void pushCompositeTarget(rg::DescriptorPush& set, const rg::PassContext& ctx, const CompositeOutputs& written);
+void pushCompositeTarget(rg::DescriptorPush& set, const rg::PassContext& ctx,
+                         const CompositeOutputs& written);
 
 // A shader built for each color format, with and without the output image.
 struct CompositeVariants {
