@@ -86,6 +86,21 @@ rg::ImportedImage importDescription(const ImportState& s) {
 
 namespace {
 
+// Every frame's graph, one light or several: the engine's depth, color and optional Lin output
+// imported, and the node inputs that follow from the configuration (screen, formats).
+ls::NodeInputs importEngineImages(rg::RenderGraph& g, const GraphConfig& c, FrameGraph& fg, ls::Shared shared) {
+    ls::NodeInputs in;
+    in.shared = std::move(shared);
+    in.screen = c.screen;
+    in.depthStencil = c.depthStencil;
+    in.coordinateFormat = c.coordinates;
+    fg.depth = in.depth = g.importImage("engine depth", importDescription(c.depth));
+    fg.color = g.importImage("engine color", importDescription(c.color));
+    if (c.inscatterOut.format != VK_FORMAT_UNDEFINED)
+        fg.inscatterOut = g.importImage("in-scattering output", importDescription(c.inscatterOut));
+    return in;
+}
+
 // Several lights: one chain per light whose volume reaches the view, one after the other. The first
 // chain's composite applies the extinction and adds its Lin; each later chain adds its Lin to the
 // color (and to inscatterOut) as soon as it is done, so that its transients are dead before the
@@ -97,15 +112,7 @@ FrameGraph buildLightsGraph(const GraphConfig& c, const std::vector<ls::Shared>&
     g.setScreenExtent(c.screen);
     auto sharedOf = [&](size_t i) { return i < lightShared.size() ? lightShared[i] : ls::Shared{}; };
 
-    ls::NodeInputs base;
-    base.shared = sharedOf(0);
-    base.screen = c.screen;
-    base.depthStencil = c.depthStencil;
-    base.coordinateFormat = c.coordinates;
-    fg.depth = base.depth = g.importImage("engine depth", importDescription(c.depth));
-    fg.color = g.importImage("engine color", importDescription(c.color));
-    if (c.inscatterOut.format != VK_FORMAT_UNDEFINED)
-        fg.inscatterOut = g.importImage("in-scattering output", importDescription(c.inscatterOut));
+    ls::NodeInputs base = importEngineImages(g, c, fg, sharedOf(0));
     fg.lights.resize(c.lights.size());
     bool anyTouches = false;
     for (size_t i = 0; i < c.lights.size(); ++i) {
@@ -177,16 +184,8 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared, ls::S
     rg::RenderGraph& g = *fg.graph;
     g.setScreenExtent(c.screen);
 
-    ls::NodeInputs in;
-    in.shared = shared;
-    in.screen = c.screen;
-    in.depthStencil = c.depthStencil;
-    in.coordinateFormat = c.coordinates;
+    ls::NodeInputs in = importEngineImages(g, c, fg, shared);
     in.shadowMapSize = c.shadowMapSize;
-    fg.depth = in.depth = g.importImage("engine depth", importDescription(c.depth));
-    fg.color = g.importImage("engine color", importDescription(c.color));
-    if (c.inscatterOut.format != VK_FORMAT_UNDEFINED)
-        fg.inscatterOut = g.importImage("in-scattering output", importDescription(c.inscatterOut));
     // The engine's shadow map and light color are imported whenever given, so that they are left
     // in the layouts the engine asked for even where no node reads them.
     if (c.shadowMap.format != VK_FORMAT_UNDEFINED)
