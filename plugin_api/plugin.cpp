@@ -353,11 +353,10 @@ struct Plugin::Impl {
     // view do work: which ones did, per cube-shadowed light.
     std::string cubeFacesNote() const {
         if (!config || config->method != Method::Epipolar) return {};
-        static const char* const kFaces[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
         auto faces = [](const ls::SharedState& s) {
             std::string list;
             for (int f = 0; f < 6; ++f)
-                if (s.cubeFaces[f] && s.cubeFaces[f]->inView()) list += std::string(list.empty() ? "" : ", ") + kFaces[f];
+                if (s.cubeFaces[f] && s.cubeFaces[f]->inView()) list += std::string(list.empty() ? "" : ", ") + ls::cubeFaceName(f);
             return list.empty() ? std::string("none") : list;
         };
         std::string note;

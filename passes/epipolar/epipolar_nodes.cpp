@@ -23,10 +23,9 @@ CompositeOutputs addEpipolarNodes(rg::RenderGraph& g, const NodeInputs& in, cons
     if (!options.cubeShadow) {
         marched = march(in, {});
     } else {
-        static const char* const kFaces[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
         const std::string suffix = g.nameSuffix();
         for (uint32_t face = 0; face < 6; ++face) {
-            g.setNameSuffix(suffix + " (cube face " + kFaces[face] + ")");
+            g.setNameSuffix(suffix + " (cube face " + cubeFaceName(static_cast<int>(face)) + ")");
             NodeInputs f = in;
             f.shared = in.shared ? in.shared->cubeFaces[face] : nullptr;
             f.constants = addUploadConstants(g, f.shared);

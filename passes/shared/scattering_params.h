@@ -83,6 +83,9 @@ FrameConstants makeFrameConstants(const CameraParams& camera, const LightParams&
                                   const MediumParams& medium, const EpipolarSettings& settings,
                                   VkExtent2D screen, const TableLayout& table);
 
+// A point light's cube face by its layer (Vulkan's order +X, -X, +Y, -Y, +Z, -Z), for names.
+const char* cubeFaceName(int face);
+
 // Number of min/max tree levels built for a shadow map of this size (level 1 covers 2 samples).
 uint32_t treeLevels(uint32_t shadowMapSize);
 // Whether min/max trees can be built: the march climbs from level 1 to level 2 and reads both the
