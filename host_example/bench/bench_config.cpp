@@ -32,10 +32,10 @@ class ConfigReader {
         for (const auto& [key, value] : j.items())
             if (key != "name" && key != "frames" && key != "warmup" && key != "size" &&
                 key != "scenes" && key != "methods" && key != "profiles" && key != "sweeps" &&
-                key != "measureError" && key != "motion")
+                key != "measureError" && key != "motion" && key != "sweepProfile")
                 fail("unknown key '" + key +
                      "' (known: name, frames, warmup, size, scenes, methods, profiles, sweeps, "
-                     "measureError, motion)");
+                     "sweepProfile, measureError, motion)");
         BenchConfig c;
         c.name = j.contains("name") ? text(j["name"], "name")
                                     : std::filesystem::path(path_).stem().string();
@@ -96,6 +96,14 @@ class ConfigReader {
             c.scenes.push_back(p.string());
         }
         if (c.scenes.empty()) fail("scenes is empty");
+        lightscatter::Profile sweepProfile = lightscatter::Profile::Balanced;
+        if (j.contains("sweepProfile")) {
+            const std::string name = text(j["sweepProfile"], "sweepProfile");
+            const auto parsed = lightscatter::parseProfile(name);
+            if (!parsed || *parsed == lightscatter::Profile::Custom)
+                fail("sweepProfile: unknown profile '" + name + "'");
+            sweepProfile = *parsed;
+        }
         const json sweeps = j.contains("sweeps") ? j["sweeps"] : json::object();
         if (!sweeps.is_object()) fail("sweeps must be an object");
         for (const auto& [key, value] : sweeps.items())
@@ -108,7 +116,7 @@ class ConfigReader {
                      "size, minMaxTrees, coneSamples, coneModes, slicePlanes, sliceTargets, "
                      "lightModel)");
         for (size_t k = 0; k < c.scenes.size(); ++k)
-            expand(c, c.scenes[k], sceneMethods[k], profiles, sweeps);
+            expand(c, c.scenes[k], sceneMethods[k], profiles, sweepProfile, sweeps);
         return c;
     }
 
@@ -252,7 +260,8 @@ class ConfigReader {
 
     void expand(BenchConfig& c, const std::string& scene,
                 const std::vector<lightscatter::Method>& methods,
-                const std::vector<lightscatter::Profile>& profiles, const json& sweeps) const {
+                const std::vector<lightscatter::Profile>& profiles,
+                lightscatter::Profile sweepProfile, const json& sweeps) const {
         BenchRun base;
         base.scene = scene;
         base.size = c.size;
@@ -276,13 +285,13 @@ class ConfigReader {
                 c.runs.push_back(r);
             }
         }
-        // One-parameter sweeps from the balanced profile.
+        // One-parameter sweeps from one profile (balanced unless sweepProfile says otherwise).
         auto balanced = [&](const std::string& family, const std::string& label) {
             BenchRun r = base;
             r.family = family;
             r.label = label;
             r.custom = true;
-            r.settings = lightscatter::profileSettings(lightscatter::Profile::Balanced);
+            r.settings = lightscatter::profileSettings(sweepProfile);
             return r;
         };
         constexpr uint32_t kMax = std::numeric_limits<uint32_t>::max();

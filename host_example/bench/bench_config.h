@@ -1,6 +1,6 @@
 #pragma once
 // What a benchmark runs: scenes x configurations (methods, profiles, and one-parameter sweeps from
-// the balanced profile), read from a JSON file (bench/*.json).
+// the balanced profile, or the config's sweepProfile), read from a JSON file (bench/*.json).
 #include <optional>
 #include <string>
 #include <vector>
