@@ -67,7 +67,8 @@ rg::ImageRef addInterpolate(rg::RenderGraph& g, const NodeInputs& in, const Epip
                             rg::ImageRef epipolarStencil);
 
 // The samples unwarped to the screen and composited into the target (no screen-sized Lin), and with
-// markForFixup the pixels no sample could serve left to the fix-up, marked 1 in a camera stencil.
+// markForFixup the pixels no sample could serve left to the fix-up: 0 in a camera stencil where
+// every served pixel wrote 1.
 // Reads in.table and in.depth.
 struct UnwarpInputs {
     rg::ImageRef sliceEndPoints, epipolarZ, interpolated;

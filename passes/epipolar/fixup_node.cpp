@@ -3,7 +3,7 @@
 
 namespace ls {
 
-// Pixels the unwarp could not interpolate (stencil 1) are ray-marched on their own, without trees,
+// Pixels the unwarp could not interpolate (stencil 0; it marked the rest) are ray-marched on their own, without trees,
 // and composited into the engine's color like the unwarp's.
 CompositeOutputs addFixup(rg::RenderGraph& g, const NodeInputs& in, rg::ImageRef cameraStencil,
                           const CompositeTarget& target) {
@@ -18,7 +18,7 @@ CompositeOutputs addFixup(rg::RenderGraph& g, const NodeInputs& in, rg::ImageRef
         drawPixelMarch(ctx, in,
                        {.pipeline = "fix-up",
                         .maxSteps = maxSteps,
-                        .whereStencilIsOne = true,
+                        .whereStencilIsZero = true,
                         .composite = &written,
                         .addOnly = addOnly});
     });

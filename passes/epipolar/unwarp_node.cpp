@@ -26,9 +26,9 @@ const CompositeVariants kTable{
 
 }  // namespace
 
-// Two draws in one pass: the bilateral unwarp composites every pixel it can serve into the engine's
-// color; with fix-up on, a stencil-only draw marks the pixels no epipolar sample could serve (the
-// compositing draw leaves them to the fix-up). Without fix-up there is no attachment: the pass
+// One draw: the bilateral unwarp composites every pixel it can serve into the engine's color; with
+// fix-up on, each served pixel also writes 1 into a cleared stencil (the fragments it cannot serve
+// are discarded), and the fix-up marches the zeros. Without fix-up there is no attachment: the pass
 // renders over the screen.
 UnwarpOutputs addUnwarp(rg::RenderGraph& g, const NodeInputs& in, const UnwarpInputs& i,
                         const CompositeTarget& target, bool markForFixup) {
@@ -57,12 +57,19 @@ UnwarpOutputs addUnwarp(rg::RenderGraph& g, const NodeInputs& in, const UnwarpIn
         if (in.table.valid()) b.push_back(sampledBinding(7));
         appendCompositeBindings(b, written);
         auto desc = fullscreenPipeline((in.table.valid() ? kTable : kDirectional).pick(ctx, written), ctx, b);
-        desc.pushConstantBytes = 12;
+        desc.pushConstantBytes = 8;
         desc.specialization = spec.constants();
-        const std::string variant = spec.key() + "/" + compositeKey(ctx, written);
+        if (markForFixup) {
+            desc.stencilTest = true;
+            desc.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_REPLACE, VK_STENCIL_OP_KEEP,
+                            VK_COMPARE_OP_ALWAYS, 0xff, 0xff, 1};
+        }
+        const std::string variant = spec.key() + "/" + compositeKey(ctx, written) +
+                                    (markForFixup ? "/marks" : "");
         const auto& p = in.shared->pipelines.graphics(pipelineKey("unwarp", ctx, variant), desc);
         const auto& sm = in.shared->samplers;
         p.bind(ctx.cmd());
+        if (markForFixup) vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 1);
         auto set = frameSet(ctx, in.constants);
         set.sampled(1, ctx.view(i.sliceEndPoints), ctx.layout(i.sliceEndPoints), sm.nearest())
             .sampled(2, ctx.view(i.epipolarZ), ctx.layout(i.epipolarZ), sm.nearest())
@@ -71,18 +78,8 @@ UnwarpOutputs addUnwarp(rg::RenderGraph& g, const NodeInputs& in, const UnwarpIn
         if (in.table.valid()) set.sampled(7, ctx.view(in.table), ctx.layout(in.table), sm.nearest());
         pushCompositeTarget(set, ctx, written);
         set.push(ctx.device(), ctx.cmd(), p);
-        int32_t push[3] = {0, markForFixup ? 1 : 0, addOnly ? 1 : 0};
+        const int32_t push[2] = {markForFixup ? 1 : 0, addOnly ? 1 : 0};
         p.push(ctx.cmd(), push);
-        vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
-        if (!markForFixup) return;
-        desc.stencilTest = true;
-        desc.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_REPLACE, VK_STENCIL_OP_KEEP,
-                        VK_COMPARE_OP_ALWAYS, 0xff, 0xff, 1};
-        const auto& mark = in.shared->pipelines.graphics(pipelineKey("unwarp mark", ctx, variant), desc);
-        mark.bind(ctx.cmd());
-        vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 1);
-        push[0] = 1;
-        mark.push(ctx.cmd(), push);
         vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
     });
     return out;

@@ -91,18 +91,18 @@ void drawPixelMarch(rg::PassContext& ctx, const NodeInputs& in,
                                    ctx, b);
     desc.pushConstantBytes = draw.composite ? 8 : 4;
     desc.specialization = spec.constants();
-    if (draw.whereStencilIsOne) {
+    if (draw.whereStencilIsZero) {
         desc.stencilTest = true;
         desc.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP,
-                        VK_COMPARE_OP_EQUAL, 0xff, 0, 1};
+                        VK_COMPARE_OP_EQUAL, 0xff, 0, 0};
     }
     const auto& p =
         in.shared->pipelines.graphics(
             pipelineKey(draw.pipeline, ctx, spec.key() + (draw.composite ? "/" + compositeKey(ctx, *draw.composite) : "")),
             desc);
     p.bind(ctx.cmd());
-    if (draw.whereStencilIsOne)
-        vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 1);
+    if (draw.whereStencilIsZero)
+        vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 0);
     auto set = frameSet(ctx, in.constants);
     set.sampled(1, ctx.view(in.depth, VK_IMAGE_ASPECT_DEPTH_BIT), ctx.layout(in.depth), in.shared->samplers.nearest());
     pushMarchInputs(set, ctx, in);

@@ -1,7 +1,7 @@
 #pragma once
 // The per-pixel march (shaders/shared/pixel_march.frag): each pixel marches its own ray through
 // the shadow map, one step per texel it crosses. Brute force draws it over every pixel; the
-// epipolar fix-up over the pixels its unwarp marked in a stencil, with an optional step cap. The
+// epipolar fix-up over the pixels its unwarp left unmarked in a stencil, with an optional step cap. The
 // caller adds the pass, its target and any stencil it tests; these add the march's reads and draw.
 #include "node_inputs.h"
 #include "shared_nodes.h"
@@ -16,7 +16,7 @@ void declarePixelMarch(rg::PassBuilder& pass, const NodeInputs& in);
 struct PixelMarchDraw {
     const char* pipeline = "";       // names the pipeline, with the light's variant and the targets
     uint32_t maxSteps = 0;           // steps per ray at most; 0: one per texel crossed
-    bool whereStencilIsOne = false;  // draw only where the pass's stencil attachment holds 1
+    bool whereStencilIsZero = false;  // draw only where the pass's stencil attachment holds 0
     // Composite into these (declared by the pass with declareCompositeTarget) instead of writing
     // Lin to the pass's color attachment: the epipolar fix-up.
     const CompositeOutputs* composite = nullptr;

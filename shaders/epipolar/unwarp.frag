@@ -3,9 +3,10 @@
 // Epipolar -> screen (seed 000): find the slice through the pixel and its place along it, and
 // filter the 2 x 2 nearest samples bilaterally (weights zeroed where their camera z differs from
 // the pixel's), and composite the result into the engine's color (composite_into.glsl): no
-// screen-sized Lin texture and no composite pass. With fix-up, a pixel no sample can serve is left
-// to the fix-up, which composites it; a second draw (mode 1) keeps only those pixels' fragments,
-// marking them in the camera stencil. Without fix-up they fall back to plain bilinear weights.
+// screen-sized Lin texture and no composite pass. With fix-up, a pixel no sample can serve is
+// discarded before it stores anything, so the camera stencil ends up 1 exactly where the unwarp
+// served the pixel and the fix-up takes the zeros: one draw searches the samples once. Without
+// fix-up such pixels fall back to plain bilinear weights.
 // In ratio mode the samples carry the shadowed fraction, and the pixel's own unshadowed Lin (closed
 // form) scales it back: the glow around a light, which no sparse sampling resolves, stays exact.
 #include "epipolar_geometry.glsl"
@@ -21,7 +22,6 @@ layout(binding = 7) uniform sampler2D pointTable;
 #include "light_volume.glsl"
 #include "composite_into.glsl"
 layout(push_constant) uniform Push {
-    int mode;     // 0: composite (leaving the fix-up's pixels alone with fix-up), 1: mark them
     int fixup;    // 1: the fix-up serves the pixels no sample can
     int addOnly;  // 1: a frame's later light (compositeInto)
 } pc;
@@ -70,12 +70,8 @@ void main() {
         }
     }
     bool resolved = weight > 1e-3;
-    // The mark draw stores nothing: a surviving fragment writes the stencil.
-    if (pc.mode == 1) {
-        if (resolved) discard;
-        return;
-    }
-    if (pc.fixup != 0 && !resolved) return;  // the fix-up's
+    // The fix-up's pixel: no store, and no stencil mark (the discard keeps the stencil at 0).
+    if (pc.fixup != 0 && !resolved) discard;
     vec4 value = resolved ? sum / weight : (plainWeight > 0.0 ? plain / plainWeight : vec4(0.0));
     vec3 v = rayDirection(p);
     float S = rayLength(z, v);
