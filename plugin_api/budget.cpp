@@ -170,6 +170,9 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
         l.light = static_cast<ls::LightKind>(static_cast<int>(type));
         l.shadowed = true;  // a point light with its cube map
         l.minMaxTrees = s.minMaxTrees && ls::treesFit(shadowMapSize);
+        l.fixup = s.fixup;
+        l.slices = s.slices;
+        l.samples = s.samplesPerSlice;
         l.shadowMapSize = shadowMapSize;
         l.shadowMap = engineShadowMap(type, shadowMapSize);
         if (type != LightType::Directional) {

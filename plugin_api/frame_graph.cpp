@@ -1,5 +1,7 @@
 #include "frame_graph.h"
 
+#include <algorithm>
+
 #include "analytic/analytic_node.h"
 #include "brute_force/brute_force_node.h"
 #include "cone_march/cone_march_node.h"
@@ -153,8 +155,8 @@ FrameGraph buildLightsGraph(const GraphConfig& c, const std::vector<ls::Shared>&
         const ls::CompositeTarget target{color, linOut, chains != 0};
         ls::CompositeOutputs o;
         if (l.shadowed && c.method == Method::Epipolar) {
-            ls::EpipolarSizes sizes{c.slices, c.samples, l.shadowMapSize};
-            ls::EpipolarOptions options{l.minMaxTrees, c.fixup, l.light == ls::LightKind::Point};
+            ls::EpipolarSizes sizes{l.slices, l.samples, l.shadowMapSize};
+            ls::EpipolarOptions options{l.minMaxTrees, l.fixup, l.light == ls::LightKind::Point};
             o = ls::addEpipolarNodes(g, in, sizes, options, target);
         } else {
             const rg::ImageRef lin = l.shadowed ? ls::addBruteForce(g, in) : ls::addUnshadowed(g, in);
@@ -166,9 +168,11 @@ FrameGraph buildLightsGraph(const GraphConfig& c, const std::vector<ls::Shared>&
     }
     g.setNameSuffix({});
     if (chains == 0) ls::addComposite(g, base, color, {}, linOut);  // extinction only
+    const bool anyFixup = std::any_of(c.lights.begin(), c.lights.end(),
+                                      [](const LightChainConfig& l) { return l.fixup; });
     fg.summary = std::to_string(c.lights.size()) + " lights, " + std::to_string(chains) + " reaching the view: " +
                  (c.method == Method::BruteForce ? "brute-force ray marching"
-                                                 : std::string("epipolar sampling") + (c.fixup ? ", fix-up" : "")) +
+                                                 : std::string("epipolar sampling") + (anyFixup ? ", fix-up" : "")) +
                  " per shadowed light, closed form per unshadowed one; the first composite applies the "
                  "extinction, each light's Lin is added to the color as its chain ends";
     return fg;

@@ -35,11 +35,14 @@ struct LightChainConfig {
     bool shadowed = false;
     bool touchesView = true;
     bool minMaxTrees = true;
+    bool fixup = true;             // the light's own settings (LightInput::settings, or the frame's)
+    uint32_t slices = 0, samples = 0;
     uint32_t shadowMapSize = 0;
     ImportState shadowMap, lightColor, table;  // format UNDEFINED: absent
     bool operator==(const LightChainConfig& o) const {
         return light == o.light && shadowed == o.shadowed && touchesView == o.touchesView &&
-               minMaxTrees == o.minMaxTrees && shadowMapSize == o.shadowMapSize && shadowMap == o.shadowMap &&
+               minMaxTrees == o.minMaxTrees && fixup == o.fixup && slices == o.slices &&
+               samples == o.samples && shadowMapSize == o.shadowMapSize && shadowMap == o.shadowMap &&
                lightColor == o.lightColor && table == o.table;
     }
 };

@@ -740,10 +740,14 @@ FrameDescription withLight(const FrameDescription& frame, size_t i) {
     f.light = frame.lights[i].light;
     f.shadowMap = frame.lights[i].shadowMap;
     f.lightColor = frame.lights[i].lightColor;
+    if (frame.lights[i].settings) {
+        f.profile = Profile::Custom;
+        f.custom = *frame.lights[i].settings;
+    }
     return f;
 }
 
-std::string lightMessage(const std::string& message, size_t i) {
+std::string lightMessage(const std::string& message, size_t i, bool ownSettings) {
     const std::string prefix = "lights[" + std::to_string(i) + "].";
     const std::string lead = "lightscatter: ";
     std::string m = message.rfind(lead, 0) == 0 ? message.substr(lead.size()) : message;
@@ -751,13 +755,15 @@ std::string lightMessage(const std::string& message, size_t i) {
     for (size_t k = 0; k < m.size();) {
         const bool start = k == 0 || !identifierChar(m[k - 1]);
         bool matched = false;
-        for (const char* field : {"light.", "shadowMap", "lightColor"}) {
+        for (const char* field : {"light.", "shadowMap", "lightColor", "custom."}) {
             const std::string f = field;
             if (!start || m.compare(k, f.size(), f) != 0) continue;
+            // The settings checked as the frame's custom are the light's own where it has them.
+            if (f == "custom." && !ownSettings) continue;
             const size_t end = k + f.size();
             // "shadowMap" and "lightColor" as whole names only (not "shadowMapSize").
             if (f.back() != '.' && end < m.size() && std::isalnum(static_cast<unsigned char>(m[end]))) continue;
-            out += prefix + f;
+            out += prefix + (f == "custom." ? std::string("settings.") : f);
             k = end;
             matched = true;
             break;
@@ -787,7 +793,7 @@ std::vector<FrameSetup> setupLights(const FrameDescription& frame, bool withImag
         try {
             setups.push_back(setupFrame(withLight(frame, i), withImages));
         } catch (const InvalidInput& e) {
-            throw InvalidInput(lightMessage(e.what(), i));
+            throw InvalidInput(lightMessage(e.what(), i, frame.lights[i].settings.has_value()));
         }
     }
     return setups;

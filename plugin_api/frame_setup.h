@@ -43,7 +43,7 @@ FrameDescription withLight(const FrameDescription& frame, size_t i);
 // A message about the frame's single light, retold about lights[i]: "light.x" becomes
 // "lights[i].light.x", "shadowMap" and "lightColor" become "lights[i].shadowMap" and so on, and
 // the message says which light it is about.
-std::string lightMessage(const std::string& message, size_t i);
+std::string lightMessage(const std::string& message, size_t i, bool ownSettings = false);
 
 void checkSettings(const Settings& s);
 void checkOccluders(const std::vector<Occluder>& occluders);

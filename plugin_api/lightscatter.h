@@ -309,6 +309,12 @@ struct LightInput {
     Light light;
     std::optional<ImageInput> shadowMap;   // the light's depth (sampled); 6 layers for a point light
     std::optional<ImageInput> lightColor;  // optional light-space color (stained glass), sampled
+    // This light's own settings (for instance profileSettings(Profile::HighPerformance) for a small
+    // spot beside a high-quality sun): its chain uses them as if the frame's profile were Custom
+    // with these, checked by the same rules (errors name lights[i].settings.field). Without them
+    // the light takes the frame's profile and custom. The method stays the frame's, and budget()
+    // assumes one profile for every light.
+    std::optional<Settings> settings;
 };
 
 struct FrameDescription {

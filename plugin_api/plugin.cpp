@@ -204,7 +204,7 @@ struct Plugin::Impl {
             try {
                 detail::chooseMethod(choice.method, setups[i], touches[i]);
             } catch (const InvalidInput& e) {
-                throw InvalidInput(detail::lightMessage(e.what(), i));
+                throw InvalidInput(detail::lightMessage(e.what(), i, frame.lights[i].settings.has_value()));
             }
         }
         lastChoice = choice;
@@ -224,6 +224,9 @@ struct Plugin::Impl {
             l.shadowed = s.shadowed;
             l.touchesView = touches[i];
             l.minMaxTrees = s.epipolar.minMaxTrees;
+            l.fixup = s.epipolar.fixup;
+            l.slices = s.epipolar.slices;
+            l.samples = s.epipolar.samples;
             l.shadowMapSize = s.light.shadowMapSize;
             if (frame.lights[i].shadowMap) l.shadowMap = state(*frame.lights[i].shadowMap);
             if (frame.lights[i].lightColor) l.lightColor = state(*frame.lights[i].lightColor);

@@ -1,6 +1,6 @@
 // Several lights in one frame (FrameDescription::lights): the summed Lin of two lights equals the
-// sum of the two single-light renders, for epipolar and brute force; a light whose volume misses
-// the view adds no node; the refusals name the fields.
+// sum of the two single-light renders, for epipolar and brute force, each light on its own settings
+// when it has them; a light whose volume misses the view adds no node; the refusals name the fields.
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -95,6 +95,47 @@ TEST_F(LightsGpu, BruteForceTwoSpotsSumToTheSingleRenders) {
     checkSum(Method::BruteForce);
 }
 
+// Each light's chain runs on its own settings: the second spot's coarse sampling (fewer slices and
+// samples, a long initial step, no fix-up) gives a frame equal to the sum of the two single renders
+// made with each light's settings, and a different one when the frame's settings rule both.
+TEST_F(LightsGpu, EachLightTakesItsOwnSettings) {
+    TestFrame a(dev(), sceneWith(spotOverGrille()));
+    TestFrame b(dev(), sceneWith(secondSpot()));
+    const auto fine = smallSettings(a.spec().screen);
+    lightscatter::Settings coarse = fine;
+    coarse.slices = 32;
+    coarse.samplesPerSlice = 24;
+    coarse.initialSampleStep = 16;
+    coarse.fixup = false;
+    const auto da = a.description(Method::Epipolar, lightscatter::Profile::Custom, fine);
+    const auto db = b.description(Method::Epipolar, lightscatter::Profile::Custom, coarse);
+    a.resetColor();
+    plugin().render(da);
+    const auto linA = a.inscatter();
+    b.resetColor();
+    plugin().render(db);
+    const auto linB = b.inscatter();
+    auto own = input(db);
+    own.settings = coarse;
+    auto differences = [&](const std::vector<lightscatter::LightInput>& lights) {
+        a.resetColor();
+        plugin().render(withLights(da, lights));
+        const auto sum = a.inscatter();
+        double worst = 0;
+        for (size_t i = 0; i < sum.size(); ++i)
+            if (i % 4 != 3)
+                worst = std::max(worst, std::fabs(static_cast<double>(sum[i]) - linA[i] - linB[i]));
+        return worst;
+    };
+    const double peak = peakOf(linA) + peakOf(linB);
+    const double withOwn = differences({input(da), own});
+    const double withFrames = differences({input(da), input(db)});  // both on `fine`
+    std::printf("own settings: max |diff| %.3g; the frame's settings for both: %.3g (peak %.3g)\n", withOwn,
+                withFrames, peak);
+    EXPECT_LE(withOwn, 1e-6 * peak);
+    EXPECT_GT(withFrames, 1e-3 * peak);  // the coarse settings change the second spot's Lin
+}
+
 TEST_F(LightsGpu, SunAndTwoSpotsInOneFrame) {
     TestFrame a(dev(), sceneWith(spotOverGrille()));
     TestFrame b(dev(), sceneWith(secondSpot()));
@@ -147,6 +188,12 @@ TEST_F(LightsGpu, RefusalsNameTheFields) {
     missing.lights[1].shadowMap.reset();
     const std::string m = refusal(missing);
     EXPECT_NE(m.find("lights[1].shadowMap is missing"), std::string::npos) << m;
+    // A light's own settings are checked like the frame's custom, and named as the light's.
+    auto ownBad = withLights(da, {input(da), input(da)});
+    ownBad.lights[1].settings = settings;
+    ownBad.lights[1].settings->slices = 6;
+    const std::string o = refusal(ownBad);
+    EXPECT_NE(o.find("lights[1].settings.slices"), std::string::npos) << o;
     // A method without chains for several lights refuses them, naming itself.
     auto slices = withLights(da, {input(da), input(da)});
     slices.method = Method::Slices;
