@@ -1,8 +1,14 @@
 #!/usr/bin/env bash
 # Regenerates docs/performance.md and its plots: the benchmark of the shipped scenes (bench/report.json,
 # or the file given), the hard-case suite, the memory budget, then the plots and the page.
-#   scripts/make-report.sh                 # lavapipe-sized configuration (about 15 minutes on 2 cores,
-#                                          # and about 20 more for bench/slices.json at 1920x1080;
+#   scripts/make-report.sh                 # bench/report.json at 1920x1080 in two runs: the timings
+#                                          # (measureError false; about 45 minutes on 2 cores, run it on
+#                                          # a quiet machine) and the errors (one frame per configuration
+#                                          # against the float64 references, about 30 minutes the first
+#                                          # time, most of it the references, which build/bench-report-error
+#                                          # /references keeps); then bench/trees.json and
+#                                          # bench/seed_size.json (about 10 minutes, timings), the hard
+#                                          # cases; and about 20 more for bench/slices.json at 1920x1080;
 #                                          # LS_REPORT_SLICES=0 skips it; bench/occluders.json, the beam
 #                                          # tree against 1 to 1000 boxes at 1920x1080, is about 10 more:
 #                                          # LS_REPORT_OCCLUDERS=0 skips it; both then reuse
@@ -74,15 +80,41 @@ if [[ "$config" == --occluders-only ]]; then
   echo "docs/performance.md: section 'Beam tree against scene complexity' replaced"
   exit 0
 fi
-./build/host_example/lightscatter bench --config "$config" --out build/bench-report
+# One configuration, two runs: the timings on their own (no reference rendered between frames, the
+# CPU left to the runs) and the errors, one frame each, which do not depend on the machine's load.
+mkdir -p build/bench-report build/bench-report-error build/bench-trees build/bench-seed-size
+/usr/bin/python3 - "$config" <<'PY'
+import json, sys
+c = json.load(open(sys.argv[1]))
+json.dump(dict(c, measureError=False), open("build/bench-report/config.json", "w"), indent=1)
+json.dump(dict(c, frames=1, warmup=0), open("build/bench-report-error/config.json", "w"), indent=1)
+PY
+timed() {  # CONFIG DIR: a timing run, with the load average around it for the page
+  uptime > "$2/load-before.txt"
+  ./build/host_example/lightscatter bench --config "$1" --out "$2"
+  uptime > "$2/load-after.txt"
+}
+timed build/bench-report/config.json build/bench-report
+timed bench/trees.json build/bench-trees
+timed bench/seed_size.json build/bench-seed-size
+./build/host_example/lightscatter bench --config build/bench-report-error/config.json --out build/bench-report-error
 ./build/host_example/lightscatter bench --config bench/hard.json --out build/bench-hard
 if [[ "${LS_REPORT_SLICES:-1}" != 0 ]]; then
   ./build/host_example/lightscatter bench --config bench/slices.json --out build/bench-slices
 fi
 ./build/host_example/lightscatter budget --json > build/bench-report/budget.json
-/usr/bin/python3 scripts/plot_bench.py build/bench-report "$out"
+/usr/bin/python3 - <<'PY'
+# The plots need both halves: the timing run's rows with the error run's errors.
+import json, sys
+sys.path.insert(0, "scripts")
+import report_speed as rs
+runs = rs.merge_errors(rs.load_runs("build/bench-report"), rs.load_runs("build/bench-report-error"))
+json.dump({"runs": runs}, open("build/bench-report/merged.json", "w"))
+PY
+mkdir -p build/bench-report/merged && cp build/bench-report/merged.json build/bench-report/merged/bench.json
+/usr/bin/python3 scripts/plot_bench.py build/bench-report/merged "$out"
 rm -f "$out"/strip_*.png
-for s in build/bench-report/strips/*_epipolar_balanced.png build/bench-report/strips/*_brute-force.png; do
+for s in build/bench-report-error/strips/*_epipolar_balanced.png build/bench-report-error/strips/*_brute-force.png; do
   cp "$s" "$out/strip_$(basename "$s")"
 done
 if [[ -f build/bench-slices/bench.json ]]; then
@@ -115,6 +147,10 @@ if [[ "${LS_REPORT_FLICKER:-1}" != 0 ]]; then
 elif [[ -f build/bench-flicker/bench.json ]]; then
   flicker_dir=build/bench-flicker  # an earlier run's
 fi
+# Written beside the page, then moved over it: a section whose results this run lacks (the flicker's,
+# say) is copied from the page as it was.
 /usr/bin/python3 scripts/write_report.py build/bench-report build/bench-hard "$config" build/bench-slices \
-  "$occluders_dir" "${lights_dirs[@]}" "$flicker_dir" > docs/performance.md
+  "$occluders_dir" "${lights_dirs[@]}" "$flicker_dir" build/bench-report-error build/bench-trees \
+  build/bench-seed-size > build/performance.md.new
+mv build/performance.md.new docs/performance.md
 echo "docs/performance.md regenerated"

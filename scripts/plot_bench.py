@@ -30,18 +30,32 @@ def pareto(points):
     return front
 
 
+MARKERS = "osD^vP*Xhp<>8"
+
+
 def time_vs_error(runs, scene, out):
+    """Every configuration of the scene's table (the methods and epipolar's profiles) as its own marker
+    in a legend beside the plot, so no label overlaps another; the one-parameter sweeps as small grey
+    dots (their figures are in the tables), and the Pareto front over everything."""
     rows = [r for r in runs if r["scene"] == scene and "error" in r and r["error"]["meanRelative"] > 0]
     if not rows:
         return None
-    fig, ax = plt.subplots(figsize=(7.5, 5))
-    for r in rows:
-        key = "brute-force" if r["method"] == "brute-force" else r["family"]
-        ax.scatter(r["time"]["median"], r["error"]["meanRelative"], color=COLORS.get(key, "black"), s=28, zorder=3)
-        ax.annotate(r["label"], (r["time"]["median"], r["error"]["meanRelative"]), fontsize=7,
-                    xytext=(4, 3), textcoords="offset points")
+    fig, ax = plt.subplots(figsize=(9.5, 5))
+    named = [r for r in rows if r["family"] == "profiles"]
+    swept = [r for r in rows if r["family"] != "profiles"]
+    if swept:
+        ax.scatter([r["time"]["median"] for r in swept], [r["error"]["meanRelative"] for r in swept],
+                   color="0.7", s=12, zorder=2, label="one-parameter sweeps (tables)")
+    cmap = plt.get_cmap("tab20")
+    for k, r in enumerate(named):
+        label = r["label"]
+        if r["method"] == "auto" and r.get("methodRan"):
+            label = f"auto (ran {r['methodRan']})"
+        ax.scatter(r["time"]["median"], r["error"]["meanRelative"], color=cmap(k % 20),
+                   marker=MARKERS[k % len(MARKERS)], s=46, zorder=3, edgecolors="black", linewidths=0.4,
+                   label=label)
     front = pareto([(r["time"]["median"], r["error"]["meanRelative"]) for r in rows])
-    ax.plot([p[0] for p in front], [p[1] for p in front], "k--", lw=1, label="Pareto front", zorder=2)
+    ax.plot([p[0] for p in front], [p[1] for p in front], "k--", lw=1, label="Pareto front", zorder=1)
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("median frame time of the plugin (ms)")
@@ -49,7 +63,7 @@ def time_vs_error(runs, scene, out):
     w, h = rows[0]["size"]
     ax.set_title(f"{scene}, {w}x{h}\n{device_note(rows)}", fontsize=9)
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=7.5, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
     path = out / f"time_vs_error_{scene}.png"
     fig.tight_layout()
     fig.savefig(path, dpi=110)
@@ -77,10 +91,48 @@ def scaling(runs, family, x_of, xlabel, name, out):
     ax.set_ylabel("median plugin time (ms), p10-p90 bars")
     ax.set_title(device_note(rows), fontsize=9)
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=7)
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
     path = out / name
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=110, bbox_inches="tight")
+    plt.close(fig)
+    return path
+
+
+def screen_scaling(runs, out):
+    """Time against screen size, a panel per scene and a line per method: the size sweep (balanced
+    settings) and the configuration's own size (the methods' rows and epipolar balanced)."""
+    rows = [r for r in runs if r["family"] == "size" or
+            (r["family"] == "profiles" and (r["method"] != "epipolar" or r["label"] == "epipolar balanced"))]
+    if not any(r["family"] == "size" for r in rows):
+        return None
+    scenes = sorted({r["scene"] for r in rows})
+    cols = 2
+    fig, axes = plt.subplots((len(scenes) + cols - 1) // cols, cols, figsize=(11, 3.6 * ((len(scenes) + 1) // 2)),
+                             squeeze=False)
+    methods = sorted({r["method"] for r in rows})
+    cmap = plt.get_cmap("tab10")
+    for ax, scene in zip(axes.flat, scenes):
+        for k, m in enumerate(methods):
+            rs = sorted((r for r in rows if r["scene"] == scene and r["method"] == m),
+                        key=lambda r: r["size"][0] * r["size"][1])
+            if rs:
+                ax.plot([r["size"][0] * r["size"][1] for r in rs], [r["time"]["median"] for r in rs],
+                        marker=MARKERS[k % len(MARKERS)], ms=4, color=cmap(k % 10), label=m)
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_title(scene, fontsize=9)
+        ax.set_xlabel("pixels", fontsize=8)
+        ax.set_ylabel("median plugin time (ms)", fontsize=8)
+        ax.grid(True, which="both", alpha=0.3)
+    for ax in list(axes.flat)[len(scenes):]:
+        ax.axis("off")
+    handles, labels = axes.flat[0].get_legend_handles_labels()
+    fig.legend(handles, labels, fontsize=8, loc="center left", bbox_to_anchor=(1.0, 0.5))
+    fig.suptitle(device_note(rows), fontsize=9)
+    fig.tight_layout()
+    path = out / "scaling_screen.png"
+    fig.savefig(path, dpi=110, bbox_inches="tight")
     plt.close(fig)
     return path
 
@@ -94,7 +146,7 @@ def main():
     made = []
     for scene in sorted({r["scene"] for r in runs}):
         made.append(time_vs_error(runs, scene, out))
-    made.append(scaling(runs, "size", lambda r: r["size"][0] * r["size"][1], "pixels", "scaling_screen.png", out))
+    made.append(screen_scaling(runs, out))
     made.append(scaling(runs, "shadowMapSize", lambda r: r["shadowMapSize"], "shadow-map size (texels per side)",
                         "scaling_shadow_map.png", out))
     made.append(scaling([dict(r, family="ss") for r in runs if r["family"] in ("slices", "samples")], "ss",

@@ -310,6 +310,87 @@ def gpu_section(gpu_dir):
     return out
 
 
+def summary_lines(runs, rs, trees_dir, seed_dir):
+    """The page's first section: epipolar balanced against brute force on every scene at the run's
+    size, where the time goes, the screen size where epipolar overtakes, the trees at high quality
+    and seed 000's own size, each against the target we hold the method to."""
+    out = []
+    p = out.append
+    w, h = runs[0]["size"]
+    p(f"## At a glance ({w}x{h})\n")
+    p("Epipolar (balanced) against brute force, same scene, size and run. Targets: at least 30x brute force's "
+      "speed with a mean error no more than brute force's plus 0.5 percentage points; the full-screen passes "
+      "(unwarp and fix-up, which run per pixel) under 10% of the total.\n")
+    p("| scene | epipolar balanced ms | brute force ms | speed-up | epipolar error | brute-force error | "
+      "ray march share | full-screen share |")
+    p("|---|---|---|---|---|---|---|---|")
+    for scene in sorted({r["scene"] for r in runs}):
+        speed, b, e = rs.speedup(runs, scene, "epipolar balanced", (w, h))
+        if not speed:
+            continue
+        sh = rs.shares(e)
+        ee, be = e.get("error", {}).get("meanRelative"), b.get("error", {}).get("meanRelative")
+        p(f"| {scene} | {fmt(e['time']['median'])} | {fmt(b['time']['median'])} | {fmt(speed)}x | "
+          f"{fmt(ee)} | {fmt(be)} | {f'{100 * sh[0]:.0f}%' if sh else '-'} | {f'{100 * sh[1]:.0f}%' if sh else '-'} |")
+    p("")
+    floors = [t for r in runs if r["family"] == "profiles" and r["method"] == "cone-march" and tuple(r["size"]) == (w, h)
+              for n, t in rs.pass_times(r).items() if n == "composite"]
+    if floors:
+        p(f"For scale: a full-screen pass that only composites (cone-march's composite: read its Lin and the depth, "
+          f"read-modify-write the engine's color) takes {fmt(min(floors))} to {fmt(max(floors))} ms here, so on this "
+          "device no per-pixel pass costs less; the unwarp does that and the bilateral search of four samples, "
+          "and the fix-up marches the pixels the unwarp could not serve.\n")
+    crossings = []
+    for scene in sorted({r["scene"] for r in runs}):
+        table, cross = rs.crossover(runs, scene)
+        if not table:
+            continue
+        if cross is None:
+            crossings.append(f"{scene}: not within the sizes measured")
+        elif cross == 0:
+            crossings.append(f"{scene}: ahead at every size measured, from {table[0][1][0]}x{table[0][1][1]}")
+        else:
+            crossings.append(f"{scene}: about {rs.side_of(cross)} ({cross / 1e6:.2g} million pixels)")
+    if crossings:
+        p("Where epipolar (balanced settings) overtakes brute force, interpolated between the screen sizes "
+          "measured ([Scaling](#scaling) has the times): " + "; ".join(crossings) + ".\n")
+    trees = rs.load_runs(trees_dir) if trees_dir else []
+    if trees:
+        parts = []
+        for scene in sorted({r["scene"] for r in trees}):
+            on = next((r for r in trees if r["scene"] == scene and r["label"] == "minMaxTrees=on"), None)
+            off = next((r for r in trees if r["scene"] == scene and r["label"] == "minMaxTrees=off"), None)
+            if on and off:
+                m_on = sum(ms for n, ms in rs.pass_times(on).items() if n.startswith("ray march"))
+                m_off = sum(ms for n, ms in rs.pass_times(off).items() if n.startswith("ray march"))
+                if m_on > 0:
+                    parts.append(f"{scene} {fmt(m_off / m_on)}x")
+        p("The min/max trees at high quality, on the ray march alone (target 8x, seed 000's 8.6x): "
+          + ", ".join(parts) + " ([the trees](#the-minmax-trees-at-high-quality)).\n")
+    seed_rows, first = rs.seed_size_rows(seed_dir) if seed_dir else ({}, None)
+    if seed_rows:
+        sw, sh_ = first["size"]
+        parts = []
+        for prof in ("high-quality", "balanced", "high-performance"):
+            if prof in seed_rows:
+                ours = ", ".join(f"{sc} {fmt(x)}x" for sc, x, _, _ in seed_rows[prof])
+                parts.append(f"{prof} {ours} (seed {SEED['brute-force'][0] / SEED[prof][0]:.1f}x)")
+        p(f"At seed 000's size, {sw}x{sh_}, the speed-ups over brute force: " + "; ".join(parts) +
+          " ([Beside seed 000](#beside-seed-000)).\n")
+    return out
+
+
+def kept_section(page_text, heading):
+    """The section at `heading` of the page as it was (up to the next '## '), for a section whose
+    results this run does not have: it stays as last measured, with its own date and command."""
+    text = page_text.split("\n")
+    if heading not in text:
+        return []
+    start = text.index(heading)
+    end = next((i for i in range(start + 1, len(text)) if text[i].startswith("## ")), len(text))
+    return text[start:end]
+
+
 def flicker_lines(bench_dir, page):
     sys.path.insert(0, str(Path(__file__).resolve().parent))
     import report_flicker as rf
@@ -344,7 +425,17 @@ def main():
     lights_scaling_dir = Path(sys.argv[6]) if len(sys.argv) > 6 and sys.argv[6] else None
     lights_dir = Path(sys.argv[7]) if len(sys.argv) > 7 and sys.argv[7] else None
     flicker_dir = Path(sys.argv[8]) if len(sys.argv) > 8 and sys.argv[8] else None
+    # The timing run (measureError false, on a quiet machine) and the same configurations' errors
+    # from a run of one frame each; then min/max trees at high quality, and seed 000's screen size.
+    errors_dir = Path(sys.argv[9]) if len(sys.argv) > 9 and sys.argv[9] else None
+    trees_dir = Path(sys.argv[10]) if len(sys.argv) > 10 and sys.argv[10] else None
+    seed_dir = Path(sys.argv[11]) if len(sys.argv) > 11 and sys.argv[11] else None
+    old_page = Path("docs/performance.md").read_text() if Path("docs/performance.md").exists() else ""
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    import report_speed as rs
     runs = json.loads((bench_dir / "bench.json").read_text())["runs"]
+    if errors_dir:
+        runs = rs.merge_errors(runs, rs.load_runs(errors_dir))
     hard = json.loads((hard_dir / "bench.json").read_text())["runs"]
     budget = json.loads((bench_dir / "budget.json").read_text())
     first = runs[0]
@@ -363,9 +454,14 @@ def main():
       "every pixel and channel; p99 and max are of |a - b| divided by the reference's 99th percentile; "
       "'over 5%' counts pixels off by more than 5% of that percentile; PSNR is of the tone-mapped 8-bit "
       "images.\n")
+    if errors_dir:
+        p("The times come from a run with `measureError: false` on a quiet machine; the errors from a second run "
+          "of the same configurations, one frame each, matched row by row (an error does not depend on how "
+          "fast the device is, so that run need not be quiet).\n")
     if cpu:
         p("> No GPU figures on this page's tables: they are lavapipe's. The section [GPU timings](#gpu-timings) "
           "holds a GPU machine's run of bench/full.json when one was lent (`scripts/gpu-bench.sh`).\n")
+    out += summary_lines(runs, rs, trees_dir, seed_dir)
 
     scenes = sorted({r["scene"] for r in runs})
     for scene in scenes:
@@ -374,11 +470,13 @@ def main():
         w, h = rows[0]["size"]
         p(f"## {scene} ({w}x{h})\n")
         scene_file = Path("scenes") / f"{scene}.json"
-        if scene_file.exists() and json.loads(scene_file.read_text()).get("light", {}).get("type") == "point":
-            p("This scene's light is a point light, which the plugin does not shadow (no cube maps): epipolar and "
-              "brute force compute the same closed form (the point-light table), analytic seed 001's arctangent "
-              "(which ignores the phase function's shape and extinction), cone-march samples the same integrand; "
-              "the error is mostly the shadows the reference has and the plugin lacks.\n")
+        light = json.loads(scene_file.read_text()).get("light", {}) if scene_file.exists() else {}
+        if light.get("type") == "point" and not light.get("shadowMapSize"):
+            p("This scene's point light has no shadow map (the scene gives it none; `scenes/point_cage` is the "
+              "one with a cube map, in [Several lights](#several-lights)): epipolar and brute force compute the "
+              "same closed form (the point-light table), analytic seed 001's arctangent (which ignores the "
+              "phase function's shape and extinction), cone-march samples the same integrand; the error is "
+              "mostly the shadows the reference has and the plugin lacks.\n")
         p(f"![time against error, {scene}](performance/time_vs_error_{scene}.png)\n")
         p("| configuration | slices x samples | median ms (p10-p90) | speed-up over brute force | mean rel. error | "
           "p99 | max | over 5% | PSNR dB | non-finite |")
@@ -397,14 +495,23 @@ def main():
               f"{fmt(e.get('max'))} | {fmt(100 * e['fractionOver5pct']) + '%' if e else '-'} | "
               f"{fmt(e.get('psnrDb'))} | {r['nonFinite']} |")
         p("")
+        balanced = next((r for r in rows if r["label"] == "epipolar balanced"), None)
+        if balanced:
+            out += rs.pass_breakdown_lines(balanced, fmt)
         sweeps = [r for r in runs if r["scene"] == scene and r["family"] not in ("profiles", "cone")]
         if sweeps:
-            p("Sweeps from the balanced profile (one parameter at a time):\n")
-            p("| sweep | median ms | mean rel. error | over 5% |")
-            p("|---|---|---|---|")
+            p("Sweeps from the balanced profile (one parameter at a time; the speed-up is over brute force at the "
+              "same screen and shadow-map size, same run):\n")
+            p("| sweep | median ms | speed-up over brute force | mean rel. error | over 5% |")
+            p("|---|---|---|---|---|")
             for r in sweeps:
                 e = r.get("error")
-                p(f"| {r['label']} | {fmt(r['time']['median'])} | {fmt(e['meanRelative']) if e else '(timing only)'} | "
+                b = next((x for x in runs if x["scene"] == scene and x["method"] == "brute-force"
+                          and tuple(x["size"]) == tuple(r["size"]) and x["shadowMapSize"] == r["shadowMapSize"]
+                          and x["family"] in ("profiles", "size", "shadowMapSize")), None)
+                speed = b["time"]["median"] / r["time"]["median"] if b and r["time"]["median"] > 0 else None
+                p(f"| {r['label']} | {fmt(r['time']['median'])} | {fmt(speed) + 'x' if speed else '-'} | "
+                  f"{fmt(e['meanRelative']) if e else '(timing only)'} | "
                   f"{fmt(100 * e['fractionOver5pct']) + '%' if e else '-'} |")
             p("")
         p(f"Reference, epipolar (balanced) and error heat map (black 0, white 10% of the reference's p99):\n")
@@ -481,30 +588,62 @@ def main():
         sys.path.insert(0, str(Path(__file__).resolve().parent))
         import report_flicker as rf
         out += rf.flicker_section(flicker_dir, "docs/performance")
+    else:
+        out += kept_section(old_page, "## Temporal stability")
 
     p("## Scaling\n")
+    size_tables = [(scene, rs.crossover(runs, scene)[0]) for scene in scenes]
+    if any(t for _, t in size_tables):
+        p("Epipolar (balanced settings) against brute force as the screen grows, same run (median ms; the "
+          "largest size is the tables' own run):\n")
+        p("| scene | screen | epipolar ms | brute force ms | speed-up |")
+        p("|---|---|---|---|---|")
+        for scene, table in size_tables:
+            for pixels, size, ratio in table:
+                e = next(r for r in runs if r["scene"] == scene and tuple(r["size"]) == size and r["method"] == "epipolar"
+                         and r["family"] in ("size", "profiles") and r["label"] in ("epipolar balanced", f"epipolar size={size[0]}x{size[1]}"))
+                b = next(r for r in runs if r["scene"] == scene and tuple(r["size"]) == size and r["method"] == "brute-force"
+                         and r["family"] in ("size", "profiles"))
+                p(f"| {scene} | {size[0]}x{size[1]} | {fmt(e['time']['median'])} | {fmt(b['time']['median'])} | "
+                  f"{fmt(ratio)}x |")
+        p("")
     for name, what in (("scaling_screen", "screen size"), ("scaling_shadow_map", "shadow-map size"),
                        ("scaling_slices_samples", "slices x samples")):
         if Path("docs/performance", f"{name}.png").exists():
             p(f"Time against {what}:\n\n![{what}](performance/{name}.png)\n")
 
+    if trees_dir:
+        out += rs.trees_section(trees_dir, fmt)
     p("## Beside seed 000\n")
-    p("The seed's figures are a GeForce GTX 680 at 2560x1600 with a spot light; ours are the device above at the "
-      "size above, so only the ratios can be set side by side, and with a CPU device not even those mean much.\n")
-    p("| profile | seed ms | seed speed-up over brute force | ours: median speed-up over brute force (mean over scenes) | "
-      "seed memory MB | ours: peak MiB at 2560x1600 (aliased) | ours: total MiB |")
+    seed_rows, seed_first = rs.seed_size_rows(seed_dir) if seed_dir else ({}, None)
+    if seed_rows:
+        sw, sh_ = seed_first["size"]
+        p(f"The seed's figures are a GeForce GTX 680 at 2560x1600 with a spot light. Ours: `bench/seed_size.json`, "
+          f"the same profiles and brute force at {sw}x{sh_} on the device above ({seed_first['frames']} frames after "
+          "warm-up each, timings only), so the ratios can be set side by side; the milliseconds cannot (a CPU "
+          "device runs the per-pixel passes far slower, relative to the rest, than a GPU).\n")
+        p(f"| profile | seed ms | seed speed-up over brute force | ours at {sw}x{sh_}: speed-up over brute force, "
+          "per scene | seed memory MB | ours: peak MiB at 2560x1600 (aliased) | ours: total MiB |")
+    else:
+        p("The seed's figures are a GeForce GTX 680 at 2560x1600 with a spot light; ours are the device above at "
+          "the size above, so only the ratios can be set side by side.\n")
+        p("| profile | seed ms | seed speed-up over brute force | ours: speed-up over brute force (mean over "
+          "scenes) | seed memory MB | ours: peak MiB at 2560x1600 (aliased) | ours: total MiB |")
     p("|---|---|---|---|---|---|---|")
     for prof in ("high-quality", "balanced", "high-performance"):
         ms, mb = SEED[prof]
-        ratios = []
-        for scene in scenes:
-            b = next((r for r in runs if r["scene"] == scene and r["method"] == "brute-force" and r["family"] == "profiles"), None)
-            e = next((r for r in runs if r["scene"] == scene and r["label"] == f"epipolar {prof}"), None)
-            if b and e:
-                ratios.append(b["time"]["median"] / e["time"]["median"])
-        ours = sum(ratios) / len(ratios) if ratios else None
+        if seed_rows:
+            ours = ", ".join(f"{sc} {fmt(x)}x" for sc, x, _, _ in seed_rows.get(prof, [])) or "-"
+        else:
+            ratios = []
+            for scene in scenes:
+                b = next((r for r in runs if r["scene"] == scene and r["method"] == "brute-force" and r["family"] == "profiles"), None)
+                e = next((r for r in runs if r["scene"] == scene and r["label"] == f"epipolar {prof}"), None)
+                if b and e:
+                    ratios.append(b["time"]["median"] / e["time"]["median"])
+            ours = fmt(sum(ratios) / len(ratios)) + "x" if ratios else "-"
         bud = next((x for x in budget if x["profile"] == prof), None)
-        p(f"| {prof} | {ms} | {SEED['brute-force'][0] / ms:.1f}x | {fmt(ours) + 'x' if ours else '-'} | {mb} | "
+        p(f"| {prof} | {ms} | {SEED['brute-force'][0] / ms:.1f}x | {ours} | {mb} | "
           f"{bud['peakBytes'] / 2**20:.1f} | {bud['totalBytes'] / 2**20:.1f} |")
     p("\nMemory sizes come from `lightscatter budget` (estimated without a device: texels packed, 64 KiB "
       "alignment); docs/epipolar.md says what brought them to the seed's column.\n")
@@ -554,7 +693,8 @@ def main():
 
     p("## Which profile for which budget\n")
     for scene in scenes:
-        rows = [r for r in runs if r["scene"] == scene and r["family"] == "profiles" and r["method"] == "epipolar"]
+        rows = [r for r in runs if r["scene"] == scene and r["family"] == "profiles" and r["method"] == "epipolar"
+                and "error" in r]
         rows.sort(key=lambda r: r["time"]["median"])
         front, best = [], float("inf")
         for r in rows:
@@ -580,20 +720,10 @@ def main():
             spans[family] = sum(per_scene) / len(per_scene)
     for family, span in sorted(spans.items(), key=lambda kv: -kv[1]):
         p(f"- {family}: {100 * span:.2f} percentage points")
-    sizes = sorted({tuple(r["size"]) for r in runs if r["family"] == "size"})
-    if sizes:
-        p("\nEpipolar against brute force as the screen grows (median ms, mean over scenes):\n")
-        p("| screen | epipolar | brute force |")
-        p("|---|---|---|")
-        for size in sizes:
-            def mean_time(method):
-                ts = [r["time"]["median"] for r in runs if r["family"] == "size" and tuple(r["size"]) == size
-                      and r["method"] == method]
-                return sum(ts) / len(ts) if ts else None
-            p(f"| {size[0]}x{size[1]} | {fmt(mean_time('epipolar'))} | {fmt(mean_time('brute-force'))} |")
+    if any(r["family"] == "size" for r in runs):
         p("\nThe epipolar method's cost grows with slices x samples and the shadow map, hardly with the screen; "
-          "brute force's grows with every pixel. Where the table shows brute force ahead, the screen is too small "
-          "for the fixed cost to pay off on this device.\n")
+          "brute force's grows with every pixel ([Scaling](#scaling): where brute force is ahead, the screen is "
+          "too small for the fixed cost to pay off on this device).\n")
     # The GPU machine's run, kept where scripts/gpu-bench.sh's results were copied (LS_REPORT_GPU).
     gpu_dir = os.environ.get("LS_REPORT_GPU", "")
     out += gpu_section(Path(gpu_dir) if gpu_dir else None)

@@ -88,6 +88,34 @@ TEST(CliBench, TimingsOnlyRowsCarryTheBeamTreesCpuTime) {
                   "flag.json: measureError = \"no\": must be true or false");
 }
 
+// A shadow-map sweep resizes the maps a scene has and gives none to a light without one: point_fog's
+// unshadowed point light would otherwise become a cube-shadowed one, which analytic refuses, ending
+// the benchmark in the middle. The sweep starts from sweepProfile's settings.
+TEST(CliBench, AShadowMapSweepSkipsALightWithoutAShadowMap) {
+    writeFile("sweep.json", R"({"frames": 1, "warmup": 0, "size": "16x9", "measureError": false,
+        "scenes": ["scenes/point_fog.json", "scenes/engine_spot.json"], "methods": ["analytic", "epipolar"],
+        "sweepProfile": "high-performance", "sweeps": {"shadowMapSize": [256], "slices": [256]}})");
+    const auto r = run("bench --config sweep.json --out sweep --validation");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    std::ifstream j(cli_test::path("sweep/bench.json"));
+    const auto parsed = nlohmann::json::parse(j);
+    std::map<std::string, std::vector<std::string>> labels;
+    for (const auto& row : parsed["runs"]) {
+        labels[row["scene"].get<std::string>()].push_back(row["label"].get<std::string>());
+        if (row["family"] != "profiles") {
+            EXPECT_EQ(row["samples"], 512) << "high-performance's samples";
+        }
+    }
+    // analytic takes unshadowed point and spot lights only, so engine_spot has no analytic rows.
+    EXPECT_EQ(labels["point_fog"],
+              (std::vector<std::string>{"analytic", "epipolar balanced", "slices=256"}));
+    EXPECT_EQ(labels["engine_spot"], (std::vector<std::string>{"epipolar balanced", "slices=256",
+                                                               "epipolar shadowMap=256"}));
+    writeFile("profile.json", R"({"sweepProfile": "custom", "scenes": ["scenes/atrium.json"]})");
+    expectFailure(run("bench --config profile.json --out profile"),
+                  "profile.json: sweepProfile: unknown profile 'custom'");
+}
+
 // A scene may name methods of its own (those that take its lights); rows carry the light count.
 TEST(CliBench, AScenesOwnMethodsAndItsLightCount) {
     writeFile("own.json", R"({"frames": 1, "warmup": 0, "size": "16x9", "methods": ["epipolar"],
