@@ -65,7 +65,7 @@ const bool kMinMaxTrees = LS_TREES != 0;
 vec2 treeNode(int level, int node, int slice, int n) {
 #if LS_TREES
     ivec2 p = ivec2(treeLevelOffset(level, n) + node, slice);
-    return texelFetch(trees, p, 0).xy;
+    return decodeTreeNode(texelFetch(trees, p, 0).xy);
 #else
     return vec2(0.0, 1.0);
 #endif
