@@ -125,3 +125,35 @@ TEST_F(StepCountsGpu, TreesCutTheShadowMapLookUpsOnLongLitRuns) {
         EXPECT_LT(e.maxRelative, 1e-3) << name;
     }
 }
+
+// A frame of several lights counts every light's march: two spots together count what each does
+// alone, field by field.
+TEST_F(StepCountsGpu, AFrameOfTwoLightsCountsBothMarches) {
+    lightscatter::Light second = spotOverGrille();
+    second.position = {-1.5f, 5.0f, 0.8f};
+    second.direction = {0.25f, -1.0f, -0.1f};
+    TestFrame a(dev(), sceneWith(spotOverGrille()));
+    TestFrame b(dev(), sceneWith(second));
+    const auto settings = smallSettings(a.spec().screen);
+    auto da = a.description(Method::Epipolar, lightscatter::Profile::Custom, settings);
+    auto db = b.description(Method::Epipolar, lightscatter::Profile::Custom, settings);
+    da.debug.countSteps = db.debug.countSteps = true;
+    const auto ra = plugin().render(da);
+    const auto rb = plugin().render(db);
+    auto both = da;
+    both.lights = {{da.light, da.shadowMap, da.lightColor},
+                   {db.light, db.shadowMap, db.lightColor}};
+    both.light = {};
+    both.shadowMap.reset();
+    both.lightColor.reset();
+    const auto r = plugin().render(both);
+    ASSERT_TRUE(ra.steps && rb.steps && r.steps);
+    EXPECT_GT(ra.steps->rays, 0u);
+    EXPECT_GT(rb.steps->rays, 0u);
+    EXPECT_EQ(r.steps->samples, ra.steps->samples + rb.steps->samples);
+    EXPECT_EQ(r.steps->rays, ra.steps->rays + rb.steps->rays);
+    EXPECT_EQ(r.steps->lineSteps, ra.steps->lineSteps + rb.steps->lineSteps);
+    EXPECT_EQ(r.steps->treeNodes, ra.steps->treeNodes + rb.steps->treeNodes);
+    EXPECT_EQ(r.steps->degenerateRays, ra.steps->degenerateRays + rb.steps->degenerateRays);
+    EXPECT_EQ(r.steps->degenerateSteps, ra.steps->degenerateSteps + rb.steps->degenerateSteps);
+}
