@@ -1,5 +1,6 @@
 // lightscatter render SCENE.json [--out FILE.png|.exr] [--inscatter FILE.exr] [--method NAME]
 //   [--profile NAME] [--settings FILE.json] [--size WxH] [--timings FILE.json] [--frames N]
+//   [--count-steps]
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -17,6 +18,22 @@ namespace {
 
 bool endsWith(const std::string& s, const std::string& suffix) {
     return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+// Epipolar's ray-march steps (DebugOptions::countSteps), as counted and per ray-marching sample.
+nlohmann::json stepsJson(const lightscatter::StepCounts& s) {
+    const double n = s.samples > 0 ? static_cast<double>(s.samples) : 1.0;
+    return {
+        {"samples", s.samples},
+        {"rays", s.rays},
+        {"lineSteps", s.lineSteps},
+        {"treeNodes", s.treeNodes},
+        {"degenerateRays", s.degenerateRays},
+        {"degenerateSteps", s.degenerateSteps},
+        {"stepsPerSample", static_cast<double>(s.lineSteps + s.degenerateSteps) / n},
+        {"nodesPerSample", static_cast<double>(s.treeNodes) / n},
+        {"degenerateShare",
+         s.rays > 0 ? static_cast<double>(s.degenerateRays) / static_cast<double>(s.rays) : 0.0}};
 }
 
 nlohmann::json timingsJson(const rg::Device& device, const SceneOptions& o, VkExtent2D size,
@@ -40,6 +57,7 @@ nlohmann::json timingsJson(const rg::Device& device, const SceneOptions& o, VkEx
     nlohmann::json engine = nlohmann::json::array();
     for (const auto& p : f.engine.passes) engine.push_back({{"name", p.name}, {"milliseconds", p.milliseconds}});
     j["engine"] = {{"passes", engine}, {"totalMilliseconds", f.engine.totalMilliseconds}};
+    if (f.plugin.steps) j["steps"] = stepsJson(*f.plugin.steps);
     return j;
 }
 
@@ -50,7 +68,9 @@ int runRender(Args& args) {
     const std::string inscatter = args.take("--inscatter", "");
     const std::string timings = args.take("--timings", "");
     const int frames = parseCount(args.take("--frames", "1"), "--frames");
+    const bool countSteps = args.flag("--count-steps");
     SceneOptions o = takeSceneOptions(args, nullptr);
+    o.render.countSteps = countSteps;
     const std::string scenePath = args.positional("SCENE.json");
     args.finish();
     if (out.empty()) out = std::filesystem::path(scenePath).stem().string() + ".png";
@@ -105,6 +125,15 @@ int runRender(Args& args) {
                 lightscatter::profileName(o.render.profile), frame.plugin.passNames.empty() ? "-" : "rendered",
                 device.name().c_str(), device.isCpu() ? " (CPU timings)" : "", frame.plugin.totalMilliseconds,
                 frame.engine.totalMilliseconds);
+    if (countSteps) {
+        if (frame.plugin.steps) {
+            const nlohmann::json j = stepsJson(*frame.plugin.steps);
+            std::printf("ray-march steps: %s\n", j.dump().c_str());
+        } else {
+            std::printf("ray-march steps: none counted (%s ran no epipolar ray march)\n",
+                        frame.plugin.method.c_str());
+        }
+    }
     if (device.messageCount() > 0) {
         std::cerr << "lightscatter: the validation layer reported " << device.messageCount() << " message(s)\n";
         return 3;

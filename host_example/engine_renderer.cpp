@@ -394,6 +394,7 @@ lightscatter::FrameDescription EngineRenderer::describe(const RenderOptions& opt
     f.profile = options.profile;
     f.custom = options.custom;
     f.timeSeconds = options.timeSeconds;
+    f.debug.countSteps = options.countSteps;
     return f;
 }
 

@@ -22,6 +22,7 @@ struct RenderOptions {
     lightscatter::Profile profile = lightscatter::Profile::Balanced;
     lightscatter::Settings custom;
     double timeSeconds = 0.0;  // FrameDescription::timeSeconds: scrolls the slices method's noise
+    bool countSteps = false;   // DebugOptions::countSteps: epipolar's ray-march steps in the report
 };
 
 struct FrameOutput {

@@ -37,7 +37,7 @@ const std::array kCommands{
         "render",
         "render SCENE.json [--out FILE.png|.exr] [--inscatter FILE.exr] [--method NAME]\n"
         "                    [--profile NAME] [--settings FILE.json] [--size WxH]\n"
-        "                    [--timings FILE.json] [--frames N]\n",
+        "                    [--timings FILE.json] [--frames N] [--count-steps]\n",
         "Renders a scene and writes the image, and optionally Lin alone and the per-pass times.\n"
         "  --out FILE          .png (tone-mapped with the scene's exposure) or .exr (linear);\n"
         "                      default: the scene's name with .png, in the current folder\n"
@@ -45,6 +45,7 @@ const std::array kCommands{
         "  --timings FILE      the plugin's and the engine's pass times as JSON\n"
         "  --size WxH          1 to 16384 each (default 960x540)\n"
         "  --frames N          frames rendered, 1 to 100000 (default 1); the last is written\n"
+        "  --count-steps       epipolar: count the ray march's steps (printed, and in --timings)\n"
         "Outputs are written all or nothing: each must be its own file and none may be an "
         "input.\n"},
     Command{"budget",

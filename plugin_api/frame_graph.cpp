@@ -6,6 +6,7 @@
 #include "brute_force/brute_force_node.h"
 #include "cone_march/cone_march_node.h"
 #include "epipolar/epipolar_nodes.h"
+#include "epipolar/step_counts.h"
 #include "shared/composite_target.h"
 #include "shared/shared_nodes.h"
 
@@ -16,12 +17,15 @@ bool GraphConfig::operator==(const GraphConfig& o) const {
            touchesView == o.touchesView && minMaxTrees == o.minMaxTrees && fixup == o.fixup &&
            slices == o.slices && samples == o.samples && shadowMapSize == o.shadowMapSize &&
            screen.width == o.screen.width && screen.height == o.screen.height &&
-           depthStencil == o.depthStencil && coordinates == o.coordinates && depth == o.depth && color == o.color &&
-           shadowMap == o.shadowMap && lightColor == o.lightColor &&
+           depthStencil == o.depthStencil && coordinates == o.coordinates && depth == o.depth &&
+           color == o.color && shadowMap == o.shadowMap && lightColor == o.lightColor &&
            inscatterOut == o.inscatterOut && table == o.table && extinction == o.extinction &&
-           coneSamples == o.coneSamples && coneLimited == o.coneLimited && coneJitter == o.coneJitter &&
-           shadowSampling == o.shadowSampling && sliceTarget == o.sliceTarget && sliceBlur == o.sliceBlur && sliceDither == o.sliceDither && beamCapacity == o.beamCapacity && reversedZ == o.reversedZ &&
-           noise == o.noise && engineNoise == o.engineNoise && poisonTransients == o.poisonTransients &&
+           coneSamples == o.coneSamples && coneLimited == o.coneLimited &&
+           coneJitter == o.coneJitter && shadowSampling == o.shadowSampling &&
+           sliceTarget == o.sliceTarget && sliceBlur == o.sliceBlur &&
+           sliceDither == o.sliceDither && beamCapacity == o.beamCapacity &&
+           reversedZ == o.reversedZ && noise == o.noise && engineNoise == o.engineNoise &&
+           poisonTransients == o.poisonTransients && countSteps == o.countSteps &&
            lights == o.lights;
 }
 
@@ -43,6 +47,16 @@ VkFormat coordinateFormat(const rg::DeviceCaps& caps) {
     const VkFormat f = rg::firstSupported(caps, {VK_FORMAT_R16G16_UNORM, VK_FORMAT_R32G32_SFLOAT},
                                           VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BIT);
     return f == VK_FORMAT_UNDEFINED ? VK_FORMAT_R32G32_SFLOAT : f;
+}
+
+rg::ImportedBuffer stepCountImport(VkBuffer buffer, uint32_t slices) {
+    rg::ImportedBuffer b;
+    b.buffer = buffer;
+    b.size = ls::stepCountBytes(slices);
+    b.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    b.initialStages = b.finalStages = VK_PIPELINE_STAGE_2_HOST_BIT;
+    b.initialAccess = b.finalAccess = VK_ACCESS_2_HOST_READ_BIT;
+    return b;
 }
 
 rg::ImportedImage importDescription(const ImageInput& in) {
@@ -87,6 +101,14 @@ rg::ImportedImage importDescription(const ImportState& s) {
 }
 
 namespace {
+
+// The step counter, imported and cleared when the frame counts; invalid otherwise.
+rg::BufferRef clearedStepCounter(rg::RenderGraph& g, const GraphConfig& c, FrameGraph& fg) {
+    if (!c.countSteps) return {};
+    fg.stepCounts =
+        g.importBuffer("ray-march step counts", stepCountImport(VK_NULL_HANDLE, c.slices));
+    return ls::addClearStepCounts(g, fg.stepCounts);
+}
 
 // Every frame's graph, one light or several: the engine's depth, color and optional Lin output
 // imported, and the node inputs that follow from the configuration (screen, formats).
@@ -134,6 +156,8 @@ FrameGraph buildLightsGraph(const GraphConfig& c, const std::vector<ls::Shared>&
     base.constants = ls::addUploadConstants(g, base.shared);
 
     rg::ImageRef color = fg.color, linOut = fg.inscatterOut;
+    rg::BufferRef counts =
+        c.method == Method::Epipolar ? clearedStepCounter(g, c, fg) : rg::BufferRef{};
     size_t chains = 0;
     for (size_t i = 0; i < c.lights.size(); ++i) {
         const LightChainConfig& l = c.lights[i];
@@ -156,8 +180,11 @@ FrameGraph buildLightsGraph(const GraphConfig& c, const std::vector<ls::Shared>&
         ls::CompositeOutputs o;
         if (l.shadowed && c.method == Method::Epipolar) {
             ls::EpipolarSizes sizes{l.slices, l.samples, l.shadowMapSize};
-            ls::EpipolarOptions options{l.minMaxTrees, l.fixup, l.light == ls::LightKind::Point};
-            o = ls::addEpipolarNodes(g, in, sizes, options, target);
+            ls::EpipolarOptions options{l.minMaxTrees, l.fixup, l.light == ls::LightKind::Point,
+                                        counts};
+            const ls::EpipolarOutputs e = ls::addEpipolarNodes(g, in, sizes, options, target);
+            o = e.composited;
+            counts = e.stepCounts;
         } else {
             const rg::ImageRef lin = l.shadowed ? ls::addBruteForce(g, in) : ls::addUnshadowed(g, in);
             o = chains == 0 ? ls::addComposite(g, in, color, lin, linOut) : ls::addInscatter(g, in, color, lin, linOut);
@@ -170,6 +197,8 @@ FrameGraph buildLightsGraph(const GraphConfig& c, const std::vector<ls::Shared>&
     if (chains == 0) ls::addComposite(g, base, color, {}, linOut);  // extinction only
     const bool anyFixup = std::any_of(c.lights.begin(), c.lights.end(),
                                       [](const LightChainConfig& l) { return l.fixup; });
+    // Cleared even when no chain marches, so that the frame's counts are its own.
+    if (counts.valid()) g.markOutput(counts);
     fg.summary = std::to_string(c.lights.size()) + " lights, " + std::to_string(chains) + " reaching the view: " +
                  (c.method == Method::BruteForce ? "brute-force ray marching"
                                                  : std::string("epipolar sampling") + (anyFixup ? ", fix-up" : "")) +
@@ -278,9 +307,11 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared, ls::S
         } else {
             ls::EpipolarSizes sizes{c.slices, c.samples, c.shadowMapSize};
             const bool cube = c.light == ls::LightKind::Point;  // a shadowed point light's cube map
-            ls::EpipolarOptions options{c.minMaxTrees, c.fixup, cube};
+            ls::EpipolarOptions options{c.minMaxTrees, c.fixup, cube, clearedStepCounter(g, c, fg)};
             // Composited in the chain's unwarp and fix-up: no composite pass.
-            ls::addEpipolarNodes(g, in, sizes, options, {fg.color, fg.inscatterOut, false});
+            const ls::EpipolarOutputs e =
+                ls::addEpipolarNodes(g, in, sizes, options, {fg.color, fg.inscatterOut, false});
+            if (e.stepCounts.valid()) g.markOutput(e.stepCounts);
             fg.summary = std::string("epipolar sampling") + (c.minMaxTrees ? " with min/max trees" : "") +
                          (cube ? " per cube face" : "") + (c.fixup ? ", fix-up" : "") +
                          ", composited in the unwarp";

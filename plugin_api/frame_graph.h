@@ -73,6 +73,9 @@ struct GraphConfig {
     bool noise = false;             // slices samples a noise texture: the engine's (`noise` given) or ours
     ImportState engineNoise;        // format UNDEFINED: the plugin's own noise
     bool poisonTransients = false;
+    // Epipolar's step counter (DebugOptions::countSteps): the marches' counting variant, adding
+    // into FrameGraph::stepCounts.
+    bool countSteps = false;
     // Several lights (epipolar or brute-force): one chain each, in this order; when not empty, the
     // single light's fields above (light, shadowed, touchesView, minMaxTrees, shadowMapSize,
     // shadowMap, lightColor, table) are unused.
@@ -88,9 +91,15 @@ struct FrameGraph {
         rg::ImageRef shadowMap, lightColor, table;
     };
     std::vector<LightImages> lights;  // several lights: each one's imports (GraphConfig::lights)
+    // The step counter the plugin imports (one buffer per frame in flight; ls::stepCountBytes of
+    // the slices); invalid without GraphConfig::countSteps or without an epipolar march.
+    rg::BufferRef stepCounts;
 };
 
 ls::SliceAccumulation sliceAccumulation(SliceTarget target);
+
+// The step counter's import: written by the frame's passes, read by the host once it is done.
+rg::ImportedBuffer stepCountImport(VkBuffer buffer, uint32_t slices);
 
 rg::ImportedImage importDescription(const ImageInput& in);
 rg::ImportedImage importDescription(const ImportState& s);

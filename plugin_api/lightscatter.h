@@ -301,6 +301,11 @@ struct DebugOptions {
     // resource left behind. The environment variable LS_POISON_TRANSIENTS=1 turns it on for every
     // frame of every plugin in the process.
     bool poisonTransients = false;
+    // Counts what epipolar's ray march does (FrameReport::steps): the march runs a variant of its
+    // shader that adds each ray's counts into a small buffer, read back with the frame's times.
+    // Off, the plain shader runs (no buffer, no atomics). Epipolar frames only (also when Auto
+    // picks epipolar); the other methods ignore it. Turning it on or off rebuilds the frame graph.
+    bool countSteps = false;
 };
 
 // One light of a frame of several (FrameDescription::lights): the light and its own images, with
@@ -368,6 +373,20 @@ struct PassTime {
     double milliseconds = 0;
 };
 
+// What epipolar's ray march did in a frame (DebugOptions::countSteps), summed over the frame's
+// lights. The fix-up's per-pixel marches are not counted. Divide by `samples` for a per-sample
+// cost; counts do not depend on the device or its load.
+struct StepCounts {
+    uint64_t samples = 0;    // ray-marching samples marched (once each, whatever the cube faces)
+    uint64_t rays = 0;       // of them, rays that cross the shadow map's frustum (per cube face)
+    uint64_t lineSteps = 0;  // level-0 steps along the slices' lines: a shadow-map look-up each
+    uint64_t treeNodes = 0;  // min/max tree nodes tested (0 without trees)
+    // Rays off their slice's line (along the light's direction, or against the line), marched on
+    // their own one texel at a time, and their shadow-map look-ups.
+    uint64_t degenerateRays = 0;
+    uint64_t degenerateSteps = 0;
+};
+
 struct FrameReport {
     uint64_t frame = 0;             // the frame this report covers (record()'s number; 0: none yet)
     std::string method;             // the method that ran; with Auto, the one it picked
@@ -382,6 +401,9 @@ struct FrameReport {
     std::vector<std::string> passNames;   // the nodes this frame was built from
     std::vector<std::string> setupPasses; // run before the frame this time (the point-light table)
     std::string depthStencilFormat;       // what was chosen for the stencil textures
+    // With DebugOptions::countSteps on an epipolar frame, once `timed` (the frame is done): what
+    // its ray march did. Empty otherwise.
+    std::optional<StepCounts> steps;
 };
 
 // Memory of one resource of the method, as the budget reports it.

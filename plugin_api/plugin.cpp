@@ -1,21 +1,24 @@
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <deque>
 #include <optional>
 #include <string>
 
+#include "epipolar/step_counts.h"
 #include "frame_graph.h"
 #include "frame_setup.h"
-#include "method_choice.h"
 #include "lightscatter.h"
+#include "method_choice.h"
 #include "point_table.h"
-#include "tiling_noise.h"
 #include "rendergraph/compile.h"
 #include "rendergraph/device_caps_vulkan.h"
 #include "rendergraph/executor.h"
 #include "rendergraph/format_info.h"
+#include "rendergraph/host_buffer.h"
 #include "rendergraph/report.h"
 #include "rendergraph/vk_error.h"
+#include "tiling_noise.h"
 
 namespace lightscatter {
 
@@ -59,6 +62,7 @@ struct RecordedFrame {
     bool tableRefilled = false;
     bool noiseMade = false;
     std::vector<PassTime> cpuWork;
+    bool countedSteps = false;  // its march added into stepBuffers[frame % kTimedFrames]
 };
 
 }  // namespace
@@ -150,6 +154,38 @@ struct Plugin::Impl {
         executor = std::make_unique<rg::GraphExecutor>(device, *fg.graph, std::move(compiled));
         rehearsed = false;
         config = c;
+        // The old graph's frames are done (the executor waited for the device): their counters go.
+        for (auto& b : stepBuffers) b.reset();
+    }
+
+    // The step counter of the frame about to be recorded: one buffer per frame that may be in
+    // flight, as with the timestamp queries, so that a frame's counts wait for its report.
+    void importStepCounter() {
+        if (!fg.stepCounts.valid()) return;
+        auto& buffer = stepBuffers[(lastFrame + 1) % kTimedFrames];
+        if (!buffer) {
+            const rg::ImportedBuffer d = detail::stepCountImport(VK_NULL_HANDLE, config->slices);
+            buffer =
+                std::make_unique<rg::HostBuffer>(device, d.size, d.usage, "ray-march step counts");
+        }
+        fg.graph->updateImport(fg.stepCounts,
+                               detail::stepCountImport(buffer->buffer(), config->slices));
+    }
+
+    std::optional<StepCounts> readStepCounts(uint64_t frame) const {
+        const auto& buffer = stepBuffers[frame % kTimedFrames];
+        if (!buffer) return std::nullopt;
+        const auto sum =
+            ls::sumStepCounts(static_cast<const uint32_t*>(buffer->data()), config->slices);
+        auto at = [&](ls::StepCount k) { return sum[static_cast<uint32_t>(k)]; };
+        StepCounts s;
+        s.samples = at(ls::StepCount::Samples);
+        s.rays = at(ls::StepCount::Rays);
+        s.lineSteps = at(ls::StepCount::LineSteps);
+        s.treeNodes = at(ls::StepCount::TreeNodes);
+        s.degenerateRays = at(ls::StepCount::DegenerateRays);
+        s.degenerateSteps = at(ls::StepCount::DegenerateSteps);
+        return s;
     }
 
     void rehearseOnce() {
@@ -180,6 +216,7 @@ struct Plugin::Impl {
         c.color = state(frame.color);
         if (frame.inscatterOut) c.inscatterOut = state(*frame.inscatterOut);
         c.poisonTransients = frame.debug.poisonTransients || poisonFromEnvironment();
+        c.countSteps = frame.debug.countSteps && c.method == Method::Epipolar;
         c.reversedZ = setup.camera.reversedZ;
     }
 
@@ -255,6 +292,7 @@ struct Plugin::Impl {
             if (images.table.valid())
                 fg.graph->updateImport(images.table, detail::persistentImport(c.lights[i].table, lightTables[i]->image()));
         }
+        importStepCounter();
         rehearseOnce();
     }
 
@@ -349,6 +387,7 @@ struct Plugin::Impl {
             }
         }
         if (fg.table.valid()) fg.graph->updateImport(fg.table, detail::persistentImport(c.table, pointTable->image()));
+        importStepCounter();
         rehearseOnce();
     }
 
@@ -383,6 +422,7 @@ struct Plugin::Impl {
             f.passNames.push_back(fg.graph->passes()[p.pass].name);
         f.tableRefilled = tableRefilled;
         f.noiseMade = noiseMade;
+        f.countedSteps = fg.stepCounts.valid();
         if (beamFrameBuilt) f.cpuWork.push_back({"beam tree (CPU, seed 004)", beamFrame->buildMilliseconds});
         f.method = config && config->touchesView ? methodName(lastChoice.method) : "none";
         f.reason = (lastChoice.reason.empty() ? fg.summary : lastChoice.reason) + cubeFacesNote();
@@ -419,6 +459,7 @@ struct Plugin::Impl {
         if (t.valid) {
             for (const auto& p : t.passes) r.passes.push_back({p.name, p.milliseconds});
             r.totalMilliseconds = t.totalMilliseconds;
+            if (f->countedSteps) r.steps = readStepCounts(frame);
         }
         r.passNames = f->passNames;
         r.method = f->method;
@@ -453,6 +494,8 @@ struct Plugin::Impl {
     detail::MethodChoice lastChoice;  // of the frame prepared last
     FrameGraph fg;
     std::unique_ptr<rg::GraphExecutor> executor;
+    // DebugOptions::countSteps: frame n's step counter is stepBuffers[n % kTimedFrames].
+    std::array<std::unique_ptr<rg::HostBuffer>, kTimedFrames> stepBuffers;
     uint64_t graphGeneration = 0;
     uint64_t lastFrame = 0;
     std::deque<RecordedFrame> frames;  // the last kTimedFrames

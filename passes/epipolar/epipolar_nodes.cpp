@@ -4,8 +4,9 @@
 
 namespace ls {
 
-CompositeOutputs addEpipolarNodes(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& sizes,
-                                  const EpipolarOptions& options, const CompositeTarget& target) {
+EpipolarOutputs addEpipolarNodes(rg::RenderGraph& g, const NodeInputs& in,
+                                 const EpipolarSizes& sizes, const EpipolarOptions& options,
+                                 const CompositeTarget& target) {
     const rg::ImageRef endPoints = addSliceEndPoints(g, in, sizes);
     const EpipolarCoordinates samples = addEpipolarCoordinates(g, in, sizes, endPoints);
     const rg::ImageRef sources = addRefineSamples(g, in, sizes, samples.epipolarZ);
@@ -13,11 +14,16 @@ CompositeOutputs addEpipolarNodes(rg::RenderGraph& g, const NodeInputs& in, cons
     // The shadow map's part: the line of every slice in it, the trees along those lines and the
     // march. A point light's cube map repeats it per face, each face adding its part of every ray
     // to the same samples; the faces' lines and trees die with their march, so they alias.
+    rg::BufferRef counts = options.stepCounts;
     auto march = [&](const NodeInputs& light, rg::ImageRef accumulate) {
         const rg::ImageRef uvFrame = addSliceUvFrame(g, light, sizes, endPoints);
-        const rg::ImageRef trees = options.minMaxTrees ? addMinMaxTrees(g, light, sizes, uvFrame) : rg::ImageRef{};
-        return addEpipolarRayMarch(g, light, sizes,
-                                   {samples.coordinates, samples.epipolarZ, uvFrame, marking, trees, accumulate});
+        const rg::ImageRef trees =
+            options.minMaxTrees ? addMinMaxTrees(g, light, sizes, uvFrame) : rg::ImageRef{};
+        const EpipolarRayMarch m = addEpipolarRayMarch(
+            g, light, sizes,
+            {samples.coordinates, samples.epipolarZ, uvFrame, marking, trees, accumulate, counts});
+        counts = m.stepCounts;
+        return m.marched;
     };
     rg::ImageRef marched;
     if (!options.cubeShadow) {
@@ -36,9 +42,10 @@ CompositeOutputs addEpipolarNodes(rg::RenderGraph& g, const NodeInputs& in, cons
     const rg::ImageRef interpolated = addInterpolate(g, in, sizes, sources, marched, marking);
     const UnwarpOutputs screen =
         addUnwarp(g, in, {endPoints, samples.epipolarZ, interpolated}, target, options.fixup);
-    if (!options.fixup) return screen.composited;
-    return addFixup(g, in, screen.cameraStencil,
-                    {screen.composited.color, screen.composited.inscatterOut, target.addOnly});
+    if (!options.fixup) return {screen.composited, counts};
+    return {addFixup(g, in, screen.cameraStencil,
+                     {screen.composited.color, screen.composited.inscatterOut, target.addOnly}),
+            counts};
 }
 
 }  // namespace ls

@@ -40,12 +40,11 @@ rg::ImageRef addSliceUvFrame(rg::RenderGraph& g, const NodeInputs& in, const Epi
 // The 1D min/max trees of in.shadowMap along each slice's line, every level in one texture:
 // RG16F, shadow-map size x slices.
 rg::ImageRef addMinMaxTrees(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
-                           rg::ImageRef sliceUvFrame);
+                            rg::ImageRef sliceUvFrame);
 
 // Raises the ray-marching samples to stencil 2; returns the stencil's new version.
 rg::ImageRef addMarkRayMarchSamples(rg::RenderGraph& g, const NodeInputs& in,
-                                    rg::ImageRef interpolationSource,
-                                    rg::ImageRef epipolarStencil);
+                                    rg::ImageRef interpolationSource, rg::ImageRef epipolarStencil);
 
 // Lin (or the shadowed fraction) of the ray-marching samples: RGBA16F, samples x slices. Reads the
 // light's images; without trees every sample is marched texel by texel.
@@ -55,11 +54,17 @@ rg::ImageRef addMarkRayMarchSamples(rg::RenderGraph& g, const NodeInputs& in,
 struct EpipolarRayMarchInputs {
     rg::ImageRef coordinates, epipolarZ, sliceUvFrame;
     rg::ImageRef epipolarStencil;  // after the marking
-    rg::ImageRef trees;  // invalid: marched without trees
-    rg::ImageRef accumulate;  // invalid: a new texture
+    rg::ImageRef trees;            // invalid: marched without trees
+    rg::ImageRef accumulate;       // invalid: a new texture
+    // The step counter (step_counts.h), cleared; invalid: the plain variant, nothing counted.
+    rg::BufferRef stepCounts;
 };
-rg::ImageRef addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
-                                 const EpipolarRayMarchInputs& i);
+struct EpipolarRayMarch {
+    rg::ImageRef marched;
+    rg::BufferRef stepCounts;  // the counter's new version; invalid when not counted
+};
+EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in,
+                                     const EpipolarSizes& s, const EpipolarRayMarchInputs& i);
 
 // Every valid sample, interpolated between its two sources: RGBA16F, samples x slices.
 rg::ImageRef addInterpolate(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
@@ -93,10 +98,16 @@ struct EpipolarOptions {
     bool minMaxTrees = true;
     bool fixup = true;
     bool cubeShadow = false;
+    rg::BufferRef stepCounts;  // the step counter, cleared, that the marches add to; invalid: none
 };
-// Returns the target's new versions: the chain composites its Lin where the unwarp and the fix-up
-// make it.
-CompositeOutputs addEpipolarNodes(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& sizes,
-                                  const EpipolarOptions& options, const CompositeTarget& target);
+// The target's new versions (the chain composites its Lin where the unwarp and the fix-up make
+// it), and the step counter's (invalid when not counted).
+struct EpipolarOutputs {
+    CompositeOutputs composited;
+    rg::BufferRef stepCounts;
+};
+EpipolarOutputs addEpipolarNodes(rg::RenderGraph& g, const NodeInputs& in,
+                                 const EpipolarSizes& sizes, const EpipolarOptions& options,
+                                 const CompositeTarget& target);
 
 }  // namespace ls

@@ -1,49 +1,71 @@
 #include "epipolar_nodes.h"
+#include "ray_march_directional_color_count_frag.h"
 #include "ray_march_directional_color_frag.h"
+#include "ray_march_directional_color_trees_count_frag.h"
 #include "ray_march_directional_color_trees_frag.h"
+#include "ray_march_directional_count_frag.h"
 #include "ray_march_directional_frag.h"
+#include "ray_march_directional_trees_count_frag.h"
 #include "ray_march_directional_trees_frag.h"
+#include "ray_march_table_color_count_frag.h"
 #include "ray_march_table_color_frag.h"
+#include "ray_march_table_color_trees_count_frag.h"
 #include "ray_march_table_color_trees_frag.h"
+#include "ray_march_table_count_frag.h"
+#include "ray_march_table_cube_count_frag.h"
 #include "ray_march_table_cube_frag.h"
+#include "ray_march_table_cube_trees_count_frag.h"
 #include "ray_march_table_cube_trees_frag.h"
 #include "ray_march_table_frag.h"
+#include "ray_march_table_trees_count_frag.h"
 #include "ray_march_table_trees_frag.h"
 #include "shared/pass_helpers.h"
 
 namespace ls {
 namespace {
 
-rg::ShaderCode rayMarchShader(const ScatterSpec& spec) {
+// A variant and its counting twin (LS_COUNT_STEPS): the plain one has no counter and no atomics.
+struct RayMarchVariant {
+    rg::ShaderCode plain, counting;
+};
+#define LS_RAY_MARCH_VARIANT(name)                             \
+    RayMarchVariant {                                          \
+        rg::spirv(ls_spirv::ray_march_##name##_frag),          \
+            rg::spirv(ls_spirv::ray_march_##name##_count_frag) \
+    }
+
+RayMarchVariant rayMarchVariant(const ScatterSpec& spec) {
     const bool table = spec.light != LightKind::Directional;
     const bool color = spec.lightColor;
     // A point light's cube map (light color is refused with it).
     if (spec.cubeShadow)
-        return spec.minMaxTrees ? rg::spirv(ls_spirv::ray_march_table_cube_trees_frag)
-                                : rg::spirv(ls_spirv::ray_march_table_cube_frag);
+        return spec.minMaxTrees ? LS_RAY_MARCH_VARIANT(table_cube_trees)
+                                : LS_RAY_MARCH_VARIANT(table_cube);
     if (spec.minMaxTrees) {
-        if (table) return color ? rg::spirv(ls_spirv::ray_march_table_color_trees_frag)
-                                : rg::spirv(ls_spirv::ray_march_table_trees_frag);
-        return color ? rg::spirv(ls_spirv::ray_march_directional_color_trees_frag)
-                     : rg::spirv(ls_spirv::ray_march_directional_trees_frag);
+        if (table)
+            return color ? LS_RAY_MARCH_VARIANT(table_color_trees)
+                         : LS_RAY_MARCH_VARIANT(table_trees);
+        return color ? LS_RAY_MARCH_VARIANT(directional_color_trees)
+                     : LS_RAY_MARCH_VARIANT(directional_trees);
     }
-    if (table) return color ? rg::spirv(ls_spirv::ray_march_table_color_frag)
-                            : rg::spirv(ls_spirv::ray_march_table_frag);
-    return color ? rg::spirv(ls_spirv::ray_march_directional_color_frag)
-                 : rg::spirv(ls_spirv::ray_march_directional_frag);
+    if (table) return color ? LS_RAY_MARCH_VARIANT(table_color) : LS_RAY_MARCH_VARIANT(table);
+    return color ? LS_RAY_MARCH_VARIANT(directional_color) : LS_RAY_MARCH_VARIANT(directional);
 }
+#undef LS_RAY_MARCH_VARIANT
 
 }  // namespace
 
-rg::ImageRef addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
-                                 const EpipolarRayMarchInputs& i) {
+EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in,
+                                     const EpipolarSizes& s, const EpipolarRayMarchInputs& i) {
     const bool adds = i.accumulate.valid();
     rg::ImageRef marched =
         adds ? i.accumulate
-             : g.createImage("in-scattering (ray-marched samples)",
-                             rg::ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT, s.samples, s.slices));
+             : g.createImage(
+                   "in-scattering (ray-marched samples)",
+                   rg::ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT, s.samples, s.slices));
     const bool trees = i.trees.valid();
-    auto pass = g.addPass(trees ? "ray march with min/max trees" : "ray march", rg::PassType::Graphics);
+    auto pass =
+        g.addPass(trees ? "ray march with min/max trees" : "ray march", rg::PassType::Graphics);
     pass.uniformBuffer(in.constants);
     pass.sampled(i.coordinates);
     pass.sampled(i.epipolarZ);
@@ -52,9 +74,11 @@ rg::ImageRef addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in, const
         pass.sampled(i.trees);
     }
     declareMarchInputs(pass, in);
+    const rg::BufferRef counts =
+        i.stepCounts.valid() ? pass.storageBufferReadWrite(i.stepCounts) : rg::BufferRef{};
     pass.stencilTest(i.epipolarStencil);
     marched = pass.colorAttachment(marched, adds ? rg::LoadOp::Load : rg::LoadOp::Clear);
-    pass.execute([in, i, trees, adds](rg::PassContext& ctx) {
+    pass.execute([in, i, trees, adds, counts](rg::PassContext& ctx) {
         // A cube face out of view adds nothing (the first face's pass writes every sample's alpha).
         if (adds && !in.shared->inView()) return;
         ScatterSpec spec = in.shared->spec;
@@ -63,17 +87,24 @@ rg::ImageRef addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in, const
                                    sampledBinding(3)};
         if (trees) b.push_back(sampledBinding(4));
         appendMarchBindings(b, in);
-        auto desc = fullscreenPipeline(rayMarchShader(spec), ctx, b);
+        if (counts.valid())
+            b.push_back({9, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_ALL});
+        const RayMarchVariant variant = rayMarchVariant(spec);
+        auto desc = fullscreenPipeline(counts.valid() ? variant.counting : variant.plain, ctx, b);
         desc.specialization = spec.constants();
         desc.stencilTest = true;
         desc.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP,
                         VK_COMPARE_OP_EQUAL, 0xff, 0, 2};
         if (adds) {
             desc.blend = rg::BlendMode::Additive;
-            desc.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT;
+            desc.colorWriteMask =
+                VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT;
         }
         const auto& p = in.shared->pipelines.graphics(
-            pipelineKey(adds ? "ray march (adding a face)" : "ray march", ctx, spec.key()), desc);
+            pipelineKey(std::string(adds ? "ray march (adding a face)" : "ray march") +
+                            (counts.valid() ? ", counting" : ""),
+                        ctx, spec.key()),
+            desc);
         p.bind(ctx.cmd());
         vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 2);
         const auto& sm = in.shared->samplers;
@@ -85,10 +116,11 @@ rg::ImageRef addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in, const
             set.sampled(4, ctx.view(i.trees), ctx.layout(i.trees), sm.nearest());
         }
         pushMarchInputs(set, ctx, in);
+        if (counts.valid()) set.storageBuffer(9, ctx.buffer(counts));
         set.push(ctx.device(), ctx.cmd(), p);
         vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
     });
-    return marched;
+    return {marched, counts};
 }
 
 }  // namespace ls

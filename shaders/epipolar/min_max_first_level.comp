@@ -28,7 +28,7 @@ void main() {
     if (dot(f.zw, f.zw) > 0.0) {
         vec2 a = shadowFootprintMinMax(f.xy + float(2 * node) * f.zw);
         vec2 b = shadowFootprintMinMax(f.xy + float(2 * node + 1) * f.zw);
-        mm = vec2(roundDownToHalf(min(a.x, b.x)), roundUpToHalf(max(a.y, b.y)));
+        mm = vec2(min(a.x, b.x), max(a.y, b.y));
     }
-    imageStore(level1, ivec2(treeLevelOffset(1, n) + node, slice), vec4(mm, 0.0, 0.0));
+    imageStore(level1, ivec2(treeLevelOffset(1, n) + node, slice), vec4(encodeTreeNode(mm), 0.0, 0.0));
 }

@@ -14,6 +14,5 @@ void main() {
     int src = treeLevelOffset(pc.level - 1, pc.n) + 2 * node;
     vec2 a = imageLoad(tree, ivec2(src, slice)).xy;
     vec2 b = imageLoad(tree, ivec2(src + 1, slice)).xy;
-    imageStore(tree, ivec2(treeLevelOffset(pc.level, pc.n) + node, slice),
-               vec4(min(a.x, b.x), max(a.y, b.y), 0.0, 0.0));
+    imageStore(tree, ivec2(treeLevelOffset(pc.level, pc.n) + node, slice), vec4(mergeTreeNodes(a, b), 0.0, 0.0));
 }

@@ -7,6 +7,8 @@
 // With LS_CUBE_SHADOW (a point light's cube map) the pass marches one face: lightViewProj is the
 // face's matrix, the look-ups read its layer, and each ray keeps only the part of it where that face
 // is the major axis, so that the six faces' passes add up to the whole ray without overlap or gap.
+// With LS_COUNT_STEPS (DebugOptions::countSteps) each invocation adds what it did into its slice's
+// row of a storage buffer (kCount* below); without it the variant has no buffer and no atomics.
 #include "camera.glsl"
 #include "min_max_tree.glsl"
 layout(binding = 1) uniform sampler2D coordinates;
@@ -26,15 +28,44 @@ layout(binding = 7) uniform sampler2D pointTable;
 #if LS_LIGHT_COLOR
 layout(binding = 8) uniform sampler2D lightColorMap;
 #endif
+#if defined(LS_COUNT_STEPS) && LS_COUNT_STEPS
+// One row of kCountStride counters per slice: a row's sums stay far below 2^32 at any profile,
+// where one counter for the whole frame would wrap at 1920x1080. The plugin adds the rows up.
+const int kCountSamples = 0;          // ray-marching samples (once each, whatever the cube face)
+const int kCountRays = 1;             // rays that cross the shadow map (once per cube face)
+const int kCountLineSteps = 2;        // level-0 steps along the slice's line (look-ups)
+const int kCountTreeNodes = 3;        // min/max tree nodes tested
+const int kCountDegenerateRays = 4;   // rays marched on their own (marchFrustumSegment)
+const int kCountDegenerateSteps = 5;  // ... and their look-ups
+const int kCountStride = 8;
+// Stores to a buffer make the stencil test late unless asked otherwise: every sample's invocation
+// would run (and count), not only the ray-marching samples'. The plain variant stores nothing, so
+// the stencil test may run first there anyway.
+layout(early_fragment_tests) in;
+layout(std430, binding = 9) buffer StepCounts { uint stepCounts[]; };
+uint countedLookups = 0u;
+#define LS_COUNT_LOOKUP() ++countedLookups
+#define COUNT(x) x
+#else
+#define COUNT(x)
+#endif
 #include "march.glsl"
 layout(location = 0) out vec4 outInscatter;
+
+#if defined(LS_COUNT_STEPS) && LS_COUNT_STEPS
+uint counted[6] = uint[6](0u, 0u, 0u, 0u, 0u, 0u);
+void flushCounts(int slice) {
+    for (int k = 0; k < 6; ++k)
+        if (counted[k] != 0u) atomicAdd(stepCounts[slice * kCountStride + k], counted[k]);
+}
+#endif
 
 const bool kMinMaxTrees = LS_TREES != 0;
 
 vec2 treeNode(int level, int node, int slice, int n) {
 #if LS_TREES
     ivec2 p = ivec2(treeLevelOffset(level, n) + node, slice);
-    return texelFetch(trees, p, 0).xy;
+    return decodeTreeNode(texelFetch(trees, p, 0).xy);
 #else
     return vec2(0.0, 1.0);
 #endif
@@ -82,12 +113,14 @@ void marchLine(inout Inscatter acc, LineRay r, int slice) {
     int level = climb(i, 0, last, n, levels);
     for (int guard = 0; i <= last && guard < 4 * n + 64; ++guard) {
         if (level == 0) {
+            COUNT(++counted[kCountLineSteps]);
             advance(acc, distanceAt(r, float(i)), visibilityAt(r, i));
             ++i;
             level = climb(i, 0, last, n, levels);
             continue;
         }
         int j = i + (1 << level) - 1;
+        COUNT(++counted[kCountTreeNodes]);
         vec2 node = treeNode(level, i >> level, slice, n);
         float zi = compareDepth(depthAt(r, i)), zj = compareDepth(depthAt(r, j));
         if (!kLightColor && max(zi, zj) <= node.x) {
@@ -139,10 +172,14 @@ vec3 marchSample(vec3 C, vec3 v, float S, int slice) {
         // line: then it is marched on its own, texel by texel, as brute force would.
         vec2 across = vec2(-r.dir.y, r.dir.x) * inversesqrt(dot(r.dir, r.dir));
         float offLine = max(abs(dot(uv0 - r.origin, across)), abs(dot(uv1 - r.origin, across)));
-        if (r.tb >= r.ta && offLine * frame.shadowInfo.x <= 0.5)
+        COUNT(++counted[kCountRays]);
+        if (r.tb >= r.ta && offLine * frame.shadowInfo.x <= 0.5) {
             marchLine(acc, r, slice);
-        else
+        } else {
             marchFrustumSegment(acc, C, v, f0, f1, 0u);
+            COUNT(++counted[kCountDegenerateRays]);
+            COUNT(counted[kCountDegenerateSteps] += countedLookups);
+        }
     }
     advance(acc, t1, vec3(1.0));
     return finishInscatter(acc, v);
@@ -159,6 +196,14 @@ void main() {
     vec3 C = frame.cameraPos.xyz;
     float S = rayLength(z, v);
     vec3 lin = marchSample(C, v, S, p.y);
+#if defined(LS_COUNT_STEPS) && LS_COUNT_STEPS
+#if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
+    if (shadowFace == 0) ++counted[kCountSamples];
+#else
+    ++counted[kCountSamples];
+#endif
+    flushCounts(p.y);
+#endif
     float defined = 1.0;
     if (frame.epipolar2.w > 0.5) {
         float t0, t1;

@@ -9,6 +9,11 @@
 #include "light_volume.glsl"
 #include "shadow.glsl"
 
+// A counting variant of a march (ray_march.frag with LS_COUNT_STEPS) defines it to count look-ups.
+#ifndef LS_COUNT_LOOKUP
+#define LS_COUNT_LOOKUP()
+#endif
+
 // Adds [f0, f1] (inside the shadow map's frustum) to acc, one step per texel crossed (at most
 // maxSteps when that is not 0), each step's visibility taken at its end.
 void marchFrustumSegmentOf(mat4 M, inout Inscatter acc, vec3 C, vec3 v, float f0, float f1,
@@ -25,6 +30,7 @@ void marchFrustumSegmentOf(mat4 M, inout Inscatter acc, vec3 C, vec3 v, float f0
         float a = float(k) / float(n);
         vec2 uv = mix(uv0, uv1, a);
         float d = k == n ? f1 : mix(f0 * iw0, f1 * iw1, a) / mix(iw0, iw1, a);
+        LS_COUNT_LOOKUP();
         advance(acc, d, shadowVisibility(uv, mix(z0, z1, a)) * lightColorAt(uv));
     }
 }

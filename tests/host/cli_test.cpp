@@ -78,6 +78,33 @@ TEST(Cli, RenderASunAndTwoSpots) {
     EXPECT_NE(slices.out.find("method slices renders one light per frame"), std::string::npos) << slices.out;
 }
 
+// --count-steps: epipolar's ray-march steps printed and in --timings (a frame of three lights sums
+// its chains'); a method without that march counts nothing.
+TEST(Cli, RenderCountsTheRayMarchSteps) {
+    for (const char* name : {"window_room", "atrium_lights"}) {
+        const auto r = run("render " + scene(name) +
+                           " --size 64x36 --method epipolar --count-steps --out s.png --timings "
+                           "s.json --validation");
+        ASSERT_EQ(r.exitCode, 0) << name << ": " << r.out;
+        EXPECT_NE(r.out.find("ray-march steps: {"), std::string::npos) << r.out;
+        std::ifstream t(path("s.json"));
+        const auto steps = nlohmann::json::parse(t)["steps"];
+        ASSERT_TRUE(steps.is_object()) << name;
+        EXPECT_GT(steps["samples"].get<uint64_t>(), 0u) << name;
+        EXPECT_GT(steps["rays"].get<uint64_t>(), 0u) << name;
+        EXPECT_GT(steps["lineSteps"].get<uint64_t>(), 0u) << name;
+        EXPECT_GT(steps["treeNodes"].get<uint64_t>(), 0u) << name;  // the profile's trees are on
+        EXPECT_GT(steps["stepsPerSample"].get<double>(), 0.0) << name;
+    }
+    const auto brute =
+        run("render " + scene("window_room") +
+            " --size 64x36 --method brute-force --count-steps --out b.png --timings b.json");
+    ASSERT_EQ(brute.exitCode, 0) << brute.out;
+    EXPECT_NE(brute.out.find("ray-march steps: none counted"), std::string::npos) << brute.out;
+    std::ifstream t(path("b.json"));
+    EXPECT_FALSE(nlohmann::json::parse(t).contains("steps"));
+}
+
 TEST(Cli, RenderEachSceneWithEachMethod) {
     for (const char* name : {"atrium", "window_room", "engine_spot", "point_fog"})
         for (const char* method : {"epipolar", "brute-force", "cone-march", "slices", "auto"}) {
