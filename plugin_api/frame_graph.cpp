@@ -12,15 +12,18 @@ namespace lightscatter::detail {
 bool GraphConfig::operator==(const GraphConfig& o) const {
     return method == o.method && light == o.light && shadowed == o.shadowed &&
            touchesView == o.touchesView && minMaxTrees == o.minMaxTrees && fixup == o.fixup &&
-           slices == o.slices && samples == o.samples && shadowMapSize == o.shadowMapSize &&
+           inscatterRefinement == o.inscatterRefinement && slices == o.slices &&
+           samples == o.samples && shadowMapSize == o.shadowMapSize &&
            screen.width == o.screen.width && screen.height == o.screen.height &&
-           depthStencil == o.depthStencil && coordinates == o.coordinates && depth == o.depth && color == o.color &&
-           shadowMap == o.shadowMap && lightColor == o.lightColor &&
+           depthStencil == o.depthStencil && coordinates == o.coordinates && depth == o.depth &&
+           color == o.color && shadowMap == o.shadowMap && lightColor == o.lightColor &&
            inscatterOut == o.inscatterOut && table == o.table && extinction == o.extinction &&
-           coneSamples == o.coneSamples && coneLimited == o.coneLimited && coneJitter == o.coneJitter &&
-           shadowSampling == o.shadowSampling && sliceTarget == o.sliceTarget && sliceBlur == o.sliceBlur && sliceDither == o.sliceDither && beamCapacity == o.beamCapacity && reversedZ == o.reversedZ &&
-           noise == o.noise && engineNoise == o.engineNoise && poisonTransients == o.poisonTransients &&
-           lights == o.lights;
+           coneSamples == o.coneSamples && coneLimited == o.coneLimited &&
+           coneJitter == o.coneJitter && shadowSampling == o.shadowSampling &&
+           sliceTarget == o.sliceTarget && sliceBlur == o.sliceBlur &&
+           sliceDither == o.sliceDither && beamCapacity == o.beamCapacity &&
+           reversedZ == o.reversedZ && noise == o.noise && engineNoise == o.engineNoise &&
+           poisonTransients == o.poisonTransients && lights == o.lights;
 }
 
 ls::SliceAccumulation sliceAccumulation(SliceTarget target) {
@@ -154,7 +157,8 @@ FrameGraph buildLightsGraph(const GraphConfig& c, const std::vector<ls::Shared>&
         ls::CompositeOutputs o;
         if (l.shadowed && c.method == Method::Epipolar) {
             ls::EpipolarSizes sizes{c.slices, c.samples, l.shadowMapSize};
-            ls::EpipolarOptions options{l.minMaxTrees, c.fixup, l.light == ls::LightKind::Point};
+            ls::EpipolarOptions options{l.minMaxTrees, c.fixup, l.light == ls::LightKind::Point,
+                                        c.inscatterRefinement};
             o = ls::addEpipolarNodes(g, in, sizes, options, target);
         } else {
             const rg::ImageRef lin = l.shadowed ? ls::addBruteForce(g, in) : ls::addUnshadowed(g, in);
@@ -166,11 +170,16 @@ FrameGraph buildLightsGraph(const GraphConfig& c, const std::vector<ls::Shared>&
     }
     g.setNameSuffix({});
     if (chains == 0) ls::addComposite(g, base, color, {}, linOut);  // extinction only
-    fg.summary = std::to_string(c.lights.size()) + " lights, " + std::to_string(chains) + " reaching the view: " +
-                 (c.method == Method::BruteForce ? "brute-force ray marching"
-                                                 : std::string("epipolar sampling") + (c.fixup ? ", fix-up" : "")) +
-                 " per shadowed light, closed form per unshadowed one; the first composite applies the "
-                 "extinction, each light's Lin is added to the color as its chain ends";
+    fg.summary =
+        std::to_string(c.lights.size()) + " lights, " + std::to_string(chains) +
+        " reaching the view: " +
+        (c.method == Method::BruteForce
+             ? "brute-force ray marching"
+             : std::string("epipolar sampling") +
+                   (c.inscatterRefinement ? ", refined on in-scattering differences" : "") +
+                   (c.fixup ? ", fix-up" : "")) +
+        " per shadowed light, closed form per unshadowed one; the first composite applies the "
+        "extinction, each light's Lin is added to the color as its chain ends";
     return fg;
 }
 
@@ -274,12 +283,14 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared, ls::S
         } else {
             ls::EpipolarSizes sizes{c.slices, c.samples, c.shadowMapSize};
             const bool cube = c.light == ls::LightKind::Point;  // a shadowed point light's cube map
-            ls::EpipolarOptions options{c.minMaxTrees, c.fixup, cube};
+            ls::EpipolarOptions options{c.minMaxTrees, c.fixup, cube, c.inscatterRefinement};
             // Composited in the chain's unwarp and fix-up: no composite pass.
             ls::addEpipolarNodes(g, in, sizes, options, {fg.color, fg.inscatterOut, false});
-            fg.summary = std::string("epipolar sampling") + (c.minMaxTrees ? " with min/max trees" : "") +
-                         (cube ? " per cube face" : "") + (c.fixup ? ", fix-up" : "") +
-                         ", composited in the unwarp";
+            fg.summary = std::string("epipolar sampling") +
+                         (c.minMaxTrees ? " with min/max trees" : "") +
+                         (cube ? " per cube face" : "") +
+                         (c.inscatterRefinement ? ", refined on in-scattering differences" : "") +
+                         (c.fixup ? ", fix-up" : "") + ", composited in the unwarp";
             return fg;
         }
     }

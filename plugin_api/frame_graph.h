@@ -51,6 +51,7 @@ struct GraphConfig {
     bool touchesView = true;
     bool minMaxTrees = true;
     bool fixup = true;
+    bool inscatterRefinement = false;  // epipolar: a second march where marched samples differ
     uint32_t slices = 0, samples = 0, shadowMapSize = 0;
     VkExtent2D screen{0, 0};
     VkFormat depthStencil = VK_FORMAT_UNDEFINED;

@@ -171,6 +171,7 @@ struct Plugin::Impl {
     void describeFrame(GraphConfig& c, const FrameDescription& frame,
                        const detail::FrameSetup& setup) const {
         c.fixup = setup.epipolar.fixup;
+        c.inscatterRefinement = setup.epipolar.inscatterRefinementThreshold > 0.0f;
         c.slices = setup.epipolar.slices;
         c.samples = setup.epipolar.samples;
         c.screen = setup.screen;
@@ -414,7 +415,7 @@ struct Plugin::Impl {
         r.device = device.name();
         r.depthStencilFormat = rg::formatName(depthStencil);
         if (t.valid) {
-            for (const auto& p : t.passes) r.passes.push_back({p.name, p.milliseconds});
+            for (const auto& p : t.passes) r.passes.push_back({p.name, p.milliseconds, p.samples});
             r.totalMilliseconds = t.totalMilliseconds;
         }
         r.passNames = f->passNames;
