@@ -259,6 +259,23 @@ int runBench(Args& args) {
             row["frames"] = frames;
             row["time"] = spreadJson(t);
             row["passes"] = namedSpreads(last.plugin.passes, perPass);
+            // Epipolar's ray-marched samples, counted by its marches: the first march, and the
+            // samples the refinement on in-scattering differences added. A cube's later faces
+            // march the same samples again, so only each light's first face is counted.
+            uint64_t marched = 0, refined = 0;
+            for (const auto& p : last.plugin.passes) {
+                if (p.samples < 0) continue;
+                if (p.name.find("cube face ") != std::string::npos &&
+                    p.name.find("cube face +X)") == std::string::npos)
+                    continue;
+                (p.name.find("(refinement") != std::string::npos ? refined : marched) +=
+                    static_cast<uint64_t>(p.samples);
+            }
+            if (run.method == lightscatter::Method::Epipolar || last.plugin.method == "epipolar") {
+                row["marchedSamples"] = marched;
+                row["refinedSamples"] = refined;
+                row["inscatterRefinementThreshold"] = used.inscatterRefinementThreshold;
+            }
             // The plugin's CPU work per frame (the beam tree), outside the GPU time above.
             row["cpuTime"] = spreadJson(cpu);
             row["cpuWork"] = namedSpreads(last.plugin.cpuWork, perCpuWork);

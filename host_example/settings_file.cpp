@@ -21,6 +21,7 @@ constexpr const char* kFields[] = {"slices",
                                    "samplesPerSlice",
                                    "initialSampleStep",
                                    "refinementThreshold",
+                                   "inscatterRefinementThreshold",
                                    "bilateralThreshold",
                                    "minMaxTrees",
                                    "shadowFilter",
@@ -71,6 +72,8 @@ class SettingsReader {
                 s.initialSampleStep = whole(v, key);
             else if (key == "refinementThreshold")
                 s.refinementThreshold = number(v, key);
+            else if (key == "inscatterRefinementThreshold")
+                s.inscatterRefinementThreshold = number(v, key);
             else if (key == "bilateralThreshold")
                 s.bilateralThreshold = number(v, key);
             else if (key == "minMaxTrees")

@@ -16,7 +16,8 @@ const char* kCommon =
 const char* kSettings =
     "  --settings FILE.json  every field of lightscatter::Settings by name (slices,\n"
     "                        samplesPerSlice, initialSampleStep, refinementThreshold,\n"
-    "                        bilateralThreshold, minMaxTrees, shadowFilter, fixup, fixupMaxSteps,\n"
+    "                        inscatterRefinementThreshold, bilateralThreshold, minMaxTrees,\n"
+    "                        shadowFilter, fixup, fixupMaxSteps,\n"
     "                        shadowDepthBias, interpolation, shadowMapSize; cone-march's\n"
     "                        coneSamples, coneLimited, coneJitter, shadowSampling; slices'\n"
     "                        slicePlanes, sliceTarget (float16, float32, rgba8),\n"

@@ -63,7 +63,10 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
     if (shadowMapSize < 1 || shadowMapSize > 16384)
         throw InvalidInput("lightscatter: budget shadow-map size " + std::to_string(shadowMapSize) +
                            ": must be in [1, 16384]");
-    const Settings s = profile == Profile::Custom ? (custom ? *custom : Settings{}) : profileSettings(profile);
+    Settings s =
+        profile == Profile::Custom ? (custom ? *custom : Settings{}) : profileSettings(profile);
+    // Read from custom with every profile, as a frame does: it adds the refinement's passes.
+    if (custom) s.inscatterRefinementThreshold = custom->inscatterRefinementThreshold;
     detail::checkSettings(s);
 
     detail::GraphConfig c;
@@ -76,6 +79,7 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
     c.shadowed = light != LightType::Point || method == Method::Epipolar;
     c.minMaxTrees = s.minMaxTrees && ls::treesFit(shadowMapSize);
     c.fixup = s.fixup;
+    c.inscatterRefinement = s.inscatterRefinementThreshold > 0.0f;
     c.slices = s.slices;
     c.samples = s.samplesPerSlice;
     c.shadowMapSize = shadowMapSize;
@@ -158,6 +162,7 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
     detail::GraphConfig c;
     c.method = method;
     c.fixup = s.fixup;
+    c.inscatterRefinement = s.inscatterRefinementThreshold > 0.0f;
     c.slices = s.slices;
     c.samples = s.samplesPerSlice;
     c.screen = {screenWidth, screenHeight};
@@ -171,6 +176,7 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
         l.shadowed = true;  // a point light with its cube map
         l.minMaxTrees = s.minMaxTrees && ls::treesFit(shadowMapSize);
         l.fixup = s.fixup;
+        l.inscatterRefinement = s.inscatterRefinementThreshold > 0.0f;
         l.slices = s.slices;
         l.samples = s.samplesPerSlice;
         l.shadowMapSize = shadowMapSize;

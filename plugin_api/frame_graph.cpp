@@ -15,7 +15,8 @@ namespace lightscatter::detail {
 bool GraphConfig::operator==(const GraphConfig& o) const {
     return method == o.method && light == o.light && shadowed == o.shadowed &&
            touchesView == o.touchesView && minMaxTrees == o.minMaxTrees && fixup == o.fixup &&
-           slices == o.slices && samples == o.samples && shadowMapSize == o.shadowMapSize &&
+           inscatterRefinement == o.inscatterRefinement && slices == o.slices &&
+           samples == o.samples && shadowMapSize == o.shadowMapSize &&
            screen.width == o.screen.width && screen.height == o.screen.height &&
            depthStencil == o.depthStencil && coordinates == o.coordinates && depth == o.depth &&
            color == o.color && shadowMap == o.shadowMap && lightColor == o.lightColor &&
@@ -181,7 +182,7 @@ FrameGraph buildLightsGraph(const GraphConfig& c, const std::vector<ls::Shared>&
         if (l.shadowed && c.method == Method::Epipolar) {
             ls::EpipolarSizes sizes{l.slices, l.samples, l.shadowMapSize};
             ls::EpipolarOptions options{l.minMaxTrees, l.fixup, l.light == ls::LightKind::Point,
-                                        counts};
+                                        counts, l.inscatterRefinement};
             const ls::EpipolarOutputs e = ls::addEpipolarNodes(g, in, sizes, options, target);
             o = e.composited;
             counts = e.stepCounts;
@@ -197,13 +198,20 @@ FrameGraph buildLightsGraph(const GraphConfig& c, const std::vector<ls::Shared>&
     if (chains == 0) ls::addComposite(g, base, color, {}, linOut);  // extinction only
     const bool anyFixup = std::any_of(c.lights.begin(), c.lights.end(),
                                       [](const LightChainConfig& l) { return l.fixup; });
+    const bool anyRefined = std::any_of(c.lights.begin(), c.lights.end(),
+                                        [](const LightChainConfig& l) { return l.inscatterRefinement; });
     // Cleared even when no chain marches, so that the frame's counts are its own.
     if (counts.valid()) g.markOutput(counts);
-    fg.summary = std::to_string(c.lights.size()) + " lights, " + std::to_string(chains) + " reaching the view: " +
-                 (c.method == Method::BruteForce ? "brute-force ray marching"
-                                                 : std::string("epipolar sampling") + (anyFixup ? ", fix-up" : "")) +
-                 " per shadowed light, closed form per unshadowed one; the first composite applies the "
-                 "extinction, each light's Lin is added to the color as its chain ends";
+    fg.summary =
+        std::to_string(c.lights.size()) + " lights, " + std::to_string(chains) +
+        " reaching the view: " +
+        (c.method == Method::BruteForce
+             ? "brute-force ray marching"
+             : std::string("epipolar sampling") +
+                   (anyRefined ? ", refined on in-scattering differences" : "") +
+                   (anyFixup ? ", fix-up" : "")) +
+        " per shadowed light, closed form per unshadowed one; the first composite applies the "
+        "extinction, each light's Lin is added to the color as its chain ends";
     return fg;
 }
 
@@ -307,14 +315,17 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared, ls::S
         } else {
             ls::EpipolarSizes sizes{c.slices, c.samples, c.shadowMapSize};
             const bool cube = c.light == ls::LightKind::Point;  // a shadowed point light's cube map
-            ls::EpipolarOptions options{c.minMaxTrees, c.fixup, cube, clearedStepCounter(g, c, fg)};
+            ls::EpipolarOptions options{c.minMaxTrees, c.fixup, cube, clearedStepCounter(g, c, fg),
+                                        c.inscatterRefinement};
             // Composited in the chain's unwarp and fix-up: no composite pass.
             const ls::EpipolarOutputs e =
                 ls::addEpipolarNodes(g, in, sizes, options, {fg.color, fg.inscatterOut, false});
             if (e.stepCounts.valid()) g.markOutput(e.stepCounts);
-            fg.summary = std::string("epipolar sampling") + (c.minMaxTrees ? " with min/max trees" : "") +
-                         (cube ? " per cube face" : "") + (c.fixup ? ", fix-up" : "") +
-                         ", composited in the unwarp";
+            fg.summary = std::string("epipolar sampling") +
+                         (c.minMaxTrees ? " with min/max trees" : "") +
+                         (cube ? " per cube face" : "") +
+                         (c.inscatterRefinement ? ", refined on in-scattering differences" : "") +
+                         (c.fixup ? ", fix-up" : "") + ", composited in the unwarp";
             return fg;
         }
     }

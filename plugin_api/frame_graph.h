@@ -36,12 +36,14 @@ struct LightChainConfig {
     bool touchesView = true;
     bool minMaxTrees = true;
     bool fixup = true;             // the light's own settings (LightInput::settings, or the frame's)
+    bool inscatterRefinement = false;
     uint32_t slices = 0, samples = 0;
     uint32_t shadowMapSize = 0;
     ImportState shadowMap, lightColor, table;  // format UNDEFINED: absent
     bool operator==(const LightChainConfig& o) const {
         return light == o.light && shadowed == o.shadowed && touchesView == o.touchesView &&
-               minMaxTrees == o.minMaxTrees && fixup == o.fixup && slices == o.slices &&
+               minMaxTrees == o.minMaxTrees && fixup == o.fixup &&
+               inscatterRefinement == o.inscatterRefinement && slices == o.slices &&
                samples == o.samples && shadowMapSize == o.shadowMapSize && shadowMap == o.shadowMap &&
                lightColor == o.lightColor && table == o.table;
     }
@@ -54,6 +56,7 @@ struct GraphConfig {
     bool touchesView = true;
     bool minMaxTrees = true;
     bool fixup = true;
+    bool inscatterRefinement = false;  // epipolar: a second march where marched samples differ
     uint32_t slices = 0, samples = 0, shadowMapSize = 0;
     VkExtent2D screen{0, 0};
     VkFormat depthStencil = VK_FORMAT_UNDEFINED;

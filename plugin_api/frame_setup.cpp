@@ -401,6 +401,9 @@ void checkSettings(const Settings& s) {
              ": must be a power of two between 1 and 128");
     if (!(s.refinementThreshold > 0.0f) || !finite(s.refinementThreshold))
         fail("custom.refinementThreshold = " + num(s.refinementThreshold) + ": must be > 0");
+    if (!(s.inscatterRefinementThreshold >= 0.0f) || !finite(s.inscatterRefinementThreshold))
+        fail("custom.inscatterRefinementThreshold = " + num(s.inscatterRefinementThreshold) +
+             ": must be finite and >= 0 (0: off)");
     if (!(s.bilateralThreshold > 0.0f) || !finite(s.bilateralThreshold))
         fail("custom.bilateralThreshold = " + num(s.bilateralThreshold) + ": must be > 0");
     if (!finite(s.shadowDepthBias)) fail("custom.shadowDepthBias is not finite");
@@ -532,6 +535,7 @@ FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
         // Profiles fix slices and samples; the finer choices are the engine's.
         s.settings.initialSampleStep = f.custom.initialSampleStep;
         s.settings.refinementThreshold = f.custom.refinementThreshold;
+        s.settings.inscatterRefinementThreshold = f.custom.inscatterRefinementThreshold;
         s.settings.bilateralThreshold = f.custom.bilateralThreshold;
         s.settings.minMaxTrees = f.custom.minMaxTrees;
         s.settings.shadowFilter = f.custom.shadowFilter;
@@ -709,6 +713,7 @@ FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
     s.epipolar.samples = s.settings.samplesPerSlice;
     s.epipolar.initialStep = s.settings.initialSampleStep;
     s.epipolar.refinementThreshold = s.settings.refinementThreshold;
+    s.epipolar.inscatterRefinementThreshold = s.settings.inscatterRefinementThreshold;
     s.epipolar.bilateralThreshold = s.settings.bilateralThreshold;
     s.epipolar.minMaxTrees = s.settings.minMaxTrees && ls::treesFit(l.shadowMapSize);
     s.epipolar.bilinearShadow = s.settings.shadowFilter == ShadowFilter::Bilinear;

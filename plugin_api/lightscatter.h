@@ -109,6 +109,13 @@ struct Settings {
     uint32_t samplesPerSlice = 1024;     // samples along each line
     uint32_t initialSampleStep = 16;     // ray-marching samples every N samples (power of two, <= 128)
     float refinementThreshold = 0.03f;   // relative camera-z jump that is a depth break
+    // Epipolar refinement on what the samples carry (docs/epipolar.md, "Refinement on in-scattering
+    // differences"). 0 (the default): off. Above 0: after the first march, wherever the two
+    // ray-marching samples an interpolated sample lies between differ in some channel by more than
+    // this fraction of the larger (the shadowed fraction, or Lin with Interpolation::Inscattering),
+    // or one carries light and the other none, every sample between them is marched too (a second,
+    // stencil-limited march), so a shadow edge no depth break marks is not interpolated across.
+    float inscatterRefinementThreshold = 0.0f;
     float bilateralThreshold = 0.1f;     // relative camera-z difference accepted when unwarping
     bool minMaxTrees = true;             // 1D min/max binary trees per slice
     ShadowFilter shadowFilter = ShadowFilter::Bilinear;  // 2x2 PCF or nearest texel
@@ -371,6 +378,10 @@ public:
 struct PassTime {
     std::string name;
     double milliseconds = 0;
+    // The samples an epipolar ray march marched (the first march, and with
+    // Settings::inscatterRefinementThreshold the refinement's, which marches only the samples it
+    // adds), counted by an occlusion query; -1 for the other passes.
+    int64_t samples = -1;
 };
 
 // What epipolar's ray march did in a frame (DebugOptions::countSteps), summed over the frame's
@@ -435,10 +446,12 @@ struct Budget {
 };
 
 // A method's memory for a profile, screen and shadow-map size; needs no GPU. Epipolar, slices and
-// beam-tree-analytic (its triangle buffer at its first size, 12288 points). `custom` gives the settings of the Custom
-// profile, and with every profile the ones read from `custom` (slices: a noise amplitude above 0
-// adds the plugin's tiling noise). Epipolar budgets a point light with a cube shadow map of six
-// shadowMapSize faces (its per-face lines and trees alias each other), the other methods without.
+// beam-tree-analytic (its triangle buffer at its first size, 12288 points). `custom` gives the
+// settings of the Custom profile, and with every profile the ones read from `custom` (epipolar:
+// inscatterRefinementThreshold above 0 adds the refinement's passes; slices: a noise amplitude
+// above 0 adds the plugin's tiling noise). Epipolar budgets a point light with a cube shadow map of
+// six shadowMapSize faces (its per-face lines and trees alias each other), the other methods
+// without.
 LIGHTSCATTER_API Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
                                uint32_t shadowMapSize, LightType light = LightType::Spot,
                                const Settings* custom = nullptr, Method method = Method::Epipolar);

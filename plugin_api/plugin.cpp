@@ -207,6 +207,7 @@ struct Plugin::Impl {
     void describeFrame(GraphConfig& c, const FrameDescription& frame,
                        const detail::FrameSetup& setup) const {
         c.fixup = setup.epipolar.fixup;
+        c.inscatterRefinement = setup.epipolar.inscatterRefinementThreshold > 0.0f;
         c.slices = setup.epipolar.slices;
         c.samples = setup.epipolar.samples;
         c.screen = setup.screen;
@@ -262,6 +263,7 @@ struct Plugin::Impl {
             l.touchesView = touches[i];
             l.minMaxTrees = s.epipolar.minMaxTrees;
             l.fixup = s.epipolar.fixup;
+            l.inscatterRefinement = s.epipolar.inscatterRefinementThreshold > 0.0f;
             l.slices = s.epipolar.slices;
             l.samples = s.epipolar.samples;
             l.shadowMapSize = s.light.shadowMapSize;
@@ -457,7 +459,7 @@ struct Plugin::Impl {
         r.device = device.name();
         r.depthStencilFormat = rg::formatName(depthStencil);
         if (t.valid) {
-            for (const auto& p : t.passes) r.passes.push_back({p.name, p.milliseconds});
+            for (const auto& p : t.passes) r.passes.push_back({p.name, p.milliseconds, p.samples});
             r.totalMilliseconds = t.totalMilliseconds;
             if (f->countedSteps) r.steps = readStepCounts(frame);
         }

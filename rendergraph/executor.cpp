@@ -51,6 +51,22 @@ GraphExecutor::GraphExecutor(const Device& device, RenderGraph& graph, CompiledG
         device_.setName(queries_, VK_OBJECT_TYPE_QUERY_POOL, "render graph pass timestamps");
         vkResetQueryPool(dev, queries_, 0, q.queryCount);
 
+        // One occlusion query per counting graphics pass, in one slot per frame like the stamps.
+        countIndex_.assign(compiled_.passes.size(), -1);
+        for (uint32_t pos = 0; pos < compiled_.passes.size(); ++pos) {
+            const PassDecl& pass = graph_.passes()[compiled_.passes[pos].pass];
+            if (pass.countSamples && pass.type == PassType::Graphics)
+                countIndex_[pos] = static_cast<int32_t>(countedPerFrame_++);
+        }
+        if (countedPerFrame_) {
+            VkQueryPoolCreateInfo o{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+            o.queryType = VK_QUERY_TYPE_OCCLUSION;
+            o.queryCount = countedPerFrame_ * kTimingSlots;
+            RG_VK_CREATE(vkCreateQueryPool(dev, &o, nullptr, &samples_));
+            device_.setName(samples_, VK_OBJECT_TYPE_QUERY_POOL, "render graph pass sample counts");
+            vkResetQueryPool(dev, samples_, 0, o.queryCount);
+        }
+
         VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
         pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
         pool.queueFamilyIndex = device_.queueFamily();
@@ -101,9 +117,11 @@ void GraphExecutor::destroy() {
     if (fence_) vkDestroyFence(dev, fence_, nullptr);
     if (pool_) vkDestroyCommandPool(dev, pool_, nullptr);
     if (queries_) vkDestroyQueryPool(dev, queries_, nullptr);
+    if (samples_) vkDestroyQueryPool(dev, samples_, nullptr);
     fence_ = VK_NULL_HANDLE;
     pool_ = VK_NULL_HANDLE;
     queries_ = VK_NULL_HANDLE;
+    samples_ = VK_NULL_HANDLE;
 }
 
 void GraphExecutor::createMemory() {
@@ -350,6 +368,10 @@ void GraphExecutor::recordPass(VkCommandBuffer cmd, uint32_t position) {
             stencil = attachment(*plan.stencil, images_[plan.stencil->resource].full);
             info.pStencilAttachment = &stencil;
         }
+        const int32_t counted = countIndex_[position];
+        if (counted >= 0)
+            vkCmdBeginQuery(cmd, samples_,
+                            slot_ * countedPerFrame_ + static_cast<uint32_t>(counted), 0);
         vkCmdBeginRendering(cmd, &info);
         VkViewport viewport{0.0f, 0.0f, static_cast<float>(plan.renderExtent.width),
                             static_cast<float>(plan.renderExtent.height), 0.0f, 1.0f};
@@ -358,6 +380,8 @@ void GraphExecutor::recordPass(VkCommandBuffer cmd, uint32_t position) {
         vkCmdSetScissor(cmd, 0, 1, &scissor);
         if (pass.execute) pass.execute(ctx);
         vkCmdEndRendering(cmd);
+        if (counted >= 0)
+            vkCmdEndQuery(cmd, samples_, slot_ * countedPerFrame_ + static_cast<uint32_t>(counted));
     } else if (pass.execute) {
         pass.execute(ctx);
     }
@@ -371,6 +395,7 @@ uint64_t GraphExecutor::record(VkCommandBuffer cmd, uint64_t frame) {
     if (frame == 0) frame = lastFrame_ + 1;
     const uint32_t slot = static_cast<uint32_t>(frame % kTimingSlots);
     firstQuery_ = slot * queriesPerFrame_;
+    slot_ = slot;
     // Reset on the host, so the slot reads as not finished until this frame has run; and in the
     // command buffer too, so that it may be submitted again.
     vkResetQueryPool(device_.device(), queries_, firstQuery_, queriesPerFrame_);
@@ -378,6 +403,10 @@ uint64_t GraphExecutor::record(VkCommandBuffer cmd, uint64_t frame) {
     lastFrame_ = frame;
     const uint32_t queryCount = 2 * static_cast<uint32_t>(compiled_.passes.size());
     if (queryCount) vkCmdResetQueryPool(cmd, queries_, firstQuery_, queryCount);
+    if (countedPerFrame_) {
+        vkResetQueryPool(device_.device(), samples_, slot * countedPerFrame_, countedPerFrame_);
+        vkCmdResetQueryPool(cmd, samples_, slot * countedPerFrame_, countedPerFrame_);
+    }
     device_.beginLabel(cmd, "render graph");
     // Import stages and access may change per frame (layouts may not), so the barriers that
     // wait on or hand back an import are patched here.
@@ -483,11 +512,24 @@ FrameTimings GraphExecutor::readTimings(uint64_t frame) {
     const uint32_t bits = device_.timestampValidBits();
     const uint64_t mask = bits >= 64 ? ~uint64_t{0} : ((uint64_t{1} << bits) - 1);
     const double toMs = device_.timestampPeriodNs() * 1e-6;
+    std::vector<uint64_t> counts(2 * countedPerFrame_);
+    if (countedPerFrame_) {
+        const VkResult c = vkGetQueryPoolResults(
+            device_.device(), samples_, slot * countedPerFrame_, countedPerFrame_,
+            counts.size() * sizeof(uint64_t), counts.data(), 2 * sizeof(uint64_t),
+            VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WITH_AVAILABILITY_BIT);
+        if (c == VK_NOT_READY) return t;
+        check(c, "vkGetQueryPoolResults");
+        for (uint32_t i = 0; i < countedPerFrame_; ++i)
+            if (counts[2 * i + 1] == 0) return t;
+    }
     for (uint32_t pos = 0; pos < n; ++pos) {
         const uint64_t a = stamps[2 * pos] & mask, b = stamps[2 * pos + 1] & mask;
         const uint64_t ticks = (b - a) & mask;
-        t.passes.push_back({graph_.passes()[compiled_.passes[pos].pass].name,
-                            static_cast<double>(ticks) * toMs});
+        const int32_t counted = countIndex_[pos];
+        t.passes.push_back(
+            {graph_.passes()[compiled_.passes[pos].pass].name, static_cast<double>(ticks) * toMs,
+             counted >= 0 ? static_cast<int64_t>(counts[2 * static_cast<uint32_t>(counted)]) : -1});
     }
     const uint64_t ticks = ((stamps[2 * n - 1] & mask) - (stamps[0] & mask)) & mask;
     t.totalMilliseconds = static_cast<double>(ticks) * toMs;

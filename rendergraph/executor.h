@@ -19,6 +19,10 @@ namespace rg {
 struct PassTiming {
     std::string name;
     double milliseconds = 0.0;
+    // Samples that passed the tests of a graphics pass that counts them (PassBuilder::
+    // countSamples; an occlusion query without the precise bit, exact on the usual drivers); -1:
+    // not counted.
+    int64_t samples = -1;
 };
 
 struct FrameTimings {
@@ -92,11 +96,15 @@ private:
     std::map<VkImage, ImageObjects> importedViews_;  // engine images seen so far
     std::vector<RenderingFormats> formats_;          // by pass position
     VkQueryPool queries_ = VK_NULL_HANDLE;
+    VkQueryPool samples_ = VK_NULL_HANDLE;  // occlusion queries of the passes that count samples
+    std::vector<int32_t> countIndex_;       // by pass position: its occlusion query, or -1
+    uint32_t countedPerFrame_ = 0;
     VkCommandPool pool_ = VK_NULL_HANDLE;
     VkCommandBuffer cmd_ = VK_NULL_HANDLE;
     VkFence fence_ = VK_NULL_HANDLE;
     uint32_t queriesPerFrame_ = 0;
     uint32_t firstQuery_ = 0;           // the slot being recorded
+    uint32_t slot_ = 0;                 // ... and its slot
     uint64_t lastFrame_ = 0;            // 0: nothing recorded yet
     std::vector<uint64_t> slotFrames_;  // the frame whose queries each slot holds
 };

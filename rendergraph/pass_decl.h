@@ -66,6 +66,8 @@ struct PassDecl {
     std::vector<ResourceUse> uses;
     std::function<void(PassContext&)> execute;
     bool sideEffect = false;  // never culled (e.g. it writes something outside the graph)
+    // Graphics: an occlusion query counts the samples that pass its tests (FrameTimings reads it).
+    bool countSamples = false;
     // A graphics pass without attachments (its fragments only write storage images) renders over
     // this extent; with attachments it is theirs.
     VkExtent2D renderArea{0, 0};

@@ -249,6 +249,11 @@ PassBuilder& PassBuilder::sideEffect() {
     return *this;
 }
 
+PassBuilder& PassBuilder::countSamples() {
+    graph_->passes_[pass_].countSamples = true;
+    return *this;
+}
+
 PassBuilder& PassBuilder::renderArea(VkExtent2D extent) {
     graph_->passes_[pass_].renderArea = extent;
     return *this;

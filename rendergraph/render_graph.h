@@ -56,6 +56,9 @@ public:
 
     PassBuilder& execute(std::function<void(PassContext&)> fn);
     PassBuilder& sideEffect();
+    // Graphics: count the samples that pass the pass's tests (PassTiming::samples), a cheap way to
+    // read back how much work a stencil- or depth-limited pass did.
+    PassBuilder& countSamples();
     // A graphics pass with no attachment renders over `extent` (its fragments write storage
     // images); a pass with attachments renders over theirs.
     PassBuilder& renderArea(VkExtent2D extent);

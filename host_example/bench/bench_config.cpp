@@ -110,9 +110,11 @@ class ConfigReader {
             if (key != "slices" && key != "samples" && key != "initialStep" &&
                 key != "shadowMapSize" && key != "size" && key != "minMaxTrees" &&
                 key != "coneSamples" && key != "coneModes" && key != "slicePlanes" &&
-                key != "sliceTargets" && key != "lightModel" && key != "refinementThreshold")
+                key != "sliceTargets" && key != "lightModel" && key != "refinementThreshold" &&
+                key != "inscatterRefinementThreshold")
                 fail("sweeps: unknown key '" + key +
-                     "' (known: slices, samples, initialStep, refinementThreshold, shadowMapSize, "
+                     "' (known: slices, samples, initialStep, refinementThreshold, "
+                     "inscatterRefinementThreshold, shadowMapSize, "
                      "size, minMaxTrees, coneSamples, coneModes, slicePlanes, sliceTargets, "
                      "lightModel)");
         for (size_t k = 0; k < c.scenes.size(); ++k)
@@ -329,6 +331,17 @@ class ConfigReader {
                                   "refinementThreshold=" + shortNumber(v.get<double>()));
             r.settings.refinementThreshold = v.get<float>();
             checkSettings(r, "sweeps.refinementThreshold");
+            c.runs.push_back(r);
+        }
+        // Epipolar's refinement on in-scattering differences (0: off): the samples between two
+        // marched ones that differ by more than this are marched too.
+        for (const json& v : values("inscatterRefinementThreshold")) {
+            if (!v.is_number())
+                fail("sweeps.inscatterRefinementThreshold[] = " + v.dump() + ": must be a number");
+            BenchRun r = balanced("inscatterRefinementThreshold",
+                                  "inscatterRefinementThreshold=" + shortNumber(v.get<double>()));
+            r.settings.inscatterRefinementThreshold = v.get<float>();
+            checkSettings(r, "sweeps.inscatterRefinementThreshold");
             c.runs.push_back(r);
         }
         for (const json& v : values("minMaxTrees")) {

@@ -46,18 +46,20 @@ rg::ImageRef addMinMaxTrees(rg::RenderGraph& g, const NodeInputs& in, const Epip
 rg::ImageRef addMarkRayMarchSamples(rg::RenderGraph& g, const NodeInputs& in,
                                     rg::ImageRef interpolationSource, rg::ImageRef epipolarStencil);
 
-// Lin (or the shadowed fraction) of the ray-marching samples: RGBA16F, samples x slices. Reads the
-// light's images; without trees every sample is marched texel by texel.
+// Lin (or the shadowed fraction) of the ray-marching samples (stencil 2): RGBA16F, samples x
+// slices. Reads the light's images; without trees every sample is marched texel by texel.
 // A point light's cube map is marched one face per pass (in.shared is the face's state): the first
 // face's pass writes a new texture, each later one adds its part of every ray to `accumulate`
-// (and returns its new version); alpha, the sample's validity, is the first face's.
+// (and returns its new version); alpha, the sample's validity, is the first face's. The refinement
+// march (overwrite) writes its samples into `accumulate`, keeping the first march's samples.
 struct EpipolarRayMarchInputs {
     rg::ImageRef coordinates, epipolarZ, sliceUvFrame;
     rg::ImageRef epipolarStencil;  // after the marking
-    rg::ImageRef trees;            // invalid: marched without trees
-    rg::ImageRef accumulate;       // invalid: a new texture
+    rg::ImageRef trees;        // invalid: marched without trees
+    rg::ImageRef accumulate;   // invalid: a new texture
     // The step counter (step_counts.h), cleared; invalid: the plain variant, nothing counted.
     rg::BufferRef stepCounts;
+    bool overwrite = false;  // with accumulate: write the marched samples instead of adding
 };
 struct EpipolarRayMarch {
     rg::ImageRef marched;
@@ -65,6 +67,18 @@ struct EpipolarRayMarch {
 };
 EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in,
                                      const EpipolarSizes& s, const EpipolarRayMarchInputs& i);
+
+// Refinement on in-scattering differences: every sample whose two interpolation sources differ in
+// `marched` by more than frame.epipolar3.x (relative, per channel) or in validity becomes a
+// ray-marching sample (its own source, stencil 1 -> 2), and the samples already marched leave the
+// march's stencil value (2 -> 3), so a second march at stencil 2 costs only the new samples.
+struct RefinedSamples {
+    rg::ImageRef interpolationSource;  // the sources' new version (rewritten in place)
+    rg::ImageRef epipolarStencil;      // the stencil's new version
+};
+RefinedSamples addRefineOnInscattering(rg::RenderGraph& g, const NodeInputs& in,
+                                       rg::ImageRef interpolationSource, rg::ImageRef marched,
+                                       rg::ImageRef epipolarStencil);
 
 // Every valid sample, interpolated between its two sources: RGBA16F, samples x slices.
 rg::ImageRef addInterpolate(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
@@ -99,6 +113,9 @@ struct EpipolarOptions {
     bool fixup = true;
     bool cubeShadow = false;
     rg::BufferRef stepCounts;  // the step counter, cleared, that the marches add to; invalid: none
+    // A second, stencil-limited march of the samples between two marched ones that differ
+    // (frame.epipolar3.x), before interpolation.
+    bool inscatterRefinement = false;
 };
 // The target's new versions (the chain composites its Lin where the unwarp and the fix-up make
 // it), and the step counter's (invalid when not counted).

@@ -57,12 +57,12 @@ RayMarchVariant rayMarchVariant(const ScatterSpec& spec) {
 
 EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in,
                                      const EpipolarSizes& s, const EpipolarRayMarchInputs& i) {
-    const bool adds = i.accumulate.valid();
+    const bool adds = i.accumulate.valid() && !i.overwrite;
     rg::ImageRef marched =
-        adds ? i.accumulate
-             : g.createImage(
-                   "in-scattering (ray-marched samples)",
-                   rg::ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT, s.samples, s.slices));
+        i.accumulate.valid() ? i.accumulate
+                             : g.createImage("in-scattering (ray-marched samples)",
+                                             rg::ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT,
+                                                                     s.samples, s.slices));
     const bool trees = i.trees.valid();
     auto pass =
         g.addPass(trees ? "ray march with min/max trees" : "ray march", rg::PassType::Graphics);
@@ -77,7 +77,9 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in,
     const rg::BufferRef counts =
         i.stepCounts.valid() ? pass.storageBufferReadWrite(i.stepCounts) : rg::BufferRef{};
     pass.stencilTest(i.epipolarStencil);
-    marched = pass.colorAttachment(marched, adds ? rg::LoadOp::Load : rg::LoadOp::Clear);
+    pass.countSamples();  // the samples marched (FrameReport's PassTime::samples)
+    marched =
+        pass.colorAttachment(marched, i.accumulate.valid() ? rg::LoadOp::Load : rg::LoadOp::Clear);
     pass.execute([in, i, trees, adds, counts](rg::PassContext& ctx) {
         // A cube face out of view adds nothing (the first face's pass writes every sample's alpha).
         if (adds && !in.shared->inView()) return;

@@ -25,8 +25,9 @@ struct FrameConstants {
     glm::vec4 lutInfo;         // log range of hEff / r0, width, height, -
     glm::vec4 simplified;      // seed 004's light model: a0 / a1 (at least 1e-12), 1 / a1, -, -
     glm::vec4 cubeFace;        // x: the cube face an epipolar per-face pass marches, y: 1 in view
+    glm::vec4 epipolar3;       // x: in-scattering refinement threshold (0: off), yzw: -
     glm::mat4 cubeFaceViewProj[6];  // point light's cube shadow map: world -> clip per face
 };
-static_assert(sizeof(FrameConstants) == 3 * 64 + 17 * 16 + 6 * 64, "std140 layout of frame.glsl");
+static_assert(sizeof(FrameConstants) == 3 * 64 + 18 * 16 + 6 * 64, "std140 layout of frame.glsl");
 
 }  // namespace ls

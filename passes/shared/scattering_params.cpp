@@ -83,6 +83,7 @@ FrameConstants makeFrameConstants(const CameraParams& camera, const LightParams&
                    static_cast<float>(treeLevels(light.shadowMapSize)),
                    settings.interpolateFraction ? 1.0f : 0.0f};
     f.cubeFace = {0.0f, 1.0f, 0.0f, 0.0f};  // no per-face pass: in view
+    f.epipolar3 = {settings.inscatterRefinementThreshold, 0.0f, 0.0f, 0.0f};
     f.lutInfo = {table.logRange, static_cast<float>(table.width), static_cast<float>(table.height), 0.0f};
     return f;
 }

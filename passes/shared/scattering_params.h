@@ -51,6 +51,7 @@ struct EpipolarSettings {
     uint32_t samples = 1024;
     uint32_t initialStep = 16;
     float refinementThreshold = 0.03f;
+    float inscatterRefinementThreshold = 0.0f;  // 0: no refinement on the marched samples
     float bilateralThreshold = 0.1f;
     bool minMaxTrees = true;
     bool bilinearShadow = true;

@@ -43,6 +43,7 @@ layout(std140, set = 0, binding = 0) uniform FrameConstants {
     vec4 cubeFace;       // x: the cube face (layer) an epipolar per-face pass marches, in the
                          // order below (lightViewProj is then that face's matrix); y: 1 when the
                          // face's frustum reaches the view (always 1 outside per-face passes)
+    vec4 epipolar3;      // x: in-scattering refinement threshold (0: off), yzw: -
     // A point light's cube shadow map (LS_CUBE_SHADOW): world -> clip of each face, in Vulkan's
     // face order +X, -X, +Y, -Y, +Z, -Z (the layers of the shadow map).
     mat4 cubeFaceViewProj[6];

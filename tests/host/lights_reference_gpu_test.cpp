@@ -213,3 +213,52 @@ TEST_F(LightsReferenceGpu, ACagedPointLightBesideASpotMatchesTheReference) {
               2.0 * kBound);
     expectTheBoundsSeeEveryLight(dev(), scene, mesh, ref, kBound, "point_cage + spot");
 }
+
+namespace {
+
+// Balanced with refinement on in-scattering differences (Settings::inscatterRefinementThreshold).
+host::RenderOptions refinedOptions(float threshold) {
+    host::RenderOptions options = methodOptions(lightscatter::Method::Epipolar);
+    options.profile = lightscatter::Profile::Custom;
+    options.custom = lightscatter::profileSettings(lightscatter::Profile::Balanced);
+    options.custom.inscatterRefinementThreshold = threshold;
+    return options;
+}
+
+}  // namespace
+
+// The atrium's sun interpolated into the walk's shadow (above: 0.23 of the first spot's Lin there
+// at the profile's step of 16) is a shadow edge no depth break marks; refinement on in-scattering
+// differences marches the samples across it. Each light's chain refines on its own samples.
+TEST_F(LightsReferenceGpu, RefinementOnInscatteringMarchesTheSunsShadowEdges) {
+    const host::SceneDesc scene = shippedScene("atrium_lights");
+    const host::MeshData mesh = host::loadSceneMeshes(scene);
+    const Reference ref = reference(scene, mesh);
+    const Judged off =
+        judge(dev(), scene, mesh, ref, refinedOptions(0.0f), "atrium_lights, no refinement");
+    const Judged on =
+        judge(dev(), scene, mesh, ref, refinedOptions(0.1f), "atrium_lights, refinement 0.1");
+    expectWithin(on, 0.03);
+    EXPECT_LT(on.error, off.error);
+    EXPECT_LT(on.region[1], 0.5 * off.region[1]) << "the first spot's region, in the sun's shadow";
+}
+
+// A point light's cube map: the refinement's second march runs face by face like the first.
+TEST_F(LightsReferenceGpu, RefinementOnInscatteringMarchesEveryCubeFace) {
+    const host::SceneDesc scene = shippedScene("point_cage");
+    ASSERT_GT(scene.light.shadowMapSize, 0u);
+    const host::MeshData mesh = host::loadSceneMeshes(scene);
+    const Reference ref = reference(scene, mesh);
+    host::EngineRenderer renderer(dev(), scene, mesh, kSize);
+    const host::FrameOutput out = renderer.render(refinedOptions(0.1f));
+    size_t faceMarches = 0;
+    for (const std::string& p : out.plugin.passNames)
+        faceMarches +=
+            p.rfind("ray march", 0) == 0 && p.find("(refinement, cube face ") != std::string::npos;
+    EXPECT_EQ(faceMarches, 6u);
+    const Judged on = judgeImage(out.inscatter, ref, "point_cage, refinement 0.1");
+    const Judged off =
+        judge(dev(), scene, mesh, ref, refinedOptions(0.0f), "point_cage, no refinement");
+    EXPECT_LT(on.error, 0.09);  // point_cage's epipolar bound (point_cage_gpu_test.cpp)
+    EXPECT_LT(on.error, off.error);
+}

@@ -48,13 +48,14 @@ class HostSettingsFile : public ::testing::Test {
 TEST_F(HostSettingsFile, EveryFieldByName) {
     const lightscatter::Settings s = load(R"({
         "slices": 512, "samplesPerSlice": 256, "initialSampleStep": 8, "refinementThreshold": 0.05,
-        "bilateralThreshold": 0.2, "minMaxTrees": false, "shadowFilter": "nearest", "fixup": false,
+        "inscatterRefinementThreshold": 0.1, "bilateralThreshold": 0.2, "minMaxTrees": false, "shadowFilter": "nearest", "fixup": false,
         "fixupMaxSteps": 64, "shadowDepthBias": -0.001, "interpolation": "inscattering",
         "shadowMapSize": 1024})");
     EXPECT_EQ(s.slices, 512u);
     EXPECT_EQ(s.samplesPerSlice, 256u);
     EXPECT_EQ(s.initialSampleStep, 8u);
     EXPECT_FLOAT_EQ(s.refinementThreshold, 0.05f);
+    EXPECT_FLOAT_EQ(s.inscatterRefinementThreshold, 0.1f);
     EXPECT_FLOAT_EQ(s.bilateralThreshold, 0.2f);
     EXPECT_FALSE(s.minMaxTrees);
     EXPECT_EQ(s.shadowFilter, lightscatter::ShadowFilter::Nearest);
@@ -120,6 +121,8 @@ TEST_F(HostSettingsFile, BadFieldsAreNamed) {
     EXPECT_EQ(errorFor(R"({"initialSampleStep": 3})"),
               "initialSampleStep = 3: must be a power of two between 1 and 128");
     EXPECT_EQ(errorFor(R"({"refinementThreshold": 0})"), "refinementThreshold = 0: must be > 0");
+    EXPECT_EQ(errorFor(R"({"inscatterRefinementThreshold": -1})"),
+              "inscatterRefinementThreshold = -1: must be finite and >= 0 (0: off)");
     EXPECT_EQ(errorFor(R"({"shadowDepthBias": 1e39})"),
               "shadowDepthBias = 1e+39: must be a finite number");
     EXPECT_EQ(errorFor(R"({"minMaxTrees": 1})"), "minMaxTrees = 1: must be true or false");
