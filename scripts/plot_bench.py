@@ -127,8 +127,12 @@ def screen_scaling(runs, out):
         ax.grid(True, which="both", alpha=0.3)
     for ax in list(axes.flat)[len(scenes):]:
         ax.axis("off")
-    handles, labels = axes.flat[0].get_legend_handles_labels()
-    fig.legend(handles, labels, fontsize=8, loc="center left", bbox_to_anchor=(1.0, 0.5))
+    legend = {}  # every method once, whichever panel has it (not every method takes every light)
+    for ax in axes.flat:
+        for handle, label in zip(*ax.get_legend_handles_labels()):
+            legend.setdefault(label, handle)
+    fig.legend(list(legend.values()), list(legend.keys()), fontsize=8, loc="center left",
+               bbox_to_anchor=(1.0, 0.5))
     fig.suptitle(device_note(rows), fontsize=9)
     fig.tight_layout()
     path = out / "scaling_screen.png"

@@ -74,14 +74,16 @@ def crossover(runs, scene):
                 points.setdefault(size, {})[which] = r["time"]["median"]
     table = sorted((s[0] * s[1], s, v["brute"] / v["epipolar"]) for s, v in points.items()
                    if "brute" in v and "epipolar" in v and v["epipolar"] > 0)
+    if not table or table[-1][2] < 1:
+        return table, None  # behind at the largest size measured
+    if all(r >= 1 for _, _, r in table):
+        return table, 0  # ahead at every size measured
+    # The last crossing from behind to ahead, interpolated in log-log.
     cross = None
     for (n0, s0, r0), (n1, s1, r1) in zip(table, table[1:]):
         if r0 < 1 <= r1:
             f = (0 - math.log(r0)) / (math.log(r1) - math.log(r0))
             cross = math.exp(math.log(n0) + f * (math.log(n1) - math.log(n0)))
-            break
-    if table and table[0][2] >= 1:
-        cross = 0  # ahead at every size measured
     return table, cross
 
 
