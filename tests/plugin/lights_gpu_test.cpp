@@ -55,6 +55,13 @@ std::string refusal(const lightscatter::FrameDescription& d) {
 
 class LightsGpu : public PluginGpuTest {
   protected:
+    // Lin of `frame` rendered over a cleared color.
+    std::vector<float> linOf(TestFrame& frame, const lightscatter::FrameDescription& d) {
+        frame.resetColor();
+        plugin().render(d);
+        return frame.inscatter();
+    }
+
     // Two spots' summed Lin against the sum of their single-light renders.
     void checkSum(Method method) {
         TestFrame a(dev(), sceneWith(spotOverGrille()));
@@ -62,12 +69,8 @@ class LightsGpu : public PluginGpuTest {
         const auto settings = smallSettings(a.spec().screen);
         const auto da = a.description(method, lightscatter::Profile::Custom, settings);
         const auto db = b.description(method, lightscatter::Profile::Custom, settings);
-        a.resetColor();
-        plugin().render(da);
-        const auto linA = a.inscatter();
-        b.resetColor();
-        plugin().render(db);
-        const auto linB = b.inscatter();
+        const auto linA = linOf(a, da);
+        const auto linB = linOf(b, db);
         a.resetColor();
         const auto report = plugin().render(withLights(da, {input(da), input(db)}));
         const auto sum = a.inscatter();
@@ -109,18 +112,12 @@ TEST_F(LightsGpu, EachLightTakesItsOwnSettings) {
     coarse.fixup = false;
     const auto da = a.description(Method::Epipolar, lightscatter::Profile::Custom, fine);
     const auto db = b.description(Method::Epipolar, lightscatter::Profile::Custom, coarse);
-    a.resetColor();
-    plugin().render(da);
-    const auto linA = a.inscatter();
-    b.resetColor();
-    plugin().render(db);
-    const auto linB = b.inscatter();
+    const auto linA = linOf(a, da);
+    const auto linB = linOf(b, db);
     auto own = input(db);
     own.settings = coarse;
     auto differences = [&](const std::vector<lightscatter::LightInput>& lights) {
-        a.resetColor();
-        plugin().render(withLights(da, lights));
-        const auto sum = a.inscatter();
+        const auto sum = linOf(a, withLights(da, lights));
         double worst = 0;
         for (size_t i = 0; i < sum.size(); ++i)
             if (i % 4 != 3)
