@@ -39,6 +39,8 @@ uint64_t recordLightShafts(Engine& engine) {
                                               VK_IMAGE_USAGE_SAMPLED_BIT,
                                               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     spot.shadowMap->finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    // Optional: this light's own settings; without them it takes frame.profile.
+    spot.settings = lightscatter::profileSettings(lightscatter::Profile::Balanced);
     lightscatter::LightInput sun;  // no shadow map: its closed form
     sun.light.type = lightscatter::LightType::Directional;
     sun.light.direction = {0.3f, -1.0f, 0.2f};
