@@ -45,7 +45,7 @@ def shares(r):
     total = sum(t.values())
     if total <= 0:
         return None
-    march = sum(ms for name, ms in t.items() if name.startswith("ray march"))
+    march = march_ms(r)
     full = {name: ms for name, ms in t.items() if name in FULL_SCREEN}
     return march / total, sum(full.values()) / total, full, total
 
@@ -61,7 +61,7 @@ def speedup(runs, scene, label, size=None):
 
 def crossover(runs, scene):
     """The screen sizes measured for `scene` with epipolar (balanced settings) and brute force's
-    time at each, and the pixel count where their ratio crosses 1, interpolated in log-log between
+    time at each, as (pixels, size, speed-up, epipolar ms, brute force ms), and the pixel count where their ratio crosses 1, interpolated in log-log between
     the two measured sizes around it (None when it never crosses within the sizes measured)."""
     points = {}
     for r in runs:
@@ -72,15 +72,15 @@ def crossover(runs, scene):
             which = "brute" if r["method"] == "brute-force" else ("epipolar" if r["method"] == "epipolar" else None)
             if which:
                 points.setdefault(size, {})[which] = r["time"]["median"]
-    table = sorted((s[0] * s[1], s, v["brute"] / v["epipolar"]) for s, v in points.items()
+    table = sorted((s[0] * s[1], s, v["brute"] / v["epipolar"], v["epipolar"], v["brute"]) for s, v in points.items()
                    if "brute" in v and "epipolar" in v and v["epipolar"] > 0)
     if not table or table[-1][2] < 1:
         return table, None  # behind at the largest size measured
-    if all(r >= 1 for _, _, r in table):
+    if all(row[2] >= 1 for row in table):
         return table, 0  # ahead at every size measured
     # The last crossing from behind to ahead, interpolated in log-log.
     cross = None
-    for (n0, s0, r0), (n1, s1, r1) in zip(table, table[1:]):
+    for (n0, _, r0, *_), (n1, _, r1, *_) in zip(table, table[1:]):
         if r0 < 1 <= r1:
             f = (0 - math.log(r0)) / (math.log(r1) - math.log(r0))
             cross = math.exp(math.log(n0) + f * (math.log(n1) - math.log(n0)))
@@ -91,6 +91,21 @@ def side_of(pixels):
     """A 16:9 screen with `pixels` pixels, as WxH."""
     w = math.sqrt(pixels * 16 / 9)
     return f"{w:.0f}x{w * 9 / 16:.0f}"
+
+
+def march_ms(r):
+    return sum(ms for name, ms in pass_times(r).items() if name.startswith("ray march"))
+
+
+def tree_pairs(runs):
+    """[(scene, trees-on run, trees-off run)] of a bench/trees.json run, scenes in order."""
+    pairs = []
+    for scene in sorted({r["scene"] for r in runs}):
+        on = next((r for r in runs if r["scene"] == scene and r["label"] == "minMaxTrees=on"), None)
+        off = next((r for r in runs if r["scene"] == scene and r["label"] == "minMaxTrees=off"), None)
+        if on and off:
+            pairs.append((scene, on, off))
+    return pairs
 
 
 def trees_section(trees_dir, fmt):
@@ -108,15 +123,9 @@ def trees_section(trees_dir, fmt):
     p("| scene | ray march, trees on (ms) | ray march, trees off (ms) | ray march speed-up | trees' build (ms) | "
       "total on | total off | total speed-up |")
     p("|---|---|---|---|---|---|---|---|")
-    for scene in sorted({r["scene"] for r in runs}):
-        on = next((r for r in runs if r["scene"] == scene and r["label"] == "minMaxTrees=on"), None)
-        off = next((r for r in runs if r["scene"] == scene and r["label"] == "minMaxTrees=off"), None)
-        if not on or not off:
-            continue
-        t_on, t_off = pass_times(on), pass_times(off)
-        m_on = sum(ms for n, ms in t_on.items() if n.startswith("ray march"))
-        m_off = sum(ms for n, ms in t_off.items() if n.startswith("ray march"))
-        build = sum(ms for n, ms in t_on.items() if n.startswith("min/max trees"))
+    for scene, on, off in tree_pairs(runs):
+        m_on, m_off = march_ms(on), march_ms(off)
+        build = sum(ms for n, ms in pass_times(on).items() if n.startswith("min/max trees"))
         p(f"| {scene} | {fmt(m_on)} | {fmt(m_off)} | {fmt(m_off / m_on) + 'x' if m_on > 0 else '-'} | "
           f"{fmt(build)} | {fmt(on['time']['median'])} | {fmt(off['time']['median'])} | "
           f"{fmt(off['time']['median'] / on['time']['median'])}x |")

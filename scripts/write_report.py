@@ -374,15 +374,8 @@ def summary_lines(runs, rs, trees_dir, seed_dir):
           "measured ([Scaling](#scaling) has the times): " + "; ".join(crossings) + ".\n")
     trees = rs.load_runs(trees_dir) if trees_dir else []
     if trees:
-        parts = []
-        for scene in sorted({r["scene"] for r in trees}):
-            on = next((r for r in trees if r["scene"] == scene and r["label"] == "minMaxTrees=on"), None)
-            off = next((r for r in trees if r["scene"] == scene and r["label"] == "minMaxTrees=off"), None)
-            if on and off:
-                m_on = sum(ms for n, ms in rs.pass_times(on).items() if n.startswith("ray march"))
-                m_off = sum(ms for n, ms in rs.pass_times(off).items() if n.startswith("ray march"))
-                if m_on > 0:
-                    parts.append(f"{scene} {fmt(m_off / m_on)}x")
+        parts = [f"{scene} {fmt(rs.march_ms(off) / rs.march_ms(on))}x"
+                 for scene, on, off in rs.tree_pairs(trees) if rs.march_ms(on) > 0]
         p("The min/max trees at high quality, on the ray march alone (target 8x, seed 000's 8.6x): "
           + ", ".join(parts) + " ([the trees](#the-minmax-trees-at-high-quality)).\n")
     seed_rows, first = rs.seed_size_rows(seed_dir) if seed_dir else ({}, None)
@@ -617,13 +610,8 @@ def main():
         p("| scene | screen | epipolar ms | brute force ms | speed-up |")
         p("|---|---|---|---|---|")
         for scene, table in size_tables:
-            for pixels, size, ratio in table:
-                e = next(r for r in runs if r["scene"] == scene and tuple(r["size"]) == size and r["method"] == "epipolar"
-                         and r["family"] in ("size", "profiles") and r["label"] in ("epipolar balanced", f"epipolar size={size[0]}x{size[1]}"))
-                b = next(r for r in runs if r["scene"] == scene and tuple(r["size"]) == size and r["method"] == "brute-force"
-                         and r["family"] in ("size", "profiles"))
-                p(f"| {scene} | {size[0]}x{size[1]} | {fmt(e['time']['median'])} | {fmt(b['time']['median'])} | "
-                  f"{fmt(ratio)}x |")
+            for _, size, ratio, epipolar_ms, brute_ms in table:
+                p(f"| {scene} | {size[0]}x{size[1]} | {fmt(epipolar_ms)} | {fmt(brute_ms)} | {fmt(ratio)}x |")
         p("")
     for name, what in (("scaling_screen", "screen size"), ("scaling_shadow_map", "shadow-map size"),
                        ("scaling_slices_samples", "slices x samples")):
