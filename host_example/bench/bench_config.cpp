@@ -288,7 +288,7 @@ class ConfigReader {
             }
         }
         // One-parameter sweeps from one profile (balanced unless sweepProfile says otherwise).
-        auto balanced = [&](const std::string& family, const std::string& label) {
+        auto sweepRun = [&](const std::string& family, const std::string& label) {
             BenchRun r = base;
             r.family = family;
             r.label = label;
@@ -303,21 +303,21 @@ class ConfigReader {
         };
         for (const json& v : values("slices")) {
             const uint32_t n = whole(v, "sweeps.slices[]", 0, kMax);
-            BenchRun r = balanced("slices", "slices=" + std::to_string(n));
+            BenchRun r = sweepRun("slices", "slices=" + std::to_string(n));
             r.settings.slices = n;
             checkSettings(r, "sweeps.slices");
             c.runs.push_back(r);
         }
         for (const json& v : values("samples")) {
             const uint32_t n = whole(v, "sweeps.samples[]", 0, kMax);
-            BenchRun r = balanced("samples", "samples=" + std::to_string(n));
+            BenchRun r = sweepRun("samples", "samples=" + std::to_string(n));
             r.settings.samplesPerSlice = n;
             checkSettings(r, "sweeps.samples");
             c.runs.push_back(r);
         }
         for (const json& v : values("initialStep")) {
             const uint32_t n = whole(v, "sweeps.initialStep[]", 0, kMax);
-            BenchRun r = balanced("initialStep", "initialStep=" + std::to_string(n));
+            BenchRun r = sweepRun("initialStep", "initialStep=" + std::to_string(n));
             r.settings.initialSampleStep = n;
             checkSettings(r, "sweeps.initialStep");
             c.runs.push_back(r);
@@ -327,7 +327,7 @@ class ConfigReader {
         for (const json& v : values("refinementThreshold")) {
             if (!v.is_number())
                 fail("sweeps.refinementThreshold[] = " + v.dump() + ": must be a number");
-            BenchRun r = balanced("refinementThreshold",
+            BenchRun r = sweepRun("refinementThreshold",
                                   "refinementThreshold=" + shortNumber(v.get<double>()));
             r.settings.refinementThreshold = v.get<float>();
             checkSettings(r, "sweeps.refinementThreshold");
@@ -338,7 +338,7 @@ class ConfigReader {
         for (const json& v : values("inscatterRefinementThreshold")) {
             if (!v.is_number())
                 fail("sweeps.inscatterRefinementThreshold[] = " + v.dump() + ": must be a number");
-            BenchRun r = balanced("inscatterRefinementThreshold",
+            BenchRun r = sweepRun("inscatterRefinementThreshold",
                                   "inscatterRefinementThreshold=" + shortNumber(v.get<double>()));
             r.settings.inscatterRefinementThreshold = v.get<float>();
             checkSettings(r, "sweeps.inscatterRefinementThreshold");
@@ -348,14 +348,14 @@ class ConfigReader {
             if (!v.is_boolean())
                 fail("sweeps.minMaxTrees[] = " + v.dump() + ": must be true or false");
             BenchRun r =
-                balanced("trees", std::string("minMaxTrees=") + (v.get<bool>() ? "on" : "off"));
+                sweepRun("trees", std::string("minMaxTrees=") + (v.get<bool>() ? "on" : "off"));
             r.settings.minMaxTrees = v.get<bool>();
             c.runs.push_back(r);
         }
         for (const json& v : values("shadowMapSize")) {
             const uint32_t n = whole(v, "sweeps.shadowMapSize[]", 1, 16384);
             for (lightscatter::Method m : methods) {
-                BenchRun r = balanced("shadowMapSize", std::string(lightscatter::methodName(m)) +
+                BenchRun r = sweepRun("shadowMapSize", std::string(lightscatter::methodName(m)) +
                                                            " shadowMap=" + std::to_string(n));
                 r.method = m;
                 r.shadowMapSize = n;
@@ -372,7 +372,7 @@ class ConfigReader {
                 const std::string m = mode.is_string() ? mode.get<std::string>() : mode.dump();
                 if (m != "cone" && m != "naive" && m != "no-shadow-sampling")
                     fail("sweeps.coneModes[] = " + mode.dump() + ": must be cone, naive or no-shadow-sampling");
-                BenchRun r = balanced("cone", m + " " + std::to_string(samples));
+                BenchRun r = sweepRun("cone", m + " " + std::to_string(samples));
                 r.method = lightscatter::Method::ConeMarch;
                 r.settings.coneSamples = samples;
                 r.settings.coneLimited = m != "naive";
@@ -390,7 +390,7 @@ class ConfigReader {
                 if (t != "float16" && t != "float32" && t != "rgba8" && t != "rgba8-dither")
                     fail("sweeps.sliceTargets[] = " + target.dump() +
                          ": must be float16, float32, rgba8 (the seed's rounding) or rgba8-dither");
-                BenchRun r = balanced("planes", "slices " + std::to_string(count) + " " + t);
+                BenchRun r = sweepRun("planes", "slices " + std::to_string(count) + " " + t);
                 r.method = lightscatter::Method::Slices;
                 r.settings.slicePlanes = count;
                 r.settings.sliceTarget = t == "float16"   ? lightscatter::SliceTarget::Float16
@@ -413,7 +413,7 @@ class ConfigReader {
                     m != lightscatter::Method::Analytic)
                     continue;
                 any = true;
-                BenchRun r = balanced(
+                BenchRun r = sweepRun(
                     "lightModel", std::string(lightscatter::methodName(m)) + " lightModel=" + name);
                 r.method = m;
                 r.settings.lightModel = name == "simplified" ? lightscatter::LightModel::Simplified
@@ -426,7 +426,7 @@ class ConfigReader {
         for (const json& v : values("size")) {
             const VkExtent2D s = size(v, "sweeps.size[]");
             for (lightscatter::Method m : methods) {
-                BenchRun r = balanced("size", std::string(lightscatter::methodName(m)) +
+                BenchRun r = sweepRun("size", std::string(lightscatter::methodName(m)) +
                                                   " size=" + v.get<std::string>());
                 r.method = m;
                 r.size = s;
