@@ -2,6 +2,7 @@
 // answer is known, the motions' poses, the reference cache's key, and the configuration's rules
 // for "motion" (each bad value one line naming the file and the field).
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -227,9 +228,11 @@ TEST(ReferenceCache, TheKeyChangesWithWhatTheReferenceDependsOn) {
     EXPECT_EQ(key, host::bench::referenceKey(smaller, mesh, size));
 }
 
-// A configuration file in a folder of its own; loadBenchConfig's message for it.
+// A configuration file in a folder of its own (per process: ctest runs these tests side by side,
+// and a shared file was read half-written); loadBenchConfig's message for it.
 std::string configError(const std::string& text) {
-    const auto dir = std::filesystem::temp_directory_path() / "ls_bench_motion_test";
+    const auto dir = std::filesystem::temp_directory_path() /
+                     ("ls_bench_motion_test_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     const auto file = dir / "motion.json";
     std::ofstream(file) << text;
@@ -292,7 +295,7 @@ TEST(BenchConfigMotion, TheRefinementThresholdSweepFollowsThePluginsRule) {
 }
 
 TEST(BenchConfigMotion, DefaultsAndBothMotions) {
-    const auto dir = std::filesystem::temp_directory_path() / "ls_bench_motion_test";
+    const auto dir = std::filesystem::temp_directory_path() / ("ls_bench_motion_test_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     const auto file = dir / "good.json";
     std::ofstream(file) << withMotion(R"({"what": ["camera", "light"], "lightMetresPerFrame": 0})");
