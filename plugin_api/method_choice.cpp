@@ -74,11 +74,11 @@ void refuseCube(const FrameSetup& s, Method m) {
 void epipolarOrBruteForce(const FrameSetup& s, MethodChoice& c, const std::string& light) {
     const uint64_t pixels = uint64_t{s.screen.width} * s.screen.height;
     const uint64_t samples = uint64_t{s.settings.slices} * s.settings.samplesPerSlice;
-    if (pixels * kEpipolarPixelsPerSample < samples) {
+    if (pixels * kEpipolarSamplesPerPixel < samples) {
         c.method = Method::BruteForce;
         c.reason = light + " on a screen of " + std::to_string(pixels) + " pixels, fewer than " +
-                   std::to_string(samples / kEpipolarPixelsPerSample) +
-                   " (epipolar samples / 8): per-pixel marching is cheaper";
+                   std::to_string(samples / kEpipolarSamplesPerPixel) + " (epipolar samples / " +
+                   std::to_string(kEpipolarSamplesPerPixel) + "): per-pixel marching is cheaper";
     } else {
         c.method = Method::Epipolar;
         c.reason = light + ": epipolar sampling";

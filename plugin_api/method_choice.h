@@ -14,9 +14,10 @@ namespace lightscatter::detail {
 // this optical depth, where that error stays under 1%.
 inline constexpr float kAnalyticMaxOpticalDepth = 0.007f;
 
-// Screens with fewer pixels than slices x samples / 8 are cheaper to march per pixel than to sample
-// epipolarly (docs/methods.md gives the measurement).
-inline constexpr uint32_t kEpipolarPixelsPerSample = 8;
+// Screens with fewer pixels than slices x samples / 24 are cheaper to march per pixel than to sample
+// epipolarly: the crossover measured at 1920x1080's settings on the slowest-to-pay scene (atrium,
+// about 25 samples per pixel; docs/methods.md gives the measurement).
+inline constexpr uint32_t kEpipolarSamplesPerPixel = 24;
 
 struct MethodChoice {
     Method method = Method::Epipolar;  // never Auto
