@@ -20,6 +20,19 @@ VkImageViewType viewType(uint32_t layers) {
     return layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
 }
 
+// A named pool, every query reset from the host so that the first frame may read any slot.
+VkQueryPool createQueryPool(const Device& device, VkQueryType type, uint32_t count,
+                            const char* name) {
+    VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+    info.queryType = type;
+    info.queryCount = count;
+    VkQueryPool pool = VK_NULL_HANDLE;
+    RG_VK_CREATE(vkCreateQueryPool(device.device(), &info, nullptr, &pool));
+    device.setName(pool, VK_OBJECT_TYPE_QUERY_POOL, name);
+    vkResetQueryPool(device.device(), pool, 0, count);
+    return pool;
+}
+
 }  // namespace
 
 GraphExecutor::GraphExecutor(const Device& device, RenderGraph& graph, CompiledGraph compiled)
@@ -44,12 +57,8 @@ GraphExecutor::GraphExecutor(const Device& device, RenderGraph& graph, CompiledG
         queriesPerFrame_ =
             std::max<uint32_t>(2, 2 * static_cast<uint32_t>(compiled_.passes.size()));
         slotFrames_.assign(kTimingSlots, 0);
-        VkQueryPoolCreateInfo q{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
-        q.queryType = VK_QUERY_TYPE_TIMESTAMP;
-        q.queryCount = queriesPerFrame_ * kTimingSlots;
-        RG_VK_CREATE(vkCreateQueryPool(dev, &q, nullptr, &queries_));
-        device_.setName(queries_, VK_OBJECT_TYPE_QUERY_POOL, "render graph pass timestamps");
-        vkResetQueryPool(dev, queries_, 0, q.queryCount);
+        queries_ = createQueryPool(device_, VK_QUERY_TYPE_TIMESTAMP,
+                                   queriesPerFrame_ * kTimingSlots, "render graph pass timestamps");
 
         // One occlusion query per counting graphics pass, in one slot per frame like the stamps.
         countIndex_.assign(compiled_.passes.size(), -1);
@@ -58,14 +67,10 @@ GraphExecutor::GraphExecutor(const Device& device, RenderGraph& graph, CompiledG
             if (pass.countSamples && pass.type == PassType::Graphics)
                 countIndex_[pos] = static_cast<int32_t>(countedPerFrame_++);
         }
-        if (countedPerFrame_) {
-            VkQueryPoolCreateInfo o{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
-            o.queryType = VK_QUERY_TYPE_OCCLUSION;
-            o.queryCount = countedPerFrame_ * kTimingSlots;
-            RG_VK_CREATE(vkCreateQueryPool(dev, &o, nullptr, &samples_));
-            device_.setName(samples_, VK_OBJECT_TYPE_QUERY_POOL, "render graph pass sample counts");
-            vkResetQueryPool(dev, samples_, 0, o.queryCount);
-        }
+        if (countedPerFrame_)
+            samples_ =
+                createQueryPool(device_, VK_QUERY_TYPE_OCCLUSION, countedPerFrame_ * kTimingSlots,
+                                "render graph pass sample counts");
 
         VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
         pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
