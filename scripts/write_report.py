@@ -339,7 +339,8 @@ def summary_lines(runs, rs, trees_dir, seed_dir):
         p(f"For scale: a full-screen pass that only composites (cone-march's composite: read its Lin and the depth, "
           f"read-modify-write the engine's color) takes {fmt(min(floors))} to {fmt(max(floors))} ms here, so on this "
           "device no per-pixel pass costs less; the unwarp does that and the bilateral search of four samples, "
-          "and the fix-up marches the pixels the unwarp could not serve.\n")
+          "and the fix-up marches the pixels the unwarp could not serve. Where the unwarp's time goes, part by "
+          "part, and why 10% is below this device's floor: [epipolar.md](epipolar.md#where-the-unwarps-time-goes).\n")
     # Where a scene misses the 30x target: what the rest of the frame costs, that is the best a free
     # ray march could give.
     short = []
