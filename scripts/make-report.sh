@@ -13,6 +13,9 @@
 #                                          # tree against 1 to 1000 boxes at 1920x1080, is about 10 more:
 #                                          # LS_REPORT_OCCLUDERS=0 skips it; both then reuse
 #                                          # an earlier run's results where build/ has them)
+#   scripts/make-report.sh --slices-only   # bench/slices.json alone (seed 002 against epipolar and
+#                                          # brute force at 1920x1080; timings: a quiet machine), its
+#                                          # plot and strips, its section spliced into the page
 #   scripts/make-report.sh --occluders-only  # that benchmark alone, its plot, and its section spliced
 #                                          # into the existing docs/performance.md
 #   scripts/make-report.sh --lights-only   # the same for "Several lights": bench/lights.json (time and
@@ -74,6 +77,23 @@ if [[ "$config" == --flicker-only ]]; then
   echo "docs/performance.md: section 'Temporal stability' replaced"
   exit 0
 fi
+slices_plots() {
+  /usr/bin/python3 scripts/plot_slices.py build/bench-slices "$out"
+  rm -f "$out"/strip_slices_*.png
+  for s in build/bench-slices/strips/window_room_slices_256_rgba8*.png; do
+    # A third of the size: a 1920x1080 strip of noise is megabytes otherwise.
+    [[ -f "$s" ]] && /usr/bin/python3 -c 'import sys, matplotlib.image as m; m.imsave(sys.argv[2], m.imread(sys.argv[1])[::3, ::3])' \
+      "$s" "$out/strip_slices_$(basename "$s" | sed 's/^window_room_//')"
+  done
+}
+if [[ "$config" == --slices-only ]]; then
+  # Timings: run it on a quiet machine. The 1920x1080 references stay in build/bench-slices.
+  ./build/host_example/lightscatter bench --config bench/slices.json --out build/bench-slices
+  slices_plots
+  /usr/bin/python3 scripts/write_report.py --slices-section build/bench-slices docs/performance.md
+  echo "docs/performance.md: section 'Seed 002: slice planes' replaced"
+  exit 0
+fi
 if [[ "$config" == --occluders-only ]]; then
   occluders
   /usr/bin/python3 scripts/write_report.py --occluders-section build/bench-occluders docs/performance.md
@@ -120,13 +140,7 @@ for s in build/bench-report-error/strips/*_epipolar_balanced.png build/bench-rep
   cp "$s" "$out/strip_$(basename "$s")"
 done
 if [[ -f build/bench-slices/bench.json ]]; then
-  /usr/bin/python3 scripts/plot_slices.py build/bench-slices "$out"
-  rm -f "$out"/strip_slices_*.png
-  for s in build/bench-slices/strips/window_room_slices_256_rgba8*.png; do
-    # A third of the size: a 1920x1080 strip of noise is megabytes otherwise.
-    [[ -f "$s" ]] && /usr/bin/python3 -c 'import sys, matplotlib.image as m; m.imsave(sys.argv[2], m.imread(sys.argv[1])[::3, ::3])' \
-      "$s" "$out/strip_slices_$(basename "$s" | sed 's/^window_room_//')"
-  done
+  slices_plots
 fi
 occluders_dir=""
 if [[ "${LS_REPORT_OCCLUDERS:-1}" != 0 ]]; then
