@@ -674,6 +674,22 @@ def main():
           f"{bud['peakBytes'] / 2**20:.1f} | {bud['totalBytes'] / 2**20:.1f} |")
     p("\nMemory sizes come from `lightscatter budget` (estimated without a device: texels packed, 64 KiB "
       "alignment); docs/epipolar.md says what brought them to the seed's column.\n")
+    if seed_rows:
+        # Where a scene falls short of the seed's ratio, and whether a free ray march would close it.
+        misses, march_bound = [], True
+        for (prof, scene), (speed, floor) in rs.seed_size_floors(seed_dir).items():
+            seed_speed = SEED["brute-force"][0] / SEED[prof][0]
+            if speed < seed_speed:
+                misses.append(f"{scene} {prof} {fmt(speed)}x against {seed_speed:.1f}x (a free ray march would "
+                              f"give at most {fmt(floor)}x)")
+                march_bound = march_bound and floor >= seed_speed
+        if misses:
+            p("Where ours falls short of the seed's ratio: " + "; ".join(misses) + ". " +
+              ("A free ray march would reach the seed's ratio in each, so it is the ray march that keeps them "
+               "below ([where its steps go](epipolar.md#where-the-ray-marchs-steps-go))."
+               if march_bound else
+               "Even a free ray march would not reach the seed's ratio there: the rest of the frame sets the "
+               "floor ([the unwarp's share](epipolar.md#where-the-unwarps-time-goes)).") + "\n")
 
     p("## The hard-case suite\n")
     bounds = {}
