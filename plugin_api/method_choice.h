@@ -14,9 +14,9 @@ namespace lightscatter::detail {
 // this optical depth, where that error stays under 1%.
 inline constexpr float kAnalyticMaxOpticalDepth = 0.007f;
 
-// Screens with fewer pixels than slices x samples / 24 are cheaper to march per pixel than to sample
-// epipolarly: the crossover measured at 1920x1080's settings on the slowest-to-pay scene (atrium,
-// about 25 samples per pixel; docs/methods.md gives the measurement).
+// Screens with fewer pixels than slices x samples / 24 are cheaper to march per pixel than to
+// sample epipolarly: the crossover measured with the balanced profile on the scene that pays last
+// (the atrium at about 272x153, 25 samples per pixel; docs/methods.md gives the measurement).
 inline constexpr uint32_t kEpipolarSamplesPerPixel = 24;
 
 struct MethodChoice {
