@@ -15,10 +15,6 @@
 namespace ls {
 namespace {
 
-rg::Binding storageBufferBinding(uint32_t binding) {
-    return {binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_ALL};
-}
-
 constexpr VkPipelineStageFlags2 kVertexAndFragment =
     VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
 

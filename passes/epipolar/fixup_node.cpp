@@ -3,8 +3,8 @@
 
 namespace ls {
 
-// Pixels the unwarp could not interpolate (stencil 0; it marked the rest) are ray-marched on their own, without trees,
-// and composited into the engine's color like the unwarp's.
+// Pixels the unwarp could not interpolate (stencil 0; it marked the rest) are ray-marched on their
+// own, without trees, and composited into the engine's color like the unwarp's.
 CompositeOutputs addFixup(rg::RenderGraph& g, const NodeInputs& in, rg::ImageRef cameraStencil,
                           const CompositeTarget& target) {
     auto pass = g.addPass("fix-up ray march", rg::PassType::Graphics);

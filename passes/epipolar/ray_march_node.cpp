@@ -89,8 +89,7 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in,
                                    sampledBinding(3)};
         if (trees) b.push_back(sampledBinding(4));
         appendMarchBindings(b, in);
-        if (counts.valid())
-            b.push_back({9, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_ALL});
+        if (counts.valid()) b.push_back(storageBufferBinding(9));
         const RayMarchVariant variant = rayMarchVariant(spec);
         auto desc = fullscreenPipeline(counts.valid() ? variant.counting : variant.plain, ctx, b);
         desc.specialization = spec.constants();

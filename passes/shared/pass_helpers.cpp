@@ -19,6 +19,9 @@ rg::Binding storageBinding(uint32_t binding) {
 rg::Binding uniformBinding(uint32_t binding) {
     return {binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_ALL};
 }
+rg::Binding storageBufferBinding(uint32_t binding) {
+    return {binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_ALL};
+}
 
 rg::GraphicsPipelineDesc fullscreenPipeline(rg::ShaderCode fragment, const rg::PassContext& ctx,
                                             std::vector<rg::Binding> bindings) {

@@ -21,6 +21,7 @@ rg::DescriptorPush frameSet(const rg::PassContext& ctx, rg::BufferRef constants)
 rg::Binding sampledBinding(uint32_t binding);
 rg::Binding storageBinding(uint32_t binding);
 rg::Binding uniformBinding(uint32_t binding);
+rg::Binding storageBufferBinding(uint32_t binding);
 
 // A full-screen triangle pipeline for the pass's render targets.
 rg::GraphicsPipelineDesc fullscreenPipeline(rg::ShaderCode fragment, const rg::PassContext& ctx,
