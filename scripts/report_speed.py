@@ -134,7 +134,9 @@ def trees_section(trees_dir, fmt):
 
 
 def seed_size_rows(seed_dir):
-    """{profile: [(scene, speed-up over brute force, epipolar ms, brute ms)]} at seed 000's size."""
+    """{profile: [(scene, speed-up over brute force, the best a free ray march would give)]} at seed
+    000's size; the last is brute force over everything but epipolar's ray march (None when the
+    march is all of it)."""
     runs = load_runs(seed_dir)
     rows = {}
     for scene in sorted({r["scene"] for r in runs}):
@@ -142,27 +144,11 @@ def seed_size_rows(seed_dir):
         for r in runs:
             if r["scene"] == scene and r["method"] == "epipolar" and brute:
                 prof = r["label"].split(" ", 1)[1]
+                rest = r["time"]["median"] - march_ms(r)
                 rows.setdefault(prof, []).append(
-                    (scene, brute["time"]["median"] / r["time"]["median"], r["time"]["median"],
-                     brute["time"]["median"]))
+                    (scene, brute["time"]["median"] / r["time"]["median"],
+                     brute["time"]["median"] / rest if rest > 0 else None))
     return rows, (runs[0] if runs else None)
-
-
-def seed_size_floors(seed_dir):
-    """{(profile, scene): (speed-up, the best a free ray march would give)} at seed 000's size: the
-    brute force over everything but epipolar's ray march."""
-    runs = load_runs(seed_dir)
-    floors = {}
-    for scene in sorted({r["scene"] for r in runs}):
-        brute = next((r for r in runs if r["scene"] == scene and r["method"] == "brute-force"), None)
-        for r in runs:
-            if r["scene"] != scene or r["method"] != "epipolar" or not brute:
-                continue
-            rest = r["time"]["median"] - march_ms(r)
-            if rest > 0:
-                floors[(r["label"].split(" ", 1)[1], scene)] = (
-                    brute["time"]["median"] / r["time"]["median"], brute["time"]["median"] / rest)
-    return floors
 
 
 def pass_breakdown_lines(r, fmt):
