@@ -26,6 +26,7 @@
 #include "commands.h"
 #include "engine_renderer.h"
 #include "image_io.h"
+#include "output_set.h"
 #include "temp_files.h"
 
 namespace host {
@@ -36,15 +37,17 @@ namespace fs = std::filesystem;
 std::string duration(double seconds) {
     char buf[32];
     const int s = static_cast<int>(std::lround(seconds));
-    if (s >= 3600) std::snprintf(buf, sizeof buf, "%dh%02dm", s / 3600, (s / 60) % 60);
-    else std::snprintf(buf, sizeof buf, "%dm%02ds", s / 60, s % 60);
+    if (s >= 3600)
+        std::snprintf(buf, sizeof buf, "%dh%02dm", s / 3600, (s / 60) % 60);
+    else
+        std::snprintf(buf, sizeof buf, "%dm%02ds", s / 60, s % 60);
     return buf;
 }
 
 // A progress line redrawn in place on stderr. It is ended with a newline when the benchmark ends
 // or fails, so that an error is printed on a line of its own, not after the bar.
 class Progress {
-public:
+  public:
     explicit Progress(size_t total) : total_(total), start_(std::chrono::steady_clock::now()) {}
     ~Progress() { finish(); }
     Progress(const Progress&) = delete;
@@ -55,8 +58,10 @@ public:
     }
     void show(size_t done, const std::string& what) {
         open_ = true;
-        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-        const double left = done ? elapsed / static_cast<double>(done) * static_cast<double>(total_ - done) : 0.0;
+        const double elapsed =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+        const double left =
+            done ? elapsed / static_cast<double>(done) * static_cast<double>(total_ - done) : 0.0;
         const int width = 30;
         const int filled = static_cast<int>(width * done / std::max<size_t>(total_, 1));
         std::fprintf(stderr, "\r[%s%s] %zu/%zu, %s elapsed, %s left  %-60.60s",
@@ -66,7 +71,7 @@ public:
         std::fflush(stderr);
     }
 
-private:
+  private:
     size_t total_;
     std::chrono::steady_clock::time_point start_;
     bool open_ = false;
@@ -75,7 +80,8 @@ private:
 const char* kCsvHeader =
     "scene,label,family,method,profile,width,height,slices,samples,initialStep,minMaxTrees,"
     "shadowMap,frames,medianMs,p10Ms,p90Ms,minMs,maxMs,meanRelativeError,rmse,p99Error,maxError,"
-    "fractionOver5pct,psnrDb,nonFinite,device,cpuDevice,cpuWorkMs,occluders,lights,motion,framePairs,"
+    "fractionOver5pct,psnrDb,nonFinite,device,cpuDevice,cpuWorkMs,occluders,lights,motion,"
+    "framePairs,"
     "meanExcessFlicker,p99ExcessFlicker,meanErrorChange,referenceChange,motionMeanRelativeError";
 
 nlohmann::json spreadJson(const bench::Spread& s) {
@@ -91,6 +97,14 @@ nlohmann::json namedSpreads(const std::vector<lightscatter::PassTime>& entries,
         list.push_back({{"name", e.name}, {"median", s.median}, {"p10", s.p10}, {"p90", s.p90}});
     }
     return list;
+}
+
+// Where a run's image strip goes: scene, label and motion ("" for a still frame) made file-safe.
+fs::path stripPath(const fs::path& out, const bench::BenchRun& run, const std::string& motion,
+                   const std::string& suffix) {
+    const std::string strip = fs::path(run.scene).stem().string() + "_" + run.label +
+                              (motion.empty() ? "" : "_motion-" + motion);
+    return out / "strips" / (bench::fileSafe(strip) + suffix);
 }
 
 }  // namespace
@@ -114,10 +128,37 @@ int runBench(Args& args) {
         for (const auto& w : m.warnings) std::cerr << "lightscatter: warning: " << w << "\n";
         scenes.emplace(path, std::make_pair(std::move(s), std::move(m)));
     }
+    // The benchmark writes as it goes, so every file it will write is checked against what it
+    // reads (and what the scenes beside it read) before the first run: `--config D/bench.json
+    // --out D` used to replace the configuration with its results.
+    OutputSet guard;
+    guard.addInput("the benchmark configuration", configPath);
+    for (const auto& [path, scene] : scenes) {
+        guard.addInput("a scene of the benchmark", path);
+        for (const auto& f : scene.second.files)
+            guard.addInput("a file a scene of the benchmark reads", f);
+    }
+    guard.check("--out", (out / "bench.csv").string());
+    guard.check("--out", (out / "bench.json").string());
+    for (const bench::BenchRun& run : config.runs) {
+        if (!run.measureError) continue;  // no strip without a reference
+        std::vector<std::string> motions{""};
+        if (config.motion) {
+            motions.clear();
+            for (const bench::MotionKind m : config.motion->what)
+                motions.push_back(bench::motionName(m));
+        }
+        for (const std::string& m : motions) {
+            guard.check("--out", stripPath(out, run, m, ".png").string());
+            if (!m.empty()) guard.check("--out", stripPath(out, run, m, "_flicker.png").string());
+        }
+    }
     for (const fs::path& dir : {out / "strips", out / "references"}) {
         std::error_code ec;
         fs::create_directories(dir, ec);
-        if (ec) throw std::runtime_error("--out " + out.string() + ": cannot create " + dir.string() + ": " + ec.message());
+        if (ec)
+            throw std::runtime_error("--out " + out.string() + ": cannot create " + dir.string() +
+                                     ": " + ec.message());
     }
     { TempFile probe((out / "bench.json").string(), "--out"); }  // the folder is writable
 
@@ -144,8 +185,9 @@ int runBench(Args& args) {
         auto& [scene, mesh] = scenes.at(run.scene);
         // Seed 001's closed form takes unshadowed point and spot lights only; elsewhere there is
         // nothing to measure.
-        const bool unshadowedPointLike = scene.light.type == LightKind::Point ||
-                                         (scene.light.type == LightKind::Spot && scene.light.shadowMapSize == 0);
+        const bool unshadowedPointLike =
+            scene.light.type == LightKind::Point ||
+            (scene.light.type == LightKind::Spot && scene.light.shadowMapSize == 0);
         if (run.method == lightscatter::Method::Analytic && !unshadowedPointLike) {
             ++done;
             continue;
@@ -166,7 +208,8 @@ int runBench(Args& args) {
         SceneDesc sceneForRun = scene;
         if (run.shadowMapSize) sceneForRun.light.shadowMapSize = run.shadowMapSize;
         const std::string key = run.scene + "/" + std::to_string(run.size.width) + "x" +
-                                std::to_string(run.size.height) + "/" + std::to_string(sceneForRun.light.shadowMapSize);
+                                std::to_string(run.size.height) + "/" +
+                                std::to_string(sceneForRun.light.shadowMapSize);
         if (key != rendererKey) {
             renderer.reset();
             renderer = std::make_unique<EngineRenderer>(device, sceneForRun, mesh, run.size);
@@ -176,7 +219,8 @@ int runBench(Args& args) {
         options.method = run.method;
         options.profile = run.custom ? lightscatter::Profile::Custom : run.profile;
         if (run.custom) options.custom = run.settings;
-        const lightscatter::Settings used = run.custom ? run.settings : lightscatter::profileSettings(run.profile);
+        const lightscatter::Settings used =
+            run.custom ? run.settings : lightscatter::profileSettings(run.profile);
 
         // The reference for the renderer's scene as it stands, once per pose in memory, and on
         // disk across runs of the benchmark.
@@ -304,11 +348,8 @@ int runBench(Args& args) {
                 std::snprintf(buf, sizeof buf, "%.6g,%.6g,%.6g,%.6g,%.6g,%.3f", e.meanRelative,
                               e.rmse, e.p99, e.max, e.fractionOver, e.psnr);
                 errorColumns = buf;
-                const std::string strip = row["scene"].get<std::string>() + "_" + run.label +
-                                          (motion ? "_motion-" + motionName : "");
-                bench::writeStrip((out / "strips" / (bench::fileSafe(strip) + ".png")).string(),
-                                  run.size.width, run.size.height, ref, last.inscatter,
-                                  scene.exposure);
+                bench::writeStrip(stripPath(out, run, motionName, ".png").string(), run.size.width,
+                                  run.size.height, ref, last.inscatter, scene.exposure);
                 if (motion) {
                     const bench::FlickerMetrics f = flicker.result();
                     const bench::Motion& m = *config.motion;
@@ -333,9 +374,8 @@ int runBench(Args& args) {
                                   f.meanErrorChange, f.referenceChange, f.meanRelativeError);
                     motionColumns = buf;
                     bench::writeFlickerStrip(
-                        (out / "strips" / (bench::fileSafe(strip) + "_flicker.png")).string(),
-                        run.size.width, run.size.height, flicker.referenceChangeMap(),
-                        flicker.excessMap());
+                        stripPath(out, run, motionName, "_flicker.png").string(), run.size.width,
+                        run.size.height, flicker.referenceChangeMap(), flicker.excessMap());
                 }
             }
             row["nonFinite"] = nonFinite;
@@ -360,8 +400,9 @@ int runBench(Args& args) {
     }
     progress.show(done, "done");
     progress.finish();
-    std::cout << "wrote " << (out / "bench.csv").string() << ", bench.json and " << done << " runs' strips ("
-              << device.name() << (device.isCpu() ? ", CPU timings" : "") << ")\n";
+    std::cout << "wrote " << (out / "bench.csv").string() << ", bench.json and " << done
+              << " runs' strips (" << device.name() << (device.isCpu() ? ", CPU timings" : "")
+              << ")\n";
     return device.messageCount() > 0 ? 3 : 0;
 }
 

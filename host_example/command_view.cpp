@@ -26,6 +26,7 @@
 #include "commands.h"
 #include "fullscreen_vert.h"
 #include "image_io.h"
+#include "output_set.h"
 #include "rendergraph/compile.h"
 #include "rendergraph/device_caps_vulkan.h"
 #include "rendergraph/host_buffer.h"
@@ -41,8 +42,9 @@ namespace {
 struct GlfwSession {
     GlfwSession() {
         if (!glfwInit())
-            throw std::runtime_error("view: cannot open a window: GLFW found no display (set DISPLAY, "
-                                     "or run under xvfb-run -a)");
+            throw std::runtime_error(
+                "view: cannot open a window: GLFW found no display (set DISPLAY, "
+                "or run under xvfb-run -a)");
     }
     ~GlfwSession() { glfwTerminate(); }
 };
@@ -51,8 +53,8 @@ struct Window {
     GLFWwindow* handle;
     Window(VkExtent2D size, const std::string& title) {
         glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
-        handle = glfwCreateWindow(static_cast<int>(size.width), static_cast<int>(size.height), title.c_str(),
-                                  nullptr, nullptr);
+        handle = glfwCreateWindow(static_cast<int>(size.width), static_cast<int>(size.height),
+                                  title.c_str(), nullptr, nullptr);
         if (!handle) throw std::runtime_error("view: cannot create a window");
     }
     ~Window() { glfwDestroyWindow(handle); }
@@ -69,10 +71,10 @@ struct Surface {
 
 // Tone maps the engine's HDR color into a swapchain image (and reads that image back when asked).
 class Display {
-public:
+  public:
     // `pipeline` outlives displays: a resize builds a new display but keeps the pipeline.
-    Display(const rg::Device& device, const GpuImage& hdr, const Swapchain& swapchain, float exposure,
-            bool screenshot, std::shared_ptr<rg::Pipeline> pipeline)
+    Display(const rg::Device& device, const GpuImage& hdr, const Swapchain& swapchain,
+            float exposure, bool screenshot, std::shared_ptr<rg::Pipeline> pipeline)
         : device_(device), samplers_(device), exposure_(exposure), pipeline_(std::move(pipeline)) {
         graph_.setScreenExtent(swapchain.extent());
         rg::ImportedImage h;
@@ -109,20 +111,23 @@ public:
                 d.vertex = rg::spirv(ls_spirv::fullscreen_vert);
                 d.fragment = rg::spirv(ls_spirv::tonemap_frag);
                 d.formats = ctx.renderingFormats();
-                d.bindings = {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT}};
+                d.bindings = {
+                    {0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT}};
                 d.pushConstantBytes = 4;
                 *pipeline_ = rg::Pipeline::graphics(ctx.device(), "tone map to window", d);
             }
             pipeline_->bind(ctx.cmd());
-            rg::DescriptorPush().sampled(0, ctx.view(src), ctx.layout(src), samplers_.nearest())
+            rg::DescriptorPush()
+                .sampled(0, ctx.view(src), ctx.layout(src), samplers_.nearest())
                 .push(ctx.device(), ctx.cmd(), *pipeline_);
             pipeline_->push(ctx.cmd(), exposure_);
             vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
         });
         if (screenshot) {
             const VkExtent2D e = swapchain.extent();
-            readback_ = std::make_unique<rg::HostBuffer>(device, VkDeviceSize{4} * e.width * e.height,
-                                                         VK_BUFFER_USAGE_TRANSFER_DST_BIT, "screenshot");
+            readback_ =
+                std::make_unique<rg::HostBuffer>(device, VkDeviceSize{4} * e.width * e.height,
+                                                 VK_BUFFER_USAGE_TRANSFER_DST_BIT, "screenshot");
             rg::BufferRef buf = graph_.importBuffer("screenshot", readback_->asReadback());
             auto copy = graph_.addPass("screenshot", rg::PassType::Transfer);
             copy.transferSrc(target_);
@@ -132,7 +137,8 @@ public:
                 VkBufferImageCopy region{};
                 region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
                 region.imageExtent = {e.width, e.height, 1};
-                vkCmdCopyImageToBuffer(ctx.cmd(), ctx.image(img), ctx.layout(img), ctx.buffer(buf), 1, &region);
+                vkCmdCopyImageToBuffer(ctx.cmd(), ctx.image(img), ctx.layout(img), ctx.buffer(buf),
+                                       1, &region);
             });
         }
         const rg::VulkanDeviceCaps caps(device);
@@ -154,7 +160,7 @@ public:
         return px;
     }
 
-private:
+  private:
     const rg::Device& device_;
     rg::Samplers samplers_;
     float exposure_;
@@ -270,25 +276,31 @@ int runView(Args& args) {
     args.finish();
     const int frameLimit = framesText.empty() ? 0 : parseCount(framesText, "--frames");
     const int resizeFrame = resizeAt.empty() ? -1 : parseCount(resizeAt, "--resize-at");
-    const VkExtent2D resizeSize = resizeTo.empty() ? VkExtent2D{0, 0} : parseSize(resizeTo, "--resize-to");
+    const VkExtent2D resizeSize =
+        resizeTo.empty() ? VkExtent2D{0, 0} : parseSize(resizeTo, "--resize-to");
     if ((resizeFrame > 0) != (resizeSize.width > 0))
         throw std::runtime_error("view: --resize-at and --resize-to go together");
     if (!screenshotPath.empty() && frameLimit == 0)
-        throw std::runtime_error("view: --screenshot needs --frames (the screenshot is of the last frame)");
+        throw std::runtime_error(
+            "view: --screenshot needs --frames (the screenshot is of the last frame)");
     const int resizes = resizesText.empty() ? 0 : parseCount(resizesText, "--resizes");
     if (resizes > 0 && frameLimit <= resizes)
-        throw std::runtime_error("view: --resizes needs --frames, larger than the number of resizes");
-    std::unique_ptr<std::ofstream> memoryLog;
-    if (!memoryLogPath.empty()) {
-        memoryLog = std::make_unique<std::ofstream>(memoryLogPath);
-        if (!*memoryLog) throw std::runtime_error("view: --memory-log " + memoryLogPath + ": cannot open for writing");
-        *memoryLog << "frame,rss_kib,device_bytes\n";
-    }
+        throw std::runtime_error(
+            "view: --resizes needs --frames, larger than the number of resizes");
 
     const SceneDesc scene = loadSceneFile(scenePath);
     const MeshData mesh = loadSceneMeshes(scene);
     for (const auto& w : mesh.warnings) std::cerr << "lightscatter: warning: " << w << "\n";
     const VkExtent2D size = sceneSize(o, {960, 540});
+    // The screenshot and the memory log are checked before the window opens and written together
+    // when the window closes, like render's outputs: all or nothing.
+    OutputSet outputs;
+    outputs.addInput("the scene file", scenePath);
+    if (!o.settingsPath.empty()) outputs.addInput("the settings file", o.settingsPath);
+    for (const auto& f : mesh.files) outputs.addInput("a file the scene reads", f);
+    if (!screenshotPath.empty()) outputs.add("--screenshot", screenshotPath);
+    if (!memoryLogPath.empty()) outputs.add("--memory-log", memoryLogPath);
+    std::string memoryLog = "frame,rss_kib,device_bytes\n";
 
     GlfwSession glfw;
     if (!glfwVulkanSupported()) throw std::runtime_error("view: GLFW finds no Vulkan loader");
@@ -305,8 +317,8 @@ int runView(Args& args) {
     const auto displayPipeline = std::make_shared<rg::Pipeline>();
     auto rebuildDisplay = [&](bool screenshot) {
         display.reset();
-        display = std::make_unique<Display>(device, renderer.color(), swapchain, scene.exposure, screenshot,
-                                            displayPipeline);
+        display = std::make_unique<Display>(device, renderer.color(), swapchain, scene.exposure,
+                                            screenshot, displayPipeline);
     };
     rebuildDisplay(false);
 
@@ -332,10 +344,12 @@ int runView(Args& args) {
 
     RenderOptions options = o.render;
     Controls controls;
-    const float speed = std::max(glm::length(renderer.bounds().max - renderer.bounds().min) * 0.15f, 1.0f);
-    const std::array profiles{lightscatter::Profile::HighQuality, lightscatter::Profile::Balanced,
-                              lightscatter::Profile::HighPerformance, lightscatter::Profile::LowHighQuality,
-                              lightscatter::Profile::LowBalanced, lightscatter::Profile::LowHighPerformance};
+    const float speed =
+        std::max(glm::length(renderer.bounds().max - renderer.bounds().min) * 0.15f, 1.0f);
+    const std::array profiles{
+        lightscatter::Profile::HighQuality,     lightscatter::Profile::Balanced,
+        lightscatter::Profile::HighPerformance, lightscatter::Profile::LowHighQuality,
+        lightscatter::Profile::LowBalanced,     lightscatter::Profile::LowHighPerformance};
     // N steps the noise's amplitude through these; it starts at the --settings file's.
     constexpr std::array kNoiseSteps{0.0f, 0.25f, 0.5f, 1.0f};
     float noise = options.custom.noiseAmplitude;
@@ -348,6 +362,7 @@ int runView(Args& args) {
     int frame = 0;
     bool firstWait = true;
     int exitCode = 0;
+    std::string screenshotNote;  // set once the screenshot is written
     while (!glfwWindowShouldClose(window.handle)) {
         glfwPollEvents();
         if (glfwGetKey(window.handle, GLFW_KEY_ESCAPE) == GLFW_PRESS) break;
@@ -360,7 +375,8 @@ int runView(Args& args) {
         if (resizes > 0 && frame > 0 && frame % (frameLimit / (resizes + 1)) == 0 &&
             frame / (frameLimit / (resizes + 1)) <= resizes) {
             const VkExtent2D to = soakSize(size, frame / (frameLimit / (resizes + 1)));
-            glfwSetWindowSize(window.handle, static_cast<int>(to.width), static_cast<int>(to.height));
+            glfwSetWindowSize(window.handle, static_cast<int>(to.width),
+                              static_cast<int>(to.height));
         }
         auto pressed = [&](int key, bool& held) {
             const bool down = glfwGetKey(window.handle, key) == GLFW_PRESS;
@@ -368,7 +384,8 @@ int runView(Args& args) {
             held = down;
             return edge;
         };
-        if (pressed(GLFW_KEY_L, keyL)) selectedLight = (selectedLight + 1) % renderer.scene().lightCount();
+        if (pressed(GLFW_KEY_L, keyL))
+            selectedLight = (selectedLight + 1) % renderer.scene().lightCount();
         if (pressed(GLFW_KEY_M, keyM)) {
             // analytic only where seed 001 applies (an unshadowed point or spot light).
             std::vector<lightscatter::Method> methods{
@@ -383,11 +400,13 @@ int runView(Args& args) {
                 methods.push_back(lightscatter::Method::BeamTreeSampling);
             }
             auto it = std::find(methods.begin(), methods.end(), options.method);
-            options.method = it == methods.end() || it + 1 == methods.end() ? methods[0] : *(it + 1);
+            options.method =
+                it == methods.end() || it + 1 == methods.end() ? methods[0] : *(it + 1);
         }
         if (pressed(GLFW_KEY_P, keyP)) {
             auto it = std::find(profiles.begin(), profiles.end(), options.profile);
-            options.profile = it == profiles.end() || it + 1 == profiles.end() ? profiles[0] : *(it + 1);
+            options.profile =
+                it == profiles.end() || it + 1 == profiles.end() ? profiles[0] : *(it + 1);
         }
         if (pressed(GLFW_KEY_T, keyT)) options.custom.minMaxTrees = !options.custom.minMaxTrees;
         if (pressed(GLFW_KEY_N, keyN)) {
@@ -401,8 +420,9 @@ int runView(Args& args) {
         options.custom.lightModel =
             honoursLightModel(options.method) ? lightModel : lightscatter::LightModel::Full;
         options.timeSeconds = std::chrono::duration<double>(now - start).count();
-        if (frame == resizeFrame) glfwSetWindowSize(window.handle, static_cast<int>(resizeSize.width),
-                                                    static_cast<int>(resizeSize.height));
+        if (frame == resizeFrame)
+            glfwSetWindowSize(window.handle, static_cast<int>(resizeSize.width),
+                              static_cast<int>(resizeSize.height));
 
         RG_VK(vkWaitForFences(device.device(), 1, &fence, VK_TRUE, UINT64_MAX));
         if (!firstWait) {
@@ -418,9 +438,11 @@ int runView(Args& args) {
                     noiseTitle(noise, options.method) + " - " +
                     std::to_string(t.plugin.totalMilliseconds).substr(0, 6) + " ms";
                 std::vector<lightscatter::PassTime> top = t.plugin.passes;
-                std::sort(top.begin(), top.end(), [](auto& a, auto& b) { return a.milliseconds > b.milliseconds; });
+                std::sort(top.begin(), top.end(),
+                          [](auto& a, auto& b) { return a.milliseconds > b.milliseconds; });
                 for (size_t i = 0; i < top.size() && i < 3; ++i)
-                    title += " | " + top[i].name + " " + std::to_string(top[i].milliseconds).substr(0, 5);
+                    title += " | " + top[i].name + " " +
+                             std::to_string(top[i].milliseconds).substr(0, 5);
                 if (device.isCpu()) title += " (CPU timings)";
                 glfwSetWindowTitle(window.handle, title.c_str());
             }
@@ -440,8 +462,8 @@ int runView(Args& args) {
             rebuildDisplay(true);
         }
         uint32_t index = 0;
-        const VkResult acq = vkAcquireNextImageKHR(device.device(), swapchain.handle(), UINT64_MAX, acquired,
-                                                   VK_NULL_HANDLE, &index);
+        const VkResult acq = vkAcquireNextImageKHR(device.device(), swapchain.handle(), UINT64_MAX,
+                                                   acquired, VK_NULL_HANDLE, &index);
         if (acq == VK_ERROR_OUT_OF_DATE_KHR) {
             swapchain.recreate(fb);
             renderer.resize(swapchain.extent());
@@ -454,7 +476,8 @@ int runView(Args& args) {
         VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
         begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
         RG_VK(vkBeginCommandBuffer(cmd, &begin));
-        renderer.record(cmd, options, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT);
+        renderer.record(cmd, options, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                        VK_ACCESS_2_MEMORY_READ_BIT);
         display->record(cmd, swapchain.image(index));
         RG_VK(vkEndCommandBuffer(cmd));
         VkSemaphoreSubmitInfo wait{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
@@ -481,25 +504,34 @@ int runView(Args& args) {
         present.pSwapchains = &sc;
         present.pImageIndices = &index;
         const VkResult pr = vkQueuePresentKHR(device.queue(), &present);
-        if (pr != VK_ERROR_OUT_OF_DATE_KHR && pr != VK_SUBOPTIMAL_KHR) rg::check(pr, "vkQueuePresentKHR");
+        if (pr != VK_ERROR_OUT_OF_DATE_KHR && pr != VK_SUBOPTIMAL_KHR)
+            rg::check(pr, "vkQueuePresentKHR");
         firstWait = false;
         ++frame;
-        if (memoryLog && (frame % 100 == 0 || lastFrame))
-            *memoryLog << frame << "," << residentKiB() << "," << rg::deviceMemoryInUse() << std::endl;
+        if (!memoryLogPath.empty() && (frame % 100 == 0 || lastFrame))
+            memoryLog += std::to_string(frame) + "," + std::to_string(residentKiB()) + "," +
+                         std::to_string(rg::deviceMemoryInUse()) + "\n";
         if (lastFrame) {
             RG_VK(vkWaitForFences(device.device(), 1, &fence, VK_TRUE, UINT64_MAX));
             if (!screenshotPath.empty()) {
                 const VkExtent2D e = swapchain.extent();
-                writePng(screenshotPath, e.width, e.height, display->screenshot(swapchain.format()));
-                std::cout << "wrote " << screenshotPath << " (" << e.width << "x" << e.height << ", after " << frame
-                          << " frames)\n";
+                const std::vector<uint8_t> pixels = display->screenshot(swapchain.format());
+                outputs.write(
+                    screenshotPath,
+                    [&](const std::string& tmp) {
+                        return encodePng(tmp, e.width, e.height, pixels);
+                    },
+                    "PNG");
+                screenshotNote = " (" + std::to_string(e.width) + "x" + std::to_string(e.height) +
+                                 ", after " + std::to_string(frame) + " frames)";
             }
             break;
         }
     }
     vkDeviceWaitIdle(device.device());
     if (device.messageCount() > 0) {
-        std::cerr << "lightscatter: the validation layer reported " << device.messageCount() << " message(s)\n";
+        std::cerr << "lightscatter: the validation layer reported " << device.messageCount()
+                  << " message(s)\n";
         exitCode = 3;
     }
     display.reset();
@@ -507,6 +539,13 @@ int runView(Args& args) {
     for (auto s : finished) vkDestroySemaphore(device.device(), s, nullptr);
     vkDestroySemaphore(device.device(), acquired, nullptr);
     vkDestroyCommandPool(device.device(), pool, nullptr);
+    if (!screenshotPath.empty() && screenshotNote.empty())
+        throw std::runtime_error("view: --screenshot " + screenshotPath +
+                                 ": the window was closed after " + std::to_string(frame) + " of " +
+                                 std::to_string(frameLimit) + " frames; nothing was written");
+    if (!memoryLogPath.empty()) outputs.writeText(memoryLogPath, memoryLog);
+    outputs.commit();
+    if (!screenshotPath.empty()) std::cout << "wrote " << screenshotPath << screenshotNote << "\n";
     return exitCode;
 }
 

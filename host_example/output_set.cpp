@@ -7,6 +7,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "referenced_files.h"
+
 namespace host {
 namespace {
 
@@ -30,7 +32,7 @@ void OutputSet::addInput(const std::string& what, const std::string& path) {
     inputs_.push_back({what, path});
 }
 
-void OutputSet::add(const std::string& option, const std::string& path) {
+void OutputSet::check(const std::string& option, const std::string& path) const {
     const std::string named = option + " " + path;
     if (path.empty()) throw std::runtime_error(option + " needs a file name");
     for (const Output& o : outputs_)
@@ -41,6 +43,11 @@ void OutputSet::add(const std::string& option, const std::string& path) {
         if (sameFile(in.path, path))
             throw std::runtime_error(named + ": is " + in.what + " (" + in.path +
                                      "); an output must not overwrite an input");
+    const std::string folder = fs::path(path).parent_path().string();
+    for (const ReferencedFile& f : filesReferencedFrom(folder))
+        if (sameFile(f.path, path))
+            throw std::runtime_error(named + ": is a file that " + f.referrer +
+                                     " reads; an output must not overwrite a scene's file");
     // rename() would replace a device node or fail on a directory only after all the work.
     struct stat st {};
     if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
@@ -48,6 +55,10 @@ void OutputSet::add(const std::string& option, const std::string& path) {
             named + ": " +
             (S_ISDIR(st.st_mode) ? "is a directory" : "exists and is not a regular file") +
             "; give a file name");
+}
+
+void OutputSet::add(const std::string& option, const std::string& path) {
+    check(option, path);
     // The check that the folder is writable: a temporary made there and removed at once. The one
     // written later is made again, so that no empty temporary waits through a long render.
     { TempFile probe(path, option); }

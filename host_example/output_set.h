@@ -18,7 +18,12 @@ class OutputSet {
     // Files the command reads: an output that is one of them is refused. `what` names it in the
     // message ("the scene file", "a glTF file the scene reads").
     void addInput(const std::string& what, const std::string& path);
-    // `option` names the output in messages ("--out"). Throws when it clashes or cannot be written.
+    // Throws when `path` is another output, an input, a file that a scene or glTF in its folder
+    // reads (referenced_files.h), or not a regular file; `option` names it ("--out"). For outputs
+    // written as the command goes (the benchmark's), checked here but not added.
+    void check(const std::string& option, const std::string& path) const;
+    // check(), and throws when the file's folder is not writable; the output is then written with
+    // write() and moved into place by commit().
     void add(const std::string& option, const std::string& path);
 
     // Writes an added output through `write(temporaryPath)`, which returns false on failure; throws
