@@ -6,6 +6,12 @@
 
 namespace host {
 
+Args::Args(std::vector<std::string> words) {
+    const auto end = std::find(words.begin(), words.end(), "--");
+    words_.assign(words.begin(), end);
+    if (end != words.end()) rest_.assign(end + 1, words.end());
+}
+
 void Args::refuseRepeats(const std::string& name) const {
     if (std::count(words_.begin(), words_.end(), name) > 1)
         throw std::runtime_error("option " + name + " is given more than once");
@@ -17,6 +23,12 @@ std::string Args::take(const std::string& name, const std::string& fallback) {
         if (words_[i] != name) continue;
         if (i + 1 >= words_.size()) throw std::runtime_error("option " + name + " needs a value");
         std::string v = words_[i + 1];
+        if (v.rfind("--", 0) == 0)
+            throw std::runtime_error(
+                "option " + name + " needs a value, but the word after it is the option '" + v +
+                "' (a value never starts with \"--\"; give a file starting with it "
+                "as ./" +
+                v + ")");
         words_.erase(words_.begin() + static_cast<long>(i),
                      words_.begin() + static_cast<long>(i) + 2);
         return v;
@@ -41,11 +53,18 @@ std::string Args::positional(const std::string& what) {
             words_.erase(words_.begin() + static_cast<long>(i));
             return v;
         }
+    if (!rest_.empty()) {
+        std::string v = rest_.front();
+        rest_.erase(rest_.begin());
+        return v;
+    }
     throw std::runtime_error("missing " + what);
 }
 
 void Args::finish() const {
     if (!words_.empty()) throw std::runtime_error("unknown option or argument '" + words_[0] + "'");
+    if (!rest_.empty())
+        throw std::runtime_error("unexpected argument '" + rest_[0] + "' after \"--\"");
 }
 
 namespace {

@@ -9,20 +9,25 @@
 
 namespace host {
 
+// A word "--" ends the options: every word after it is positional, so that a file named
+// "--ddash.json" can be given.
 class Args {
   public:
-    explicit Args(std::vector<std::string> words) : words_(std::move(words)) {}
+    explicit Args(std::vector<std::string> words);
     // The value after `name`, or `fallback` when absent; throws when `name` is given twice or has
-    // no value.
+    // no value. A value never starts with "--": `--timings --out a.png` is --timings without its
+    // value, not a file named "--out".
     std::string take(const std::string& name, const std::string& fallback);
     bool flag(const std::string& name);  // throws when given twice
-    // Positional argument (first word not starting with "--"), or throws naming `what`.
+    // Positional argument (the first word not starting with "--", else the first after "--"), or
+    // throws naming `what`.
     std::string positional(const std::string& what);
     void finish() const;  // throws if anything was not understood
 
   private:
     void refuseRepeats(const std::string& name) const;
-    std::vector<std::string> words_;
+    std::vector<std::string> words_;  // before "--"
+    std::vector<std::string> rest_;   // after "--": positional only
 };
 
 // A whole number in [lo, hi], written as decimal digits alone: no sign, no spaces, nothing after

@@ -29,8 +29,10 @@ int run(const std::string& command, host::Args& args) {
 }
 
 bool asksForHelp(const std::vector<std::string>& words) {
-    for (const std::string& w : words)
+    for (const std::string& w : words) {
+        if (w == "--") return false;  // what follows is a file name, even "--help"
         if (w == "--help" || w == "-h") return true;
+    }
     return false;
 }
 
@@ -61,8 +63,8 @@ int main(int argc, char** argv) {
         // The command's device is gone by now: what the layer said while it was destroyed (objects
         // left alive) counts too.
         if (code == 0 && rg::validationMessagesInProcess() > 0) {
-            std::cerr << "lightscatter: the validation layer reported " << rg::validationMessagesInProcess()
-                      << " message(s)\n";
+            std::cerr << "lightscatter: the validation layer reported "
+                      << rg::validationMessagesInProcess() << " message(s)\n";
             return 3;
         }
         return code;

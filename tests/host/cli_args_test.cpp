@@ -57,6 +57,27 @@ TEST(HostCliArgs, RepeatedOptionsAreCalledRepeated) {
     EXPECT_EQ(errorOf([&] { unknown.finish(); }), "unknown option or argument '--frobnicate'");
 }
 
+// `render s.json --timings --out a.png` took "--out" as the timings' file and then called "a.png"
+// unknown; a scene named "--ddash.json" could not be given at all (issue #22).
+TEST(HostCliArgs, AValueNeverStartsWithTwoDashesAndTwoDashesEndTheOptions) {
+    host::Args swallowed({"s.json", "--timings", "--out", "a.png"});
+    const std::string e = errorOf([&] { swallowed.take("--timings", ""); });
+    EXPECT_NE(e.find("option --timings needs a value, but the word after it is the option '--out'"),
+              std::string::npos)
+        << e;
+    host::Args dashed({"--size", "8x8", "--", "--ddash.json"});
+    EXPECT_EQ(dashed.take("--size", ""), "8x8");
+    EXPECT_EQ(dashed.take("--out", "none"), "none");
+    EXPECT_EQ(dashed.positional("SCENE.json"), "--ddash.json");
+    EXPECT_NO_THROW(dashed.finish());
+    host::Args notAnOption({"--", "--out", "x.png"});
+    EXPECT_EQ(notAnOption.take("--out", "none"), "none");  // after "--", "--out" is a file name
+    EXPECT_EQ(notAnOption.positional("SCENE.json"), "--out");
+    EXPECT_EQ(errorOf([&] { notAnOption.finish(); }), "unexpected argument 'x.png' after \"--\"");
+    host::Args negative({"--frames", "-1"});  // one dash is a value, refused by the number's rule
+    EXPECT_EQ(negative.take("--frames", ""), "-1");
+}
+
 // The plugin's messages carry their own "lightscatter: ", to which main() added another.
 TEST(HostErrorLine, OnePrefixAndOneLine) {
     EXPECT_EQ(host::errorLine("lightscatter: budget shadow-map size 1: must be in [2, 16384]"),
