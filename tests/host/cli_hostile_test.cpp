@@ -1,0 +1,151 @@
+// The command line against hostile input (issue #22), as a table: each row sets up files in a
+// folder of its own, runs one command, and expects an exit code and words in its one line of
+// output. Every file a row sets up must be byte for byte the same afterwards (nothing an input is
+// overwritten), and no temporary is left behind.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "cli_runner.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Row {
+    const char* name;
+    // File name (in the row's folder) -> its text; "@copy:PATH" copies PATH of the repository.
+    std::vector<std::pair<std::string, std::string>> files;
+    // Run in the row's folder; {src} is the repository, {scene:NAME} scenes/NAME.json.
+    std::string arguments;
+    int exitCode;
+    std::string words;        // in the output, which is one line unless `oneLine` is false
+    std::string prefix = "";  // e.g. xvfb-run for the window
+    bool oneLine = true;
+};
+
+const std::string kSrc = LS_SOURCE_DIR;
+
+// The atrium's scene and every file it reads, copied: outputs aimed at them must be refused, and a
+// broken rule then overwrites the copy, never the repository's own.
+const std::vector<std::pair<std::string, std::string>> kAtriumCopy = {
+    {"atrium.json", "@copy:scenes/atrium.json"},
+    {"atrium.gltf", "@copy:scenes/atrium.gltf"},
+    {"atrium.bin", "@copy:scenes/atrium.bin"},
+    {"atrium_floor.png", "@copy:scenes/atrium_floor.png"}};
+
+std::vector<std::pair<std::string, std::string>> with(
+    std::vector<std::pair<std::string, std::string>> a,
+    const std::vector<std::pair<std::string, std::string>>& b) {
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+}
+
+const char* kXvfb = "xvfb-run -a -s '-screen 0 640x480x24'";
+
+std::vector<Row> rows() {
+    return {
+        // 1-4: no output replaces a file the command reads, or a file a scene beside it reads.
+        {"MemoryLogIsTheScene", kAtriumCopy, "view atrium.json --frames 2 --memory-log atrium.json",
+         1, "--memory-log atrium.json: is the scene file"},
+        {"MemoryLogIsTheScenesBuffer", kAtriumCopy,
+         "view atrium.json --frames 2 --memory-log atrium.bin", 1,
+         "--memory-log atrium.bin: is a file the scene reads"},
+        {"MemoryLogBeforeTheWindowFails", with(kAtriumCopy, {{"log.csv", "the previous log"}}),
+         "view atrium.json --frames 2 --memory-log log.csv", 1, "cannot open a window",
+         "env -u DISPLAY"},
+        {"ScreenshotIsTheScenesTexture", kAtriumCopy,
+         "view atrium.json --size 32x18 --frames 2 --screenshot atrium_floor.png", 1,
+         "--screenshot atrium_floor.png: is a file the scene reads", kXvfb},
+        {"BenchOutIsTheConfigurationsFolder",
+         {{"D/bench.json", "@copy:bench/small.json"}},
+         "bench --config D/bench.json --out D",
+         1,
+         "--out D/bench.json: is the benchmark configuration"},
+        {"RenderOutIsAnotherScenesTexture", kAtriumCopy,
+         "render {scene:window_room} --size 8x8 --out atrium_floor.png", 1,
+         "--out atrium_floor.png: is a file that atrium.gltf reads"},
+        {"RenderOutIsAnotherScenesBuffer", kAtriumCopy,
+         "render {scene:window_room} --size 8x8 --timings atrium.bin", 1,
+         "--timings atrium.bin: is a file that atrium.gltf reads"},
+        {"RenderTimingsIsAnotherScene", kAtriumCopy,
+         "render {scene:window_room} --size 8x8 --timings atrium.gltf", 1,
+         "--timings atrium.gltf: is a file that atrium.json reads"},
+        {"PatternOutIsASceneFile", kAtriumCopy, "pattern --size 8x8 --out atrium_floor.png", 1,
+         "--out atrium_floor.png: is a file that"},
+
+        // 15: an option's value never starts with "--"; "--" ends the options.
+        {"AnOptionTakesNoOptionAsItsValue",
+         {},
+         "render {scene:atrium} --timings --out a.png --size 64x36",
+         1,
+         "option --timings needs a value, but the word after it is the option '--size'"},
+        {"TwoDashesEndTheOptions",
+         {{"--ddash.json", "{}"}},
+         "render --size 8x8 --out d.png -- --ddash.json",
+         0,
+         "d.png: 8x8",
+         "",
+         false},
+        {"NothingAfterTheFileName",
+         {},
+         "render --size 8x8 -- a.json b.json",
+         1,
+         "unexpected argument 'b.json' after \"--\""},
+    };
+}
+
+std::string readAll(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::string expanded(std::string text) {
+    for (size_t at; (at = text.find("{src}")) != std::string::npos;) text.replace(at, 5, kSrc);
+    for (size_t at; (at = text.find("{scene:")) != std::string::npos;) {
+        const size_t end = text.find('}', at);
+        text.replace(at, end + 1 - at, cli_test::scene(text.substr(at + 7, end - at - 7)));
+    }
+    return text;
+}
+
+class CliHostile : public testing::TestWithParam<Row> {};
+
+TEST_P(CliHostile, RefusesInOneLineAndTouchesNoInput) {
+    const Row& row = GetParam();
+    const fs::path dir = fs::path(cli_test::scratch()) / row.name;
+    fs::create_directories(dir);
+    std::map<fs::path, std::string> before;
+    for (const auto& [name, text] : row.files) {
+        const fs::path p = dir / name;
+        fs::create_directories(p.parent_path());
+        const std::string content =
+            text.rfind("@copy:", 0) == 0 ? readAll(fs::path(kSrc) / text.substr(6)) : text;
+        std::ofstream(p, std::ios::binary) << content;
+        before[p] = content;
+    }
+    const cli_test::Result r =
+        cli_test::run(expanded(row.arguments), "cd '" + dir.string() + "' && " + row.prefix);
+    if (row.exitCode != 0) {
+        EXPECT_NE(r.exitCode, 0) << r.out;
+        if (row.oneLine) cli_test::expectFailure(r, row.words);
+    }
+    EXPECT_EQ(r.exitCode, row.exitCode) << r.out;
+    EXPECT_NE(r.out.find(row.words), std::string::npos) << r.out;
+    for (const auto& [p, content] : before)
+        EXPECT_TRUE(readAll(p) == content) << p << " was changed";
+    for (const auto& e : fs::recursive_directory_iterator(dir))
+        EXPECT_EQ(e.path().string().find(".partial"), std::string::npos) << e.path();
+}
+
+INSTANTIATE_TEST_SUITE_P(Table, CliHostile, testing::ValuesIn(rows()),
+                         [](const testing::TestParamInfo<Row>& row) {
+                             return std::string(row.param.name);
+                         });
+
+}  // namespace
