@@ -537,6 +537,10 @@ public:
     uint64_t record(VkCommandBuffer cmd, const FrameDescription& frame);
     // Validates, records into the plugin's own command buffer, submits, waits, reports.
     FrameReport render(const FrameDescription& frame);
+    // Validates the description as record() does, and whether its method can honour it, throwing
+    // the same InvalidInput; records, builds and changes nothing. For a tool that checks many
+    // configurations before the first frame (the host's benchmark does).
+    void check(const FrameDescription& frame) const;
     // The GPU times of a frame, read without waiting: `timed` is false while the GPU has not
     // finished it (or it was never submitted). The plugin keeps the times of the last kTimedFrames
     // frames of one frame graph; an older frame, or one recorded before the graph was rebuilt,

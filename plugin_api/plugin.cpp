@@ -81,18 +81,83 @@ struct Plugin::Impl {
     }
 
     void prepare(const FrameDescription& frame) {
-        if (frame.lights.size() >= 2) return prepareLights(frame);
+        if (frame.lights.size() >= 2) return prepareLights(frame, chooseForLights(frame));
         if (frame.lights.size() == 1) {
             // One light in the list is the single light: every method takes it.
             detail::setupLights(frame);
+            const FrameDescription single = detail::withLight(frame, 0);
             try {
-                prepareOne(detail::withLight(frame, 0));
+                prepareOne(single, chooseForOne(single));
             } catch (const InvalidInput& e) {
                 throw InvalidInput(detail::lightMessage(e.what(), 0));
             }
             return;
         }
-        prepareOne(frame);
+        prepareOne(frame, chooseForOne(frame));
+    }
+
+    // What prepare() refuses, found the same way, with nothing built or changed.
+    static void check(const FrameDescription& frame) {
+        if (frame.lights.size() >= 2) {
+            chooseForLights(frame);
+        } else if (frame.lights.size() == 1) {
+            detail::setupLights(frame);
+            try {
+                chooseForOne(detail::withLight(frame, 0));
+            } catch (const InvalidInput& e) {
+                throw InvalidInput(detail::lightMessage(e.what(), 0));
+            }
+        } else {
+            chooseForOne(frame);
+        }
+    }
+
+    // A frame's validated setup and its method: everything that can refuse it, before anything is
+    // built.
+    struct OneLight {
+        detail::FrameSetup setup;
+        bool touchesView = false;
+        detail::MethodChoice choice;
+    };
+    static OneLight chooseForOne(const FrameDescription& frame) {
+        OneLight o{detail::setupFrame(frame)};
+        o.touchesView = detail::lightTouchesView(o.setup.camera, o.setup.light, o.setup.medium);
+        o.choice = detail::chooseMethod(frame.method, o.setup, o.touchesView);
+        return o;
+    }
+    struct SeveralLights {
+        std::vector<detail::FrameSetup> setups;
+        std::vector<bool> touches;
+        bool anyTouches = false;
+        detail::MethodChoice choice;
+    };
+    static SeveralLights chooseForLights(const FrameDescription& frame) {
+        SeveralLights l;
+        l.setups = detail::setupLights(frame);
+        const size_t n = l.setups.size();
+        l.choice.method = frame.method;
+        if (frame.method == Method::Auto) {
+            l.choice.method = Method::Epipolar;
+            l.choice.reason = std::to_string(n) + " lights: epipolar sampling per shadowed light";
+        } else if (frame.method != Method::Epipolar && frame.method != Method::BruteForce) {
+            throw InvalidInput(std::string("lightscatter: method ") + methodName(frame.method) +
+                               " renders one light per frame so far; lights holds " +
+                               std::to_string(n) +
+                               " (use epipolar, brute-force or auto, or one light)");
+        }
+        l.touches.resize(n);
+        for (size_t i = 0; i < n; ++i) {
+            const detail::FrameSetup& s = l.setups[i];
+            l.touches[i] = detail::lightTouchesView(s.camera, s.light, s.medium);
+            l.anyTouches = l.anyTouches || l.touches[i];
+            try {
+                detail::chooseMethod(l.choice.method, s, l.touches[i]);
+            } catch (const InvalidInput& e) {
+                throw InvalidInput(
+                    detail::lightMessage(e.what(), i, frame.lights[i].settings.has_value()));
+            }
+        }
+        return l;
     }
 
     static ls::ScatterSpec scatterSpec(const detail::FrameSetup& setup) {
@@ -110,9 +175,11 @@ struct Plugin::Impl {
 
     // One light's constants and shader options.
     static void fillShared(ls::SharedState& s, const detail::FrameSetup& setup) {
-        const ls::TableLayout table = ls::tableLayoutFor(setup.medium, setup.light.radius, kTableWidth, kTableHeight);
+        const ls::TableLayout table =
+            ls::tableLayoutFor(setup.medium, setup.light.radius, kTableWidth, kTableHeight);
         s.spec = scatterSpec(setup);
-        s.constants = ls::makeFrameConstants(setup.camera, setup.light, setup.medium, setup.epipolar, setup.screen, table);
+        s.constants = ls::makeFrameConstants(setup.camera, setup.light, setup.medium,
+                                             setup.epipolar, setup.screen, table);
         // Seed 004's I / (a1 r^2 + a0) as (I / a1) / (r^2 + a0 / a1); the floor keeps a ray through
         // the light finite when a0 is 0, as the floor on r0 does for the full model; the ceilings
         // keep a denormal a1 from making them infinite.
@@ -127,15 +194,18 @@ struct Plugin::Impl {
             f->spec = s.spec;
             f->constants = s.constants;
             f->constants.lightViewProj = s.constants.cubeFaceViewProj[face];
-            const bool inView = detail::cubeFaceTouchesView(setup.camera, setup.light, setup.medium, face);
+            const bool inView =
+                detail::cubeFaceTouchesView(setup.camera, setup.light, setup.medium, face);
             f->constants.cubeFace = {static_cast<float>(face), inView ? 1.0f : 0.0f, 0.0f, 0.0f};
         }
     }
 
     static ImportState tableState() {
-        return {VK_FORMAT_R32G32B32A32_SFLOAT, {kTableWidth, kTableHeight},
+        return {VK_FORMAT_R32G32B32A32_SFLOAT,
+                {kTableWidth, kTableHeight},
                 VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     }
 
     // Builds the graph for `c` unless the current one was built for it.
@@ -146,7 +216,8 @@ struct Plugin::Impl {
         executor.reset();
         config.reset();
         ++graphGeneration;
-        FrameGraph built = detail::buildFrameGraph(c, shared, slicePlacement, beamFrame, lightShared);
+        FrameGraph built =
+            detail::buildFrameGraph(c, shared, slicePlacement, beamFrame, lightShared);
         rg::CompileOptions options;
         options.poisonTransients = c.poisonTransients;
         rg::CompiledGraph compiled = rg::compile(*built.graph, caps, options);
@@ -221,35 +292,16 @@ struct Plugin::Impl {
         c.reversedZ = setup.camera.reversedZ;
     }
 
-    void prepareLights(const FrameDescription& frame) {
-        const std::vector<detail::FrameSetup> setups = detail::setupLights(frame);  // throws first
+    void prepareLights(const FrameDescription& frame, const SeveralLights& chosen) {
+        const std::vector<detail::FrameSetup>& setups = chosen.setups;
+        const std::vector<bool>& touches = chosen.touches;
+        const detail::MethodChoice& choice = chosen.choice;
         const size_t n = setups.size();
-        detail::MethodChoice choice;
-        choice.method = frame.method;
-        if (frame.method == Method::Auto) {
-            choice.method = Method::Epipolar;
-            choice.reason = std::to_string(n) + " lights: epipolar sampling per shadowed light";
-        } else if (frame.method != Method::Epipolar && frame.method != Method::BruteForce) {
-            throw InvalidInput(std::string("lightscatter: method ") + methodName(frame.method) +
-                               " renders one light per frame so far; lights holds " + std::to_string(n) +
-                               " (use epipolar, brute-force or auto, or one light)");
-        }
-        std::vector<bool> touches(n);
-        bool anyTouches = false;
-        for (size_t i = 0; i < n; ++i) {
-            touches[i] = detail::lightTouchesView(setups[i].camera, setups[i].light, setups[i].medium);
-            anyTouches = anyTouches || touches[i];
-            try {
-                detail::chooseMethod(choice.method, setups[i], touches[i]);
-            } catch (const InvalidInput& e) {
-                throw InvalidInput(detail::lightMessage(e.what(), i, frame.lights[i].settings.has_value()));
-            }
-        }
         lastChoice = choice;
         const detail::FrameSetup& first = setups[0];
         GraphConfig c;
         c.method = choice.method;
-        c.touchesView = anyTouches;
+        c.touchesView = chosen.anyTouches;
         c.extinction = glm::any(glm::greaterThan(first.medium.betaT(), glm::vec3(0.0f)));
         describeFrame(c, frame, first);
         while (lightShared.size() < n) lightShared.push_back(ls::SharedState::sibling(*shared));
@@ -273,7 +325,8 @@ struct Plugin::Impl {
             if (touches[i] && l.light != ls::LightKind::Directional) {
                 l.table = tableState();
                 if (!lightTables[i])
-                    lightTables[i] = std::make_unique<detail::PointTable>(device, kTableWidth, kTableHeight);
+                    lightTables[i] =
+                        std::make_unique<detail::PointTable>(device, kTableWidth, kTableHeight);
                 tableRefilled = lightTables[i]->update(lightShared[i]) || tableRefilled;
             }
             c.lights.push_back(l);
@@ -288,21 +341,24 @@ struct Plugin::Impl {
         for (size_t i = 0; i < n; ++i) {
             const auto& images = fg.lights[i];
             if (images.shadowMap.valid())
-                fg.graph->updateImport(images.shadowMap, detail::importDescription(*frame.lights[i].shadowMap));
+                fg.graph->updateImport(images.shadowMap,
+                                       detail::importDescription(*frame.lights[i].shadowMap));
             if (images.lightColor.valid())
-                fg.graph->updateImport(images.lightColor, detail::importDescription(*frame.lights[i].lightColor));
+                fg.graph->updateImport(images.lightColor,
+                                       detail::importDescription(*frame.lights[i].lightColor));
             if (images.table.valid())
-                fg.graph->updateImport(images.table, detail::persistentImport(c.lights[i].table, lightTables[i]->image()));
+                fg.graph->updateImport(
+                    images.table,
+                    detail::persistentImport(c.lights[i].table, lightTables[i]->image()));
         }
         importStepCounter();
         rehearseOnce();
     }
 
-    void prepareOne(const FrameDescription& frame) {
-        const detail::FrameSetup setup = detail::setupFrame(frame);  // throws before any recording
-
-        const bool touchesView = detail::lightTouchesView(setup.camera, setup.light, setup.medium);
-        const detail::MethodChoice choice = detail::chooseMethod(frame.method, setup, touchesView);
+    void prepareOne(const FrameDescription& frame, const OneLight& chosen) {
+        const detail::FrameSetup& setup = chosen.setup;
+        const bool touchesView = chosen.touchesView;
+        const detail::MethodChoice& choice = chosen.choice;
 
         lastChoice = choice;
         GraphConfig c;
@@ -345,15 +401,18 @@ struct Plugin::Impl {
             ss.noiseScale = setup.settings.noiseScale;
             const auto& v = setup.settings.noiseVelocity;
             ss.noiseVelocity = {v[0], v[1], v[2], v[3]};
-            *slicePlacement = ls::placeSlices(setup.camera, setup.light, setup.medium, ss, setup.timeSeconds);
+            *slicePlacement =
+                ls::placeSlices(setup.camera, setup.light, setup.medium, ss, setup.timeSeconds);
         }
         beamFrameBuilt = false;
-        if ((c.method == Method::BeamTreeAnalytic || c.method == Method::BeamTreeSampling) && c.touchesView) {
+        if ((c.method == Method::BeamTreeAnalytic || c.method == Method::BeamTreeSampling) &&
+            c.touchesView) {
             ls::SliceSettings planes;
             planes.planes = setup.settings.slicePlanes;
             *beamFrame = ls::buildBeamTreeFrame(
                 setup.camera, setup.light, setup.medium, setup.beamOccluders, planes,
-                c.method == Method::BeamTreeSampling ? ls::LitSpace::Planes : ls::LitSpace::ClosedForm);
+                c.method == Method::BeamTreeSampling ? ls::LitSpace::Planes
+                                                     : ls::LitSpace::ClosedForm);
             beamFrameBuilt = true;
             // The triangle buffer grows in powers of two (a rebuild), never shrinks.
             uint32_t capacity = config ? std::max(config->beamCapacity, 3u * 4096u) : 3u * 4096u;
@@ -366,7 +425,9 @@ struct Plugin::Impl {
             noiseMade = tilingNoise->ensure(shared);
         }
         if (needsTable) {
-            if (!pointTable) pointTable = std::make_unique<detail::PointTable>(device, kTableWidth, kTableHeight);
+            if (!pointTable)
+                pointTable =
+                    std::make_unique<detail::PointTable>(device, kTableWidth, kTableHeight);
             tableRefilled = pointTable->update(shared);
         } else {
             tableRefilled = false;
@@ -376,7 +437,8 @@ struct Plugin::Impl {
         // This frame's handles and stages; layouts are part of the configuration.
         fg.graph->updateImport(fg.depth, detail::importDescription(frame.depth));
         fg.graph->updateImport(fg.color, detail::importDescription(frame.color));
-        if (fg.shadowMap.valid()) fg.graph->updateImport(fg.shadowMap, detail::importDescription(*frame.shadowMap));
+        if (fg.shadowMap.valid())
+            fg.graph->updateImport(fg.shadowMap, detail::importDescription(*frame.shadowMap));
         if (fg.lightColor.valid())
             fg.graph->updateImport(fg.lightColor, detail::importDescription(*frame.lightColor));
         if (fg.inscatterOut.valid())
@@ -385,10 +447,13 @@ struct Plugin::Impl {
             if (frame.noise) {
                 fg.graph->updateImport(fg.noise, detail::importDescription(*frame.noise));
             } else {
-                fg.graph->updateImport(fg.noise, detail::persistentImport(detail::ownNoiseState(), tilingNoise->image()));
+                fg.graph->updateImport(fg.noise, detail::persistentImport(detail::ownNoiseState(),
+                                                                          tilingNoise->image()));
             }
         }
-        if (fg.table.valid()) fg.graph->updateImport(fg.table, detail::persistentImport(c.table, pointTable->image()));
+        if (fg.table.valid())
+            fg.graph->updateImport(fg.table,
+                                   detail::persistentImport(c.table, pointTable->image()));
         importStepCounter();
         rehearseOnce();
     }
@@ -400,7 +465,8 @@ struct Plugin::Impl {
         auto faces = [](const ls::SharedState& s) {
             std::string list;
             for (int f = 0; f < 6; ++f)
-                if (s.cubeFaces[f] && s.cubeFaces[f]->inView()) list += std::string(list.empty() ? "" : ", ") + ls::cubeFaceName(f);
+                if (s.cubeFaces[f] && s.cubeFaces[f]->inView())
+                    list += std::string(list.empty() ? "" : ", ") + ls::cubeFaceName(f);
             return list.empty() ? std::string("none") : list;
         };
         std::string note;
@@ -410,7 +476,8 @@ struct Plugin::Impl {
         } else {
             for (size_t i = 0; i < config->lights.size(); ++i)
                 if (config->lights[i].touchesView && lightShared[i]->spec.cubeShadow)
-                    note += "; light " + std::to_string(i) + "'s cube faces reaching the view: " + faces(*lightShared[i]);
+                    note += "; light " + std::to_string(i) +
+                            "'s cube faces reaching the view: " + faces(*lightShared[i]);
         }
         return note.empty() ? note : note + " (the others' passes record no work)";
     }
@@ -425,7 +492,8 @@ struct Plugin::Impl {
         f.tableRefilled = tableRefilled;
         f.noiseMade = noiseMade;
         f.countedSteps = fg.stepCounts.valid();
-        if (beamFrameBuilt) f.cpuWork.push_back({"beam tree (CPU, seed 004)", beamFrame->buildMilliseconds});
+        if (beamFrameBuilt)
+            f.cpuWork.push_back({"beam tree (CPU, seed 004)", beamFrame->buildMilliseconds});
         f.method = config && config->touchesView ? methodName(lastChoice.method) : "none";
         f.reason = (lastChoice.reason.empty() ? fg.summary : lastChoice.reason) + cubeFacesNote();
         f.notice = lastChoice.notice;
@@ -484,7 +552,8 @@ struct Plugin::Impl {
     bool noiseMade = false;
     // Where this frame's slice planes go; the slices nodes read it when they record.
     std::shared_ptr<ls::SlicePlacement> slicePlacement = std::make_shared<ls::SlicePlacement>();
-    // This frame's beam tree triangles (beam-tree-analytic); the nodes upload them when they record.
+    // This frame's beam tree triangles (beam-tree-analytic); the nodes upload them when they
+    // record.
     std::shared_ptr<ls::BeamTreeFrame> beamFrame = std::make_shared<ls::BeamTreeFrame>();
     bool beamFrameBuilt = false;
     // Several lights: each one's constants and options (over `shared`'s pipelines), and each
@@ -544,6 +613,10 @@ FrameReport Plugin::render(const FrameDescription& frame) {
         impl_->executor->run(number);
         return impl_->report(number);
     });
+}
+
+void Plugin::check(const FrameDescription& frame) const {
+    translated([&] { Impl::check(frame); });
 }
 
 FrameReport Plugin::report(uint64_t frame) {

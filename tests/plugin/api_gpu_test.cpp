@@ -29,7 +29,8 @@ std::array<lightscatter::Mat4, 6> cubeFaces(const lightscatter::Vec3& p) {
     const glm::vec3 L(p[0], p[1], p[2]);
     const glm::mat4 projection = glm::perspectiveRH_ZO(glm::radians(90.0f), 1.0f, 0.05f, 50.0f);
     const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-    const glm::vec3 ups[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
+    const glm::vec3 ups[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1},
+                              {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
     std::array<lightscatter::Mat4, 6> faces;
     for (size_t i = 0; i < 6; ++i) {
         const glm::mat4 m = projection * glm::lookAtRH(L, L + axes[i], ups[i]);
@@ -54,7 +55,7 @@ bool hasPass(const std::vector<std::string>& passes, const std::string& fragment
 }  // namespace
 
 class PluginApiGpu : public PluginGpuTest {
-protected:
+  protected:
     // Expects `change` to make the frame invalid with a message naming `field`, and the engine's
     // color to be untouched by the refused call.
     void expectRefused(const std::function<void(lightscatter::FrameDescription&)>& change,
@@ -64,15 +65,49 @@ protected:
         auto desc = frame.description(Method::Epipolar, lightscatter::Profile::Custom,
                                       smallSettings(frame.spec().screen));
         change(desc);
+        // check() refuses what render() refuses, in the same words.
+        std::string checked = "(accepted)";
+        try {
+            plugin().check(desc);
+        } catch (const lightscatter::InvalidInput& e) {
+            checked = e.what();
+        }
         try {
             plugin().render(desc);
             ADD_FAILURE() << "accepted; expected a refusal naming " << field;
         } catch (const lightscatter::InvalidInput& e) {
             EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+            EXPECT_EQ(checked, e.what());
         }
         EXPECT_EQ(frame.color(), before) << field;
     }
 };
+
+// Plugin::check: what record() would refuse, found without recording or building anything; a
+// method that cannot take the frame's lights included (the benchmark checks every run with it).
+TEST_F(PluginApiGpu, CheckRefusesWhatRecordRefusesAndBuildsNothing) {
+    TestFrame frame(dev(), spotFrame());
+    auto desc = frame.description(Method::Epipolar, lightscatter::Profile::Custom,
+                                  smallSettings(frame.spec().screen));
+    EXPECT_NO_THROW(plugin().check(desc));
+    EXPECT_EQ(plugin().report().frame, 0u);
+    EXPECT_EQ(plugin().graphDot(), "");
+    desc.lights = {{desc.light, desc.shadowMap, std::nullopt},
+                   {desc.light, desc.shadowMap, std::nullopt}};
+    desc.light = {};
+    desc.shadowMap.reset();
+    EXPECT_NO_THROW(plugin().check(desc));
+    desc.method = Method::ConeMarch;
+    try {
+        plugin().check(desc);
+        ADD_FAILURE() << "cone-march accepted two lights";
+    } catch (const lightscatter::InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("method cone-march renders one light per frame"),
+                  std::string::npos)
+            << e.what();
+    }
+    EXPECT_EQ(plugin().report().frame, 0u);
+}
 
 TEST_F(PluginApiGpu, ZeroSlicesAreRefused) {
     expectRefused([](auto& d) { d.custom.slices = 0; }, "custom.slices");
@@ -99,22 +134,26 @@ TEST_F(PluginApiGpu, BadSimplifiedModelCoefficientsAreRefused) {
 }
 
 TEST_F(PluginApiGpu, DepthThatIsNotADepthFormatIsRefused) {
-    expectRefused([](auto& d) { d.depth.format = VK_FORMAT_R8G8B8A8_UNORM; }, "depth.format R8G8B8A8_UNORM");
+    expectRefused([](auto& d) { d.depth.format = VK_FORMAT_R8G8B8A8_UNORM; },
+                  "depth.format R8G8B8A8_UNORM");
 }
 
 TEST_F(PluginApiGpu, ShadowMapOfTheWrongSizeIsRefused) {
-    expectRefused([](auto& d) { d.light.shadowMapSize = 256; }, "does not match light.shadowMapSize 256");
+    expectRefused([](auto& d) { d.light.shadowMapSize = 256; },
+                  "does not match light.shadowMapSize 256");
 }
 
 TEST_F(PluginApiGpu, NaNInAMatrixIsRefused) {
     expectRefused([](auto& d) { d.camera.view[5] = std::numeric_limits<float>::quiet_NaN(); },
                   "camera.view element 5");
-    expectRefused([](auto& d) { d.light.shadowViewProjection[0] = std::numeric_limits<float>::infinity(); },
-                  "light.shadowViewProjection");
+    expectRefused(
+        [](auto& d) { d.light.shadowViewProjection[0] = std::numeric_limits<float>::infinity(); },
+        "light.shadowViewProjection");
 }
 
 TEST_F(PluginApiGpu, MissingFinalLayoutIsRefused) {
-    expectRefused([](auto& d) { d.color.finalLayout = VK_IMAGE_LAYOUT_UNDEFINED; }, "color.finalLayout");
+    expectRefused([](auto& d) { d.color.finalLayout = VK_IMAGE_LAYOUT_UNDEFINED; },
+                  "color.finalLayout");
 }
 
 TEST_F(PluginApiGpu, ColorMustBeLinearHdr) {
@@ -129,7 +168,8 @@ TEST_F(PluginApiGpu, PointLightShadowMapsAreCheckedAsCubes) {
         d.light.type = LightType::Point;
         d.light.cubeFaceViewProjections = cubeFaces(d.light.position);
     };
-    expectRefused([](auto& d) { d.light.type = LightType::Point; }, "light.cubeFaceViewProjections[0] is singular");
+    expectRefused([](auto& d) { d.light.type = LightType::Point; },
+                  "light.cubeFaceViewProjections[0] is singular");
     expectRefused(point, "shadowMap.arrayLayers = 1: must be 6");
     expectRefused(
         [&](auto& d) {
@@ -142,14 +182,16 @@ TEST_F(PluginApiGpu, PointLightShadowMapsAreCheckedAsCubes) {
             point(d);
             const float s = 1.0f / std::tan(glm::radians(50.0f));
             d.light.cubeFaceViewProjections[4] =
-                times(glm::scale(glm::mat4(1.0f), glm::vec3(s, s, 1.0f)), d.light.cubeFaceViewProjections[4]);
+                times(glm::scale(glm::mat4(1.0f), glm::vec3(s, s, 1.0f)),
+                      d.light.cubeFaceViewProjections[4]);
         },
         "light.cubeFaceViewProjections[4] is not face +Z");
     expectRefused(
         [&](auto& d) {  // mirrored: clip x flipped
             point(d);
             d.light.cubeFaceViewProjections[1] =
-                times(glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, 1.0f, 1.0f)), d.light.cubeFaceViewProjections[1]);
+                times(glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, 1.0f, 1.0f)),
+                      d.light.cubeFaceViewProjections[1]);
         },
         "light.cubeFaceViewProjections[1] is not face -X");
     expectRefused(
@@ -173,7 +215,8 @@ TEST_F(PluginApiGpu, PointLightShadowMapsAreCheckedAsCubes) {
         },
         "light.cubeFaceViewProjections[3] element 7");
     // Layers elsewhere: a spot's map and the other images have one.
-    expectRefused([](auto& d) { d.shadowMap->arrayLayers = 6; }, "shadowMap.arrayLayers = 6: must be 1");
+    expectRefused([](auto& d) { d.shadowMap->arrayLayers = 6; },
+                  "shadowMap.arrayLayers = 6: must be 1");
     expectRefused([](auto& d) { d.depth.arrayLayers = 2; }, "depth.arrayLayers");
 }
 
@@ -223,8 +266,7 @@ TEST_F(PluginApiGpu, OnlyTheNodesAFrameNeedsAreBuilt) {
     away.light.range = 5.0f;
     TestFrame missed(dev(), away);
     r = run(missed, Method::Epipolar);
-    EXPECT_EQ(r.passNames,
-              (std::vector<std::string>{"upload frame constants", "composite"}));
+    EXPECT_EQ(r.passNames, (std::vector<std::string>{"upload frame constants", "composite"}));
     const auto lin = missed.inscatter();
     for (float v : lin) EXPECT_TRUE(v == 0.0f || v == 1.0f);
 }
