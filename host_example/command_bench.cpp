@@ -107,6 +107,54 @@ fs::path stripPath(const fs::path& out, const bench::BenchRun& run, const std::s
     return out / "strips" / (bench::fileSafe(strip) + suffix);
 }
 
+// Runs the benchmark passes over without a word: a light or scene its method has nothing to
+// measure on.
+bool skipped(const bench::BenchRun& run, const SceneDesc& scene) {
+    // Seed 001's closed form takes unshadowed point and spot lights only.
+    const bool unshadowedPointLike =
+        scene.light.type == LightKind::Point ||
+        (scene.light.type == LightKind::Spot && scene.light.shadowMapSize == 0);
+    if (run.method == lightscatter::Method::Analytic && !unshadowedPointLike) return true;
+    // Seed 004's beam tree is built from a point or spot light.
+    if ((run.method == lightscatter::Method::BeamTreeAnalytic ||
+         run.method == lightscatter::Method::BeamTreeSampling) &&
+        scene.light.type == LightKind::Directional)
+        return true;
+    // A shadow-map sweep resizes the light's map; a light without one (point_fog's) keeps none:
+    // a point light given a size would get a cube map, which is another scene, not a size.
+    return run.shadowMapSize && scene.light.shadowMapSize == 0;
+}
+
+RenderOptions runOptions(const bench::BenchRun& run) {
+    RenderOptions options;
+    options.method = run.method;
+    options.profile = run.custom ? lightscatter::Profile::Custom : run.profile;
+    if (run.custom) options.custom = run.settings;
+    return options;
+}
+
+// Every run's frame against the plugin's rules, before the first is timed: a method that cannot
+// honour a scene's lights used to end the benchmark when its run came up, hours in, naming no
+// scene. One small renderer per scene asks the plugin (Plugin::check), rendering nothing.
+void checkEveryRun(const rg::Device& device, const bench::BenchConfig& config,
+                   const std::string& configPath,
+                   const std::map<std::string, std::pair<SceneDesc, MeshData>>& scenes) {
+    std::map<std::string, std::unique_ptr<EngineRenderer>> probes;
+    for (const bench::BenchRun& run : config.runs) {
+        const auto& [scene, mesh] = scenes.at(run.scene);
+        if (skipped(run, scene)) continue;
+        std::unique_ptr<EngineRenderer>& probe = probes[run.scene];
+        if (!probe)
+            probe = std::make_unique<EngineRenderer>(device, scene, mesh, VkExtent2D{16, 16});
+        try {
+            probe->check(runOptions(run));
+        } catch (const SceneError& e) {
+            throw std::runtime_error(configPath + ": run '" + run.label + "' cannot run on " +
+                                     e.what());
+        }
+    }
+}
+
 }  // namespace
 
 int runBench(Args& args) {
@@ -153,6 +201,9 @@ int runBench(Args& args) {
             if (!m.empty()) guard.check("--out", stripPath(out, run, m, "_flicker.png").string());
         }
     }
+    Activity benchmarking("benchmarking " + configPath);
+    rg::Device device(deviceOptions);
+    checkEveryRun(device, config, configPath, scenes);
     for (const fs::path& dir : {out / "strips", out / "references"}) {
         std::error_code ec;
         fs::create_directories(dir, ec);
@@ -162,8 +213,6 @@ int runBench(Args& args) {
     }
     { TempFile probe((out / "bench.json").string(), "--out"); }  // the folder is writable
 
-    Activity benchmarking("benchmarking " + configPath);
-    rg::Device device(deviceOptions);
     std::ofstream csv(out / "bench.csv");
     if (!csv) throw std::runtime_error((out / "bench.csv").string() + ": cannot open for writing");
     csv << kCsvHeader << "\n" << std::flush;
@@ -183,25 +232,7 @@ int runBench(Args& args) {
         if (run.scene != referencesScene) references.clear();
         referencesScene = run.scene;
         auto& [scene, mesh] = scenes.at(run.scene);
-        // Seed 001's closed form takes unshadowed point and spot lights only; elsewhere there is
-        // nothing to measure.
-        const bool unshadowedPointLike =
-            scene.light.type == LightKind::Point ||
-            (scene.light.type == LightKind::Spot && scene.light.shadowMapSize == 0);
-        if (run.method == lightscatter::Method::Analytic && !unshadowedPointLike) {
-            ++done;
-            continue;
-        }
-        // Seed 004's beam tree is built from a point or spot light.
-        if ((run.method == lightscatter::Method::BeamTreeAnalytic ||
-             run.method == lightscatter::Method::BeamTreeSampling) &&
-            scene.light.type == LightKind::Directional) {
-            ++done;
-            continue;
-        }
-        // A shadow-map sweep resizes the light's map; a light without one (point_fog's) keeps none:
-        // a point light given a size would get a cube map, which is another scene, not a size.
-        if (run.shadowMapSize && scene.light.shadowMapSize == 0) {
+        if (skipped(run, scene)) {
             ++done;
             continue;
         }
@@ -215,10 +246,7 @@ int runBench(Args& args) {
             renderer = std::make_unique<EngineRenderer>(device, sceneForRun, mesh, run.size);
             rendererKey = key;
         }
-        RenderOptions options;
-        options.method = run.method;
-        options.profile = run.custom ? lightscatter::Profile::Custom : run.profile;
-        if (run.custom) options.custom = run.settings;
+        const RenderOptions options = runOptions(run);
         const lightscatter::Settings used =
             run.custom ? run.settings : lightscatter::profileSettings(run.profile);
 

@@ -2,11 +2,10 @@
 
 #include <cstring>
 #include <functional>
-#include <map>
 #include <glm/gtc/packing.hpp>
+#include <map>
 
 #include "camera_math.h"
-#include "scene/bounding_boxes.h"
 #include "fullscreen_vert.h"
 #include "mesh_shadowed_frag.h"
 #include "mesh_unshadowed_frag.h"
@@ -16,6 +15,7 @@
 #include "rendergraph/pipeline.h"
 #include "rendergraph/report.h"
 #include "rendergraph/vk_error.h"
+#include "scene/bounding_boxes.h"
 #include "scene_to_plugin.h"
 #include "shadow_frag.h"
 
@@ -33,7 +33,8 @@ struct DrawPush {
     glm::vec4 baseColor;
 };
 
-rg::GraphicsPipelineDesc meshPipeline(rg::ShaderCode fragment, const rg::RenderingFormats& formats) {
+rg::GraphicsPipelineDesc meshPipeline(rg::ShaderCode fragment,
+                                      const rg::RenderingFormats& formats) {
     rg::GraphicsPipelineDesc d;
     d.vertex = rg::spirv(ls_spirv::mesh_vert);
     d.fragment = fragment;
@@ -81,14 +82,16 @@ EngineRenderer::EngineRenderer(const rg::Device& device, SceneDesc scene, const 
     : device_(device), scene_(std::move(scene)), bounds_(mesh.bounds), size_(size) {
     for (const Primitive& p : mesh.primitives) {
         Bounds b;
-        for (uint32_t i = p.firstIndex; i < p.firstIndex + p.indexCount; ++i) b.add(mesh.vertices[mesh.indices[i]].position);
+        for (uint32_t i = p.firstIndex; i < p.firstIndex + p.indexCount; ++i)
+            b.add(mesh.vertices[mesh.indices[i]].position);
         partBounds_.push_back(b);
     }
     // Seed 004's occluders: the scene's oriented boxes, handed to the plugin with every frame.
     auto toPlugin = [](const OrientedBox& b) {
         lightscatter::OccluderBox o;
         o.center = {b.center.x, b.center.y, b.center.z};
-        for (int i = 0; i < 3; ++i) o.axes[static_cast<size_t>(i)] = {b.axes[i].x, b.axes[i].y, b.axes[i].z};
+        for (int i = 0; i < 3; ++i)
+            o.axes[static_cast<size_t>(i)] = {b.axes[i].x, b.axes[i].y, b.axes[i].z};
         o.halfExtents = {b.halfExtents.x, b.halfExtents.y, b.halfExtents.z};
         return o;
     };
@@ -128,21 +131,22 @@ EngineRenderer::~EngineRenderer() {
 }
 
 void EngineRenderer::createTargets() {
-    depth_ = std::make_unique<GpuImage>(device_, VK_FORMAT_D32_SFLOAT, size_,
-                                        VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                                        "host depth");
-    color_ = std::make_unique<GpuImage>(device_, VK_FORMAT_R16G16B16A16_SFLOAT, size_,
-                                        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT |
-                                            VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                                        "host hdr color");
-    inscatter_ = std::make_unique<GpuImage>(device_, VK_FORMAT_R32G32B32A32_SFLOAT, size_,
-                                            VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                                            "host in-scattering");
+    depth_ = std::make_unique<GpuImage>(
+        device_, VK_FORMAT_D32_SFLOAT, size_,
+        VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, "host depth");
+    color_ = std::make_unique<GpuImage>(
+        device_, VK_FORMAT_R16G16B16A16_SFLOAT, size_,
+        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT |
+            VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+        "host hdr color");
+    inscatter_ = std::make_unique<GpuImage>(
+        device_, VK_FORMAT_R32G32B32A32_SFLOAT, size_,
+        VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "host in-scattering");
     const VkDeviceSize pixels = size_t{size_.width} * size_.height;
-    colorReadback_ = std::make_unique<rg::HostBuffer>(device_, pixels * 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                                      "color readback");
-    linReadback_ = std::make_unique<rg::HostBuffer>(device_, pixels * 16, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                                    "in-scattering readback");
+    colorReadback_ = std::make_unique<rg::HostBuffer>(
+        device_, pixels * 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT, "color readback");
+    linReadback_ = std::make_unique<rg::HostBuffer>(
+        device_, pixels * 16, VK_BUFFER_USAGE_TRANSFER_DST_BIT, "in-scattering readback");
     lights_.clear();
     lights_.resize(scene_.lightCount());
     for (size_t i = 0; i < lights_.size(); ++i) {
@@ -273,7 +277,9 @@ void EngineRenderer::buildGraph() {
             pass.depthTest(depthRef_);
         }
         const LightKind kind = scene_.lightAt(i).type;
-        const int32_t lightType = kind == LightKind::Directional ? 0 : kind == LightKind::Spot ? 1 : 2;
+        const int32_t lightType = kind == LightKind::Directional ? 0
+                                  : kind == LightKind::Spot      ? 1
+                                                                 : 2;
         pass.execute([pipes, mesh, lighting, shadow, shadowed, reversed, lightType,
                       first](rg::PassContext& ctx) {
             const int key = (first ? 8 : 0) + lightType * 2 + (shadowed ? 1 : 0);
@@ -282,12 +288,14 @@ void EngineRenderer::buildGraph() {
                 auto d = meshPipeline(shadowed ? rg::spirv(ls_spirv::mesh_shadowed_frag)
                                                : rg::spirv(ls_spirv::mesh_unshadowed_frag),
                                       ctx.renderingFormats());
-                d.bindings = {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
-                              {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT}};
+                d.bindings = {
+                    {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
+                    {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT}};
                 if (shadowed)
                     d.bindings.push_back({2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                                           VK_SHADER_STAGE_FRAGMENT_BIT});
-                d.depthCompare = reversed ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL;
+                d.depthCompare =
+                    reversed ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL;
                 if (!first) {
                     d.depthWrite = false;
                     d.blend = rg::BlendMode::Additive;
@@ -380,9 +388,11 @@ lightscatter::FrameDescription EngineRenderer::describe(const RenderOptions& opt
     f.inscatterOut->finalStages = finalStages;
     f.inscatterOut->finalAccess = finalAccess;
     const float aspect = static_cast<float>(size_.width) / static_cast<float>(size_.height);
-    f.camera = toPluginCamera(scene_.camera, cameraView(scene_.camera), cameraProjection(scene_.camera, aspect));
-    // One light is the plugin's single light; several are its list.
-    if (lights_.size() == 1) {
+    f.camera = toPluginCamera(scene_.camera, cameraView(scene_.camera),
+                              cameraProjection(scene_.camera, aspect));
+    // One light is the plugin's single light, several (or a scene's "lights" of one) its list, so
+    // that a refusal names the light as the scene does.
+    if (lights_.size() == 1 && !scene_.lightList) {
         lightscatter::LightInput only = pluginLight(0, aspect);
         f.light = only.light;
         f.shadowMap = only.shadowMap;
@@ -433,6 +443,15 @@ void EngineRenderer::record(VkCommandBuffer cmd, const RenderOptions& options,
     }
 }
 
+void EngineRenderer::check(const RenderOptions& options) const {
+    try {
+        plugin_->check(
+            describe(options, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT));
+    } catch (const lightscatter::InvalidInput& e) {
+        throw SceneError(pluginRefusalInSceneTerms(e.what(), scene_.path));
+    }
+}
+
 FrameOutput EngineRenderer::timings() {
     FrameOutput out;
     out.engine = executor_->readTimings();
@@ -455,10 +474,12 @@ FrameOutput EngineRenderer::render(const RenderOptions& options) {
         vkEndCommandBuffer(cmd_);
         throw;
     }
-    // The plugin leaves both images in TRANSFER_SRC_OPTIMAL for the copies; they go back to GENERAL,
-    // where the next frame expects them.
-    auto transition = [&](VkImageLayout from, VkImageLayout to, VkPipelineStageFlags2 dst, VkAccessFlags2 dstAccess) {
-        VkImageMemoryBarrier2 b[2] = {{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2}, {VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2}};
+    // The plugin leaves both images in TRANSFER_SRC_OPTIMAL for the copies; they go back to
+    // GENERAL, where the next frame expects them.
+    auto transition = [&](VkImageLayout from, VkImageLayout to, VkPipelineStageFlags2 dst,
+                          VkAccessFlags2 dstAccess) {
+        VkImageMemoryBarrier2 b[2] = {{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2},
+                                      {VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2}};
         const VkImage images[2] = {color_->image(), inscatter_->image()};
         for (int i = 0; i < 2; ++i) {
             b[i].srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
@@ -479,10 +500,12 @@ FrameOutput EngineRenderer::render(const RenderOptions& options) {
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {size_.width, size_.height, 1};
-    vkCmdCopyImageToBuffer(cmd_, color_->image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, colorBuffer.buffer(), 1, &region);
-    vkCmdCopyImageToBuffer(cmd_, inscatter_->image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, linBuffer.buffer(), 1,
-                           &region);
-    transition(VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+    vkCmdCopyImageToBuffer(cmd_, color_->image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           colorBuffer.buffer(), 1, &region);
+    vkCmdCopyImageToBuffer(cmd_, inscatter_->image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           linBuffer.buffer(), 1, &region);
+    transition(VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
+               VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
                VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT);
     VkMemoryBarrier2 toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
     toHost.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
@@ -505,6 +528,8 @@ FrameOutput EngineRenderer::render(const RenderOptions& options) {
     return out;
 }
 
-std::string EngineRenderer::engineGraphDot() const { return rg::reportDot(*graph_, executor_->compiled()); }
+std::string EngineRenderer::engineGraphDot() const {
+    return rg::reportDot(*graph_, executor_->compiled());
+}
 
 }  // namespace host

@@ -47,6 +47,9 @@ public:
     void record(VkCommandBuffer cmd, const RenderOptions& options, VkPipelineStageFlags2 finalStages,
                 VkAccessFlags2 finalAccess, VkImageLayout finalLayout = VK_IMAGE_LAYOUT_GENERAL);
     FrameOutput timings();  // after the engine waited for a recorded frame
+    // Throws SceneError, in the scene's terms, when the plugin would refuse the frame `options`
+    // make; renders nothing.
+    void check(const RenderOptions& options) const;
 
     void resize(VkExtent2D size);
     VkExtent2D size() const { return size_; }

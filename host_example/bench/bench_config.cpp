@@ -64,6 +64,8 @@ class ConfigReader {
                 fail("profiles: unknown profile '" + name + "'");
             profiles.push_back(*parsed);
         }
+        if (profiles.empty())
+            fail("profiles is empty: list at least one profile, or leave the key out for balanced");
         const std::vector<lightscatter::Method> methods = methodList(
             j.contains("methods") ? j["methods"] : json::array({"epipolar", "brute-force"}),
             "methods");
@@ -159,6 +161,8 @@ class ConfigReader {
             }
             methods.push_back(*parsed);
         }
+        if (methods.empty())
+            fail(name + " is empty: list at least one method, or leave the key out for the default list");
         return methods;
     }
 

@@ -44,21 +44,38 @@ TEST(CliBench, EveryRunIsCheckedBeforeAnyRenders) {
 }
 
 TEST(CliBench, AnErrorDuringTheRunsStartsOnItsOwnLine) {
-    // A strip that cannot be written (a folder is in its place) fails the first run, after the
-    // progress bar was drawn.
+    // A cached reference that cannot be read fails the first run, after the progress bar was
+    // drawn. (Everything the runs write is checked before the first, so the cache is what is left
+    // to fail.)
     writeFile("one.json",
               R"({"frames": 1, "warmup": 0, "size": "16x9", "scenes": ["scenes/window_room.json"],
         "methods": ["brute-force"]})");
-    std::filesystem::create_directories(cli_test::path("one/strips/window_room_brute-force.png"));
+    ASSERT_EQ(run("bench --config one.json --out one").exitCode, 0);
+    int corrupted = 0;
+    for (const auto& e : std::filesystem::directory_iterator(cli_test::path("one/references")))
+        if (e.path().extension() == ".exr") {
+            std::ofstream(e.path(), std::ios::trunc) << "not an OpenEXR file";
+            ++corrupted;
+        }
+    ASSERT_EQ(corrupted, 1);
     const auto r = run("bench --config one.json --out one --validation");
     EXPECT_NE(r.exitCode, 0) << r.out;
-    const size_t error = r.out.find("lightscatter: ");
-    ASSERT_NE(error, std::string::npos) << r.out;
-    const size_t line = r.out.find("lightscatter: output ");
+    const size_t line = r.out.find("lightscatter: one/references/");
     ASSERT_NE(line, std::string::npos) << r.out;
     EXPECT_EQ(r.out[line - 1], '\n') << r.out;
-    EXPECT_NE(r.out.find("window_room_brute-force.png: is a directory"), std::string::npos)
-        << r.out;
+    EXPECT_NE(r.out.find("cannot read OpenEXR"), std::string::npos) << r.out;
+}
+
+// Everything a run writes is checked before the first run (issue #22): a strip that cannot be
+// written used to fail its run, after the runs before it.
+TEST(CliBench, AStripThatCannotBeWrittenIsFoundBeforeTheFirstRun) {
+    writeFile("strip.json",
+              R"({"frames": 1, "warmup": 0, "size": "16x9", "scenes": ["scenes/window_room.json"],
+        "methods": ["epipolar", "brute-force"]})");
+    std::filesystem::create_directories(cli_test::path("strip/strips/window_room_brute-force.png"));
+    const auto r = run("bench --config strip.json --out strip");
+    expectFailure(r, "--out strip/strips/window_room_brute-force.png: is a directory");
+    EXPECT_FALSE(cli_test::exists("strip/bench.csv"));
 }
 
 TEST(CliBench, TimingsOnlyRowsCarryTheBeamTreesCpuTime) {
@@ -70,7 +87,8 @@ TEST(CliBench, TimingsOnlyRowsCarryTheBeamTreesCpuTime) {
     const auto parsed = nlohmann::json::parse(j);
     ASSERT_EQ(parsed["runs"].size(), 2u);
     for (const auto& row : parsed["runs"]) {
-        EXPECT_FALSE(row.contains("error")) << row["label"] << ": no reference without measureError";
+        EXPECT_FALSE(row.contains("error"))
+            << row["label"] << ": no reference without measureError";
         EXPECT_EQ(row["occluders"], 11) << row["label"];  // ten boxes and the floor
         const bool tree = row["method"] == "beam-tree-analytic";
         EXPECT_EQ(row["cpuWork"].size(), tree ? 1u : 0u) << row["label"];
@@ -88,9 +106,9 @@ TEST(CliBench, TimingsOnlyRowsCarryTheBeamTreesCpuTime) {
                   "flag.json: measureError = \"no\": must be true or false");
 }
 
-// A shadow-map sweep resizes the maps a scene has and gives none to a light without one: point_fog's
-// unshadowed point light would otherwise become a cube-shadowed one, which analytic refuses, ending
-// the benchmark in the middle. The sweep starts from sweepProfile's settings.
+// A shadow-map sweep resizes the maps a scene has and gives none to a light without one:
+// point_fog's unshadowed point light would otherwise become a cube-shadowed one, which analytic
+// refuses, ending the benchmark in the middle. The sweep starts from sweepProfile's settings.
 TEST(CliBench, AShadowMapSweepSkipsALightWithoutAShadowMap) {
     writeFile("sweep.json", R"({"frames": 1, "warmup": 0, "size": "16x9", "measureError": false,
         "scenes": ["scenes/point_fog.json", "scenes/engine_spot.json"], "methods": ["analytic", "epipolar"],
