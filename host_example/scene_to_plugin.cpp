@@ -7,7 +7,14 @@
 namespace host {
 namespace {
 
-lightscatter::Vec3 v3(const glm::vec3& v) { return {v.x, v.y, v.z}; }
+lightscatter::Vec3 v3(const glm::vec3& v) {
+    return {v.x, v.y, v.z};
+}
+
+void replaceAll(std::string& text, const std::string& from, const std::string& to) {
+    for (size_t at = 0; (at = text.find(from, at)) != std::string::npos; at += to.size())
+        text.replace(at, from.size(), to);
+}
 
 }  // namespace
 
@@ -17,7 +24,8 @@ lightscatter::Mat4 toPluginMatrix(const glm::mat4& m) {
     return out;
 }
 
-lightscatter::Camera toPluginCamera(const CameraDesc& c, const glm::mat4& view, const glm::mat4& projection) {
+lightscatter::Camera toPluginCamera(const CameraDesc& c, const glm::mat4& view,
+                                    const glm::mat4& projection) {
     lightscatter::Camera out;
     out.view = toPluginMatrix(view);
     out.projection = toPluginMatrix(projection);
@@ -28,7 +36,8 @@ lightscatter::Camera toPluginCamera(const CameraDesc& c, const glm::mat4& view, 
     return out;
 }
 
-lightscatter::Light toPluginLight(const LightDesc& l, const glm::mat4& shadowViewProj, bool shadowed) {
+lightscatter::Light toPluginLight(const LightDesc& l, const glm::mat4& shadowViewProj,
+                                  bool shadowed) {
     lightscatter::Light out;
     out.type = l.type == LightKind::Directional ? lightscatter::LightType::Directional
                : l.type == LightKind::Spot      ? lightscatter::LightType::Spot
@@ -49,13 +58,17 @@ lightscatter::Light toPluginLight(const LightDesc& l, const glm::mat4& shadowVie
 std::string pluginRefusalInSceneTerms(const std::string& message, const std::string& scenePath) {
     std::string m = message;
     while (m.rfind("lightscatter: ", 0) == 0) m.erase(0, 14);
-    if (m.rfind("lights[", 0) == 0) {
-        // A light of the scene's "lights": the plugin's "lights[i]: lights[i].light.x" is the
-        // scene's "lights[i].x".
-        const size_t colon = m.find("]: ");
-        if (colon != std::string::npos) m.erase(0, colon + 3);
-        for (size_t at; (at = m.find("].light.")) != std::string::npos;) m.erase(at + 1, 6);
-        return scenePath + ": " + m + " (refused by the plugin)";
+    if (const size_t colon = m.find("]: ");
+        m.rfind("lights[", 0) == 0 && colon != std::string::npos) {
+        // A light of the scene's "lights": the plugin's "lights[i]: lights[i].light.x" is what the
+        // single light's "light.x" would be, named "lights[i].x" as the scene names it.
+        const std::string light = m.substr(0, colon + 1);
+        std::string single = m.substr(colon + 3);
+        replaceAll(single, light + ".light.", "light.");
+        std::string out = pluginRefusalInSceneTerms(single, scenePath);
+        replaceAll(out, " light.", " " + light + ".");
+        replaceAll(out, " the light ", " " + light + " ");
+        return out;
     }
     // Longest first: a phrase, then the fields whose SCENE.json names differ. The matrices are
     // made by the host from several scene fields, so those are named instead.
@@ -78,7 +91,7 @@ std::string pluginRefusalInSceneTerms(const std::string& message, const std::str
     };
     const bool aboutTheScene =
         m.rfind("camera.", 0) == 0 || m.rfind("light.", 0) == 0 || m.rfind("medium.", 0) == 0;
-    if (!aboutTheScene) return "the plugin refused the frame: " + m;
+    if (!aboutTheScene) return scenePath + ": the plugin refused the frame: " + m;
     std::string out;
     for (size_t i = 0; i < m.size();) {
         bool replaced = false;
@@ -86,8 +99,9 @@ std::string pluginRefusalInSceneTerms(const std::string& message, const std::str
             const size_t n = std::strlen(plugin);
             const bool wordStart = i == 0 || !(std::isalnum(static_cast<unsigned char>(m[i - 1])) ||
                                                m[i - 1] == '.' || m[i - 1] == '_');
-            const bool wordEnd = i + n >= m.size() ||
-                                 !(std::isalnum(static_cast<unsigned char>(m[i + n])) || m[i + n] == '_');
+            const bool wordEnd =
+                i + n >= m.size() ||
+                !(std::isalnum(static_cast<unsigned char>(m[i + n])) || m[i + n] == '_');
             if (wordStart && wordEnd && m.compare(i, n, plugin) == 0) {
                 out += scene;
                 i += n;

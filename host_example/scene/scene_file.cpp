@@ -291,17 +291,18 @@ class SceneReader {
 
     // In double precision, so that the message names the real problem rather than what float
     // overflow makes of it (a camera at 1e20 would otherwise have an "up parallel to the view").
-    void checkCameraPlacement(const CameraDesc& camera) const {
-        for (const auto& [point, name] : {std::pair{camera.position, "camera.position"},
-                                          std::pair{camera.target, "camera.target"}}) {
-            for (int i = 0; i < 3; ++i) {
-                if (std::fabs(double(point[i])) > kMaxCoordinate) {
-                    fail(std::string(name) + "[" + std::to_string(i) + "] = " + format(point[i]) +
-                         ": must be within +-" + format(kMaxCoordinate) +
-                         " (the renderer works in single precision)");
-                }
+    void checkCoordinates(const glm::vec3& point, const std::string& name) const {
+        for (int i = 0; i < 3; ++i) {
+            if (std::fabs(double(point[i])) > kMaxCoordinate) {
+                fail(name + "[" + std::to_string(i) + "] = " + format(point[i]) + ": must be within +-" +
+                     format(kMaxCoordinate) + " (the renderer works in single precision)");
             }
         }
+    }
+
+    void checkCameraPlacement(const CameraDesc& camera) const {
+        checkCoordinates(camera.position, "camera.position");
+        checkCoordinates(camera.target, "camera.target");
         const glm::dvec3 view = glm::dvec3(camera.target) - glm::dvec3(camera.position);
         if (!(glm::length(view) > 0.0)) {
             fail("camera.target equals camera.position: the view direction has zero length");
@@ -340,7 +341,10 @@ class SceneReader {
         // A point light's shadow map is a cube of six faces (six depth passes for the host, six
         // per-face passes for epipolar): it has one only when the scene asks (shadowMapSize > 0).
         if (light.type == LightKind::Point) light.shadowMapSize = 0;
-        if (const json* x = member(v, "position")) light.position = vec3(*x, name + ".position");
+        if (const json* x = member(v, "position")) {
+            light.position = vec3(*x, name + ".position");
+            checkCoordinates(light.position, name + ".position");
+        }
         if (const json* x = member(v, "direction")) {
             light.direction = direction(*x, name + ".direction");
         }

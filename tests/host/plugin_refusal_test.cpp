@@ -34,5 +34,32 @@ TEST(HostPluginRefusal, SceneFieldsInTheScenesNames) {
 TEST(HostPluginRefusal, OtherRefusalsKeepThePluginsWords) {
     EXPECT_EQ(host::pluginRefusalInSceneTerms(
                   "lightscatter: depth.format R8_UNORM is not a depth format", "s.json"),
-              "the plugin refused the frame: depth.format R8_UNORM is not a depth format");
+              "s.json: the plugin refused the frame: depth.format R8_UNORM is not a depth format");
+    // The scene path too, for a refusal of the method (issue #22: render and graph named no file).
+    EXPECT_EQ(
+        host::pluginRefusalInSceneTerms("lightscatter: method cone-march renders one light per "
+                                        "frame so far; lights holds 3",
+                                        "s.json"),
+        "s.json: the plugin refused the frame: method cone-march renders one light per frame so "
+        "far; lights holds 3");
+}
+
+// A scene's "lights", even of one light, is named lights[i] as the scene names it, with the
+// single light's translations (issue #22: a list of one light was reported as light.*).
+TEST(HostPluginRefusal, ALightOfTheListIsNamedAsTheSceneNamesIt) {
+    EXPECT_EQ(
+        host::pluginRefusalInSceneTerms(
+            "lightscatter: lights[0]: lights[0].light.shadowViewProjection "
+            "is singular (all zero?): with lights[0].light.shadowMapSize 2048 "
+            "it must be the shadow map's world -> light clip matrix",
+            "s.json"),
+        "s.json: the shadow map's projection made from lights[0] and the scene's bounds is "
+        "singular "
+        "(all zero?): with lights[0].shadowMapSize 2048 it must be the shadow map's world -> light "
+        "clip matrix (refused by the plugin)");
+    EXPECT_EQ(
+        host::pluginRefusalInSceneTerms(
+            "lightscatter: lights[2]: lights[2].light.halfAngleDegrees = 0: must be in (0, 89]",
+            "s.json"),
+        "s.json: lights[2].halfAngleDegrees = 0: must be in (0, 89] (refused by the plugin)");
 }
