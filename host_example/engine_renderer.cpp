@@ -95,7 +95,11 @@ EngineRenderer::EngineRenderer(const rg::Device& device, SceneDesc scene, const 
         o.halfExtents = {b.halfExtents.x, b.halfExtents.y, b.halfExtents.z};
         return o;
     };
-    for (const BoundingBoxes& b : boundingBoxes(mesh)) {
+    // More parts than the beam tree takes are merged into a grid of boxes; the other methods
+    // ignore occluders either way.
+    std::vector<BoundingBoxes> boxes = boundingBoxes(mesh);
+    if (boxes.size() > lightscatter::kMaxOccluders) boxes = gridBoxes(mesh, lightscatter::kMaxOccluders);
+    for (const BoundingBoxes& b : boxes) {
         lightscatter::Occluder o;
         o.outer = toPlugin(b.outer);
         if (b.inner) o.inner = toPlugin(*b.inner);

@@ -373,6 +373,29 @@ bool boxInside(const OccluderBox& inner, const OccluderBox& outer) {
 
 }  // namespace
 
+std::vector<ls::beam::Occluder> beamOccluders(const std::vector<Occluder>& occluders) {
+    checkOccluders(occluders);
+    auto box = [](const OccluderBox& b) {
+        ls::beam::OrientedBox o;
+        o.center = {b.center[0], b.center[1], b.center[2]};
+        for (int i = 0; i < 3; ++i) {
+            const auto& a = b.axes[static_cast<size_t>(i)];
+            o.axes[i] = glm::normalize(glm::dvec3(a[0], a[1], a[2]));
+        }
+        o.halfExtents = {b.halfExtents[0], b.halfExtents[1], b.halfExtents[2]};
+        return o;
+    };
+    std::vector<ls::beam::Occluder> out;
+    out.reserve(occluders.size());
+    for (const Occluder& o : occluders) {
+        ls::beam::Occluder b;
+        b.outer = box(o.outer);
+        if (o.inner) b.inner = box(*o.inner);
+        out.push_back(b);
+    }
+    return out;
+}
+
 void checkOccluders(const std::vector<Occluder>& occluders) {
     if (occluders.size() > kMaxOccluders)
         fail("occluders has " + std::to_string(occluders.size()) + " entries: at most " +
@@ -560,25 +583,9 @@ FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
         s.settings.simplifiedA1 = f.custom.simplifiedA1;
     }
     checkSettings(s.settings);
-    checkOccluders(f.occluders);
+    // Checked, and converted, only for the methods that read them (beamOccluders): the others
+    // ignore them, as the header says, and a scene of 100,000 parts must not stop them.
     s.occluders = f.occluders.size();
-    auto box = [](const OccluderBox& b) {
-        ls::beam::OrientedBox o;
-        o.center = {b.center[0], b.center[1], b.center[2]};
-        for (int i = 0; i < 3; ++i) {
-            const auto& a = b.axes[static_cast<size_t>(i)];
-            o.axes[i] = glm::normalize(glm::dvec3(a[0], a[1], a[2]));
-        }
-        o.halfExtents = {b.halfExtents[0], b.halfExtents[1], b.halfExtents[2]};
-        return o;
-    };
-    s.beamOccluders.reserve(f.occluders.size());
-    for (const Occluder& o : f.occluders) {
-        ls::beam::Occluder b;
-        b.outer = box(o.outer);
-        if (o.inner) b.inner = box(*o.inner);
-        s.beamOccluders.push_back(b);
-    }
     if (!std::isfinite(f.timeSeconds)) fail("timeSeconds is not finite");
     s.timeSeconds = f.timeSeconds;
 

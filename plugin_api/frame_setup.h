@@ -27,8 +27,10 @@ struct FrameSetup {
     bool simplified = false;   // Settings::lightModel == Simplified (seed 004's light model)
     bool depthAttachment = false;  // depth.usage allows a depth attachment (slices)
     double timeSeconds = 0.0;
-    size_t occluders = 0;
-    std::vector<ls::beam::Occluder> beamOccluders;  // FrameDescription::occluders in double
+    size_t occluders = 0;  // FrameDescription::occluders.size()
+    // FrameDescription::occluders in double, checked: filled (beamOccluders()) only when the
+    // frame's method reads them.
+    std::vector<ls::beam::Occluder> beamOccluders;
 };
 
 // Checks everything; `withImages` false skips the image handles (the budget has none).
@@ -47,6 +49,8 @@ std::string lightMessage(const std::string& message, size_t i, bool ownSettings 
 
 void checkSettings(const Settings& s);
 void checkOccluders(const std::vector<Occluder>& occluders);
+// The occluders checked (at most kMaxOccluders, each box valid) and in double, for the beam tree.
+std::vector<ls::beam::Occluder> beamOccluders(const std::vector<Occluder>& occluders);
 
 // Throws InvalidInput naming every feature the plugin needs that `enabled` (the chain an engine
 // created its device with) does not turn on.

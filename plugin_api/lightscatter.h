@@ -340,8 +340,9 @@ struct FrameDescription {
     std::optional<ImageInput> noise;
     double timeSeconds = 0.0;  // scrolls the noise
     // Optional: the scene's occluders for seed 004's methods (at most kMaxOccluders; each checked:
-    // finite, orthonormal axes, positive extents, the inner box inside the outer one). Methods
-    // that do not use them ignore them.
+    // finite, orthonormal axes, positive extents, the inner box inside the outer one). Checked
+    // only when the frame's method reads them (beam-tree-*, or auto when it picks one); the other
+    // methods ignore them, however many there are.
     std::vector<Occluder> occluders;
     Camera camera;
     Light light;

@@ -123,6 +123,8 @@ struct Plugin::Impl {
         OneLight o{detail::setupFrame(frame)};
         o.touchesView = detail::lightTouchesView(o.setup.camera, o.setup.light, o.setup.medium);
         o.choice = detail::chooseMethod(frame.method, o.setup, o.touchesView);
+        if (o.choice.method == Method::BeamTreeAnalytic || o.choice.method == Method::BeamTreeSampling)
+            o.setup.beamOccluders = detail::beamOccluders(frame.occluders);
         return o;
     }
     struct SeveralLights {

@@ -90,4 +90,58 @@ std::vector<BoundingBoxes> boundingBoxes(const MeshData& mesh, float minHalfExte
     return out;
 }
 
+std::vector<BoundingBoxes> gridBoxes(const MeshData& mesh, size_t maxBoxes, float minHalfExtent) {
+    Bounds all;
+    for (const Vertex& v : mesh.vertices) all.add(v.position);
+    if (all.empty() || maxBoxes == 0) return {};
+    const glm::vec3 extent = glm::max(all.max - all.min, glm::vec3(minHalfExtent));
+    // Doubling the axis whose cells are longest keeps the cells near cubic, within the count.
+    glm::ivec3 dims(1);
+    while (true) {
+        const glm::vec3 cell = extent / glm::vec3(dims);
+        const int axis = cell.x >= cell.y && cell.x >= cell.z ? 0 : cell.y >= cell.z ? 1 : 2;
+        if (size_t(dims.x) * size_t(dims.y) * size_t(dims.z) * 2 > maxBoxes) break;
+        dims[axis] *= 2;
+    }
+    const glm::vec3 cellSize = extent / glm::vec3(dims);
+    std::vector<Bounds> cells(size_t(dims.x) * size_t(dims.y) * size_t(dims.z));
+    auto cellOf = [&](const glm::vec3& p) {
+        return glm::clamp(glm::ivec3(glm::floor((p - all.min) / cellSize)), glm::ivec3(0),
+                          dims - 1);
+    };
+    auto addBox = [&](const glm::vec3& lo, const glm::vec3& hi) {
+        const glm::ivec3 a = cellOf(lo), b = cellOf(hi);
+        for (int z = a.z; z <= b.z; ++z)
+            for (int y = a.y; y <= b.y; ++y)
+                for (int x = a.x; x <= b.x; ++x) {
+                    const glm::vec3 cellLo = all.min + glm::vec3(x, y, z) * cellSize;
+                    Bounds& c = cells[(size_t(z) * size_t(dims.y) + size_t(y)) * size_t(dims.x) +
+                                      size_t(x)];
+                    c.add(glm::max(lo, cellLo));
+                    c.add(glm::min(hi, cellLo + cellSize));
+                }
+    };
+    for (const Primitive& p : mesh.primitives) {
+        if (p.indexCount < 3) {
+            for (uint32_t v = p.firstVertex; v < p.firstVertex + p.vertexCount; ++v)
+                addBox(mesh.vertices[v].position, mesh.vertices[v].position);
+            continue;
+        }
+        for (uint32_t t = p.firstIndex; t + 2 < p.firstIndex + p.indexCount; t += 3) {
+            Bounds tri;
+            for (uint32_t k = 0; k < 3; ++k) tri.add(mesh.vertices[mesh.indices[t + k]].position);
+            addBox(tri.min, tri.max);
+        }
+    }
+    std::vector<BoundingBoxes> out;
+    for (const Bounds& c : cells) {
+        if (c.empty()) continue;
+        BoundingBoxes b;
+        b.outer.center = 0.5f * (c.min + c.max);
+        b.outer.halfExtents = glm::max(0.5f * (c.max - c.min), glm::vec3(minHalfExtent));
+        out.push_back(b);
+    }
+    return out;
+}
+
 }  // namespace host

@@ -26,4 +26,12 @@ struct BoundingBoxes {
 // every box has a volume.
 std::vector<BoundingBoxes> boundingBoxes(const MeshData& mesh, float minHalfExtent = 1e-3f);
 
+// At most `maxBoxes` axis-aligned boxes enclosing every triangle, for a scene of more parts than
+// the beam tree takes (100,000 separate triangles): the scene's bounds cut into a grid of about
+// cubic cells, one box per cell that holds geometry, around what of each triangle's bounds lies in
+// the cell. The boxes stay inside their cells, so no two overlap (seed 004's rule), and none is
+// an inner box.
+std::vector<BoundingBoxes> gridBoxes(const MeshData& mesh, size_t maxBoxes,
+                                     float minHalfExtent = 1e-3f);
+
 }  // namespace host

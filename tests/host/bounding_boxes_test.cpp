@@ -127,3 +127,53 @@ TEST(BoundingBoxes, ACubeIsASolidBoxAndATriangleIsNot) {
     EXPECT_FALSE(boxes[1].inner.has_value());  // flat
     EXPECT_FALSE(boxes[2].inner.has_value());
 }
+
+// More separate parts than the beam tree takes (issue #22: 100,000 disjoint triangles could not be
+// rendered by any method): the grid's boxes are at most the limit, enclose every triangle and do
+// not overlap one another.
+TEST(BoundingBoxes, AGridOfBoxesHoldsManyPartsWithinTheLimit) {
+    host::MeshData mesh;
+    host::Primitive p;
+    uint32_t seed = 12345;
+    auto next = [&] {
+        seed = seed * 1664525u + 1013904223u;
+        return static_cast<float>(seed >> 8) / 16777216.0f;
+    };
+    for (int t = 0; t < 20000; ++t) {
+        const glm::vec3 at(next() * 40.0f - 20.0f, next() * 6.0f, next() * 40.0f - 20.0f);
+        for (int k = 0; k < 3; ++k) {
+            host::Vertex v;
+            v.position = at + 0.05f * glm::vec3(next(), next(), next());
+            mesh.indices.push_back(static_cast<uint32_t>(mesh.vertices.size()));
+            mesh.vertices.push_back(v);
+        }
+    }
+    p.vertexCount = static_cast<uint32_t>(mesh.vertices.size());
+    p.indexCount = static_cast<uint32_t>(mesh.indices.size());
+    mesh.primitives.push_back(p);
+    ASSERT_EQ(host::boundingBoxes(mesh).size(), 20000u);
+    const auto boxes = host::gridBoxes(mesh, 4096);
+    ASSERT_GT(boxes.size(), 100u);
+    ASSERT_LE(boxes.size(), 4096u);
+    auto lo = [](const host::BoundingBoxes& b) { return b.outer.center - b.outer.halfExtents; };
+    auto hi = [](const host::BoundingBoxes& b) { return b.outer.center + b.outer.halfExtents; };
+    for (const auto& b : boxes) {
+        EXPECT_FALSE(b.inner.has_value());
+        EXPECT_EQ(b.outer.axes, glm::mat3(1.0f));
+    }
+    for (const host::Vertex& v : mesh.vertices) {
+        bool inside = false;
+        for (size_t i = 0; i < boxes.size() && !inside; ++i)
+            inside = glm::all(glm::greaterThanEqual(v.position, lo(boxes[i]) - 1e-4f)) &&
+                     glm::all(glm::lessThanEqual(v.position, hi(boxes[i]) + 1e-4f));
+        ASSERT_TRUE(inside) << v.position.x << " " << v.position.y << " " << v.position.z;
+    }
+    // Overlaps only where a box was given its minimum thickness (a millimetre).
+    for (size_t i = 0; i < boxes.size(); ++i)
+        for (size_t j = i + 1; j < boxes.size(); ++j) {
+            const glm::vec3 overlap =
+                glm::min(hi(boxes[i]), hi(boxes[j])) - glm::max(lo(boxes[i]), lo(boxes[j]));
+            ASSERT_FALSE(glm::all(glm::greaterThan(overlap, glm::vec3(2e-3f))))
+                << i << " and " << j;
+        }
+}

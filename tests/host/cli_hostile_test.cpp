@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -57,6 +58,47 @@ std::string expanded(std::string text) {
     }
     return text;
 }
+
+// A glTF of `n` separate small triangles on a 5 m square (each its own part for the beam tree),
+// its buffer inline as a data URI.
+std::string separateTriangles(int n) {
+    std::string bytes;
+    auto put = [&](float f) { bytes.append(reinterpret_cast<const char*>(&f), 4); };
+    const int side = static_cast<int>(std::ceil(std::sqrt(n)));
+    for (int i = 0; i < n; ++i) {
+        const float x = -2.5f + 5.0f * static_cast<float>(i % side) / static_cast<float>(side);
+        const float z = -2.5f + 5.0f * static_cast<float>(i / side) / static_cast<float>(side);
+        for (const auto& [dx, dz] : {std::pair{0.0f, 0.0f}, {0.01f, 0.0f}, {0.0f, 0.01f}}) {
+            put(x + dx);
+            put(1.0f);
+            put(z + dz);
+        }
+    }
+    static const char* kBase64 = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string b64;
+    for (size_t i = 0; i < bytes.size(); i += 3) {
+        const uint32_t v = uint32_t(uint8_t(bytes[i])) << 16 |
+                           uint32_t(i + 1 < bytes.size() ? uint8_t(bytes[i + 1]) : 0) << 8 |
+                           uint32_t(i + 2 < bytes.size() ? uint8_t(bytes[i + 2]) : 0);
+        b64 += kBase64[v >> 18 & 63];
+        b64 += kBase64[v >> 12 & 63];
+        b64 += i + 1 < bytes.size() ? kBase64[v >> 6 & 63] : '=';
+        b64 += i + 2 < bytes.size() ? kBase64[v & 63] : '=';
+    }
+    const std::string count = std::to_string(3 * n), length = std::to_string(bytes.size());
+    return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "count": )" +
+           count + R"(, "type": "VEC3", "min": [-2.5, 1, -2.5], "max": [2.51, 1, 2.51]}],
+      "bufferViews": [{"buffer": 0, "byteLength": )" +
+           length + R"(}], "buffers": [{"byteLength": )" + length +
+           R"(, "uri": "data:application/octet-stream;base64,)" + b64 + R"("}]})";
+}
+
+const char* kUnderASpot =
+    R"({"gltf": "many.gltf", "camera": {"position": [0, 3, 6], "target": [0, 1, 0]},
+    "light": {"type": "spot", "position": [0, 5, 0], "direction": [0, -1, 0], "halfAngleDegrees": 40,
+              "shadowMapSize": 256}, "medium": {"betaM": [0.05, 0.05, 0.05]}})";
 
 std::vector<Row> rows() {
     return {
@@ -125,6 +167,23 @@ std::vector<Row> rows() {
          "",
          true,
          {"results"}},
+
+        // 9: a scene of more parts than the beam tree takes renders with every method (occluders
+        // are checked by the methods that read them, and the host merges them into a grid).
+        {"ManyPartsRenderWithEpipolar",
+         {{"many.gltf", separateTriangles(5000)}, {"many.json", kUnderASpot}},
+         "render many.json --method epipolar --size 16x16",
+         0,
+         "many.png: 16x16, epipolar",
+         "",
+         false},
+        {"ManyPartsRenderWithTheBeamTree",
+         {{"many.gltf", separateTriangles(5000)}, {"many.json", kUnderASpot}},
+         "render many.json --method beam-tree-analytic --size 16x16",
+         0,
+         "many.png: 16x16, beam-tree-analytic",
+         "",
+         false},
 
         // 15: an option's value never starts with "--"; "--" ends the options.
         {"AnOptionTakesNoOptionAsItsValue",

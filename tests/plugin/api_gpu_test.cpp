@@ -83,6 +83,38 @@ class PluginApiGpu : public PluginGpuTest {
     }
 };
 
+// Occluders are checked only by the methods that read them (issue #22: a scene of more than
+// kMaxOccluders parts could not be rendered by any method).
+TEST_F(PluginApiGpu, OnlyTheBeamTreeMethodsCheckTheOccluders) {
+    TestFrame frame(dev(), spotFrame());
+    auto desc = frame.description(Method::Epipolar, lightscatter::Profile::Custom,
+                                  smallSettings(frame.spec().screen));
+    desc.occluders.resize(lightscatter::kMaxOccluders + 1);
+    desc.occluders[3].outer.halfExtents = {0.5f, -1.0f, 0.5f};
+    for (Method m : {Method::Epipolar, Method::BruteForce, Method::ConeMarch}) {
+        desc.method = m;
+        EXPECT_NO_THROW(plugin().render(desc)) << lightscatter::methodName(m);
+    }
+    for (Method m : {Method::BeamTreeAnalytic, Method::BeamTreeSampling}) {
+        desc.method = m;
+        try {
+            plugin().check(desc);
+            ADD_FAILURE() << lightscatter::methodName(m) << " took 4097 occluders";
+        } catch (const lightscatter::InvalidInput& e) {
+            EXPECT_NE(std::string(e.what()).find("occluders has 4097 entries: at most 4096"),
+                      std::string::npos)
+                << e.what();
+        }
+    }
+    desc.occluders.resize(8);
+    try {
+        plugin().check(desc);
+        ADD_FAILURE() << "a box with a negative extent was taken";
+    } catch (const lightscatter::InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("occluders[3]"), std::string::npos) << e.what();
+    }
+}
+
 // Plugin::check: what record() would refuse, found without recording or building anything; a
 // method that cannot take the frame's lights included (the benchmark checks every run with it).
 TEST_F(PluginApiGpu, CheckRefusesWhatRecordRefusesAndBuildsNothing) {
