@@ -150,6 +150,9 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
 Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint32_t shadowMapSize,
               const std::vector<LightType>& lights, const Settings* custom, Method method) {
     if (lights.empty()) throw InvalidInput("lightscatter: budget lights: the list is empty");
+    if (lights.size() > kMaxLights)
+        throw InvalidInput("lightscatter: budget lights: " + std::to_string(lights.size()) + " lights: at most " +
+                           std::to_string(kMaxLights) + " (kMaxLights, as FrameDescription::lights)");
     if (lights.size() == 1) return budget(profile, screenWidth, screenHeight, shadowMapSize, lights[0], custom, method);
     if (method != Method::Epipolar)
         throw InvalidInput(std::string("lightscatter: budget method ") + methodName(method) +

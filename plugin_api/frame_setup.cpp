@@ -794,6 +794,9 @@ std::vector<FrameSetup> setupLights(const FrameDescription& frame, bool withImag
         fail("lights holds " + std::to_string(frame.lights.size()) + " lights and " + both +
              " is given too: give the single light (light, shadowMap, lightColor) or the list (lights), "
              "never both");
+    if (frame.lights.size() > kMaxLights)
+        fail("lights holds " + std::to_string(frame.lights.size()) + " lights: at most " +
+             std::to_string(kMaxLights) + " (kMaxLights; each light is a chain of passes and a table of its own)");
     // The frame without its lights (an unshadowed default light, which breaks no rule): whatever
     // fails here is not about a light.
     FrameDescription bare = frame;

@@ -299,6 +299,11 @@ struct Occluder {
     std::optional<OccluderBox> inner;
 };
 inline constexpr size_t kMaxOccluders = 4096;
+// FrameDescription::lights holds at most this many. Every light is a chain of its own: its passes,
+// its shadow map's trees, and for a point or spot light its 512x256 RGBA32F table (2 MiB, kept
+// across frames), so the cost grows with each light; more are refused rather than exhausting the
+// device (issue #22: 10,000 lights took the machine's memory).
+inline constexpr size_t kMaxLights = 64;
 
 // Debugging aids, off by default and free when off.
 struct DebugOptions {
@@ -352,7 +357,7 @@ struct FrameDescription {
     // composited once: color = color * exp(-betaT S) + sum of Lin (inscatterOut receives the sum).
     // A light whose volume misses the view adds no node. Errors name lights[i].field. With two
     // lights or more only epipolar and brute-force (and auto, which picks one of them for the
-    // whole frame) build chains so far; the other methods refuse the frame.
+    // whole frame) build chains so far; the other methods refuse the frame. At most kMaxLights.
     std::vector<LightInput> lights;
     Medium medium;
     Method method = Method::Epipolar;

@@ -10,6 +10,7 @@
 #include <set>
 
 #include "activity.h"
+#include "lightscatter.h"
 #include "scene/input_file.h"
 #include "scene/scene.h"
 
@@ -315,6 +316,9 @@ class SceneReader {
     // "lights": an array of light objects, the first one the scene's `light`.
     void readLights(const json& v, SceneDesc& scene) const {
         if (!v.is_array() || v.empty()) fail("lights must be a non-empty array of light objects");
+        if (v.size() > lightscatter::kMaxLights)
+            fail("lights has " + std::to_string(v.size()) + " entries: at most " +
+                 std::to_string(lightscatter::kMaxLights) + " (the plugin's kMaxLights)");
         scene.lightList = true;
         for (size_t i = 0; i < v.size(); ++i) {
             const std::string name = "lights[" + std::to_string(i) + "]";

@@ -95,6 +95,21 @@ std::string separateTriangles(int n) {
            R"(, "uri": "data:application/octet-stream;base64,)" + b64 + R"("}]})";
 }
 
+std::string repeated(const std::string& word, int n) {
+    std::string out;
+    for (int i = 0; i < n; ++i) out += (i ? "," : "") + word;
+    return out;
+}
+
+std::string manyLights(int n) {
+    std::string lights;
+    for (int i = 0; i < n; ++i)
+        lights += std::string(i ? ", " : "") + R"({"type": "spot", "position": [)" +
+                  std::to_string(i % 8) +
+                  R"(, 4, 0], "direction": [0, -1, 0], "shadowMapSize": 0})";
+    return R"({"lights": [)" + lights + "]}";
+}
+
 const char* kUnderASpot =
     R"({"gltf": "many.gltf", "camera": {"position": [0, 3, 6], "target": [0, 1, 0]},
     "light": {"type": "spot", "position": [0, 5, 0], "direction": [0, -1, 0], "halfAngleDegrees": 40,
@@ -167,6 +182,18 @@ std::vector<Row> rows() {
          "",
          true,
          {"results"}},
+
+        // 7: the list of lights has a stated limit, in the scene, the budget and the plugin.
+        {"MoreLightsThanTheLimit",
+         {{"many_lights.json", manyLights(65)}},
+         "render many_lights.json --size 8x8",
+         1,
+         "many_lights.json: lights has 65 entries: at most 64 (the plugin's kMaxLights)"},
+        {"ABudgetOfMoreLightsThanTheLimit",
+         {},
+         "budget --lights " + repeated("spot", 65),
+         1,
+         "budget lights: 65 lights: at most 64"},
 
         // 9: a scene of more parts than the beam tree takes renders with every method (occluders
         // are checked by the methods that read them, and the host merges them into a grid).

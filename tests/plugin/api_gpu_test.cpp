@@ -115,6 +115,30 @@ TEST_F(PluginApiGpu, OnlyTheBeamTreeMethodsCheckTheOccluders) {
     }
 }
 
+// The list of lights has a stated limit (issue #22: 10,000 unshadowed spots exhausted the
+// machine, 2 MiB of table and 15 ms of setup each).
+TEST_F(PluginApiGpu, MoreLightsThanTheLimitAreRefused) {
+    TestFrame frame(dev(), spotFrame());
+    auto desc = frame.description(Method::Epipolar, lightscatter::Profile::Custom,
+                                  smallSettings(frame.spec().screen));
+    lightscatter::Light spot = desc.light;
+    spot.shadowMapSize = 0;
+    spot.shadowViewProjection = {};
+    desc.light = {};
+    desc.shadowMap.reset();
+    desc.lights.assign(lightscatter::kMaxLights, {spot, std::nullopt, std::nullopt});
+    EXPECT_NO_THROW(plugin().check(desc));
+    desc.lights.push_back({spot, std::nullopt, std::nullopt});
+    try {
+        plugin().check(desc);
+        ADD_FAILURE() << "65 lights taken";
+    } catch (const lightscatter::InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("lights holds 65 lights: at most 64"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
 // Plugin::check: what record() would refuse, found without recording or building anything; a
 // method that cannot take the frame's lights included (the benchmark checks every run with it).
 TEST_F(PluginApiGpu, CheckRefusesWhatRecordRefusesAndBuildsNothing) {
