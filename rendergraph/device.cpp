@@ -298,9 +298,12 @@ void Device::loadProperties() {
     vkGetPhysicalDeviceProperties(physical_, &properties_);
     vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
     VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+    VkPhysicalDeviceMaintenance3Properties maintenance3{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
+    driver.pNext = &maintenance3;
     VkPhysicalDeviceProperties2 p2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
     p2.pNext = &driver;
     vkGetPhysicalDeviceProperties2(physical_, &p2);
+    maxAllocation_ = maintenance3.maxMemoryAllocationSize;
     driverName_ = std::string(driver.driverName) + " " + driver.driverInfo;
     VkPhysicalDeviceFeatures supported;
     vkGetPhysicalDeviceFeatures(physical_, &supported);

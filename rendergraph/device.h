@@ -62,6 +62,8 @@ public:
     uint32_t timestampValidBits() const { return timestampBits_; }
 
     uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags props) const;
+    const VkPhysicalDeviceMemoryProperties& memoryProperties() const { return memory_; }
+    VkDeviceSize maxAllocationSize() const { return maxAllocation_; }  // Vulkan 1.1's limit; 0 unknown
 
     // The feature chain the device was created with (core -> 1.1 -> 1.2 -> 1.3); all off for an
     // external device, whose features only its creator knows.
@@ -111,6 +113,7 @@ private:
     uint32_t timestampBits_ = 0;
     VkPhysicalDeviceProperties properties_{};
     VkPhysicalDeviceMemoryProperties memory_{};
+    VkDeviceSize maxAllocation_ = 0;
     struct EnabledFeatures {
         VkPhysicalDeviceFeatures2 core{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
         VkPhysicalDeviceVulkan11Features v11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES};

@@ -4,6 +4,7 @@
 #include <bit>
 
 #include "compile.h"
+#include "device_memory.h"
 #include "format_info.h"
 #include "memory_counter.h"
 #include "fault_injection.h"
@@ -130,21 +131,11 @@ void GraphExecutor::destroy() {
 }
 
 void GraphExecutor::createMemory() {
-    const VkDevice dev = device_.device();
     for (uint32_t b = 0; b < compiled_.blocks.size(); ++b) {
-        VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-        info.allocationSize = std::max<VkDeviceSize>(compiled_.blocks[b].size, 1);
-        info.memoryTypeIndex = compiled_.blocks[b].memoryType;
-        VkDeviceMemory mem;
-        try {
-            RG_VK_CREATE(vkAllocateMemory(dev, &info, nullptr, &mem));
-        } catch (const VulkanError& e) {
-            throw VulkanError("render graph transient memory block " + std::to_string(b) + " (" +
-                              std::to_string(info.allocationSize) + " bytes): " + e.what());
-        }
-        blocks_.push_back(mem);
-        detail::countDeviceMemory(info.allocationSize);
-        device_.setName(mem, VK_OBJECT_TYPE_DEVICE_MEMORY,
+        const VkDeviceSize bytes = std::max<VkDeviceSize>(compiled_.blocks[b].size, 1);
+        blocks_.push_back(allocateDeviceMemory(device_, bytes, compiled_.blocks[b].memoryType, blockContents(b)));
+        detail::countDeviceMemory(bytes);
+        device_.setName(blocks_.back(), VK_OBJECT_TYPE_DEVICE_MEMORY,
                         "render graph transient block " + std::to_string(b));
     }
     for (uint32_t id = 0; id < graph_.resources().size(); ++id) {
@@ -157,10 +148,35 @@ void GraphExecutor::createMemory() {
         if (!plan.used) continue;
         try {
             createResource(id);
+        } catch (const OutOfDeviceMemory&) {
+            throw;  // names the resource already
         } catch (const VulkanError& e) {
             throw VulkanError("render graph resource '" + r.name + "': " + e.what());
         }
     }
+}
+
+// A transient block as a message names it: its size comes with the message, the largest
+// resources in it say what made it that large.
+std::string GraphExecutor::blockContents(uint32_t block) const {
+    std::vector<uint32_t> ids;
+    for (uint32_t id = 0; id < graph_.resources().size(); ++id)
+        if (!graph_.resource(id).imported && compiled_.resources[id].used && compiled_.resources[id].block == block)
+            ids.push_back(id);
+    std::sort(ids.begin(), ids.end(), [&](uint32_t a, uint32_t b) {
+        return compiled_.resources[a].memory.size > compiled_.resources[b].memory.size;
+    });
+    std::string largest;
+    for (size_t i = 0; i < ids.size() && i < 3; ++i) {
+        const ResourceDecl& r = graph_.resource(ids[i]);
+        const ResourcePlan& p = compiled_.resources[ids[i]];
+        largest += std::string(i ? ", " : "") + "'" + r.name + "' " +
+                   (r.buffer ? "buffer" : std::to_string(p.extent.width) + "x" + std::to_string(p.extent.height) +
+                                              " " + formatName(r.image.format)) +
+                   " " + bytesText(p.memory.size);
+    }
+    return "the render graph's transient memory block " + std::to_string(block) + " (" + std::to_string(ids.size()) +
+           " resources; the largest " + largest + ")";
 }
 
 void GraphExecutor::createResource(uint32_t id) {
@@ -178,6 +194,8 @@ void GraphExecutor::createResource(uint32_t id) {
         vkGetBufferMemoryRequirements(dev, buffers_[id], &req);
     } else {
         const VkImageCreateInfo info = transientImageInfo(r, plan);
+        checkImageLimits(device_, {info.extent.width, info.extent.height}, info.arrayLayers,
+                         "render graph resource '" + r.name + "'");
         RG_VK_CREATE(vkCreateImage(dev, &info, nullptr, &images_[id].image));
         device_.setName(images_[id].image, VK_OBJECT_TYPE_IMAGE, r.name);
         vkGetImageMemoryRequirements(dev, images_[id].image, &req);
@@ -187,10 +205,13 @@ void GraphExecutor::createResource(uint32_t id) {
     if (req.size > plan.memory.size || plan.offset % req.alignment != 0 ||
         !(req.memoryTypeBits & (1u << plan.memoryType)))
         throw VulkanError("the driver's memory requirements differ from the compiled plan");
+    const std::string what = "render graph resource '" + r.name + "' in " + blockContents(plan.block);
     if (r.buffer) {
-        RG_VK(vkBindBufferMemory(dev, buffers_[id], blocks_[plan.block], plan.offset));
+        checkBind(device_, vkBindBufferMemory(dev, buffers_[id], blocks_[plan.block], plan.offset),
+                  "vkBindBufferMemory", compiled_.blocks[plan.block].size, plan.memoryType, what);
     } else {
-        RG_VK(vkBindImageMemory(dev, images_[id].image, blocks_[plan.block], plan.offset));
+        checkBind(device_, vkBindImageMemory(dev, images_[id].image, blocks_[plan.block], plan.offset),
+                  "vkBindImageMemory", compiled_.blocks[plan.block].size, plan.memoryType, what);
         // An image only copied to and from has no view (Vulkan forbids one).
         if (plan.imageUsage & kViewUsages) images_[id] = makeViews(id, images_[id].image);
     }

@@ -81,6 +81,7 @@ private:
     void destroy();
     void createMemory();
     void createResource(uint32_t resource);
+    std::string blockContents(uint32_t block) const;
     ImageObjects makeViews(uint32_t resource, VkImage image);
     void refreshImports();
     void recordBarriers(VkCommandBuffer cmd, const std::vector<BarrierPlan>& barriers);

@@ -1,5 +1,6 @@
 #include "host_buffer.h"
 
+#include "device_memory.h"
 #include "fault_injection.h"
 #include "memory_counter.h"
 #include "vk_error.h"
@@ -17,16 +18,16 @@ HostBuffer::HostBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFla
     device.setName(buffer_, VK_OBJECT_TYPE_BUFFER, name);
     VkMemoryRequirements req;
     vkGetBufferMemoryRequirements(device_, buffer_, &req);
-    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    alloc.allocationSize = req.size;
+    const std::string what = "host-visible buffer '" + name + "'";
     try {
-        alloc.memoryTypeIndex = device.findMemoryType(
+        const uint32_t type = device.findMemoryType(
             req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-        RG_VK_CREATE(vkAllocateMemory(device_, &alloc, nullptr, &memory_));
-        memoryBytes_ = alloc.allocationSize;
+        memory_ = allocateDeviceMemory(device, req.size, type, what);
+        memoryBytes_ = req.size;
         detail::countDeviceMemory(memoryBytes_);
         device.setName(memory_, VK_OBJECT_TYPE_DEVICE_MEMORY, name + " memory");
-        RG_VK(vkBindBufferMemory(device_, buffer_, memory_, 0));
+        checkBind(device, vkBindBufferMemory(device_, buffer_, memory_, 0), "vkBindBufferMemory", req.size, type,
+                  what);
         RG_VK(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
     } catch (...) {
         detail::uncountDeviceMemory(memoryBytes_);

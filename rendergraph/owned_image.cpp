@@ -1,6 +1,8 @@
 #include "owned_image.h"
 
+#include "device_memory.h"
 #include "fault_injection.h"
+#include "format_info.h"
 #include "memory_counter.h"
 #include "vk_error.h"
 
@@ -20,19 +22,22 @@ OwnedImage::OwnedImage(const rg::Device& device, VkFormat format, VkExtent2D ext
     info.samples = VK_SAMPLE_COUNT_1_BIT;
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = usage;
+    const std::string what = "image '" + name + "' (" + std::to_string(extent.width) + "x" +
+                             std::to_string(extent.height) + " " + formatName(format) +
+                             (layers > 1 ? ", " + std::to_string(layers) + " layers" : "") + ")";
+    checkImageLimits(device, extent, layers, "image '" + name + "'");
     RG_VK_CREATE(vkCreateImage(device.device(), &info, nullptr, &image_));
     device.setName(image_, VK_OBJECT_TYPE_IMAGE, name);
     VkMemoryRequirements req;
     vkGetImageMemoryRequirements(device.device(), image_, &req);
-    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    alloc.allocationSize = req.size;
     try {
-        alloc.memoryTypeIndex = device.findMemoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-        RG_VK_CREATE(vkAllocateMemory(device.device(), &alloc, nullptr, &memory_));
-        memoryBytes_ = alloc.allocationSize;
+        const uint32_t type = device.findMemoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+        memory_ = allocateDeviceMemory(device, req.size, type, what);
+        memoryBytes_ = req.size;
         detail::countDeviceMemory(memoryBytes_);
         device.setName(memory_, VK_OBJECT_TYPE_DEVICE_MEMORY, name + " memory");
-        RG_VK(vkBindImageMemory(device.device(), image_, memory_, 0));
+        checkBind(device, vkBindImageMemory(device.device(), image_, memory_, 0), "vkBindImageMemory", req.size,
+                  type, what);
     } catch (...) {
         detail::uncountDeviceMemory(memoryBytes_);
         if (memory_) vkFreeMemory(device.device(), memory_, nullptr);

@@ -11,6 +11,13 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// Out of device memory, said in the terms of what needed it (device_memory.h): which object, how
+// many bytes, what the device has.
+class OutOfDeviceMemory : public VulkanError {
+public:
+    using VulkanError::VulkanError;
+};
+
 const char* resultName(VkResult result);
 
 // Throws VulkanError naming the call that failed and its result code.

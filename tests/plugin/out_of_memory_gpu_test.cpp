@@ -69,6 +69,7 @@ TEST_F(OutOfMemoryGpu, EveryFaultPointOfAFirstFrameFailsCleanlyAndTheNextFrameWo
     VkCommandBuffer cmd;
     RG_VK(vkAllocateCommandBuffers(dev().device(), &alloc, &cmd));
 
+    int allocations = 0;
     for (uint64_t n = 1; n <= points; ++n) {
         lightscatter::Plugin plugin(contextOf(dev()));
         // Odd points through record() on an engine's command buffer, even ones through render().
@@ -98,6 +99,13 @@ TEST_F(OutOfMemoryGpu, EveryFaultPointOfAFirstFrameFailsCleanlyAndTheNextFrameWo
         rg::failNthVulkanCreation(0);
         ASSERT_FALSE(error.empty()) << "fault point " << n << " of " << points << " did not fail the frame";
         EXPECT_NE(error.find("VK_ERROR_OUT_OF_DEVICE_MEMORY"), std::string::npos) << error;
+        // A failed allocation says what needed the memory, how much, and what the device has.
+        if (error.find("vkAllocateMemory") != std::string::npos) {
+            ++allocations;
+            EXPECT_EQ(error.rfind("lightscatter: out of device memory: ", 0), 0u) << error;
+            EXPECT_NE(error.find(" needs "), std::string::npos) << error;
+            EXPECT_NE(error.find("; the device has "), std::string::npos) << error;
+        }
         EXPECT_EQ(error.find('\n'), std::string::npos) << error;
         EXPECT_EQ(error.rfind("lightscatter: ", 0), 0u) << error;
 
@@ -106,6 +114,7 @@ TEST_F(OutOfMemoryGpu, EveryFaultPointOfAFirstFrameFailsCleanlyAndTheNextFrameWo
         EXPECT_EQ(frame.inscatter(), expected) << "the frame after fault point " << n << " (" << error << ")";
         RG_VK(vkResetCommandBuffer(cmd, 0));
     }
+    EXPECT_GT(allocations, 0) << "no fault point was a memory allocation";
 }
 
 TEST_F(OutOfMemoryGpu, AFailedConstructionLeavesNothingBehind) {

@@ -1,0 +1,92 @@
+#include "device_memory.h"
+
+#include <cstdio>
+
+#include "fault_injection.h"
+#include "vk_error.h"
+
+namespace rg {
+namespace {
+
+std::string deviceHas(const Device& device, uint32_t memoryType) {
+    const VkPhysicalDeviceMemoryProperties& m = device.memoryProperties();
+    const uint32_t heap = memoryType < m.memoryTypeCount ? m.memoryTypes[memoryType].heapIndex : 0;
+    std::string s = "the device has " + bytesText(m.memoryHeaps[heap].size) + " in heap " +
+                    std::to_string(heap);
+    if (device.maxAllocationSize() > 0)
+        s += ", at most " + bytesText(device.maxAllocationSize()) + " per allocation";
+    return s;
+}
+
+[[noreturn]] void outOfMemory(const Device& device, VkDeviceSize bytes, uint32_t memoryType,
+                              const std::string& what, const std::string& why) {
+    throw OutOfDeviceMemory("out of device memory: " + what + " needs " + bytesText(bytes) + "; " +
+                            deviceHas(device, memoryType) + " (" + why + ")");
+}
+
+}  // namespace
+
+std::string bytesText(VkDeviceSize bytes) {
+    const char* units[] = {"bytes", "KiB", "MiB", "GiB", "TiB"};
+    double v = static_cast<double>(bytes);
+    int u = 0;
+    while (v >= 1024.0 && u < 4) {
+        v /= 1024.0;
+        ++u;
+    }
+    char buf[32];
+    if (u == 0)
+        std::snprintf(buf, sizeof buf, "%llu bytes", static_cast<unsigned long long>(bytes));
+    else
+        std::snprintf(buf, sizeof buf,
+                      v == static_cast<double>(static_cast<uint64_t>(v)) ? "%.0f %s" : "%.1f %s", v,
+                      units[u]);
+    return buf;
+}
+
+VkDeviceMemory allocateDeviceMemory(const Device& device, VkDeviceSize bytes, uint32_t memoryType,
+                                    const std::string& what) {
+    const VkPhysicalDeviceMemoryProperties& m = device.memoryProperties();
+    if (memoryType < m.memoryTypeCount) {
+        const VkDeviceSize heap = m.memoryHeaps[m.memoryTypes[memoryType].heapIndex].size;
+        if (bytes > heap) outOfMemory(device, bytes, memoryType, what, "more than the whole heap");
+    }
+    if (device.maxAllocationSize() > 0 && bytes > device.maxAllocationSize())
+        outOfMemory(device, bytes, memoryType, what, "more than maxMemoryAllocationSize");
+    VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    info.allocationSize = bytes;
+    info.memoryTypeIndex = memoryType;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    const VkResult r = detail::creationFails()
+                           ? VK_ERROR_OUT_OF_DEVICE_MEMORY
+                           : vkAllocateMemory(device.device(), &info, nullptr, &memory);
+    if (r == VK_ERROR_OUT_OF_DEVICE_MEMORY || r == VK_ERROR_OUT_OF_HOST_MEMORY)
+        outOfMemory(device, bytes, memoryType, what,
+                    std::string(resultName(r)) + " from vkAllocateMemory");
+    check(r, "vkAllocateMemory");
+    return memory;
+}
+
+void checkBind(const Device& device, VkResult result, const char* call, VkDeviceSize bytes,
+               uint32_t memoryType, const std::string& what) {
+    if (result == VK_ERROR_OUT_OF_DEVICE_MEMORY || result == VK_ERROR_OUT_OF_HOST_MEMORY)
+        outOfMemory(device, bytes, memoryType, what,
+                    std::string(resultName(result)) + " from " + call);
+    check(result, call);
+}
+
+void checkImageLimits(const Device& device, VkExtent2D extent, uint32_t layers,
+                      const std::string& what) {
+    const VkPhysicalDeviceLimits& l = device.properties().limits;
+    if (extent.width > l.maxImageDimension2D || extent.height > l.maxImageDimension2D)
+        throw VulkanError(what + " is " + std::to_string(extent.width) + "x" +
+                          std::to_string(extent.height) + ": the device takes at most " +
+                          std::to_string(l.maxImageDimension2D) +
+                          " per side (maxImageDimension2D)");
+    if (layers > l.maxImageArrayLayers)
+        throw VulkanError(what + " has " + std::to_string(layers) +
+                          " layers: the device takes at most " +
+                          std::to_string(l.maxImageArrayLayers) + " (maxImageArrayLayers)");
+}
+
+}  // namespace rg
