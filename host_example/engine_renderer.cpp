@@ -77,6 +77,23 @@ struct EngineRenderer::Pipelines {
     glm::mat4 viewProj{1.0f};
 };
 
+namespace {
+
+// Runs `make`; a device that could not give what it asked for is reported with `cause`, the
+// option or scene field behind it, in front.
+template <class F>
+auto because(const std::string& cause, F&& make) -> decltype(make()) {
+    try {
+        return make();
+    } catch (const rg::OutOfDeviceMemory& e) {
+        throw rg::OutOfDeviceMemory(cause + ": " + e.what());
+    } catch (const rg::VulkanError& e) {
+        throw rg::VulkanError(cause + ": " + e.what());
+    }
+}
+
+}  // namespace
+
 EngineRenderer::EngineRenderer(const rg::Device& device, SceneDesc scene, const MeshData& mesh,
                                VkExtent2D size)
     : device_(device), scene_(std::move(scene)), bounds_(mesh.bounds), size_(size) {
@@ -105,7 +122,7 @@ EngineRenderer::EngineRenderer(const rg::Device& device, SceneDesc scene, const 
         if (b.inner) o.inner = toPlugin(*b.inner);
         occluders_.push_back(o);
     }
-    mesh_ = std::make_unique<GpuMesh>(device, mesh);
+    mesh_ = because(scene_.path + ": the scene's models", [&] { return std::make_unique<GpuMesh>(device, mesh); });
     plugin_ = std::make_unique<lightscatter::Plugin>(lightscatter::VulkanContext{
         device.instance(), device.physical(), device.device(), device.queue(), device.queueFamily(),
         &device.enabledFeatures()});
@@ -120,8 +137,15 @@ EngineRenderer::EngineRenderer(const rg::Device& device, SceneDesc scene, const 
     device.setName(cmd_, VK_OBJECT_TYPE_COMMAND_BUFFER, "host frame");
     VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     RG_VK(vkCreateFence(device.device(), &fence, nullptr, &fence_));
-    createTargets();
-    buildGraph();
+    try {
+        createTargets();
+        buildGraph();
+    } catch (...) {
+        // No destructor runs for a constructor that throws: what it made so far goes here.
+        vkDestroyFence(device.device(), fence_, nullptr);
+        vkDestroyCommandPool(device.device(), pool_, nullptr);
+        throw;
+    }
 }
 
 EngineRenderer::~EngineRenderer() {
@@ -135,6 +159,33 @@ EngineRenderer::~EngineRenderer() {
 }
 
 void EngineRenderer::createTargets() {
+    // What the device cannot give is said in the terms of the option or field that asked for it.
+    const std::string screen = "--size " + std::to_string(size_.width) + "x" + std::to_string(size_.height);
+    because(screen, [&] { createScreenTargets(); });
+    lights_.clear();
+    lights_.resize(scene_.lightCount());
+    for (size_t i = 0; i < lights_.size(); ++i) {
+        const LightDesc& l = scene_.lightAt(i);
+        const uint32_t sm = l.shadowMapSize;
+        if (sm == 0) continue;
+        const std::string which = i == 0 ? "" : " (light " + std::to_string(i) + ")";
+        const std::string field = scene_.path + ": " +
+                                  (scene_.lightList ? "lights[" + std::to_string(i) + "]" : std::string("light")) +
+                                  ".shadowMapSize " + std::to_string(sm);
+        because(field, [&] {
+            if (l.type == LightKind::Point)
+                lights_[i].cubeShadow = std::make_unique<CubeShadowMap>(device_, sm, "host cube shadow map" + which);
+            else
+                lights_[i].shadowMap = std::make_unique<GpuImage>(
+                    device_, VK_FORMAT_D32_SFLOAT, VkExtent2D{sm, sm},
+                    VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                    "host shadow map" + which);
+        });
+    }
+    layOutTargets();
+}
+
+void EngineRenderer::createScreenTargets() {
     depth_ = std::make_unique<GpuImage>(
         device_, VK_FORMAT_D32_SFLOAT, size_,
         VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, "host depth");
@@ -151,22 +202,9 @@ void EngineRenderer::createTargets() {
         device_, pixels * 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT, "color readback");
     linReadback_ = std::make_unique<rg::HostBuffer>(
         device_, pixels * 16, VK_BUFFER_USAGE_TRANSFER_DST_BIT, "in-scattering readback");
-    lights_.clear();
-    lights_.resize(scene_.lightCount());
-    for (size_t i = 0; i < lights_.size(); ++i) {
-        const LightDesc& l = scene_.lightAt(i);
-        const uint32_t sm = l.shadowMapSize;
-        if (sm == 0) continue;
-        const std::string which = i == 0 ? "" : " (light " + std::to_string(i) + ")";
-        if (l.type == LightKind::Point)
-            lights_[i].cubeShadow =
-                std::make_unique<CubeShadowMap>(device_, sm, "host cube shadow map" + which);
-        else
-            lights_[i].shadowMap = std::make_unique<GpuImage>(
-                device_, VK_FORMAT_D32_SFLOAT, VkExtent2D{sm, sm},
-                VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                "host shadow map" + which);
-    }
+}
+
+void EngineRenderer::layOutTargets() {
     // The Lin output stays in GENERAL from frame to frame, as the plugin expects it.
     device_.submitAndWait([&](VkCommandBuffer cmd) {
         VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
@@ -444,6 +482,13 @@ void EngineRenderer::record(VkCommandBuffer cmd, const RenderOptions& options,
     } catch (const lightscatter::InvalidInput& e) {
         // The frame is the scene's: say what is wrong in SCENE.json's terms, not the API's.
         throw SceneError(pluginRefusalInSceneTerms(e.what(), scene_.path));
+    } catch (const lightscatter::DeviceError& e) {
+        // The plugin's memory grows with the screen and the profile's slices and samples.
+        std::string why = e.what();
+        if (why.rfind("lightscatter: ", 0) == 0) why.erase(0, 14);
+        throw std::runtime_error("the plugin's frame at --size " + std::to_string(size_.width) + "x" +
+                                 std::to_string(size_.height) + " with --profile " +
+                                 lightscatter::profileName(options.profile) + ": " + why);
     }
 }
 

@@ -72,6 +72,8 @@ private:
         std::unique_ptr<CubeShadowMap> cubeShadow;
     };
     void createTargets();
+    void createScreenTargets();  // depth, color, Lin and their readbacks, at size_
+    void layOutTargets();        // the first layouts of the targets just made
     void buildGraph();
     void recordCubeShadows(VkCommandBuffer cmd);
     // Light i as the plugin takes it: the light with its shadow map's matrices, and the map.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "rendergraph/device_memory.h"
 #include "rendergraph/host_buffer.h"
 #include "rendergraph/vk_error.h"
 
@@ -18,15 +19,32 @@ VkBuffer GpuMesh::makeBuffer(VkDeviceSize size, VkBufferUsageFlags usage, const 
     device_.setName(buffer, VK_OBJECT_TYPE_BUFFER, name);
     VkMemoryRequirements req;
     vkGetBufferMemoryRequirements(device_.device(), buffer, &req);
-    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    alloc.allocationSize = req.size;
-    alloc.memoryTypeIndex = device_.findMemoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    RG_VK(vkAllocateMemory(device_.device(), &alloc, nullptr, &memory));
-    RG_VK(vkBindBufferMemory(device_.device(), buffer, memory, 0));
+    try {
+        const uint32_t type = device_.findMemoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+        const std::string what = "buffer '" + name + "'";
+        memory = rg::allocateDeviceMemory(device_, req.size, type, what);
+        rg::checkBind(device_, vkBindBufferMemory(device_.device(), buffer, memory, 0), "vkBindBufferMemory",
+                      req.size, type, what);
+    } catch (...) {
+        vkDestroyBuffer(device_.device(), buffer, nullptr);
+        throw;
+    }
     return buffer;
 }
 
 GpuMesh::GpuMesh(const rg::Device& device, const MeshData& mesh) : device_(device) {
+    // Every texture against the device's limits before anything is allocated.
+    for (const Texture& t : mesh.textures) rg::checkImageLimits(device, {t.width, t.height}, 1, "texture '" + t.name + "'");
+    try {
+        upload(mesh);
+    } catch (...) {
+        release();  // a constructor that throws runs no destructor
+        throw;
+    }
+}
+
+void GpuMesh::upload(const MeshData& mesh) {
+    const rg::Device& device = device_;
     const VkDeviceSize vBytes = mesh.vertices.size() * sizeof(Vertex);
     const VkDeviceSize iBytes = mesh.indices.size() * sizeof(uint32_t);
     vertexBuffer_ = makeBuffer(vBytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "scene vertices", vertexMemory_);
@@ -128,13 +146,19 @@ GpuMesh::GpuMesh(const rg::Device& device, const MeshData& mesh) : device_(devic
     }
 }
 
-GpuMesh::~GpuMesh() {
+GpuMesh::~GpuMesh() { release(); }
+
+void GpuMesh::release() {
     const VkDevice dev = device_.device();
     for (VkImageView v : views_) vkDestroyImageView(dev, v, nullptr);
+    views_.clear();
+    textures_.clear();
     vkDestroyBuffer(dev, vertexBuffer_, nullptr);
     vkDestroyBuffer(dev, indexBuffer_, nullptr);
     vkFreeMemory(dev, vertexMemory_, nullptr);
     vkFreeMemory(dev, indexMemory_, nullptr);
+    vertexBuffer_ = indexBuffer_ = VK_NULL_HANDLE;
+    vertexMemory_ = indexMemory_ = VK_NULL_HANDLE;
 }
 
 }  // namespace host

@@ -27,6 +27,8 @@ public:
     VkBuffer indices() const { return indexBuffer_; }
 
 private:
+    void upload(const MeshData& mesh);
+    void release();  // destroys what was made, for the destructor and a failed constructor
     VkBuffer makeBuffer(VkDeviceSize size, VkBufferUsageFlags usage, const std::string& name,
                         VkDeviceMemory& memory);
     const rg::Device& device_;

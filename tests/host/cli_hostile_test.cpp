@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include <stb/stb_image_write.h>
 #include "cli_runner.h"
 
 namespace {
@@ -93,6 +94,33 @@ std::string separateTriangles(int n) {
       "bufferViews": [{"buffer": 0, "byteLength": )" +
            length + R"(}], "buffers": [{"byteLength": )" + length +
            R"(, "uri": "data:application/octet-stream;base64,)" + b64 + R"("}]})";
+}
+
+std::string readAll(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// A PNG of `width` x `height` grey pixels, as bytes.
+std::string png(int width, int height) {
+    std::string out;
+    const std::vector<unsigned char> pixels(size_t(width) * size_t(height) * 4, 128);
+    stbi_write_png_to_func(
+        [](void* context, void* data, int size) {
+            static_cast<std::string*>(context)->append(static_cast<char*>(data), size_t(size));
+        },
+        &out, width, height, 4, pixels.data(), width * 4);
+    return out;
+}
+
+// The atrium with its floor's texture replaced by `image`.
+std::vector<std::pair<std::string, std::string>> atriumWithFloor(const std::string& image) {
+    std::string gltf = readAll(fs::path(kSrc) / "scenes/atrium.gltf");
+    gltf.replace(gltf.find("atrium_floor.png"), 16, "floor.png");
+    return {{"atrium.json", "@copy:scenes/atrium.json"},
+            {"atrium.gltf", gltf},
+            {"atrium.bin", "@copy:scenes/atrium.bin"},
+            {"floor.png", image}};
 }
 
 std::string repeated(const std::string& word, int n) {
@@ -195,6 +223,35 @@ std::vector<Row> rows() {
          1,
          "budget lights: 65 lights: at most 64"},
 
+        // 8: what the device cannot hold is refused naming the option or field, the size and what
+        // the device has, before Vulkan is asked for it (lavapipe's heap is 2 GiB).
+        {"AScreenLargerThanTheDeviceHolds",
+         {},
+         "render {scene:window_room} --size 16384x16384",
+         1,
+         "--size 16384x16384: out of device memory: image 'host in-scattering' (16384x16384 "
+         "R32G32B32A32_SFLOAT) needs 4 GiB; the device has 2 GiB in heap 0"},
+        {"AGraphLargerThanTheDeviceHolds",
+         {},
+         "graph {scene:window_room} --dot --size 16384x16384",
+         1,
+         "--size 16384x16384: out of device memory: image 'host in-scattering'"},
+        {"ACubeShadowMapLargerThanTheDeviceHolds",
+         {{"cube.json",
+           R"({"light": {"type": "point", "position": [0, 1, 0], "shadowMapSize": 16384}})"}},
+         "render cube.json --size 16x16",
+         1,
+         "cube.json: light.shadowMapSize 16384: out of device memory: image 'host cube shadow map' "
+         "(16384x16384 "
+         "D32_SFLOAT, 6 layers) needs 6 GiB; the device has 2 GiB"},
+        {"ATextureWiderThanTheDeviceTakes", atriumWithFloor(png(16385, 1)),
+         "render atrium.json --size 16x16 --out a.png", 1,
+         "atrium.json: the scene's models: texture 'floor.png' is 16385x1: the device takes at "
+         "most 16384 per side "
+         "(maxImageDimension2D)"},
+        {"ATextureAsWideAsTheDeviceTakes", atriumWithFloor(png(16384, 1)),
+         "render atrium.json --size 16x16 --out a.png --validation", 0, "a.png: 16x16", "", false},
+
         // 9: a scene of more parts than the beam tree takes renders with every method (occluders
         // are checked by the methods that read them, and the host merges them into a grid).
         {"ManyPartsRenderWithEpipolar",
@@ -253,11 +310,6 @@ std::vector<Row> rows() {
          1,
          "unexpected argument 'b.json' after \"--\""},
     };
-}
-
-std::string readAll(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 class CliHostile : public testing::TestWithParam<Row> {};
