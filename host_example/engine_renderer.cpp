@@ -95,8 +95,9 @@ auto because(const std::string& cause, F&& make) -> decltype(make()) {
 }  // namespace
 
 EngineRenderer::EngineRenderer(const rg::Device& device, SceneDesc scene, const MeshData& mesh,
-                               VkExtent2D size)
-    : device_(device), scene_(std::move(scene)), bounds_(mesh.bounds), size_(size) {
+                               VkExtent2D size, std::string sizeOrigin)
+    : device_(device), scene_(std::move(scene)), bounds_(mesh.bounds), size_(size),
+      sizeOrigin_(std::move(sizeOrigin)) {
     for (const Primitive& p : mesh.primitives) {
         Bounds b;
         for (uint32_t i = p.firstIndex; i < p.firstIndex + p.indexCount; ++i)
@@ -160,7 +161,7 @@ EngineRenderer::~EngineRenderer() {
 
 void EngineRenderer::createTargets() {
     // What the device cannot give is said in the terms of the option or field that asked for it.
-    const std::string screen = "--size " + std::to_string(size_.width) + "x" + std::to_string(size_.height);
+    const std::string screen = sizeOrigin_ + " " + std::to_string(size_.width) + "x" + std::to_string(size_.height);
     because(screen, [&] { createScreenTargets(); });
     lights_.clear();
     lights_.resize(scene_.lightCount());
@@ -486,8 +487,8 @@ void EngineRenderer::record(VkCommandBuffer cmd, const RenderOptions& options,
         // The plugin's memory grows with the screen and the profile's slices and samples.
         std::string why = e.what();
         if (why.rfind("lightscatter: ", 0) == 0) why.erase(0, 14);
-        throw std::runtime_error("the plugin's frame at --size " + std::to_string(size_.width) + "x" +
-                                 std::to_string(size_.height) + " with --profile " +
+        throw std::runtime_error("the plugin's frame at " + sizeOrigin_ + " " + std::to_string(size_.width) + "x" +
+                                 std::to_string(size_.height) + " with profile " +
                                  lightscatter::profileName(options.profile) + ": " + why);
     }
 }

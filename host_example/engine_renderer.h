@@ -34,7 +34,10 @@ struct FrameOutput {
 
 class EngineRenderer {
 public:
-    EngineRenderer(const rg::Device& device, SceneDesc scene, const MeshData& mesh, VkExtent2D size);
+    // `sizeOrigin` names where `size` came from in messages about what the device cannot hold at
+    // it ("--size", a benchmark's "size").
+    EngineRenderer(const rg::Device& device, SceneDesc scene, const MeshData& mesh, VkExtent2D size,
+                   std::string sizeOrigin = "--size");
     ~EngineRenderer();
     EngineRenderer(const EngineRenderer&) = delete;
     EngineRenderer& operator=(const EngineRenderer&) = delete;
@@ -86,6 +89,7 @@ private:
     Bounds bounds_;
     std::vector<Bounds> partBounds_;  // one per draw: what the sun's shadow box is fitted to
     VkExtent2D size_;
+    std::string sizeOrigin_;
     std::unique_ptr<GpuMesh> mesh_;
     std::unique_ptr<GpuImage> depth_, color_, inscatter_;
     std::vector<LightTargets> lights_;  // one per scene light, in the scene's order
