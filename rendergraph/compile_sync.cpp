@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 
+#include "block_occupants.h"
 #include "compile.h"
 #include "format_info.h"
 
@@ -262,23 +263,29 @@ void deriveSync(const RenderGraph& graph, CompiledGraph& out) {
     // frame, and every resource it shares memory with (earlier in this frame, or later in the
     // previous one). A barrier's first scope covers all earlier submissions on the queue, so this
     // also orders frame N+1 after frame N.
-    auto overlaps = [&](uint32_t a, uint32_t b) {
-        const auto& ra = out.resources[a];
-        const auto& rb = out.resources[b];
-        return ra.block != kInvalidIndex && ra.block == rb.block && ra.offset < rb.offset + rb.memory.size &&
-               rb.offset < ra.offset + ra.memory.size;
-    };
+    std::vector<std::vector<BlockOccupants::Occupant>> inBlock(out.blocks.size());
+    for (uint32_t id = 0; id < decls.size(); ++id) {
+        const ResourcePlan& p = out.resources[id];
+        if (!p.used || decls[id].imported || p.block == kInvalidIndex || p.memory.size == 0) continue;
+        inBlock.at(p.block).push_back({p.offset, p.offset + p.memory.size,
+                                       state[id].writeStages | state[id].readStages, state[id].writeAccess});
+    }
+    std::vector<BlockOccupants> occupants;
+    occupants.reserve(inBlock.size());
+    for (const auto& list : inBlock) occupants.emplace_back(list);
     for (auto& plan : out.passes) {
         for (auto& b : plan.barriers) {
             if (!b.firstUse) continue;
-            for (uint32_t other = 0; other < decls.size(); ++other) {
-                if (!out.resources[other].used || decls[other].imported) continue;
-                if (other != b.resource && !overlaps(b.resource, other)) continue;
-                const SyncState& last = state[other];
-                b.srcStages |= last.writeStages | last.readStages;
-                b.srcAccess |= last.writeAccess;
-                if (other != b.resource) b.aliased = true;
-            }
+            const SyncState& own = state[b.resource];
+            b.srcStages |= own.writeStages | own.readStages;
+            b.srcAccess |= own.writeAccess;
+            const ResourcePlan& p = out.resources[b.resource];
+            if (p.block == kInvalidIndex || p.memory.size == 0) continue;
+            const BlockOccupants& o = occupants.at(p.block);
+            const auto [stages, access] = o.meeting(p.offset, p.offset + p.memory.size);
+            b.srcStages |= stages;
+            b.srcAccess |= access;
+            if (o.count(p.offset, p.offset + p.memory.size) > 1) b.aliased = true;
         }
     }
 

@@ -2,6 +2,8 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <unordered_set>
 
 #include "compile.h"
 #include "format_info.h"
@@ -66,15 +68,15 @@ bool compatible(const ResourceUse& a, const ResourceUse& b, VkFormat format) {
 }
 
 void checkDescriptions(const RenderGraph& graph) {
+    std::unordered_set<std::string_view> names;  // a set, not every earlier name: linear in the graph
     for (uint32_t i = 0; i < graph.resources().size(); ++i) {
         const auto& r = graph.resource(i);
         const std::string name = quote(r.name);
         if (r.name.empty())
             throw GraphError(Rule::BadDescription, "resource #" + std::to_string(i) + " has no name");
-        for (uint32_t j = 0; j < i; ++j)
-            if (graph.resource(j).name == r.name)
-                throw GraphError(Rule::BadDescription,
-                                 "resource " + name + " is declared twice; names must be unique");
+        if (!names.insert(r.name).second)
+            throw GraphError(Rule::BadDescription,
+                             "resource " + name + " is declared twice; names must be unique");
         if (r.buffer) {
             if (r.bufferDesc.size == 0)
                 throw GraphError(Rule::BadDescription, "buffer " + name + " has size 0");

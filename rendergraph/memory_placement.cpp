@@ -52,15 +52,31 @@ PlacementResult placeInOrder(const std::vector<PlacementItem>& items, const std:
         return blockOfType[memoryType];
     };
 
-    std::vector<uint32_t> placed;
+    // The placed items alive at each pass position, so that an item meets only those it lives
+    // beside: a graph of many short chains (a light each) places in time linear in its resources,
+    // not quadratic (issue #22: `budget --lights` of 3,000 lights took 26 s). Without aliasing
+    // every placed item is busy.
+    uint32_t positions = 0;
+    for (const PlacementItem& item : items) positions = std::max(positions, item.last + 1);
+    std::vector<std::vector<uint32_t>> aliveAt(aliasing ? positions : 0);
+    std::vector<uint32_t> placed, seenAt(items.size(), ~0u);
     for (uint32_t i : order) {
         const PlacementItem& item = items[i];
         const uint32_t block = blockFor(item.memoryType);
         std::vector<Range> busy;
-        for (uint32_t j : placed) {
-            if (result.placements[j].block != block) continue;
-            if (aliasing && !lifetimesOverlap(items[j], item)) continue;
+        auto meet = [&](uint32_t j) {
+            if (result.placements[j].block != block) return;
             busy.push_back(blockedRange(items[j], result.placements[j].offset, item, granularity));
+        };
+        if (aliasing) {
+            for (uint32_t t = item.first; t <= item.last; ++t)
+                for (uint32_t j : aliveAt[t])
+                    if (seenAt[j] != i) {
+                        seenAt[j] = i;
+                        meet(j);
+                    }
+        } else {
+            for (uint32_t j : placed) meet(j);
         }
         std::sort(busy.begin(), busy.end(),
                   [](const Range& a, const Range& b) { return a.begin < b.begin; });
@@ -86,6 +102,8 @@ PlacementResult placeInOrder(const std::vector<PlacementItem>& items, const std:
         result.placements[i] = {block, bestOffset};
         result.blocks[block].size = std::max(result.blocks[block].size, bestOffset + item.size);
         placed.push_back(i);
+        if (aliasing)
+            for (uint32_t t = item.first; t <= item.last; ++t) aliveAt[t].push_back(i);
     }
     return result;
 }

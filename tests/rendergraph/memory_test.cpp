@@ -3,6 +3,7 @@
 #include <random>
 
 #include "graph_test_util.h"
+#include "rendergraph/block_occupants.h"
 #include "rendergraph/memory_placement.h"
 
 using namespace rg;
@@ -154,4 +155,41 @@ TEST(Memory, PlacementTriesOrdersAndReachesTheLivePeak) {
     EXPECT_TRUE(checkPlacement(items, r, 1).empty());
     ASSERT_EQ(r.blocks.size(), 1u);
     EXPECT_EQ(r.blocks[0].size, livePeak);
+}
+
+// The first-use barriers' source scope: the union over every resource sharing memory with the
+// one first used, found by a segment tree (rendergraph/block_occupants.h), equals the union over
+// all overlapping pairs taken one by one, and so does the count of overlapping resources.
+TEST(Memory, BlockOccupantsAgreeWithEveryPairTakenOneByOne) {
+    uint32_t seed = 7;
+    auto next = [&](uint32_t n) {
+        seed = seed * 1664525u + 1013904223u;
+        return (seed >> 8) % n;
+    };
+    for (int round = 0; round < 50; ++round) {
+        std::vector<rg::detail::BlockOccupants::Occupant> occupants;
+        const uint32_t n = 1 + next(60);
+        for (uint32_t i = 0; i < n; ++i) {
+            const VkDeviceSize begin = next(1000), size = 1 + next(300);
+            occupants.push_back({begin, begin + size, VkPipelineStageFlags2{1} << next(40),
+                                 VkAccessFlags2{1} << next(40)});
+        }
+        const rg::detail::BlockOccupants tree(occupants);
+        for (int q = 0; q < 40; ++q) {
+            const VkDeviceSize begin = next(1200), end = begin + 1 + next(400);
+            VkPipelineStageFlags2 stages = 0;
+            VkAccessFlags2 access = 0;
+            size_t count = 0;
+            for (const auto& o : occupants)
+                if (o.begin < end && begin < o.end) {
+                    stages |= o.stages;
+                    access |= o.access;
+                    ++count;
+                }
+            const auto [treeStages, treeAccess] = tree.meeting(begin, end);
+            ASSERT_EQ(treeStages, stages) << "round " << round << " query " << q;
+            ASSERT_EQ(treeAccess, access) << "round " << round << " query " << q;
+            ASSERT_EQ(tree.count(begin, end), count) << "round " << round << " query " << q;
+        }
+    }
 }
