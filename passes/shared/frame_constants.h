@@ -6,7 +6,7 @@ namespace ls {
 
 struct FrameConstants {
     glm::mat4 viewProj;
-    glm::mat4 invViewProj;
+    glm::mat4 rayBasis;        // columns 0-2: world vectors x, y, 1 of the ray through NDC (x, y)
     glm::mat4 lightViewProj;
     glm::vec4 cameraPos;       // w: near
     glm::vec4 cameraForward;   // w: far

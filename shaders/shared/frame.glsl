@@ -20,7 +20,11 @@ const float PI = 3.14159265358979;
 
 layout(std140, set = 0, binding = 0) uniform FrameConstants {
     mat4 viewProj;       // world -> camera clip
-    mat4 invViewProj;    // camera clip -> world
+    // The ray through NDC (x, y) points along x col0 + y col1 + col2 (xyz, unnormalised; col2 is
+    // the unit view axis): made from the projection's rows in double precision, never from a
+    // point unprojected near the camera minus the camera's position, which cancels when the
+    // near plane is small (passes/shared/scattering_params.cpp).
+    mat4 rayBasis;
     mat4 lightViewProj;  // world -> light clip (the shadow map)
     vec4 cameraPos;      // xyz; w: near
     vec4 cameraForward;  // xyz: unit view axis; w: far (ignored when infinite)
