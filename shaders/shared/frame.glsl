@@ -48,9 +48,18 @@ layout(std140, set = 0, binding = 0) uniform FrameConstants {
                          // order below (lightViewProj is then that face's matrix); y: 1 when the
                          // face's frustum reaches the view (always 1 outside per-face passes)
     vec4 epipolar3;      // x: in-scattering refinement threshold (0: off), yzw: -
+    vec4 linStorage;     // x: the power of two Lin is stored with between a method's passes and
+                         // the composite (float16 targets hold at most 65504), y: 1 / x
     // A point light's cube shadow map (LS_CUBE_SHADOW): world -> clip of each face, in Vulkan's
     // face order +X, -X, +Y, -Y, +Z, -Z (the layers of the shadow map).
     mat4 cubeFaceViewProj[6];
 } frame;
+
+// Lin as a method leaves it for the composite and as the composite reads it back: scaled by the
+// frame's power of two (plugin_api/lin_storage.h), which keeps the frame's brightest Lin within
+// float16's range, and clamped to that range (a sampled method's peak may overshoot the bound).
+// Exact: a power of two changes no float16 digit.
+vec3 storedLin(vec3 lin) { return clamp(lin * frame.linStorage.x, vec3(-65504.0), vec3(65504.0)); }
+vec3 loadedLin(vec3 stored) { return stored * frame.linStorage.y; }
 
 #endif
