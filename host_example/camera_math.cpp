@@ -56,6 +56,50 @@ glm::vec3 corner(const Bounds& b, int i) {
     return {(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z};
 }
 
+// An orthographic light-space box: x and y across the light, depths along it. Usable when every
+// extent is finite and wider than a float's resolution at its coordinates; a box that is not (a
+// scene of one point, a part seen edge on) would give the map a division by zero.
+struct LightBox {
+    glm::vec2 lo, hi;
+    float nearP = 0.0f, farP = 0.0f;
+};
+
+bool resolvable(float a, float b) {
+    const float magnitude = std::max(std::fabs(a), std::fabs(b));
+    return std::isfinite(a) && std::isfinite(b) && b - a > 16.0f * magnitude * 1.2e-7f;
+}
+
+bool usable(const LightBox& b) {
+    return resolvable(b.lo.x, b.hi.x) && resolvable(b.lo.y, b.hi.y) && resolvable(b.nearP, b.farP);
+}
+
+// The margins that keep edge texels off the border and every caster inside the depth range: a
+// percent of the extent, a millimetre, and at least a millionth of the world's coordinates
+// (`world`: how far from the origin the scene reaches), some sixteen times what float32 rounds
+// them by, so that an extent of nothing becomes one the map resolves. A scene within a kilometre
+// of the origin keeps the millimetre.
+LightBox padded(glm::vec2 lo, glm::vec2 hi, float nearest, float farthest, float radius,
+                float world) {
+    const float across = std::max(1e-3f, 1e-6f * world);
+    const glm::vec2 pad = (hi - lo) * 0.01f + glm::vec2(across);
+    const float along = std::max(1e-3f * radius, 1e-6f * world);
+    return {lo - pad, hi + pad, std::max(nearest - along, 1e-4f), farthest + along};
+}
+
+glm::mat4 orthoFor(const LightBox& b, const glm::mat4& view) {
+    glm::mat4 p = glm::orthoRH_ZO(b.lo.x, b.hi.x, b.lo.y, b.hi.y, b.nearP, b.farP);
+    p[1][1] = -p[1][1];  // Vulkan clip: y down
+    p[3][1] = -p[3][1];
+    return p * view;
+}
+
+bool finiteMatrix(const glm::mat4& m) {
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(m[c][r])) return false;
+    return true;
+}
+
 // Whether a box may be seen: not all of its corners beyond one side of the view frustum.
 bool mayBeSeen(const Bounds& b, const glm::mat4& view, float tanX, float tanY, float nearD, float farD) {
     bool out[6] = {true, true, true, true, true, true};
@@ -80,7 +124,11 @@ glm::mat4 shadowViewProjection(const LightDesc& light, const Bounds& scene, cons
                                const CameraDesc& camera, float aspect) {
     const glm::vec3 dir = glm::normalize(light.direction);
     const glm::vec3 center = scene.empty() ? glm::vec3(0.0f) : (scene.min + scene.max) * 0.5f;
-    const float radius = scene.empty() ? 1.0f : std::max(glm::length(scene.max - scene.min) * 0.5f, 1e-3f);
+    // At least a millimetre, and a hundred thousandth of the distance from the origin: the light's
+    // eye stands two radii from the centre, which float32 must tell apart from it.
+    const float radius = scene.empty() ? 1.0f
+                                       : std::max({glm::length(scene.max - scene.min) * 0.5f, 1e-3f,
+                                                   1e-5f * glm::length(center)});
     if (light.type == LightKind::Spot) {
         const glm::mat4 view = glm::lookAtRH(light.position, light.position + dir, safeUp(dir, {0, 1, 0}));
         const float farthest = glm::length(center - light.position) + radius;
@@ -137,23 +185,24 @@ glm::mat4 shadowViewProjection(const LightDesc& light, const Bounds& scene, cons
         }
         partMin = glm::max(partMin, viewMin);
         partMax = glm::min(partMax, viewMax);
-        if (partMin.x >= partMax.x || partMin.y >= partMax.y) continue;
+        // A part of no width (one seen edge on, or a single point) is still in view.
+        if (partMin.x > partMax.x || partMin.y > partMax.y) continue;
         lo = glm::min(lo, partMin);
         hi = glm::max(hi, partMax);
     }
-    if (lo.x >= hi.x || lo.y >= hi.y) {  // nothing seen: any box will do
-        lo = glm::vec2(sceneMin);
-        hi = glm::vec2(sceneMax);
+    // The scene's own box when the view shows nothing of it, or when what it shows makes no box
+    // a float can hold (the view-fitted box must never be the one that fails: issue #22).
+    const float world = glm::length(center) + 3.0f * radius;
+    const LightBox sceneBox =
+        padded(glm::vec2(sceneMin), glm::vec2(sceneMax), -sceneMax.z, -sceneMin.z, radius, world);
+    const LightBox fitted = lo.x <= hi.x && lo.y <= hi.y
+                                ? padded(lo, hi, -sceneMax.z, -sceneMin.z, radius, world)
+                                : sceneBox;
+    if (usable(fitted)) {
+        const glm::mat4 m = orthoFor(fitted, view);
+        if (finiteMatrix(m)) return m;
     }
-    const glm::vec2 pad = (hi - lo) * 0.01f + glm::vec2(1e-3f);  // keeps edge texels off the border
-    lo -= pad;
-    hi += pad;
-    const float nearP = std::max(-sceneMax.z - 1e-3f * radius, 1e-4f);
-    const float farP = -sceneMin.z + 1e-3f * radius;
-    glm::mat4 p = glm::orthoRH_ZO(lo.x, hi.x, lo.y, hi.y, nearP, farP);
-    p[1][1] = -p[1][1];  // Vulkan clip: y down
-    p[3][1] = -p[3][1];
-    return p * view;
+    return orthoFor(sceneBox, view);
 }
 
 std::array<glm::mat4, 6> cubeFaceViewProjections(const LightDesc& light, const Bounds& scene) {

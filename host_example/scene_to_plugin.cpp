@@ -66,9 +66,19 @@ std::string pluginRefusalInSceneTerms(const std::string& message, const std::str
         std::string single = m.substr(colon + 3);
         replaceAll(single, light + ".light.", "light.");
         std::string out = pluginRefusalInSceneTerms(single, scenePath);
-        replaceAll(out, " light.", " " + light + ".");
-        replaceAll(out, " the light ", " " + light + " ");
-        return out;
+        std::string named;
+        for (size_t i = 0; i < out.size();) {
+            const bool wordStart = i == 0 || !(std::isalnum(static_cast<unsigned char>(out[i - 1])) ||
+                                               out[i - 1] == '.' || out[i - 1] == '_' || out[i - 1] == '[');
+            if (wordStart && out.compare(i, 6, "light.") == 0) {
+                named += light + ".";
+                i += 6;
+            } else {
+                named += out[i++];
+            }
+        }
+        replaceAll(named, " the light ", " " + light + " ");
+        return named;
     }
     // Longest first: a phrase, then the fields whose SCENE.json names differ. The matrices are
     // made by the host from several scene fields, so those are named instead.

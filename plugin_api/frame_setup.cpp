@@ -46,6 +46,35 @@ glm::vec3 vec(const Vec3& v, const std::string& field, bool nonNegative) {
     return {v[0], v[1], v[2]};
 }
 
+// The bounds of lightscatter.h's limits, in the one message every range check gives.
+std::string rangeText(double lo, double hi) {
+    return "[" + num(lo) + ", " + num(hi) + "]";
+}
+
+float inRange(float v, const std::string& field, double lo, double hi, const std::string& why) {
+    if (!(v >= lo && v <= hi))
+        fail(field + " = " + num(v) + ": must be in " + rangeText(lo, hi) + " (" + why + ")");
+    return v;
+}
+
+glm::vec3 vecInRange(const Vec3& v, const std::string& field, double lo, double hi,
+                     const std::string& why) {
+    for (size_t i = 0; i < 3; ++i)
+        inRange(v[i], field + "[" + std::to_string(i) + "]", lo, hi, why);
+    return {v[0], v[1], v[2]};
+}
+
+// A world -> clip matrix's scale: products with points within limits::kMaxLength must stay far
+// from FLT_MAX, and its largest element far from the subnormals.
+void checkMatrixScale(const glm::mat4& m, const std::string& field) {
+    float largest = 0.0f;
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) largest = std::max(largest, std::fabs(m[c][r]));
+    if (!(largest >= 1e-20f && largest <= 1e20f))
+        fail(field + " has its largest element at " + num(largest) +
+             ": must be within [1e-20, 1e+20] (a clip matrix may be scaled freely: scale it)");
+}
+
 const char* layoutName(VkImageLayout l) {
     switch (l) {
         case VK_IMAGE_LAYOUT_UNDEFINED:
@@ -185,12 +214,25 @@ void checkDepthFormat(VkFormat f, const std::string& field) {
 // How far a matrix is from singular: |det| over the product of its rows' lengths (Hadamard's
 // bound), 1 for orthogonal rows, 0 for a singular matrix; scale-free, so metres or kilometres do
 // not matter.
-double conditioning(const glm::mat4& m) {
-    const glm::dmat4 d(m);
+double conditioning(const glm::dmat4& d) {
     double rows = 1.0;
     for (int r = 0; r < 4; ++r) rows *= glm::length(glm::dvec4(d[0][r], d[1][r], d[2][r], d[3][r]));
     if (!(rows > 0.0)) return 0.0;
     return std::fabs(glm::determinant(d)) / rows;
+}
+
+// The same about the point at the centre of the matrix's clip volume (a translation scales no
+// direction): a light or camera a hundred kilometres from the origin has a large last column, not
+// a singular matrix.
+double conditioning(const glm::mat4& m) {
+    const glm::dmat4 d(m);
+    const double det = glm::determinant(d);
+    if (!(std::fabs(det) > 0.0) || !std::isfinite(det)) return 0.0;
+    const glm::dvec4 c = glm::inverse(d) * glm::dvec4(0.0, 0.0, 0.5, 1.0);
+    if (!(std::fabs(c.w) > 0.0) || !std::isfinite(c.w)) return conditioning(d);
+    glm::dmat4 centred(1.0);
+    centred[3] = glm::dvec4(glm::dvec3(c) / c.w, 1.0);
+    return conditioning(d * centred);
 }
 
 // The planes the projection puts at depth 0 and 1, read from its z and w rows on the view axis
@@ -213,8 +255,51 @@ DerivedPlanes derivePlanes(const glm::mat4& p) {
     return {distanceAt(0.0), distanceAt(1.0)};
 }
 
+// The view is a rotation and a translation: view-space distances are the world's metres, which
+// the planes read from the projection and every ray length rely on. Its camera lies within
+// limits::kMaxLength of the origin on each axis.
+void checkView(const glm::mat4& view) {
+    const glm::dmat4 v(view);
+    const glm::dmat3 r(v);
+    const glm::dmat3 rtr = glm::transpose(r) * r;
+    double off = 0.0;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            off = std::max(off, std::fabs(rtr[i][j] - (i == j ? 1.0 : 0.0)));
+    if (!(off <= 1e-3) || std::fabs(v[0][3]) > 1e-6 || std::fabs(v[1][3]) > 1e-6 ||
+        std::fabs(v[2][3]) > 1e-6 || std::fabs(v[3][3] - 1.0) > 1e-6)
+        fail("camera.view is not a rotation and a translation (its rotation part is " + num(off) +
+             " off orthonormal, or its last row is not 0 0 0 1): view-space distances must be "
+             "metres");
+    const glm::dvec3 position = -(glm::transpose(r) * glm::dvec3(v[3]));
+    for (int i = 0; i < 3; ++i)
+        if (!(std::fabs(position[i]) <= limits::kMaxLength))
+            fail("camera.view puts the camera at " + num(position[i]) + " on axis " +
+                 std::to_string(i) + ": must be within " +
+                 rangeText(-limits::kMaxLength, limits::kMaxLength) +
+                 " m (lightscatter.h, limits::kMaxLength)");
+}
+
+// Each axis' field of view, 2 atan(1 / |P[0][0]|) and 2 atan(1 / |P[1][1]|).
+void checkFieldOfView(const glm::mat4& p) {
+    for (int axis = 0; axis < 2; ++axis) {
+        const double degrees =
+            2.0 * std::atan(1.0 / std::fabs(double(p[axis][axis]))) * 180.0 / 3.14159265358979;
+        // 1e-3 of slack: the matrix holds the engine's angle rounded to float.
+        if (!(degrees >= limits::kMinFovDegrees * (1.0 - 1e-3) &&
+              degrees <= limits::kMaxFovDegrees * (1.0 + 1e-6)))
+            fail("camera.projection has a field of view of " + num(degrees) + " degrees " +
+                 (axis == 0 ? "across (from P[0][0])" : "up and down (from P[1][1])") +
+                 ": must be in " + rangeText(limits::kMinFovDegrees, limits::kMaxFovDegrees) +
+                 " degrees, where single precision tells the pixels' rays apart and measured "
+                 "results hold "
+                 "(lightscatter.h, limits::kMinFovDegrees)");
+    }
+}
+
 // Checks the camera against its projection and fills the planes the nodes use.
 void setupCamera(const Camera& c, ls::CameraParams& out) {
+    checkView(out.view);
     const DerivedPlanes d = derivePlanes(out.projection);
     const bool reversed = d.atDepth1 < d.atDepth0;
     const double nearD = reversed ? d.atDepth1 : d.atDepth0;
@@ -224,6 +309,16 @@ void setupCamera(const Camera& c, ls::CameraParams& out) {
              metres(d.atDepth1) +
              " along the view axis: it must map a range in front of the camera "
              "(view space looks down -Z) to depth [0, 1], as a Vulkan perspective projection does");
+    checkFieldOfView(out.projection);
+    if (!(nearD >= limits::kMinNearPlane))
+        fail("camera.projection puts the near plane at " + metres(nearD) + ": must be at least " +
+             metres(limits::kMinNearPlane) +
+             " (a reversed float32 depth buffer stores near / distance, which must stay a normal "
+             "float; "
+             "lightscatter.h, limits::kMinNearPlane)");
+    if (std::isfinite(farD) && !(farD <= limits::kMaxLength * (1.0 + 1e-6)) && !c.infiniteFar)
+        fail("camera.projection puts the far plane at " + metres(farD) + ": must be at most " +
+             metres(limits::kMaxLength) + " (lightscatter.h, limits::kMaxLength)");
     if (c.reversedZ != reversed)
         fail(std::string("camera.reversedZ is ") + (c.reversedZ ? "true" : "false") +
              " but camera.projection puts the near plane at depth " + (reversed ? "1" : "0"));
@@ -235,7 +330,12 @@ void setupCamera(const Camera& c, ls::CameraParams& out) {
         fail("camera.infiniteFar is true but camera.projection has a far plane at " + metres(farD));
     if (!c.infiniteFar && derivedInfinite)
         fail("camera.infiniteFar is false but camera.projection has no far plane (depth " +
-             std::string(reversed ? "0" : "1") + " is at infinity)");
+             std::string(reversed ? "0" : "1") + " is at infinity" +
+             (reversed
+                  ? std::string(")")
+                  : "; a float32 standard projection cannot hold a far plane more than about 2^24 "
+                    "times its near plane, " +
+                        metres(nearD) + ")"));
     auto agrees = [&](double given, double derived) {
         return std::fabs(given - derived) <= slack * derived;
     };
@@ -267,6 +367,31 @@ void setupCamera(const Camera& c, ls::CameraParams& out) {
     out.infiniteFar = c.infiniteFar;
 }
 
+// Standard depth, or a UNORM depth buffer either way round, steps by 2^-b (lightscatter.h,
+// limits::kDepthStepsPerDistance): the farthest distance it must tell apart (the far plane, or with
+// an infinite one the sky distance) may be at most 2^b / 16 times the near plane.
+void checkDepthResolution(const ls::CameraParams& camera, float maxDistance, VkFormat format) {
+    const bool unorm16 = format == VK_FORMAT_D16_UNORM || format == VK_FORMAT_D16_UNORM_S8_UINT;
+    const bool floatDepth =
+        format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_D32_SFLOAT_S8_UINT;
+    if (camera.reversedZ && floatDepth) return;  // near / distance: float32's exponent resolves it
+    const double bits = unorm16 ? 16.0 : 24.0;
+    const double ratio = std::pow(2.0, bits) / limits::kDepthStepsPerDistance;
+    const double farthest = camera.infiniteFar ? double(maxDistance) : double(camera.farPlane);
+    if (farthest <= ratio * camera.nearPlane) return;
+    fail("camera.projection puts the near plane at " + metres(camera.nearPlane) + " and " +
+         (camera.infiniteFar ? "the sky (medium.maxDistance) at " : "the far plane at ") +
+         metres(farthest) + ": with " + (camera.reversedZ ? "reversed" : "standard") + " depth a " +
+         rg::formatName(format) + " depth buffer steps by 2^-" + num(bits) +
+         ", and the farthest distance may be at most " + num(ratio) +
+         " times the near plane, where a step is 1/16 of the distance (beyond " +
+         num(std::pow(2.0, bits)) + " times it reads as sky); move the near plane out to " +
+         metres(farthest / ratio) + " or more" +
+         (floatDepth ? ", or use reversed z"
+                     : ", or use a D32_SFLOAT depth buffer with reversed z") +
+         " (lightscatter.h, limits::kDepthStepsPerDistance)");
+}
+
 // A point light's cube face: Vulkan's cube layer order and face orientation (lightscatter.h,
 // Light::cubeFaceViewProjections). For each face, the world axis it looks along and the world
 // directions that land at clip x/w = +1 (sc) and y/w = +1 (tc).
@@ -292,6 +417,7 @@ glm::mat4 checkCubeFace(const Mat4& given, size_t i, const glm::vec3& light, boo
     if (conditioning(m) < 1e-9)
         fail(field + " is singular (all zero?): a point light's shadow map needs each face's world -> clip "
                      "matrix (face " + f.name + ")");
+    checkMatrixScale(m, field);
     const glm::dmat4 d(m);
     const glm::dvec3 L(light);
     double depthAt[2] = {0, 0};
@@ -429,7 +555,8 @@ void checkSettings(const Settings& s) {
              ": must be finite and >= 0 (0: off)");
     if (!(s.bilateralThreshold > 0.0f) || !finite(s.bilateralThreshold))
         fail("custom.bilateralThreshold = " + num(s.bilateralThreshold) + ": must be > 0");
-    if (!finite(s.shadowDepthBias)) fail("custom.shadowDepthBias is not finite");
+    inRange(s.shadowDepthBias, "custom.shadowDepthBias", -1.0, 1.0,
+            "the depth range: beyond it every ray is lit, or shadowed, all the same");
     if (s.coneSamples < 1 || s.coneSamples > 4096)
         fail("custom.coneSamples = " + std::to_string(s.coneSamples) + ": must be between 1 and 4096");
     if (s.slicePlanes < 2 || s.slicePlanes > 4096)
@@ -437,26 +564,26 @@ void checkSettings(const Settings& s) {
     if (s.sliceTarget != SliceTarget::Float16 && s.sliceTarget != SliceTarget::Float32 &&
         s.sliceTarget != SliceTarget::Rgba8Channels)
         fail("custom.sliceTarget is not a SliceTarget value");
-    if (!(s.sliceRange >= 0.0f) || !finite(s.sliceRange))
-        fail("custom.sliceRange = " + num(s.sliceRange) + ": must be finite and >= 0 (0: automatic)");
+    if (s.sliceRange != 0.0f)
+        inRange(s.sliceRange, "custom.sliceRange", 1e-30, 1e30,
+                "or 0: automatic; the 8-bit target is scaled by 4 / sliceRange");
     if (s.sliceBlur > 8) fail("custom.sliceBlur = " + std::to_string(s.sliceBlur) + ": at most 8 pixels");
-    if (!(s.sliceAmbient >= 0.0f) || !finite(s.sliceAmbient))
-        fail("custom.sliceAmbient = " + num(s.sliceAmbient) + ": must be finite and >= 0");
+    inRange(s.sliceAmbient, "custom.sliceAmbient", 0.0, limits::kMaxAmbient,
+            "1/m^2, beside the inverse square; lightscatter.h, limits::kMaxAmbient");
     if (!(s.noiseAmplitude >= 0.0f && s.noiseAmplitude <= 1.0f))
         fail("custom.noiseAmplitude = " + num(s.noiseAmplitude) + ": must be in [0, 1]");
-    if (!(s.noiseScale > 0.0f) || !finite(s.noiseScale))
-        fail("custom.noiseScale = " + num(s.noiseScale) + ": must be finite and > 0");
+    inRange(s.noiseScale, "custom.noiseScale", limits::kMinNoiseScale, limits::kMaxNoiseScale,
+            "a tile's size; lightscatter.h, limits::kMinNoiseScale");
     for (size_t i = 0; i < s.noiseVelocity.size(); ++i)
         if (!finite(s.noiseVelocity[i]))
             fail("custom.noiseVelocity[" + std::to_string(i) + "] is not finite");
     if (s.lightModel != LightModel::Full && s.lightModel != LightModel::Simplified)
         fail("custom.lightModel is not a LightModel value");
-    if (!(s.simplifiedA1 > 0.0f) || !finite(s.simplifiedA1))
-        fail("custom.simplifiedA1 = " + num(s.simplifiedA1) +
-             ": must be finite and > 0 (seed 004's falloff I / (a1 r^2 + a0))");
-    if (!(s.simplifiedA0 >= 0.0f) || !finite(s.simplifiedA0))
-        fail("custom.simplifiedA0 = " + num(s.simplifiedA0) +
-             ": must be finite and >= 0 (seed 004's falloff I / (a1 r^2 + a0))");
+    inRange(s.simplifiedA1, "custom.simplifiedA1", limits::kMinSimplifiedA1,
+            limits::kMaxSimplifiedA1,
+            "seed 004's falloff I / (a1 r^2 + a0); lightscatter.h, limits::kMinSimplifiedA1");
+    inRange(s.simplifiedA0, "custom.simplifiedA0", 0.0, limits::kMaxSimplifiedA0,
+            "m^2, seed 004's falloff I / (a1 r^2 + a0); lightscatter.h, limits::kMaxSimplifiedA0");
 }
 
 bool lightTouchesView(const ls::CameraParams& camera, const ls::LightParams& light,
@@ -586,33 +713,51 @@ FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
     // Checked, and converted, only for the methods that read them (beamOccluders): the others
     // ignore them, as the header says, and a scene of 100,000 parts must not stop them.
     s.occluders = f.occluders.size();
-    if (!std::isfinite(f.timeSeconds)) fail("timeSeconds is not finite");
+    if (!std::isfinite(f.timeSeconds))
+        fail("timeSeconds = " + num(f.timeSeconds) + ": must be finite");
     s.timeSeconds = f.timeSeconds;
 
     // Camera.
     const Camera& c = f.camera;
     s.camera.view = matrix(c.view, "camera.view");
     s.camera.projection = matrix(c.projection, "camera.projection");
-    if (std::fabs(glm::determinant(s.camera.projection * s.camera.view)) < 1e-30f)
-        fail("camera.projection * camera.view is singular");
     setupCamera(c, s.camera);
+    // What the depth buffer can resolve, before anything that a near plane too small for it
+    // would break (the depth format is the engine's image's: unknown to the budget).
+    if (withImages && rg::hasDepth(f.depth.format) && f.medium.maxDistance > 0.0f)
+        checkDepthResolution(s.camera, f.medium.maxDistance, f.depth.format);
+    // Scale-free: a near plane of 1e-29 m makes the determinant tiny, not the matrix singular.
+    if (conditioning(s.camera.projection * s.camera.view) < 1e-9)
+        fail("camera.projection * camera.view is singular");
+    checkMatrixScale(s.camera.projection, "camera.projection");
 
     // Light.
     const Light& l = f.light;
     s.light.kind = static_cast<ls::LightKind>(static_cast<int>(l.type));
-    s.light.position = vec(l.position, "light.position", false);
+    s.light.position = vecInRange(l.position, "light.position", -limits::kMaxLength,
+                                  limits::kMaxLength, "metres; lightscatter.h, limits::kMaxLength");
     const glm::vec3 dir = vec(l.direction, "light.direction", false);
-    if (glm::length(dir) < 1e-12f) fail("light.direction is the zero vector");
-    s.light.direction = glm::normalize(dir);
-    s.light.intensity = vec(l.intensity, "light.intensity", true);
-    if (l.type == LightType::Spot &&
-        (!(l.halfAngleDegrees > 0.0f) || !(l.halfAngleDegrees <= 89.0f)))
-        fail("light.halfAngleDegrees = " + num(l.halfAngleDegrees) + ": must be in (0, 89]");
+    // A float's square overflows from 1.8e19 and underflows below 1e-19: such lengths are
+    // normalised in double (ordinary ones as they always were, to the bit).
+    const glm::dvec3 dirD(dir);
+    const double dirScale = std::max({std::fabs(dirD.x), std::fabs(dirD.y), std::fabs(dirD.z)});
+    if (!(dirScale > 0.0)) fail("light.direction is the zero vector");
+    const float dirLength = glm::length(dir);
+    s.light.direction = std::isfinite(dirLength) && dirLength > 1e-12f
+                            ? glm::normalize(dir)
+                            : glm::vec3(glm::normalize(dirD / dirScale));
+    s.light.intensity = vecInRange(l.intensity, "light.intensity", 0.0, limits::kMaxIntensity,
+                                   "W/m^2 or W/sr; lightscatter.h, limits::kMaxIntensity");
+    if (l.type == LightType::Spot)
+        inRange(l.halfAngleDegrees, "light.halfAngleDegrees", limits::kMinHalfAngleDegrees, 89.0,
+                "degrees; below it single precision cannot resolve the cone, lightscatter.h, "
+                "limits::kMinHalfAngleDegrees");
     s.light.cosHalfAngle = std::cos(l.halfAngleDegrees * 3.14159265f / 180.0f);
-    if (!(l.range > 0.0f)) fail("light.range = " + num(l.range) + ": must be > 0");
+    if (!(l.range > 0.0f) || !finite(l.range))
+        fail("light.range = " + num(l.range) + ": must be > 0 and finite (1e30: no range)");
     s.light.range = l.range;
-    if (!(l.radius > 0.0f) || !finite(l.radius))
-        fail("light.radius = " + num(l.radius) + ": must be > 0 (it keeps rays through the light finite)");
+    inRange(l.radius, "light.radius", limits::kMinRadius, limits::kMaxLength,
+            "metres; it keeps rays through the light finite, lightscatter.h, limits::kMinRadius");
     s.light.radius = l.radius;
     s.light.shadowMapSize = l.shadowMapSize;
     s.light.shadowReversedZ = l.shadowReversedZ;
@@ -628,21 +773,24 @@ FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
             fail("light.shadowViewProjection is singular (all zero?): with light.shadowMapSize " +
                  std::to_string(l.shadowMapSize) +
                  " it must be the shadow map's world -> light clip matrix");
+        checkMatrixScale(s.light.shadowViewProj, "light.shadowViewProjection");
     }
 
     // Medium.
     const Medium& m = f.medium;
-    s.medium.betaR = vec(m.betaR, "medium.betaR", true);
-    s.medium.betaM = vec(m.betaM, "medium.betaM", true);
-    s.medium.sigmaA = vec(m.sigmaA, "medium.sigmaA", true);
+    const std::string perMetre = "1/m; lightscatter.h, limits::kMaxCoefficient";
+    s.medium.betaR = vecInRange(m.betaR, "medium.betaR", 0.0, limits::kMaxCoefficient, perMetre);
+    s.medium.betaM = vecInRange(m.betaM, "medium.betaM", 0.0, limits::kMaxCoefficient, perMetre);
+    s.medium.sigmaA = vecInRange(m.sigmaA, "medium.sigmaA", 0.0, limits::kMaxCoefficient, perMetre);
     if (!(m.g > -1.0f && m.g < 1.0f)) fail("medium.g = " + num(m.g) + ": must be in (-1, 1)");
     s.medium.g = m.g;
     if (m.phase != MiePhase::CornetteShanks && m.phase != MiePhase::Isotropic && m.phase != MiePhase::Hazy)
         fail("medium.phase is not a MiePhase value");
     s.medium.isotropicMie = m.phase == MiePhase::Isotropic;
     s.medium.hazyMie = m.phase == MiePhase::Hazy;
-    if (!(m.maxDistance > 0.0f) || !finite(m.maxDistance))
-        fail("medium.maxDistance = " + num(m.maxDistance) + ": must be > 0");
+    if (!(m.maxDistance > 0.0f && m.maxDistance <= limits::kMaxLength))
+        fail("medium.maxDistance = " + num(m.maxDistance) + ": must be in (0, " +
+             num(limits::kMaxLength) + "] (metres; lightscatter.h, limits::kMaxLength)");
     s.medium.maxDistance = m.maxDistance;
 
     // Images.

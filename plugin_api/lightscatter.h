@@ -47,6 +47,75 @@ namespace lightscatter {
 using Vec3 = std::array<float, 3>;
 using Mat4 = std::array<float, 16>;  // column-major (GLM's layout), maps column vectors
 
+// The ranges of a frame's numbers. The plugin computes in single precision: FLT_MAX is about
+// 3.4e38, the smallest normal float 1.2e-38, and a GPU may flush smaller (subnormal) values to 0.
+// Each numeric field's comment states its range, and record() refuses a value outside it
+// (InvalidInput naming the field and the range). The bounds are chosen so that no shader
+// overflows: the largest product one forms is Lin's integrand times the length of ray it stands
+// for,
+//       intensity     1e9 W/sr or W/m^2           kMaxIntensity
+//     x irradiance    2e6 1/m^2                   1 / r0^2 with r0 >= kMinRadius, plus slices'
+//                                                 ambient term, at most kMaxAmbient
+//     x coefficient   1e3 1/m                     kMaxCoefficient
+//     x phase         2e5 1/sr                    Cornette-Shanks' peak, 0.16 / (1 - g)^2 under
+//                                                 the shaders' floor of 1e-6 on its denominator,
+//                                                 for any g in (-1, 1)
+//     x length        6e9 m                       kMaxLength over the cosine of a ray at the
+//                                                 corner of the widest field of view
+//     = 2.4e33, a factor of 1e5 below FLT_MAX; a sum of samples along a ray is never more than
+// its largest term times the ray's length. Seed 004's simplified model (Settings::lightModel)
+// replaces the last three by betaS / (4 pi) <= 80 times the length, and 1 / r0^2 by its falloff,
+// at most 1e12 / a1 <= 1e15 (the plugin floors a0 / a1 at 1e-12 m^2): 5e35, a factor of 600 below.
+// Lower ends: a length or angle below its bound is one single precision cannot resolve (each
+// bound says how); everything else may be 0 or subnormal, which renders as 0 would. A Lin below
+// 6e-8 W/(m^2 sr), float16's smallest value, which the methods' screen targets hold, reads as 0
+// (plugin_api/lin_storage.h scales a bright frame's Lin into float16's range).
+namespace limits {
+// Coordinates (light.position, the camera's position in camera.view), the far plane, the sky
+// distance and the light's radius, in metres: 1e8 m, a quarter of the way to the Moon. Squares
+// of distances (up to 4e19 between two points) stay far below FLT_MAX.
+inline constexpr float kMaxLength = 1e8f;
+// Light.intensity: W/m^2 (directional) or W/sr (point, spot). The Sun gives 1.4e3 W/m^2.
+inline constexpr float kMaxIntensity = 1e9f;
+// Medium::betaR, betaM, sigmaA, per channel, 1/m: a mean free path of a millimetre (milk is
+// about 1e3 /m, thick fog 0.1 /m).
+inline constexpr float kMaxCoefficient = 1e3f;
+// Light::radius r0 (m): keeps 1 / (r^2 + r0^2) at most 1e6 /m^2.
+inline constexpr float kMinRadius = 1e-3f;
+// Settings::sliceAmbient (1/m^2): no more than the inverse square at kMinRadius.
+inline constexpr float kMaxAmbient = 1e6f;
+// Light::halfAngleDegrees: the cone test compares cosines, whose float32 step near 1 (6e-8) moves
+// the edge of a 0.1-degree cone by 2% of its angle and swallows cones under 0.02 degree whole.
+inline constexpr float kMinHalfAngleDegrees = 0.1f;
+// Settings::simplifiedA1 (a1 of I / (a1 r^2 + a0)): seed 004's a1 is 1; 1e-3 to 1e3 keeps its
+// falloff within the budget above. simplifiedA0 (m^2) up to kMaxLength^2.
+inline constexpr float kMinSimplifiedA1 = 1e-3f, kMaxSimplifiedA1 = 1e3f;
+inline constexpr float kMaxSimplifiedA0 = 1e16f;
+// Settings::noiseScale: a tile from 1e-6 (m, or the tangent of the angle it spans) to
+// kMaxLength; noise coordinates (position / scale) stay below 1e14.
+inline constexpr float kMinNoiseScale = 1e-6f, kMaxNoiseScale = 1e8f;
+// The camera's field of view, on each axis (from camera.projection: 2 atan(1 / |P[0][0]|) and
+// 2 atan(1 / |P[1][1]|)). Measured against the float64 model on 32x18 and 256x4 screens under an
+// unshadowed sun (mean relative error of Lin): brute-force, epipolar and cone-march within 0.05%,
+// slices within 2.4% (its planes' sampling), from 1e-6 degrees to 177 across; below 1e-7 degrees
+// slices' planes degenerate (0.87 off), and at 178.9 degrees across every method is 9% off. 1e-4
+// degrees keeps a margin of 100, and spans 29 float32 steps of a unit vector's component.
+// tests/plugin/camera_limits_gpu_test.cpp holds the ends.
+inline constexpr float kMinFovDegrees = 1e-4f, kMaxFovDegrees = 177.0f;
+// The near plane (m). A reversed float32 depth buffer stores near / distance, a normal float out
+// to kMaxLength for a near plane down to 1e-29 m. Measured on a 32x18 spot against the float64
+// model: with reversed depth, finite or infinite, every method's error at near 1e-30 m is its
+// error at 1e-4 m (brute-force 0.0003, slices 0.064).
+inline constexpr float kMinNearPlane = 1e-29f;
+// Standard depth (near plane at 0) and 16- or 24-bit depth formats either way round step by 2^-b
+// (b = 24 bits for D24 and, near 1, for D32_SFLOAT; 16 for D16): at distance z the step is z^2 /
+// near 2^-b. The far plane (with an infinite one: the sky distance, Medium::maxDistance) may be
+// at most 2^b / 16 times the near plane, where one step is 1/16 of the distance; beyond 2^b the
+// far part of the view collapses onto depth 1 and reads as sky. Reversed depth in D32_SFLOAT has
+// no such limit.
+inline constexpr float kDepthStepsPerDistance = 16.0f;
+}  // namespace limits
+
 // The methods (docs/methods.md): epipolar sampling (seed 000), brute-force per-pixel marching (the
 // GPU reference), seed 001's arctangent closed form (unshadowed point and spot lights), seed 003's
 // cone-limited fixed-count march, seed 002's view-aligned slice planes, seed 004's two methods (a
@@ -108,20 +177,25 @@ struct Settings {
     uint32_t slices = 1024;              // epipolar lines; a multiple of 4 (one quarter per edge)
     uint32_t samplesPerSlice = 1024;     // samples along each line
     uint32_t initialSampleStep = 16;     // ray-marching samples every N samples (power of two, <= 128)
-    float refinementThreshold = 0.03f;   // relative camera-z jump that is a depth break
+    float refinementThreshold = 0.03f;   // relative camera-z jump that is a depth break; > 0
+                                         // and finite (only compared: any such value is safe)
     // Epipolar refinement on what the samples carry (docs/epipolar.md, "Refinement on in-scattering
     // differences"). 0 (the default): off. Above 0: after the first march, wherever the two
     // ray-marching samples an interpolated sample lies between differ in some channel by more than
     // this fraction of the larger (the shadowed fraction, or Lin with Interpolation::Inscattering),
     // or one carries light and the other none, every sample between them is marched too (a second,
     // stencil-limited march), so a shadow edge no depth break marks is not interpolated across.
+    // Finite (only compared).
     float inscatterRefinementThreshold = 0.0f;
-    float bilateralThreshold = 0.1f;     // relative camera-z difference accepted when unwarping
+    float bilateralThreshold = 0.1f;     // relative camera-z difference accepted when unwarping;
+                                         // > 0 and finite (only compared)
     bool minMaxTrees = true;             // 1D min/max binary trees per slice
     ShadowFilter shadowFilter = ShadowFilter::Bilinear;  // 2x2 PCF or nearest texel
     bool fixup = true;                   // ray-march pixels the unwarp cannot interpolate
     uint32_t fixupMaxSteps = 0;          // 0: every shadow-map texel; else at most this many
-    float shadowDepthBias = 0.0f;        // added to the ray's light-space depth before comparing
+    float shadowDepthBias = 0.0f;        // added to the ray's light-space depth before comparing;
+                                         // in [-1, 1], the depth range (beyond it every ray is
+                                         // lit, or shadowed, all the same)
     Interpolation interpolation = Interpolation::ShadowedFraction;
     uint32_t shadowMapSize = 2048;       // the profile's recommendation (the light's own size rules)
     // cone-march (seed 003), taken from `custom` with every profile:
@@ -140,7 +214,8 @@ struct Settings {
     // shrinks on screen (its depth extent over its distance from the camera).
     bool slicePlaneScaling = false;
     // Rgba8Channels only: the luminance of Lin, in Lin's units, that fills the four channels.
-    // 0: from the light and medium (docs/methods.md). Above it the target saturates.
+    // 0: from the light and medium (docs/methods.md). Above it the target saturates. 0, or in
+    // [1e-30, 1e30]: the shader scales by 4 / sliceRange, which must stay finite and non-zero.
     float sliceRange = 0.0f;
     // Rgba8Channels: round each plane's share up or down at random in proportion (stochastic
     // rounding, after the seed's suggestion of interleaved sampling), so that shares under half an
@@ -148,7 +223,7 @@ struct Settings {
     bool sliceDither = true;
     uint32_t sliceBlur = 0;              // seed 002's blur at composite: radius in pixels, 0 off
     // The seed's ambient term beside the inverse square (point and spot lights, 1/m^2): art
-    // direction outside docs/model.md, 0 by default.
+    // direction outside docs/model.md, 0 by default. In [0, limits::kMaxAmbient].
     float sliceAmbient = 0.0f;
     // Scrolling noise (seed 002): a density multiplier 1 + a (4 n1 n2 - 1), mean 1, from two
     // samples of a tiling noise texture projected from the light (FrameDescription::noise, or the
@@ -156,8 +231,11 @@ struct Settings {
     // slices only; the other methods refuse a non-zero amplitude.
     float noiseAmplitude = 0.0f;         // a in [0, 1]
     float noiseScale = 1.0f;             // a tile's size: metres (directional) or, for point and
-                                         // spot lights, the tangent of the angle it spans
-    std::array<float, 4> noiseVelocity{0.05f, 0.02f, -0.03f, 0.04f};  // tiles per second, two layers
+                                         // spot lights, the tangent of the angle it spans; in
+                                         // [limits::kMinNoiseScale, limits::kMaxNoiseScale]
+    // Tiles per second, two layers; any finite value (the scroll is taken modulo one tile in
+    // double precision).
+    std::array<float, 4> noiseVelocity{0.05f, 0.02f, -0.03f, 0.04f};
     // Seed 004's simplified light model (eqs. 2.12-2.17), taken from `custom` with every profile.
     // It drops the transmittance from the light to each point and from each point to the camera,
     // replaces the phase functions by 1/(4 pi) (scattering betaR + betaM) and the light's falloff
@@ -169,8 +247,9 @@ struct Settings {
     // Honoured by beam-tree-analytic and analytic (and auto, which picks one of them); the other
     // methods refuse Simplified. a1 = 1 and a0 = light.radius^2 is seed 001's closed form.
     LightModel lightModel = LightModel::Full;
-    float simplifiedA0 = 0.0025f;  // a0 >= 0 (m^2): the default light radius 0.05 m, squared
-    float simplifiedA1 = 1.0f;     // a1 > 0
+    // a0 in [0, limits::kMaxSimplifiedA0] (m^2): the default light radius 0.05 m, squared.
+    float simplifiedA0 = 0.0025f;
+    float simplifiedA1 = 1.0f;  // a1 in [limits::kMinSimplifiedA1, limits::kMaxSimplifiedA1]
 };
 
 // The settings of a profile (Custom returns the defaults).
@@ -180,8 +259,16 @@ LIGHTSCATTER_API Settings profileSettings(Profile profile);
 // plugin reads the near and far planes from it (the view-space distances it maps to depth 0 and 1),
 // so they cannot disagree with what the depth buffer holds.
 struct Camera {
-    Mat4 view{};        // world -> view (right-handed, looks down -Z)
-    Mat4 projection{};  // view -> Vulkan clip (y down, depth in [0, 1]), perspective
+    // World -> view (right-handed, looks down -Z): a rotation and a translation (to 1e-3), the
+    // camera's position within limits::kMaxLength of the origin on each axis.
+    Mat4 view{};
+    // View -> Vulkan clip (y down, depth in [0, 1]), perspective. Its field of view on each axis
+    // lies in [limits::kMinFovDegrees, limits::kMaxFovDegrees], its near plane at
+    // limits::kMinNearPlane or more and its far plane at limits::kMaxLength or less; with
+    // standard depth, or a D16/D24 depth buffer, the far plane (or with an infinite far plane
+    // medium.maxDistance) is at most 2^b / limits::kDepthStepsPerDistance times the near plane
+    // (b: 24, or 16 for D16; limits says why).
+    Mat4 projection{};
     // Optional, in metres. 0 (the default): taken from the projection. When set, each must agree
     // with the projection (to 0.1%, more where float32 cannot resolve the far plane), or the frame
     // is refused: a projection built for another far plane would silently move the sky and the fog.
@@ -193,12 +280,15 @@ struct Camera {
 
 struct Light {
     LightType type = LightType::Directional;
-    Vec3 position{0, 0, 0};       // point, spot
-    Vec3 direction{0, -1, 0};     // direction light travels (directional), cone axis (spot)
-    Vec3 intensity{1, 1, 1};      // E (W/m^2) for directional, I (W/sr) for point and spot
-    float halfAngleDegrees = 30;  // spot, in (0, 89]
-    float range = 1e30f;          // spot: no light beyond it
-    float radius = 0.05f;         // r0 of docs/model.md, > 0
+    Vec3 position{0, 0, 0};       // point, spot; each in [-limits::kMaxLength, kMaxLength]
+    // Direction light travels (directional), cone axis (spot): finite, not zero (normalised in
+    // double precision, so any such length will do).
+    Vec3 direction{0, -1, 0};
+    // E (W/m^2) for directional, I (W/sr) for point and spot; each in [0, limits::kMaxIntensity].
+    Vec3 intensity{1, 1, 1};
+    float halfAngleDegrees = 30;  // spot, in [limits::kMinHalfAngleDegrees, 89]
+    float range = 1e30f;          // spot: no light beyond it; > 0 and finite (only compared)
+    float radius = 0.05f;         // r0 of docs/model.md, in [limits::kMinRadius, kMaxLength]
     // The shadow map's projection (world -> light clip, Vulkan conventions) and size. Required with
     // a directional or spot light's shadow map (a singular matrix, such as the all-zero default, is
     // refused); for a spot its frustum must contain the cone. Ignored for a point light.
@@ -227,12 +317,14 @@ struct Light {
 };
 
 struct Medium {
+    // Each channel of betaR, betaM and sigmaA in [0, limits::kMaxCoefficient].
     Vec3 betaR{5.8e-6f, 13.5e-6f, 33.1e-6f};  // Rayleigh scattering, 1/m
     Vec3 betaM{2e-5f, 2e-5f, 2e-5f};          // Mie scattering, 1/m
     float g = 0.76f;                          // Mie asymmetry, (-1, 1)
     Vec3 sigmaA{0, 0, 0};                     // absorption, 1/m
     MiePhase phase = MiePhase::CornetteShanks;
-    float maxDistance = 1000.0f;              // sky distance with an infinite far plane, m
+    // Sky distance with an infinite far plane, m; in (0, limits::kMaxLength].
+    float maxDistance = 1000.0f;
 };
 
 // An engine image handed to the plugin for one frame: where it stands and where it must be left.
@@ -343,7 +435,7 @@ struct FrameDescription {
     // Optional tiling noise for Settings::noiseAmplitude (sampled, repeating; red and green are two
     // independent layers with values in [0, 1] and mean 0.5). Without it the plugin makes its own.
     std::optional<ImageInput> noise;
-    double timeSeconds = 0.0;  // scrolls the noise
+    double timeSeconds = 0.0;  // scrolls the noise; any finite value
     // Optional: the scene's occluders for seed 004's methods (at most kMaxOccluders; each checked:
     // finite, orthonormal axes, positive extents, the inner box inside the outer one). Checked
     // only when the frame's method reads them (beam-tree-*, or auto when it picks one); the other

@@ -9,6 +9,7 @@
 #include "frame_graph.h"
 #include "frame_setup.h"
 #include "lightscatter.h"
+#include "lin_storage.h"
 #include "method_choice.h"
 #include "point_table.h"
 #include "rendergraph/compile.h"
@@ -188,6 +189,8 @@ struct Plugin::Impl {
         const float a1 = setup.settings.simplifiedA1;
         s.constants.simplified = {std::clamp(setup.settings.simplifiedA0 / a1, 1e-12f, 1e30f),
                                   std::min(1.0f / a1, 1e30f), 0.0f, 0.0f};
+        const float storage = detail::linStorageScale(setup);
+        s.constants.linStorage = {storage, 1.0f / storage, 0.0f, 0.0f};
         if (!s.spec.cubeShadow) return;
         // Epipolar marches a cube map face by face, each as a spot light's map with its own matrix.
         for (int face = 0; face < 6; ++face) {

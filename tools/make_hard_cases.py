@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Writes scenes/hard/: one SCENE.json per hard case of docs/model.md, over a small open scene (ground,
-a grille of bars, a box) in hard_cases.gltf. Lights placed at screen positions use the same camera
-and Vulkan projection as the host, for the suite's 16:9 screens. Standard library only.
+a grille of bars, a box) in hard_cases.gltf, and a city of boxes 20 km deep in hard_city.gltf. Lights
+placed at screen positions use the same camera and Vulkan projection as the host, for the suite's
+16:9 screens. Standard library only.
 
     /usr/bin/python3 tools/make_hard_cases.py scenes/hard
 """
@@ -67,11 +68,36 @@ def box(center, half):
     return faces
 
 
-def write_gltf(path):
+def hard_cases_quads():
     quads = [[((-15, 0, -15), (0, 1, 0)), ((-15, 0, 15), (0, 1, 0)), ((15, 0, 15), (0, 1, 0)), ((15, 0, -15), (0, 1, 0))]]
     for i in range(-2, 3):
         quads += box((0.5 * i, 3.0, 0.0), (0.08, 0.05, 1.6))
     quads += box((-1.2, 1.0, 0.4), (0.5, 1.0, 0.1))
+    return quads
+
+
+CITY_ROWS, CITY_COLUMNS = 24, 6  # blocks along the view (-z), and across it
+
+
+def city_quads():
+    """Ground 2 km wide and 21 km deep, and towers 10 to 150 m tall on a grid of blocks 800 m deep
+    and 300 m wide either side of an avenue along -z; heights from a fixed linear congruential
+    sequence."""
+    quads = [[((-1000, 0, -20500), (0, 1, 0)), ((-1000, 0, 500), (0, 1, 0)), ((1000, 0, 500), (0, 1, 0)),
+              ((1000, 0, -20500), (0, 1, 0))]]
+    state = 12345
+    for row in range(CITY_ROWS):
+        for column in range(CITY_COLUMNS):
+            state = (1103515245 * state + 12345) % 2**31
+            height = 10.0 + 140.0 * (state / 2**31) ** 2
+            x = (column - (CITY_COLUMNS - 1) / 2) * 300.0
+            x += 60.0 if x > 0 else -60.0  # the avenue
+            z = -400.0 - 800.0 * row
+            quads += box((x, height / 2, z), (90.0, height / 2, 250.0))
+    return quads
+
+
+def write_gltf(path, quads):
     positions, normals, indices = [], [], []
     for q in quads:
         base = len(positions)
@@ -115,6 +141,20 @@ def sun(direction):
 def point(position):
     return {"type": "point", "position": list(position), "intensity": [60.0, 55.0, 50.0], "radius": 0.05,
             "shadowMapSize": 0}
+
+
+def low_sun_city():
+    """A sun 3 degrees above the horizon, from the left and ahead, over the city, seen along the
+    avenue to 20 km with reversed depth: the view-fitted shadow box of a grazing light, in haze."""
+    e = math.radians(3.0)
+    azimuth = math.radians(60.0)  # from the view axis (-z), towards +x
+    direction = (math.cos(e) * math.sin(azimuth), -math.sin(e), math.cos(e) * math.cos(azimuth))
+    light = {"type": "directional", "direction": list(direction), "intensity": [20.0, 18.0, 15.0],
+             "shadowMapSize": 1024}
+    camera = {"position": [0.0, 40.0, 300.0], "target": [0.0, 25.0, -20000.0], "near": 0.5, "far": 20000.0,
+              "reversedZ": True}
+    medium = {"betaR": [5.8e-6, 13.5e-6, 33.1e-6], "betaM": [4e-5, 4e-5, 4e-5], "g": 0.7, "maxDistance": 20000.0}
+    return scene(light, gltf="hard_city.gltf", medium=medium, camera=camera)
 
 
 def scene(light, gltf="hard_cases.gltf", medium=None, camera=None):
@@ -166,13 +206,15 @@ def cases():
         "zero_extinction_channel": scene(spot((0.3, 6, 0.2), (0, -1, 0)),
                                          medium={"betaR": [0, 0.004, 0.008], "betaM": [0, 0.03, 0.03]}),
         "shadow_map_not_pow2": scene(dict(spot((0.3, 6, 0.2), (0, -1, 0)), shadowMapSize=100)),
+        "low_sun_city": low_sun_city(),
     }
 
 
 def main():
     out = Path(sys.argv[1] if len(sys.argv) > 1 else "scenes/hard")
     out.mkdir(parents=True, exist_ok=True)
-    write_gltf(out / "hard_cases.gltf")
+    write_gltf(out / "hard_cases.gltf", hard_cases_quads())
+    write_gltf(out / "hard_city.gltf", city_quads())
     for name, s in cases().items():
         (out / f"{name}.json").write_text(json.dumps(s, indent=2) + "\n")
         print(out / f"{name}.json")

@@ -20,9 +20,10 @@ namespace {
 using nlohmann::json;
 
 constexpr uint64_t kSceneFileCap = 16 * kMiB;
-// The renderer works in single precision: beyond this a coordinate's square overflows, and the
-// view direction and every distance computed from it would be infinite.
-constexpr double kMaxCoordinate = 1e18;
+// The plugin's ranges (lightscatter.h, lightscatter::limits), so that a scene the plugin would
+// refuse is refused here, before any device exists, naming the scene's own field.
+namespace limits = lightscatter::limits;
+constexpr double kMaxCoordinate = limits::kMaxLength;
 
 // The shortest text that reads back as the same value: "0.1" for 0.1f, not "0.100000001490116".
 template <class T>
@@ -67,7 +68,25 @@ class SceneReader {
         }
         if (const json* v = member(root, "ambient")) scene.ambient = nonNegativeVec3(*v, "ambient");
         if (const json* v = member(root, "exposure")) scene.exposure = positive(*v, "exposure");
+        checkDepthResolution(scene.camera, scene.medium);
         return scene;
+    }
+
+    // The host's depth buffer is D32_SFLOAT: with standard depth it steps by 2^-24 near 1, and
+    // the farthest distance it must tell apart (the far plane, or with an infinite one the sky)
+    // may be at most 2^24 / lightscatter::limits::kDepthStepsPerDistance times the near plane,
+    // as the plugin requires; reversed depth has no such limit.
+    void checkDepthResolution(const CameraDesc& camera, const MediumDesc& medium) const {
+        if (camera.reversedZ) return;
+        const double ratio = 16777216.0 / limits::kDepthStepsPerDistance;
+        const double farthest = camera.infiniteFar ? medium.maxDistance : camera.farPlane;
+        if (farthest <= ratio * double(camera.nearPlane)) return;
+        fail("camera.near = " + format(camera.nearPlane) + ": with standard depth the " +
+             (camera.infiniteFar ? "sky (medium.maxDistance, " : "far plane (camera.far, ") +
+             format(float(farthest)) + " m) may be at most " + format(ratio) +
+             " times the near plane, where a float32 depth step is 1/16 of the distance; make "
+             "camera.near " +
+             format(float(farthest / ratio)) + " or more, or camera.reversedZ true");
     }
 
   private:
@@ -160,6 +179,29 @@ class SceneReader {
                  (closedHigh ? "]" : ")") + (inside(x) ? rounding(x, f) : ""));
         }
         return f;
+    }
+
+    // In [lo, hi], checked as the float the value is stored in.
+    float inClosedRange(const json& v, const std::string& name, float lo, float hi) const {
+        const double x = number(v, name);
+        const float f = float(x);
+        auto inside = [&](double d) { return d >= lo && d <= hi; };
+        if (!inside(f)) {
+            fail(name + " = " + format(x) + ": must be in [" + format(lo) + ", " + format(hi) +
+                 "]" + (inside(x) ? rounding(x, f) : ""));
+        }
+        return f;
+    }
+
+    glm::vec3 vec3InRange(const json& v, const std::string& name, float lo, float hi) const {
+        const glm::vec3 out = vec3(v, name);
+        for (int i = 0; i < 3; ++i) {
+            if (!(out[i] >= lo && out[i] <= hi)) {
+                fail(name + "[" + std::to_string(i) + "] = " + format(out[i]) + ": must be in [" +
+                     format(lo) + ", " + format(hi) + "]");
+            }
+        }
+        return out;
     }
 
     glm::vec3 vec3(const json& v, const std::string& name) const {
@@ -273,9 +315,13 @@ class SceneReader {
         if (const json* x = member(v, "target")) camera.target = vec3(*x, "camera.target");
         if (const json* x = member(v, "up")) camera.up = direction(*x, "camera.up");
         if (const json* x = member(v, "fovYDegrees")) {
-            camera.fovYDegrees = inRange(*x, "camera.fovYDegrees", 0.0, 180.0, false);
+            camera.fovYDegrees = inClosedRange(*x, "camera.fovYDegrees", limits::kMinFovDegrees,
+                                               limits::kMaxFovDegrees);
         }
-        if (const json* x = member(v, "near")) camera.nearPlane = positive(*x, "camera.near");
+        if (const json* x = member(v, "near")) {
+            camera.nearPlane =
+                inClosedRange(*x, "camera.near", limits::kMinNearPlane, limits::kMaxLength);
+        }
         if (const json* x = member(v, "far")) camera.farPlane = float(number(*x, "camera.far"));
         if (const json* x = member(v, "reversedZ")) {
             camera.reversedZ = boolean(*x, "camera.reversedZ");
@@ -286,6 +332,10 @@ class SceneReader {
         if (!camera.infiniteFar && !(camera.farPlane > camera.nearPlane)) {
             fail("camera.far = " + format(camera.farPlane) + ": must be > camera.near (" +
                  format(camera.nearPlane) + ") unless camera.infiniteFar is true");
+        }
+        if (!camera.infiniteFar && !(camera.farPlane <= limits::kMaxLength)) {
+            fail("camera.far = " + format(camera.farPlane) + ": must be at most " +
+                 format(double(limits::kMaxLength)) + " unless camera.infiniteFar is true");
         }
         checkCameraPlacement(camera);
     }
@@ -346,20 +396,24 @@ class SceneReader {
         // per-face passes for epipolar): it has one only when the scene asks (shadowMapSize > 0).
         if (light.type == LightKind::Point) light.shadowMapSize = 0;
         if (const json* x = member(v, "position")) {
-            light.position = vec3(*x, name + ".position");
-            checkCoordinates(light.position, name + ".position");
+            light.position =
+                vec3InRange(*x, name + ".position", -limits::kMaxLength, limits::kMaxLength);
         }
         if (const json* x = member(v, "direction")) {
             light.direction = direction(*x, name + ".direction");
         }
         if (const json* x = member(v, "intensity")) {
-            light.intensity = nonNegativeVec3(*x, name + ".intensity");
+            light.intensity = vec3InRange(*x, name + ".intensity", 0.0f, limits::kMaxIntensity);
         }
         if (const json* x = member(v, "halfAngleDegrees")) {
-            light.halfAngleDegrees = inRange(*x, name + ".halfAngleDegrees", 0.0, 89.0, true);
+            light.halfAngleDegrees =
+                inClosedRange(*x, name + ".halfAngleDegrees", limits::kMinHalfAngleDegrees, 89.0f);
         }
         if (const json* x = member(v, "range")) light.range = positive(*x, name + ".range");
-        if (const json* x = member(v, "radius")) light.radius = positive(*x, name + ".radius");
+        if (const json* x = member(v, "radius")) {
+            light.radius =
+                inClosedRange(*x, name + ".radius", limits::kMinRadius, limits::kMaxLength);
+        }
         if (const json* x = member(v, "shadowMapSize")) {
             light.shadowMapSize = shadowMapSize(*x, name + ".shadowMapSize");
         }
@@ -378,12 +432,14 @@ class SceneReader {
 
     void readMedium(const json& v, MediumDesc& medium) const {
         checkKeys(v, "medium", {"betaR", "betaM", "g", "sigmaA", "phase", "maxDistance"});
-        if (const json* x = member(v, "betaR")) medium.betaR = nonNegativeVec3(*x, "medium.betaR");
-        if (const json* x = member(v, "betaM")) medium.betaM = nonNegativeVec3(*x, "medium.betaM");
+        const float c = limits::kMaxCoefficient;
+        if (const json* x = member(v, "betaR"))
+            medium.betaR = vec3InRange(*x, "medium.betaR", 0.0f, c);
+        if (const json* x = member(v, "betaM"))
+            medium.betaM = vec3InRange(*x, "medium.betaM", 0.0f, c);
         if (const json* x = member(v, "g")) medium.g = inRange(*x, "medium.g", -1.0, 1.0, false);
-        if (const json* x = member(v, "sigmaA")) {
-            medium.sigmaA = nonNegativeVec3(*x, "medium.sigmaA");
-        }
+        if (const json* x = member(v, "sigmaA"))
+            medium.sigmaA = vec3InRange(*x, "medium.sigmaA", 0.0f, c);
         if (const json* x = member(v, "phase")) {
             medium.phase = oneOf<PhaseKind>(*x, "medium.phase",
                                             {{"cornette-shanks", PhaseKind::CornetteShanks},
@@ -391,7 +447,7 @@ class SceneReader {
                                              {"hazy", PhaseKind::Hazy}});
         }
         if (const json* x = member(v, "maxDistance")) {
-            medium.maxDistance = positive(*x, "medium.maxDistance");
+            medium.maxDistance = inRange(*x, "medium.maxDistance", 0.0, limits::kMaxLength, true);
         }
     }
 

@@ -6,7 +6,7 @@ namespace ls {
 
 struct FrameConstants {
     glm::mat4 viewProj;
-    glm::mat4 invViewProj;
+    glm::mat4 rayBasis;        // columns 0-2: world vectors x, y, 1 of the ray through NDC (x, y)
     glm::mat4 lightViewProj;
     glm::vec4 cameraPos;       // w: near
     glm::vec4 cameraForward;   // w: far
@@ -26,8 +26,10 @@ struct FrameConstants {
     glm::vec4 simplified;      // seed 004's light model: a0 / a1 (at least 1e-12), 1 / a1, -, -
     glm::vec4 cubeFace;        // x: the cube face an epipolar per-face pass marches, y: 1 in view
     glm::vec4 epipolar3;       // x: in-scattering refinement threshold (0: off), yzw: -
+    // x: the power of two Lin is stored with in float16 targets, y: 1 / x
+    glm::vec4 linStorage{1.0f, 1.0f, 0.0f, 0.0f};
     glm::mat4 cubeFaceViewProj[6];  // point light's cube shadow map: world -> clip per face
 };
-static_assert(sizeof(FrameConstants) == 3 * 64 + 18 * 16 + 6 * 64, "std140 layout of frame.glsl");
+static_assert(sizeof(FrameConstants) == 3 * 64 + 19 * 16 + 6 * 64, "std140 layout of frame.glsl");
 
 }  // namespace ls

@@ -52,12 +52,39 @@ const char* cubeFaceName(int face) {
 
 bool treesFit(uint32_t shadowMapSize) { return treeLevels(shadowMapSize) >= 2; }
 
+namespace {
+
+// The view-space direction D (w = 0) that lands at NDC (x, y) has clip x = x clip w and clip
+// y = y clip w: it is orthogonal to the xyz of rows 0 - x row 3 and 1 - y row 3 of the projection,
+// so D = r0 x r1 + x (r1 x r3) + y (r3 x r0), linear in x and y, whatever the near plane.
+// Unprojecting a point at some depth and subtracting the camera's position instead cancels: at near
+// 1e-8 m the point lies 2e-8 m from a camera whose coordinates' float32 step is 1e-6 m. In double,
+// scaled so that the centre's vector is a unit one pointing ahead (clip w > 0), turned into the
+// world by the view's rotation.
+glm::mat4 rayBasisOf(const glm::mat4& projection, const glm::mat4& view) {
+    const glm::dmat4 p(projection);
+    auto row = [&](int r) { return glm::dvec3(p[0][r], p[1][r], p[2][r]); };
+    const glm::dvec3 r0 = row(0), r1 = row(1), r3 = row(3);
+    const glm::dvec3 x = glm::cross(r1, r3), y = glm::cross(r3, r0), centre = glm::cross(r0, r1);
+    double scale = glm::length(centre);
+    if (!(scale > 0.0)) return glm::mat4(0.0f);  // not a perspective projection (refused before)
+    if (glm::dot(r3, centre) < 0.0) scale = -scale;
+    const glm::dmat3 toWorld = glm::inverse(glm::dmat3(glm::dmat4(view)));
+    glm::mat4 basis(0.0f);
+    basis[0] = glm::vec4(glm::vec3(toWorld * (x / scale)), 0.0f);
+    basis[1] = glm::vec4(glm::vec3(toWorld * (y / scale)), 0.0f);
+    basis[2] = glm::vec4(glm::vec3(toWorld * (centre / scale)), 0.0f);
+    return basis;
+}
+
+}  // namespace
+
 FrameConstants makeFrameConstants(const CameraParams& camera, const LightParams& light,
                                   const MediumParams& medium, const EpipolarSettings& settings,
                                   VkExtent2D screen, const TableLayout& table) {
     FrameConstants f{};
     f.viewProj = camera.projection * camera.view;
-    f.invViewProj = glm::inverse(f.viewProj);
+    f.rayBasis = rayBasisOf(camera.projection, camera.view);
     f.lightViewProj = light.shadowViewProj;
     for (int i = 0; i < 6; ++i) f.cubeFaceViewProj[i] = light.cubeFaceViewProj[i];
     const glm::mat4 invView = glm::inverse(camera.view);

@@ -172,8 +172,12 @@ SlicePlacement placeSlices(const CameraParams& camera, const LightParams& light,
     p.viewToWorld = glm::inverse(camera.view);
     p.boxMin = {lo.x, lo.y, boxFront, spacing};
     p.boxMax = {hi.x, hi.y, static_cast<float>(planes), 4.0f / range};  // a channel holds range / 4
-    const glm::vec4 scroll = settings.noiseVelocity * static_cast<float>(time);
-    p.noise = scroll - glm::floor(scroll);  // the texture repeats: keep the offsets small
+    // The texture repeats: keep the offsets within a tile. In double, so that any finite time
+    // and velocity give one (a float product overflows to inf, and inf - floor(inf) is NaN).
+    for (int i = 0; i < 4; ++i) {
+        const double scroll = double(settings.noiseVelocity[i]) * time;
+        p.noise[i] = std::isfinite(scroll) ? static_cast<float>(scroll - std::floor(scroll)) : 0.0f;
+    }
     p.params = {settings.ambient, settings.noiseAmplitude, 1.0f / settings.noiseScale,
                 medium.maxDistance};
 

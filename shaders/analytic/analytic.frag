@@ -33,5 +33,5 @@ void main() {
         vec3 betaS = frame.betaR.rgb + frame.betaM.rgb;
         lin = frame.lightIntensity.rgb * betaS * (arctanIntegral(t0, t1, b, w) / (4.0 * PI));
     }
-    outInscatter = vec4(lin, 1.0);
+    outInscatter = vec4(storedLin(lin), 1.0);
 }

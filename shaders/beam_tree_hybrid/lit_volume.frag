@@ -31,5 +31,5 @@ void main() {
         E = kSimplifiedModel ? simplifiedInscatter(C, v, t0, min(z, t1))
                              : unshadowedInscatter(C, v, t0, min(z, t1));
     // Triangles are wound counter-clockwise seen from outside: a front face is an entry.
-    outLin = vec4(gl_FrontFacing ? -E : E, 0.0);
+    outLin = vec4(storedLin(gl_FrontFacing ? -E : E), 0.0);
 }

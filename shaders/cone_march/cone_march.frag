@@ -51,5 +51,5 @@ void main() {
         }
         lin *= step;
     }
-    outInscatter = vec4(lin, 1.0);
+    outInscatter = vec4(storedLin(lin), 1.0);
 }

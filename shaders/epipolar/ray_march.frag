@@ -213,6 +213,8 @@ void main() {
         // Where no light reaches the ray the fraction means nothing: alpha 0 keeps it out of
         // every later filter (outside a spot's cone, next to rays inside it).
         defined = any(greaterThan(unshadowed, vec3(0.0))) ? 1.0 : 0.0;
+    } else {
+        lin = storedLin(lin);  // samples carry Lin itself (Interpolation::Inscattering)
     }
     outInscatter = vec4(lin, defined);
 }

@@ -80,6 +80,8 @@ void main() {
         float t0, t1;
         lightInterval(C, v, S, t0, t1);
         value.rgb *= unshadowedInscatter(C, v, t0, t1);
+    } else {
+        value.rgb = loadedLin(value.rgb);  // the samples' Lin, as the ray march stored it
     }
     compositeInto(pixel, value.rgb, S, pc.addOnly != 0);
 }

@@ -6,8 +6,7 @@
 
 // Unit direction of the ray through an NDC position.
 vec3 rayDirection(vec2 ndc) {
-    vec4 p = frame.invViewProj * vec4(ndc, 0.5, 1.0);
-    return normalize(p.xyz / p.w - frame.cameraPos.xyz);
+    return normalize(ndc.x * frame.rayBasis[0].xyz + ndc.y * frame.rayBasis[1].xyz + frame.rayBasis[2].xyz);
 }
 
 vec2 pixelToNdc(vec2 pixelCenter) { return pixelCenter * frame.screenSize.zw * 2.0 - 1.0; }

@@ -16,7 +16,7 @@ void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(p, imageSize(engineColor)))) return;
 #if LS_WITH_LIN
-    vec3 lin = texelFetch(inscatter, p, 0).rgb;
+    vec3 lin = loadedLin(texelFetch(inscatter, p, 0).rgb);
 #else
     vec3 lin = vec3(0.0);
 #endif

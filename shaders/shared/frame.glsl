@@ -20,7 +20,11 @@ const float PI = 3.14159265358979;
 
 layout(std140, set = 0, binding = 0) uniform FrameConstants {
     mat4 viewProj;       // world -> camera clip
-    mat4 invViewProj;    // camera clip -> world
+    // The ray through NDC (x, y) points along x col0 + y col1 + col2 (xyz, unnormalised; col2 is
+    // the unit view axis): made from the projection's rows in double precision, never from a
+    // point unprojected near the camera minus the camera's position, which cancels when the
+    // near plane is small (passes/shared/scattering_params.cpp).
+    mat4 rayBasis;
     mat4 lightViewProj;  // world -> light clip (the shadow map)
     vec4 cameraPos;      // xyz; w: near
     vec4 cameraForward;  // xyz: unit view axis; w: far (ignored when infinite)
@@ -44,9 +48,18 @@ layout(std140, set = 0, binding = 0) uniform FrameConstants {
                          // order below (lightViewProj is then that face's matrix); y: 1 when the
                          // face's frustum reaches the view (always 1 outside per-face passes)
     vec4 epipolar3;      // x: in-scattering refinement threshold (0: off), yzw: -
+    vec4 linStorage;     // x: the power of two Lin is stored with between a method's passes and
+                         // the composite (float16 targets hold at most 65504), y: 1 / x
     // A point light's cube shadow map (LS_CUBE_SHADOW): world -> clip of each face, in Vulkan's
     // face order +X, -X, +Y, -Y, +Z, -Z (the layers of the shadow map).
     mat4 cubeFaceViewProj[6];
 } frame;
+
+// Lin as a method leaves it for the composite and as the composite reads it back: scaled by the
+// frame's power of two (plugin_api/lin_storage.h), which keeps the frame's brightest Lin within
+// float16's range, and clamped to that range (a sampled method's peak may overshoot the bound).
+// Exact: a power of two changes no float16 digit.
+vec3 storedLin(vec3 lin) { return clamp(lin * frame.linStorage.x, vec3(-65504.0), vec3(65504.0)); }
+vec3 loadedLin(vec3 stored) { return stored * frame.linStorage.y; }
 
 #endif

@@ -44,6 +44,6 @@ void main() {
 #if defined(LS_COMPOSITE) && LS_COMPOSITE
     compositeInto(pixel, lin, S, pc.addOnly != 0u);
 #else
-    outInscatter = vec4(lin, 1.0);
+    outInscatter = vec4(storedLin(lin), 1.0);
 #endif
 }

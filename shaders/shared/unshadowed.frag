@@ -24,5 +24,5 @@ void main() {
         advance(acc, t1, vec3(1.0));
         lin = finishInscatter(acc, v);
     }
-    outInscatter = vec4(lin, 1.0);
+    outInscatter = vec4(storedLin(lin), 1.0);
 }

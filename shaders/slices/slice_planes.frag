@@ -91,6 +91,6 @@ void main() {
         if (kDither) value = floor(value * 255.0 + planeHash(uvec2(gl_FragCoord.xy), uint(plane))) / 255.0;
         outShare = mask * value;
     } else {
-        outShare = vec4(share, 0.0);
+        outShare = vec4(storedLin(share), 0.0);
     }
 }

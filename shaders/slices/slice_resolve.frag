@@ -38,7 +38,8 @@ vec4 planeSumAt(vec2 pixelCenter) {
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec4 p = planeSumAt(gl_FragCoord.xy);
-    vec3 lin = kChannels ? (p.r + p.g + p.b + p.a) * resolve.tint.rgb : p.rgb;
+    // The float planes' sum is stored scaled already (storedLin); the 8-bit channels' is not.
+    vec3 lin = kChannels ? (p.r + p.g + p.b + p.a) * resolve.tint.rgb : loadedLin(p.rgb);
     if (kClosedFormOutsideSlab && kLightType == LIGHT_DIRECTIONAL) {
         vec3 C = frame.cameraPos.xyz;
         vec3 v = pixelRayDirection(pixel);
@@ -47,5 +48,5 @@ void main() {
         lin += unshadowedInscatter(C, v, 0.0, min(S, resolve.slab.x / c));
         lin += unshadowedInscatter(C, v, resolve.slab.y / c, S);
     }
-    outInscatter = vec4(lin, 1.0);
+    outInscatter = vec4(storedLin(lin), 1.0);
 }

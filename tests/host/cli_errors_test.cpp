@@ -45,7 +45,7 @@ TEST(CliErrors, AFarCameraIsCalledFar) {
     const std::string s =
         sceneWith("far.json", R"("camera": {"position": [1e20, 0, 0], "target": [0, 0, 0]})");
     expectFailure(run("render " + s),
-                  "far.json: camera.position[0] = 1e+20: must be within +-1e+18");
+                  "far.json: camera.position[0] = 1e+20: must be within +-1e+08");
 }
 
 TEST(CliErrors, SceneValuesTheFloatsLoseAreNamedInTheScenesTerms) {

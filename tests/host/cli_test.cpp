@@ -226,7 +226,7 @@ TEST(Cli, SimplifiedLightModelSettings) {
     writeFile("a1.json", R"({"lightModel": "simplified", "simplifiedA1": -2})");
     expectFailure(
         run("render " + scene("point_fog") + " --method beam-tree-analytic --settings a1.json"),
-        "a1.json: simplifiedA1 = -2: must be finite and > 0");
+        "a1.json: simplifiedA1 = -2: must be in [0.001, 1000]");
 }
 
 TEST(Cli, BudgetOfSlicesPrintsTheirTextures) {

@@ -259,13 +259,14 @@ TEST_F(SceneFileTest, AGltfPathThatIsNotARegularFileSaysWhatItIs) {
 // Float overflow used to make a far camera look like an up vector parallel to the view.
 TEST_F(SceneFileTest, AFarCameraIsReportedAsTooFar) {
     EXPECT_EQ(errorFor(R"({"camera": {"position": [1e20, 0, 0], "target": [0, 0, 0]}})"),
-              "camera.position[0] = 1e+20: must be within +-1e+18 (the renderer works in single "
+              "camera.position[0] = 1e+20: must be within +-1e+08 (the renderer works in single "
               "precision)");
     EXPECT_EQ(errorFor(R"({"camera": {"position": [0, 0, 0], "target": [0, 0, -3e38]}})"),
-              "camera.target[2] = -3e+38: must be within +-1e+18 (the renderer works in single "
+              "camera.target[2] = -3e+38: must be within +-1e+08 (the renderer works in single "
               "precision)");
-    // Large but representable: a valid camera.
-    EXPECT_EQ(errorFor(R"({"camera": {"position": [1e17, 0, 0], "target": [-1e17, 0, 0]}})"),
+    // Large but within the plugin's lightscatter::limits::kMaxLength: a valid camera.
+    EXPECT_EQ(errorFor(R"({"camera": {"position": [1e8, 0, 0], "target": [-1e8, 0, 0], "far": 1e8,
+                                   "reversedZ": true}})"),
               "(no error)");
     EXPECT_EQ(errorFor(R"({"light": {"direction": [1e20, 0, 0]}})"), "(no error)");
     EXPECT_EQ(errorFor(R"({"camera": {"up": [0, 1e30, 0]}})"), "(no error)");
@@ -274,15 +275,57 @@ TEST_F(SceneFileTest, AFarCameraIsReportedAsTooFar) {
 // Values in range as written but not as the floats the plugin receives (1e-50 becomes 0) were
 // refused later by the plugin, in its own field names.
 TEST_F(SceneFileTest, ValuesAreCheckedAsTheFloatsTheyBecome) {
-    EXPECT_EQ(errorFor(R"({"light": {"halfAngleDegrees": 1e-50}})"),
-              "light.halfAngleDegrees = 1e-50: must be in (0, 89] (it is 0 in single precision)");
-    EXPECT_EQ(errorFor(R"({"camera": {"near": 1e-50}})"),
-              "camera.near = 1e-50: must be > 0 (it is 0 in single precision)");
-    EXPECT_EQ(errorFor(R"({"light": {"radius": 1e-46}})"),
-              "light.radius = 1e-46: must be > 0 (it is 0 in single precision)");
-    EXPECT_EQ(errorFor(R"({"camera": {"fovYDegrees": 179.999999999}})"),
-              "camera.fovYDegrees = 179.999999999: must be in (0, 180) (it is 180 in single "
-              "precision)");
+    EXPECT_EQ(errorFor(R"({"light": {"range": 1e-50}})"),
+              "light.range = 1e-50: must be > 0 (it is 0 in single precision)");
+    EXPECT_EQ(errorFor(R"({"exposure": 1e-46})"),
+              "exposure = 1e-46: must be > 0 (it is 0 in single precision)");
+    EXPECT_EQ(errorFor(R"({"camera": {"fovYDegrees": 177.000001}})"),
+              "(no error)");  // 177 as a float
+}
+
+// The plugin's ranges (lightscatter.h, lightscatter::limits), refused before any device exists.
+TEST_F(SceneFileTest, ThePluginsRangesAreTheScenesRanges) {
+    EXPECT_EQ(errorFor(R"({"light": {"intensity": [1e10, 1, 1]}})"),
+              "light.intensity[0] = 1e+10: must be in [0, 1e+09]");
+    EXPECT_EQ(errorFor(R"({"lights": [{}, {"position": [0, -2e8, 0]}]})"),
+              "lights[1].position[1] = -2e+08: must be in [-1e+08, 1e+08]");
+    EXPECT_EQ(errorFor(R"({"light": {"radius": 1e-4}})"),
+              "light.radius = 1e-04: must be in [0.001, 1e+08]");
+    EXPECT_EQ(errorFor(R"({"light": {"halfAngleDegrees": 0.01}})"),
+              "light.halfAngleDegrees = 0.01: must be in [0.1, 89]");
+    EXPECT_EQ(errorFor(R"({"medium": {"betaM": [1, 3.4e38, 1]}})"),
+              "medium.betaM[1] = 3.4e+38: must be in [0, 1000]");
+    EXPECT_EQ(errorFor(R"({"medium": {"sigmaA": [0, 0, 2000]}})"),
+              "medium.sigmaA[2] = 2000: must be in [0, 1000]");
+    EXPECT_EQ(errorFor(R"({"medium": {"maxDistance": 1e9}})"),
+              "medium.maxDistance = 1e+09: must be in (0, 1e+08]");
+    EXPECT_EQ(errorFor(R"({"camera": {"fovYDegrees": 1e-20}})"),
+              "camera.fovYDegrees = 1e-20: must be in [1e-04, 177]");
+    EXPECT_EQ(errorFor(R"({"camera": {"far": 2e8}})"),
+              "camera.far = 2e+08: must be at most 1e+08 unless camera.infiniteFar is true");
+    EXPECT_EQ(errorFor(R"({"camera": {"near": 1e-30, "reversedZ": true}})"),
+              "camera.near = 1e-30: must be in [1e-29, 1e+08]");
+}
+
+// Standard depth in the host's D32_SFLOAT buffer steps by 2^-24 near 1: the far plane (or the sky
+// with an infinite far plane) may be at most 2^20 times the near plane. Reversed depth may not.
+TEST_F(SceneFileTest, ANearPlaneTheDepthBufferCannotResolveIsRefused) {
+    EXPECT_EQ(
+        errorFor(R"({"camera": {"near": 1e-8, "far": 60}})"),
+        "camera.near = 1e-08: with standard depth the far plane (camera.far, 60 m) may be at most "
+        "1048576 times the near plane, where a float32 depth step is 1/16 of the distance; make "
+        "camera.near 5.722046e-05 or more, or camera.reversedZ true");
+    EXPECT_EQ(
+        errorFor(
+            R"({"camera": {"near": 1e-8, "infiniteFar": true}, "medium": {"maxDistance": 60}})"),
+        "camera.near = 1e-08: with standard depth the sky (medium.maxDistance, 60 m) may be at "
+        "most 1048576 times the near plane, where a float32 depth step is 1/16 of the distance; "
+        "make camera.near 5.722046e-05 or more, or camera.reversedZ true");
+    EXPECT_EQ(errorFor(R"({"camera": {"near": 1e-8, "far": 60, "reversedZ": true}})"),
+              "(no error)");
+    EXPECT_EQ(errorFor(R"({"camera": {"near": 1e-8, "reversedZ": true, "infiniteFar": true}})"),
+              "(no error)");
+    EXPECT_EQ(errorFor(R"({"camera": {"near": 1e-4, "far": 100}})"), "(no error)");
 }
 
 TEST_F(SceneFileTest, UnknownKeysAreRefusedWithTheKnownOnes) {
@@ -343,19 +386,20 @@ TEST_F(SceneFileTest, NamesAndPaths) {
 
 TEST_F(SceneFileTest, NumbersOutOfRange) {
     EXPECT_EQ(errorFor(R"({"camera": {"fovYDegrees": 190}})"),
-              "camera.fovYDegrees = 190: must be in (0, 180)");
+              "camera.fovYDegrees = 190: must be in [1e-04, 177]");
     EXPECT_EQ(errorFor(R"({"camera": {"fovYDegrees": 180}})"),
-              "camera.fovYDegrees = 180: must be in (0, 180)");
+              "camera.fovYDegrees = 180: must be in [1e-04, 177]");
     EXPECT_EQ(errorFor(R"({"camera": {"fovYDegrees": 0}})"),
-              "camera.fovYDegrees = 0: must be in (0, 180)");
+              "camera.fovYDegrees = 0: must be in [1e-04, 177]");
     EXPECT_EQ(errorFor(R"({"medium": {"g": 1.2}})"), "medium.g = 1.2: must be in (-1, 1)");
     EXPECT_EQ(errorFor(R"({"medium": {"g": -1}})"), "medium.g = -1: must be in (-1, 1)");
     EXPECT_EQ(errorFor(R"({"light": {"halfAngleDegrees": 0}})"),
-              "light.halfAngleDegrees = 0: must be in (0, 89]");
+              "light.halfAngleDegrees = 0: must be in [0.1, 89]");
     EXPECT_EQ(errorFor(R"({"light": {"halfAngleDegrees": 89.5}})"),
-              "light.halfAngleDegrees = 89.5: must be in (0, 89]");
-    EXPECT_EQ(errorFor(R"({"camera": {"near": 0}})"), "camera.near = 0: must be > 0");
-    EXPECT_EQ(errorFor(R"({"camera": {"near": -0.1}})"), "camera.near = -0.1: must be > 0");
+              "light.halfAngleDegrees = 89.5: must be in [0.1, 89]");
+    EXPECT_EQ(errorFor(R"({"camera": {"near": 0}})"), "camera.near = 0: must be in [1e-29, 1e+08]");
+    EXPECT_EQ(errorFor(R"({"camera": {"near": -0.1}})"),
+              "camera.near = -0.1: must be in [1e-29, 1e+08]");
     EXPECT_EQ(errorFor(R"({"camera": {"near": 2, "far": 1.5}})"),
               "camera.far = 1.5: must be > camera.near (2) unless camera.infiniteFar is true");
     EXPECT_EQ(errorFor(R"({"camera": {"near": 0.1, "far": 0.1}})"),
@@ -369,8 +413,10 @@ TEST_F(SceneFileTest, NumbersOutOfRange) {
     EXPECT_EQ(errorFor(R"({"light": {"shadowMapSize": -1}})"),
               "light.shadowMapSize = -1: must be in [0, 16384]");
     EXPECT_EQ(errorFor(R"({"light": {"range": 0}})"), "light.range = 0: must be > 0");
-    EXPECT_EQ(errorFor(R"({"light": {"radius": -0.05}})"), "light.radius = -0.05: must be > 0");
-    EXPECT_EQ(errorFor(R"({"medium": {"maxDistance": 0}})"), "medium.maxDistance = 0: must be > 0");
+    EXPECT_EQ(errorFor(R"({"light": {"radius": -0.05}})"),
+              "light.radius = -0.05: must be in [0.001, 1e+08]");
+    EXPECT_EQ(errorFor(R"({"medium": {"maxDistance": 0}})"),
+              "medium.maxDistance = 0: must be in (0, 1e+08]");
     EXPECT_EQ(errorFor(R"({"exposure": -2})"), "exposure = -2: must be > 0");
     EXPECT_EQ(errorFor(R"({"models": [{"gltf": ")" + kBox + R"(", "scale": [1, 0, 1]}]})"),
               "models[0].scale = 0: must not be 0 (it flattens the model)");
@@ -378,13 +424,13 @@ TEST_F(SceneFileTest, NumbersOutOfRange) {
 
 TEST_F(SceneFileTest, NegativeCoefficients) {
     EXPECT_EQ(errorFor(R"({"medium": {"betaR": [1e-5, -1e-5, 0]}})"),
-              "medium.betaR[1] = -1e-05: must be >= 0");
+              "medium.betaR[1] = -1e-05: must be in [0, 1000]");
     EXPECT_EQ(errorFor(R"({"medium": {"betaM": [-0.5, 0, 0]}})"),
-              "medium.betaM[0] = -0.5: must be >= 0");
+              "medium.betaM[0] = -0.5: must be in [0, 1000]");
     EXPECT_EQ(errorFor(R"({"medium": {"sigmaA": [0, 0, -2]}})"),
-              "medium.sigmaA[2] = -2: must be >= 0");
+              "medium.sigmaA[2] = -2: must be in [0, 1000]");
     EXPECT_EQ(errorFor(R"({"light": {"intensity": [1, -1, 1]}})"),
-              "light.intensity[1] = -1: must be >= 0");
+              "light.intensity[1] = -1: must be in [0, 1e+09]");
     EXPECT_EQ(errorFor(R"({"sky": {"color": [0, 0, -0.25]}})"),
               "sky.color[2] = -0.25: must be >= 0");
     EXPECT_EQ(errorFor(R"({"ambient": [-3, 0, 0]})"), "ambient[0] = -3: must be >= 0");

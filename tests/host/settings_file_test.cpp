@@ -140,7 +140,13 @@ TEST_F(HostSettingsFile, BadFieldsAreNamed) {
     EXPECT_EQ(errorFor(R"({"sliceBlur": 9})"), "sliceBlur = 9: at most 8 pixels");
     EXPECT_EQ(errorFor(R"({"sliceDither": "yes"})"),
               "sliceDither = \"yes\": must be true or false");
-    EXPECT_EQ(errorFor(R"({"noiseScale": 0})"), "noiseScale = 0: must be finite and > 0");
+    EXPECT_EQ(errorFor(R"({"noiseScale": 0})"),
+              "noiseScale = 0: must be in [1e-06, 1e+08] (a tile's size; lightscatter.h, "
+              "limits::kMinNoiseScale)");
+    // Rendered an all-NaN Lin with slices and exit 0 (issue #22): now refused before any device.
+    EXPECT_EQ(errorFor(R"({"sliceAmbient": 1e37})"),
+              "sliceAmbient = 1e+37: must be in [0, 1e+06] (1/m^2, beside the inverse square; "
+              "lightscatter.h, limits::kMaxAmbient)");
     EXPECT_EQ(errorFor(R"({"noiseVelocity": [1, 2, 3]})"),
               "noiseVelocity = [1,2,3]: must be an array of 4 numbers");
     EXPECT_EQ(errorFor(R"({"noiseVelocity": 0.1})"),
@@ -148,9 +154,12 @@ TEST_F(HostSettingsFile, BadFieldsAreNamed) {
     EXPECT_EQ(errorFor(R"({"lightModel": "cheap"})"),
               "lightModel = \"cheap\": must be one of full, simplified");
     EXPECT_EQ(errorFor(R"({"simplifiedA1": 0})"),
-              "simplifiedA1 = 0: must be finite and > 0 (seed 004's falloff I / (a1 r^2 + a0))");
-    EXPECT_EQ(errorFor(R"({"simplifiedA0": -1})"),
-              "simplifiedA0 = -1: must be finite and >= 0 (seed 004's falloff I / (a1 r^2 + a0))");
+              "simplifiedA1 = 0: must be in [0.001, 1000] (seed 004's falloff I / (a1 r^2 + a0); "
+              "lightscatter.h, limits::kMinSimplifiedA1)");
+    EXPECT_EQ(
+        errorFor(R"({"simplifiedA0": -1})"),
+        "simplifiedA0 = -1: must be in [0, 1e+16] (m^2, seed 004's falloff I / (a1 r^2 + a0); "
+        "lightscatter.h, limits::kMaxSimplifiedA0)");
     EXPECT_EQ(errorFor(R"({"simplifiedA0": "small"})"),
               "simplifiedA0 = \"small\": must be a number");
     EXPECT_EQ(errorFor(R"({"noiseVelocity": [0, 0, true, 0]})"),

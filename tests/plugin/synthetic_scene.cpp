@@ -58,14 +58,17 @@ void unprojectRay(const glm::dmat4& inv, double x, double y, glm::dvec3& o, glm:
 
 PixelRay pixelRay(const Scene& scene, const View& view, uint32_t width, uint32_t height, uint32_t x,
                   uint32_t y, double maxDistance) {
-    const glm::dmat4 inv = glm::inverse(view.viewProj());
     const double nx = (x + 0.5) / width * 2.0 - 1.0, ny = (y + 0.5) / height * 2.0 - 1.0;
-    glm::dvec3 o, d;
-    unprojectRay(inv, nx, ny, o, d);
     PixelRay r;
     r.origin = glm::dvec3(glm::inverse(glm::dmat4(view.view))[3]);
-    glm::dvec4 far = inv * glm::dvec4(nx, ny, 0.5, 1.0);
-    r.dir = glm::normalize(glm::dvec3(far) / far.w - r.origin);
+    // The view-space direction whose clip x and y are nx and ny times its clip w: orthogonal to
+    // rows 0 - nx row 3 and 1 - ny row 3 of the projection. Unprojecting a point and subtracting
+    // the camera's position would cancel, even in double, with a near plane of 1e-15 m.
+    const glm::dmat4 p(view.projection);
+    auto row = [&](int i) { return glm::dvec3(p[0][i], p[1][i], p[2][i]); };
+    glm::dvec3 d = glm::cross(row(0) - nx * row(3), row(1) - ny * row(3));
+    if (glm::dot(d, row(3)) < 0.0) d = -d;  // ahead: clip w > 0
+    r.dir = glm::normalize(glm::inverse(glm::dmat3(glm::dmat4(view.view))) * d);
     const glm::dvec3 forward = -glm::normalize(glm::dvec3(glm::inverse(glm::dmat4(view.view))[2]));
     const double cosAxis = glm::dot(r.dir, forward);
     double t = scene.intersect(r.origin, r.dir);
