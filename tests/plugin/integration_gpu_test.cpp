@@ -410,10 +410,12 @@ TEST_F(PluginIntegrationGpu, ReportsOfFramesNoLongerHeldAreRefused) {
     }
 }
 
-// Seed 004's occluders: bad boxes are refused naming the occluder, the box and the rule.
+// Seed 004's occluders: bad boxes are refused naming the occluder, the box and the rule, by the
+// methods that read them; the others ignore them (issue #22).
 TEST_F(PluginIntegrationGpu, BadOccludersAreRefused) {
     auto one = [](const std::function<void(lightscatter::Occluder&)>& change) {
         return [change](lightscatter::FrameDescription& d) {
+            d.method = Method::BeamTreeAnalytic;
             d.occluders.assign(3, lightscatter::Occluder{});
             change(d.occluders[2]);
         };
@@ -431,8 +433,17 @@ TEST_F(PluginIntegrationGpu, BadOccludersAreRefused) {
                       o.inner->center = {0.3f, 0.0f, 0.0f};  // pokes out of the outer box
                   }),
                   "occluders[2].inner is not inside occluders[2].outer");
-    expectRefused([](auto& d) { d.occluders.resize(lightscatter::kMaxOccluders + 1); }, "occluders has 4097 entries",
-                  "at most 4096");
+    expectRefused(
+        [](auto& d) {
+            d.method = Method::BeamTreeSampling;
+            d.occluders.resize(lightscatter::kMaxOccluders + 1);
+        },
+        "occluders has 4097 entries", "at most 4096");
+    // Epipolar reads no occluder: a bad box changes nothing.
+    const auto ignored = render([](auto& d) {
+        d.occluders.assign(3, lightscatter::Occluder{});
+        d.occluders[2].outer.halfExtents[0] = -1.0f;
+    });
     // A good set is accepted (and, with no method reading it yet, changes nothing).
     const auto plain = render([](auto&) {});
     const auto withOccluders = render([](auto& d) {
@@ -443,4 +454,5 @@ TEST_F(PluginIntegrationGpu, BadOccludersAreRefused) {
         d.occluders[1].inner->halfExtents = {0.25f, 0.25f, 0.25f};
     });
     EXPECT_EQ(plain, withOccluders);
+    EXPECT_EQ(plain, ignored);
 }
