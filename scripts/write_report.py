@@ -730,10 +730,11 @@ def main():
                 nonfinite += r['nonFinite']
                 line += f" {fmt(r['error']['meanRelative'])} | {table.get(scene, fallback)} |"
             else:
-                line += " - | - |"  # not run: the beam tree needs a point or spot light
+                line += " - | - |"  # not run: a directional light (beam tree), a cube map (slices, beam tree)
         p(line + f" {nonfinite} |")
     p("\nThe beam-tree methods run on the point and spot cases only (\"-\": a directional light). The host "
-      "gives them one box per connected part of the scene's glTF primitives.\n")
+      "gives them one box per connected part of the scene's glTF primitives. A point light's cube shadow map "
+      "(point in cage) is sampled by epipolar and brute force only.\n")
 
     p("## Which profile for which budget\n")
     for scene in scenes:
