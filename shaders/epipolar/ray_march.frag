@@ -126,7 +126,10 @@ void marchLine(inout Inscatter acc, LineRay r, int slice) {
         int j = i + (1 << level) - 1;
         COUNT(++counted[kCountTreeNodes]);
         vec2 node = treeNode(level, i >> level, slice, n);
-        float zi = compareDepth(depthAt(r, i)), zj = compareDepth(depthAt(r, j));
+        // The node's samples decide the ray over (i - 1, j], so its depths from i - 1 on: a step
+        // split where the ray passes a texel's depth (advanceSample) is never inside a node taken
+        // whole.
+        float zi = compareDepth(depthAt(r, i - 1)), zj = compareDepth(depthAt(r, j));
         if (!kLightColor && max(zi, zj) <= node.x) {
             advance(acc, distanceAt(r, float(j)), vec3(1.0));  // lit throughout
         } else if (min(zi, zj) > node.y) {
