@@ -202,9 +202,9 @@ TEST_F(PointCageGpu, OnlyEpipolarAndBruteForceSampleTheCubeMap) {
 // and its ray passes through the light: into one texel of each face, so one shadow-map look-up
 // decided each face's part of it, and behind the light that look-up fell on the bar, the surface
 // the ray ends on and the map holds, with half the light's glow on that part (docs/epipolar.md, "A
-// point light's cube map"). The pixels around the light interpolate from that sample: measured
-// 28% too dark before, 0.3% after. At 160x90 the frame is then within 1.5x of brute force's error
-// (measured 1.33x; 1.98x before).
+// point light's cube map", "Near the light's screen position"). The four pixels nearest the
+// light interpolate from that sample: measured 0.289 off the reference before, 0.0075 after. At
+// 160x90 the frame is then within 1.5x of brute force's error (measured 1.33x; 1.98x before).
 TEST_F(PointCageGpu, EpipolarMatchesTheReferenceAtTheLightsScreenPosition) {
     const host::SceneDesc scene =
         host::loadSceneFile(std::string(LS_SOURCE_DIR) + "/scenes/hard/point_in_cage.json");
