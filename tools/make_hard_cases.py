@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Writes scenes/hard/: one SCENE.json per hard case of docs/model.md, over a small open scene (ground,
-a grille of bars, a box) in hard_cases.gltf. Lights placed at screen positions use the same camera
-and Vulkan projection as the host, for the suite's 16:9 screens. Standard library only.
+a grille of bars, a box) in hard_cases.gltf, or (point_in_cage) a small cage of bars on the ground in
+hard_cage.gltf. Lights placed at screen positions use the same camera and Vulkan projection as the
+host, for the suite's 16:9 screens. Standard library only.
 
     /usr/bin/python3 tools/make_hard_cases.py scenes/hard
 """
