@@ -62,13 +62,13 @@ void main() {
     int last = samples - 1;
     int sectionStart = (local / step) * step;
     int sectionEnd = min(sectionStart + step, last - base);  // local index, may be 128 (next group)
-    // A point or spot light on screen: every line starts at it, and there a sample's ray passes the
-    // light at a distance proportional to the sample's index. What the sample carries is decided near
-    // that closest approach, within about that distance of the light: near the light it changes
-    // over a few samples, further out over many (a cage around the light, seen from outside, is a
-    // ring of shadows a few pixels across). The first section of such a line is cut at samples 1, 2,
-    // 4, ..., so that the ray-marching samples there are spaced like their distance from the light
-    // (log2(initial step) more per line); a sun has no such scale.
+    // A point or spot light on screen: every line starts at it, and there a sample's ray passes
+    // the light at a distance proportional to the sample's index. What the sample carries is
+    // decided near that closest approach, within about that distance of the light: near the light
+    // it changes over a few samples, further out over many (a cage around the light, seen from
+    // outside, is a ring of shadows a few pixels across). The first section of such a line is cut
+    // at samples 1, 2, 4, ..., so that the ray-marching samples there are spaced like their
+    // distance from the light (log2(initial step) more per line); a sun has no such scale.
     if (kLightType != LIGHT_DIRECTIONAL && frame.lightScreen.w > 0.5 && base == 0 && local < step) {
         sectionStart = local == 0 ? 0 : 1 << findMSB(local);
         sectionEnd = min(max(2 * sectionStart, 1), sectionEnd);

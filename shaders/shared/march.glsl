@@ -28,14 +28,14 @@ float segmentDistance(FrustumSegment s, float a) {
     return mix(s.f0 * s.iw0, s.f1 * s.iw1, a) / mix(s.iw0, s.iw1, a);
 }
 
-// Adds the part [aA, aB] of s seen through one footprint of the shadow map (times color). Each texel
-// of the footprint lights the points in front of its depth, and the ray's depth is monotonic in a,
-// so a texel that lights one end of the part and not the other changes once, where the ray passes
-// its depth: the part is split there. A part no texel changes on is one step with the visibility at
-// its end, as marchFrustumSegmentOf takes it. The split matters where a long stretch of ray projects
-// into one texel: a ray towards or away from the light (the light's own screen position: its ray
-// passes through a point light, and behind it the end of the ray, a surface that the map itself
-// holds, would otherwise decide the whole stretch with half the light's glow on it).
+// Adds the part [aA, aB] of s seen through one footprint of the shadow map (times color). Each
+// texel of the footprint lights the points in front of its depth, and the ray's depth is monotonic
+// in a, so a texel that lights one end of the part and not the other changes once, where the ray
+// passes its depth: the part is split there. A part no texel changes on is one step with the
+// visibility at its end, as marchFrustumSegmentOf takes it. The split matters where a long stretch
+// of ray projects into one texel: a ray towards or away from the light (the light's own screen
+// position: its ray passes through a point light, and behind it the end of the ray, a surface that
+// the map itself holds, would otherwise decide the whole stretch with half the light's glow on it).
 void advanceThroughFootprint(inout Inscatter acc, FrustumSegment s, ShadowFootprint fp, float aA,
                              float aB, vec3 color) {
     float zA = compareDepth(mix(s.z0, s.z1, aA)), zB = compareDepth(mix(s.z0, s.z1, aB));
@@ -43,7 +43,8 @@ void advanceThroughFootprint(inout Inscatter acc, FrustumSegment s, ShadowFootpr
     if (fp.inside && litA != litB) {
         vec4 c = vec4(aB);
         for (int k = 0; k < 4; ++k)
-            if (litA[k] != litB[k]) c[k] = mix(aA, aB, clamp((fp.depth[k] - zA) / (zB - zA), 0.0, 1.0));
+            if (litA[k] != litB[k])
+                c[k] = mix(aA, aB, clamp((fp.depth[k] - zA) / (zB - zA), 0.0, 1.0));
         // Sorted, so that the pieces between crossings follow each other along the ray.
         c.xy = vec2(min(c.x, c.y), max(c.x, c.y));
         c.zw = vec2(min(c.z, c.w), max(c.z, c.w));
