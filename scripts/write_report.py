@@ -702,8 +702,8 @@ def main():
     w, h = hard[0]["size"]
     p(f"Every hard case of [model.md](model.md#hard-cases) as a scene (`scenes/hard`, from `tools/make_hard_cases.py`), {w}x{h}, balanced "
       "profile. `test_hard_suite` asserts finite pixels and the bound below for each (mean relative error); thin "
-      "media must stay within 1% of float64. A point light is unshadowed in the plugin but shadowed in the "
-      "reference, so its cases count the missing shadows as error.\n")
+      "media must stay within 1% of float64. A point light without a cube shadow map is unshadowed in the "
+      "plugin but shadowed in the reference, so its cases count the missing shadows as error.\n")
     def named_bounds(start, end):
         block = test.split(start)[1].split(end)[0]
         return ({n: float(v) for n, v in re.findall(r'\{"(\w+)", ([\d.]+)\}', block)},
@@ -730,10 +730,11 @@ def main():
                 nonfinite += r['nonFinite']
                 line += f" {fmt(r['error']['meanRelative'])} | {table.get(scene, fallback)} |"
             else:
-                line += " - | - |"  # not run: the beam tree needs a point or spot light
+                line += " - | - |"  # not run: a directional light (beam tree), a cube map (slices, beam tree)
         p(line + f" {nonfinite} |")
     p("\nThe beam-tree methods run on the point and spot cases only (\"-\": a directional light). The host "
-      "gives them one box per connected part of the scene's glTF primitives.\n")
+      "gives them one box per connected part of the scene's glTF primitives. A point light's cube shadow map "
+      "(point in cage) is sampled by epipolar and brute force only.\n")
 
     p("## Which profile for which budget\n")
     for scene in scenes:

@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """Writes scenes/hard/: one SCENE.json per hard case of docs/model.md, over a small open scene (ground,
-a grille of bars, a box) in hard_cases.gltf, and a city of boxes 20 km deep in hard_city.gltf. Lights
-placed at screen positions use the same camera and Vulkan projection as the host, for the suite's
-16:9 screens. Standard library only.
+a grille of bars, a box) in hard_cases.gltf, a city of boxes 20 km deep in hard_city.gltf, or
+(point_in_cage) a small cage of bars on the ground in hard_cage.gltf. Lights placed at screen
+positions use the same camera and Vulkan projection as the host, for the suite's 16:9 screens.
+Standard library only.
 
     /usr/bin/python3 tools/make_hard_cases.py scenes/hard
 """
@@ -68,8 +69,12 @@ def box(center, half):
     return faces
 
 
-def hard_cases_quads():
-    quads = [[((-15, 0, -15), (0, 1, 0)), ((-15, 0, 15), (0, 1, 0)), ((15, 0, 15), (0, 1, 0)), ((15, 0, -15), (0, 1, 0))]]
+GROUND = [[((-15, 0, -15), (0, 1, 0)), ((-15, 0, 15), (0, 1, 0)), ((15, 0, 15), (0, 1, 0)), ((15, 0, -15), (0, 1, 0))]]
+
+
+def open_scene_quads():
+    """The ground, a grille of five bars and a box: hard_cases.gltf."""
+    quads = list(GROUND)
     for i in range(-2, 3):
         quads += box((0.5 * i, 3.0, 0.0), (0.08, 0.05, 1.6))
     quads += box((-1.2, 1.0, 0.4), (0.5, 1.0, 0.1))
@@ -94,6 +99,57 @@ def city_quads():
             x += 60.0 if x > 0 else -60.0  # the avenue
             z = -400.0 - 800.0 * row
             quads += box((x, height / 2, z), (90.0, height / 2, 250.0))
+    return quads
+
+
+# A small cage of bars around a point light (hard_cage.gltf): bars on all six sides, so the cube
+# map's six faces all carry shadows, and from outside the cage the bars frame the light's glow.
+CAGE_CENTER = (0.0, 1.2, 0.0)
+CAGE_HALF = 0.3    # half the cage's size, metres
+CAGE_BAR = 0.02    # half a bar's thickness
+CAGE_STEPS = (-0.15, 0.0, 0.15)  # inner bars along a side
+# The light hangs off the cage's centre, so that the camera, 2.7 m out and 3 degrees up on the line
+# from the back wall's middle bar through the light, sees the light through a gap of the front wall
+# with that bar right behind it.
+CAGE_LIGHT = (0.07, 1.26, 0.05)
+
+
+def cage_camera(distance=2.7, elevation=3.0):
+    back_bar = (CAGE_CENTER[0], CAGE_LIGHT[1], CAGE_CENTER[2] - CAGE_HALF)
+    across = norm((CAGE_LIGHT[0] - back_bar[0], 0.0, CAGE_LIGHT[2] - back_bar[2]))
+    e = math.radians(elevation)
+    direction = add(mul(across, math.cos(e)), (0.0, math.sin(e), 0.0))
+    return {"position": [round(x, 4) for x in add(CAGE_LIGHT, mul(direction, distance))],
+            "target": [round(x, 4) for x in add(CAGE_LIGHT, (0.05, -0.1, 0.0))]}
+
+
+def cage_bars():
+    """(centre, half size) of every bar of the cage, as scripts/make_point_cage.py builds its cage."""
+    lx, ly, lz = CAGE_CENTER
+    h, b = CAGE_HALF, CAGE_BAR
+    bars = []
+    posts = set()
+    for s in (-h, h):
+        for t in (-h,) + CAGE_STEPS + (h,):
+            posts.add((t, s))
+            posts.add((s, t))
+    for (x, z) in sorted(posts):
+        bars.append(((lx + x, ly, lz + z), (b, h + b, b)))
+    for y in (-h, h):
+        for z in CAGE_STEPS:
+            bars.append(((lx, ly + y, lz + z), (h, b, b)))
+        for x in (-h, h):
+            bars.append(((lx + x, ly + y, lz), (b, b, h)))
+        for z in (-h, h):
+            bars.append(((lx, ly + y, lz + z), (h, b, b)))
+    return bars
+
+
+def cage_quads():
+    """The ground and the cage's bars."""
+    quads = list(GROUND)
+    for centre, half in cage_bars():
+        quads += box(centre, half)
     return quads
 
 
@@ -207,14 +263,21 @@ def cases():
                                          medium={"betaR": [0, 0.004, 0.008], "betaM": [0, 0.03, 0.03]}),
         "shadow_map_not_pow2": scene(dict(spot((0.3, 6, 0.2), (0, -1, 0)), shadowMapSize=100)),
         "low_sun_city": low_sun_city(),
+        # A cube-shadowed point light on screen inside a small cage, the camera a few metres outside.
+        "point_in_cage": dict(scene(dict(point(CAGE_LIGHT), shadowMapSize=512), gltf="hard_cage.gltf",
+                                    camera=cage_camera(),
+                                    medium={"betaR": [0, 0, 0], "betaM": [0.1, 0.1, 0.1], "g": 0.0,
+                                            "phase": "isotropic"}),
+                              ambient=[0.02, 0.02, 0.022], exposure=0.3),
     }
 
 
 def main():
     out = Path(sys.argv[1] if len(sys.argv) > 1 else "scenes/hard")
     out.mkdir(parents=True, exist_ok=True)
-    write_gltf(out / "hard_cases.gltf", hard_cases_quads())
+    write_gltf(out / "hard_cases.gltf", open_scene_quads())
     write_gltf(out / "hard_city.gltf", city_quads())
+    write_gltf(out / "hard_cage.gltf", cage_quads())
     for name, s in cases().items():
         (out / f"{name}.json").write_text(json.dumps(s, indent=2) + "\n")
         print(out / f"{name}.json")

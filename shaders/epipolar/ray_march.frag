@@ -2,8 +2,9 @@
 #extension GL_GOOGLE_include_directive : require
 // Ray marching of the ray-marching samples (stencil-tested), along their slice's line in the shadow
 // map, skipping whole lit or shadowed runs with the slice's 1D min/max tree. Sample i of the line
-// (uv = origin + i dir) decides the visibility of the ray over (i - 1, i]; the ray's light-space
-// depth is affine in i, its distance is perspective-correct (1/w and d/w are affine in i).
+// (uv = origin + i dir) decides the visibility of the ray over (i - 1, i], split where the ray's
+// depth passes one of its texels' (march.glsl); the ray's light-space depth is affine in i, its
+// distance is perspective-correct (1/w and d/w are affine in i).
 // With LS_CUBE_SHADOW (a point light's cube map) the pass marches one face: lightViewProj is the
 // face's matrix, the look-ups read its layer, and each ray keeps only the part of it where that face
 // is the major axis, so that the six faces' passes add up to the whole ray without overlap or gap.
@@ -72,27 +73,30 @@ vec2 treeNode(int level, int node, int slice, int n) {
 }
 
 struct LineRay {
-    float ta, tb;      // the ray's segment in line samples
-    float f0, f1;      // ... and in metres
-    float iw0, iw1;    // 1/w at both ends
-    float z0, dz;      // standard depth at ta, per sample
-    vec2 origin, dir;  // the slice's line
+    float ta, tb;        // the ray's segment in line samples
+    FrustumSegment seg;  // ... in metres and depth (a in [0, 1] from ta to tb)
+    vec2 origin, dir;    // the slice's line
 };
 
-float distanceAt(LineRay r, float t) {
-    float a = r.tb > r.ta ? clamp((t - r.ta) / (r.tb - r.ta), 0.0, 1.0) : 1.0;
-    if (a >= 1.0) return r.f1;
-    return mix(r.f0 * r.iw0, r.f1 * r.iw1, a) / mix(r.iw0, r.iw1, a);
+// Where line sample t lies on the ray's segment, held at its ends: a sample past the end (the last
+// one decides the visibility of the part before it) takes the end's depth, never an extrapolation,
+// which for a segment much shorter than a texel would be anything. A segment shorter than a sample
+// lies within the one sample at or after ta, which takes all of it.
+float lineParam(LineRay r, float t) {
+    if (r.tb > r.ta) return clamp((t - r.ta) / (r.tb - r.ta), 0.0, 1.0);
+    return t >= r.ta ? 1.0 : 0.0;
 }
 
-// The ray's depth at sample i, held at the segment's ends: a sample past the end (the last one
-// decides the visibility of the part before it) takes the end's depth, never an extrapolation,
-// which for a segment much shorter than a texel would be anything.
-float depthAt(LineRay r, int i) { return r.z0 + clamp(float(i) - r.ta, 0.0, max(r.tb - r.ta, 0.0)) * r.dz; }
+float distanceAt(LineRay r, float t) { return segmentDistance(r.seg, lineParam(r, t)); }
 
-vec3 visibilityAt(LineRay r, int i) {
+float depthAt(LineRay r, int i) { return mix(r.seg.z0, r.seg.z1, lineParam(r, float(i))); }
+
+// Sample i decides the ray over (i - 1, i]: its footprint, split where the ray's depth passes a
+// texel's (a stretch of the ray that projects into one texel).
+void advanceSample(inout Inscatter acc, LineRay r, int i) {
     vec2 uv = r.origin + float(i) * r.dir;
-    return shadowVisibility(uv, depthAt(r, i)) * lightColorAt(uv);
+    advanceThroughFootprint(acc, r.seg, shadowFootprint(uv), lineParam(r, float(i - 1)),
+                            lineParam(r, float(i)), lightColorAt(uv));
 }
 
 // The level to try next at sample i: from `level` (i is aligned to it), down until its node fits
@@ -114,7 +118,7 @@ void marchLine(inout Inscatter acc, LineRay r, int slice) {
     for (int guard = 0; i <= last && guard < 4 * n + 64; ++guard) {
         if (level == 0) {
             COUNT(++counted[kCountLineSteps]);
-            advance(acc, distanceAt(r, float(i)), visibilityAt(r, i));
+            advanceSample(acc, r, i);
             ++i;
             level = climb(i, 0, last, n, levels);
             continue;
@@ -122,7 +126,10 @@ void marchLine(inout Inscatter acc, LineRay r, int slice) {
         int j = i + (1 << level) - 1;
         COUNT(++counted[kCountTreeNodes]);
         vec2 node = treeNode(level, i >> level, slice, n);
-        float zi = compareDepth(depthAt(r, i)), zj = compareDepth(depthAt(r, j));
+        // The node's samples decide the ray over (i - 1, j], so its depths from i - 1 on: a step
+        // split where the ray passes a texel's depth (advanceSample) is never inside a node taken
+        // whole.
+        float zi = compareDepth(depthAt(r, i - 1)), zj = compareDepth(depthAt(r, j));
         if (!kLightColor && max(zi, zj) <= node.x) {
             advance(acc, distanceAt(r, float(j)), vec3(1.0));  // lit throughout
         } else if (min(zi, zj) > node.y) {
@@ -160,23 +167,19 @@ vec3 marchSample(vec3 C, vec3 v, float S, int slice) {
         float invLen2 = 1.0 / dot(r.dir, r.dir);
         r.ta = dot(uv0 - r.origin, r.dir) * invLen2;
         r.tb = dot(uv1 - r.origin, r.dir) * invLen2;
-        r.f0 = f0;
-        r.f1 = f1;
-        r.iw0 = 1.0 / X0.w;
-        r.iw1 = 1.0 / X1.w;
-        float z0 = toStandardDepth(X0.z / X0.w), z1 = toStandardDepth(X1.z / X1.w);
-        r.z0 = z0;
-        r.dz = r.tb - r.ta > 1e-6 ? (z1 - z0) / (r.tb - r.ta) : 0.0;
+        r.seg = FrustumSegment(f0, f1, 1.0 / X0.w, 1.0 / X1.w, toStandardDepth(X0.z / X0.w),
+                               toStandardDepth(X1.z / X1.w));
         // The ray should lie on its slice's line. It does not when its projection degenerates to
         // a point (a ray along the light's direction, a camera at the light) or runs against the
-        // line: then it is marched on its own, texel by texel, as brute force would.
+        // line: then it is marched on its own, texel by texel as brute force would, each step split
+        // where the ray passes a texel's depth as on the line.
         vec2 across = vec2(-r.dir.y, r.dir.x) * inversesqrt(dot(r.dir, r.dir));
         float offLine = max(abs(dot(uv0 - r.origin, across)), abs(dot(uv1 - r.origin, across)));
         COUNT(++counted[kCountRays]);
         if (r.tb >= r.ta && offLine * frame.shadowInfo.x <= 0.5) {
             marchLine(acc, r, slice);
         } else {
-            marchFrustumSegment(acc, C, v, f0, f1, 0u);
+            marchFrustumSegment(acc, C, v, f0, f1, 0u, true);
             COUNT(++counted[kCountDegenerateRays]);
             COUNT(counted[kCountDegenerateSteps] += countedLookups);
         }

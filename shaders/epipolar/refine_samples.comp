@@ -4,6 +4,8 @@
 // on both sides of every depth break; every other sample is interpolated from the nearest
 // ray-marching sample on each side. One workgroup covers 128 samples of one slice: each thread sets a
 // bit per break in shared memory, then finds its two sources with findMSB/findLSB on the masks.
+// Near a point or spot light's screen position the first section of each line is cut geometrically
+// (below).
 #include "frame.glsl"
 layout(local_size_x = 128) in;
 layout(binding = 1) uniform sampler2D epipolarZ;
@@ -60,6 +62,17 @@ void main() {
     int last = samples - 1;
     int sectionStart = (local / step) * step;
     int sectionEnd = min(sectionStart + step, last - base);  // local index, may be 128 (next group)
+    // A point or spot light on screen: every line starts at it, and there a sample's ray passes
+    // the light at a distance proportional to the sample's index. What the sample carries is
+    // decided near that closest approach, within about that distance of the light: near the light
+    // it changes over a few samples, further out over many (a cage around the light, seen from
+    // outside, is a ring of shadows a few pixels across). The first section of such a line is cut
+    // at samples 1, 2, 4, ..., so that the ray-marching samples there are spaced like their
+    // distance from the light (log2(initial step) more per line); a sun has no such scale.
+    if (kLightType != LIGHT_DIRECTIONAL && frame.lightScreen.w > 0.5 && base == 0 && local < step) {
+        sectionStart = local == 0 ? 0 : 1 << findMSB(local);
+        sectionEnd = min(max(2 * sectionStart, 1), sectionEnd);
+    }
     bool breakAfter = brk;
     bool breakBefore = local > 0 ? ((breaks[(local - 1) >> 5] >> ((local - 1) & 31)) & 1u) != 0u
                                  : true;

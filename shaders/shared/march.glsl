@@ -14,29 +14,86 @@
 #define LS_COUNT_LOOKUP()
 #endif
 
+// A stretch of a ray inside the shadow map's frustum, parameterised by a in [0, 1], affine in the
+// shadow map's image plane: its distance is perspective-correct from f0 to f1 (1/w and d/w are
+// affine in a), its standard depth mix(z0, z1, a) (depth over w is affine too).
+struct FrustumSegment {
+    float f0, f1;    // metres along the camera ray
+    float iw0, iw1;  // 1/w at both ends
+    float z0, z1;    // standard depth at both ends
+};
+
+float segmentDistance(FrustumSegment s, float a) {
+    if (a >= 1.0) return s.f1;
+    return mix(s.f0 * s.iw0, s.f1 * s.iw1, a) / mix(s.iw0, s.iw1, a);
+}
+
+// Adds the part [aA, aB] of s seen through one footprint of the shadow map (times color). Each
+// texel of the footprint lights the points in front of its depth, and the ray's depth is monotonic
+// in a, so a texel that lights one end of the part and not the other changes once, where the ray
+// passes its depth: the part is split there. A part no texel changes on is one step with the
+// visibility at its end, as marchFrustumSegmentOf takes it. The split matters where a long stretch
+// of ray projects into one texel: a ray towards or away from the light (the light's own screen
+// position: its ray passes through a point light, and behind it the end of the ray, a surface that
+// the map itself holds, would otherwise decide the whole stretch with half the light's glow on it).
+void advanceThroughFootprint(inout Inscatter acc, FrustumSegment s, ShadowFootprint fp, float aA,
+                             float aB, vec3 color) {
+    float zA = compareDepth(mix(s.z0, s.z1, aA)), zB = compareDepth(mix(s.z0, s.z1, aB));
+    bvec4 litA = lessThanEqual(vec4(zA), fp.depth), litB = lessThanEqual(vec4(zB), fp.depth);
+    if (fp.inside && litA != litB) {
+        vec4 c = vec4(aB);
+        for (int k = 0; k < 4; ++k)
+            if (litA[k] != litB[k])
+                c[k] = mix(aA, aB, clamp((fp.depth[k] - zA) / (zB - zA), 0.0, 1.0));
+        // Sorted, so that the pieces between crossings follow each other along the ray.
+        c.xy = vec2(min(c.x, c.y), max(c.x, c.y));
+        c.zw = vec2(min(c.z, c.w), max(c.z, c.w));
+        c.xz = vec2(min(c.x, c.z), max(c.x, c.z));
+        c.yw = vec2(min(c.y, c.w), max(c.y, c.w));
+        c.yz = vec2(min(c.y, c.z), max(c.y, c.z));
+        float a = aA;
+        for (int k = 0; k < 4; ++k) {
+            if (c[k] <= a) continue;
+            float z = compareDepth(mix(s.z0, s.z1, 0.5 * (a + c[k])));
+            advance(acc, segmentDistance(s, c[k]), footprintVisibility(fp, z) * color);
+            a = c[k];
+        }
+    }
+    advance(acc, segmentDistance(s, aB), footprintVisibility(fp, zB) * color);
+}
+
 // Adds [f0, f1] (inside the shadow map's frustum) to acc, one step per texel crossed (at most
-// maxSteps when that is not 0), each step's visibility taken at its end.
+// maxSteps when that is not 0), each step's visibility taken at its end; with splitAtDepth, each
+// step split where the ray passes a texel's depth (advanceThroughFootprint: the epipolar march's
+// rays that leave their slice's line).
 void marchFrustumSegmentOf(mat4 M, inout Inscatter acc, vec3 C, vec3 v, float f0, float f1,
-                           uint maxSteps) {
+                           uint maxSteps, bool splitAtDepth) {
     vec4 X0 = M * vec4(C + f0 * v, 1.0);
     vec4 X1 = M * vec4(C + f1 * v, 1.0);
     vec2 uv0 = X0.xy / X0.w * 0.5 + 0.5, uv1 = X1.xy / X1.w * 0.5 + 0.5;
     float z0 = toStandardDepth(X0.z / X0.w), z1 = toStandardDepth(X1.z / X1.w);
     float iw0 = 1.0 / X0.w, iw1 = 1.0 / X1.w;
+    FrustumSegment s = FrustumSegment(f0, f1, iw0, iw1, z0, z1);
     vec2 span = abs(uv1 - uv0) * frame.shadowInfo.x;
     uint n = uint(max(1.0, ceil(max(span.x, span.y))));
     if (maxSteps > 0u) n = min(n, maxSteps);
     for (uint k = 1u; k <= n; ++k) {
         float a = float(k) / float(n);
         vec2 uv = mix(uv0, uv1, a);
-        float d = k == n ? f1 : mix(f0 * iw0, f1 * iw1, a) / mix(iw0, iw1, a);
         LS_COUNT_LOOKUP();
+        if (splitAtDepth) {
+            advanceThroughFootprint(acc, s, shadowFootprint(uv), float(k - 1u) / float(n), a,
+                                    lightColorAt(uv));
+            continue;
+        }
+        float d = k == n ? f1 : mix(f0 * iw0, f1 * iw1, a) / mix(iw0, iw1, a);
         advance(acc, d, shadowVisibility(uv, mix(z0, z1, a)) * lightColorAt(uv));
     }
 }
 
-void marchFrustumSegment(inout Inscatter acc, vec3 C, vec3 v, float f0, float f1, uint maxSteps) {
-    marchFrustumSegmentOf(frame.lightViewProj, acc, C, v, f0, f1, maxSteps);
+void marchFrustumSegment(inout Inscatter acc, vec3 C, vec3 v, float f0, float f1, uint maxSteps,
+                         bool splitAtDepth) {
+    marchFrustumSegmentOf(frame.lightViewProj, acc, C, v, f0, f1, maxSteps, splitAtDepth);
 }
 
 // Lin along C + d v, d in [0, S]; maxSteps 0 means one step per texel.
@@ -49,7 +106,7 @@ vec3 marchRay(vec3 C, vec3 v, float S, uint maxSteps) {
     clipToShadowFrustum(C, v, f0, f1);
     if (f0 < f1) {
         advance(acc, f0, vec3(1.0));
-        marchFrustumSegment(acc, C, v, f0, f1, maxSteps);
+        marchFrustumSegment(acc, C, v, f0, f1, maxSteps, false);
     }
     advance(acc, t1, vec3(1.0));
     return finishInscatter(acc, v);
@@ -84,7 +141,7 @@ vec3 marchRayCube(vec3 C, vec3 v, float S, uint maxSteps) {
         if (!(f0 < f1)) continue;
         advance(acc, f0, vec3(1.0));
         shadowFace = next;
-        marchFrustumSegmentOf(frame.cubeFaceViewProj[next], acc, C, v, f0, f1, maxSteps);
+        marchFrustumSegmentOf(frame.cubeFaceViewProj[next], acc, C, v, f0, f1, maxSteps, false);
         done = f1;
     }
     advance(acc, t1, vec3(1.0));

@@ -27,18 +27,44 @@ bool outsideShadowMap(vec2 uv) { return any(lessThan(uv, vec2(0.0))) || any(grea
 // The ray's depth as compared: standard convention, clamped, plus the bias.
 float compareDepth(float zStandard) { return clamp(zStandard, 0.0, 1.0) + frame.shadowInfo.w; }
 
-// Fraction of the light reaching a point at shadow-map position uv and standard depth z.
-float shadowVisibility(vec2 uv, float zStandard) {
-    if (outsideShadowMap(uv)) return 1.0;
-    float z = compareDepth(zStandard);
+// The texels shadowVisibility(uv, .) reads and their bilinear weights: a point at uv whose
+// compared depth is z is lit through texel k when z <= depth[k]. The ray march splits a step where
+// the ray's depth passes one of them (march.glsl, advanceThroughFootprint).
+struct ShadowFootprint {
+    bool inside;  // outside the map every point is lit
+    vec4 depth;   // the 2x2 texels' standard depths (i, i + x, i + y, i + xy); one texel's, nearest
+    vec2 f;       // where uv lies between them (0 with the nearest filter)
+};
+
+ShadowFootprint shadowFootprint(vec2 uv) {
+    ShadowFootprint s;
+    s.inside = !outsideShadowMap(uv);
+    s.depth = vec4(1.0);
+    s.f = vec2(0.0);
+    if (!s.inside) return s;
     float size = frame.shadowInfo.x;
-    if (!kBilinearShadow) return z <= shadowTexel(ivec2(floor(uv * size))) ? 1.0 : 0.0;
+    if (!kBilinearShadow) {
+        s.depth = vec4(shadowTexel(ivec2(floor(uv * size))));
+        return s;
+    }
     vec2 p = uv * size - 0.5;
     ivec2 i = ivec2(floor(p));
-    vec2 f = p - floor(p);
-    vec4 lit = vec4(z <= shadowTexel(i), z <= shadowTexel(i + ivec2(1, 0)),
-                    z <= shadowTexel(i + ivec2(0, 1)), z <= shadowTexel(i + ivec2(1, 1)));
-    return mix(mix(lit.x, lit.y, f.x), mix(lit.z, lit.w, f.x), f.y);
+    s.f = p - floor(p);
+    s.depth = vec4(shadowTexel(i), shadowTexel(i + ivec2(1, 0)), shadowTexel(i + ivec2(0, 1)),
+                   shadowTexel(i + ivec2(1, 1)));
+    return s;
+}
+
+// Fraction of the light reaching a point of the footprint whose compared depth (compareDepth) is z.
+float footprintVisibility(ShadowFootprint s, float z) {
+    if (!s.inside) return 1.0;
+    vec4 lit = vec4(lessThanEqual(vec4(z), s.depth));
+    return mix(mix(lit.x, lit.y, s.f.x), mix(lit.z, lit.w, s.f.x), s.f.y);
+}
+
+// Fraction of the light reaching a point at shadow-map position uv and standard depth z.
+float shadowVisibility(vec2 uv, float zStandard) {
+    return footprintVisibility(shadowFootprint(uv), compareDepth(zStandard));
 }
 
 // Min and max depth over every texel shadowVisibility(uv, .) can read (1.0 outside the map).

@@ -41,6 +41,10 @@ const std::map<std::string, Bound> kBounds = {
     // shadow matrix). Measured 0.0005 epipolar, 0.0006 brute-force, 0.0009 cone-march; the same
     // frame without its shadows is 0.020 off, so the bounds hold the shadows.
     {"low_sun_city", {0.002, 0.002, 0.003}},
+    // A cube-shadowed point light on screen in a small cage, seen through a gap with a bar behind
+    // it: measured 0.0134 epipolar (0.0284 before the light's first samples were spaced like their
+    // distance from it, docs/epipolar.md), 0.0082 brute force.
+    {"point_in_cage", {0.016, 0.0095}},
 };
 constexpr Bound kDefault{0.02, 0.01, 0.015, 1.0};
 
@@ -101,6 +105,13 @@ TEST_F(HardSuite, EveryCaseIsFiniteAndWithinItsBound) {
             const bool unshadowedPointLike = scene.light.type == host::LightKind::Point ||
                                              (scene.light.type == host::LightKind::Spot && scene.light.shadowMapSize == 0);
             if (method == lightscatter::Method::Analytic && !unshadowedPointLike) continue;
+            // A point light's cube shadow map: epipolar and brute force only (the others refuse it
+            // in one line: PointCageGpu.OnlyEpipolarAndBruteForceSampleTheCubeMap).
+            const bool cubeShadowed =
+                scene.light.type == host::LightKind::Point && scene.light.shadowMapSize > 0;
+            if (cubeShadowed && method != lightscatter::Method::Epipolar &&
+                method != lightscatter::Method::BruteForce)
+                continue;
             // Seed 004's beam tree is built from a point or spot light.
             if ((method == lightscatter::Method::BeamTreeAnalytic ||
                  method == lightscatter::Method::BeamTreeSampling) &&

@@ -52,8 +52,8 @@ class RefinementGpu : public PluginGpuTest {
 
 // Initial step 16 on 64x48: four coarse samples per line. Under the spot the grille's shadow
 // crosses the lines over the ground, which steps nowhere, and is interpolated across without
-// refinement; with it the error falls well below (measured on lavapipe: mean 2.4e-4 -> 3.9e-5 of
-// the peak, max 2.5e-2 -> 5.7e-3; docs/epipolar.md). The bound is the ratio, so a refinement that
+// refinement; with it the error falls well below (measured on lavapipe: mean 1.3e-4 -> 3.5e-5 of
+// the peak, max 1.6e-2 -> 5.7e-3; docs/epipolar.md). The bound is the ratio, so a refinement that
 // marks nothing fails it. (The sun through the grille is no such case: no two coarse samples of a
 // line differ by 10% there, nothing is added, and its error, 1.9e-3, is not the interpolation's.)
 TEST_F(RefinementGpu, ShadowEdgesWithoutDepthBreaksAreMarched) {
