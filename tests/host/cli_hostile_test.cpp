@@ -278,6 +278,64 @@ std::vector<Row> rows() {
          "",
          false},
 
+        // 10: every finite number renders finite values or is refused, naming the field and range.
+        {"AnAmbientTheSlicesCannotCarry",
+         {{"amb.json", R"({"sliceAmbient": 1e37})"}},
+         "render {scene:window_room} --method slices --settings amb.json --size 16x16",
+         1,
+         "amb.json: sliceAmbient = 1e+37: must be in [0, 1e+06]"},
+        {"ACoefficientTheShadersCannotCarry",
+         {{"fog.json", R"({"medium": {"betaM": [3.4e38, 3.4e38, 3.4e38]}})"}},
+         "render fog.json --method cone-march --size 16x16",
+         1,
+         "fog.json: medium.betaM[0] = 3.4e+38: must be in [0, 1000]"},
+
+        // 11: cameras single precision cannot represent are refused, the others render.
+        {"ANearPlaneStandardDepthCannotHold",
+         {{"near.json", R"({"camera": {"near": 1e-8}})"}},
+         "render near.json --size 16x16",
+         1,
+         "near.json: camera.near = 1e-08: with standard depth the far plane (camera.far, 1000 m) "
+         "may be at most "
+         "1048576 times the near plane"},
+        {"ANearPlaneReversedDepthHolds",
+         {{"near.json", R"({"camera": {"near": 1e-8, "reversedZ": true}})"}},
+         "render near.json --size 16x16",
+         0,
+         "near.png: 16x16",
+         "",
+         false},
+        {"ANearPlaneReversedInfiniteDepthHolds",
+         {{"near.json", R"({"camera": {"near": 1e-8, "reversedZ": true, "infiniteFar": true}})"}},
+         "render near.json --size 16x16",
+         0,
+         "near.png: 16x16",
+         "",
+         false},
+        {"AFieldOfViewTooNarrow",
+         {{"fov.json", R"({"camera": {"fovYDegrees": 1e-20}})"}},
+         "render fov.json --size 16x16",
+         1,
+         "fov.json: camera.fovYDegrees = 1e-20: must be in [1e-04, 177]"},
+
+        // 12, 13: a low sun over a city 20 km deep, a cube-shadowed light on screen in a cage
+        // (their
+        // accuracy is the hard suite's).
+        {"ALowSunOverACity",
+         {},
+         "render {src}/scenes/hard/low_sun_city.json --size 32x18 --method epipolar",
+         0,
+         "low_sun_city.png: 32x18, epipolar",
+         "",
+         false},
+        {"APointLightInACageOnScreen",
+         {},
+         "render {src}/scenes/hard/point_in_cage.json --size 32x18 --method epipolar",
+         0,
+         "point_in_cage.png: 32x18, epipolar",
+         "",
+         false},
+
         // 15: an option's value never starts with "--"; "--" ends the options.
         {"AnOptionTakesNoOptionAsItsValue",
          {},
@@ -292,12 +350,18 @@ std::vector<Row> rows() {
          "",
          false},
         {"ALightFartherThanSinglePrecisionReaches",
-         {{"far.json", R"({"light": {"type": "spot", "position": [1e20, 4, 0], "direction": [0, -1, 0]}})"}},
-         "render far.json --size 8x8", 1, "far.json: light.position[0] = 1e+20: must be in [-1e+08, 1e+08]"},
+         {{"far.json",
+           R"({"light": {"type": "spot", "position": [1e20, 4, 0], "direction": [0, -1, 0]}})"}},
+         "render far.json --size 8x8",
+         1,
+         "far.json: light.position[0] = 1e+20: must be in [-1e+08, 1e+08]"},
         {"AListOfOneLightIsNamedAsTheList",
-         {{"one.json", R"({"lights": [{"type": "point", "position": [0, 1, 0], "shadowMapSize": 64}]})"}},
-         "render one.json --size 8x8 --method cone-march", 1,
-         "one.json: the plugin refused the frame: method cone-march cannot sample a point light's cube shadow map "
+         {{"one.json",
+           R"({"lights": [{"type": "point", "position": [0, 1, 0], "shadowMapSize": 64}]})"}},
+         "render one.json --size 8x8 --method cone-march",
+         1,
+         "one.json: the plugin refused the frame: method cone-march cannot sample a point light's "
+         "cube shadow map "
          "(lights[0].shadowMapSize > 0"},
         {"RenderNamesTheSceneThePluginRefuses",
          {},
