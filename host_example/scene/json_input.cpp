@@ -142,6 +142,15 @@ class ParseWatcher {
     std::vector<Level> open_;
 };
 
+json parseOrDiscard(const std::string& path, const char* begin, const char* end, JsonRules rules) {
+    try {
+        return json::parse(begin, end, ParseWatcher(path, rules));
+    } catch (const json::exception&) {
+        if (rules.malformedIsDiscarded) return json(json::value_t::discarded);
+        throw;
+    }
+}
+
 }  // namespace
 
 std::string echoText(const std::string& text, size_t limit) {
@@ -172,7 +181,7 @@ std::string echo(const json& value) {
 
 json parseJson(const std::string& path, const char* begin, const char* end, JsonRules rules) {
     try {
-        return json::parse(begin, end, ParseWatcher(path, rules));
+        return parseOrDiscard(path, begin, end, rules);
     } catch (const json::parse_error& e) {
         throw JsonInputError(path + ": malformed JSON at byte " + std::to_string(e.byte) + ": " +
                              shortenedReason(e.what()));

@@ -33,6 +33,9 @@ struct JsonRules {
     // nlohmann keeps the last of two equal keys; in a file a person writes, a repeated key is as
     // likely a mistake as a misspelt one. glTF files are written by tools and keep their own rules.
     bool refuseDuplicateKeys = true;
+    // Malformed JSON gives a discarded value instead of an error (the glTF loader leaves the
+    // message to tinygltf); the nesting cap and the rule above still throw.
+    bool malformedIsDiscarded = false;
 };
 
 // Parses [begin, end), the contents of `path`. Throws JsonInputError for malformed JSON (where, and
