@@ -254,6 +254,13 @@ struct StbFree {
     void operator()(void* pixels) const { stbi_image_free(pixels); }
 };
 
+// stb_image's reason for its last failure. It can quote bytes of the file (an unknown PNG chunk's
+// four-letter type, newline and all), so it is echoed like any text from a file.
+std::string stbReason() {
+    const char* why = stbi_failure_reason();
+    return echoText(why ? why : "no reason given");
+}
+
 // Decodes an image file's bytes to RGBA8 in `texture`, or says why not. The pixels are held once,
 // plus stb_image's own buffer while they are copied out of it (tinygltf's LoadImageData held them
 // twice, and the RGBA8 conversion made a third copy next to the model's).
@@ -261,7 +268,7 @@ std::string decodeImage(const unsigned char* bytes, int size, int wantWidth, int
                         Texture& texture) {
     int width = 0, height = 0, channels = 0;
     if (size <= 0 || !stbi_info_from_memory(bytes, size, &width, &height, &channels))
-        return std::string("not an image stb_image reads: ") + stbi_failure_reason();
+        return "not an image stb_image reads: " + stbReason();
     if (width < 1 || height < 1 || width > kMaxTextureSide || height > kMaxTextureSide) {
         return std::to_string(width) + "x" + std::to_string(height) +
                " pixels: a texture has 1 to " + std::to_string(kMaxTextureSide) + " a side";
@@ -276,7 +283,7 @@ std::string decodeImage(const unsigned char* bytes, int size, int wantWidth, int
         const std::unique_ptr<stbi_us, StbFree> wide(
             stbi_load_16_from_memory(bytes, size, &w, &h, &channels, 4));
         if (!wide || w != width || h != height)
-            return std::string("stb_image cannot decode it: ") + stbi_failure_reason();
+            return "stb_image cannot decode it: " + stbReason();
         texture.rgba.resize(values);
         for (size_t i = 0; i < values; ++i)  // rounded, 65535 -> 255
             texture.rgba[i] = uint8_t((uint32_t{wide.get()[i]} * 255u + 32767u) / 65535u);
@@ -284,7 +291,7 @@ std::string decodeImage(const unsigned char* bytes, int size, int wantWidth, int
         const std::unique_ptr<stbi_uc, StbFree> pixels(
             stbi_load_from_memory(bytes, size, &w, &h, &channels, 4));
         if (!pixels || w != width || h != height)
-            return std::string("stb_image cannot decode it: ") + stbi_failure_reason();
+            return "stb_image cannot decode it: " + stbReason();
         texture.rgba.assign(pixels.get(), pixels.get() + values);
     }
     texture.width = uint32_t(width);

@@ -624,6 +624,22 @@ TEST_F(GltfTest, ImagesTooLargeToUploadAreRefusedBeforeDecoding) {
                                  "to their base color factor");
 }
 
+// stb_image names an unknown PNG chunk by its four bytes from the file: a newline among them made
+// a two-line warning (found by tests/fuzz/gltf_fuzzer; tests/fuzz/corpus/gltf/png-chunk-newline).
+TEST_F(GltfTest, AnImagesFailureIsOneLineWhateverItsBytes) {
+    std::string bytes = png(1, 1, 8, 0, {7});
+    bytes.insert(33, std::string("\0\0\0\0\nBCD\0\0\0\0", 12));  // after IHDR
+    writeBytes(path("chunk.png"), bytes);
+    host::MeshData m;
+    const std::string file = texturedTriangle({"chunk.png"}).writeGltf(path("chunk.gltf"));
+    host::appendGltf(m, file);
+    ASSERT_EQ(m.warnings.size(), 1u);
+    EXPECT_EQ(m.warnings[0], file +
+                                 ": image 0 'chunk.png' could not be decoded (stb_image cannot "
+                                 "decode it: \\nBCD PNG chunk not known); materials using it fall "
+                                 "back to their base color factor");
+}
+
 // --- Errors: one line naming the file and the problem. ---
 
 // tinygltf turns "extras" into nested values one call per level: the nesting cap of the project's
