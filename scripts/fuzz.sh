@@ -8,7 +8,8 @@
 # the fuzz targets and what they link) and runs each target for SECONDS (default 30; CI runs 30),
 # one after the other. Each starts from a working copy of its corpus in build-fuzz/corpus/TARGET:
 # the shipped files (scenes, benchmark configurations, glTF) and tests/fuzz/corpus/TARGET/, which
-# holds the settings examples and every input a fuzzer ever found a fault with. Nothing is written
+# holds the settings examples and every input a fuzzer ever found a fault with; tests/fuzz/TARGET.dict
+# gives it the format's words (keys, methods, glTF's types). Nothing is written
 # into the repository: a new finding is left in build-fuzz/findings/ and its input is added to
 # tests/fuzz/corpus/TARGET/ by hand, with the fix and a test. A crash, a sanitizer report, an input
 # that runs longer than 10 s or a process above 2 GB counts as a finding and fails the script.
@@ -52,9 +53,9 @@ for t in "${targets[@]}"; do
         [ "$(stat -c %s "$f")" -le $max_len ] && cp "$f" "$corpus/seed-$(basename "$f")"
     done
     log=$out/logs/$t.log
-    if "$out/tests/fuzz/${t}_fuzzer" "$corpus" -max_total_time="$seconds" -max_len=$max_len \
-        -timeout=10 -rss_limit_mb=2048 -artifact_prefix="$out/findings/$t-" -print_final_stats=1 \
-        > "$log" 2>&1; then
+    if "$out/tests/fuzz/${t}_fuzzer" "$corpus" -dict="tests/fuzz/$t.dict" -max_len=$max_len \
+        -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+        -artifact_prefix="$out/findings/$t-" > "$log" 2>&1; then
         runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log")
         echo "fuzz: $t: ${runs:-?} inputs in ${seconds} s, $(grep -o 'cov: [0-9]*' "$log" | tail -n 1), no finding"
     else

@@ -18,6 +18,10 @@ namespace {
 using nlohmann::json;
 
 constexpr uint64_t kConfigFileCap = 1 * kMiB;
+// A configuration's runs are its scenes times its methods, profiles and sweep values: they grow as
+// the square of the file (1000 scenes and 1000 sweep values are 10 KB and a million runs, each
+// checked with the plugin's budget). The largest shipped one, bench/full.json, has 420.
+constexpr size_t kMaxRuns = 10000;
 
 // Reads one configuration; every failure names the file and the field. Every run it expands to
 // is checked here, before the benchmark renders anything, so a bad sweep value at the end of a
@@ -252,6 +256,16 @@ class ConfigReader {
         }
     }
 
+    // Every run is added here, and the configuration refused as soon as it has too many, before
+    // millions of them take memory and time.
+    void add(BenchConfig& c, const BenchRun& r) const {
+        if (c.runs.size() >= kMaxRuns)
+            fail("expands to more than " + std::to_string(kMaxRuns) +
+                 " runs (scenes x methods, profiles and sweep values): split it into several "
+                 "configurations");
+        c.runs.push_back(r);
+    }
+
     // The plugin's rules for settings, applied without a GPU through its budget.
     void checkSettings(const BenchRun& r, const std::string& where) const {
         try {
@@ -280,7 +294,7 @@ class ConfigReader {
                 r.method = m;
                 r.family = "profiles";
                 r.label = lightscatter::methodName(m);
-                c.runs.push_back(r);
+                add(c, r);
                 continue;
             }
             for (lightscatter::Profile p : profiles) {
@@ -289,7 +303,7 @@ class ConfigReader {
                 r.profile = p;
                 r.family = "profiles";
                 r.label = std::string("epipolar ") + lightscatter::profileName(p);
-                c.runs.push_back(r);
+                add(c, r);
             }
         }
         // One-parameter sweeps from one profile (balanced unless sweepProfile says otherwise).
@@ -311,21 +325,21 @@ class ConfigReader {
             BenchRun r = sweepRun("slices", "slices=" + std::to_string(n));
             r.settings.slices = n;
             checkSettings(r, "sweeps.slices");
-            c.runs.push_back(r);
+            add(c, r);
         }
         for (const json& v : values("samples")) {
             const uint32_t n = whole(v, "sweeps.samples[]", 0, kMax);
             BenchRun r = sweepRun("samples", "samples=" + std::to_string(n));
             r.settings.samplesPerSlice = n;
             checkSettings(r, "sweeps.samples");
-            c.runs.push_back(r);
+            add(c, r);
         }
         for (const json& v : values("initialStep")) {
             const uint32_t n = whole(v, "sweeps.initialStep[]", 0, kMax);
             BenchRun r = sweepRun("initialStep", "initialStep=" + std::to_string(n));
             r.settings.initialSampleStep = n;
             checkSettings(r, "sweeps.initialStep");
-            c.runs.push_back(r);
+            add(c, r);
         }
         // Epipolar's depth breaks: a smaller threshold marches more samples where the depth steps
         // a little (temporal stability: bench/flicker.json).
@@ -336,7 +350,7 @@ class ConfigReader {
                                   "refinementThreshold=" + shortNumber(v.get<double>()));
             r.settings.refinementThreshold = v.get<float>();
             checkSettings(r, "sweeps.refinementThreshold");
-            c.runs.push_back(r);
+            add(c, r);
         }
         // Epipolar's refinement on in-scattering differences (0: off): the samples between two
         // marched ones that differ by more than this are marched too.
@@ -347,7 +361,7 @@ class ConfigReader {
                                   "inscatterRefinementThreshold=" + shortNumber(v.get<double>()));
             r.settings.inscatterRefinementThreshold = v.get<float>();
             checkSettings(r, "sweeps.inscatterRefinementThreshold");
-            c.runs.push_back(r);
+            add(c, r);
         }
         for (const json& v : values("minMaxTrees")) {
             if (!v.is_boolean())
@@ -355,7 +369,7 @@ class ConfigReader {
             BenchRun r =
                 sweepRun("trees", std::string("minMaxTrees=") + (v.get<bool>() ? "on" : "off"));
             r.settings.minMaxTrees = v.get<bool>();
-            c.runs.push_back(r);
+            add(c, r);
         }
         for (const json& v : values("shadowMapSize")) {
             const uint32_t n = whole(v, "sweeps.shadowMapSize[]", 1, 16384);
@@ -364,7 +378,7 @@ class ConfigReader {
                                                            " shadowMap=" + std::to_string(n));
                 r.method = m;
                 r.shadowMapSize = n;
-                c.runs.push_back(r);
+                add(c, r);
             }
         }
         // Seed 003's comparison: cone-march with each sample count and mode (the cone-limited
@@ -383,7 +397,7 @@ class ConfigReader {
                 r.settings.coneSamples = samples;
                 r.settings.coneLimited = m != "naive";
                 r.settings.shadowSampling = m != "no-shadow-sampling";
-                c.runs.push_back(r);
+                add(c, r);
             }
         }
         // Seed 002: the slices method with each plane count and accumulation target.
@@ -405,7 +419,7 @@ class ConfigReader {
                                              ? lightscatter::SliceTarget::Float32
                                              : lightscatter::SliceTarget::Rgba8Channels;
                 r.settings.sliceDither = t == "rgba8-dither";
-                c.runs.push_back(r);
+                add(c, r);
             }
         }
         // Seed 004's simplified light model against the full one, for each method of the
@@ -426,7 +440,7 @@ class ConfigReader {
                 r.method = m;
                 r.settings.lightModel = name == "simplified" ? lightscatter::LightModel::Simplified
                                                              : lightscatter::LightModel::Full;
-                c.runs.push_back(r);
+                add(c, r);
             }
             if (!any)
                 fail("sweeps.lightModel needs method beam-tree-analytic or analytic in methods");
@@ -440,7 +454,7 @@ class ConfigReader {
                 r.size = s;
                 r.measureError = c.measureError && r.size.width == c.size.width &&
                                  r.size.height == c.size.height;
-                c.runs.push_back(r);
+                add(c, r);
             }
         }
     }
