@@ -53,6 +53,10 @@ constexpr size_t kMaxElements = size_t{1} << 28;
 // An accessor without a buffer view is zeros (sparse substitutes aside): data the file does not
 // hold, so its count alone would decide the allocation (2^28 VEC3s: 3 GiB from 300 bytes).
 constexpr size_t kMaxZeroFilledElements = size_t{1} << 20;
+// What a file's nodes place in all, with what the mesh held before: 1 GiB of vertices, 512 MiB of
+// indices (the largest model of the shipped scenes, 2CylinderEngine, has 84,657 vertices).
+constexpr size_t kMaxPlacedVertices = size_t{1} << 25;
+constexpr size_t kMaxPlacedIndices = size_t{1} << 27;
 // Vulkan's maxImageDimension2D on lavapipe and on most GPUs: a larger image could not be uploaded,
 // and is refused before it is decoded.
 constexpr int kMaxTextureSide = 16384;
@@ -282,8 +286,7 @@ std::string decodeImage(const unsigned char* bytes, int size, int wantWidth, int
     if (stbi_is_16_bit_from_memory(bytes, size)) {
         const std::unique_ptr<stbi_us, StbFree> wide(
             stbi_load_16_from_memory(bytes, size, &w, &h, &channels, 4));
-        if (!wide || w != width || h != height)
-            return "stb_image cannot decode it: " + stbReason();
+        if (!wide || w != width || h != height) return "stb_image cannot decode it: " + stbReason();
         texture.rgba.resize(values);
         for (size_t i = 0; i < values; ++i)  // rounded, 65535 -> 255
             texture.rgba[i] = uint8_t((uint32_t{wide.get()[i]} * 255u + 32767u) / 65535u);
@@ -576,13 +579,20 @@ class GltfFlattener {
 
     // Depth-first with an explicit stack: a deep hierarchy must not overflow the call stack, and
     // a node reached twice (a cycle, or a node with two parents) is refused, so the work is
-    // bounded by the node count.
+    // bounded by the node count. Meshes are read as their nodes are reached, and placed once the
+    // whole tree has been walked and the totals checked.
+    struct Placement {
+        size_t mesh;
+        glm::mat4 world;
+    };
+
     void placeNodes(const glm::mat4& transform) {
         struct Pending {
             int node;
             glm::mat4 parent;
         };
         std::vector<Pending> stack;
+        std::vector<Placement> placements;
         const std::vector<int> roots = sceneRoots();
         for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.push_back({*it, transform});
         std::vector<bool> reached(model_.nodes.size(), false);
@@ -608,15 +618,42 @@ class GltfFlattener {
                                     std::to_string(node.mesh) + ", but the file has " +
                                     plural(model_.meshes.size(), "mesh", "meshes"));
                 }
-                placeMesh(size_t(node.mesh), world);
+                readMesh(size_t(node.mesh));
+                placements.push_back({size_t(node.mesh), world});
             }
             for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) {
                 stack.push_back({*it, world});
             }
         }
+        checkPlacedTotals(placements);
+        for (const Placement& p : placements) {
+            for (const LocalPrimitive& primitive : *meshes_[p.mesh]) place(primitive, p.world);
+        }
     }
 
-    void placeMesh(size_t meshIndex, const glm::mat4& world) {
+    // Each node places its mesh once more: a mesh read once can become any number of copies (ten
+    // thousand nodes of a 24,000-vertex mesh are 60 KB of JSON and 8 GB of vertices), so the
+    // totals are checked before anything is placed.
+    void checkPlacedTotals(const std::vector<Placement>& placements) const {
+        size_t vertices = mesh_.vertices.size(), indices = mesh_.indices.size();
+        for (const Placement& p : placements) {
+            for (const LocalPrimitive& primitive : *meshes_[p.mesh]) {
+                if (primitive.triangles.empty()) continue;
+                vertices += primitive.positions.size();
+                indices += primitive.triangles.size();
+            }
+            if (vertices > kMaxPlacedVertices || indices > kMaxPlacedIndices) {
+                fail(path_, "its nodes place more than " +
+                                std::to_string(vertices > kMaxPlacedVertices ? kMaxPlacedVertices
+                                                                             : kMaxPlacedIndices) +
+                                (vertices > kMaxPlacedVertices ? " vertices" : " indices") +
+                                " in all (each node places its mesh once more), the most this "
+                                "loader accepts");
+            }
+        }
+    }
+
+    void readMesh(size_t meshIndex) {
         if (!meshes_[meshIndex]) {
             std::vector<LocalPrimitive> primitives;
             const auto& source = model_.meshes[meshIndex].primitives;
@@ -626,17 +663,12 @@ class GltfFlattener {
             }
             meshes_[meshIndex] = std::move(primitives);
         }
-        for (const LocalPrimitive& primitive : *meshes_[meshIndex]) place(primitive, world);
     }
 
     // Appends one placed copy of a primitive in world space.
     void place(const LocalPrimitive& local, const glm::mat4& world) {
         if (local.triangles.empty()) return;
-        const size_t base = mesh_.vertices.size();
-        if (local.positions.size() > std::numeric_limits<uint32_t>::max() - base ||
-            local.triangles.size() > std::numeric_limits<uint32_t>::max() - mesh_.indices.size()) {
-            fail(path_, "more than 2^32 vertices or indices in all");
-        }
+        const size_t base = mesh_.vertices.size();  // below 2^32: checkPlacedTotals
         const glm::mat3 linear(world);
         const float det = glm::determinant(linear);
         // Normals go through the inverse-transpose; its direction is the cofactor matrix's

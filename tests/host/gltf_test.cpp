@@ -904,6 +904,23 @@ TEST_F(GltfTest, AccessorsWithoutDataAreCapped) {
     EXPECT_EQ(m.vertices.size(), 3u);
 }
 
+// Each node places its mesh once more, so a few bytes of nodes multiply a mesh: the totals are
+// checked before anything is placed (40 copies of 2^20 vertices would be 1.3 GiB of vertices).
+TEST_F(GltfTest, WhatTheNodesPlaceIsCappedBeforePlacing) {
+    GltfBuilder b;
+    b.accessor(-1, kFloat, size_t{1} << 20, "VEC3");  // zeros: 2^20 vertices for 20 bytes
+    b.doc["accessors"][0].erase("bufferView");
+    b.mesh({{"POSITION", 0}});
+    json roots = json::array();
+    for (int i = 0; i < 40; ++i) roots.push_back(b.node({{"mesh", 0}}));
+    b.scene(roots);
+    const std::string file = b.writeGltf(path("copies.gltf"));
+    EXPECT_EQ(errorWithin(file, 256ull << 20),
+              file +
+                  ": its nodes place more than 33554432 vertices in all (each node places its "
+                  "mesh once more), the most this loader accepts");
+}
+
 // A buffer read from its .bin was held three times on its way (a string grown to twice its size by
 // copying, then a copy into the buffer): a 1 GiB .bin peaked at 3.2 GB. It is read once now.
 TEST_F(GltfTest, AnExternalBufferIsHeldOnce) {
