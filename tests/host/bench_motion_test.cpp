@@ -366,6 +366,17 @@ TEST(BenchConfigInput, AConfigurationOfTooManyRunsIsRefused) {
     EXPECT_EQ(configError(config(99)), "(accepted)");  // 9999 runs
 }
 
+// parseSize quotes its text as it is: a "\n" in a configuration's size made a two-line error
+// (found by bench_fuzzer; tests/fuzz/corpus/bench/size-newline).
+TEST(BenchConfigInput, ASizeIsEchoedOnOneLine) {
+    EXPECT_EQ(
+        configError(R"({"scenes": ["scenes/atrium.json"], "sweeps": {"size": ["\n960x540"]}})"),
+        "sweeps.size[] '\\n960x540' is not WIDTHxHEIGHT with both whole numbers from 1 to "
+        "16384");
+    EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"], "size": "64x"})"),
+              "size '64x' is not WIDTHxHEIGHT with both whole numbers from 1 to 16384");
+}
+
 TEST(BenchConfigInput, RepeatedKeysAndLongValues) {
     EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"], "frames": 2, "frames": 3})"),
               "key 'frames' appears twice in one object");
@@ -380,7 +391,7 @@ TEST(BenchConfigInput, RepeatedKeysAndLongValues) {
         << m;
     const std::string size = configError(R"({"scenes": ["scenes/atrium.json"], "size": ")" +
                                          std::string(100000, '9') + "\"}");
-    EXPECT_EQ(size.rfind("size = \"9999", 0), 0u) << size;
+    EXPECT_EQ(size.rfind("size '9999", 0), 0u) << size;
     EXPECT_LE(size.size(), 200u) << size;
     const std::string scene = configError(R"({"scenes": [")" + std::string(100000, 's') + "\"]}");
     EXPECT_EQ(scene.rfind("scenes[0] = \"ssss", 0), 0u) << scene;
