@@ -350,15 +350,14 @@ TEST(BenchConfigInput, DeepNestingIsRefusedInEveryKey) {
 // Runs grow as scenes x sweep values, the square of the file: a 10 KB file made a million runs
 // (hundreds of MB, a minute of checks). Refused at 10,000, 24 times the largest shipped one.
 TEST(BenchConfigInput, AConfigurationOfTooManyRunsIsRefused) {
-    // Each scene: one epipolar balanced run and 100 slice counts, 101 runs.
+    // Each scene: one epipolar balanced run and 100 tree sweeps (which need no budget check), 101.
     auto config = [](int sceneCount) {
-        std::string scenes, slices;
+        std::string scenes, trees;
         for (int i = 0; i < sceneCount; ++i)
             scenes += std::string(i ? "," : "") + "\"scenes/atrium.json\"";
-        for (int i = 1; i <= 100; ++i)
-            slices += std::string(i > 1 ? "," : "") + std::to_string(4 * i);
+        for (int i = 0; i < 100; ++i) trees += std::string(i ? "," : "") + "true";
         return R"({"methods": ["epipolar"], "scenes": [)" + scenes +
-               R"(], "sweeps": {"slices": [)" + slices + "]}}";
+               R"(], "sweeps": {"minMaxTrees": [)" + trees + "]}}";
     };
     EXPECT_EQ(configError(config(100)),
               "expands to more than 10000 runs (scenes x methods, profiles and sweep values): "
