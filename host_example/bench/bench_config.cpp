@@ -19,7 +19,7 @@ using nlohmann::json;
 
 constexpr uint64_t kConfigFileCap = 1 * kMiB;
 // A configuration's runs are its scenes times its methods, profiles and sweep values: they grow as
-// the square of the file (1000 scenes and 1000 sweep values are 10 KB and a million runs, each
+// the square of the file (1000 scenes and 1000 sweep values are 30 KB and a million runs, each
 // checked with the plugin's budget). The largest shipped one, bench/full.json, has 420.
 constexpr size_t kMaxRuns = 10000;
 

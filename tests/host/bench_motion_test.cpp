@@ -347,7 +347,7 @@ TEST(BenchConfigInput, DeepNestingIsRefusedInEveryKey) {
     }
 }
 
-// Runs grow as scenes x sweep values, the square of the file: a 10 KB file made a million runs
+// Runs grow as scenes x sweep values, the square of the file: a 30 KB file made a million runs
 // (hundreds of MB, a minute of checks). Refused at 10,000, 24 times the largest shipped one.
 TEST(BenchConfigInput, AConfigurationOfTooManyRunsIsRefused) {
     // Each scene: one epipolar balanced run and 100 tree sweeps (which need no budget check), 101.

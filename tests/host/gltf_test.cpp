@@ -905,7 +905,7 @@ TEST_F(GltfTest, AccessorsWithoutDataAreCapped) {
 }
 
 // Each node places its mesh once more, so a few bytes of nodes multiply a mesh: the totals are
-// checked before anything is placed (40 copies of 2^20 vertices would be 1.3 GiB of vertices).
+// checked before anything is placed (40 copies of 2^20 vertices would be 1.25 GiB of them).
 TEST_F(GltfTest, WhatTheNodesPlaceIsCappedBeforePlacing) {
     GltfBuilder b;
     b.accessor(-1, kFloat, size_t{1} << 20, "VEC3");  // zeros: 2^20 vertices for 20 bytes
