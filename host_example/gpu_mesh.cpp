@@ -50,11 +50,15 @@ void GpuMesh::upload(const MeshData& mesh) {
     vertexBuffer_ = makeBuffer(vBytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "scene vertices", vertexMemory_);
     indexBuffer_ = makeBuffer(iBytes, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, "scene indices", indexMemory_);
 
-    // Textures, plus a white one for materials without.
-    std::vector<Texture> textures = mesh.textures;
-    textures.push_back({"white", 1, 1, {255, 255, 255, 255}});
+    // Textures, plus a white one for materials without. By reference: the pixels are held by the
+    // mesh and, for the upload, by the staging buffer, never copied a third time (a 16384^2
+    // texture cost 1 GiB more here).
+    const Texture whiteTexture{"white", 1, 1, {255, 255, 255, 255}};
+    std::vector<const Texture*> textures;
+    for (const Texture& t : mesh.textures) textures.push_back(&t);
+    textures.push_back(&whiteTexture);
     VkDeviceSize staged = vBytes + iBytes;
-    for (const auto& t : textures) staged += t.rgba.size();
+    for (const Texture* t : textures) staged += t->rgba.size();
     rg::HostBuffer staging(device, std::max<VkDeviceSize>(staged, 4), VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                            "scene upload");
     auto* bytes = static_cast<uint8_t*>(staging.data());
@@ -62,13 +66,13 @@ void GpuMesh::upload(const MeshData& mesh) {
     if (iBytes) std::memcpy(bytes + vBytes, mesh.indices.data(), iBytes);
     VkDeviceSize offset = vBytes + iBytes;
     std::vector<VkDeviceSize> textureOffsets;
-    for (const auto& t : textures) {
+    for (const Texture* t : textures) {
         textureOffsets.push_back(offset);
-        std::memcpy(bytes + offset, t.rgba.data(), t.rgba.size());
-        offset += t.rgba.size();
+        std::memcpy(bytes + offset, t->rgba.data(), t->rgba.size());
+        offset += t->rgba.size();
         textures_.push_back(std::make_unique<GpuImage>(
-            device, VK_FORMAT_R8G8B8A8_SRGB, VkExtent2D{t.width, t.height},
-            VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, "texture " + t.name));
+            device, VK_FORMAT_R8G8B8A8_SRGB, VkExtent2D{t->width, t->height},
+            VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, "texture " + t->name));
     }
 
     device.submitAndWait([&](VkCommandBuffer cmd) {
@@ -104,7 +108,7 @@ void GpuMesh::upload(const MeshData& mesh) {
             VkBufferImageCopy region{};
             region.bufferOffset = textureOffsets[i];
             region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-            region.imageExtent = {textures[i].width, textures[i].height, 1};
+            region.imageExtent = {textures[i]->width, textures[i]->height, 1};
             vkCmdCopyBufferToImage(cmd, staging.buffer(), img, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
             barrier(img, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                     VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
@@ -130,7 +134,7 @@ void GpuMesh::upload(const MeshData& mesh) {
         v.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
         VkImageView view;
         RG_VK(vkCreateImageView(device.device(), &v, nullptr, &view));
-        device.setName(view, VK_OBJECT_TYPE_IMAGE_VIEW, "texture " + textures[i].name + " view");
+        device.setName(view, VK_OBJECT_TYPE_IMAGE_VIEW, "texture " + textures[i]->name + " view");
         views_.push_back(view);
     }
     const VkImageView white = views_.back();

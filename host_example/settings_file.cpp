@@ -5,10 +5,10 @@
 #include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
-#include <set>
 #include <stdexcept>
 
 #include "scene/input_file.h"
+#include "scene/json_input.h"
 
 namespace host {
 namespace {
@@ -143,9 +143,9 @@ class SettingsReader {
             else if (key == "shadowMapSize") {
                 s.shadowMapSize = whole(v, key);
                 if (s.shadowMapSize < 1 || s.shadowMapSize > 16384)
-                    fail(key + " = " + v.dump() + ": must be from 1 to 16384");
+                    fail(key + " = " + echo(v) + ": must be from 1 to 16384");
             } else {
-                fail("unknown key '" + key + "' (known keys: " + knownFields() + ")");
+                fail("unknown key '" + echoText(key) + "' (known keys: " + knownFields() + ")");
             }
         }
         checkWithThePlugin(s);
@@ -158,26 +158,10 @@ class SettingsReader {
     }
 
     json parse() const {
-        std::string text;
         try {
-            text = readInputFile(path_, "settings file", kSettingsFileCap);
-        } catch (const InputFileError& e) {
+            return readJsonFile(path_, "settings file", kSettingsFileCap);
+        } catch (const JsonInputError& e) {
             throw std::runtime_error(e.what());
-        }
-        // A repeated key is as likely a mistake as a misspelt one; nlohmann would keep the last.
-        std::vector<std::set<std::string>> open;
-        auto noDuplicates = [&](int, json::parse_event_t event, json& parsed) {
-            if (event == json::parse_event_t::object_start) open.emplace_back();
-            if (event == json::parse_event_t::object_end) open.pop_back();
-            if (event == json::parse_event_t::key &&
-                !open.back().insert(parsed.get<std::string>()).second)
-                fail("key '" + parsed.get<std::string>() + "' appears twice");
-            return true;
-        };
-        try {
-            return json::parse(text, noDuplicates);
-        } catch (const json::exception& e) {
-            fail(std::string("malformed JSON: ") + e.what());
         }
     }
 
@@ -186,30 +170,29 @@ class SettingsReader {
             v.is_number_integer() && !v.is_number_unsigned() && v.get<int64_t>() < 0;
         if (!v.is_number_integer() || negative ||
             v.get<uint64_t>() > std::numeric_limits<uint32_t>::max())
-            fail(key + " = " + v.dump() + ": must be a whole number from 0 to 4294967295");
+            fail(key + " = " + echo(v) + ": must be a whole number from 0 to 4294967295");
         return static_cast<uint32_t>(v.get<uint64_t>());
     }
 
     float number(const json& v, const std::string& key) const {
-        if (!v.is_number()) fail(key + " = " + v.dump() + ": must be a number");
+        if (!v.is_number()) fail(key + " = " + echo(v) + ": must be a number");
         const double d = v.get<double>();
         if (!std::isfinite(d) || std::fabs(d) > double(std::numeric_limits<float>::max()))
-            fail(key + " = " + v.dump() + ": must be a finite number");
+            fail(key + " = " + echo(v) + ": must be a finite number");
         return static_cast<float>(d);
     }
 
     template <size_t N>
     std::array<float, N> numbers(const json& v, const std::string& key) const {
         if (!v.is_array() || v.size() != N)
-            fail(key + " = " + v.dump() + ": must be an array of " + std::to_string(N) +
-                 " numbers");
+            fail(key + " = " + echo(v) + ": must be an array of " + std::to_string(N) + " numbers");
         std::array<float, N> out{};
         for (size_t i = 0; i < N; ++i) out[i] = number(v[i], key + "[" + std::to_string(i) + "]");
         return out;
     }
 
     bool boolean(const json& v, const std::string& key) const {
-        if (!v.is_boolean()) fail(key + " = " + v.dump() + ": must be true or false");
+        if (!v.is_boolean()) fail(key + " = " + echo(v) + ": must be true or false");
         return v.get<bool>();
     }
 
@@ -221,7 +204,7 @@ class SettingsReader {
             if (v.is_string() && v.get<std::string>() == word) return value;
             names += (names.empty() ? "" : ", ") + std::string(word);
         }
-        fail(key + " = " + v.dump() + ": must be one of " + names);
+        fail(key + " = " + echo(v) + ": must be one of " + names);
     }
 
     // The plugin's own rules (multiples, powers of two, ranges), applied without a GPU through

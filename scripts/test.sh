@@ -7,3 +7,5 @@ scripts/build.sh
 ctest --test-dir build --output-on-failure -j"$(nproc)"
 # The same code under AddressSanitizer and UndefinedBehaviorSanitizer (build-asan/).
 scripts/test-sanitizers.sh
+# The input readers under libFuzzer, 30 s each (build-fuzz/, clang++).
+scripts/fuzz.sh 30

@@ -10,6 +10,7 @@
 
 #include "cli_args.h"
 #include "scene/input_file.h"
+#include "scene/json_input.h"
 
 namespace host::bench {
 namespace {
@@ -17,6 +18,10 @@ namespace {
 using nlohmann::json;
 
 constexpr uint64_t kConfigFileCap = 1 * kMiB;
+// A configuration's runs are its scenes times its methods, profiles and sweep values: they grow as
+// the square of the file (1000 scenes and 1000 sweep values are 30 KB and a million runs, each
+// checked with the plugin's budget). The largest shipped one, bench/full.json, has 420.
+constexpr size_t kMaxRuns = 10000;
 
 // Reads one configuration; every failure names the file and the field. Every run it expands to
 // is checked here, before the benchmark renders anything, so a bad sweep value at the end of a
@@ -33,7 +38,7 @@ class ConfigReader {
             if (key != "name" && key != "frames" && key != "warmup" && key != "size" &&
                 key != "scenes" && key != "methods" && key != "profiles" && key != "sweeps" &&
                 key != "measureError" && key != "motion" && key != "sweepProfile")
-                fail("unknown key '" + key +
+                fail("unknown key '" + echoText(key) +
                      "' (known: name, frames, warmup, size, scenes, methods, profiles, sweeps, "
                      "sweepProfile, measureError, motion)");
         BenchConfig c;
@@ -44,7 +49,7 @@ class ConfigReader {
         c.size = size(j.contains("size") ? j["size"] : json("480x270"), "size");
         if (j.contains("measureError")) {
             if (!j["measureError"].is_boolean())
-                fail("measureError = " + j["measureError"].dump() + ": must be true or false");
+                fail("measureError = " + echo(j["measureError"]) + ": must be true or false");
             c.measureError = j["measureError"].get<bool>();
         }
         if (j.contains("motion")) {
@@ -61,7 +66,7 @@ class ConfigReader {
             const std::string name = text(p, "profiles[]");
             const auto parsed = lightscatter::parseProfile(name);
             if (!parsed || *parsed == lightscatter::Profile::Custom)
-                fail("profiles: unknown profile '" + name + "'");
+                fail("profiles: unknown profile '" + echoText(name) + "'");
             profiles.push_back(*parsed);
         }
         if (profiles.empty())
@@ -82,7 +87,8 @@ class ConfigReader {
             if (s.is_object()) {
                 for (const auto& [key, value] : s.items())
                     if (key != "scene" && key != "methods")
-                        fail(where + ": unknown key '" + key + "' (known: scene, methods)");
+                        fail(where + ": unknown key '" + echoText(key) +
+                             "' (known: scene, methods)");
                 if (!s.contains("scene")) fail(where + ".scene is required");
                 p = text(s["scene"], where + ".scene");
                 if (s.contains("methods"))
@@ -94,6 +100,11 @@ class ConfigReader {
                      " must be a scene file's path or an object {\"scene\": path, \"methods\": "
                      "[...]}");
             }
+            if (p.empty() || p.native().size() > kMaxPathChars ||
+                p.native().find('\0') != std::string::npos)
+                fail(where + " = " + echo(s.is_object() ? s["scene"] : s) +
+                     ": must be a path (not empty, no NUL character, at most " +
+                     std::to_string(kMaxPathChars) + " bytes)");
             if (p.is_relative()) p = std::filesystem::path(root_) / p;
             c.scenes.push_back(p.string());
         }
@@ -103,7 +114,7 @@ class ConfigReader {
             const std::string name = text(j["sweepProfile"], "sweepProfile");
             const auto parsed = lightscatter::parseProfile(name);
             if (!parsed || *parsed == lightscatter::Profile::Custom)
-                fail("sweepProfile: unknown profile '" + name + "'");
+                fail("sweepProfile: unknown profile '" + echoText(name) + "'");
             sweepProfile = *parsed;
         }
         const json sweeps = j.contains("sweeps") ? j["sweeps"] : json::object();
@@ -114,7 +125,7 @@ class ConfigReader {
                 key != "coneSamples" && key != "coneModes" && key != "slicePlanes" &&
                 key != "sliceTargets" && key != "lightModel" && key != "refinementThreshold" &&
                 key != "inscatterRefinementThreshold")
-                fail("sweeps: unknown key '" + key +
+                fail("sweeps: unknown key '" + echoText(key) +
                      "' (known: slices, samples, initialStep, refinementThreshold, "
                      "inscatterRefinementThreshold, shadowMapSize, "
                      "size, minMaxTrees, coneSamples, coneModes, slicePlanes, sliceTargets, "
@@ -130,16 +141,10 @@ class ConfigReader {
     }
 
     json parse() const {
-        std::string bytes;
         try {
-            bytes = readInputFile(path_, "benchmark configuration", kConfigFileCap);
-        } catch (const InputFileError& e) {
+            return readJsonFile(path_, "benchmark configuration", kConfigFileCap);
+        } catch (const JsonInputError& e) {
             throw std::runtime_error(e.what());
-        }
-        try {
-            return json::parse(bytes);
-        } catch (const json::exception& e) {
-            fail(std::string("malformed JSON: ") + e.what());
         }
     }
 
@@ -157,7 +162,7 @@ class ConfigReader {
                 std::string known;
                 for (const auto& n : lightscatter::methodNames())
                     known += (known.empty() ? "" : ", ") + n;
-                fail(name + ": unknown method '" + method + "' (known: " + known + ")");
+                fail(name + ": unknown method '" + echoText(method) + "' (known: " + known + ")");
             }
             methods.push_back(*parsed);
         }
@@ -177,7 +182,7 @@ class ConfigReader {
         const bool negative =
             v.is_number_integer() && !v.is_number_unsigned() && v.get<int64_t>() < 0;
         if (!v.is_number_integer() || negative || v.get<uint64_t>() < lo || v.get<uint64_t>() > hi)
-            fail(name + " = " + v.dump() + ": must be a whole number from " + std::to_string(lo) +
+            fail(name + " = " + echo(v) + ": must be a whole number from " + std::to_string(lo) +
                  " to " + std::to_string(hi));
         return uint32_t(v.get<uint64_t>());
     }
@@ -201,7 +206,7 @@ class ConfigReader {
         const std::string name = std::string("motion.") + key;
         if (!v.is_number() || !std::isfinite(v.get<double>()) || v.get<double>() < lo ||
             v.get<double>() > hi)
-            fail(name + " = " + v.dump() + ": must be a number from " + shortNumber(lo) + " to " +
+            fail(name + " = " + echo(v) + ": must be a number from " + shortNumber(lo) + " to " +
                  shortNumber(hi));
         return v.get<double>();
     }
@@ -215,20 +220,20 @@ class ConfigReader {
             if (key != "what" && key != "frames" && key != "lightDegreesPerFrame" &&
                 key != "lightMetresPerFrame" && key != "cameraMetresPerFrame" &&
                 key != "cameraDegreesPerFrame")
-                fail("motion: unknown key '" + key + "' (known: " + known + ")");
+                fail("motion: unknown key '" + echoText(key) + "' (known: " + known + ")");
         if (!v.contains("what"))
             fail("motion.what is required: \"light\", \"camera\" or both in an array");
         Motion m;
         const json what = v["what"].is_string() ? json::array({v["what"]}) : v["what"];
         if (!what.is_array() || what.empty())
-            fail("motion.what = " + v["what"].dump() +
+            fail("motion.what = " + echo(v["what"]) +
                  ": must be \"light\", \"camera\" or a non-empty array of them");
         for (const json& w : what) {
             if (w != "light" && w != "camera")
-                fail("motion.what[] = " + w.dump() + ": must be \"light\" or \"camera\"");
+                fail("motion.what[] = " + echo(w) + ": must be \"light\" or \"camera\"");
             const MotionKind kind = w == "light" ? MotionKind::Light : MotionKind::Camera;
             if (std::find(m.what.begin(), m.what.end(), kind) != m.what.end())
-                fail("motion.what lists " + w.dump() + " twice");
+                fail("motion.what lists " + echo(w) + " twice");
             m.what.push_back(kind);
         }
         // Two frames make the first pair; the flicker is a change from one frame to the next.
@@ -241,14 +246,26 @@ class ConfigReader {
         return m;
     }
 
+    // parseSize's message quotes the text as it is; a configuration's text is echoed (a "\n" in
+    // it made a two-line error; found by bench_fuzzer).
     VkExtent2D size(const json& v, const std::string& name) const {
+        const std::string given = text(v, name);
         try {
-            return parseSize(text(v, name), name);
-        } catch (const std::runtime_error& e) {
-            const std::string why = e.what();
-            if (why.rfind(path_ + ": ", 0) == 0) throw;
-            fail(why);
+            return parseSize(given, name);
+        } catch (const std::runtime_error&) {
+            fail(name + " '" + echoText(given) +
+                 "' is not WIDTHxHEIGHT with both whole numbers from 1 to 16384");
         }
+    }
+
+    // Every run is added here, and the configuration refused as soon as it has too many, before
+    // millions of them take memory and time.
+    void add(BenchConfig& c, const BenchRun& r) const {
+        if (c.runs.size() >= kMaxRuns)
+            fail("expands to more than " + std::to_string(kMaxRuns) +
+                 " runs (scenes x methods, profiles and sweep values): split it into several "
+                 "configurations");
+        c.runs.push_back(r);
     }
 
     // The plugin's rules for settings, applied without a GPU through its budget.
@@ -279,7 +296,7 @@ class ConfigReader {
                 r.method = m;
                 r.family = "profiles";
                 r.label = lightscatter::methodName(m);
-                c.runs.push_back(r);
+                add(c, r);
                 continue;
             }
             for (lightscatter::Profile p : profiles) {
@@ -288,7 +305,7 @@ class ConfigReader {
                 r.profile = p;
                 r.family = "profiles";
                 r.label = std::string("epipolar ") + lightscatter::profileName(p);
-                c.runs.push_back(r);
+                add(c, r);
             }
         }
         // One-parameter sweeps from one profile (balanced unless sweepProfile says otherwise).
@@ -310,51 +327,51 @@ class ConfigReader {
             BenchRun r = sweepRun("slices", "slices=" + std::to_string(n));
             r.settings.slices = n;
             checkSettings(r, "sweeps.slices");
-            c.runs.push_back(r);
+            add(c, r);
         }
         for (const json& v : values("samples")) {
             const uint32_t n = whole(v, "sweeps.samples[]", 0, kMax);
             BenchRun r = sweepRun("samples", "samples=" + std::to_string(n));
             r.settings.samplesPerSlice = n;
             checkSettings(r, "sweeps.samples");
-            c.runs.push_back(r);
+            add(c, r);
         }
         for (const json& v : values("initialStep")) {
             const uint32_t n = whole(v, "sweeps.initialStep[]", 0, kMax);
             BenchRun r = sweepRun("initialStep", "initialStep=" + std::to_string(n));
             r.settings.initialSampleStep = n;
             checkSettings(r, "sweeps.initialStep");
-            c.runs.push_back(r);
+            add(c, r);
         }
         // Epipolar's depth breaks: a smaller threshold marches more samples where the depth steps
         // a little (temporal stability: bench/flicker.json).
         for (const json& v : values("refinementThreshold")) {
             if (!v.is_number())
-                fail("sweeps.refinementThreshold[] = " + v.dump() + ": must be a number");
+                fail("sweeps.refinementThreshold[] = " + echo(v) + ": must be a number");
             BenchRun r = sweepRun("refinementThreshold",
                                   "refinementThreshold=" + shortNumber(v.get<double>()));
             r.settings.refinementThreshold = v.get<float>();
             checkSettings(r, "sweeps.refinementThreshold");
-            c.runs.push_back(r);
+            add(c, r);
         }
         // Epipolar's refinement on in-scattering differences (0: off): the samples between two
         // marched ones that differ by more than this are marched too.
         for (const json& v : values("inscatterRefinementThreshold")) {
             if (!v.is_number())
-                fail("sweeps.inscatterRefinementThreshold[] = " + v.dump() + ": must be a number");
+                fail("sweeps.inscatterRefinementThreshold[] = " + echo(v) + ": must be a number");
             BenchRun r = sweepRun("inscatterRefinementThreshold",
                                   "inscatterRefinementThreshold=" + shortNumber(v.get<double>()));
             r.settings.inscatterRefinementThreshold = v.get<float>();
             checkSettings(r, "sweeps.inscatterRefinementThreshold");
-            c.runs.push_back(r);
+            add(c, r);
         }
         for (const json& v : values("minMaxTrees")) {
             if (!v.is_boolean())
-                fail("sweeps.minMaxTrees[] = " + v.dump() + ": must be true or false");
+                fail("sweeps.minMaxTrees[] = " + echo(v) + ": must be true or false");
             BenchRun r =
                 sweepRun("trees", std::string("minMaxTrees=") + (v.get<bool>() ? "on" : "off"));
             r.settings.minMaxTrees = v.get<bool>();
-            c.runs.push_back(r);
+            add(c, r);
         }
         for (const json& v : values("shadowMapSize")) {
             const uint32_t n = whole(v, "sweeps.shadowMapSize[]", 1, 16384);
@@ -363,54 +380,57 @@ class ConfigReader {
                                                            " shadowMap=" + std::to_string(n));
                 r.method = m;
                 r.shadowMapSize = n;
-                c.runs.push_back(r);
+                add(c, r);
             }
         }
-        // Seed 003's comparison: cone-march with each sample count and mode (the cone-limited march,
-        // the naive full-ray march, the cone-limited march without shadow-map sampling).
+        // Seed 003's comparison: cone-march with each sample count and mode (the cone-limited
+        // march, the naive full-ray march, the cone-limited march without shadow-map sampling).
         const json counts = values("coneSamples"), modes = values("coneModes");
         if (!modes.empty() && counts.empty()) fail("sweeps.coneModes needs sweeps.coneSamples");
         for (const json& n : counts) {
             const uint32_t samples = whole(n, "sweeps.coneSamples[]", 1, 4096);
             for (const json& mode : modes.empty() ? json::array({"cone"}) : modes) {
-                const std::string m = mode.is_string() ? mode.get<std::string>() : mode.dump();
+                const std::string m = mode.is_string() ? mode.get<std::string>() : echo(mode);
                 if (m != "cone" && m != "naive" && m != "no-shadow-sampling")
-                    fail("sweeps.coneModes[] = " + mode.dump() + ": must be cone, naive or no-shadow-sampling");
+                    fail("sweeps.coneModes[] = " + echo(mode) +
+                         ": must be cone, naive or no-shadow-sampling");
                 BenchRun r = sweepRun("cone", m + " " + std::to_string(samples));
                 r.method = lightscatter::Method::ConeMarch;
                 r.settings.coneSamples = samples;
                 r.settings.coneLimited = m != "naive";
                 r.settings.shadowSampling = m != "no-shadow-sampling";
-                c.runs.push_back(r);
+                add(c, r);
             }
         }
         // Seed 002: the slices method with each plane count and accumulation target.
         const json planes = values("slicePlanes"), targets = values("sliceTargets");
-        if (!targets.empty() && planes.empty()) fail("sweeps.sliceTargets needs sweeps.slicePlanes");
+        if (!targets.empty() && planes.empty())
+            fail("sweeps.sliceTargets needs sweeps.slicePlanes");
         for (const json& n : planes) {
             const uint32_t count = whole(n, "sweeps.slicePlanes[]", 2, 4096);
             for (const json& target : targets.empty() ? json::array({"float16"}) : targets) {
-                const std::string t = target.is_string() ? target.get<std::string>() : target.dump();
+                const std::string t = target.is_string() ? target.get<std::string>() : echo(target);
                 if (t != "float16" && t != "float32" && t != "rgba8" && t != "rgba8-dither")
-                    fail("sweeps.sliceTargets[] = " + target.dump() +
+                    fail("sweeps.sliceTargets[] = " + echo(target) +
                          ": must be float16, float32, rgba8 (the seed's rounding) or rgba8-dither");
                 BenchRun r = sweepRun("planes", "slices " + std::to_string(count) + " " + t);
                 r.method = lightscatter::Method::Slices;
                 r.settings.slicePlanes = count;
-                r.settings.sliceTarget = t == "float16"   ? lightscatter::SliceTarget::Float16
-                                         : t == "float32" ? lightscatter::SliceTarget::Float32
-                                                          : lightscatter::SliceTarget::Rgba8Channels;
+                r.settings.sliceTarget = t == "float16" ? lightscatter::SliceTarget::Float16
+                                         : t == "float32"
+                                             ? lightscatter::SliceTarget::Float32
+                                             : lightscatter::SliceTarget::Rgba8Channels;
                 r.settings.sliceDither = t == "rgba8-dither";
-                c.runs.push_back(r);
+                add(c, r);
             }
         }
         // Seed 004's simplified light model against the full one, for each method of the
         // configuration that honours it (beam-tree-analytic, analytic); both are measured against
         // the full model's float64 reference.
         for (const json& v : values("lightModel")) {
-            const std::string name = v.is_string() ? v.get<std::string>() : v.dump();
+            const std::string name = v.is_string() ? v.get<std::string>() : echo(v);
             if (name != "full" && name != "simplified")
-                fail("sweeps.lightModel[] = " + v.dump() + ": must be full or simplified");
+                fail("sweeps.lightModel[] = " + echo(v) + ": must be full or simplified");
             bool any = false;
             for (lightscatter::Method m : methods) {
                 if (m != lightscatter::Method::BeamTreeAnalytic &&
@@ -422,7 +442,7 @@ class ConfigReader {
                 r.method = m;
                 r.settings.lightModel = name == "simplified" ? lightscatter::LightModel::Simplified
                                                              : lightscatter::LightModel::Full;
-                c.runs.push_back(r);
+                add(c, r);
             }
             if (!any)
                 fail("sweeps.lightModel needs method beam-tree-analytic or analytic in methods");
@@ -436,7 +456,7 @@ class ConfigReader {
                 r.size = s;
                 r.measureError = c.measureError && r.size.width == c.size.width &&
                                  r.size.height == c.size.height;
-                c.runs.push_back(r);
+                add(c, r);
             }
         }
     }

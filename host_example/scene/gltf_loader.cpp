@@ -1,7 +1,10 @@
 // glTF 2.0 loading with Debian's tinygltf shared library (no TINYGLTF_IMPLEMENTATION here: the
-// implementation and its stb_image live in libtinygltf.so). tinygltf parses the JSON and the
-// buffers; everything it does not check (buffer view and accessor bounds, indices, node references,
-// the node tree) is checked here before a byte is read, so a malformed file ends in a SceneError.
+// implementation lives in libtinygltf.so). tinygltf parses the JSON and the buffers, and hands each
+// image's bytes to this loader, which decodes them with Debian's stb_image; everything tinygltf
+// does not check (buffer view and accessor bounds, indices, node references, the node tree) is
+// checked here before a byte is read or anything is allocated for it, so a malformed file ends in
+// a SceneError.
+#include <stb/stb_image.h>
 #include <tiny_gltf.h>
 
 #include <algorithm>
@@ -15,10 +18,11 @@
 #include <iterator>
 #include <limits>
 #include <map>
-#include <nlohmann/json.hpp>
+#include <memory>
 #include <optional>
 
 #include "scene/input_file.h"
+#include "scene/json_input.h"
 #include "scene/scene.h"
 
 namespace host {
@@ -33,16 +37,31 @@ glm::mat3 orthonormalAxes(const glm::mat3& m) {
     };
     const glm::vec3 x = unit(m[0], {1, 0, 0});
     glm::vec3 y = unit(m[1] - glm::dot(m[1], x) * x, {0, 0, 0});
-    if (glm::length(y) < 0.5f) y = unit(glm::cross(x, std::fabs(x.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0)), {0, 1, 0});
+    if (glm::length(y) < 0.5f)
+        y = unit(glm::cross(x, std::fabs(x.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0)),
+                 {0, 1, 0});
     return glm::mat3(x, y, glm::cross(x, y));
 }
 
 constexpr uint32_t kGlbMagic = 0x46546C67u;  // "glTF"
 constexpr uint32_t kGlbJson = 0x4E4F534Au;   // "JSON"
 constexpr uint32_t kGlbBin = 0x004E4942u;    // "BIN\0"
-// Beyond this an accessor is refused before anything is allocated for it: a malformed count must
-// not turn into a multi-gigabyte allocation.
+// Every count is checked against the bytes that hold it before anything is allocated for it, so
+// that the memory a file costs follows the data it holds. Beyond this an accessor is refused even
+// when its data is there.
 constexpr size_t kMaxElements = size_t{1} << 28;
+// An accessor without a buffer view is zeros (sparse substitutes aside): data the file does not
+// hold, so its count alone would decide the allocation (2^28 VEC3s: 3 GiB from 300 bytes).
+constexpr size_t kMaxZeroFilledElements = size_t{1} << 20;
+// What a file's nodes place in all, with what the mesh held before: 1 GiB of vertices, 512 MiB of
+// indices (the largest model of the shipped scenes, 2CylinderEngine, has 84,657 vertices).
+constexpr size_t kMaxPlacedVertices = size_t{1} << 25;
+constexpr size_t kMaxPlacedIndices = size_t{1} << 27;
+// Vulkan's maxImageDimension2D on lavapipe and on most GPUs: a larger image could not be uploaded,
+// and is refused before it is decoded.
+constexpr int kMaxTextureSide = 16384;
+// tinygltf's report holds a line per failure and names from the file; a message keeps this much.
+constexpr size_t kMaxReportChars = 1024;
 // A .gltf/.glb, and each buffer or image it references, is read whole; beyond this it is refused.
 constexpr uint64_t kGltfFileCap = 2 * kGiB;
 
@@ -51,7 +70,7 @@ constexpr uint64_t kGltfFileCap = 2 * kGiB;
 }
 
 // tinygltf's messages end in newlines and may hold several; a SceneError is one line.
-std::string oneLine(const std::string& text) {
+std::string joinLines(const std::string& text) {
     std::string out;
     size_t start = 0;
     while (start <= text.size()) {
@@ -64,19 +83,20 @@ std::string oneLine(const std::string& text) {
     }
     return out;
 }
+std::string oneLine(const std::string& text) {
+    return echoText(joinLines(text), kMaxReportChars);
+}
 
 std::string plural(size_t n, const std::string& noun, const std::string& nouns = "") {
     return std::to_string(n) + " " + (n == 1 ? noun : nouns.empty() ? noun + "s" : nouns);
 }
 
 std::vector<unsigned char> readFile(const std::string& path) {
-    std::string text;
     try {
-        text = readInputFile(path, "glTF file", kGltfFileCap);
+        return readInputBytes(path, "glTF file", kGltfFileCap);
     } catch (const InputFileError& e) {
         throw SceneError(e.what());
     }
-    return {text.begin(), text.end()};
 }
 
 uint32_t readU32(const std::vector<unsigned char>& bytes, size_t at) {
@@ -114,6 +134,7 @@ void checkGlbLayout(const std::string& path, const std::vector<unsigned char>& b
 // reads for buffers and images go through readInputFile, so they obey the same rules as the glTF.
 struct ImageLoadContext {
     const tinygltf::Model* model = nullptr;
+    std::map<int, Texture> decoded;       // image index -> its pixels (held here, not in the model)
     std::map<int, std::string> failures;  // image index -> why it has no pixels
     std::vector<std::string> files;       // every external file read
     std::string readFailure;              // the first external file that could not be read
@@ -135,8 +156,7 @@ bool readReferencedFile(std::vector<unsigned char>* out, std::string* err, const
                         void* user) {
     auto& context = *static_cast<ImageLoadContext*>(user);
     try {
-        const std::string bytes = readInputFile(path, "file referenced by the glTF", kGltfFileCap);
-        out->assign(bytes.begin(), bytes.end());
+        *out = readInputBytes(path, "file referenced by the glTF", kGltfFileCap);
         context.files.push_back(path);
         return true;
     } catch (const InputFileError& e) {
@@ -169,15 +189,24 @@ std::string extensionLabel(const std::string& extension) {
 
 // Checked on the JSON itself before tinygltf parses it: tinygltf fails on a Draco file's
 // accessors with "accessor[0] invalid bufferView", and reads glTF 1.0 as a broken 2.0 file.
+// The nesting cap applies here too, before tinygltf walks the document recursively (its "extras"
+// become nested tinygltf::Values, one call per level).
 void checkDocument(const std::string& path, const unsigned char* text, size_t size) {
-    const nlohmann::json doc = nlohmann::json::parse(text, text + size, nullptr, false);
+    const auto* begin = reinterpret_cast<const char*>(text);
+    nlohmann::json doc;
+    try {
+        doc = parseJson(path, begin, begin + size,
+                        {.refuseDuplicateKeys = false, .malformedIsDiscarded = true});
+    } catch (const JsonInputError& e) {
+        throw SceneError(e.what());
+    }
     if (doc.is_discarded() || !doc.is_object()) return;  // tinygltf names the JSON error
     if (auto asset = doc.find("asset"); asset != doc.end() && asset->is_object()) {
         if (auto version = asset->find("version"); version != asset->end()) {
             const std::string v =
-                version->is_string() ? version->get<std::string>() : version->dump();
+                version->is_string() ? version->get<std::string>() : echo(*version);
             if (v.rfind("2.", 0) != 0 && v != "2") {
-                fail(path, "glTF version " + v + ": this loader reads glTF 2.0 only");
+                fail(path, "glTF version " + echoText(v) + ": this loader reads glTF 2.0 only");
             }
         }
     }
@@ -185,7 +214,8 @@ void checkDocument(const std::string& path, const unsigned char* text, size_t si
         required != doc.end() && required->is_array()) {
         for (const auto& name : *required) {
             if (name.is_string() && !implemented(name.get<std::string>())) {
-                fail(path, "requires glTF extension " + extensionLabel(name.get<std::string>()) +
+                fail(path, "requires glTF extension " +
+                               extensionLabel(echoText(name.get<std::string>())) +
                                ", which this loader does not implement");
             }
         }
@@ -207,7 +237,7 @@ void checkDocument(const std::string& path, const unsigned char* text, size_t si
             for (const auto& item : extensions->items()) {
                 if (replacesGeometry(item.key())) {
                     fail(path, "mesh " + std::to_string(m) + " primitive " + std::to_string(p) +
-                                   " uses glTF extension " + extensionLabel(item.key()) +
+                                   " uses glTF extension " + extensionLabel(echoText(item.key())) +
                                    ", which this loader does not implement");
                 }
             }
@@ -224,8 +254,57 @@ bool bufferViewInBounds(const tinygltf::Model& model, int view) {
            v.byteLength <= size_t(std::numeric_limits<int>::max());
 }
 
-bool loadImageLeniently(tinygltf::Image* image, int index, std::string* /*err*/, std::string* warn,
-                        int width, int height, const unsigned char* bytes, int size, void* user) {
+struct StbFree {
+    void operator()(void* pixels) const { stbi_image_free(pixels); }
+};
+
+// stb_image's reason for its last failure. It can quote bytes of the file (an unknown PNG chunk's
+// four-letter type, newline and all), so it is echoed like any text from a file.
+std::string stbReason() {
+    const char* why = stbi_failure_reason();
+    return echoText(why ? why : "no reason given");
+}
+
+// Decodes an image file's bytes to RGBA8 in `texture`, or says why not. The pixels are held once,
+// plus stb_image's own buffer while they are copied out of it (tinygltf's LoadImageData held them
+// twice, and the RGBA8 conversion made a third copy next to the model's).
+std::string decodeImage(const unsigned char* bytes, int size, int wantWidth, int wantHeight,
+                        Texture& texture) {
+    int width = 0, height = 0, channels = 0;
+    if (size <= 0 || !stbi_info_from_memory(bytes, size, &width, &height, &channels))
+        return "not an image stb_image reads: " + stbReason();
+    if (width < 1 || height < 1 || width > kMaxTextureSide || height > kMaxTextureSide) {
+        return std::to_string(width) + "x" + std::to_string(height) +
+               " pixels: a texture has 1 to " + std::to_string(kMaxTextureSide) + " a side";
+    }
+    if ((wantWidth > 0 && wantWidth != width) || (wantHeight > 0 && wantHeight != height)) {
+        return "the image is " + std::to_string(width) + "x" + std::to_string(height) +
+               ", the glTF says " + std::to_string(wantWidth) + "x" + std::to_string(wantHeight);
+    }
+    const size_t values = size_t(width) * size_t(height) * 4;
+    int w = 0, h = 0;
+    if (stbi_is_16_bit_from_memory(bytes, size)) {
+        const std::unique_ptr<stbi_us, StbFree> wide(
+            stbi_load_16_from_memory(bytes, size, &w, &h, &channels, 4));
+        if (!wide || w != width || h != height) return "stb_image cannot decode it: " + stbReason();
+        texture.rgba.resize(values);
+        for (size_t i = 0; i < values; ++i)  // rounded, 65535 -> 255
+            texture.rgba[i] = uint8_t((uint32_t{wide.get()[i]} * 255u + 32767u) / 65535u);
+    } else {
+        const std::unique_ptr<stbi_uc, StbFree> pixels(
+            stbi_load_from_memory(bytes, size, &w, &h, &channels, 4));
+        if (!pixels || w != width || h != height)
+            return "stb_image cannot decode it: " + stbReason();
+        texture.rgba.assign(pixels.get(), pixels.get() + values);
+    }
+    texture.width = uint32_t(width);
+    texture.height = uint32_t(height);
+    return "";
+}
+
+bool loadImageLeniently(tinygltf::Image* image, int index, std::string* /*err*/,
+                        std::string* /*warn*/, int width, int height, const unsigned char* bytes,
+                        int size, void* user) {
     auto& context = *static_cast<ImageLoadContext*>(user);
     // tinygltf hands over bufferView images without checking the view against its buffer.
     if (image->bufferView >= 0 && !bufferViewInBounds(*context.model, image->bufferView)) {
@@ -233,11 +312,12 @@ bool loadImageLeniently(tinygltf::Image* image, int index, std::string* /*err*/,
             "buffer view " + std::to_string(image->bufferView) + " lies outside its buffer";
         return true;
     }
-    std::string why;
-    if (!tinygltf::LoadImageData(image, index, &why, warn, width, height, bytes, size, nullptr)) {
-        context.failures[index] = oneLine(why);
-        image->image.clear();
-    }
+    Texture texture;
+    const std::string why = decodeImage(bytes, size, width, height, texture);
+    if (why.empty())
+        context.decoded[index] = std::move(texture);
+    else
+        context.failures[index] = why;
     return true;
 }
 
@@ -357,34 +437,6 @@ const char* typeName(int type) {
     }
 }
 
-// Glue between tinygltf's 1-4 channel, 8- or 16-bit images and the RGBA8 of Texture.
-std::optional<std::vector<uint8_t>> toRgba8(const tinygltf::Image& image) {
-    if (image.width < 1 || image.height < 1 || image.component < 1 || image.component > 4 ||
-        (image.bits != 8 && image.bits != 16)) {
-        return std::nullopt;
-    }
-    const size_t pixels = size_t(image.width) * size_t(image.height);
-    const size_t channels = size_t(image.component), bytesPer = size_t(image.bits / 8);
-    if (image.image.size() != pixels * channels * bytesPer) return std::nullopt;
-    auto channel = [&](size_t pixel, size_t c) -> uint8_t {
-        const unsigned char* p = &image.image[(pixel * channels + c) * bytesPer];
-        if (bytesPer == 1) return p[0];
-        uint16_t v;
-        std::memcpy(&v, p, 2);
-        return uint8_t((uint32_t{v} * 255u + 32767u) / 65535u);  // rounded, 65535 -> 255
-    };
-    std::vector<uint8_t> rgba(pixels * 4);
-    for (size_t i = 0; i < pixels; ++i) {
-        const bool gray = channels < 3;
-        const uint8_t r = channel(i, 0);
-        rgba[i * 4 + 0] = r;
-        rgba[i * 4 + 1] = gray ? r : channel(i, 1);
-        rgba[i * 4 + 2] = gray ? r : channel(i, 2);
-        rgba[i * 4 + 3] = channels == 2 ? channel(i, 1) : channels == 4 ? channel(i, 3) : 255;
-    }
-    return rgba;
-}
-
 // What a MeshData held before an append, so that a failed append can be undone.
 struct AppendMark {
     explicit AppendMark(const MeshData& m)
@@ -423,7 +475,7 @@ struct LocalPrimitive {
 class GltfFlattener {
   public:
     GltfFlattener(MeshData& mesh, const std::string& path, const tinygltf::Model& model,
-                  const ImageLoadContext& images)
+                  ImageLoadContext& images)
         : mesh_(mesh), path_(path), model_(model), images_(images) {}
 
     void run(const glm::mat4& transform) {
@@ -480,23 +532,20 @@ class GltfFlattener {
             return known->second;
         }
         const tinygltf::Image& image = model_.images[size_t(source)];
-        std::string name = !image.name.empty() ? image.name : image.uri;
+        std::string name =
+            !image.name.empty() ? echoText(image.name) : echoText(image.uri, kMaxPathChars);
         if (name.empty()) name = "image " + std::to_string(source);
-        auto rgba = toRgba8(image);
         int result = -1;
-        if (rgba) {
-            Texture texture;
+        if (auto decoded = images_.decoded.find(source); decoded != images_.decoded.end()) {
+            Texture texture = std::move(decoded->second);
+            images_.decoded.erase(decoded);
             texture.name = name;
-            texture.width = uint32_t(image.width);
-            texture.height = uint32_t(image.height);
-            texture.rgba = std::move(*rgba);
             result = int(mesh_.textures.size());
             mesh_.textures.push_back(std::move(texture));
         } else {
             auto failure = images_.failures.find(source);
-            const std::string why = failure != images_.failures.end() ? failure->second
-                                    : image.image.empty()             ? "the file could not be read"
-                                                                      : "unsupported pixel layout";
+            const std::string why =
+                failure != images_.failures.end() ? failure->second : "the file could not be read";
             mesh_.warnings.push_back(path_ + ": image " + std::to_string(source) + " '" + name +
                                      "' could not be decoded (" + why +
                                      "); materials using it fall back to their base color factor");
@@ -530,13 +579,20 @@ class GltfFlattener {
 
     // Depth-first with an explicit stack: a deep hierarchy must not overflow the call stack, and
     // a node reached twice (a cycle, or a node with two parents) is refused, so the work is
-    // bounded by the node count.
+    // bounded by the node count. Meshes are read as their nodes are reached, and placed once the
+    // whole tree has been walked and the totals checked.
+    struct Placement {
+        size_t mesh;
+        glm::mat4 world;
+    };
+
     void placeNodes(const glm::mat4& transform) {
         struct Pending {
             int node;
             glm::mat4 parent;
         };
         std::vector<Pending> stack;
+        std::vector<Placement> placements;
         const std::vector<int> roots = sceneRoots();
         for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.push_back({*it, transform});
         std::vector<bool> reached(model_.nodes.size(), false);
@@ -562,15 +618,42 @@ class GltfFlattener {
                                     std::to_string(node.mesh) + ", but the file has " +
                                     plural(model_.meshes.size(), "mesh", "meshes"));
                 }
-                placeMesh(size_t(node.mesh), world);
+                readMesh(size_t(node.mesh));
+                placements.push_back({size_t(node.mesh), world});
             }
             for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) {
                 stack.push_back({*it, world});
             }
         }
+        checkPlacedTotals(placements);
+        for (const Placement& p : placements) {
+            for (const LocalPrimitive& primitive : *meshes_[p.mesh]) place(primitive, p.world);
+        }
     }
 
-    void placeMesh(size_t meshIndex, const glm::mat4& world) {
+    // Each node places its mesh once more: a mesh read once can become any number of copies (ten
+    // thousand nodes of a 24,000-vertex mesh are 60 KB of JSON and 8 GB of vertices), so the
+    // totals are checked before anything is placed.
+    void checkPlacedTotals(const std::vector<Placement>& placements) const {
+        size_t vertices = mesh_.vertices.size(), indices = mesh_.indices.size();
+        for (const Placement& p : placements) {
+            for (const LocalPrimitive& primitive : *meshes_[p.mesh]) {
+                if (primitive.triangles.empty()) continue;
+                vertices += primitive.positions.size();
+                indices += primitive.triangles.size();
+            }
+            if (vertices > kMaxPlacedVertices || indices > kMaxPlacedIndices) {
+                fail(path_, "its nodes place more than " +
+                                std::to_string(vertices > kMaxPlacedVertices ? kMaxPlacedVertices
+                                                                             : kMaxPlacedIndices) +
+                                (vertices > kMaxPlacedVertices ? " vertices" : " indices") +
+                                " in all (each node places its mesh once more), the most this "
+                                "loader accepts");
+            }
+        }
+    }
+
+    void readMesh(size_t meshIndex) {
         if (!meshes_[meshIndex]) {
             std::vector<LocalPrimitive> primitives;
             const auto& source = model_.meshes[meshIndex].primitives;
@@ -580,17 +663,12 @@ class GltfFlattener {
             }
             meshes_[meshIndex] = std::move(primitives);
         }
-        for (const LocalPrimitive& primitive : *meshes_[meshIndex]) place(primitive, world);
     }
 
     // Appends one placed copy of a primitive in world space.
     void place(const LocalPrimitive& local, const glm::mat4& world) {
         if (local.triangles.empty()) return;
-        const size_t base = mesh_.vertices.size();
-        if (local.positions.size() > std::numeric_limits<uint32_t>::max() - base ||
-            local.triangles.size() > std::numeric_limits<uint32_t>::max() - mesh_.indices.size()) {
-            fail(path_, "more than 2^32 vertices or indices in all");
-        }
+        const size_t base = mesh_.vertices.size();  // below 2^32: checkPlacedTotals
         const glm::mat3 linear(world);
         const float det = glm::determinant(linear);
         // Normals go through the inverse-transpose; its direction is the cofactor matrix's
@@ -790,30 +868,35 @@ class GltfFlattener {
         return {data.data() + v.byteOffset, v.byteLength};
     }
 
-    // Calls `visit(element, bytes)` for each element of an accessor (bounds checked first), and
-    // then for each sparse substitute, so the last call for an element wins.
-    template <class Visit>
-    void forEachElement(int index, const tinygltf::Accessor& a, size_t elementSize,
-                        Visit&& visit) const {
+    // Everything that could make reading an accessor go wrong, before anything is allocated for
+    // it: its elements (count x stride from its offset) inside its buffer view and the view inside
+    // its buffer, its sparse indices and values inside theirs, every sparse index below the count.
+    void checkAccessor(int index, const tinygltf::Accessor& a, size_t elementSize) const {
         const std::string name = "accessor " + std::to_string(index);
-        if (a.count > kMaxElements) {
-            fail(path_, name + " has " + std::to_string(a.count) + " elements, more than " +
-                            std::to_string(kMaxElements) + " this loader accepts");
-        }
         if (a.bufferView >= 0) {
             const auto [bytes, length] = viewBytes(a.bufferView, name);
-            const size_t byteStride = model_.bufferViews[size_t(a.bufferView)].byteStride;
-            const size_t stride = byteStride != 0 ? byteStride : elementSize;
+            const size_t stride = strideOf(a, elementSize);
             if (stride < elementSize) {
                 fail(path_, "buffer view " + std::to_string(a.bufferView) + " has byteStride " +
                                 std::to_string(stride) + ", less than the " +
                                 std::to_string(elementSize) + "-byte elements of " + name);
             }
             if (!fits(a.byteOffset, a.count, stride, elementSize, length)) {
-                fail(path_,
-                     name + " reads past the end of buffer view " + std::to_string(a.bufferView));
+                fail(path_, name + " reads past the end of buffer view " +
+                                std::to_string(a.bufferView) + ": " + std::to_string(a.count) +
+                                " elements of " + std::to_string(elementSize) + " bytes, " +
+                                std::to_string(stride) + " apart from byte " +
+                                std::to_string(a.byteOffset) + ", in a view of " +
+                                std::to_string(length) + " bytes");
             }
-            for (size_t i = 0; i < a.count; ++i) visit(i, bytes + a.byteOffset + i * stride);
+        }
+        const size_t most = a.bufferView >= 0 ? kMaxElements : kMaxZeroFilledElements;
+        if (a.count > most) {
+            fail(path_,
+                 name + " has " + std::to_string(a.count) + " elements" +
+                     (a.bufferView >= 0 ? ""
+                                        : " and no buffer view (zeros the file does not hold)") +
+                     ", more than the " + std::to_string(most) + " this loader accepts");
         }
         if (!a.sparse.isSparse) return;
         const auto& sparse = a.sparse;
@@ -841,8 +924,38 @@ class GltfFlattener {
                 fail(path_, name + " has sparse index " + std::to_string(target) +
                                 ", out of range for " + plural(a.count, "element"));
             }
-            visit(target, valueBytes + valueOffset + i * elementSize);
         }
+    }
+
+    size_t strideOf(const tinygltf::Accessor& a, size_t elementSize) const {
+        const size_t byteStride = model_.bufferViews[size_t(a.bufferView)].byteStride;
+        return byteStride != 0 ? byteStride : elementSize;
+    }
+
+    // Calls `visit(element, bytes)` for each element of an accessor that checkAccessor passed, and
+    // then for each sparse substitute, so the last call for an element wins.
+    template <class Visit>
+    void forEachElement(const tinygltf::Accessor& a, size_t elementSize, Visit&& visit) const {
+        if (a.bufferView >= 0) {
+            const tinygltf::BufferView& view = model_.bufferViews[size_t(a.bufferView)];
+            const unsigned char* bytes =
+                model_.buffers[size_t(view.buffer)].data.data() + view.byteOffset + a.byteOffset;
+            const size_t stride = strideOf(a, elementSize);
+            for (size_t i = 0; i < a.count; ++i) visit(i, bytes + i * stride);
+        }
+        if (!a.sparse.isSparse) return;
+        const auto& sparse = a.sparse;
+        auto start = [&](int viewIndex, int offset) {
+            const tinygltf::BufferView& view = model_.bufferViews[size_t(viewIndex)];
+            return model_.buffers[size_t(view.buffer)].data.data() + view.byteOffset +
+                   size_t(offset);
+        };
+        const int indexType = sparse.indices.componentType;
+        const size_t indexSize = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(indexType)));
+        const unsigned char* indices = start(sparse.indices.bufferView, sparse.indices.byteOffset);
+        const unsigned char* values = start(sparse.values.bufferView, sparse.values.byteOffset);
+        for (size_t i = 0; i < size_t(sparse.count); ++i)
+            visit(readIndex(indices + i * indexSize, indexType), values + i * elementSize);
     }
 
     std::vector<float> readFloats(int index, int components, const char* role) const {
@@ -858,9 +971,10 @@ class GltfFlattener {
             fail(path_, name + " has unknown componentType " + std::to_string(a.componentType));
         }
         const size_t c = size_t(components);
+        checkAccessor(index, a, size_t(componentSize) * c);
         std::vector<float> out(a.count * c, 0.0f);  // no buffer view: zeros, as glTF says
         forEachElement(
-            index, a, size_t(componentSize) * c, [&](size_t element, const unsigned char* bytes) {
+            a, size_t(componentSize) * c, [&](size_t element, const unsigned char* bytes) {
                 for (size_t k = 0; k < c; ++k) {
                     out[element * c + k] = readComponent(bytes + k * size_t(componentSize),
                                                          a.componentType, a.normalized);
@@ -875,9 +989,10 @@ class GltfFlattener {
             fail(path_, "accessor " + std::to_string(index) +
                             " (indices) must be SCALAR unsigned byte, short or int");
         }
-        std::vector<uint32_t> out(a.count, 0);
         const size_t size = size_t(tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType)));
-        forEachElement(index, a, size, [&](size_t element, const unsigned char* bytes) {
+        checkAccessor(index, a, size);
+        std::vector<uint32_t> out(a.count, 0);
+        forEachElement(a, size, [&](size_t element, const unsigned char* bytes) {
             out[element] = readIndex(bytes, a.componentType);
         });
         return out;
@@ -886,7 +1001,7 @@ class GltfFlattener {
     MeshData& mesh_;
     const std::string& path_;
     const tinygltf::Model& model_;
-    const ImageLoadContext& images_;
+    ImageLoadContext& images_;  // its decoded pixels are moved into the mesh
     size_t materialBase_ = 0;
     std::map<int, int> textureOfImage_;  // glTF image -> MeshData texture, -1: unusable
     std::vector<std::optional<std::vector<LocalPrimitive>>> meshes_;
@@ -895,7 +1010,11 @@ class GltfFlattener {
 }  // namespace
 
 void appendGltf(MeshData& mesh, const std::string& path, const glm::mat4& transform) {
-    const std::vector<unsigned char> bytes = readFile(path);
+    appendGltfBytes(mesh, path, readFile(path), transform);
+}
+
+void appendGltfBytes(MeshData& mesh, const std::string& path, std::vector<unsigned char> bytes,
+                     const glm::mat4& transform) {
     const std::string baseDir = std::filesystem::path(path).parent_path().string();
     tinygltf::Model model;
     ImageLoadContext images;
@@ -911,6 +1030,8 @@ void appendGltf(MeshData& mesh, const std::string& path, const glm::mat4& transf
     loader.SetFsCallbacks(files);
     std::string err, warn;
     bool ok;
+    if (bytes.size() > std::numeric_limits<uint32_t>::max())
+        fail(path, "is larger than the 4 GiB tinygltf reads");
     if (isGlb(bytes)) {
         checkGlbLayout(path, bytes);
         checkDocument(path, bytes.data() + 20, readU32(bytes, 12));
@@ -925,6 +1046,9 @@ void appendGltf(MeshData& mesh, const std::string& path, const glm::mat4& transf
                                         reinterpret_cast<const char*>(bytes.data()),
                                         uint32_t(bytes.size()), baseDir);
     }
+    // tinygltf copied what it keeps (a GLB's BIN chunk into its buffer): the file's bytes go now,
+    // before the geometry is read.
+    std::vector<unsigned char>().swap(bytes);
     // A required buffer that could not be read: its own reason, not tinygltf's wrapping of it.
     if (!ok && !images.readFailure.empty()) fail(path, images.readFailure);
     if (!ok) fail(path, "invalid glTF: " + (err.empty() ? "unknown error" : oneLine(err)));

@@ -46,8 +46,14 @@ std::string whyNotARegularFile(const std::string& path) {
     return kindOf(st.st_mode);
 }
 
-std::string readInputFile(const std::string& path, const std::string& what, uint64_t cap) {
-    auto fail = [&](const std::string& why) -> std::string {
+namespace {
+
+// Reads into `bytes` (a std::string or a byte vector) sized once from the file's size: the whole
+// file is held once, never in a buffer grown by copying (a 1 GiB buffer used to pass through a
+// 2 GiB one on its way, and a copy into a vector after that).
+template <class Bytes>
+void readInto(Bytes& bytes, const std::string& path, const std::string& what, uint64_t cap) {
+    auto fail = [&](const std::string& why) {
         throw InputFileError(path + ": " + what + " " + why);
     };
     if (path.empty()) fail("has an empty path");
@@ -57,36 +63,57 @@ std::string readInputFile(const std::string& path, const std::string& what, uint
     if (file.fd < 0) {
         const int error = errno;
         const std::string why = whyNotARegularFile(path);
-        if (!why.empty()) return fail(why);
-        return fail(std::string("cannot be opened: ") + std::strerror(error));
+        if (!why.empty()) fail(why);
+        fail(std::string("cannot be opened: ") + std::strerror(error));
     }
     struct stat st {};
-    if (::fstat(file.fd, &st) != 0)
-        return fail(std::string("cannot be read: ") + std::strerror(errno));
-    if (const std::string why = kindOf(st.st_mode); !why.empty()) return fail(why);
+    if (::fstat(file.fd, &st) != 0) fail(std::string("cannot be read: ") + std::strerror(errno));
+    if (const std::string why = kindOf(st.st_mode); !why.empty()) fail(why);
     const auto tooLarge = [&] {
-        return fail("is larger than the " + byteSize(cap) + " read for a " + what);
+        fail("is larger than the " + byteSize(cap) + " read for a " + what);
     };
-    if (uint64_t(st.st_size) > cap) return tooLarge();
-    std::string bytes(size_t(st.st_size), '\0');
+    if (uint64_t(st.st_size) > cap) tooLarge();
+    bytes.resize(size_t(st.st_size));
     size_t have = 0;
-    // The file may change while it is read: reading stops at the end it really has, and one byte
-    // past the cap is enough to know it grew beyond it.
+    // The file may change while it is read: reading stops at the end it really has. One more read
+    // into a small buffer tells whether it grew; only then does `bytes` grow, up to one byte past
+    // the cap, enough to know it grew beyond it.
     for (;;) {
-        if (have == bytes.size()) {
-            if (have > cap) return tooLarge();
-            bytes.resize(std::min<uint64_t>(cap + 1, uint64_t(have) * 2 + 4096));
+        ssize_t n;
+        if (have < bytes.size()) {
+            n = ::read(file.fd, bytes.data() + have, bytes.size() - have);
+        } else {
+            char probe[4096];
+            n = ::read(file.fd, probe, sizeof probe);
+            if (n > 0) {
+                if (uint64_t(have) + uint64_t(n) > cap) tooLarge();
+                bytes.resize(std::min<uint64_t>(cap + 1, uint64_t(have) * 2 + 4096));
+                std::memcpy(bytes.data() + have, probe, size_t(n));
+            }
         }
-        const ssize_t n = ::read(file.fd, bytes.data() + have, bytes.size() - have);
         if (n < 0) {
             if (errno == EINTR) continue;
-            return fail(std::string("cannot be read: ") + std::strerror(errno));
+            fail(std::string("cannot be read: ") + std::strerror(errno));
         }
         if (n == 0) break;
         have += size_t(n);
     }
-    if (have > cap) return tooLarge();
+    if (have > cap) tooLarge();
     bytes.resize(have);
+}
+
+}  // namespace
+
+std::string readInputFile(const std::string& path, const std::string& what, uint64_t cap) {
+    std::string bytes;
+    readInto(bytes, path, what, cap);
+    return bytes;
+}
+
+std::vector<unsigned char> readInputBytes(const std::string& path, const std::string& what,
+                                          uint64_t cap) {
+    std::vector<unsigned char> bytes;
+    readInto(bytes, path, what, cap);
     return bytes;
 }
 

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace host {
 
@@ -19,6 +20,9 @@ constexpr uint64_t kGiB = uint64_t{1} << 30;
 // The whole file, or throws InputFileError "PATH: <what> ..." naming the rule broken (missing, a
 // directory, not a regular file, larger than `cap`, unreadable). `what` is e.g. "scene file".
 std::string readInputFile(const std::string& path, const std::string& what, uint64_t cap);
+// The same as bytes, for data that is kept as it is read (a glTF's buffers).
+std::vector<unsigned char> readInputBytes(const std::string& path, const std::string& what,
+                                          uint64_t cap);
 
 // Why `path` cannot be read as a regular file ("does not exist", "is a directory", "is a character
 // device, not a regular file", ...), or "" when it is a regular file.

@@ -64,6 +64,11 @@ struct MeshData {
 // `transform`) to `mesh`. Throws SceneError naming the file and what is wrong.
 void appendGltf(MeshData& mesh, const std::string& path, const glm::mat4& transform = glm::mat4(1.0f));
 
+// appendGltf of a file's bytes already in memory: `path` names it in messages, and the URIs it
+// references resolve against its folder. The fuzzer's way in (tests/fuzz/gltf_fuzzer.cpp).
+void appendGltfBytes(MeshData& mesh, const std::string& path, std::vector<unsigned char> bytes,
+                     const glm::mat4& transform = glm::mat4(1.0f));
+
 enum class LightKind { Directional, Spot, Point };
 enum class PhaseKind { CornetteShanks, Isotropic, Hazy };
 

@@ -7,11 +7,11 @@
 #include <initializer_list>
 #include <limits>
 #include <nlohmann/json.hpp>
-#include <set>
 
 #include "activity.h"
 #include "lightscatter.h"
 #include "scene/input_file.h"
+#include "scene/json_input.h"
 #include "scene/scene.h"
 
 namespace host {
@@ -50,10 +50,13 @@ class SceneReader {
         const json root = parse();
         if (!root.is_object()) fail("the top level must be a JSON object");
         checkKeys(root, "",
-                  {"gltf", "models", "camera", "light", "lights", "medium", "sky", "ambient", "exposure"});
+                  {"gltf", "models", "camera", "light", "lights", "medium", "sky", "ambient",
+                   "exposure"});
         if (member(root, "light") && member(root, "lights"))
-            fail("\"light\" and \"lights\" are both given: a scene has one light (\"light\") or a list of "
-                 "them (\"lights\"), never both");
+            fail(
+                "\"light\" and \"lights\" are both given: a scene has one light (\"light\") or a "
+                "list of "
+                "them (\"lights\"), never both");
         if (const json* v = member(root, "gltf")) scene.models.push_back({modelPath(*v, "gltf")});
         if (const json* v = member(root, "models")) readModels(*v, scene.models);
         if (const json* v = member(root, "camera")) readCamera(*v, scene.camera);
@@ -93,30 +96,10 @@ class SceneReader {
     [[noreturn]] void fail(const std::string& what) const { throw SceneError(path_ + ": " + what); }
 
     json parse() const {
-        std::string text;
         try {
-            text = readInputFile(path_, "scene file", kSceneFileCap);
-        } catch (const InputFileError& e) {
+            return readJsonFile(path_, "scene file", kSceneFileCap);
+        } catch (const JsonInputError& e) {
             throw SceneError(e.what());
-        }
-        // nlohmann keeps the last of two equal keys; a repeated field is as likely a mistake as
-        // a misspelt one, so it is refused too.
-        std::vector<std::set<std::string>> keysOfOpenObjects;
-        auto noDuplicates = [&](int, json::parse_event_t event, json& parsed) {
-            if (event == json::parse_event_t::object_start) keysOfOpenObjects.emplace_back();
-            if (event == json::parse_event_t::object_end) keysOfOpenObjects.pop_back();
-            if (event == json::parse_event_t::key &&
-                !keysOfOpenObjects.back().insert(parsed.get<std::string>()).second) {
-                fail("key '" + parsed.get<std::string>() + "' appears twice in one object");
-            }
-            return true;
-        };
-        try {
-            return json::parse(text, noDuplicates);
-        } catch (const json::parse_error& e) {
-            fail("malformed JSON at byte " + std::to_string(e.byte) + ": " + e.what());
-        } catch (const json::exception& e) {
-            fail(std::string("malformed JSON: ") + e.what());  // e.g. 1e400: number overflow
         }
     }
 
@@ -137,7 +120,7 @@ class SceneReader {
             bool found = false;
             for (const char* name : known) found = found || item.key() == name;
             if (!found) {
-                fail((where.empty() ? "" : where + ": ") + "unknown key '" + item.key() +
+                fail((where.empty() ? "" : where + ": ") + "unknown key '" + echoText(item.key()) +
                      "' (known keys: " + joinNames(known) + ")");
             }
         }
@@ -252,20 +235,27 @@ class SceneReader {
             if (text == word) return value;
             names += (names.empty() ? "" : ", ") + std::string(word);
         }
-        fail(name + " '" + text + "' is not one of " + names);
+        fail(name + " '" + echoText(text) + "' is not one of " + names);
     }
 
     // Relative paths are taken from the scene file's folder, so a scene can be run from anywhere.
     std::string modelPath(const json& v, const std::string& name) const {
         const std::string text = string(v, name);
         if (text.empty()) fail(name + " must not be empty");
+        if (text.size() > kMaxPathChars || text.find('\0') != std::string::npos) {
+            fail(name + " '" + echoText(text) + "' is not a path: " +
+                 (text.size() > kMaxPathChars
+                      ? "longer than the " + std::to_string(kMaxPathChars) + " bytes Linux opens"
+                      : std::string("it holds a NUL character")));
+        }
         std::filesystem::path file(text);
         if (file.is_relative()) file = std::filesystem::path(path_).parent_path() / file;
         std::error_code ec;
         file = std::filesystem::absolute(file, ec).lexically_normal();
         const std::string why = ec ? "cannot be resolved" : whyNotARegularFile(file.string());
         if (!why.empty())
-            fail(name + " '" + text + "' " + why + " (looked for " + file.string() + ")");
+            fail(name + " '" + echoText(text, kMaxPathChars) + "' " + why + " (looked for " +
+                 echoText(file.string(), 2 * kMaxPathChars) + ")");
         return file.string();
     }
 
@@ -425,7 +415,7 @@ class SceneReader {
         const bool negative = v.is_number_unsigned() ? false : v.get<int64_t>() < 0;
         const uint64_t size = negative ? 0 : v.get<uint64_t>();
         if (negative || size > uint64_t(kMax)) {
-            fail(name + " = " + v.dump() + ": must be in [0, " + std::to_string(kMax) + "]");
+            fail(name + " = " + echo(v) + ": must be in [0, " + std::to_string(kMax) + "]");
         }
         return uint32_t(size);
     }

@@ -295,7 +295,8 @@ TEST(BenchConfigMotion, TheRefinementThresholdSweepFollowsThePluginsRule) {
 }
 
 TEST(BenchConfigMotion, DefaultsAndBothMotions) {
-    const auto dir = std::filesystem::temp_directory_path() / ("ls_bench_motion_test_" + std::to_string(::getpid()));
+    const auto dir = std::filesystem::temp_directory_path() /
+                     ("ls_bench_motion_test_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     const auto file = dir / "good.json";
     std::ofstream(file) << withMotion(R"({"what": ["camera", "light"], "lightMetresPerFrame": 0})");
@@ -310,6 +311,94 @@ TEST(BenchConfigMotion, DefaultsAndBothMotions) {
 
     std::ofstream(file) << R"({"scenes": ["scenes/atrium.json"]})";
     EXPECT_FALSE(host::bench::loadBenchConfig(file.string(), LS_SOURCE_DIR).motion);
+}
+
+}  // namespace
+
+namespace {
+
+std::string deepArray(size_t levels) {
+    return std::string(levels, '[') + std::string(levels, ']');
+}
+
+// A deep value in any of these keys used to overflow the stack (exit 139, no message): in an error
+// message that wrote it out, or in a copy of it. The parser refuses it now, naming the field.
+TEST(BenchConfigInput, DeepNestingIsRefusedInEveryKey) {
+    const std::string scenes = R"("scenes": ["scenes/atrium.json"])";
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"frames", "{" + scenes + R"(, "frames": %})"},
+        {"measureError", "{" + scenes + R"(, "measureError": %})"},
+        {"size", "{" + scenes + R"(, "size": %})"},
+        {"scenes", R"({"scenes": %})"},
+        {"sweeps.slices", "{" + scenes + R"(, "sweeps": {"slices": %}})"},
+        {"sweeps.coneModes", "{" + scenes + R"(, "sweeps": {"coneSamples": [8], "coneModes": %}})"},
+    };
+    for (size_t levels : {size_t{30000}, size_t{100000}}) {
+        for (const auto& [field, text] : cases) {
+            SCOPED_TRACE(field + " " + std::to_string(levels));
+            std::string file = text;
+            file.replace(file.find('%'), 1, deepArray(levels));
+            const std::string m = configError(file);
+            EXPECT_EQ(m.rfind(field + "[0][0][0]", 0), 0u) << m;
+            EXPECT_NE(m.find(": arrays and objects nest more than 64 deep here"), std::string::npos)
+                << m;
+            EXPECT_LE(m.size(), 200u) << m;
+        }
+    }
+}
+
+// Runs grow as scenes x sweep values, the square of the file: a 30 KB file made a million runs
+// (hundreds of MB, a minute of checks). Refused at 10,000, 24 times the largest shipped one.
+TEST(BenchConfigInput, AConfigurationOfTooManyRunsIsRefused) {
+    // Each scene: one epipolar balanced run and 100 tree sweeps (which need no budget check), 101.
+    auto config = [](int sceneCount) {
+        std::string scenes, trees;
+        for (int i = 0; i < sceneCount; ++i)
+            scenes += std::string(i ? "," : "") + "\"scenes/atrium.json\"";
+        for (int i = 0; i < 100; ++i) trees += std::string(i ? "," : "") + "true";
+        return R"({"methods": ["epipolar"], "scenes": [)" + scenes +
+               R"(], "sweeps": {"minMaxTrees": [)" + trees + "]}}";
+    };
+    EXPECT_EQ(configError(config(100)),
+              "expands to more than 10000 runs (scenes x methods, profiles and sweep values): "
+              "split it into several configurations");
+    EXPECT_EQ(configError(config(99)), "(accepted)");  // 9999 runs
+}
+
+// parseSize quotes its text as it is: a "\n" in a configuration's size made a two-line error
+// (found by bench_fuzzer; tests/fuzz/corpus/bench/size-newline).
+TEST(BenchConfigInput, ASizeIsEchoedOnOneLine) {
+    EXPECT_EQ(
+        configError(R"({"scenes": ["scenes/atrium.json"], "sweeps": {"size": ["\n960x540"]}})"),
+        "sweeps.size[] '\\n960x540' is not WIDTHxHEIGHT with both whole numbers from 1 to "
+        "16384");
+    EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"], "size": "64x"})"),
+              "size '64x' is not WIDTHxHEIGHT with both whole numbers from 1 to 16384");
+}
+
+TEST(BenchConfigInput, RepeatedKeysAndLongValues) {
+    EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"], "frames": 2, "frames": 3})"),
+              "key 'frames' appears twice in one object");
+    EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"],
+                              "sweeps": {"slices": [64], "slices": [128]}})"),
+              "sweeps: key 'slices' appears twice in one object");
+    std::string many =
+        R"({"scenes": ["scenes/atrium.json"], "sweeps": {"coneSamples": [8], "coneModes": [)";
+    for (int i = 0; i < 100000; ++i) many += "[1],";
+    const std::string m = configError(many + "[1]]}}");
+    EXPECT_EQ(m.rfind("sweeps.coneModes[] = [1]: must be cone, naive or no-shadow-sampling", 0), 0u)
+        << m;
+    const std::string size = configError(R"({"scenes": ["scenes/atrium.json"], "size": ")" +
+                                         std::string(100000, '9') + "\"}");
+    EXPECT_EQ(size.rfind("size '9999", 0), 0u) << size;
+    EXPECT_LE(size.size(), 200u) << size;
+    const std::string scene = configError(R"({"scenes": [")" + std::string(100000, 's') + "\"]}");
+    EXPECT_EQ(scene.rfind("scenes[0] = \"ssss", 0), 0u) << scene;
+    EXPECT_LE(scene.size(), 200u) << scene;
+    const std::string method = configError(R"({"scenes": ["scenes/atrium.json"], "methods": [")" +
+                                           std::string(100000, 'm') + "\"]}");
+    EXPECT_EQ(method.rfind("methods: unknown method 'mmmm", 0), 0u) << method;
+    EXPECT_LE(method.size(), 400u) << method;  // the known methods follow
 }
 
 }  // namespace

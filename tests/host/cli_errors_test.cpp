@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
 
@@ -61,15 +62,44 @@ TEST(CliErrors, SceneValuesTheFloatsLoseAreNamedInTheScenesTerms) {
 }
 
 TEST(CliErrors, OutOfHostMemorySaysWhatRanOutWhileDoingWhat) {
-    // An accessor of 2^28 - 1 vertices without data: 3 GiB of zeros, under a 1.5 GB limit.
-    writeFile("huge.gltf",
-              R"({"asset": {"version": "2.0"}, "accessors": [{"componentType": 5126,
-                  "count": 268435455, "type": "VEC3"}], "meshes": [{"primitives": [{"attributes":
-                  {"POSITION": 0}}]}], "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0})");
+    // 44739242 vertices in a 512 MiB buffer (a sparse file: no disk space): the buffer and 512 MiB
+    // of positions read from it, under a 0.9 GB limit. (An accessor without a buffer view, zeros
+    // the file does not hold, is capped before it can run out of anything.)
+    constexpr uint64_t kBin = 512ull << 20;
+    constexpr uint64_t kCount = kBin / 12;
+    writeFile("huge.bin", "");
+    std::filesystem::resize_file(path("huge.bin"), kBin);
+    const nlohmann::json gltf = {
+        {"asset", {{"version", "2.0"}}},
+        {"buffers", {{{"byteLength", kBin}, {"uri", "huge.bin"}}}},
+        {"bufferViews", {{{"buffer", 0}, {"byteLength", kCount * 12}}}},
+        {"accessors",
+         {{{"bufferView", 0}, {"componentType", 5126}, {"count", kCount}, {"type", "VEC3"}}}},
+        {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}}}}}}},
+        {"nodes", {{{"mesh", 0}}}},
+        {"scenes", {{{"nodes", {0}}}}},
+        {"scene", 0}};
+    writeFile("huge.gltf", gltf.dump());
     writeFile("huge.json", R"({"gltf": "huge.gltf"})");
-    const auto r = run("render huge.json --size 8x8", "ulimit -v 1500000 &&");
+    const auto r = run("render huge.json --size 8x8", "ulimit -v 900000 &&");
     expectFailure(r, "lightscatter: out of host memory (an allocation failed) while loading " +
                          path("huge.gltf"));
+}
+
+// A 200 KB value nested 100,000 deep made `budget --settings` exit 139 with no output (the error
+// message's dump() of it overflowed the stack); 30,000 levels made a 60 KB "line".
+TEST(CliErrors, DeepNestingInASettingsFileIsOneShortLine) {
+    for (size_t levels : {size_t{30000}, size_t{100000}}) {
+        SCOPED_TRACE(levels);
+        writeFile("deep.json",
+                  R"({"slices": )" + std::string(levels, '[') + std::string(levels, ']') + "}");
+        const auto r = run("budget --settings deep.json");
+        EXPECT_EQ(r.exitCode, 1) << r.out.substr(0, 300);
+        expectFailure(r, "deep.json: slices[0][0][0]");
+        EXPECT_NE(r.out.find("arrays and objects nest more than 64 deep here"), std::string::npos)
+            << r.out.substr(0, 300);
+        EXPECT_LT(r.out.size(), 300u) << r.out.substr(0, 300);
+    }
 }
 
 TEST(CliErrors, DoubledPrefixIsGone) {

@@ -2,7 +2,9 @@
 // Khronos models from Debian's assimp-testmodels. Expected values are worked out by hand in the
 // comments, never by calling the loader's own helpers.
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -10,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <glm/glm.hpp>
+#include <new>
 #include <nlohmann/json.hpp>
 
 #include "scene/scene.h"
@@ -195,6 +198,44 @@ std::string errorOf(const std::string& path) {
         return e.what();
     }
     return "(no error)";
+}
+
+// appendGltf of `file` in a child process whose address space may grow by at most `headroom`
+// bytes: its SceneError message, "(no error)", or "(out of memory)" when an allocation failed.
+std::string errorWithin(const std::string& file, uint64_t headroom) {
+    int fds[2];
+    if (::pipe(fds) != 0) return "(no pipe)";
+    const pid_t child = ::fork();
+    if (child == 0) {
+        ::close(fds[0]);
+        std::string result = "(no error)";
+        {
+            long pages = 0;
+            std::ifstream("/proc/self/statm") >> pages;
+            const rlim_t limit = rlim_t(pages) * rlim_t(::sysconf(_SC_PAGESIZE)) + headroom;
+            const rlimit l{limit, limit};
+            ::setrlimit(RLIMIT_AS, &l);
+            try {
+                host::MeshData mesh;
+                host::appendGltf(mesh, file);
+            } catch (const host::SceneError& e) {
+                result = e.what();
+            } catch (const std::bad_alloc&) {
+                result = "(out of memory)";
+            }
+        }
+        (void)!::write(fds[1], result.data(), result.size());
+        ::_exit(0);
+    }
+    ::close(fds[1]);
+    std::string out;
+    char buffer[4096];
+    for (ssize_t n; (n = ::read(fds[0], buffer, sizeof buffer)) > 0;) out.append(buffer, size_t(n));
+    ::close(fds[0]);
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) out += " (the child died)";
+    return out;
 }
 
 class GltfTest : public ::testing::Test {
@@ -568,7 +609,54 @@ TEST_F(GltfTest, AnImageViewOutsideItsBufferFallsBackToo) {
                                  "their base color factor");
 }
 
+// An image larger than a Vulkan image may be is refused from its header, before its pixels are
+// decoded (a 16384^2 image is 1 GiB of them).
+TEST_F(GltfTest, ImagesTooLargeToUploadAreRefusedBeforeDecoding) {
+    writeBytes(path("wide.png"), png(16385, 1, 8, 0, std::vector<uint8_t>(16385, 7)));
+    host::MeshData m;
+    const std::string file = texturedTriangle({"wide.png"}).writeGltf(path("wide.gltf"));
+    host::appendGltf(m, file);
+    EXPECT_EQ(m.materials.at(0).baseColorTexture, -1);
+    ASSERT_EQ(m.warnings.size(), 1u);
+    EXPECT_EQ(m.warnings[0], file +
+                                 ": image 0 'wide.png' could not be decoded (16385x1 pixels: a "
+                                 "texture has 1 to 16384 a side); materials using it fall back "
+                                 "to their base color factor");
+}
+
+// stb_image names an unknown PNG chunk by its four bytes from the file: a newline among them made
+// a two-line warning (found by tests/fuzz/gltf_fuzzer; tests/fuzz/corpus/gltf/png-chunk-newline).
+TEST_F(GltfTest, AnImagesFailureIsOneLineWhateverItsBytes) {
+    std::string bytes = png(1, 1, 8, 0, {7});
+    bytes.insert(33, std::string("\0\0\0\0\nBCD\0\0\0\0", 12));  // after IHDR
+    writeBytes(path("chunk.png"), bytes);
+    host::MeshData m;
+    const std::string file = texturedTriangle({"chunk.png"}).writeGltf(path("chunk.gltf"));
+    host::appendGltf(m, file);
+    ASSERT_EQ(m.warnings.size(), 1u);
+    EXPECT_EQ(m.warnings[0], file +
+                                 ": image 0 'chunk.png' could not be decoded (stb_image cannot "
+                                 "decode it: \\nBCD PNG chunk not known); materials using it fall "
+                                 "back to their base color factor");
+}
+
 // --- Errors: one line naming the file and the problem. ---
+
+// tinygltf turns "extras" into nested values one call per level: the nesting cap of the project's
+// other JSON readers is applied before tinygltf sees the document.
+TEST_F(GltfTest, DeepNestingIsRefusedBeforeTinygltfWalksIt) {
+    const std::string file = path("deep.gltf");
+    for (size_t levels : {size_t{65}, size_t{100000}}) {
+        writeBytes(file, R"({"asset": {"version": "2.0", "extras": )" + std::string(levels, '[') +
+                             std::string(levels, ']') + "}}");
+        EXPECT_EQ(errorOf(file).rfind(file + ": asset.extras[0][0][0]", 0), 0u) << levels;
+        EXPECT_NE(errorOf(file).find("arrays and objects nest more than 64 deep here"),
+                  std::string::npos);
+    }
+    writeBytes(file, R"({"asset": {"version": "2.0", "extras": )" + std::string(62, '[') +
+                         std::string(62, ']') + "}}");
+    EXPECT_EQ(errorOf(file), "(no error)");
+}
 
 TEST_F(GltfTest, MissingFile) {
     const std::string file = path("nope.gltf");
@@ -731,19 +819,124 @@ TEST_F(GltfTest, AccessorPastTheEndOfItsBufferView) {
     b.node({{"mesh", b.mesh({{"POSITION", 0}})}});
     b.scene({0});
     const std::string file = b.writeGltf(path("past.gltf"));
-    EXPECT_EQ(errorOf(file), file + ": accessor 0 reads past the end of buffer view 0");
+    EXPECT_EQ(errorOf(file), file +
+                                 ": accessor 0 reads past the end of buffer view 0: 4 elements of "
+                                 "12 bytes, 12 apart from byte 0, in a view of 36 bytes");
 
     // The same with an offset: 12 + 36 > 36.
     b.doc["accessors"][0]["count"] = 3;
     b.doc["accessors"][0]["byteOffset"] = 12;
     b.writeGltf(file);
-    EXPECT_EQ(errorOf(file), file + ": accessor 0 reads past the end of buffer view 0");
+    EXPECT_EQ(errorOf(file), file +
+                                 ": accessor 0 reads past the end of buffer view 0: 3 elements of "
+                                 "12 bytes, 12 apart from byte 12, in a view of 36 bytes");
 
     // A stride larger than the view allows for the count.
     b.doc["accessors"][0]["byteOffset"] = 0;
     b.doc["bufferViews"][0]["byteStride"] = 16;
     b.writeGltf(file);
-    EXPECT_EQ(errorOf(file), file + ": accessor 0 reads past the end of buffer view 0");
+    EXPECT_EQ(errorOf(file), file +
+                                 ": accessor 0 reads past the end of buffer view 0: 3 elements of "
+                                 "12 bytes, 16 apart from byte 0, in a view of 36 bytes");
+}
+
+// A count was allocated for before it was checked against its buffer view: a 430-byte file with
+// 2^28 VEC3s took 3.2 GB and 5.5 s to be told it reads past the view, 4294967295 was "out of host
+// memory". Checked first now, within 64 MiB of memory.
+TEST_F(GltfTest, HugeCountsAreRefusedBeforeAnyAllocation) {
+    constexpr uint64_t kHeadroom = 64ull << 20;
+    for (uint64_t count : {268435456ull, 536870912ull, 4294967295ull}) {
+        SCOPED_TRACE(count);
+        GltfBuilder b;
+        b.accessor(b.view(kTriangle), kFloat, size_t(count), "VEC3");
+        b.node({{"mesh", b.mesh({{"POSITION", 0}})}});
+        b.scene({0});
+        const std::string file = b.writeGltf(path("count.gltf"));
+        EXPECT_LT(fs::file_size(file), 500u);
+        EXPECT_EQ(errorWithin(file, kHeadroom),
+                  file +
+                      ": accessor 0 reads past the end of buffer view 0: " + std::to_string(count) +
+                      " elements of 12 bytes, 12 apart from byte 0, in a view of 36 bytes");
+    }
+    // Indices, and sparse substitutes, the same.
+    GltfBuilder b;
+    const int position = b.vec3s(kTriangle);
+    const int index =
+        b.accessor(b.view(std::vector<uint16_t>{0, 1, 2}), kUShort, 4294967295u, "SCALAR");
+    b.node({{"mesh", b.mesh({{"POSITION", position}}, index)}});
+    b.scene({0});
+    const std::string file = b.writeGltf(path("indices.gltf"));
+    EXPECT_EQ(errorWithin(file, kHeadroom),
+              file +
+                  ": accessor 1 reads past the end of buffer view 1: 4294967295 elements of 2 "
+                  "bytes, 2 apart from byte 0, in a view of 6 bytes");
+    // tinygltf wants a buffer view for indices; sparse substitutes go into the positions.
+    b.doc["meshes"][0]["primitives"][0].erase("indices");
+    b.doc["accessors"][0] = {{"componentType", kFloat},
+                             {"count", 3},
+                             {"type", "VEC3"},
+                             {"sparse",
+                              {{"count", 2147483647},
+                               {"indices", {{"bufferView", 1}, {"componentType", kUShort}}},
+                               {"values", {{"bufferView", 0}}}}}};
+    b.writeGltf(file);
+    EXPECT_EQ(errorWithin(file, kHeadroom),
+              file + ": accessor 0 has a sparse count or offset out of range");
+}
+
+// Zeros the file does not hold (an accessor without a buffer view) are capped: 2^28 of them took
+// 3 GiB from 300 bytes.
+TEST_F(GltfTest, AccessorsWithoutDataAreCapped) {
+    GltfBuilder b;
+    b.accessor(-1, kFloat, 268435456, "VEC3");
+    b.doc["accessors"][0].erase("bufferView");
+    b.node({{"mesh", b.mesh({{"POSITION", 0}})}});
+    b.scene({0});
+    const std::string file = b.writeGltf(path("zeros.gltf"));
+    EXPECT_EQ(errorWithin(file, 64ull << 20),
+              file +
+                  ": accessor 0 has 268435456 elements and no buffer view (zeros the file does "
+                  "not hold), more than the 1048576 this loader accepts");
+    b.doc["accessors"][0]["count"] = 3;
+    b.writeGltf(file);
+    host::MeshData m;
+    host::appendGltf(m, file);  // three zeros: one degenerate triangle, placed
+    EXPECT_EQ(m.vertices.size(), 3u);
+}
+
+// Each node places its mesh once more, so a few bytes of nodes multiply a mesh: the totals are
+// checked before anything is placed (40 copies of 2^20 vertices would be 1.25 GiB of them).
+TEST_F(GltfTest, WhatTheNodesPlaceIsCappedBeforePlacing) {
+    GltfBuilder b;
+    b.accessor(-1, kFloat, size_t{1} << 20, "VEC3");  // zeros: 2^20 vertices for 20 bytes
+    b.doc["accessors"][0].erase("bufferView");
+    b.mesh({{"POSITION", 0}});
+    json roots = json::array();
+    for (int i = 0; i < 40; ++i) roots.push_back(b.node({{"mesh", 0}}));
+    b.scene(roots);
+    const std::string file = b.writeGltf(path("copies.gltf"));
+    EXPECT_EQ(errorWithin(file, 256ull << 20),
+              file +
+                  ": its nodes place more than 33554432 vertices in all (each node places its "
+                  "mesh once more), the most this loader accepts");
+}
+
+// A buffer read from its .bin was held three times on its way (a string grown to twice its size by
+// copying, then a copy into the buffer): a 1 GiB .bin peaked at 3.2 GB. It is read once now.
+TEST_F(GltfTest, AnExternalBufferIsHeldOnce) {
+    constexpr uint64_t kBin = 256ull << 20;
+    const std::string bin = path("big.bin");
+    writeBytes(bin, std::string(reinterpret_cast<const char*>(kTriangle.data()), 36));
+    fs::resize_file(bin, kBin);  // sparse: no disk space
+    GltfBuilder b;
+    b.doc["bufferViews"] = {{{"buffer", 0}, {"byteLength", 36}}};
+    b.accessor(0, kFloat, 3, "VEC3");
+    b.node({{"mesh", b.mesh({{"POSITION", 0}})}});
+    b.scene({0});
+    b.doc["buffers"] = {{{"byteLength", kBin}, {"uri", "big.bin"}}};
+    const std::string file = path("big.gltf");
+    writeBytes(file, b.doc.dump());
+    EXPECT_EQ(errorWithin(file, kBin + (96ull << 20)), "(no error)");
 }
 
 TEST_F(GltfTest, BufferViewPastTheEndOfItsBuffer) {

@@ -330,7 +330,8 @@ TEST_F(SceneFileTest, ANearPlaneTheDepthBufferCannotResolveIsRefused) {
 
 TEST_F(SceneFileTest, UnknownKeysAreRefusedWithTheKnownOnes) {
     EXPECT_EQ(errorFor(R"({"camra": {}})"),
-              "unknown key 'camra' (known keys: gltf, models, camera, light, lights, medium, sky, ambient, "
+              "unknown key 'camra' (known keys: gltf, models, camera, light, lights, medium, sky, "
+              "ambient, "
               "exposure)");
     EXPECT_EQ(
         errorFor(R"({"camera": {"fov": 60}})"),
@@ -467,18 +468,64 @@ TEST_F(SceneFileTest, ALightListGivesEveryLight) {
 
 TEST_F(SceneFileTest, ALightListHasItsOwnRules) {
     EXPECT_EQ(errorFor(R"({"light": {"type": "spot"}, "lights": [{"type": "spot"}]})"),
-              "\"light\" and \"lights\" are both given: a scene has one light (\"light\") or a list of them "
+              "\"light\" and \"lights\" are both given: a scene has one light (\"light\") or a "
+              "list of them "
               "(\"lights\"), never both");
     EXPECT_EQ(errorFor(R"({"lights": []})"), "lights must be a non-empty array of light objects");
-    EXPECT_EQ(errorFor(R"({"lights": {"type": "spot"}})"), "lights must be a non-empty array of light objects");
+    EXPECT_EQ(errorFor(R"({"lights": {"type": "spot"}})"),
+              "lights must be a non-empty array of light objects");
     EXPECT_EQ(errorFor(R"({"lights": [{"type": "spot"}, 3]})"), "lights[1] must be an object");
-    EXPECT_EQ(errorFor(R"({"lights": [{"type": "spot"}, {"type": "spot", "halfAngleDegrees": 95}]})")
-                  .rfind("lights[1].halfAngleDegrees", 0),
+    EXPECT_EQ(
+        errorFor(R"({"lights": [{"type": "spot"}, {"type": "spot", "halfAngleDegrees": 95}]})")
+            .rfind("lights[1].halfAngleDegrees", 0),
+        0u);
+    EXPECT_EQ(errorFor(R"({"lights": [{"type": "spot"}, {"type": "spot", "colour": 1}]})")
+                  .rfind("lights[1]: unknown key 'colour'", 0),
               0u);
-    EXPECT_EQ(errorFor(R"({"lights": [{"type": "spot"}, {"type": "spot", "colour": 1}]})").rfind("lights[1]: unknown key 'colour'", 0), 0u);
     // A point light with a cube shadow map is taken alone and among others.
     EXPECT_EQ(errorFor(R"({"lights": [{"type": "point", "shadowMapSize": 64}]})"), "(no error)");
     EXPECT_EQ(errorFor(R"({"lights": [{"type": "spot"}, {"type": "point", "shadowMapSize": 64},
                                       {"type": "point", "shadowMapSize": 32}]})"),
               "(no error)");
+}
+
+namespace {
+
+// A 200 KB value of `levels` arrays within one another.
+std::string deepArray(size_t levels) {
+    return std::string(levels, '[') + std::string(levels, ']');
+}
+
+}  // namespace
+
+// Deep nesting is refused while parsing, in every field, and no message quotes more than a few
+// dozen characters of what the file holds (scene files used to refuse these through type checks;
+// now the parser does, as for the settings and benchmark files).
+TEST_F(SceneFileTest, DeepNestingAndLongValuesGiveShortErrors) {
+    for (size_t levels : {size_t{30000}, size_t{100000}}) {
+        SCOPED_TRACE(levels);
+        for (const std::string field : {"camera", "models", "lights", "exposure"}) {
+            const std::string m = errorFor("{\"" + field + "\": " + deepArray(levels) + "}");
+            EXPECT_EQ(m.rfind(field + "[0][0]", 0), 0u) << m;
+            EXPECT_NE(m.find("arrays and objects nest more than 64 deep"), std::string::npos) << m;
+            EXPECT_LE(m.size(), 200u) << m;
+        }
+    }
+    const std::string key(100000, 'k');
+    const std::string unknown = errorFor("{\"" + key + "\": 1}");
+    EXPECT_EQ(unknown.rfind("unknown key 'kkkk", 0), 0u) << unknown;
+    EXPECT_LE(unknown.size(), 300u) << unknown;
+    const std::string phase =
+        errorFor(R"({"medium": {"phase": ")" + std::string(100000, 'p') + "\"}}");
+    EXPECT_EQ(phase.rfind("medium.phase 'ppp", 0), 0u) << phase;
+    EXPECT_LE(phase.size(), 200u) << phase;
+    const std::string path = errorFor(R"({"gltf": ")" + std::string(100000, 'g') + "\"}");
+    EXPECT_EQ(path.rfind("gltf 'ggg", 0), 0u) << path;
+    EXPECT_NE(path.find("is not a path: longer than the 4096 bytes Linux opens"), std::string::npos)
+        << path;
+    EXPECT_LE(path.size(), 200u) << path;
+    EXPECT_EQ(errorFor(R"({"gltf": "box.gltf\u0000.txt"})"),
+              "gltf 'box.gltf\\u0000.txt' is not a path: it holds a NUL character");
+    EXPECT_EQ(errorFor(R"({"camera": {"near": 1, "near": 2}})"),
+              "camera: key 'near' appears twice in one object");
 }

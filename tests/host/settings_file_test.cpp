@@ -110,7 +110,8 @@ TEST_F(HostSettingsFile, FieldsLeftOutKeepTheProfilesValues) {
 TEST_F(HostSettingsFile, BadFieldsAreNamed) {
     EXPECT_EQ(errorFor(R"({"slice": 4})").substr(0, 62),
               "unknown key 'slice' (known keys: slices, samplesPerSlice, init");
-    EXPECT_EQ(errorFor(R"({"slices": 512, "slices": 256})"), "key 'slices' appears twice");
+    EXPECT_EQ(errorFor(R"({"slices": 512, "slices": 256})"),
+              "key 'slices' appears twice in one object");
     EXPECT_EQ(errorFor(R"({"slices": -4})"),
               "slices = -4: must be a whole number from 0 to 4294967295");
     EXPECT_EQ(errorFor(R"({"slices": 4294967296})"),
@@ -167,7 +168,10 @@ TEST_F(HostSettingsFile, BadFieldsAreNamed) {
     EXPECT_EQ(errorFor(R"({"noiseVelocity": [0, 0, 0, 1e39]})"),
               "noiseVelocity[3] = 1e+39: must be a finite number");
     EXPECT_EQ(errorFor("[512]"), "the top level must be a JSON object of settings");
-    EXPECT_EQ(errorFor("{").rfind("malformed JSON: ", 0), 0u);
+    EXPECT_EQ(errorFor("{"),
+              "malformed JSON at byte 2: [json.exception.parse_error.101] parse error at line 1, "
+              "column 2: syntax error while parsing object key - unexpected end of input; "
+              "expected string literal");
 }
 
 TEST_F(HostSettingsFile, OnlyARegularFileIsRead) {
@@ -178,6 +182,45 @@ TEST_F(HostSettingsFile, OnlyARegularFileIsRead) {
         EXPECT_EQ(std::string(e.what()),
                   "/dev/zero: settings file is a character device, not a regular file");
     }
+}
+
+}  // namespace
+
+namespace {
+
+// Each field of a settings file holding `levels` arrays within one another (200 KB at 100,000).
+std::string deep(const std::string& field, size_t levels) {
+    return "{\"" + field + "\": " + std::string(levels, '[') + std::string(levels, ']') + "}";
+}
+
+// A deep value used to overflow the stack when its error message wrote it out (exit 139, no
+// message), and a 30,000-level one made a 60 KB "line". Both are refused while parsing now.
+TEST_F(HostSettingsFile, DeepNestingIsRefusedWhileParsing) {
+    for (size_t levels : {size_t{30000}, size_t{100000}}) {
+        for (const char* field : {"slices", "minMaxTrees", "noiseVelocity", "lightModel"}) {
+            SCOPED_TRACE(std::string(field) + " " + std::to_string(levels));
+            const std::string m = errorFor(deep(field, levels));
+            EXPECT_EQ(m.rfind(std::string(field) + "[0][0][0]", 0), 0u) << m;
+            EXPECT_NE(m.find(": arrays and objects nest more than 64 deep here"), std::string::npos)
+                << m;
+            EXPECT_LE(m.size(), 200u) << m;
+        }
+    }
+}
+
+TEST_F(HostSettingsFile, EchoedValuesAreCut) {
+    std::string many = R"({"slices": [0)";
+    for (int i = 1; i < 100000; ++i) many += ",0";
+    const std::string m = errorFor(many + "]}");
+    // 80 characters of the value: "[", 38 times "0," and "...".
+    std::string echoed = "[";
+    for (int i = 0; i < 38; ++i) echoed += "0,";
+    EXPECT_EQ(m, "slices = " + echoed + "...: must be a whole number from 0 to 4294967295");
+    const std::string key = errorFor("{\"" + std::string(100000, 'k') + "\": 1}");
+    EXPECT_EQ(key.rfind("unknown key 'kkkk", 0), 0u) << key;
+    EXPECT_LE(key.size(), 1000u) << key;  // the known keys follow
+    EXPECT_EQ(errorFor(R"({"minMaxTrees": true, "minMaxTrees": false})"),
+              "key 'minMaxTrees' appears twice in one object");
 }
 
 }  // namespace

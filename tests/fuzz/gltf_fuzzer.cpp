@@ -1,0 +1,21 @@
+// libFuzzer target: the glTF loader on any bytes, as a .gltf or (with the magic) a .glb. Debian's
+// tinygltf parses them (it is not instrumented: coverage and sanitizers see the project's code),
+// then the loader's own checks and flattening run over what it parsed. URIs resolve against a
+// folder that links the shipped scenes' files, so the seeds' buffers and images load. An input is
+// loaded or refused with one SceneError line, and every warning is one line; any other outcome is a
+// finding (see scene_fuzzer.cpp).
+#include "fuzz_input.h"
+#include "scene/scene.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    // The path only names the input and gives the folder for its URIs: the bytes go in directly.
+    static const std::string path = fuzz::inputFolder() + "/input.gltf";
+    host::MeshData mesh;
+    try {
+        host::appendGltfBytes(mesh, path, std::vector<unsigned char>(data, data + size));
+    } catch (const host::SceneError& e) {
+        fuzz::checkRefusal(e.what(), path);
+    }
+    for (const std::string& warning : mesh.warnings) fuzz::checkRefusal(warning, path);
+    return 0;
+}
