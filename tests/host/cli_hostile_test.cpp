@@ -123,6 +123,22 @@ std::vector<std::pair<std::string, std::string>> atriumWithFloor(const std::stri
             {"floor.png", image}};
 }
 
+// {"KEY": [[[...]]]} nested `depth` deep.
+std::string nested(const std::string& key, int depth) {
+    return "{\"" + key + "\": " + std::string(size_t(depth), '[') +
+           std::string(size_t(depth), ']') + "}";
+}
+
+// A 36-byte triangle whose positions' accessor claims `count` elements (a glTF of about 430 bytes).
+std::string hugeCount(uint32_t count) {
+    return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+      "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+      "accessors": [{"bufferView": 0, "componentType": 5126, "count": )" +
+           std::to_string(count) + R"(, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]}],
+      "bufferViews": [{"buffer": 0, "byteLength": 36}],
+      "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]})";
+}
+
 std::string repeated(const std::string& word, int n) {
     std::string out;
     for (int i = 0; i < n; ++i) out += (i ? "," : "") + word;
@@ -210,6 +226,38 @@ std::vector<Row> rows() {
          "",
          true,
          {"results"}},
+
+        // 5: deeply nested JSON is refused while it is read, in one short line.
+        {"DeepNestingInASettingsFile",
+         {{"deep.json", nested("slices", 100000)}},
+         "budget --settings deep.json",
+         1,
+         "deep.json: slices[0][0][0]"},
+        {"DeepNestingInABenchmarkFile",
+         {{"deep.json", nested("frames", 100000)}},
+         "bench --config deep.json --out r",
+         1,
+         "arrays and objects nest more than 64 deep here",
+         "",
+         true,
+         {"r"}},
+        {"DeepNestingInASceneFile",
+         {{"deep.json", nested("camera", 100000)}},
+         "render deep.json --size 8x8",
+         1,
+         "arrays and objects nest more than 64 deep here"},
+
+        // 6: a glTF accessor's count is checked against its view before anything is allocated.
+        {"AnAccessorCountFarBeyondItsView",
+         {{"count.gltf", hugeCount(268435456)}, {"count.json", R"({"gltf": "count.gltf"})"}},
+         "render count.json --size 8x8",
+         1,
+         "accessor 0 reads past the end of buffer view 0: 268435456 elements of 12 bytes"},
+        {"AnAccessorCountOfTwoToTheThirtyTwoLessOne",
+         {{"count.gltf", hugeCount(4294967295u)}, {"count.json", R"({"gltf": "count.gltf"})"}},
+         "render count.json --size 8x8",
+         1,
+         "accessor 0 reads past the end of buffer view 0: 4294967295 elements"},
 
         // 7: the list of lights has a stated limit, in the scene, the budget and the plugin.
         {"MoreLightsThanTheLimit",
