@@ -461,8 +461,14 @@ namespace {
 void checkBox(const OccluderBox& b, const std::string& field) {
     const glm::vec3 c = vec(b.center, field + ".center", false);
     const glm::vec3 h = vec(b.halfExtents, field + ".halfExtents", false);
-    for (int i = 0; i < 3; ++i)
+    for (int i = 0; i < 3; ++i) {
         if (!(h[i] > 0.0f)) fail(field + ".halfExtents[" + std::to_string(i) + "] = " + num(h[i]) + ": must be > 0");
+        // The beam tree works in double, but its pyramids end on the shaders' float lengths.
+        if (std::fabs(c[i]) > limits::kMaxLength || h[i] > limits::kMaxLength)
+            fail(field + (std::fabs(c[i]) > limits::kMaxLength ? ".center[" : ".halfExtents[") + std::to_string(i) +
+                 "] = " + num(std::fabs(c[i]) > limits::kMaxLength ? c[i] : h[i]) + ": must be within +-" +
+                 num(limits::kMaxLength) + " m (limits::kMaxLength)");
+    }
     glm::vec3 a[3];
     for (int i = 0; i < 3; ++i) {
         a[i] = vec(b.axes[static_cast<size_t>(i)], field + ".axes[" + std::to_string(i) + "]", false);
@@ -473,7 +479,6 @@ void checkBox(const OccluderBox& b, const std::string& field) {
         if (std::fabs(glm::dot(a[i], a[(i + 1) % 3])) > 1e-3f)
             fail(field + ".axes[" + std::to_string(i) + "] and [" + std::to_string((i + 1) % 3) +
                  "] are not orthogonal (dot " + num(glm::dot(a[i], a[(i + 1) % 3])) + ")");
-    (void)c;
 }
 
 // Every corner of `inner` within `outer` (to a millimetre or 1e-4 of its size).

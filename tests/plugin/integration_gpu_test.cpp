@@ -424,6 +424,10 @@ TEST_F(PluginIntegrationGpu, BadOccludersAreRefused) {
                   "non-finite");
     expectRefused(one([](auto& o) { o.outer.halfExtents[0] = -1.0f; }), "occluders[2].outer.halfExtents[0]",
                   "must be > 0");
+    expectRefused(one([](auto& o) { o.outer.center[2] = 1e20f; }), "occluders[2].outer.center[2] = 1e+20",
+                  "must be within +-1e+08 m");
+    expectRefused(one([](auto& o) { o.outer.halfExtents[1] = 3e38f; }), "occluders[2].outer.halfExtents[1]",
+                  "must be within +-1e+08 m");
     expectRefused(one([](auto& o) { o.outer.axes[1] = {0.0f, 2.0f, 0.0f}; }), "occluders[2].outer.axes[1]",
                   "must be unit");
     expectRefused(one([](auto& o) { o.outer.axes[1] = {1.0f, 0.0f, 0.0f}; }), "occluders[2].outer.axes[0] and [1]",
