@@ -190,6 +190,16 @@ std::vector<Row> rows() {
         {"PatternOutIsASceneFile", kAtriumCopy, "pattern --size 8x8 --out atrium_floor.png", 1,
          "--out atrium_floor.png: is a file that"},
 
+        // The scan of an output's folder for the files its scenes read survives what it finds
+        // there.
+        {"AnOutputBesideDeeplyNestedFiles",
+         {{"evil.json", nested("gltf", 100000)}, {"evil.gltf", nested("buffers", 100000)}},
+         "render {scene:window_room} --size 8x8 --out o.png",
+         0,
+         "o.png: 8x8",
+         "",
+         false},
+
         // 14: a benchmark that cannot run, or would measure nothing, is refused before the first
         // run.
         {"BenchMethodThatCannotTakeTheLights",
