@@ -16,11 +16,18 @@ uint64_t vulkanCreationCount();
 
 namespace detail {
 bool creationFails();  // counts one fault point; true when it is the armed one
+// The armed point's failure, as the driver's VK_ERROR_OUT_OF_DEVICE_MEMORY. [[noreturn]], so that
+// a compiler sees the handle the skipped call would have made is never read (clang's
+// -Wsometimes-uninitialized).
+[[noreturn]] inline void injectedFailure(const char* call) {
+    check(VK_ERROR_OUT_OF_DEVICE_MEMORY, call);
+    throw VulkanError(call);  // not reached: check() throws for any error
+}
 }  // namespace detail
 
 }  // namespace rg
 
 // RG_VK for calls that create or allocate: the call is not made when the fault point fails.
-#define RG_VK_CREATE(call)                                                                     \
-    (::rg::detail::creationFails() ? ::rg::check(VK_ERROR_OUT_OF_DEVICE_MEMORY, #call " [injected]") \
+#define RG_VK_CREATE(call)                                                            \
+    (::rg::detail::creationFails() ? ::rg::detail::injectedFailure(#call " [injected]") \
                                    : ::rg::check((call), #call))
