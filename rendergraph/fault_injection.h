@@ -2,7 +2,8 @@
 // A test hook for the out-of-memory paths: every Vulkan object creation and memory allocation the
 // runtime (and what is built on it) makes is a numbered fault point, and one of them can be made to
 // fail as if the driver had returned VK_ERROR_OUT_OF_DEVICE_MEMORY. Tests walk the points in turn
-// and check that each failure surfaces as one error, leaks nothing, and that the next attempt works.
+// and check that each failure surfaces as one error, leaks nothing, and that the next attempt
+// works.
 #include <cstdint>
 
 #include "vk_error.h"
@@ -28,6 +29,6 @@ bool creationFails();  // counts one fault point; true when it is the armed one
 }  // namespace rg
 
 // RG_VK for calls that create or allocate: the call is not made when the fault point fails.
-#define RG_VK_CREATE(call)                                                            \
+#define RG_VK_CREATE(call)                                                              \
     (::rg::detail::creationFails() ? ::rg::detail::injectedFailure(#call " [injected]") \
                                    : ::rg::check((call), #call))
