@@ -11,6 +11,13 @@ lightscatter::Vec3 v3(const glm::vec3& v) {
     return {v.x, v.y, v.z};
 }
 
+// Whether a field name may begin at text[i]: not inside another name, a path or an index.
+bool startsWord(const std::string& text, size_t i) {
+    if (i == 0) return true;
+    const char c = text[i - 1];
+    return !(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '[');
+}
+
 void replaceAll(std::string& text, const std::string& from, const std::string& to) {
     for (size_t at = 0; (at = text.find(from, at)) != std::string::npos; at += to.size())
         text.replace(at, from.size(), to);
@@ -68,9 +75,7 @@ std::string pluginRefusalInSceneTerms(const std::string& message, const std::str
         std::string out = pluginRefusalInSceneTerms(single, scenePath);
         std::string named;
         for (size_t i = 0; i < out.size();) {
-            const bool wordStart = i == 0 || !(std::isalnum(static_cast<unsigned char>(out[i - 1])) ||
-                                               out[i - 1] == '.' || out[i - 1] == '_' || out[i - 1] == '[');
-            if (wordStart && out.compare(i, 6, "light.") == 0) {
+            if (startsWord(out, i) && out.compare(i, 6, "light.") == 0) {
                 named += light + ".";
                 i += 6;
             } else {
@@ -107,12 +112,10 @@ std::string pluginRefusalInSceneTerms(const std::string& message, const std::str
         bool replaced = false;
         for (const auto& [plugin, scene] : kTerms) {
             const size_t n = std::strlen(plugin);
-            const bool wordStart = i == 0 || !(std::isalnum(static_cast<unsigned char>(m[i - 1])) ||
-                                               m[i - 1] == '.' || m[i - 1] == '_');
             const bool wordEnd =
                 i + n >= m.size() ||
                 !(std::isalnum(static_cast<unsigned char>(m[i + n])) || m[i + n] == '_');
-            if (wordStart && wordEnd && m.compare(i, n, plugin) == 0) {
+            if (startsWord(m, i) && wordEnd && m.compare(i, n, plugin) == 0) {
                 out += scene;
                 i += n;
                 replaced = true;

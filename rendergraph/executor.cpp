@@ -205,16 +205,16 @@ void GraphExecutor::createResource(uint32_t id) {
     if (req.size > plan.memory.size || plan.offset % req.alignment != 0 ||
         !(req.memoryTypeBits & (1u << plan.memoryType)))
         throw VulkanError("the driver's memory requirements differ from the compiled plan");
-    const std::string what = "render graph resource '" + r.name + "' in " + blockContents(plan.block);
-    if (r.buffer) {
-        checkBind(device_, vkBindBufferMemory(dev, buffers_[id], blocks_[plan.block], plan.offset),
-                  "vkBindBufferMemory", compiled_.blocks[plan.block].size, plan.memoryType, what);
-    } else {
-        checkBind(device_, vkBindImageMemory(dev, images_[id].image, blocks_[plan.block], plan.offset),
-                  "vkBindImageMemory", compiled_.blocks[plan.block].size, plan.memoryType, what);
-        // An image only copied to and from has no view (Vulkan forbids one).
-        if (plan.imageUsage & kViewUsages) images_[id] = makeViews(id, images_[id].image);
-    }
+    // The message, and the scan of the block it names, only for a bind that failed: this runs for
+    // every resource of every graph built.
+    const VkResult bound = r.buffer ? vkBindBufferMemory(dev, buffers_[id], blocks_[plan.block], plan.offset)
+                                    : vkBindImageMemory(dev, images_[id].image, blocks_[plan.block], plan.offset);
+    if (bound != VK_SUCCESS)
+        checkBind(device_, bound, r.buffer ? "vkBindBufferMemory" : "vkBindImageMemory",
+                  compiled_.blocks[plan.block].size, plan.memoryType,
+                  "render graph resource '" + r.name + "' in " + blockContents(plan.block));
+    // An image only copied to and from has no view (Vulkan forbids one).
+    if (!r.buffer && (plan.imageUsage & kViewUsages)) images_[id] = makeViews(id, images_[id].image);
 }
 
 GraphExecutor::ImageObjects GraphExecutor::makeViews(uint32_t resource, VkImage image) {
