@@ -4,11 +4,14 @@
 #include <string>
 #include <vector>
 
-#include "frame_graph.h"
-#include "frame_setup.h"
+#include "graph_config.h"
 #include "lightscatter.h"
+#include "method_units.h"
+#include "registry/method_registry.h"
 #include "rendergraph/compile.h"
 #include "rendergraph/format_info.h"
+#include "shared/point_table.h"
+#include "slices/tiling_noise.h"
 
 namespace lightscatter {
 namespace {
@@ -17,46 +20,84 @@ namespace {
 // weaker-device set (the Intel HD table at 1024x768 repeats the same figures).
 std::optional<SeedFigure> seedFigure(Profile p) {
     switch (p) {
-        case Profile::HighQuality: return SeedFigure{2560, 1600, 88.0, 5.986};
-        case Profile::Balanced: return SeedFigure{2560, 1600, 44.0, 3.269};
-        case Profile::HighPerformance: return SeedFigure{2560, 1600, 18.0, 2.267};
-        case Profile::LowHighQuality: return SeedFigure{1366, 768, 44.0, 18.9};
-        case Profile::LowBalanced: return SeedFigure{1366, 768, 11.0, 8.37};
-        case Profile::LowHighPerformance: return SeedFigure{1366, 768, 4.5, 5.38};
-        default: return std::nullopt;
+        case Profile::HighQuality:
+            return SeedFigure{2560, 1600, 88.0, 5.986};
+        case Profile::Balanced:
+            return SeedFigure{2560, 1600, 44.0, 3.269};
+        case Profile::HighPerformance:
+            return SeedFigure{2560, 1600, 18.0, 2.267};
+        case Profile::LowHighQuality:
+            return SeedFigure{1366, 768, 44.0, 18.9};
+        case Profile::LowBalanced:
+            return SeedFigure{1366, 768, 11.0, 8.37};
+        case Profile::LowHighPerformance:
+            return SeedFigure{1366, 768, 4.5, 5.38};
+        default:
+            return std::nullopt;
     }
 }
 
-// The engine's images as a typical engine hands them over (D32 depth, RGBA16F color), and the
-// camera depth-stencil format the device would give, for a budget computed without a device.
-void describeEngineImages(detail::GraphConfig& c, const rg::OfflineDeviceCaps& caps) {
-    c.depthStencil = detail::stencilFormat(caps);
-    c.coordinates = detail::coordinateFormat(caps);
+// The engine's images as a typical engine hands them over (D32 depth, RGBA16F color).
+void describeEngineImages(detail::FrameImports& f, VkExtent2D screen) {
     const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    c.depth = {VK_FORMAT_D32_SFLOAT, c.screen,
+    f.depth = {VK_FORMAT_D32_SFLOAT, screen,
                VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, ro, ro};
-    c.color = {VK_FORMAT_R16G16B16A16_SFLOAT, c.screen, VK_IMAGE_USAGE_STORAGE_BIT, VK_IMAGE_LAYOUT_GENERAL,
-               VK_IMAGE_LAYOUT_GENERAL};
+    f.color = {VK_FORMAT_R16G16B16A16_SFLOAT, screen, VK_IMAGE_USAGE_STORAGE_BIT,
+               VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL};
 }
 
-// The engine's shadow map: D32, one layer, or six for a point light's cube map.
-detail::ImportState engineShadowMap(LightType light, uint32_t size) {
-    const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    return {VK_FORMAT_D32_SFLOAT, {size, size}, VK_IMAGE_USAGE_SAMPLED_BIT, ro, ro, light == LightType::Point ? 6u : 1u};
+// The methods whose caps say `which`, by name ("epipolar, slices and beam-tree-analytic").
+template <typename F>
+std::string methodsWhere(F which) {
+    std::vector<std::string> names;
+    for (const ls::MethodUnit* m : ls::methodRegistry())
+        if (which(m->caps())) names.push_back(m->name());
+    std::string s;
+    for (size_t i = 0; i < names.size(); ++i)
+        s += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+    return s;
+}
+
+uint64_t persistentBytes(const rg::OfflineDeviceCaps& caps, VkFormat format, VkExtent2D extent) {
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.format = format;
+    info.extent = {extent.width, extent.height, 1};
+    info.mipLevels = info.arrayLayers = 1;
+    return caps.imageRequirements(info).size;
 }
 
 }  // namespace
 
 Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint32_t shadowMapSize,
               LightType light, const Settings* custom, Method method) {
-    const bool beamTree = method == Method::BeamTreeAnalytic || method == Method::BeamTreeSampling;
-    if (method != Method::Epipolar && method != Method::Slices && !beamTree)
+    return budget(profile, screenWidth, screenHeight, shadowMapSize, std::vector<LightType>{light},
+                  custom, method);
+}
+
+Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint32_t shadowMapSize,
+              const std::vector<LightType>& lights, const Settings* custom, Method method) {
+    const ls::MethodUnit* unit = detail::methodUnit(method);
+    if (!unit || !unit->caps().budgeted)
         throw InvalidInput(std::string("lightscatter: budget method ") + methodName(method) +
-                           ": only epipolar, slices, beam-tree-analytic and beam-tree-sampling have textures that "
-                           "depend on the profile");
-    if (beamTree && light == LightType::Directional)
-        throw InvalidInput(std::string("lightscatter: budget method ") + methodName(method) +
-                           ": needs a point or spot light");
+                           ": only " +
+                           methodsWhere([](const ls::MethodCaps& c) { return c.budgeted; }) +
+                           " have textures that depend on the profile");
+    if (lights.empty()) throw InvalidInput("lightscatter: budget lights: the list is empty");
+    if (lights.size() > kMaxLights)
+        throw InvalidInput("lightscatter: budget lights: " + std::to_string(lights.size()) +
+                           " lights: at most " + std::to_string(kMaxLights) +
+                           " (kMaxLights, as FrameDescription::lights)");
+    const ls::MethodCaps caps = unit->caps();
+    if (lights.size() > 1 && !caps.severalLights)
+        throw InvalidInput(
+            std::string("lightscatter: budget method ") + methodName(method) +
+            ": several lights are budgeted for " +
+            methodsWhere([](const ls::MethodCaps& c) { return c.budgeted && c.severalLights; }) +
+            " only");
+    for (LightType light : lights)
+        if (light == LightType::Directional && !caps.directional)
+            throw InvalidInput(std::string("lightscatter: budget method ") + methodName(method) +
+                               ": needs a point or spot light");
     if (screenWidth == 0 || screenHeight == 0 || screenWidth > 16384 || screenHeight > 16384)
         throw InvalidInput("lightscatter: budget screen " + std::to_string(screenWidth) + "x" +
                            std::to_string(screenHeight) + ": each side must be in [1, 16384]");
@@ -69,33 +110,43 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
     if (custom) s.inscatterRefinementThreshold = custom->inscatterRefinementThreshold;
     detail::checkSettings(s);
 
-    detail::GraphConfig c;
-    c.method = method;
-    c.sliceTarget = detail::sliceAccumulation(s.sliceTarget);
-    c.sliceBlur = s.sliceBlur;
-    c.beamCapacity = 3 * 4096;  // the triangle buffer's first size; it doubles when a frame needs more
-    c.light = static_cast<ls::LightKind>(static_cast<int>(light));
-    // Epipolar budgets a point light with its cube shadow map; slices and the beam trees refuse one.
-    c.shadowed = light != LightType::Point || method == Method::Epipolar;
-    c.minMaxTrees = s.minMaxTrees && ls::treesFit(shadowMapSize);
-    c.fixup = s.fixup;
-    c.inscatterRefinement = s.inscatterRefinementThreshold > 0.0f;
-    c.slices = s.slices;
-    c.samples = s.samplesPerSlice;
-    c.shadowMapSize = shadowMapSize;
-    c.screen = {screenWidth, screenHeight};
-    const rg::OfflineDeviceCaps caps;
-    describeEngineImages(c, caps);
-    const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    if (c.shadowed) c.shadowMap = engineShadowMap(light, shadowMapSize);
-    // The point-light table: read by epipolar and beam-tree-analytic's closed form.
-    const bool table = light != LightType::Directional && method != Method::Slices && method != Method::BeamTreeSampling;
-    if (table)
-        c.table = {VK_FORMAT_R32G32B32A32_SFLOAT, {512, 256},
-                   VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, ro, ro};
-
-    const detail::FrameGraph fg = detail::buildFrameGraph(c, nullptr);
-    const rg::CompiledGraph compiled = rg::compile(*fg.graph, caps);
+    // The frame budget() describes: each light reaching the view, with a shadow map of
+    // shadowMapSize (a point light's a cube of six faces, where the method samples one).
+    const VkExtent2D screen{screenWidth, screenHeight};
+    detail::ValidatedFrame frame;
+    detail::FrameImports images;
+    describeEngineImages(images, screen);
+    for (LightType type : lights) {
+        detail::FrameSetup l;
+        l.light.kind = static_cast<ls::LightKind>(static_cast<int>(type));
+        l.shadowed = type != LightType::Point || caps.cubeShadow;
+        l.light.shadowMapSize = shadowMapSize;
+        detail::applySettings(l, s, shadowMapSize);
+        // Read from custom with every profile, as a frame does: it adds the plugin's tiling noise.
+        l.noise = custom && custom->noiseAmplitude > 0.0f;
+        l.screen = screen;
+        l.depthAttachment = true;
+        l.settings = s;
+        frame.lights.push_back(l);
+        frame.touchesView.push_back(true);
+        const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+        images.shadowMaps.push_back(l.shadowed
+                                        ? detail::ImportState{VK_FORMAT_D32_SFLOAT,
+                                                              {shadowMapSize, shadowMapSize},
+                                                              VK_IMAGE_USAGE_SAMPLED_BIT,
+                                                              ro,
+                                                              ro,
+                                                              type == LightType::Point ? 6u : 1u}
+                                        : detail::ImportState{});
+        images.lightColors.push_back({});
+    }
+    const rg::OfflineDeviceCaps device;
+    detail::GraphOptions options;
+    options.depthStencil = detail::stencilFormat(device);
+    options.coordinates = detail::coordinateFormat(device);
+    const detail::GraphConfig c = detail::graphConfig(frame, *unit, images, options);
+    const detail::FrameGraph fg = detail::buildFrameGraph(c);
+    const rg::CompiledGraph compiled = rg::compile(*fg.graph, device);
 
     Budget b;
     b.profile = profile;
@@ -105,118 +156,31 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
     b.screenHeight = screenHeight;
     b.estimated = !compiled.exactSizes;
     b.depthStencilFormat = rg::formatName(c.depthStencil);
-    b.seed = seedFigure(profile);
+    if (lights.size() == 1) b.seed = seedFigure(profile);  // seed 000's figures are for one light
     for (uint32_t id = 0; id < fg.graph->resources().size(); ++id) {
         const auto& r = fg.graph->resource(id);
         const auto& p = compiled.resources[id];
         if (r.imported || !p.used) continue;
-        BudgetEntry e;
-        e.name = r.name;
-        e.format = r.buffer ? "buffer" : rg::formatName(r.image.format);
-        e.width = p.extent.width;
-        e.height = p.extent.height;
-        e.bytes = p.memory.size;
-        b.entries.push_back(e);
+        b.entries.push_back({r.name, r.buffer ? "buffer" : rg::formatName(r.image.format),
+                             p.extent.width, p.extent.height, p.memory.size, true});
     }
     b.totalBytes = compiled.unaliasedBytes;
     b.peakBytes = compiled.aliasedBytes;
-    const bool noise = custom && custom->noiseAmplitude > 0.0f;  // read from custom with every profile
-    if (method == Method::Slices && noise) {
-        // The plugin's own tiling noise lives across frames (an engine's noise image replaces it).
-        VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-        info.format = detail::kNoiseFormat;
-        info.extent = {detail::kNoiseExtent.width, detail::kNoiseExtent.height, 1};
-        info.mipLevels = info.arrayLayers = 1;
-        const uint64_t bytes = caps.imageRequirements(info).size;
-        b.entries.push_back({"tiling noise", rg::formatName(detail::kNoiseFormat), detail::kNoiseExtent.width,
-                             detail::kNoiseExtent.height, bytes, false});
+    // What lives across frames, outside the graph's aliased memory: the plugin's own tiling noise
+    // (an engine's noise image replaces it) and each point or spot light's table.
+    auto persistent = [&](const std::string& name, VkFormat format, VkExtent2D extent) {
+        const uint64_t bytes = persistentBytes(device, format, extent);
+        b.entries.push_back(
+            {name, rg::formatName(format), extent.width, extent.height, bytes, false});
         b.totalBytes += bytes;
         b.peakBytes += bytes;
-    }
-    if (table) {
-        // The table lives across frames, outside the graph's aliased memory.
-        VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-        info.format = VK_FORMAT_R32G32B32A32_SFLOAT;
-        info.extent = {512, 256, 1};
-        info.mipLevels = info.arrayLayers = 1;
-        const uint64_t bytes = caps.imageRequirements(info).size;
-        b.entries.push_back({"point-light table", "R32G32B32A32_SFLOAT", 512, 256, bytes, false});
-        b.totalBytes += bytes;
-        b.peakBytes += bytes;
-    }
-    return b;
-}
-
-Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint32_t shadowMapSize,
-              const std::vector<LightType>& lights, const Settings* custom, Method method) {
-    if (lights.empty()) throw InvalidInput("lightscatter: budget lights: the list is empty");
-    if (lights.size() > kMaxLights)
-        throw InvalidInput("lightscatter: budget lights: " + std::to_string(lights.size()) + " lights: at most " +
-                           std::to_string(kMaxLights) + " (kMaxLights, as FrameDescription::lights)");
-    if (lights.size() == 1) return budget(profile, screenWidth, screenHeight, shadowMapSize, lights[0], custom, method);
-    if (method != Method::Epipolar)
-        throw InvalidInput(std::string("lightscatter: budget method ") + methodName(method) +
-                           ": several lights are budgeted for epipolar only");
-    // The single light's checks (screen, shadow-map size, settings) and the textures it does not
-    // repeat per light come from the first light's budget.
-    Budget b = budget(profile, screenWidth, screenHeight, shadowMapSize, lights[0], custom, method);
-    const Settings& s = b.settings;
-
-    detail::GraphConfig c;
-    c.method = method;
-    c.fixup = s.fixup;
-    c.inscatterRefinement = s.inscatterRefinementThreshold > 0.0f;
-    c.slices = s.slices;
-    c.samples = s.samplesPerSlice;
-    c.screen = {screenWidth, screenHeight};
-    const rg::OfflineDeviceCaps caps;
-    describeEngineImages(c, caps);
-    const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    std::vector<size_t> tables;  // the lights with a point-light table
-    for (LightType type : lights) {
-        detail::LightChainConfig l;
-        l.light = static_cast<ls::LightKind>(static_cast<int>(type));
-        l.shadowed = true;  // a point light with its cube map
-        l.minMaxTrees = s.minMaxTrees && ls::treesFit(shadowMapSize);
-        l.fixup = s.fixup;
-        l.inscatterRefinement = s.inscatterRefinementThreshold > 0.0f;
-        l.slices = s.slices;
-        l.samples = s.samplesPerSlice;
-        l.shadowMapSize = shadowMapSize;
-        l.shadowMap = engineShadowMap(type, shadowMapSize);
-        if (type != LightType::Directional) {
-            l.table = {VK_FORMAT_R32G32B32A32_SFLOAT, {512, 256}, VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                       ro, ro};
-            tables.push_back(c.lights.size());
-        }
-        c.lights.push_back(l);
-    }
-    const detail::FrameGraph fg = detail::buildFrameGraph(c, nullptr);
-    const rg::CompiledGraph compiled = rg::compile(*fg.graph, caps);
-    b.estimated = !compiled.exactSizes;
-    b.seed.reset();  // seed 000's figures are for one light
-    b.entries.clear();
-    for (uint32_t id = 0; id < fg.graph->resources().size(); ++id) {
-        const auto& r = fg.graph->resource(id);
-        const auto& p = compiled.resources[id];
-        if (r.imported || !p.used) continue;
-        b.entries.push_back({r.name, r.buffer ? "buffer" : rg::formatName(r.image.format), p.extent.width,
-                             p.extent.height, p.memory.size, true});
-    }
-    b.totalBytes = compiled.unaliasedBytes;
-    b.peakBytes = compiled.aliasedBytes;
-    // Each point or spot light's table lives across frames, outside the graph's aliased memory.
-    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-    info.format = VK_FORMAT_R32G32B32A32_SFLOAT;
-    info.extent = {512, 256, 1};
-    info.mipLevels = info.arrayLayers = 1;
-    const uint64_t bytes = caps.imageRequirements(info).size;
-    for (size_t i : tables) {
-        b.entries.push_back({"point-light table (light " + std::to_string(i) + ")", "R32G32B32A32_SFLOAT", 512, 256,
-                             bytes, false});
-        b.totalBytes += bytes;
-        b.peakBytes += bytes;
-    }
+    };
+    if (c.ownNoise) persistent("tiling noise", ls::kNoiseFormat, ls::kNoiseExtent);
+    for (size_t i = 0; i < c.lights.size(); ++i)
+        if (c.lights[i].table.given())
+            persistent(lights.size() == 1 ? "point-light table"
+                                          : "point-light table (light " + std::to_string(i) + ")",
+                       VK_FORMAT_R32G32B32A32_SFLOAT, {ls::kTableWidth, ls::kTableHeight});
     return b;
 }
 

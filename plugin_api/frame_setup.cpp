@@ -591,98 +591,6 @@ void checkSettings(const Settings& s) {
             "m^2, seed 004's falloff I / (a1 r^2 + a0); lightscatter.h, limits::kMaxSimplifiedA0");
 }
 
-bool lightTouchesView(const ls::CameraParams& camera, const ls::LightParams& light,
-                      const ls::MediumParams& medium) {
-    // Nothing reaches the camera when nothing is emitted or nothing scatters.
-    if (glm::all(glm::equal(light.intensity, glm::vec3(0.0f)))) return false;
-    if (glm::all(glm::equal(medium.betaR + medium.betaM, glm::vec3(0.0f)))) return false;
-    if (light.kind != ls::LightKind::Spot) return true;
-    // View rays end within the far plane's corners (or the sky distance with an infinite far
-    // plane), so only the part of the cone within that reach of the camera can matter: an
-    // unbounded spot is bounded by it.
-    const glm::vec3 cameraPos = glm::vec3(glm::inverse(camera.view)[3]);
-    const float tanX = 1.0f / std::fabs(camera.projection[0][0]);
-    const float tanY = 1.0f / std::fabs(camera.projection[1][1]);
-    const float farthest = (camera.infiniteFar ? medium.maxDistance : camera.farPlane) *
-                           std::sqrt(1.0f + tanX * tanX + tanY * tanY);
-    const float range = std::min(light.range, glm::length(light.position - cameraPos) + farthest);
-    if (!(range < 1e29f)) return true;
-    const glm::mat4 m = glm::transpose(camera.projection * camera.view);  // rows as columns
-    glm::vec4 planes[6] = {m[3] + m[0], m[3] - m[0], m[3] + m[1], m[3] - m[1], m[2], m[3] - m[2]};
-    const int count = camera.infiniteFar ? 5 : 6;
-    const glm::vec3 axis = glm::normalize(light.direction);
-    const float alpha = std::acos(std::clamp(light.cosHalfAngle, -1.0f, 1.0f));
-    for (int i = 0; i < count; ++i) {
-        const glm::vec3 n(planes[i]);
-        const float len = glm::length(n);
-        if (len < 1e-12f) continue;
-        // The farthest reach of the range-capped cone along the plane's normal.
-        const float angle = std::acos(std::clamp(glm::dot(n / len, axis), -1.0f, 1.0f));
-        const float reach = angle <= alpha ? 1.0f : std::max(0.0f, std::cos(std::min(angle - alpha, 1.5707964f)));
-        if ((glm::dot(n, light.position) + planes[i].w) / len + range * reach < 0.0f) return false;
-    }
-    return true;
-}
-
-bool cubeFaceTouchesView(const ls::CameraParams& camera, const ls::LightParams& light,
-                         const ls::MediumParams& medium, int face) {
-    if (!lightTouchesView(camera, light, medium)) return false;
-    // Two convex solids, each given by its corners: the view (its frustum up to the depth no view
-    // ray passes: the far plane, or the sky distance with an infinite far plane) and the face's
-    // pyramid from the light (up to the farthest the view reaches from the light). They miss each
-    // other when one's corners all lie outside one plane of the other (conservative: some that
-    // miss are kept).
-    const glm::mat4 invView = glm::inverse(camera.view);
-    const glm::vec3 cameraPos(invView[3]);
-    const glm::vec3 forward = -glm::normalize(glm::vec3(invView[2]));
-    const float depth = camera.infiniteFar ? medium.maxDistance : camera.farPlane;
-    const glm::mat4 invViewProj = glm::inverse(camera.projection * camera.view);
-    const float nearNdc = camera.reversedZ ? 1.0f : 0.0f;
-    glm::vec3 view[8];
-    float reach = 0.0f;
-    for (int k = 0; k < 4; ++k) {
-        const glm::vec4 c = invViewProj * glm::vec4(k & 1 ? 1.0f : -1.0f, k & 2 ? 1.0f : -1.0f, nearNdc, 1.0f);
-        const glm::vec3 d = glm::vec3(c) / c.w - cameraPos;
-        const float along = glm::dot(d, forward);
-        if (!(along > 0.0f)) return true;  // not a perspective view this test understands
-        view[k] = cameraPos + d * (camera.nearPlane / along);
-        view[k + 4] = cameraPos + d * (depth / along);
-        reach = std::max(reach, glm::length(view[k + 4] - cameraPos));
-    }
-    // The face's side planes through the light: s D[axis] >= |D[other]| with D = P - light.
-    const int axis = face / 2;
-    const float sign = face % 2 == 0 ? 1.0f : -1.0f;
-    for (int k = 1; k <= 2; ++k) {
-        const int other = (axis + k) % 3;
-        for (float side : {-1.0f, 1.0f}) {
-            bool allOutside = true;
-            for (const glm::vec3& p : view) {
-                const glm::vec3 d = p - light.position;
-                allOutside = allOutside && sign * d[axis] + side * d[other] < 0.0f;
-            }
-            if (allOutside) return false;
-        }
-    }
-    // The pyramid's corners against the view's planes.
-    const float range = glm::length(light.position - cameraPos) + reach;
-    glm::vec3 pyramid[5] = {light.position};
-    for (int k = 0; k < 4; ++k) {
-        glm::vec3 d(0.0f);
-        d[axis] = sign * range;
-        d[(axis + 1) % 3] = k & 1 ? range : -range;
-        d[(axis + 2) % 3] = k & 2 ? range : -range;
-        pyramid[k + 1] = light.position + d;
-    }
-    const glm::mat4 m = glm::transpose(camera.projection * camera.view);  // rows as columns
-    const glm::vec4 planes[6] = {m[3] + m[0], m[3] - m[0], m[3] + m[1], m[3] - m[1], m[2], m[3] - m[2]};
-    for (int i = 0; i < (camera.infiniteFar ? 5 : 6); ++i) {
-        bool allOutside = true;
-        for (const glm::vec3& p : pyramid) allOutside = allOutside && glm::dot(glm::vec4(p, 1.0f), planes[i]) < 0.0f;
-        if (allOutside) return false;
-    }
-    return true;
-}
-
 FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
     FrameSetup s;
     s.settings = f.profile == Profile::Custom ? f.custom : profileSettings(f.profile);
@@ -801,8 +709,6 @@ FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
     // Images.
     s.shadowed = l.shadowMapSize > 0;
     s.lightColor = f.lightColor.has_value();
-    s.noise = s.settings.noiseAmplitude > 0.0f;
-    s.simplified = s.settings.lightModel == LightModel::Simplified;
     s.engineNoise = f.noise.has_value();
     s.depthAttachment = !withImages || (f.depth.usage & VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT) != 0;
     s.inscatterOut = f.inscatterOut.has_value();
@@ -869,19 +775,51 @@ FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
         fail("lightColor is not supported with a point light: a light-space color texture needs a "
              "spot or directional light's single shadow-map frustum");
 
-    s.epipolar.slices = s.settings.slices;
-    s.epipolar.samples = s.settings.samplesPerSlice;
-    s.epipolar.initialStep = s.settings.initialSampleStep;
-    s.epipolar.refinementThreshold = s.settings.refinementThreshold;
-    s.epipolar.inscatterRefinementThreshold = s.settings.inscatterRefinementThreshold;
-    s.epipolar.bilateralThreshold = s.settings.bilateralThreshold;
-    s.epipolar.minMaxTrees = s.settings.minMaxTrees && ls::treesFit(l.shadowMapSize);
-    s.epipolar.bilinearShadow = s.settings.shadowFilter == ShadowFilter::Bilinear;
-    s.epipolar.fixup = s.settings.fixup;
-    s.epipolar.fixupMaxSteps = s.settings.fixupMaxSteps;
-    s.epipolar.shadowDepthBias = s.settings.shadowDepthBias;
-    s.epipolar.interpolateFraction = s.settings.interpolation == Interpolation::ShadowedFraction;
+    applySettings(s, s.settings, l.shadowMapSize);
     return s;
+}
+
+ls::SliceAccumulation sliceAccumulation(SliceTarget target) {
+    switch (target) {
+        case SliceTarget::Float32:
+            return ls::SliceAccumulation::Float32;
+        case SliceTarget::Rgba8Channels:
+            return ls::SliceAccumulation::Rgba8Channels;
+        case SliceTarget::Float16:
+            break;
+    }
+    return ls::SliceAccumulation::Float16;
+}
+
+void applySettings(ls::LightSetup& s, const Settings& st, uint32_t shadowMapSize) {
+    s.epipolar.slices = st.slices;
+    s.epipolar.samples = st.samplesPerSlice;
+    s.epipolar.initialStep = st.initialSampleStep;
+    s.epipolar.refinementThreshold = st.refinementThreshold;
+    s.epipolar.inscatterRefinementThreshold = st.inscatterRefinementThreshold;
+    s.epipolar.bilateralThreshold = st.bilateralThreshold;
+    s.epipolar.minMaxTrees = st.minMaxTrees && ls::treesFit(shadowMapSize);
+    s.epipolar.bilinearShadow = st.shadowFilter == ShadowFilter::Bilinear;
+    s.epipolar.fixup = st.fixup;
+    s.epipolar.fixupMaxSteps = st.fixupMaxSteps;
+    s.epipolar.shadowDepthBias = st.shadowDepthBias;
+    s.epipolar.interpolateFraction = st.interpolation == Interpolation::ShadowedFraction;
+    s.planes.planes = st.slicePlanes;
+    s.planes.planeScaling = st.slicePlaneScaling;
+    s.planes.eightBitTarget = st.sliceTarget == SliceTarget::Rgba8Channels;
+    s.planes.range = st.sliceRange;
+    s.planes.ambient = st.sliceAmbient;
+    s.planes.noiseAmplitude = st.noiseAmplitude;
+    s.planes.noiseScale = st.noiseScale;
+    s.planes.noiseVelocity = {st.noiseVelocity[0], st.noiseVelocity[1], st.noiseVelocity[2],
+                              st.noiseVelocity[3]};
+    s.sliceTarget = sliceAccumulation(st.sliceTarget);
+    s.sliceBlur = st.sliceBlur;
+    s.sliceDither = st.sliceDither;
+    s.cone = {st.coneSamples, st.coneLimited, st.coneJitter};
+    s.shadowSampling = st.shadowSampling;
+    s.noise = st.noiseAmplitude > 0.0f;
+    s.simplified = st.lightModel == LightModel::Simplified;
 }
 
 namespace {
@@ -965,6 +903,33 @@ std::vector<FrameSetup> setupLights(const FrameDescription& frame, bool withImag
         }
     }
     return setups;
+}
+
+}  // namespace lightscatter::detail
+
+namespace lightscatter::detail {
+
+std::vector<LightInput> lightInputs(const FrameDescription& frame) {
+    if (!frame.lights.empty()) return frame.lights;
+    return {LightInput{frame.light, frame.shadowMap, frame.lightColor, std::nullopt}};
+}
+
+ValidatedFrame validateFrame(const FrameDescription& frame, bool withImages) {
+    ValidatedFrame v;
+    v.list = !frame.lights.empty();
+    if (v.list) {
+        v.lights = setupLights(frame, withImages);
+        for (size_t i = 0; i < v.lights.size(); ++i) {
+            const std::string at = "lights[" + std::to_string(i) + "]";
+            v.lights[i].lightPath = at + ".light";
+            if (frame.lights[i].settings) v.lights[i].settingsPath = at + ".settings";
+        }
+    } else {
+        v.lights.push_back(setupFrame(frame, withImages));
+    }
+    for (const FrameSetup& s : v.lights)
+        v.touchesView.push_back(ls::lightTouchesView(s.camera, s.light, s.medium));
+    return v;
 }
 
 }  // namespace lightscatter::detail

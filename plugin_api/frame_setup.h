@@ -7,31 +7,39 @@
 #include <vector>
 
 #include "beam_tree/occluders.h"
-#include "shared/scattering_params.h"
 #include "lightscatter.h"
+#include "shared/light_setup.h"
+#include "shared/scattering_params.h"
+#include "shared/view_reach.h"
 
 namespace lightscatter::detail {
 
-struct FrameSetup {
-    ls::CameraParams camera;
-    ls::LightParams light;
-    ls::MediumParams medium;
-    ls::EpipolarSettings epipolar;
+// One light of a frame, checked: what the methods see (ls::LightSetup) and the settings it was
+// translated from (the profile's, merged with the frame's or the light's own custom).
+struct FrameSetup : ls::LightSetup {
     Settings settings;
-    VkExtent2D screen{0, 0};
-    bool shadowed = false;
-    bool lightColor = false;
-    bool inscatterOut = false;
-    bool noise = false;        // Settings::noiseAmplitude > 0
-    bool engineNoise = false;  // FrameDescription::noise given
-    bool simplified = false;   // Settings::lightModel == Simplified (seed 004's light model)
-    bool depthAttachment = false;  // depth.usage allows a depth attachment (slices)
-    double timeSeconds = 0.0;
-    size_t occluders = 0;  // FrameDescription::occluders.size()
-    // FrameDescription::occluders in double, checked: filled (beamOccluders()) only when the
-    // frame's method reads them.
-    std::vector<ls::beam::Occluder> beamOccluders;
 };
+
+// A frame, checked: one setup per light (a frame that gives `light` has one, lights[0]), and what
+// of the engine's images decides the frame's graph.
+struct ValidatedFrame {
+    std::vector<FrameSetup> lights;
+    std::vector<bool> touchesView;  // each light's volume reaches a view ray
+    bool list = false;              // the engine gave FrameDescription::lights
+};
+
+// Checks everything (setupFrame for a frame of one light, setupLights for the list); `withImages`
+// false skips the image handles (the budget has none).
+ValidatedFrame validateFrame(const FrameDescription& frame, bool withImages = true);
+
+// The frame's lights as a list: `light`, `shadowMap` and `lightColor` as lights[0] when the frame
+// gives no list.
+std::vector<LightInput> lightInputs(const FrameDescription& frame);
+
+// The settings' part the methods read, in their terms, into `s` (a light with a shadow map of
+// `shadowMapSize`, 0 without one).
+ls::SliceAccumulation sliceAccumulation(SliceTarget target);
+void applySettings(ls::LightSetup& s, const Settings& settings, uint32_t shadowMapSize);
 
 // Checks everything; `withImages` false skips the image handles (the budget has none).
 FrameSetup setupFrame(const FrameDescription& frame, bool withImages = true);
@@ -55,16 +63,5 @@ std::vector<ls::beam::Occluder> beamOccluders(const std::vector<Occluder>& occlu
 // Throws InvalidInput naming every feature the plugin needs that `enabled` (the chain an engine
 // created its device with) does not turn on.
 void checkEnabledFeatures(const VkPhysicalDeviceFeatures2* enabled);
-
-// Whether any light can scatter towards the camera (conservative): false when nothing is emitted,
-// nothing scatters, or a spot's cone (within its range, or within the reach of the view) misses
-// the view frustum.
-bool lightTouchesView(const ls::CameraParams& camera, const ls::LightParams& light,
-                      const ls::MediumParams& medium);
-// Whether cube face `face` (+X, -X, +Y, -Y, +Z, -Z) of a point light reaches a view ray: its
-// square pyramid against the view frustum, each bounded by how far the view reaches (conservative:
-// true when unsure).
-bool cubeFaceTouchesView(const ls::CameraParams& camera, const ls::LightParams& light,
-                         const ls::MediumParams& medium, int face);
 
 }  // namespace lightscatter::detail

@@ -6,6 +6,7 @@
 
 #include "frame_setup.h"
 #include "lightscatter.h"
+#include "shared/method_unit.h"
 
 namespace lightscatter::detail {
 
@@ -21,11 +22,17 @@ inline constexpr uint32_t kEpipolarSamplesPerPixel = 24;
 
 struct MethodChoice {
     Method method = Method::Epipolar;  // never Auto
+    const ls::MethodUnit* unit = nullptr;  // the method's
     std::string reason;                // why, for Auto; empty otherwise
     std::string notice;                // an assumption of the method that the frame breaks
 };
 
 // Throws InvalidInput naming the method and the rule when it cannot honour the frame.
 MethodChoice chooseMethod(Method requested, const FrameSetup& setup, bool lightReachesView);
+// The frame's method: one light's as above; with several lights the same method for every light
+// (Auto: epipolar), refused when the method builds one chain only or refuses a light (naming
+// lights[i]). Converts the occluders into every light's setup when the method reads them.
+MethodChoice chooseFrameMethod(Method requested, ValidatedFrame& frame,
+                               const FrameDescription& description);
 
 }  // namespace lightscatter::detail

@@ -1,5 +1,7 @@
 // Method and profile names (the command line's contract) and the seed's quality profiles.
 #include "lightscatter.h"
+#include "method_units.h"
+#include "registry/method_registry.h"
 
 namespace lightscatter {
 namespace {
@@ -26,23 +28,22 @@ constexpr ProfileRow kProfiles[] = {
     {Profile::Custom, "custom", 1024, 1024, 2048, 128, kF16},
 };
 
-constexpr std::pair<Method, const char*> kMethods[] = {
-    {Method::Epipolar, "epipolar"},
-    {Method::BruteForce, "brute-force"},
-    {Method::Analytic, "analytic"},
-    {Method::ConeMarch, "cone-march"},
-    {Method::Slices, "slices"},
-    {Method::BeamTreeAnalytic, "beam-tree-analytic"},
-    {Method::BeamTreeSampling, "beam-tree-sampling"},
-    {Method::Auto, "auto"},
-};
-
 }  // namespace
 
+namespace detail {
+
+const ls::MethodUnit* methodUnit(Method m) {
+    const auto& all = ls::methodRegistry();
+    const auto i = static_cast<size_t>(m);
+    return i < all.size() ? all[i] : nullptr;
+}
+
+}  // namespace detail
+
 const char* methodName(Method m) {
-    for (const auto& [method, name] : kMethods)
-        if (method == m) return name;
-    return "unknown";
+    if (m == Method::Auto) return "auto";
+    const ls::MethodUnit* unit = detail::methodUnit(m);
+    return unit ? unit->name() : "unknown";
 }
 
 const char* profileName(Profile p) {
@@ -52,8 +53,10 @@ const char* profileName(Profile p) {
 }
 
 std::optional<Method> parseMethod(const std::string& name) {
-    for (const auto& [method, n] : kMethods)
-        if (name == n) return method;
+    if (name == methodName(Method::Auto)) return Method::Auto;
+    const auto& all = ls::methodRegistry();
+    for (size_t i = 0; i < all.size(); ++i)
+        if (name == all[i]->name()) return static_cast<Method>(i);
     return std::nullopt;
 }
 
@@ -65,7 +68,8 @@ std::optional<Profile> parseProfile(const std::string& name) {
 
 std::vector<std::string> methodNames() {
     std::vector<std::string> v;
-    for (const auto& [method, name] : kMethods) v.emplace_back(name);
+    for (const ls::MethodUnit* m : ls::methodRegistry()) v.emplace_back(m->name());
+    v.emplace_back(methodName(Method::Auto));
     return v;
 }
 

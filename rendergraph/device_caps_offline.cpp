@@ -23,6 +23,8 @@ VkFormatFeatureFlags2 OfflineDeviceCaps::optimalFeatures(VkFormat format) const 
     VkFormatFeatureFlags2 f = 0;
     switch (format) {
         case VK_FORMAT_R8G8B8A8_UNORM:
+        case VK_FORMAT_R8G8_UNORM:  // the tiling noise: storage with
+                                    // shaderStorageImageExtendedFormats
         case VK_FORMAT_R16G16B16A16_SFLOAT:
         case VK_FORMAT_R16G16_SFLOAT:
         case VK_FORMAT_R32G32_SFLOAT:

@@ -5,12 +5,6 @@
 
 namespace ls {
 
-struct ConeMarchOptions {
-    uint32_t samples = 32;      // per pixel
-    bool coneLimited = true;    // false: march all of [0, S] (seed 003's naive baseline)
-    bool jitter = false;        // a per-pixel offset of the samples instead of the midpoints
-};
-
 struct ConeMarchInputs {
     rg::BufferRef constants;  // the frame's FrameConstants
     rg::ImageRef depth;       // the engine's depth: where each pixel's ray ends

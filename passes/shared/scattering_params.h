@@ -61,6 +61,30 @@ struct EpipolarSettings {
     bool interpolateFraction = true;  // samples carry Lin / unshadowed Lin instead of Lin
 };
 
+// Seed 002's view-aligned planes (slices; the beam trees sample with them too).
+struct SliceSettings {
+    bool operator==(const SliceSettings&) const = default;
+    uint32_t planes = 128;
+    bool planeScaling = false;    // seed 002: fewer planes as the light's volume recedes
+    bool eightBitTarget = false;  // the range below only matters to the 8-bit channel target
+    float range = 0.0f;           // 8-bit target: Lin luminance at full scale; 0: estimated
+    float ambient = 0.0f;
+    float noiseAmplitude = 0.0f;
+    float noiseScale = 1.0f;
+    glm::vec4 noiseVelocity{0.0f};
+};
+
+// Where slices adds up its planes (lightscatter::SliceTarget).
+enum class SliceAccumulation { Float16, Float32, Rgba8Channels };
+
+// Seed 003's march.
+struct ConeMarchOptions {
+    bool operator==(const ConeMarchOptions&) const = default;
+    uint32_t samples = 32;    // per pixel
+    bool coneLimited = true;  // false: march all of [0, S] (seed 003's naive baseline)
+    bool jitter = false;      // a per-pixel offset of the samples instead of the midpoints
+};
+
 // The look-up table's shape and scale (shaders/shared/lut.glsl).
 // Rows are uniform in log(hEff / r0) from 0 (a ray through the light) to logRange, where
 // extinction has made the table negligible (or, without extinction, far beyond where it changes).

@@ -28,17 +28,6 @@ struct SliceResolvePush {
     glm::vec4 slab{0.0f};  // x, y: the view depths the planes cover
 };
 
-struct SliceSettings {
-    uint32_t planes = 128;
-    bool planeScaling = false;  // seed 002: fewer planes as the light's volume recedes
-    bool eightBitTarget = false;  // the range below only matters to the 8-bit channel target
-    float range = 0.0f;         // 8-bit target: Lin luminance at full scale; 0: estimated
-    float ambient = 0.0f;
-    float noiseAmplitude = 0.0f;
-    float noiseScale = 1.0f;
-    glm::vec4 noiseVelocity{0.0f};
-};
-
 struct SlicePlacement {
     SlicePush push;
     SliceResolvePush resolve;

@@ -9,8 +9,6 @@
 
 namespace ls {
 
-enum class SliceAccumulation { Float16, Float32, Rgba8Channels };
-
 // Updated by the plugin before each frame is recorded; the nodes read it when they record.
 using SlicePlacementRef = std::shared_ptr<const SlicePlacement>;
 

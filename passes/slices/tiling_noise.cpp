@@ -1,19 +1,18 @@
 #include "tiling_noise.h"
 
-#include "frame_graph.h"
 #include "rendergraph/compile.h"
 #include "rendergraph/device_caps_vulkan.h"
 #include "rendergraph/executor.h"
-#include "slices/slice_nodes.h"
+#include "slice_nodes.h"
 
-namespace lightscatter::detail {
+namespace ls {
 
 TilingNoise::TilingNoise(const rg::Device& device)
     : device_(device),
       image_(device, kNoiseFormat, kNoiseExtent,
              VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, "tiling noise") {}
 
-bool TilingNoise::ensure(const ls::Shared& shared) {
+bool TilingNoise::ensure(const Shared& shared) {
     if (made_) return false;
     rg::RenderGraph g;
     rg::ImportedImage desc;
@@ -25,7 +24,7 @@ bool TilingNoise::ensure(const ls::Shared& shared) {
     desc.finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     desc.finalStages = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
     desc.finalAccess = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
-    ls::addTilingNoise(g, shared, g.importImage("tiling noise", desc));
+    addTilingNoise(g, shared, g.importImage("tiling noise", desc));
     const rg::VulkanDeviceCaps caps(device_);
     rg::GraphExecutor exec(device_, g, rg::compile(g, caps));
     exec.run();
@@ -33,4 +32,4 @@ bool TilingNoise::ensure(const ls::Shared& shared) {
     return true;
 }
 
-}  // namespace lightscatter::detail
+}  // namespace ls

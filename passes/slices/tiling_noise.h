@@ -5,7 +5,11 @@
 #include "rendergraph/owned_image.h"
 #include "shared/shared_state.h"
 
-namespace lightscatter::detail {
+namespace ls {
+
+// The plugin's own tiling noise: two layers of value noise, repeating.
+inline constexpr VkExtent2D kNoiseExtent{256, 256};
+inline constexpr VkFormat kNoiseFormat = VK_FORMAT_R8G8_UNORM;
 
 class TilingNoise {
   public:
@@ -14,7 +18,7 @@ class TilingNoise {
     TilingNoise& operator=(const TilingNoise&) = delete;
 
     // Makes the noise if it has not been made (waits for the GPU). Returns true when it did.
-    bool ensure(const ls::Shared& shared);
+    bool ensure(const Shared& shared);
     VkImage image() const { return image_.image(); }
 
   private:
@@ -23,4 +27,4 @@ class TilingNoise {
     bool made_ = false;
 };
 
-}  // namespace lightscatter::detail
+}  // namespace ls

@@ -4,27 +4,31 @@
 #include <array>
 #include <memory>
 
-#include "shared/shared_state.h"
 #include "rendergraph/device.h"
 #include "rendergraph/owned_image.h"
+#include "shared_state.h"
 
-namespace lightscatter::detail {
+namespace ls {
+
+// The table's size, in texels (phi x log(hEff / r0)).
+inline constexpr uint32_t kTableWidth = 512;
+inline constexpr uint32_t kTableHeight = 256;
 
 class PointTable {
-public:
+  public:
     PointTable(const rg::Device& device, uint32_t width, uint32_t height);
     PointTable(const PointTable&) = delete;
     PointTable& operator=(const PointTable&) = delete;
 
     // Refills the table if what it depends on changed since the last fill (waits for the GPU).
     // Returns true when it did.
-    bool update(const ls::Shared& shared);
+    bool update(const Shared& shared);
     VkImage image() const { return image_.image(); }
     uint32_t width() const { return width_; }
     uint32_t height() const { return height_; }
     bool filled() const { return filled_; }
 
-private:
+  private:
     const rg::Device& device_;
     uint32_t width_, height_;
     rg::OwnedImage image_;
@@ -32,4 +36,4 @@ private:
     std::array<float, 16> key_{};
 };
 
-}  // namespace lightscatter::detail
+}  // namespace ls

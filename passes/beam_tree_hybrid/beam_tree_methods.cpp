@@ -1,0 +1,109 @@
+#include "beam_tree_methods.h"
+
+#include <algorithm>
+
+#include "beam_tree_nodes.h"
+#include "shared/refusals.h"
+
+namespace ls {
+namespace {
+
+// The triangle buffer's first size, in points.
+constexpr uint32_t kFirstCapacity = 3 * 4096;
+
+}  // namespace
+
+MethodCaps BeamTreeMethod::caps() const {
+    MethodCaps c;
+    c.directional = false;
+    c.readsOccluders = true;
+    c.budgeted = true;
+    return c;
+}
+
+std::string BeamTreeMethod::refusal(const LightSetup& s) const {
+    const std::string n = name();
+    if (std::string r = refuseCubeShadow(s, n); !r.empty()) return r;
+    if (!pointLike(s))
+        return "method " + n +
+               " (seed 004) builds its beam tree from a point or spot light; this frame's light is "
+               "directional (use auto, epipolar, slices or cone-march)";
+    return firstRefusal(
+        {refuseNoise(s, n), refuseNoDepthAttachment(
+                                s, "method " + n + " (seed 004) depth-tests its sampling planes")});
+}
+
+std::string BeamTreeMethod::notice(const LightSetup& s) const {
+    if (s.occluders != 0) return {};
+    return std::string(name()) +
+           " has no occluders (FrameDescription::occluders): it treats the whole light volume as "
+           "lit, so " +
+           (litSpace() == LitSpace::ClosedForm ? "nothing casts a shadow"
+                                               : "it never looks the shadow map up");
+}
+
+std::vector<CpuWork> BeamTreeMethod::prepare(LightData* data, SharedState&,
+                                             const LightSetup& s) const {
+    SliceSettings planes;
+    planes.planes = s.planes.planes;  // only the count: the planes' other settings are slices'
+    BeamTreeFrame& frame = *static_cast<Data*>(data)->frame;
+    frame = buildBeamTreeFrame(s.camera, s.light, s.medium, s.beamOccluders, planes, litSpace());
+    return {{"beam tree (CPU, seed 004)", frame.buildMilliseconds}};
+}
+
+ChainOptions BeamTreeMethod::options(const LightSetup& s, const LightData* data,
+                                     const ChainOptions* previous) const {
+    const Options* before = previous ? previous->get<Options>() : nullptr;
+    Options o;
+    o.reversedZ = s.camera.reversedZ;
+    o.capacityPoints = before ? std::max(before->capacityPoints, kFirstCapacity) : kFirstCapacity;
+    if (data)
+        while (o.capacityPoints < static_cast<const Data*>(data)->frame->points.size())
+            o.capacityPoints *= 2;
+    return ChainOptions(o);
+}
+
+BeamTreeFrameRef BeamTreeMethod::frameOf(const ChainInputs& in) {
+    return in.data ? static_cast<const Data*>(in.data)->frame : nullptr;
+}
+
+ChainOutputs BeamTreeAnalyticMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,
+                                              const ChainConfig& c, const CompositeTarget&) const {
+    const Options& o = *c.options.get<Options>();
+    BeamTreeInputs beam{in.constants, in.depth, in.table, {}, {}};
+    if (c.shadowed) {
+        beam.shadowMap = in.shadowMap;
+        beam.lightColor = in.lightColor;
+    }
+    ChainOutputs out;
+    out.lin = addBeamTreeHybrid(g, in.shared, frameOf(in), beam, {o.capacityPoints, o.reversedZ});
+    return out;
+}
+
+std::string BeamTreeAnalyticMethod::summary(const ChainConfig& c) const {
+    return std::string("seed 004's beam tree: lit pyramids in closed form") +
+           (c.shadowed ? ", uncertain space sampled by planes with the shadow map"
+                       : ", uncertain space sampled by planes as lit (no shadow map)");
+}
+
+ChainOutputs BeamTreeSamplingMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,
+                                              const ChainConfig& c, const CompositeTarget&) const {
+    const Options& o = *c.options.get<Options>();
+    BeamTreeSamplingInputs beam{in.constants, in.depth, {}, {}};
+    if (c.shadowed) {
+        beam.shadowMap = in.shadowMap;
+        beam.lightColor = in.lightColor;
+    }
+    ChainOutputs out;
+    out.lin = addBeamTreeSampling(g, in.shared, frameOf(in), beam, {o.capacityPoints, o.reversedZ});
+    return out;
+}
+
+std::string BeamTreeSamplingMethod::summary(const ChainConfig& c) const {
+    return std::string(
+               "seed 004's beam tree clipping slices' planes: lit parts without shadow look-ups") +
+           (c.shadowed ? ", uncertain parts with the shadow map"
+                       : ", uncertain parts as lit (no shadow map)");
+}
+
+}  // namespace ls

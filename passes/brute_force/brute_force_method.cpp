@@ -1,0 +1,43 @@
+#include "brute_force_method.h"
+
+#include "brute_force_node.h"
+#include "shared/chain_inputs.h"
+#include "shared/refusals.h"
+#include "shared/shared_nodes.h"
+
+namespace ls {
+
+MethodCaps BruteForceMethod::caps() const {
+    MethodCaps c;
+    c.cubeShadow = true;
+    c.severalLights = true;
+    return c;
+}
+
+std::string BruteForceMethod::refusal(const LightSetup& s) const {
+    return firstRefusal(
+        {refuseSkippedShadows(s, name()), refuseNoise(s, name()), refuseSimplified(s, name())});
+}
+
+bool BruteForceMethod::readsTable(const LightSetup& s) const {
+    return pointLike(s);
+}
+
+ChainOptions BruteForceMethod::options(const LightSetup&, const LightData*,
+                                       const ChainOptions*) const {
+    return {};  // nothing but the light's kind, shadow and shadow-map size
+}
+
+ChainOutputs BruteForceMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,
+                                        const ChainConfig& c, const CompositeTarget&) const {
+    const NodeInputs n = nodeInputs(in, c);
+    ChainOutputs out;
+    out.lin = c.shadowed ? addBruteForce(g, n) : addUnshadowed(g, n);
+    return out;
+}
+
+std::string BruteForceMethod::summary(const ChainConfig& c) const {
+    return c.shadowed ? "brute-force ray marching" : unshadowedSummary(c);
+}
+
+}  // namespace ls

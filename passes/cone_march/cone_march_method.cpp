@@ -1,0 +1,37 @@
+#include "cone_march_method.h"
+
+#include "cone_march_node.h"
+#include "shared/refusals.h"
+
+namespace ls {
+
+std::string ConeMarchMethod::refusal(const LightSetup& s) const {
+    return firstRefusal(
+        {refuseCubeShadow(s, name()), refuseNoise(s, name()), refuseSimplified(s, name())});
+}
+
+ChainOptions ConeMarchMethod::options(const LightSetup& s, const LightData*,
+                                      const ChainOptions*) const {
+    return ChainOptions(Options{s.cone, s.shadowSampling});
+}
+
+ChainOutputs ConeMarchMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,
+                                       const ChainConfig& c, const CompositeTarget&) const {
+    const Options& o = *c.options.get<Options>();
+    const ConeMarchInputs cone{in.constants, in.depth,
+                               c.shadowed && o.shadowSampling ? in.shadowMap : rg::ImageRef{},
+                               in.lightColor};
+    ChainOutputs out;
+    out.lin = addConeMarch(g, in.shared, cone, o.march);
+    return out;
+}
+
+std::string ConeMarchMethod::summary(const ChainConfig& c) const {
+    const Options& o = *c.options.get<Options>();
+    return std::string(o.march.coneLimited ? "cone-limited" : "naive full-ray") + " march, " +
+           std::to_string(o.march.samples) + " samples per pixel" +
+           (c.shadowed && !o.shadowSampling ? ", no shadow-map sampling" : "") +
+           (o.march.jitter ? ", jittered" : "");
+}
+
+}  // namespace ls

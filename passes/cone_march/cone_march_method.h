@@ -1,0 +1,25 @@
+#pragma once
+// Seed 003's fixed-count march as a method of the frame graph (method_unit.h), with its low-end
+// mode that skips the shadow map.
+#include "shared/method_unit.h"
+
+namespace ls {
+
+class ConeMarchMethod final : public MethodUnit {
+  public:
+    struct Options {
+        ConeMarchOptions march;
+        bool shadowSampling = true;
+        bool operator==(const Options&) const = default;
+    };
+    const char* name() const override { return "cone-march"; }
+    MethodCaps caps() const override { return {}; }
+    std::string refusal(const LightSetup& light) const override;
+    ChainOptions options(const LightSetup& light, const LightData*,
+                         const ChainOptions*) const override;
+    ChainOutputs addChain(rg::RenderGraph& graph, const ChainInputs& in, const ChainConfig& config,
+                          const CompositeTarget& target) const override;
+    std::string summary(const ChainConfig& config) const override;
+};
+
+}  // namespace ls

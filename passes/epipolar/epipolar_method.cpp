@@ -1,0 +1,95 @@
+#include "epipolar_method.h"
+
+#include "epipolar_nodes.h"
+#include "shared/chain_inputs.h"
+#include "shared/refusals.h"
+#include "shared/shared_nodes.h"
+#include "shared/view_reach.h"
+
+namespace ls {
+
+MethodCaps EpipolarMethod::caps() const {
+    MethodCaps c;
+    c.cubeShadow = true;
+    c.severalLights = true;
+    c.countsSteps = true;
+    c.budgeted = true;
+    return c;
+}
+
+std::string EpipolarMethod::refusal(const LightSetup& s) const {
+    return firstRefusal(
+        {refuseSkippedShadows(s, name()), refuseNoise(s, name()), refuseSimplified(s, name())});
+}
+
+bool EpipolarMethod::readsTable(const LightSetup& s) const {
+    return pointLike(s);
+}
+
+std::vector<CpuWork> EpipolarMethod::prepare(LightData*, SharedState& s,
+                                             const LightSetup& light) const {
+    if (!s.spec.cubeShadow) return {};
+    // A cube map is marched face by face, each as a spot light's map with its own matrix.
+    for (int face = 0; face < 6; ++face) {
+        auto& f = s.cubeFaces[face];
+        if (!f) f = SharedState::sibling(s);
+        f->spec = s.spec;
+        f->constants = s.constants;
+        f->constants.lightViewProj = s.constants.cubeFaceViewProj[face];
+        const bool inView = cubeFaceTouchesView(light.camera, light.light, light.medium, face);
+        f->constants.cubeFace = {static_cast<float>(face), inView ? 1.0f : 0.0f, 0.0f, 0.0f};
+    }
+    return {};
+}
+
+ChainOptions EpipolarMethod::options(const LightSetup& s, const LightData*,
+                                     const ChainOptions*) const {
+    Options o;
+    o.slices = s.epipolar.slices;
+    o.samples = s.epipolar.samples;
+    o.minMaxTrees = s.epipolar.minMaxTrees;
+    o.fixup = s.epipolar.fixup;
+    o.inscatterRefinement = s.epipolar.inscatterRefinementThreshold > 0.0f;
+    return ChainOptions(o);
+}
+
+ChainOutputs EpipolarMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,
+                                      const ChainConfig& c, const CompositeTarget& target) const {
+    const NodeInputs n = nodeInputs(in, c);
+    ChainOutputs out;
+    if (!c.shadowed) {
+        out.lin = addUnshadowed(g, n);
+        return out;
+    }
+    const Options& o = *c.options.get<Options>();
+    const EpipolarSizes sizes{o.slices, o.samples, c.shadowMapSize};
+    const EpipolarOptions options{o.minMaxTrees, o.fixup, c.light == LightKind::Point,
+                                  in.stepCounts, o.inscatterRefinement};
+    // Composited in the chain's unwarp and fix-up: no composite pass.
+    const EpipolarOutputs e = addEpipolarNodes(g, n, sizes, options, target);
+    out.composited = true;
+    out.target = e.composited;
+    out.stepCounts = e.stepCounts;
+    return out;
+}
+
+std::string EpipolarMethod::summary(const ChainConfig& c) const {
+    if (!c.shadowed) return unshadowedSummary(c);
+    const Options& o = *c.options.get<Options>();
+    return std::string("epipolar sampling") + (o.minMaxTrees ? " with min/max trees" : "") +
+           (c.light == LightKind::Point ? " per cube face" : "") +
+           (o.inscatterRefinement ? ", refined on in-scattering differences" : "") +
+           (o.fixup ? ", fix-up" : "") + ", composited in the unwarp";
+}
+
+std::string EpipolarMethod::frameNote(const SharedState& s, const ChainConfig& c) const {
+    if (!c.shadowed || !s.spec.cubeShadow) return {};
+    std::string list;
+    for (int f = 0; f < 6; ++f)
+        if (s.cubeFaces[f] && s.cubeFaces[f]->inView())
+            list += std::string(list.empty() ? "" : ", ") + cubeFaceName(f);
+    return "cube faces reaching the view: " + (list.empty() ? std::string("none") : list) +
+           " (the others' passes record no work)";
+}
+
+}  // namespace ls

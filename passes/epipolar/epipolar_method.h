@@ -1,0 +1,32 @@
+#pragma once
+// Seed 000's epipolar sampling as a method of the frame graph (method_unit.h): the chain of
+// epipolar_nodes.h per shadowed light, a point light's cube map face by face, and the closed form
+// for an unshadowed one.
+#include "shared/method_unit.h"
+
+namespace ls {
+
+class EpipolarMethod final : public MethodUnit {
+  public:
+    struct Options {
+        uint32_t slices = 0, samples = 0;
+        bool minMaxTrees = true;
+        bool fixup = true;
+        bool inscatterRefinement = false;  // a second march where marched samples differ
+        bool operator==(const Options&) const = default;
+    };
+    const char* name() const override { return "epipolar"; }
+    MethodCaps caps() const override;
+    std::string refusal(const LightSetup& light) const override;
+    bool readsTable(const LightSetup& light) const override;
+    std::vector<CpuWork> prepare(LightData*, SharedState& shared,
+                                 const LightSetup& light) const override;
+    ChainOptions options(const LightSetup& light, const LightData*,
+                         const ChainOptions*) const override;
+    ChainOutputs addChain(rg::RenderGraph& graph, const ChainInputs& in, const ChainConfig& config,
+                          const CompositeTarget& target) const override;
+    std::string summary(const ChainConfig& config) const override;
+    std::string frameNote(const SharedState& shared, const ChainConfig& config) const override;
+};
+
+}  // namespace ls

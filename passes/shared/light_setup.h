@@ -1,0 +1,44 @@
+#pragma once
+// One light of a frame as the methods see it, checked by the plugin API: the camera, the light, the
+// medium and the settings in the passes' own terms (the API translates its Settings into these;
+// no method sees an engine's types), and what the frame holds around the light.
+#include <vulkan/vulkan.h>
+
+#include <string>
+#include <vector>
+
+#include "beam_tree/occluders.h"
+#include "shared/scattering_params.h"
+
+namespace ls {
+
+struct LightSetup {
+    CameraParams camera;
+    LightParams light;
+    MediumParams medium;
+    EpipolarSettings epipolar;
+    SliceSettings planes;  // slices' and the beam trees' sampling planes
+    SliceAccumulation sliceTarget = SliceAccumulation::Float16;
+    uint32_t sliceBlur = 0;
+    bool sliceDither = false;
+    ConeMarchOptions cone;
+    bool shadowSampling = true;  // false: seed 003's low-end mode
+    VkExtent2D screen{0, 0};
+    bool shadowed = false;
+    bool lightColor = false;
+    bool inscatterOut = false;
+    bool noise = false;            // seed 002's scrolling noise (an amplitude above 0)
+    bool engineNoise = false;      // the engine gives the noise image
+    bool simplified = false;       // seed 004's light model
+    bool depthAttachment = false;  // the engine's depth may be a depth attachment
+    double timeSeconds = 0.0;
+    size_t occluders = 0;  // the frame's occluders, counted
+    // The occluders in double, checked: filled only when the frame's method reads them.
+    std::vector<beam::Occluder> beamOccluders;
+    // How the engine named this light's fields and settings ("light" and "custom", or
+    // "lights[1].light" and "lights[1].settings"), for a refusal to name what the engine set.
+    std::string lightPath = "light";
+    std::string settingsPath = "custom";
+};
+
+}  // namespace ls

@@ -1,0 +1,113 @@
+#pragma once
+// A method of the frame graph as one unit: what it can take, why it refuses a light, what it
+// prepares on the CPU, the nodes of one light's chain, and the line that says what it built. Every
+// method implements this in its own folder (passes/<method>/) and has one line in the registry
+// (registry.cpp); the plugin API validates the frame, chooses the method, loops over the lights and
+// keeps the frame history, and knows no method's nodes.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "chain_options.h"
+#include "light_setup.h"
+#include "rendergraph/render_graph.h"
+#include "shared/composite_target.h"
+#include "shared/shared_state.h"
+
+namespace ls {
+
+struct MethodCaps {
+    bool directional = true, spot = true, point = true;
+    bool cubeShadow = false;      // samples a point light's six-face shadow map
+    bool severalLights = false;   // builds a chain per light in a frame of several
+    bool readsOccluders = false;  // FrameDescription::occluders (the beam trees)
+    bool countsSteps = false;     // DebugOptions::countSteps: a counting variant of its march
+    // Its textures depend on the profile's sizes: budget() reports it.
+    bool budgeted = false;
+};
+
+// One light's chain in the frame graph's configuration: what decides its nodes and their
+// textures. Equal configurations build equal chains.
+struct ChainConfig {
+    LightKind light = LightKind::Directional;
+    bool shadowed = false;
+    uint32_t shadowMapSize = 0;
+    ChainOptions options;  // the method's own (its Options struct)
+    bool operator==(const ChainConfig&) const = default;
+};
+
+// A method's state of one light kept across frames (the slice placement, the beam tree), filled
+// by prepare() before each frame is recorded; the chain's passes read it when they record.
+struct LightData {
+    virtual ~LightData() = default;
+};
+
+// CPU work prepare() did for this frame, for the frame's report.
+struct CpuWork {
+    std::string name;
+    double milliseconds = 0;
+};
+
+// What one light's chain reads. Images the frame lacks are invalid handles.
+struct ChainInputs {
+    Shared shared;            // the light's constants and shader options
+    rg::BufferRef constants;  // the light's FrameConstants, uploaded
+    rg::ImageRef depth;       // the engine's depth
+    rg::ImageRef shadowMap;   // the light's depth
+    rg::ImageRef lightColor;  // its light-space color
+    rg::ImageRef table;       // its point-light table, where readsTable() asked for one
+    rg::ImageRef noise;       // the frame's tiling noise, where readsNoise() asked for it
+    VkExtent2D screen{0, 0};
+    VkFormat depthStencil = VK_FORMAT_UNDEFINED;  // the stencil textures' format
+    VkFormat coordinateFormat = VK_FORMAT_R32G32_SFLOAT;
+    rg::BufferRef stepCounts;  // cleared, when the frame counts epipolar's steps; else invalid
+    const LightData* data = nullptr;  // prepare()'s; null for the budget
+};
+
+// What a chain leaves: a screen Lin for the composite, or the target's new versions where the
+// chain composited its Lin itself.
+struct ChainOutputs {
+    rg::ImageRef lin;
+    bool composited = false;
+    CompositeOutputs target;
+    rg::BufferRef stepCounts;  // the counter's new version, when the chain counted
+};
+
+class MethodUnit {
+  public:
+    virtual ~MethodUnit() = default;
+    virtual const char* name() const = 0;  // the CLI's and the report's name
+    virtual MethodCaps caps() const = 0;
+    // Why the method cannot honour this light, in one line naming the field and the rule (the
+    // API adds "lightscatter: "); empty when it can.
+    virtual std::string refusal(const LightSetup& light) const = 0;
+    // An assumption of the method the light or medium breaks, and what it costs; empty if none.
+    virtual std::string notice(const LightSetup&) const { return {}; }
+    // Whether the chain samples the light's point-light table (made and kept by the plugin).
+    virtual bool readsTable(const LightSetup&) const { return false; }
+    // Whether the chain samples the frame's tiling noise (the engine's, or the plugin's own).
+    virtual bool readsNoise(const LightSetup&) const { return false; }
+    // The light's state across frames; null when the method keeps none.
+    virtual std::unique_ptr<LightData> makeData() const { return nullptr; }
+    // This frame's CPU work for the light, into `data` (made by makeData()); also per-face state
+    // in `shared` (a cube-shadowed light's faces).
+    virtual std::vector<CpuWork> prepare(LightData*, SharedState&, const LightSetup&) const {
+        return {};
+    }
+    // The chain's options for the light; `data` is prepare()'s (null for the budget), `previous`
+    // the options the light's chain had in the last graph (null: none, or another method's).
+    virtual ChainOptions options(const LightSetup& light, const LightData* data,
+                                 const ChainOptions* previous) const = 0;
+    // Adds the light's chain. `target` is where a chain that composites itself writes; a chain
+    // that returns a screen Lin leaves the composite to the frame.
+    virtual ChainOutputs addChain(rg::RenderGraph& graph, const ChainInputs& in,
+                                  const ChainConfig& config,
+                                  const CompositeTarget& target) const = 0;
+    // Which nodes the chain was built from, and why, in one line.
+    virtual std::string summary(const ChainConfig& config) const = 0;
+    // What changed this frame without a rebuild, appended to the report's reason (the cube faces
+    // reaching the view); empty if nothing.
+    virtual std::string frameNote(const SharedState&, const ChainConfig&) const { return {}; }
+};
+
+}  // namespace ls

@@ -1,0 +1,106 @@
+#include "view_reach.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/glm.hpp>
+
+namespace ls {
+
+bool lightTouchesView(const CameraParams& camera, const LightParams& light,
+                      const MediumParams& medium) {
+    // Nothing reaches the camera when nothing is emitted or nothing scatters.
+    if (glm::all(glm::equal(light.intensity, glm::vec3(0.0f)))) return false;
+    if (glm::all(glm::equal(medium.betaR + medium.betaM, glm::vec3(0.0f)))) return false;
+    if (light.kind != LightKind::Spot) return true;
+    // View rays end within the far plane's corners (or the sky distance with an infinite far
+    // plane), so only the part of the cone within that reach of the camera can matter: an
+    // unbounded spot is bounded by it.
+    const glm::vec3 cameraPos = glm::vec3(glm::inverse(camera.view)[3]);
+    const float tanX = 1.0f / std::fabs(camera.projection[0][0]);
+    const float tanY = 1.0f / std::fabs(camera.projection[1][1]);
+    const float farthest = (camera.infiniteFar ? medium.maxDistance : camera.farPlane) *
+                           std::sqrt(1.0f + tanX * tanX + tanY * tanY);
+    const float range = std::min(light.range, glm::length(light.position - cameraPos) + farthest);
+    if (!(range < 1e29f)) return true;
+    const glm::mat4 m = glm::transpose(camera.projection * camera.view);  // rows as columns
+    glm::vec4 planes[6] = {m[3] + m[0], m[3] - m[0], m[3] + m[1], m[3] - m[1], m[2], m[3] - m[2]};
+    const int count = camera.infiniteFar ? 5 : 6;
+    const glm::vec3 axis = glm::normalize(light.direction);
+    const float alpha = std::acos(std::clamp(light.cosHalfAngle, -1.0f, 1.0f));
+    for (int i = 0; i < count; ++i) {
+        const glm::vec3 n(planes[i]);
+        const float len = glm::length(n);
+        if (len < 1e-12f) continue;
+        // The farthest reach of the range-capped cone along the plane's normal.
+        const float angle = std::acos(std::clamp(glm::dot(n / len, axis), -1.0f, 1.0f));
+        const float reach =
+            angle <= alpha ? 1.0f : std::max(0.0f, std::cos(std::min(angle - alpha, 1.5707964f)));
+        if ((glm::dot(n, light.position) + planes[i].w) / len + range * reach < 0.0f) return false;
+    }
+    return true;
+}
+
+bool cubeFaceTouchesView(const CameraParams& camera, const LightParams& light,
+                         const MediumParams& medium, int face) {
+    if (!lightTouchesView(camera, light, medium)) return false;
+    // Two convex solids, each given by its corners: the view (its frustum up to the depth no view
+    // ray passes: the far plane, or the sky distance with an infinite far plane) and the face's
+    // pyramid from the light (up to the farthest the view reaches from the light). They miss each
+    // other when one's corners all lie outside one plane of the other (conservative: some that
+    // miss are kept).
+    const glm::mat4 invView = glm::inverse(camera.view);
+    const glm::vec3 cameraPos(invView[3]);
+    const glm::vec3 forward = -glm::normalize(glm::vec3(invView[2]));
+    const float depth = camera.infiniteFar ? medium.maxDistance : camera.farPlane;
+    const glm::mat4 invViewProj = glm::inverse(camera.projection * camera.view);
+    const float nearNdc = camera.reversedZ ? 1.0f : 0.0f;
+    glm::vec3 view[8];
+    float reach = 0.0f;
+    for (int k = 0; k < 4; ++k) {
+        const glm::vec4 c =
+            invViewProj * glm::vec4(k & 1 ? 1.0f : -1.0f, k & 2 ? 1.0f : -1.0f, nearNdc, 1.0f);
+        const glm::vec3 d = glm::vec3(c) / c.w - cameraPos;
+        const float along = glm::dot(d, forward);
+        if (!(along > 0.0f)) return true;  // not a perspective view this test understands
+        view[k] = cameraPos + d * (camera.nearPlane / along);
+        view[k + 4] = cameraPos + d * (depth / along);
+        reach = std::max(reach, glm::length(view[k + 4] - cameraPos));
+    }
+    // The face's side planes through the light: s D[axis] >= |D[other]| with D = P - light.
+    const int axis = face / 2;
+    const float sign = face % 2 == 0 ? 1.0f : -1.0f;
+    for (int k = 1; k <= 2; ++k) {
+        const int other = (axis + k) % 3;
+        for (float side : {-1.0f, 1.0f}) {
+            bool allOutside = true;
+            for (const glm::vec3& p : view) {
+                const glm::vec3 d = p - light.position;
+                allOutside = allOutside && sign * d[axis] + side * d[other] < 0.0f;
+            }
+            if (allOutside) return false;
+        }
+    }
+    // The pyramid's corners against the view's planes.
+    const float range = glm::length(light.position - cameraPos) + reach;
+    glm::vec3 pyramid[5] = {light.position};
+    for (int k = 0; k < 4; ++k) {
+        glm::vec3 d(0.0f);
+        d[axis] = sign * range;
+        d[(axis + 1) % 3] = k & 1 ? range : -range;
+        d[(axis + 2) % 3] = k & 2 ? range : -range;
+        pyramid[k + 1] = light.position + d;
+    }
+    const glm::mat4 m = glm::transpose(camera.projection * camera.view);  // rows as columns
+    const glm::vec4 planes[6] = {m[3] + m[0], m[3] - m[0], m[3] + m[1],
+                                 m[3] - m[1], m[2],        m[3] - m[2]};
+    for (int i = 0; i < (camera.infiniteFar ? 5 : 6); ++i) {
+        bool allOutside = true;
+        for (const glm::vec3& p : pyramid)
+            allOutside = allOutside && glm::dot(glm::vec4(p, 1.0f), planes[i]) < 0.0f;
+        if (allOutside) return false;
+    }
+    return true;
+}
+
+}  // namespace ls

@@ -1,0 +1,19 @@
+#pragma once
+// Whether a light, or one face of a point light's cube, can reach a view ray: the tests that keep
+// a light whose volume misses the view from adding any node.
+#include "scattering_params.h"
+
+namespace ls {
+
+// Whether any light can scatter towards the camera (conservative): false when nothing is emitted,
+// nothing scatters, or a spot's cone (within its range, or within the reach of the view) misses
+// the view frustum.
+bool lightTouchesView(const CameraParams& camera, const LightParams& light,
+                      const MediumParams& medium);
+// Whether cube face `face` (+X, -X, +Y, -Y, +Z, -Z) of a point light reaches a view ray: its
+// square pyramid against the view frustum, each bounded by how far the view reaches (conservative:
+// true when unsure).
+bool cubeFaceTouchesView(const CameraParams& camera, const LightParams& light,
+                         const MediumParams& medium, int face);
+
+}  // namespace ls

@@ -1,0 +1,40 @@
+#pragma once
+// Seed 002's view-aligned slice planes as a method of the frame graph (method_unit.h): the planes
+// placed on the CPU each frame, blended into an accumulation target, resolved into Lin.
+#include <memory>
+
+#include "shared/method_unit.h"
+#include "slice_geometry.h"
+
+namespace ls {
+
+class SlicesMethod final : public MethodUnit {
+  public:
+    struct Options {
+        SliceAccumulation target = SliceAccumulation::Float16;
+        uint32_t blur = 0;
+        bool dither = false;
+        bool noise = false;
+        bool shadowSampling = true;
+        bool reversedZ = false;  // the camera's depth convention (the planes depth-test)
+        bool operator==(const Options&) const = default;
+    };
+    // Where this frame's planes go; the nodes read it when they record.
+    struct Data final : LightData {
+        std::shared_ptr<SlicePlacement> placement = std::make_shared<SlicePlacement>();
+    };
+    const char* name() const override { return "slices"; }
+    MethodCaps caps() const override;
+    std::string refusal(const LightSetup& light) const override;
+    bool readsNoise(const LightSetup& light) const override { return light.noise; }
+    std::unique_ptr<LightData> makeData() const override { return std::make_unique<Data>(); }
+    std::vector<CpuWork> prepare(LightData* data, SharedState&,
+                                 const LightSetup& light) const override;
+    ChainOptions options(const LightSetup& light, const LightData*,
+                         const ChainOptions*) const override;
+    ChainOutputs addChain(rg::RenderGraph& graph, const ChainInputs& in, const ChainConfig& config,
+                          const CompositeTarget& target) const override;
+    std::string summary(const ChainConfig& config) const override;
+};
+
+}  // namespace ls

@@ -1,0 +1,67 @@
+#include "graph_config.h"
+
+#include <algorithm>
+
+namespace lightscatter::detail {
+
+FrameImports frameImports(const FrameDescription& frame) {
+    FrameImports f;
+    f.depth = importState(frame.depth);
+    f.color = importState(frame.color);
+    if (frame.inscatterOut) f.inscatterOut = importState(*frame.inscatterOut);
+    if (frame.noise) f.noise = importState(*frame.noise);
+    for (const LightInput& l : lightInputs(frame)) {
+        f.shadowMaps.push_back(l.shadowMap ? importState(*l.shadowMap) : ImportState{});
+        f.lightColors.push_back(l.lightColor ? importState(*l.lightColor) : ImportState{});
+    }
+    return f;
+}
+
+GraphConfig graphConfig(const ValidatedFrame& frame, const ls::MethodUnit& method,
+                        const FrameImports& images, const GraphOptions& options,
+                        const std::vector<const ls::LightData*>& data,
+                        const GraphConfig* previous) {
+    const FrameSetup& first = frame.lights[0];
+    GraphConfig c;
+    c.method = &method;
+    c.screen = first.screen;
+    c.depthStencil = options.depthStencil;
+    c.coordinates = options.coordinates;
+    c.depth = images.depth;
+    c.color = images.color;
+    c.inscatterOut = images.inscatterOut;
+    c.extinction = glm::any(glm::greaterThan(first.medium.betaT(), glm::vec3(0.0f)));
+    c.poisonTransients = options.poisonTransients;
+    bool noise = false;
+    for (size_t i = 0; i < frame.lights.size(); ++i) {
+        const FrameSetup& s = frame.lights[i];
+        const bool touches = frame.touchesView[i];
+        LightGraphConfig l;
+        l.chain.light = s.light.kind;
+        l.chain.shadowed = s.shadowed;
+        l.chain.shadowMapSize = s.light.shadowMapSize;
+        const bool sameMethod =
+            previous && previous->method == &method && i < previous->lights.size();
+        l.chain.options = method.options(s, i < data.size() ? data[i] : nullptr,
+                                         sameMethod ? &previous->lights[i].chain.options : nullptr);
+        l.touchesView = touches;
+        l.noise = touches && method.readsNoise(s);
+        l.shadowMap = images.shadowMaps[i];
+        l.lightColor = images.lightColors[i];
+        if (touches && method.readsTable(s)) l.table = tableState();
+        noise = noise || l.noise;
+        // The step counter holds the most slices of any light that marches.
+        if (options.countSteps && method.caps().countsSteps && touches && s.shadowed) {
+            c.countSteps = true;
+            c.stepCountSlices = std::max(c.stepCountSlices, s.epipolar.slices);
+        }
+        c.lights.push_back(l);
+    }
+    if (noise) {
+        c.ownNoise = !images.noise.given();
+        c.noise = c.ownNoise ? ownNoiseState() : images.noise;
+    }
+    return c;
+}
+
+}  // namespace lightscatter::detail

@@ -1,0 +1,33 @@
+#pragma once
+// The one function from a checked frame to its graph's configuration, shared by the plugin (each
+// frame) and budget() (a frame it describes without a device).
+#include <vector>
+
+#include "frame_graph.h"
+#include "frame_setup.h"
+
+namespace lightscatter::detail {
+
+// What of the engine's images decides the graph: the frame's, and each light's (absent: format
+// UNDEFINED).
+struct FrameImports {
+    ImportState depth, color, inscatterOut, noise;
+    std::vector<ImportState> shadowMaps, lightColors;  // one per light
+};
+FrameImports frameImports(const FrameDescription& frame);
+
+struct GraphOptions {
+    VkFormat depthStencil = VK_FORMAT_UNDEFINED;
+    VkFormat coordinates = VK_FORMAT_R32G32_SFLOAT;
+    bool poisonTransients = false;
+    bool countSteps = false;  // DebugOptions::countSteps: where the method counts (epipolar)
+};
+
+// `data`: each light's method state after prepare() (empty for the budget); `previous`: the last
+// graph's configuration, whose options a method may grow from (the beam tree's buffer).
+GraphConfig graphConfig(const ValidatedFrame& frame, const ls::MethodUnit& method,
+                        const FrameImports& images, const GraphOptions& options,
+                        const std::vector<const ls::LightData*>& data = {},
+                        const GraphConfig* previous = nullptr);
+
+}  // namespace lightscatter::detail
