@@ -85,10 +85,18 @@ std::vector<Binding> BindingTable::layout() const {
     for (const Row& r : rows_) {
         VkDescriptorType type = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
         switch (r.kind) {
-            case BindingKind::Uniform: type = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER; break;
-            case BindingKind::Sampled: type = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER; break;
-            case BindingKind::Storage: type = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE; break;
-            case BindingKind::StorageBuffer: type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER; break;
+            case BindingKind::Uniform:
+                type = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+                break;
+            case BindingKind::Sampled:
+                type = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+                break;
+            case BindingKind::Storage:
+                type = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+                break;
+            case BindingKind::StorageBuffer:
+                type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+                break;
         }
         bindings.push_back({r.binding, type, VK_SHADER_STAGE_ALL});
     }
@@ -99,11 +107,15 @@ DescriptorPush BindingTable::writes(const PassContext& ctx) const {
     DescriptorPush set;
     for (const Row& r : rows_) {
         switch (r.kind) {
-            case BindingKind::Uniform: set.uniform(r.binding, ctx.buffer(r.buffer)); break;
+            case BindingKind::Uniform:
+                set.uniform(r.binding, ctx.buffer(r.buffer));
+                break;
             case BindingKind::Sampled:
                 set.sampled(r.binding, ctx.view(r.image, r.aspect), ctx.layout(r.image), r.sampler);
                 break;
-            case BindingKind::Storage: set.storage(r.binding, ctx.view(r.image)); break;
+            case BindingKind::Storage:
+                set.storage(r.binding, ctx.view(r.image));
+                break;
             case BindingKind::StorageBuffer:
                 set.storageBuffer(r.binding, ctx.buffer(r.buffer));
                 break;

@@ -20,7 +20,7 @@ namespace rg {
 enum class BindingKind : uint8_t { Uniform, Sampled, Storage, StorageBuffer };
 
 class BindingTable {
-public:
+  public:
     explicit BindingTable(PassBuilder& pass) : pass_(&pass) {}
 
     BindingTable& uniform(uint32_t binding, BufferRef buffer, VkPipelineStageFlags2 stages = 0);
@@ -52,7 +52,7 @@ public:
     // The table less one row, for a draw whose shader variant lacks a binding the pass declares.
     BindingTable without(uint32_t binding) const;
 
-private:
+  private:
     struct Row {
         uint32_t binding;
         BindingKind kind;

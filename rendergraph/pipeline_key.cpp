@@ -7,7 +7,7 @@ namespace rg {
 namespace {
 
 class KeyWriter {
-public:
+  public:
     explicit KeyWriter(PipelineKey& key) : key_(key) {}
     // Each group starts with a tag and its element count, so that fields of different lengths can
     // never line up into the same key.
@@ -39,7 +39,7 @@ public:
         for (const auto& [id, v] : values) put((static_cast<uint64_t>(id) << 32) | v);
     }
 
-private:
+  private:
     PipelineKey& key_;
 };
 
@@ -96,9 +96,9 @@ PipelineKey pipelineKey(const GraphicsPipelineDesc& d) {
     w.put(static_cast<uint64_t>(d.depthCompare));
     w.put(d.stencilTest);
     const VkStencilOpState& s = d.stencil;
-    for (uint64_t v : {uint64_t(s.failOp), uint64_t(s.passOp), uint64_t(s.depthFailOp),
-                       uint64_t(s.compareOp), uint64_t(s.compareMask), uint64_t(s.writeMask),
-                       uint64_t(s.reference)})
+    for (uint64_t v :
+         {uint64_t(s.failOp), uint64_t(s.passOp), uint64_t(s.depthFailOp), uint64_t(s.compareOp),
+          uint64_t(s.compareMask), uint64_t(s.writeMask), uint64_t(s.reference)})
         w.put(v);
     w.put(static_cast<uint64_t>(d.blend));
     w.put(d.colorWriteMask);

@@ -164,8 +164,8 @@ rg::ImageRef addBeamTreeSampling(rg::RenderGraph& graph, const Shared& shared,
     // One pass, two draws: the lit parts skip the shadow map, the uncertain parts look it up.
     auto pass =
         graph.addPass("clipped sampling planes (seed 004 method 1)", rg::PassType::Graphics);
-    const rg::BindingTable table = declarePlaneReads(pass, shared, in.constants, triangles, in.depth,
-                                                     in.shadowMap, in.lightColor);
+    const rg::BindingTable table = declarePlaneReads(pass, shared, in.constants, triangles,
+                                                     in.depth, in.shadowMap, in.lightColor);
     lin = pass.colorAttachment(lin, rg::LoadOp::Clear);
     const bool reversedZ = options.reversedZ;
     pass.execute([shared, frame, in, table, reversedZ](rg::PassContext& ctx) {

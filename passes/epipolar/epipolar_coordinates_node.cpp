@@ -25,8 +25,8 @@ EpipolarCoordinates addEpipolarCoordinates(rg::RenderGraph& g, const NodeInputs&
         pass.colorAttachment(out.epipolarZ, rg::LoadOp::Clear, {{-1.0f, 0.0f, 0.0f, 0.0f}});
     out.epipolarStencil = pass.stencilWrite(out.epipolarStencil, rg::LoadOp::Clear, 0);
     pass.execute([in, table](rg::PassContext& ctx) {
-        auto desc = fullscreenPipeline(rg::spirv(ls_spirv::epipolar_coordinates_frag), ctx,
-                                       table.layout());
+        auto desc =
+            fullscreenPipeline(rg::spirv(ls_spirv::epipolar_coordinates_frag), ctx, table.layout());
         desc.stencilTest = true;
         desc.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_REPLACE, VK_STENCIL_OP_KEEP,
                         VK_COMPARE_OP_ALWAYS, 0xff, 0xff, 1};

@@ -12,7 +12,9 @@ rg::ImageRef addInterpolate(rg::RenderGraph& g, const NodeInputs& in, const Epip
         rg::ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT, s.samples, s.slices));
     auto pass = g.addPass("interpolate in-scattering", rg::PassType::Graphics);
     rg::BindingTable table(pass);
-    table.sampled(LS_BINDING_INTERPOLATION_SOURCE, interpolationSource, in.shared->samplers.nearest())
+    table
+        .sampled(LS_BINDING_INTERPOLATION_SOURCE, interpolationSource,
+                 in.shared->samplers.nearest())
         .sampled(LS_BINDING_INTERPOLATE_MARCHED, marched, in.shared->samplers.nearest());
     pass.stencilTest(epipolarStencil);
     interpolated = pass.colorAttachment(interpolated, rg::LoadOp::Clear);

@@ -19,7 +19,9 @@ rg::ImageRef addMinMaxTrees(rg::RenderGraph& g, const NodeInputs& in, const Epip
         auto pass = g.addPass("min/max trees level 1", rg::PassType::Compute);
         const auto& sm = in.shared->samplers;
         rg::BindingTable table = frameTable(pass, in.constants);
-        table.sampled(LS_BINDING_TREE_SHADOW_MAP, in.shadowMap, sm.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
+        table
+            .sampled(LS_BINDING_TREE_SHADOW_MAP, in.shadowMap, sm.nearest(),
+                     VK_IMAGE_ASPECT_DEPTH_BIT)
             .sampled(LS_BINDING_TREE_UV_FRAME, sliceUvFrame, sm.nearest());
         tree = table.storageWrite(LS_BINDING_TREE_FIRST_LEVEL, tree);
         pass.execute([in, table, s, n](rg::PassContext& ctx) {
@@ -43,7 +45,8 @@ rg::ImageRef addMinMaxTrees(rg::RenderGraph& g, const NodeInputs& in, const Epip
         pass.execute([in, table, level, n, s](rg::PassContext& ctx) {
             if (!in.shared->inView()) return;
             const auto& p = in.shared->pipelines.compute(
-                "min/max trees next level", rg::spirv(ls_spirv::min_max_next_level_comp), table.layout(), 8, {});
+                "min/max trees next level", rg::spirv(ls_spirv::min_max_next_level_comp),
+                table.layout(), 8, {});
             p.bind(ctx.cmd());
             table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
             const int32_t push[2] = {static_cast<int32_t>(level), static_cast<int32_t>(n)};

@@ -13,11 +13,12 @@ RefinedSamples addRefineOnInscattering(rg::RenderGraph& g, const NodeInputs& in,
     rg::BindingTable table = frameTable(pass, in.constants);
     table.sampled(LS_BINDING_REFINE_MARCHED, marched, in.shared->samplers.nearest());
     RefinedSamples out;
-    out.interpolationSource = table.storageReadWrite(LS_BINDING_REFINE_LIN_SOURCES, interpolationSource);
+    out.interpolationSource =
+        table.storageReadWrite(LS_BINDING_REFINE_LIN_SOURCES, interpolationSource);
     out.epipolarStencil = pass.stencilWrite(epipolarStencil, rg::LoadOp::Load);
     pass.execute([in, table](rg::PassContext& ctx) {
-        rg::GraphicsPipelineDesc desc =
-            fullscreenPipeline(rg::spirv(ls_spirv::refine_on_inscattering_frag), ctx, table.layout());
+        rg::GraphicsPipelineDesc desc = fullscreenPipeline(
+            rg::spirv(ls_spirv::refine_on_inscattering_frag), ctx, table.layout());
         desc.stencilTest = true;  // every valid sample: 0 != stencil
         desc.stencil = {VK_STENCIL_OP_KEEP,
                         VK_STENCIL_OP_INCREMENT_AND_CLAMP,

@@ -18,9 +18,9 @@ rg::ImageRef addRefineSamples(rg::RenderGraph& g, const NodeInputs& in, const Ep
         // The light type only: near a point or spot light the first section is cut geometrically.
         rg::Specialization spec;
         spec.set(LS_SPEC_LIGHT_TYPE, static_cast<int32_t>(in.shared->spec.light));
-        const auto& p = in.shared->pipelines.compute(
-            "refine sample locations", rg::spirv(ls_spirv::refine_samples_comp), table.layout(), 0,
-            spec);
+        const auto& p = in.shared->pipelines.compute("refine sample locations",
+                                                     rg::spirv(ls_spirv::refine_samples_comp),
+                                                     table.layout(), 0, spec);
         p.bind(ctx.cmd());
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         vkCmdDispatch(ctx.cmd(), groupCount(s.samples, 128), s.slices, 1);

@@ -15,9 +15,9 @@ rg::ImageRef addSliceUvFrame(rg::RenderGraph& g, const NodeInputs& in, const Epi
     uvFrame = table.storageWrite(LS_BINDING_UV_FRAME_OUT, uvFrame);
     pass.execute([in, table, s](rg::PassContext& ctx) {
         if (!in.shared->inView()) return;  // a cube face out of view: no ray reads its lines
-        const auto& p = in.shared->pipelines.compute(
-            "slice uv origin and direction", rg::spirv(ls_spirv::slice_uv_frame_comp),
-            table.layout(), 0, {});
+        const auto& p = in.shared->pipelines.compute("slice uv origin and direction",
+                                                     rg::spirv(ls_spirv::slice_uv_frame_comp),
+                                                     table.layout(), 0, {});
         p.bind(ctx.cmd());
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         vkCmdDispatch(ctx.cmd(), groupCount(s.slices, 64), 1, 1);

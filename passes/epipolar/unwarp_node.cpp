@@ -53,8 +53,8 @@ UnwarpOutputs addUnwarp(rg::RenderGraph& g, const NodeInputs& in, const UnwarpIn
     const bool addOnly = target.addOnly;
     pass.execute([in, table, written, markForFixup, addOnly](rg::PassContext& ctx) {
         const ScatterSpec& spec = in.shared->spec;
-        auto desc = fullscreenPipeline((in.table.valid() ? kTable : kDirectional).pick(ctx, written), ctx,
-                                       table.layout());
+        auto desc = fullscreenPipeline(
+            (in.table.valid() ? kTable : kDirectional).pick(ctx, written), ctx, table.layout());
         desc.pushConstantBytes = 8;
         desc.specialization = spec.constants();
         if (markForFixup) {

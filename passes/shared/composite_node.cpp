@@ -35,7 +35,8 @@ CompositeOutputs addCompositePass(rg::RenderGraph& graph, const NodeInputs& in, 
     const CompositeOutputs written = addCompositeTarget(table, target);
     const CompositeVariants& shaders = target.addOnly ? kAddOnly : lin.valid() ? kWithLin : kExtinctionOnly;
     pass.execute([in, table, written, &shaders, name](rg::PassContext& ctx) {
-        const auto& p = in.shared->pipelines.compute(name, shaders.pick(ctx, written), table.layout(), 0, {});
+        const auto& p =
+            in.shared->pipelines.compute(name, shaders.pick(ctx, written), table.layout(), 0, {});
         p.bind(ctx.cmd());
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         const VkExtent2D e = ctx.extent(written.color);

@@ -9,7 +9,8 @@ namespace ls {
 struct FrameConstants {
 #define LS_MAT4 glm::mat4
 #define LS_VEC4 glm::vec4
-#define LS_DEFAULT(x, y, z, w) {x, y, z, w}
+#define LS_DEFAULT(x, y, z, w) \
+    { x, y, z, w }
 #include "shaders/shared/frame_constants_fields.h"
 #undef LS_MAT4
 #undef LS_VEC4

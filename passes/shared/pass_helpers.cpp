@@ -26,7 +26,8 @@ namespace ls {
 
 void addMarchInputs(rg::BindingTable& table, const NodeInputs& in) {
     const auto& s = in.shared->samplers;
-    table.sampledIfValid(LS_BINDING_SHADOW_MAP, in.shadowMap, s.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
+    table
+        .sampledIfValid(LS_BINDING_SHADOW_MAP, in.shadowMap, s.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
         .sampledIfValid(LS_BINDING_POINT_TABLE, in.table, s.nearest())
         .sampledIfValid(LS_BINDING_LIGHT_COLOR, in.lightColor, s.linear());
 }

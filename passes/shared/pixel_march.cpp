@@ -86,8 +86,9 @@ rg::BindingTable declarePixelMarch(rg::PassBuilder& pass, const NodeInputs& in) 
 void drawPixelMarch(rg::PassContext& ctx, const NodeInputs& in, const rg::BindingTable& table,
                     const PixelMarchDraw& draw) {
     const ScatterSpec& spec = in.shared->spec;
-    auto desc = fullscreenPipeline(draw.composite ? fixupShaders(spec).pick(ctx, *draw.composite) : pixelMarchShader(spec),
-                                   ctx, table.layout());
+    auto desc = fullscreenPipeline(
+        draw.composite ? fixupShaders(spec).pick(ctx, *draw.composite) : pixelMarchShader(spec),
+        ctx, table.layout());
     desc.pushConstantBytes = draw.composite ? 8 : 4;
     desc.specialization = spec.constants();
     if (draw.whereStencilIsZero) {

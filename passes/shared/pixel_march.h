@@ -4,10 +4,10 @@
 // epipolar fix-up over the pixels its unwarp left unmarked in a stencil, with an optional step cap. The
 // caller adds the pass, its target and any stencil it tests; these add the march's reads and draw.
 #include "node_inputs.h"
-#include "shared_nodes.h"
 #include "rendergraph/binding_table.h"
 #include "rendergraph/pass_context.h"
 #include "rendergraph/render_graph.h"
+#include "shared_nodes.h"
 
 namespace ls {
 

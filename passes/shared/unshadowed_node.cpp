@@ -6,20 +6,19 @@
 namespace ls {
 
 rg::ImageRef addUnshadowed(rg::RenderGraph& graph, const NodeInputs& in) {
-    return addScreenLinNode(
-        graph, in.shared,
-        {.name = "unshadowed in-scattering",
-         .constants = in.constants,
-         .depth = in.depth,
-         // The table; an unshadowed frame has nothing else.
-         .rows = [in](rg::BindingTable& table) { addMarchInputs(table, in); },
-         .shader =
-             [](const ScatterSpec& spec) {
-                 return spec.light != LightKind::Directional
-                            ? rg::spirv(ls_spirv::unshadowed_table_frag)
-                            : rg::spirv(ls_spirv::unshadowed_directional_frag);
-             },
-         .specialize = {}});
+    return addScreenLinNode(graph, in.shared,
+                            {.name = "unshadowed in-scattering",
+                             .constants = in.constants,
+                             .depth = in.depth,
+                             // The table; an unshadowed frame has nothing else.
+                             .rows = [in](rg::BindingTable& table) { addMarchInputs(table, in); },
+                             .shader =
+                                 [](const ScatterSpec& spec) {
+                                     return spec.light != LightKind::Directional
+                                                ? rg::spirv(ls_spirv::unshadowed_table_frag)
+                                                : rg::spirv(ls_spirv::unshadowed_directional_frag);
+                                 },
+                             .specialize = {}});
 }
 
 }  // namespace ls

@@ -72,7 +72,8 @@ rg::ImageRef addSlicePlanes(rg::RenderGraph& graph, const Shared& shared,
         desc.pushConstantBytes = sizeof(SlicePush);
         desc.specialization = spec.constants();
         const bool dither = channels && options.dither;
-        desc.specialization.set(LS_SPEC_PLANES_CHANNELS, channels).set(LS_SPEC_PLANES_DITHER, dither);
+        desc.specialization.set(LS_SPEC_PLANES_CHANNELS, channels)
+            .set(LS_SPEC_PLANES_DITHER, dither);
         desc.depthTest = true;
         desc.depthWrite = false;
         // A plane counts where it is in front of the surface.

@@ -38,7 +38,9 @@ TEST(PipelineKey, EveryGraphicsFieldChangesTheKey) {
         {"binding type", [](auto& d) { d.bindings[1].type = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE; }},
         {"binding stages", [](auto& d) { d.bindings[1].stages = VK_SHADER_STAGE_FRAGMENT_BIT; }},
         {"one binding more",
-         [](auto& d) { d.bindings.push_back({8, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}); }},
+         [](auto& d) {
+             d.bindings.push_back({8, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+         }},
         {"push bytes", [](auto& d) { d.pushConstantBytes = 8; }},
         {"specialisation value", [](auto& d) { d.specialization.values[0].second = 2; }},
         {"specialisation id", [](auto& d) { d.specialization.values[1].first = 4; }},
@@ -48,9 +50,14 @@ TEST(PipelineKey, EveryGraphicsFieldChangesTheKey) {
         {"depth format", [](auto& d) { d.formats.depth = VK_FORMAT_D32_SFLOAT; }},
         {"stencil format", [](auto& d) { d.formats.stencil = VK_FORMAT_S8_UINT; }},
         {"topology", [](auto& d) { d.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP; }},
-        {"vertex binding", [](auto& d) { d.vertexBindings.push_back({0, 12}); }},
+        {"vertex binding",
+         [](auto& d) {
+             d.vertexBindings.push_back({0, 12});
+         }},
         {"vertex attribute",
-         [](auto& d) { d.vertexAttributes.push_back({0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0}); }},
+         [](auto& d) {
+             d.vertexAttributes.push_back({0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0});
+         }},
         {"cull mode", [](auto& d) { d.cullMode = VK_CULL_MODE_BACK_BIT; }},
         {"front face", [](auto& d) { d.frontFace = VK_FRONT_FACE_CLOCKWISE; }},
         {"depth test", [](auto& d) { d.depthTest = true; }},
@@ -76,7 +83,8 @@ TEST(PipelineKey, EveryGraphicsFieldChangesTheKey) {
         change(d);
         const rg::PipelineKey key = rg::pipelineKey(d);
         EXPECT_NE(key, reference) << field;
-        for (size_t i = 1; i < seen.size(); ++i) EXPECT_NE(key, seen[i]) << field << " vs " << changes[i - 1].first;
+        for (size_t i = 1; i < seen.size(); ++i)
+            EXPECT_NE(key, seen[i]) << field << " vs " << changes[i - 1].first;
         seen.push_back(key);
     }
 }
@@ -96,8 +104,9 @@ TEST(PipelineKey, EveryComputeFieldChangesTheKey) {
     rg::Specialization other;
     other.set(0u, 2u);
     EXPECT_NE(rg::pipelineKey(rg::spirv(kFragment), bindings, 0, spec), reference);
-    EXPECT_NE(rg::pipelineKey(rg::spirv(kVertex), {{1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}}, 0, spec),
-              reference);
+    EXPECT_NE(
+        rg::pipelineKey(rg::spirv(kVertex), {{1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}}, 0, spec),
+        reference);
     EXPECT_NE(rg::pipelineKey(rg::spirv(kVertex), bindings, 4, spec), reference);
     EXPECT_NE(rg::pipelineKey(rg::spirv(kVertex), bindings, 0, other), reference);
     EXPECT_NE(rg::pipelineKey(rg::spirv(kVertex), bindings, 0, {}), reference);
@@ -115,8 +124,9 @@ TEST(BindingTable, OneRowGivesTheUseAndTheLayout) {
         graph.createImage("out", rg::ImageDesc::absolute(VK_FORMAT_R8G8B8A8_UNORM, 4, 4));
     auto pass = graph.addPass("pass", rg::PassType::Compute);
     rg::BindingTable table(pass);
-    table.uniform(0, constants).sampled(3, image, VK_NULL_HANDLE).sampledIfValid(6, rg::ImageRef{},
-                                                                                 VK_NULL_HANDLE);
+    table.uniform(0, constants)
+        .sampled(3, image, VK_NULL_HANDLE)
+        .sampledIfValid(6, rg::ImageRef{}, VK_NULL_HANDLE);
     const rg::ImageRef written = table.storageWrite(5, out);
     EXPECT_TRUE(written.valid());
     EXPECT_FALSE(table.storageReadWriteIfValid(7, rg::ImageRef{}).valid());
