@@ -64,49 +64,43 @@ struct PlaneDraw {
 // Records sampling-plane triangles [first, first + count) of the uploaded buffer, depth-tested
 // against the engine's depth and added to the bound color target.
 void drawPlaneParts(rg::PassContext& ctx, const Shared& shared, const BeamTreeFrame& frame,
-                    rg::BufferRef constants, rg::ImageRef shadowMap, rg::ImageRef lightColor,
-                    rg::BufferRef triangles, const PlaneDraw& draw, bool reversedZ) {
+                    const rg::BindingTable& passTable, const PlaneDraw& draw, bool reversedZ) {
     if (draw.count == 0) return;
-    const bool cookie = lightColor.valid();
+    const bool cookie = passTable.has(LS_BINDING_LIGHT_COLOR);
+    const rg::BindingTable table =
+        draw.shadow ? passTable : passTable.without(LS_BINDING_SHADOW_MAP);
     rg::GraphicsPipelineDesc desc;
     desc.vertex = rg::spirv(ls_spirv::triangles_vert);
     desc.fragment = planesShader(draw.shadow, cookie);
     desc.formats = ctx.renderingFormats();
-    desc.bindings = {uniformBinding(0), storageBufferBinding(3)};
-    if (draw.shadow) desc.bindings.push_back(sampledBinding(6));
-    if (cookie) desc.bindings.push_back(sampledBinding(8));
+    desc.bindings = table.layout();
     desc.pushConstantBytes = sizeof(SlicePush);
     desc.specialization = shared->spec.constants();
     desc.depthTest = true;
     desc.depthCompare = reversedZ ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_LESS;
     desc.blend = rg::BlendMode::Additive;
-    const auto& p =
-        shared->pipelines.graphics(pipelineKey("beam-tree planes", ctx,
-                                               shared->spec.key() + (draw.shadow ? "S" : "s") +
-                                                   (cookie ? "C" : "c") + (reversedZ ? "r" : "f")),
-                                   desc);
+    const auto& p = shared->pipelines.graphics("beam-tree planes", desc);
     p.bind(ctx.cmd());
-    auto set = frameSet(ctx, constants);
-    set.storageBuffer(3, ctx.buffer(triangles));
-    if (draw.shadow)
-        set.sampled(6, ctx.view(shadowMap, VK_IMAGE_ASPECT_DEPTH_BIT), ctx.layout(shadowMap),
-                    shared->samplers.nearest());
-    if (cookie)
-        set.sampled(8, ctx.view(lightColor), ctx.layout(lightColor), shared->samplers.linear());
-    set.push(ctx.device(), ctx.cmd(), p);
+    table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
     p.push(ctx.cmd(), frame.slicePush);
     vkCmdDraw(ctx.cmd(), draw.count, 1, draw.first, 0);
 }
 
 // The plane pass's declarations: the frame's constants, the triangles, the engine's depth as a
 // read-only depth attachment, and the shadow map and cookie where given.
-void declarePlaneReads(rg::PassBuilder& pass, rg::BufferRef constants, rg::BufferRef triangles,
-                       rg::ImageRef depth, rg::ImageRef shadowMap, rg::ImageRef lightColor) {
-    pass.uniformBuffer(constants, kVertexAndFragment);
-    pass.storageBufferRead(triangles, VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT);
-    if (shadowMap.valid()) pass.sampled(shadowMap, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
-    if (lightColor.valid()) pass.sampled(lightColor);
+rg::BindingTable declarePlaneReads(rg::PassBuilder& pass, const Shared& shared,
+                                   rg::BufferRef constants, rg::BufferRef triangles,
+                                   rg::ImageRef depth, rg::ImageRef shadowMap,
+                                   rg::ImageRef lightColor) {
+    const auto& s = shared->samplers;
+    rg::BindingTable table(pass);
+    table.uniform(LS_BINDING_FRAME, constants, kVertexAndFragment)
+        .storageBufferRead(LS_BINDING_BEAM_TRIANGLES, triangles,
+                           VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT)
+        .sampledIfValid(LS_BINDING_SHADOW_MAP, shadowMap, s.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
+        .sampledIfValid(LS_BINDING_LIGHT_COLOR, lightColor, s.linear());
     pass.depthTest(depth);
+    return table;
 }
 
 }  // namespace
@@ -118,33 +112,29 @@ rg::ImageRef addBeamTreeHybrid(rg::RenderGraph& graph, const Shared& shared, Bea
                                          rg::ImageDesc::screen(VK_FORMAT_R32G32B32A32_SFLOAT));
     {
         auto pass = graph.addPass("lit pyramids in closed form (seed 004)", rg::PassType::Graphics);
-        pass.uniformBuffer(in.constants, kVertexAndFragment);
-        pass.storageBufferRead(triangles, VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT);
-        pass.sampled(in.depth, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
-        pass.sampled(in.table);
+        const auto& s = shared->samplers;
+        rg::BindingTable table(pass);
+        table.uniform(LS_BINDING_FRAME, in.constants, kVertexAndFragment)
+            .storageBufferRead(LS_BINDING_BEAM_TRIANGLES, triangles,
+                               VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT)
+            .sampled(LS_BINDING_DEPTH, in.depth, s.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
+            .sampled(LS_BINDING_POINT_TABLE, in.table, s.nearest());
         lin = pass.colorAttachment(lin, rg::LoadOp::Clear);
-        pass.execute([shared, frame, in, triangles](rg::PassContext& ctx) {
+        pass.execute([shared, frame, table](rg::PassContext& ctx) {
             const uint32_t count = frame->litPoints;
             if (count == 0) return;
             rg::GraphicsPipelineDesc desc;
             desc.vertex = rg::spirv(ls_spirv::triangles_vert);
             desc.fragment = rg::spirv(ls_spirv::lit_volume_table_frag);
             desc.formats = ctx.renderingFormats();
-            desc.bindings = {uniformBinding(0), sampledBinding(1), storageBufferBinding(3),
-                             sampledBinding(7)};
+            desc.bindings = table.layout();
             desc.specialization = shared->spec.constants();
-            desc.specialization.set(20, true);  // triangles.vert: no near or far clipping
+            desc.specialization.set(LS_SPEC_UNCLIPPED_DEPTH, true);  // no near or far clipping
             desc.blend =
                 rg::BlendMode::Additive;  // entries write -E: a float target subtracts them
-            const auto& p = shared->pipelines.graphics(
-                pipelineKey("lit pyramids", ctx, shared->spec.key()), desc);
+            const auto& p = shared->pipelines.graphics("lit pyramids", desc);
             p.bind(ctx.cmd());
-            frameSet(ctx, in.constants)
-                .sampled(1, ctx.view(in.depth, VK_IMAGE_ASPECT_DEPTH_BIT), ctx.layout(in.depth),
-                         shared->samplers.nearest())
-                .storageBuffer(3, ctx.buffer(triangles))
-                .sampled(7, ctx.view(in.table), ctx.layout(in.table), shared->samplers.nearest())
-                .push(ctx.device(), ctx.cmd(), p);
+            table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
             vkCmdDraw(ctx.cmd(), count, 1, 0, 0);
         });
     }
@@ -152,14 +142,14 @@ rg::ImageRef addBeamTreeHybrid(rg::RenderGraph& graph, const Shared& shared, Bea
         // Without a shadow map (a point light) the uncertain space is sampled as lit: then only the
         // inner boxes cast shadows.
         auto pass = graph.addPass("uncertain sampling planes (seed 004)", rg::PassType::Graphics);
-        declarePlaneReads(pass, in.constants, triangles, in.depth, in.shadowMap, in.lightColor);
+        const rg::BindingTable table = declarePlaneReads(pass, shared, in.constants, triangles,
+                                                         in.depth, in.shadowMap, in.lightColor);
         lin = pass.colorAttachment(lin, rg::LoadOp::Load);
         const bool reversedZ = options.reversedZ;
-        pass.execute([shared, frame, in, triangles, reversedZ](rg::PassContext& ctx) {
+        pass.execute([shared, frame, in, table, reversedZ](rg::PassContext& ctx) {
             const PlaneDraw uncertain{frame->litPoints, frame->uncertainPoints,
                                       in.shadowMap.valid()};
-            drawPlaneParts(ctx, shared, *frame, in.constants, in.shadowMap, in.lightColor,
-                           triangles, uncertain, reversedZ);
+            drawPlaneParts(ctx, shared, *frame, table, uncertain, reversedZ);
         });
     }
     return lin;
@@ -174,16 +164,15 @@ rg::ImageRef addBeamTreeSampling(rg::RenderGraph& graph, const Shared& shared,
     // One pass, two draws: the lit parts skip the shadow map, the uncertain parts look it up.
     auto pass =
         graph.addPass("clipped sampling planes (seed 004 method 1)", rg::PassType::Graphics);
-    declarePlaneReads(pass, in.constants, triangles, in.depth, in.shadowMap, in.lightColor);
+    const rg::BindingTable table = declarePlaneReads(pass, shared, in.constants, triangles,
+                                                     in.depth, in.shadowMap, in.lightColor);
     lin = pass.colorAttachment(lin, rg::LoadOp::Clear);
     const bool reversedZ = options.reversedZ;
-    pass.execute([shared, frame, in, triangles, reversedZ](rg::PassContext& ctx) {
+    pass.execute([shared, frame, in, table, reversedZ](rg::PassContext& ctx) {
         const PlaneDraw lit{0, frame->litPoints, false};
         const PlaneDraw uncertain{frame->litPoints, frame->uncertainPoints, in.shadowMap.valid()};
-        drawPlaneParts(ctx, shared, *frame, in.constants, in.shadowMap, in.lightColor, triangles,
-                       lit, reversedZ);
-        drawPlaneParts(ctx, shared, *frame, in.constants, in.shadowMap, in.lightColor, triangles,
-                       uncertain, reversedZ);
+        drawPlaneParts(ctx, shared, *frame, table, lit, reversedZ);
+        drawPlaneParts(ctx, shared, *frame, table, uncertain, reversedZ);
     });
     return lin;
 }

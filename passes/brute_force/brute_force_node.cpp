@@ -8,10 +8,10 @@ rg::ImageRef addBruteForce(rg::RenderGraph& graph, const NodeInputs& in) {
     rg::ImageRef lin = graph.createImage("in-scattering (screen)",
                                          rg::ImageDesc::screen(VK_FORMAT_R16G16B16A16_SFLOAT));
     auto pass = graph.addPass("brute-force ray march", rg::PassType::Graphics);
-    declarePixelMarch(pass, in);
+    const rg::BindingTable table = declarePixelMarch(pass, in);
     lin = pass.colorAttachment(lin, rg::LoadOp::DontCare);
-    pass.execute([in](rg::PassContext& ctx) {
-        drawPixelMarch(ctx, in, {.pipeline = "brute-force ray march"});
+    pass.execute([in, table](rg::PassContext& ctx) {
+        drawPixelMarch(ctx, in, table, {.pipeline = "brute-force ray march"});
     });
     return lin;
 }

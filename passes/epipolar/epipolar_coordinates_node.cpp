@@ -14,29 +14,26 @@ EpipolarCoordinates addEpipolarCoordinates(rg::RenderGraph& g, const NodeInputs&
     out.epipolarZ = g.createImage("epipolar camera-space z", perSample(VK_FORMAT_R32_SFLOAT));
     out.epipolarStencil = g.createImage("epipolar depth-stencil", perSample(in.depthStencil));
     auto pass = g.addPass("coordinates and epipolar z", rg::PassType::Graphics);
-    pass.uniformBuffer(in.constants);
-    pass.sampled(sliceEndPoints);
-    pass.sampled(in.depth, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
+    const auto& sm = in.shared->samplers;
+    rg::BindingTable table = frameTable(pass, in.constants);
+    table.sampled(LS_BINDING_COORDINATES_END_POINTS, sliceEndPoints, sm.nearest())
+        .sampled(LS_BINDING_COORDINATES_DEPTH, in.depth, sm.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT);
     // Invalid samples keep the clear values: epipolar z -1, which no valid sample has, tells them
     // apart besides the stencil (the coordinates of invalid samples are never read).
     out.coordinates = pass.colorAttachment(out.coordinates, rg::LoadOp::Clear);
     out.epipolarZ =
         pass.colorAttachment(out.epipolarZ, rg::LoadOp::Clear, {{-1.0f, 0.0f, 0.0f, 0.0f}});
     out.epipolarStencil = pass.stencilWrite(out.epipolarStencil, rg::LoadOp::Clear, 0);
-    pass.execute([in, sliceEndPoints](rg::PassContext& ctx) {
-        auto desc = fullscreenPipeline(rg::spirv(ls_spirv::epipolar_coordinates_frag), ctx,
-                                       {uniformBinding(0), sampledBinding(1), sampledBinding(2)});
+    pass.execute([in, table](rg::PassContext& ctx) {
+        auto desc =
+            fullscreenPipeline(rg::spirv(ls_spirv::epipolar_coordinates_frag), ctx, table.layout());
         desc.stencilTest = true;
         desc.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_REPLACE, VK_STENCIL_OP_KEEP,
                         VK_COMPARE_OP_ALWAYS, 0xff, 0xff, 1};
-        const auto& p = in.shared->pipelines.graphics(pipelineKey("coordinates and epipolar z", ctx), desc);
+        const auto& p = in.shared->pipelines.graphics("coordinates and epipolar z", desc);
         p.bind(ctx.cmd());
         vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 1);
-        frameSet(ctx, in.constants)
-            .sampled(1, ctx.view(sliceEndPoints), ctx.layout(sliceEndPoints),
-                     in.shared->samplers.nearest())
-            .sampled(2, ctx.view(in.depth, VK_IMAGE_ASPECT_DEPTH_BIT), ctx.layout(in.depth), in.shared->samplers.nearest())
-            .push(ctx.device(), ctx.cmd(), p);
+        table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
     });
     return out;

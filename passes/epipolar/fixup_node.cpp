@@ -8,14 +8,14 @@ namespace ls {
 CompositeOutputs addFixup(rg::RenderGraph& g, const NodeInputs& in, rg::ImageRef cameraStencil,
                           const CompositeTarget& target) {
     auto pass = g.addPass("fix-up ray march", rg::PassType::Graphics);
-    declarePixelMarch(pass, in);
+    rg::BindingTable table = declarePixelMarch(pass, in);
     pass.stencilTest(cameraStencil);
-    const CompositeOutputs written = declareCompositeTarget(pass, target);
+    const CompositeOutputs written = addCompositeTarget(table, target);
     const bool addOnly = target.addOnly;
-    pass.execute([in, written, addOnly](rg::PassContext& ctx) {
+    pass.execute([in, table, written, addOnly](rg::PassContext& ctx) {
         // The cap is a setting, read per frame like the other constants.
         const auto maxSteps = static_cast<uint32_t>(in.shared->constants.epipolar2.y);
-        drawPixelMarch(ctx, in,
+        drawPixelMarch(ctx, in, table,
                        {.pipeline = "fix-up",
                         .maxSteps = maxSteps,
                         .whereStencilIsZero = true,

@@ -9,21 +9,20 @@ rg::ImageRef addMarkRayMarchSamples(rg::RenderGraph& g, const NodeInputs& in,
                                     rg::ImageRef interpolationSource,
                                     rg::ImageRef epipolarStencil) {
     auto pass = g.addPass("mark ray-marching samples", rg::PassType::Graphics);
-    pass.sampled(interpolationSource);
+    rg::BindingTable table(pass);
+    table.sampled(LS_BINDING_INTERPOLATION_SOURCE, interpolationSource,
+                  in.shared->samplers.nearest());
     const rg::ImageRef marked = pass.stencilWrite(epipolarStencil, rg::LoadOp::Load);
-    pass.execute([in, interpolationSource](rg::PassContext& ctx) {
-        rg::GraphicsPipelineDesc desc = fullscreenPipeline(
-            rg::spirv(ls_spirv::mark_ray_march_frag), ctx, {sampledBinding(0)});
+    pass.execute([in, table](rg::PassContext& ctx) {
+        rg::GraphicsPipelineDesc desc =
+            fullscreenPipeline(rg::spirv(ls_spirv::mark_ray_march_frag), ctx, table.layout());
         desc.stencilTest = true;
         desc.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_INCREMENT_AND_CLAMP, VK_STENCIL_OP_KEEP,
                         VK_COMPARE_OP_EQUAL, 0xff, 0xff, 1};
-        const auto& p = in.shared->pipelines.graphics(pipelineKey("mark ray-marching samples", ctx), desc);
+        const auto& p = in.shared->pipelines.graphics("mark ray-marching samples", desc);
         p.bind(ctx.cmd());
         vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 1);
-        rg::DescriptorPush()
-            .sampled(0, ctx.view(interpolationSource), ctx.layout(interpolationSource),
-                     in.shared->samplers.nearest())
-            .push(ctx.device(), ctx.cmd(), p);
+        table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
     });
     return marked;

@@ -66,32 +66,27 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in,
     const bool trees = i.trees.valid();
     auto pass =
         g.addPass(trees ? "ray march with min/max trees" : "ray march", rg::PassType::Graphics);
-    pass.uniformBuffer(in.constants);
-    pass.sampled(i.coordinates);
-    pass.sampled(i.epipolarZ);
-    pass.sampled(i.sliceUvFrame);
-    if (trees) {
-        pass.sampled(i.trees);
-    }
-    declareMarchInputs(pass, in);
+    const auto& sm = in.shared->samplers;
+    rg::BindingTable table = frameTable(pass, in.constants);
+    table.sampled(LS_BINDING_MARCH_COORDINATES, i.coordinates, sm.nearest())
+        .sampled(LS_BINDING_MARCH_EPIPOLAR_Z, i.epipolarZ, sm.nearest())
+        .sampled(LS_BINDING_MARCH_UV_FRAME, i.sliceUvFrame, sm.nearest())
+        .sampledIfValid(LS_BINDING_MARCH_TREES, i.trees, sm.nearest());
+    addMarchInputs(table, in);
     const rg::BufferRef counts =
-        i.stepCounts.valid() ? pass.storageBufferReadWrite(i.stepCounts) : rg::BufferRef{};
+        table.storageBufferReadWriteIfValid(LS_BINDING_MARCH_STEP_COUNTS, i.stepCounts);
     pass.stencilTest(i.epipolarStencil);
     pass.countSamples();  // the samples marched (FrameReport's PassTime::samples)
     marched =
         pass.colorAttachment(marched, i.accumulate.valid() ? rg::LoadOp::Load : rg::LoadOp::Clear);
-    pass.execute([in, i, trees, adds, counts](rg::PassContext& ctx) {
+    pass.execute([in, table, trees, adds, counts](rg::PassContext& ctx) {
         // A cube face out of view adds nothing (the first face's pass writes every sample's alpha).
         if (adds && !in.shared->inView()) return;
         ScatterSpec spec = in.shared->spec;
         spec.minMaxTrees = trees;
-        std::vector<rg::Binding> b{uniformBinding(0), sampledBinding(1), sampledBinding(2),
-                                   sampledBinding(3)};
-        if (trees) b.push_back(sampledBinding(4));
-        appendMarchBindings(b, in);
-        if (counts.valid()) b.push_back(storageBufferBinding(9));
         const RayMarchVariant variant = rayMarchVariant(spec);
-        auto desc = fullscreenPipeline(counts.valid() ? variant.counting : variant.plain, ctx, b);
+        auto desc = fullscreenPipeline(counts.valid() ? variant.counting : variant.plain, ctx,
+                                       table.layout());
         desc.specialization = spec.constants();
         desc.stencilTest = true;
         desc.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP,
@@ -102,23 +97,12 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in,
                 VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT;
         }
         const auto& p = in.shared->pipelines.graphics(
-            pipelineKey(std::string(adds ? "ray march (adding a face)" : "ray march") +
-                            (counts.valid() ? ", counting" : ""),
-                        ctx, spec.key()),
+            std::string(adds ? "ray march (adding a face)" : "ray march") +
+                (counts.valid() ? ", counting" : ""),
             desc);
         p.bind(ctx.cmd());
         vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 2);
-        const auto& sm = in.shared->samplers;
-        auto set = frameSet(ctx, in.constants);
-        set.sampled(1, ctx.view(i.coordinates), ctx.layout(i.coordinates), sm.nearest())
-            .sampled(2, ctx.view(i.epipolarZ), ctx.layout(i.epipolarZ), sm.nearest())
-            .sampled(3, ctx.view(i.sliceUvFrame), ctx.layout(i.sliceUvFrame), sm.nearest());
-        if (trees) {
-            set.sampled(4, ctx.view(i.trees), ctx.layout(i.trees), sm.nearest());
-        }
-        pushMarchInputs(set, ctx, in);
-        if (counts.valid()) set.storageBuffer(9, ctx.buffer(counts));
-        set.push(ctx.device(), ctx.cmd(), p);
+        table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
     });
     return {marched, counts};

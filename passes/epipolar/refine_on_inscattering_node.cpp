@@ -10,15 +10,15 @@ RefinedSamples addRefineOnInscattering(rg::RenderGraph& g, const NodeInputs& in,
                                        rg::ImageRef interpolationSource, rg::ImageRef marched,
                                        rg::ImageRef epipolarStencil) {
     auto pass = g.addPass("refine on in-scattering differences", rg::PassType::Graphics);
-    pass.uniformBuffer(in.constants);
-    pass.sampled(marched);
+    rg::BindingTable table = frameTable(pass, in.constants);
+    table.sampled(LS_BINDING_REFINE_MARCHED, marched, in.shared->samplers.nearest());
     RefinedSamples out;
-    out.interpolationSource = pass.storageReadWrite(interpolationSource);
+    out.interpolationSource =
+        table.storageReadWrite(LS_BINDING_REFINE_LIN_SOURCES, interpolationSource);
     out.epipolarStencil = pass.stencilWrite(epipolarStencil, rg::LoadOp::Load);
-    pass.execute([in, marched, sources = out.interpolationSource](rg::PassContext& ctx) {
-        rg::GraphicsPipelineDesc desc =
-            fullscreenPipeline(rg::spirv(ls_spirv::refine_on_inscattering_frag), ctx,
-                               {uniformBinding(0), sampledBinding(1), storageBinding(2)});
+    pass.execute([in, table](rg::PassContext& ctx) {
+        rg::GraphicsPipelineDesc desc = fullscreenPipeline(
+            rg::spirv(ls_spirv::refine_on_inscattering_frag), ctx, table.layout());
         desc.stencilTest = true;  // every valid sample: 0 != stencil
         desc.stencil = {VK_STENCIL_OP_KEEP,
                         VK_STENCIL_OP_INCREMENT_AND_CLAMP,
@@ -27,14 +27,10 @@ RefinedSamples addRefineOnInscattering(rg::RenderGraph& g, const NodeInputs& in,
                         0xff,
                         0xff,
                         0};
-        const auto& p = in.shared->pipelines.graphics(
-            pipelineKey("refine on in-scattering differences", ctx), desc);
+        const auto& p = in.shared->pipelines.graphics("refine on in-scattering differences", desc);
         p.bind(ctx.cmd());
         vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 0);
-        frameSet(ctx, in.constants)
-            .sampled(1, ctx.view(marched), ctx.layout(marched), in.shared->samplers.nearest())
-            .storage(2, ctx.view(sources))
-            .push(ctx.device(), ctx.cmd(), p);
+        table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
     });
     return out;

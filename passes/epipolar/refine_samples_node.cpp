@@ -11,22 +11,18 @@ rg::ImageRef addRefineSamples(rg::RenderGraph& g, const NodeInputs& in, const Ep
     rg::ImageRef sources = g.createImage(
         "interpolation source", rg::ImageDesc::absolute(VK_FORMAT_R16G16_UINT, s.samples, s.slices));
     auto pass = g.addPass("refine sample locations", rg::PassType::Compute);
-    pass.uniformBuffer(in.constants);
-    pass.sampled(epipolarZ);
-    sources = pass.storageWrite(sources);
-    pass.execute([in, epipolarZ, sources, s](rg::PassContext& ctx) {
+    rg::BindingTable table = frameTable(pass, in.constants);
+    table.sampled(LS_BINDING_REFINE_EPIPOLAR_Z, epipolarZ, in.shared->samplers.nearest());
+    sources = table.storageWrite(LS_BINDING_REFINE_SOURCES, sources);
+    pass.execute([in, table, s](rg::PassContext& ctx) {
         // The light type only: near a point or spot light the first section is cut geometrically.
         rg::Specialization spec;
-        spec.set(0, static_cast<int32_t>(in.shared->spec.light));
-        const auto& p = in.shared->pipelines.compute(
-            "refine sample locations L" + std::to_string(static_cast<int>(in.shared->spec.light)),
-            rg::spirv(ls_spirv::refine_samples_comp),
-            {uniformBinding(0), sampledBinding(1), storageBinding(2)}, 0, spec);
+        spec.set(LS_SPEC_LIGHT_TYPE, static_cast<int32_t>(in.shared->spec.light));
+        const auto& p = in.shared->pipelines.compute("refine sample locations",
+                                                     rg::spirv(ls_spirv::refine_samples_comp),
+                                                     table.layout(), 0, spec);
         p.bind(ctx.cmd());
-        frameSet(ctx, in.constants)
-            .sampled(1, ctx.view(epipolarZ), ctx.layout(epipolarZ), in.shared->samplers.nearest())
-            .storage(2, ctx.view(sources))
-            .push(ctx.device(), ctx.cmd(), p);
+        table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         vkCmdDispatch(ctx.cmd(), groupCount(s.samples, 128), s.slices, 1);
     });
     return sources;

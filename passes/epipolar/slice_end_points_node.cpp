@@ -8,14 +8,13 @@ rg::ImageRef addSliceEndPoints(rg::RenderGraph& g, const NodeInputs& in, const E
     const rg::ImageRef endPoints = g.createImage(
         "slice end points", rg::ImageDesc::absolute(VK_FORMAT_R32G32B32A32_SFLOAT, s.slices, 1));
     auto pass = g.addPass("slice end points", rg::PassType::Compute);
-    pass.uniformBuffer(in.constants);
-    const rg::ImageRef out = pass.storageWrite(endPoints);
-    pass.execute([in, out, s](rg::PassContext& ctx) {
+    rg::BindingTable table = frameTable(pass, in.constants);
+    const rg::ImageRef out = table.storageWrite(LS_BINDING_SLICE_END_POINTS_OUT, endPoints);
+    pass.execute([in, table, s](rg::PassContext& ctx) {
         const auto& p = in.shared->pipelines.compute(
-            "slice end points", rg::spirv(ls_spirv::slice_end_points_comp),
-            {uniformBinding(0), storageBinding(1)}, 0, {});
+            "slice end points", rg::spirv(ls_spirv::slice_end_points_comp), table.layout(), 0, {});
         p.bind(ctx.cmd());
-        frameSet(ctx, in.constants).storage(1, ctx.view(out)).push(ctx.device(), ctx.cmd(), p);
+        table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         vkCmdDispatch(ctx.cmd(), groupCount(s.slices, 64), 1, 1);
     });
     return out;

@@ -10,20 +10,16 @@ rg::ImageRef addSliceUvFrame(rg::RenderGraph& g, const NodeInputs& in, const Epi
         "slice uv origin and direction",
         rg::ImageDesc::absolute(VK_FORMAT_R32G32B32A32_SFLOAT, s.slices, 1));
     auto pass = g.addPass("slice uv origin and direction", rg::PassType::Compute);
-    pass.uniformBuffer(in.constants);
-    pass.sampled(sliceEndPoints);
-    uvFrame = pass.storageWrite(uvFrame);
-    pass.execute([in, sliceEndPoints, uvFrame, s](rg::PassContext& ctx) {
+    rg::BindingTable table = frameTable(pass, in.constants);
+    table.sampled(LS_BINDING_UV_FRAME_END_POINTS, sliceEndPoints, in.shared->samplers.nearest());
+    uvFrame = table.storageWrite(LS_BINDING_UV_FRAME_OUT, uvFrame);
+    pass.execute([in, table, s](rg::PassContext& ctx) {
         if (!in.shared->inView()) return;  // a cube face out of view: no ray reads its lines
-        const auto& p = in.shared->pipelines.compute(
-            "slice uv origin and direction", rg::spirv(ls_spirv::slice_uv_frame_comp),
-            {uniformBinding(0), sampledBinding(1), storageBinding(2)}, 0, {});
+        const auto& p = in.shared->pipelines.compute("slice uv origin and direction",
+                                                     rg::spirv(ls_spirv::slice_uv_frame_comp),
+                                                     table.layout(), 0, {});
         p.bind(ctx.cmd());
-        frameSet(ctx, in.constants)
-            .sampled(1, ctx.view(sliceEndPoints), ctx.layout(sliceEndPoints),
-                     in.shared->samplers.nearest())
-            .storage(2, ctx.view(uvFrame))
-            .push(ctx.device(), ctx.cmd(), p);
+        table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         vkCmdDispatch(ctx.cmd(), groupCount(s.slices, 64), 1, 1);
     });
     return uvFrame;

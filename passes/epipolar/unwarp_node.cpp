@@ -34,13 +34,14 @@ UnwarpOutputs addUnwarp(rg::RenderGraph& g, const NodeInputs& in, const UnwarpIn
                         const CompositeTarget& target, bool markForFixup) {
     UnwarpOutputs out;
     auto pass = g.addPass("unwarp epipolar to screen", rg::PassType::Graphics);
-    pass.uniformBuffer(in.constants);
-    pass.sampled(i.sliceEndPoints);
-    pass.sampled(i.epipolarZ);
-    pass.sampled(i.interpolated);
-    pass.sampled(in.depth, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
-    if (in.table.valid()) pass.sampled(in.table);
-    out.composited = declareCompositeTarget(pass, target);
+    const auto& sm = in.shared->samplers;
+    rg::BindingTable table = frameTable(pass, in.constants);
+    table.sampled(LS_BINDING_UNWARP_END_POINTS, i.sliceEndPoints, sm.nearest())
+        .sampled(LS_BINDING_UNWARP_EPIPOLAR_Z, i.epipolarZ, sm.nearest())
+        .sampled(LS_BINDING_UNWARP_INSCATTER, i.interpolated, sm.nearest())
+        .sampled(LS_BINDING_UNWARP_DEPTH, in.depth, sm.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
+        .sampledIfValid(LS_BINDING_POINT_TABLE, in.table, sm.nearest());
+    out.composited = addCompositeTarget(table, target);
     if (markForFixup) {
         const rg::ImageRef stencil =
             g.createImage("camera depth-stencil", rg::ImageDesc::screen(in.depthStencil));
@@ -50,13 +51,10 @@ UnwarpOutputs addUnwarp(rg::RenderGraph& g, const NodeInputs& in, const UnwarpIn
     }
     const CompositeOutputs written = out.composited;
     const bool addOnly = target.addOnly;
-    pass.execute([in, i, written, markForFixup, addOnly](rg::PassContext& ctx) {
+    pass.execute([in, table, written, markForFixup, addOnly](rg::PassContext& ctx) {
         const ScatterSpec& spec = in.shared->spec;
-        std::vector<rg::Binding> b{uniformBinding(0), sampledBinding(1), sampledBinding(2),
-                                   sampledBinding(3), sampledBinding(4)};
-        if (in.table.valid()) b.push_back(sampledBinding(7));
-        appendCompositeBindings(b, written);
-        auto desc = fullscreenPipeline((in.table.valid() ? kTable : kDirectional).pick(ctx, written), ctx, b);
+        auto desc = fullscreenPipeline(
+            (in.table.valid() ? kTable : kDirectional).pick(ctx, written), ctx, table.layout());
         desc.pushConstantBytes = 8;
         desc.specialization = spec.constants();
         if (markForFixup) {
@@ -64,20 +62,10 @@ UnwarpOutputs addUnwarp(rg::RenderGraph& g, const NodeInputs& in, const UnwarpIn
             desc.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_REPLACE, VK_STENCIL_OP_KEEP,
                             VK_COMPARE_OP_ALWAYS, 0xff, 0xff, 1};
         }
-        const std::string variant = spec.key() + "/" + compositeKey(ctx, written) +
-                                    (markForFixup ? "/marks" : "");
-        const auto& p = in.shared->pipelines.graphics(pipelineKey("unwarp", ctx, variant), desc);
-        const auto& sm = in.shared->samplers;
+        const auto& p = in.shared->pipelines.graphics("unwarp", desc);
         p.bind(ctx.cmd());
         if (markForFixup) vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 1);
-        auto set = frameSet(ctx, in.constants);
-        set.sampled(1, ctx.view(i.sliceEndPoints), ctx.layout(i.sliceEndPoints), sm.nearest())
-            .sampled(2, ctx.view(i.epipolarZ), ctx.layout(i.epipolarZ), sm.nearest())
-            .sampled(3, ctx.view(i.interpolated), ctx.layout(i.interpolated), sm.nearest())
-            .sampled(4, ctx.view(in.depth, VK_IMAGE_ASPECT_DEPTH_BIT), ctx.layout(in.depth), sm.nearest());
-        if (in.table.valid()) set.sampled(7, ctx.view(in.table), ctx.layout(in.table), sm.nearest());
-        pushCompositeTarget(set, ctx, written);
-        set.push(ctx.device(), ctx.cmd(), p);
+        table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         const int32_t push[2] = {markForFixup ? 1 : 0, addOnly ? 1 : 0};
         p.push(ctx.cmd(), push);
         vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "rendergraph/binding_table.h"
 #include "rendergraph/pass_context.h"
 #include "rendergraph/pipeline.h"
 #include "rendergraph/render_graph.h"
@@ -19,20 +20,14 @@ struct CompositeTarget {
     bool addOnly = false;       // a frame's later light: add Lin, the first applied the extinction
 };
 
-// Declares the pass's read-modify-write of the target's images; returns their new versions.
-CompositeOutputs declareCompositeTarget(rg::PassBuilder& pass, const CompositeTarget& target);
-
-// Bindings 10 (color) and 11 (the output, when there is one) of composite_into.glsl.
-void appendCompositeBindings(std::vector<rg::Binding>& bindings, const CompositeOutputs& written);
-void pushCompositeTarget(rg::DescriptorPush& set, const rg::PassContext& ctx,
-                         const CompositeOutputs& written);
+// The pass's rows for the target's read-modify-written images (LS_BINDING_ENGINE_COLOR and, when
+// there is one, LS_BINDING_LIN_OUT); returns their new versions.
+CompositeOutputs addCompositeTarget(rg::BindingTable& table, const CompositeTarget& target);
 
 // A shader built for each color format, with and without the output image.
 struct CompositeVariants {
     rg::ShaderCode rgba16f, rgba16fOut, rgba32f, rgba32fOut;
     rg::ShaderCode pick(const rg::PassContext& ctx, const CompositeOutputs& written) const;
 };
-// The variant, for a pipeline's key.
-std::string compositeKey(const rg::PassContext& ctx, const CompositeOutputs& written);
 
 }  // namespace ls

@@ -75,20 +75,20 @@ const CompositeVariants& fixupShaders(const ScatterSpec& spec) {
 
 }  // namespace
 
-void declarePixelMarch(rg::PassBuilder& pass, const NodeInputs& in) {
-    pass.uniformBuffer(in.constants);
-    pass.sampled(in.depth, 0, VK_IMAGE_ASPECT_DEPTH_BIT);
-    declareMarchInputs(pass, in);
+rg::BindingTable declarePixelMarch(rg::PassBuilder& pass, const NodeInputs& in) {
+    rg::BindingTable table = frameTable(pass, in.constants);
+    table.sampled(LS_BINDING_DEPTH, in.depth, in.shared->samplers.nearest(),
+                  VK_IMAGE_ASPECT_DEPTH_BIT);
+    addMarchInputs(table, in);
+    return table;
 }
 
-void drawPixelMarch(rg::PassContext& ctx, const NodeInputs& in,
+void drawPixelMarch(rg::PassContext& ctx, const NodeInputs& in, const rg::BindingTable& table,
                     const PixelMarchDraw& draw) {
     const ScatterSpec& spec = in.shared->spec;
-    std::vector<rg::Binding> b{uniformBinding(0), sampledBinding(1)};
-    appendMarchBindings(b, in);
-    if (draw.composite) appendCompositeBindings(b, *draw.composite);
-    auto desc = fullscreenPipeline(draw.composite ? fixupShaders(spec).pick(ctx, *draw.composite) : pixelMarchShader(spec),
-                                   ctx, b);
+    auto desc = fullscreenPipeline(
+        draw.composite ? fixupShaders(spec).pick(ctx, *draw.composite) : pixelMarchShader(spec),
+        ctx, table.layout());
     desc.pushConstantBytes = draw.composite ? 8 : 4;
     desc.specialization = spec.constants();
     if (draw.whereStencilIsZero) {
@@ -96,18 +96,11 @@ void drawPixelMarch(rg::PassContext& ctx, const NodeInputs& in,
         desc.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP,
                         VK_COMPARE_OP_EQUAL, 0xff, 0, 0};
     }
-    const auto& p =
-        in.shared->pipelines.graphics(
-            pipelineKey(draw.pipeline, ctx, spec.key() + (draw.composite ? "/" + compositeKey(ctx, *draw.composite) : "")),
-            desc);
+    const auto& p = in.shared->pipelines.graphics(draw.pipeline, desc);
     p.bind(ctx.cmd());
     if (draw.whereStencilIsZero)
         vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 0);
-    auto set = frameSet(ctx, in.constants);
-    set.sampled(1, ctx.view(in.depth, VK_IMAGE_ASPECT_DEPTH_BIT), ctx.layout(in.depth), in.shared->samplers.nearest());
-    pushMarchInputs(set, ctx, in);
-    if (draw.composite) pushCompositeTarget(set, ctx, *draw.composite);
-    set.push(ctx.device(), ctx.cmd(), p);
+    table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
     if (draw.composite) {
         const uint32_t push[2] = {draw.maxSteps, draw.addOnly ? 1u : 0u};
         p.push(ctx.cmd(), push);

@@ -4,26 +4,29 @@
 // epipolar fix-up over the pixels its unwarp left unmarked in a stencil, with an optional step cap. The
 // caller adds the pass, its target and any stencil it tests; these add the march's reads and draw.
 #include "node_inputs.h"
-#include "shared_nodes.h"
+#include "rendergraph/binding_table.h"
 #include "rendergraph/pass_context.h"
 #include "rendergraph/render_graph.h"
+#include "shared_nodes.h"
 
 namespace ls {
 
-// The march's reads: the frame constants, the engine's depth and the light's images.
-void declarePixelMarch(rg::PassBuilder& pass, const NodeInputs& in);
+// The march's reads: the frame constants, the engine's depth and the light's images. The caller
+// adds any rows of its own (the composite target) to the table before drawing with it.
+rg::BindingTable declarePixelMarch(rg::PassBuilder& pass, const NodeInputs& in);
 
 struct PixelMarchDraw {
-    const char* pipeline = "";       // names the pipeline, with the light's variant and the targets
+    const char* pipeline = "";       // names the pipeline
     uint32_t maxSteps = 0;           // steps per ray at most; 0: one per texel crossed
     bool whereStencilIsZero = false;  // draw only where the pass's stencil attachment holds 0
-    // Composite into these (declared by the pass with declareCompositeTarget) instead of writing
+    // Composite into these (rows of the pass's table, addCompositeTarget) instead of writing
     // Lin to the pass's color attachment: the epipolar fix-up.
     const CompositeOutputs* composite = nullptr;
     bool addOnly = false;  // with composite: a frame's later light
 };
 
 // Records the march as one full-screen draw of the pass.
-void drawPixelMarch(rg::PassContext& ctx, const NodeInputs& in, const PixelMarchDraw& draw);
+void drawPixelMarch(rg::PassContext& ctx, const NodeInputs& in, const rg::BindingTable& table,
+                    const PixelMarchDraw& draw);
 
 }  // namespace ls

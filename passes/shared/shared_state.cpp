@@ -1,41 +1,38 @@
 #include "shared_state.h"
 
+#include "shaders/shared/bindings.h"
+
 namespace ls {
 
 rg::Specialization ScatterSpec::constants() const {
     rg::Specialization s;
-    s.set(0, static_cast<int32_t>(light));
-    s.set(1, static_cast<int32_t>(isotropicMie ? 1 : hazyMie ? 2 : 0));
-    s.set(3, lightColor);
-    s.set(4, bilinearShadow);
-    s.set(5, simplifiedModel);
+    s.set(LS_SPEC_LIGHT_TYPE, static_cast<int32_t>(light));
+    s.set(LS_SPEC_MIE_PHASE, static_cast<int32_t>(isotropicMie ? 1 : hazyMie ? 2 : 0));
+    s.set(LS_SPEC_LIGHT_COLOR, lightColor);
+    s.set(LS_SPEC_BILINEAR_SHADOW, bilinearShadow);
+    s.set(LS_SPEC_SIMPLIFIED_MODEL, simplifiedModel);
     return s;
 }
 
-std::string ScatterSpec::key() const {
-    return "L" + std::to_string(static_cast<int>(light)) +
-           (isotropicMie ? "i"
-            : hazyMie    ? "h"
-                         : "c") +
-           (minMaxTrees ? "T" : "t") + (lightColor ? "C" : "c") + (bilinearShadow ? "B" : "b") +
-           (simplifiedModel ? "+simplified" : "") + (cubeShadow ? "+cube" : "");
-}
-
-const rg::Pipeline& PipelineLibrary::compute(const std::string& key, rg::ShaderCode code,
+const rg::Pipeline& PipelineLibrary::compute(const std::string& name, rg::ShaderCode code,
                                              const std::vector<rg::Binding>& bindings,
                                              uint32_t pushBytes, const rg::Specialization& spec) {
+    rg::PipelineKey key = rg::pipelineKey(code, bindings, pushBytes, spec);
     auto it = pipelines_.find(key);
     if (it == pipelines_.end())
-        it = pipelines_.emplace(key, rg::Pipeline::compute(device_, key, code, bindings, pushBytes, spec))
+        it = pipelines_
+                 .emplace(std::move(key),
+                          rg::Pipeline::compute(device_, name, code, bindings, pushBytes, spec))
                  .first;
     return it->second;
 }
 
-const rg::Pipeline& PipelineLibrary::graphics(const std::string& key,
+const rg::Pipeline& PipelineLibrary::graphics(const std::string& name,
                                               const rg::GraphicsPipelineDesc& desc) {
+    rg::PipelineKey key = rg::pipelineKey(desc);
     auto it = pipelines_.find(key);
     if (it == pipelines_.end())
-        it = pipelines_.emplace(key, rg::Pipeline::graphics(device_, key, desc)).first;
+        it = pipelines_.emplace(std::move(key), rg::Pipeline::graphics(device_, name, desc)).first;
     return it->second;
 }
 

@@ -10,6 +10,7 @@
 
 #include "frame_constants.h"
 #include "rendergraph/pipeline.h"
+#include "rendergraph/pipeline_key.h"
 #include "scattering_params.h"
 
 namespace ls {
@@ -26,21 +27,23 @@ struct ScatterSpec {
     bool simplifiedModel = false;  // seed 004's light model (Settings::lightModel)
     bool cubeShadow = false;       // a point light's six-face shadow map (a 2D array of 6 layers)
     rg::Specialization constants() const;
-    std::string key() const;
 };
 
+// The pipelines built so far, keyed by their whole description (rendergraph/pipeline_key.h): a
+// pass asks for the pipeline it describes, and any field that differs gives another pipeline. The
+// name labels the pipeline (debug names, errors) and is no part of the key.
 class PipelineLibrary {
 public:
     explicit PipelineLibrary(const rg::Device& device) : device_(device) {}
-    const rg::Pipeline& compute(const std::string& key, rg::ShaderCode code,
+    const rg::Pipeline& compute(const std::string& name, rg::ShaderCode code,
                                 const std::vector<rg::Binding>& bindings, uint32_t pushBytes,
                                 const rg::Specialization& spec);
-    const rg::Pipeline& graphics(const std::string& key, const rg::GraphicsPipelineDesc& desc);
+    const rg::Pipeline& graphics(const std::string& name, const rg::GraphicsPipelineDesc& desc);
     size_t size() const { return pipelines_.size(); }
 
 private:
     const rg::Device& device_;
-    std::map<std::string, rg::Pipeline> pipelines_;
+    std::map<rg::PipelineKey, rg::Pipeline> pipelines_;
 };
 
 // What every light's state shares: the samplers and the pipelines built so far.

@@ -11,7 +11,7 @@
 #include "camera.glsl"
 #include "light_volume.glsl"
 #include "simplified.glsl"
-layout(binding = 1) uniform sampler2D depthBuffer;  // the engine's depth
+layout(binding = LS_BINDING_DEPTH) uniform sampler2D depthBuffer;  // the engine's depth
 layout(location = 0) out vec4 outInscatter;
 
 void main() {

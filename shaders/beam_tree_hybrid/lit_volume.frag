@@ -7,12 +7,13 @@
 // the lit intervals wherever they are; a float target holds the negative partial sums, so seed
 // 004's numOverflow is not needed. A camera inside the lit volume sees only exits: E(0, b).
 // With kSimplifiedModel, E is seed 004's own closed form (2.17) of its simplified light model.
-layout(binding = 7) uniform sampler2D pointTable;
+#include "bindings.h"
+layout(binding = LS_BINDING_POINT_TABLE) uniform sampler2D pointTable;
 #include "camera.glsl"
 #include "integrate.glsl"
 #include "light_volume.glsl"
 #include "simplified.glsl"
-layout(binding = 1) uniform sampler2D depthBuffer;  // the engine's depth
+layout(binding = LS_BINDING_DEPTH) uniform sampler2D depthBuffer;  // the engine's depth
 
 layout(location = 0) in vec3 worldPos;
 layout(location = 1) flat in int plane;

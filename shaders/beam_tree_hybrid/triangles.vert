@@ -4,13 +4,13 @@
 // uncertain parts of sampling planes), pulled from a storage buffer (the draw's first vertex says where).
 #include "frame.glsl"
 
-layout(std430, binding = 3) readonly buffer Triangles { vec4 points[]; };
+layout(std430, binding = LS_BINDING_BEAM_TRIANGLES) readonly buffer Triangles { vec4 points[]; };
 // The lit pyramids (drawn without a depth test): clipped by the sides of the view only. Their faces
 // reach past the far plane (a point light's backplate cube encloses every view ray's end, at
 // |L - C| + twice the view's reach), and a face clipped there would drop its E(0, S) from every
 // pixel behind it; a depth of half the clip range keeps them, and the side planes still cut away
 // whatever lies behind the camera.
-layout(constant_id = 20) const bool kUnclippedDepth = false;
+layout(constant_id = LS_SPEC_UNCLIPPED_DEPTH) const bool kUnclippedDepth = false;
 layout(location = 0) out vec3 worldPos;
 layout(location = 1) flat out int plane;
 

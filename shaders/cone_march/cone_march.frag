@@ -9,13 +9,13 @@
 #include "camera.glsl"
 #include "light_volume.glsl"
 #include "math.glsl"
-layout(binding = 1) uniform sampler2D depthBuffer;  // the engine's depth
+layout(binding = LS_BINDING_DEPTH) uniform sampler2D depthBuffer;  // the engine's depth
 #if LS_SHADOW_MAP
-layout(binding = 6) uniform sampler2D shadowMap;
+layout(binding = LS_BINDING_SHADOW_MAP) uniform sampler2D shadowMap;
 #include "shadow.glsl"
 #endif
 #if LS_LIGHT_COLOR
-layout(binding = 8) uniform sampler2D lightColorMap;
+layout(binding = LS_BINDING_LIGHT_COLOR) uniform sampler2D lightColorMap;
 #endif
 #include "light_color.glsl"
 #include "light_at.glsl"
@@ -23,9 +23,9 @@ layout(location = 0) out vec4 outInscatter;
 
 // Options are specialisation constants: branching on push constants alone makes lavapipe (Mesa
 // 22.3) recompile the shader at every draw (docs/reliability.md).
-layout(constant_id = 10) const int kSamples = 32;
-layout(constant_id = 11) const bool kConeLimited = true;
-layout(constant_id = 12) const bool kJitter = false;
+layout(constant_id = LS_SPEC_CONE_SAMPLES) const int kSamples = 32;
+layout(constant_id = LS_SPEC_CONE_LIMITED) const bool kConeLimited = true;
+layout(constant_id = LS_SPEC_CONE_JITTER) const bool kJitter = false;
 
 // Interleaved gradient noise (Jimenez 2014): a per-pixel offset in [0, 1) whose error looks like
 // fine noise instead of the bands a fixed offset leaves.

@@ -1,8 +1,10 @@
 #version 450
+#extension GL_GOOGLE_include_directive : require
+#include "bindings.h"
 // In-scattering (or shadowed fraction) of every valid sample, linearly interpolated between its two
 // ray-marching sources.
-layout(binding = 0) uniform usampler2D interpolationSource;
-layout(binding = 1) uniform sampler2D marched;
+layout(binding = LS_BINDING_INTERPOLATION_SOURCE) uniform usampler2D interpolationSource;
+layout(binding = LS_BINDING_INTERPOLATE_MARCHED) uniform sampler2D marched;
 layout(location = 0) out vec4 outInscatter;
 
 void main() {

@@ -1,7 +1,9 @@
 #version 450
+#extension GL_GOOGLE_include_directive : require
+#include "bindings.h"
 // Passes (and so increments the stencil of) the samples that are their own interpolation source:
 // the ray-marching samples.
-layout(binding = 0) uniform usampler2D interpolationSource;
+layout(binding = LS_BINDING_INTERPOLATION_SOURCE) uniform usampler2D interpolationSource;
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);

@@ -7,12 +7,12 @@
 #include "frame.glsl"
 layout(local_size_x = 64) in;
 #if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
-layout(binding = 1) uniform sampler2DArray shadowMap;  // a point light's cube: the face cubeFace.x
+layout(binding = LS_BINDING_TREE_SHADOW_MAP) uniform sampler2DArray shadowMap;  // a point light's cube: the face cubeFace.x
 #else
-layout(binding = 1) uniform sampler2D shadowMap;
+layout(binding = LS_BINDING_TREE_SHADOW_MAP) uniform sampler2D shadowMap;
 #endif
-layout(binding = 2) uniform sampler2D sliceUvFrame;
-layout(binding = 3, rg16f) uniform writeonly image2D level1;
+layout(binding = LS_BINDING_TREE_UV_FRAME) uniform sampler2D sliceUvFrame;
+layout(binding = LS_BINDING_TREE_FIRST_LEVEL, rg16f) uniform writeonly image2D level1;
 #include "shadow.glsl"
 
 void main() {

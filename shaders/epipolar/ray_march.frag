@@ -12,22 +12,22 @@
 // row of a storage buffer (kCount* below); without it the variant has no buffer and no atomics.
 #include "camera.glsl"
 #include "min_max_tree.glsl"
-layout(binding = 1) uniform sampler2D coordinates;
-layout(binding = 2) uniform sampler2D epipolarZ;
-layout(binding = 3) uniform sampler2D sliceUvFrame;
+layout(binding = LS_BINDING_MARCH_COORDINATES) uniform sampler2D coordinates;
+layout(binding = LS_BINDING_MARCH_EPIPOLAR_Z) uniform sampler2D epipolarZ;
+layout(binding = LS_BINDING_MARCH_UV_FRAME) uniform sampler2D sliceUvFrame;
 #if LS_TREES
-layout(binding = 4) uniform sampler2D trees;
+layout(binding = LS_BINDING_MARCH_TREES) uniform sampler2D trees;
 #endif
 #if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
-layout(binding = 6) uniform sampler2DArray shadowMap;
+layout(binding = LS_BINDING_SHADOW_MAP) uniform sampler2DArray shadowMap;
 #else
-layout(binding = 6) uniform sampler2D shadowMap;
+layout(binding = LS_BINDING_SHADOW_MAP) uniform sampler2D shadowMap;
 #endif
 #if LS_NEEDS_TABLE
-layout(binding = 7) uniform sampler2D pointTable;
+layout(binding = LS_BINDING_POINT_TABLE) uniform sampler2D pointTable;
 #endif
 #if LS_LIGHT_COLOR
-layout(binding = 8) uniform sampler2D lightColorMap;
+layout(binding = LS_BINDING_LIGHT_COLOR) uniform sampler2D lightColorMap;
 #endif
 #if defined(LS_COUNT_STEPS) && LS_COUNT_STEPS
 // One row of kCountStride counters per slice: a row's sums stay far below 2^32 at any profile,
@@ -43,7 +43,7 @@ const int kCountStride = 8;
 // would run (and count), not only the ray-marching samples'. The plain variant stores nothing, so
 // the stencil test may run first there anyway.
 layout(early_fragment_tests) in;
-layout(std430, binding = 9) buffer StepCounts { uint stepCounts[]; };
+layout(std430, binding = LS_BINDING_MARCH_STEP_COUNTS) buffer StepCounts { uint stepCounts[]; };
 uint countedLookups = 0u;
 #define LS_COUNT_LOOKUP() ++countedLookups
 #define COUNT(x) x

@@ -12,8 +12,8 @@
 // extra march instead of log2(initial step) mark-and-march rounds, and every sample of the run
 // then reads its own value, so the edge is where the march puts it.
 #include "frame.glsl"
-layout(binding = 1) uniform sampler2D marched;
-layout(binding = 2, rg16ui) uniform uimage2D interpolationSource;
+layout(binding = LS_BINDING_REFINE_MARCHED) uniform sampler2D marched;
+layout(binding = LS_BINDING_REFINE_LIN_SOURCES, rg16ui) uniform uimage2D interpolationSource;
 
 // Per channel, relative to the larger of the two: a shadow edge changes every channel of the
 // shadowed fraction alike, a light-color texture can change one alone. A source that carries no

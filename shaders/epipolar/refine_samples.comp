@@ -8,8 +8,8 @@
 // (below).
 #include "frame.glsl"
 layout(local_size_x = 128) in;
-layout(binding = 1) uniform sampler2D epipolarZ;
-layout(binding = 2, rg16ui) uniform writeonly uimage2D interpolationSource;
+layout(binding = LS_BINDING_REFINE_EPIPOLAR_Z) uniform sampler2D epipolarZ;
+layout(binding = LS_BINDING_REFINE_SOURCES, rg16ui) uniform writeonly uimage2D interpolationSource;
 
 shared uint breaks[4];  // bit k: break between local samples k and k+1
 

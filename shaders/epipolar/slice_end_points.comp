@@ -5,7 +5,7 @@
 // sample stretched so that samples fall 1:1 on pixels (those past the screen are not valid).
 #include "epipolar_geometry.glsl"
 layout(local_size_x = 64) in;
-layout(binding = 1, rgba32f) uniform writeonly image2D sliceEndPoints;
+layout(binding = LS_BINDING_SLICE_END_POINTS_OUT, rgba32f) uniform writeonly image2D sliceEndPoints;
 
 void main() {
     int slice = int(gl_GlobalInvocationID.x);

@@ -10,8 +10,8 @@
 #include "epipolar_geometry.glsl"
 #include "camera.glsl"
 layout(local_size_x = 64) in;
-layout(binding = 1) uniform sampler2D sliceEndPoints;
-layout(binding = 2, rgba32f) uniform writeonly image2D sliceUvFrame;
+layout(binding = LS_BINDING_UV_FRAME_END_POINTS) uniform sampler2D sliceEndPoints;
+layout(binding = LS_BINDING_UV_FRAME_OUT, rgba32f) uniform writeonly image2D sliceUvFrame;
 
 void main() {
     int slice = int(gl_GlobalInvocationID.x);

@@ -11,12 +11,12 @@
 // form) scales it back: the glow around a light, which no sparse sampling resolves, stays exact.
 #include "epipolar_geometry.glsl"
 #include "camera.glsl"
-layout(binding = 1) uniform sampler2D sliceEndPoints;
-layout(binding = 2) uniform sampler2D epipolarZ;
-layout(binding = 3) uniform sampler2D inscatter;
-layout(binding = 4) uniform sampler2D depthBuffer;  // the engine's depth
+layout(binding = LS_BINDING_UNWARP_END_POINTS) uniform sampler2D sliceEndPoints;
+layout(binding = LS_BINDING_UNWARP_EPIPOLAR_Z) uniform sampler2D epipolarZ;
+layout(binding = LS_BINDING_UNWARP_INSCATTER) uniform sampler2D inscatter;
+layout(binding = LS_BINDING_UNWARP_DEPTH) uniform sampler2D depthBuffer;  // the engine's depth
 #if LS_NEEDS_TABLE
-layout(binding = 7) uniform sampler2D pointTable;
+layout(binding = LS_BINDING_POINT_TABLE) uniform sampler2D pointTable;
 #endif
 #include "integrate.glsl"
 #include "light_volume.glsl"

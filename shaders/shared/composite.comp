@@ -7,9 +7,9 @@
 #include "camera.glsl"
 #include "composite_into.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 1) uniform sampler2D depthBuffer;  // the engine's depth
+layout(binding = LS_BINDING_DEPTH) uniform sampler2D depthBuffer;  // the engine's depth
 #if LS_WITH_LIN
-layout(binding = 3) uniform sampler2D inscatter;
+layout(binding = LS_BINDING_COMPOSITE_LIN) uniform sampler2D inscatter;
 #endif
 
 void main() {

@@ -8,12 +8,12 @@
 #include "frame.glsl"
 
 #if LS_COLOR_RGBA32F
-layout(binding = 10, rgba32f) uniform image2D engineColor;
+layout(binding = LS_BINDING_ENGINE_COLOR, rgba32f) uniform image2D engineColor;
 #else
-layout(binding = 10, rgba16f) uniform image2D engineColor;
+layout(binding = LS_BINDING_ENGINE_COLOR, rgba16f) uniform image2D engineColor;
 #endif
 #if LS_WITH_OUTPUT
-layout(binding = 11, rgba32f) uniform image2D inscatterOut;
+layout(binding = LS_BINDING_LIN_OUT, rgba32f) uniform image2D inscatterOut;
 #endif
 
 void compositeInto(ivec2 p, vec3 lin, float S, bool addOnly) {

@@ -5,17 +5,17 @@
 // with); the epipolar fix-up on the pixels its unwarp could not serve, with an optional step cap,
 // compositing what it marches into the engine's color (LS_COMPOSITE) as the unwarp does.
 #include "camera.glsl"
-layout(binding = 1) uniform sampler2D depthBuffer;  // the engine's depth
+layout(binding = LS_BINDING_DEPTH) uniform sampler2D depthBuffer;  // the engine's depth
 #if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
-layout(binding = 6) uniform sampler2DArray shadowMap;  // a point light's six cube faces
+layout(binding = LS_BINDING_SHADOW_MAP) uniform sampler2DArray shadowMap;  // a point light's six cube faces
 #else
-layout(binding = 6) uniform sampler2D shadowMap;
+layout(binding = LS_BINDING_SHADOW_MAP) uniform sampler2D shadowMap;
 #endif
 #if LS_NEEDS_TABLE
-layout(binding = 7) uniform sampler2D pointTable;
+layout(binding = LS_BINDING_POINT_TABLE) uniform sampler2D pointTable;
 #endif
 #if LS_LIGHT_COLOR
-layout(binding = 8) uniform sampler2D lightColorMap;
+layout(binding = LS_BINDING_LIGHT_COLOR) uniform sampler2D lightColorMap;
 #endif
 #include "march.glsl"
 #if defined(LS_COMPOSITE) && LS_COMPOSITE

@@ -7,7 +7,7 @@
 // integrated with 8-point Gauss-Legendre in phi, where ds / (h^2 + s^2 + r0^2) = dphi / hEff.
 #include "math.glsl"
 layout(local_size_x = 64) in;
-layout(binding = 1, rgba32f) uniform writeonly image2D table;
+layout(binding = LS_BINDING_POINT_TABLE_OUT, rgba32f) uniform writeonly image2D table;
 
 const float GL_X[4] = float[](0.1834346425, 0.5255324099, 0.7966664774, 0.9602898565);
 const float GL_W[4] = float[](0.3626837834, 0.3137066459, 0.2223810345, 0.1012285363);

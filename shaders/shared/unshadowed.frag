@@ -3,9 +3,9 @@
 // Lights without a shadow map: Lin in closed form per pixel (Hoffman-Preetham for a directional
 // light, the seed's table for point and spot lights, the spot clipped to its cone and range).
 #include "camera.glsl"
-layout(binding = 1) uniform sampler2D depthBuffer;  // the engine's depth
+layout(binding = LS_BINDING_DEPTH) uniform sampler2D depthBuffer;  // the engine's depth
 #if LS_NEEDS_TABLE
-layout(binding = 7) uniform sampler2D pointTable;
+layout(binding = LS_BINDING_POINT_TABLE) uniform sampler2D pointTable;
 #endif
 #include "integrate.glsl"
 #include "light_volume.glsl"

@@ -12,22 +12,22 @@
 #include "math.glsl"
 #include "slice_push.glsl"
 #if LS_SHADOW_MAP
-layout(binding = 6) uniform sampler2D shadowMap;
+layout(binding = LS_BINDING_SHADOW_MAP) uniform sampler2D shadowMap;
 #include "shadow.glsl"
 #endif
 #if LS_LIGHT_COLOR
-layout(binding = 8) uniform sampler2D lightColorMap;
+layout(binding = LS_BINDING_LIGHT_COLOR) uniform sampler2D lightColorMap;
 #endif
 #include "light_color.glsl"
 #include "light_at.glsl"
 #if LS_NOISE
-layout(binding = 9) uniform sampler2D noiseMap;  // repeating
+layout(binding = LS_BINDING_NOISE) uniform sampler2D noiseMap;  // repeating
 #endif
 
-layout(constant_id = 10) const bool kChannels = false;
+layout(constant_id = LS_SPEC_PLANES_CHANNELS) const bool kChannels = false;
 // 8-bit target: round each plane's share to the target's grid up or down at random, in proportion
 // (stochastic rounding), so that shares below half a step add up on average instead of vanishing.
-layout(constant_id = 11) const bool kDither = false;
+layout(constant_id = LS_SPEC_PLANES_DITHER) const bool kDither = false;
 
 layout(location = 0) in vec3 worldPos;
 layout(location = 1) flat in int plane;

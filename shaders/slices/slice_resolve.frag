@@ -6,12 +6,12 @@
 // reaches everywhere, and outside the shadow map's box nothing shadows it.
 #include "camera.glsl"
 #include "integrate.glsl"
-layout(binding = 1) uniform sampler2D depthBuffer;  // the engine's depth
-layout(binding = 2) uniform sampler2D planeSum;  // linear, clamped
+layout(binding = LS_BINDING_DEPTH) uniform sampler2D depthBuffer;  // the engine's depth
+layout(binding = LS_BINDING_PLANE_SUM) uniform sampler2D planeSum;  // linear, clamped
 
-layout(constant_id = 10) const bool kChannels = false;
-layout(constant_id = 11) const int kBlurRadius = 0;
-layout(constant_id = 12) const bool kClosedFormOutsideSlab = false;
+layout(constant_id = LS_SPEC_RESOLVE_CHANNELS) const bool kChannels = false;
+layout(constant_id = LS_SPEC_RESOLVE_BLUR_RADIUS) const int kBlurRadius = 0;
+layout(constant_id = LS_SPEC_RESOLVE_CLOSED_FORM_OUTSIDE_SLAB) const bool kClosedFormOutsideSlab = false;
 
 layout(push_constant) uniform ResolvePush {
     vec4 tint;  // rgb: Lin per unit of the channels' sum (the light's and medium's color x range)

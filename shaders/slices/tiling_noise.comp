@@ -1,9 +1,11 @@
 #version 450
+#extension GL_GOOGLE_include_directive : require
+#include "bindings.h"
 // The plugin's own tiling noise for seed 002's density noise: two independent layers (red, green)
 // of four-octave value noise whose lattices wrap at the image's edge, so that the image repeats
 // without a seam. Each layer is rescaled to mean 1/2 over [0, 1].
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 0, rg8) uniform writeonly image2D noiseOut;
+layout(binding = LS_BINDING_NOISE_OUT, rg8) uniform writeonly image2D noiseOut;
 
 float hash(uvec2 p, uint seed) {
     uint h = p.x * 0x8da6b343u ^ p.y * 0xd8163841u ^ seed * 0xcb1ab31fu;
