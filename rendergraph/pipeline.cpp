@@ -320,6 +320,7 @@ Samplers::Samplers(const Device& device) : device_(device.device()) {
 }
 
 Samplers::~Samplers() {
+    if (!device_) return;
     vkDestroySampler(device_, nearest_, nullptr);
     vkDestroySampler(device_, linear_, nullptr);
     vkDestroySampler(device_, linearRepeat_, nullptr);

@@ -136,6 +136,9 @@ private:
 class Samplers {
 public:
     explicit Samplers(const Device& device);
+    // None at all (null handles): for a graph that is declared and compiled, never recorded
+    // (a budget without a device).
+    Samplers() = default;
     ~Samplers();
     Samplers(const Samplers&) = delete;
     Samplers& operator=(const Samplers&) = delete;
@@ -144,7 +147,7 @@ public:
     VkSampler linearRepeat() const { return linearRepeat_; }
 
 private:
-    VkDevice device_;
+    VkDevice device_ = VK_NULL_HANDLE;
     VkSampler nearest_ = VK_NULL_HANDLE;
     VkSampler linear_ = VK_NULL_HANDLE;
     VkSampler linearRepeat_ = VK_NULL_HANDLE;

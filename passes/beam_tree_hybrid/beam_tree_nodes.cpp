@@ -92,7 +92,7 @@ rg::BindingTable declarePlaneReads(rg::PassBuilder& pass, const Shared& shared,
                                    rg::BufferRef constants, rg::BufferRef triangles,
                                    rg::ImageRef depth, rg::ImageRef shadowMap,
                                    rg::ImageRef lightColor) {
-    const auto& s = shared->samplers;
+    const auto& s = samplersOf(shared);
     rg::BindingTable table(pass);
     table.uniform(LS_BINDING_FRAME, constants, kVertexAndFragment)
         .storageBufferRead(LS_BINDING_BEAM_TRIANGLES, triangles,
@@ -112,7 +112,7 @@ rg::ImageRef addBeamTreeHybrid(rg::RenderGraph& graph, const Shared& shared, Bea
                                          rg::ImageDesc::screen(VK_FORMAT_R32G32B32A32_SFLOAT));
     {
         auto pass = graph.addPass("lit pyramids in closed form (seed 004)", rg::PassType::Graphics);
-        const auto& s = shared->samplers;
+        const auto& s = samplersOf(shared);
         rg::BindingTable table(pass);
         table.uniform(LS_BINDING_FRAME, in.constants, kVertexAndFragment)
             .storageBufferRead(LS_BINDING_BEAM_TRIANGLES, triangles,

@@ -31,7 +31,7 @@ rg::ImageRef addConeMarch(rg::RenderGraph& graph, const Shared& shared, const Co
          .depth = in.depth,
          .rows =
              [in, shared](rg::BindingTable& table) {
-                 const auto& s = shared->samplers;
+                 const auto& s = samplersOf(shared);
                  table
                      .sampledIfValid(LS_BINDING_SHADOW_MAP, in.shadowMap, s.nearest(),
                                      VK_IMAGE_ASPECT_DEPTH_BIT)

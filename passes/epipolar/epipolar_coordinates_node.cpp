@@ -14,7 +14,7 @@ EpipolarCoordinates addEpipolarCoordinates(rg::RenderGraph& g, const NodeInputs&
     out.epipolarZ = g.createImage("epipolar camera-space z", perSample(VK_FORMAT_R32_SFLOAT));
     out.epipolarStencil = g.createImage("epipolar depth-stencil", perSample(in.depthStencil));
     auto pass = g.addPass("coordinates and epipolar z", rg::PassType::Graphics);
-    const auto& sm = in.shared->samplers;
+    const auto& sm = samplersOf(in.shared);
     rg::BindingTable table = frameTable(pass, in.constants);
     table.sampled(LS_BINDING_COORDINATES_END_POINTS, sliceEndPoints, sm.nearest())
         .sampled(LS_BINDING_COORDINATES_DEPTH, in.depth, sm.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT);

@@ -14,8 +14,8 @@ rg::ImageRef addInterpolate(rg::RenderGraph& g, const NodeInputs& in, const Epip
     rg::BindingTable table(pass);
     table
         .sampled(LS_BINDING_INTERPOLATION_SOURCE, interpolationSource,
-                 in.shared->samplers.nearest())
-        .sampled(LS_BINDING_INTERPOLATE_MARCHED, marched, in.shared->samplers.nearest());
+                 samplersOf(in.shared).nearest())
+        .sampled(LS_BINDING_INTERPOLATE_MARCHED, marched, samplersOf(in.shared).nearest());
     pass.stencilTest(epipolarStencil);
     interpolated = pass.colorAttachment(interpolated, rg::LoadOp::Clear);
     pass.execute([in, table](rg::PassContext& ctx) {

@@ -11,7 +11,7 @@ rg::ImageRef addMarkRayMarchSamples(rg::RenderGraph& g, const NodeInputs& in,
     auto pass = g.addPass("mark ray-marching samples", rg::PassType::Graphics);
     rg::BindingTable table(pass);
     table.sampled(LS_BINDING_INTERPOLATION_SOURCE, interpolationSource,
-                  in.shared->samplers.nearest());
+                  samplersOf(in.shared).nearest());
     const rg::ImageRef marked = pass.stencilWrite(epipolarStencil, rg::LoadOp::Load);
     pass.execute([in, table](rg::PassContext& ctx) {
         rg::GraphicsPipelineDesc desc =

@@ -17,7 +17,7 @@ rg::ImageRef addMinMaxTrees(rg::RenderGraph& g, const NodeInputs& in, const Epip
         g.createImage("1D min/max trees", rg::ImageDesc::absolute(VK_FORMAT_R16G16_SFLOAT, n, s.slices));
     {
         auto pass = g.addPass("min/max trees level 1", rg::PassType::Compute);
-        const auto& sm = in.shared->samplers;
+        const auto& sm = samplersOf(in.shared);
         rg::BindingTable table = frameTable(pass, in.constants);
         table
             .sampled(LS_BINDING_TREE_SHADOW_MAP, in.shadowMap, sm.nearest(),

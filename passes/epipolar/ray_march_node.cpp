@@ -66,7 +66,7 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in,
     const bool trees = i.trees.valid();
     auto pass =
         g.addPass(trees ? "ray march with min/max trees" : "ray march", rg::PassType::Graphics);
-    const auto& sm = in.shared->samplers;
+    const auto& sm = samplersOf(in.shared);
     rg::BindingTable table = frameTable(pass, in.constants);
     table.sampled(LS_BINDING_MARCH_COORDINATES, i.coordinates, sm.nearest())
         .sampled(LS_BINDING_MARCH_EPIPOLAR_Z, i.epipolarZ, sm.nearest())

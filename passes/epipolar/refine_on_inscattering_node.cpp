@@ -11,7 +11,7 @@ RefinedSamples addRefineOnInscattering(rg::RenderGraph& g, const NodeInputs& in,
                                        rg::ImageRef epipolarStencil) {
     auto pass = g.addPass("refine on in-scattering differences", rg::PassType::Graphics);
     rg::BindingTable table = frameTable(pass, in.constants);
-    table.sampled(LS_BINDING_REFINE_MARCHED, marched, in.shared->samplers.nearest());
+    table.sampled(LS_BINDING_REFINE_MARCHED, marched, samplersOf(in.shared).nearest());
     RefinedSamples out;
     out.interpolationSource =
         table.storageReadWrite(LS_BINDING_REFINE_LIN_SOURCES, interpolationSource);

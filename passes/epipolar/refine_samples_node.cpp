@@ -12,7 +12,7 @@ rg::ImageRef addRefineSamples(rg::RenderGraph& g, const NodeInputs& in, const Ep
         "interpolation source", rg::ImageDesc::absolute(VK_FORMAT_R16G16_UINT, s.samples, s.slices));
     auto pass = g.addPass("refine sample locations", rg::PassType::Compute);
     rg::BindingTable table = frameTable(pass, in.constants);
-    table.sampled(LS_BINDING_REFINE_EPIPOLAR_Z, epipolarZ, in.shared->samplers.nearest());
+    table.sampled(LS_BINDING_REFINE_EPIPOLAR_Z, epipolarZ, samplersOf(in.shared).nearest());
     sources = table.storageWrite(LS_BINDING_REFINE_SOURCES, sources);
     pass.execute([in, table, s](rg::PassContext& ctx) {
         // The light type only: near a point or spot light the first section is cut geometrically.

@@ -11,7 +11,7 @@ rg::ImageRef addSliceUvFrame(rg::RenderGraph& g, const NodeInputs& in, const Epi
         rg::ImageDesc::absolute(VK_FORMAT_R32G32B32A32_SFLOAT, s.slices, 1));
     auto pass = g.addPass("slice uv origin and direction", rg::PassType::Compute);
     rg::BindingTable table = frameTable(pass, in.constants);
-    table.sampled(LS_BINDING_UV_FRAME_END_POINTS, sliceEndPoints, in.shared->samplers.nearest());
+    table.sampled(LS_BINDING_UV_FRAME_END_POINTS, sliceEndPoints, samplersOf(in.shared).nearest());
     uvFrame = table.storageWrite(LS_BINDING_UV_FRAME_OUT, uvFrame);
     pass.execute([in, table, s](rg::PassContext& ctx) {
         if (!in.shared->inView()) return;  // a cube face out of view: no ray reads its lines

@@ -34,7 +34,7 @@ UnwarpOutputs addUnwarp(rg::RenderGraph& g, const NodeInputs& in, const UnwarpIn
                         const CompositeTarget& target, bool markForFixup) {
     UnwarpOutputs out;
     auto pass = g.addPass("unwarp epipolar to screen", rg::PassType::Graphics);
-    const auto& sm = in.shared->samplers;
+    const auto& sm = samplersOf(in.shared);
     rg::BindingTable table = frameTable(pass, in.constants);
     table.sampled(LS_BINDING_UNWARP_END_POINTS, i.sliceEndPoints, sm.nearest())
         .sampled(LS_BINDING_UNWARP_EPIPOLAR_Z, i.epipolarZ, sm.nearest())

@@ -28,7 +28,7 @@ const CompositeVariants kAddOnly{rg::spirv(ls_spirv::composite_rgba16f_add_comp)
 CompositeOutputs addCompositePass(rg::RenderGraph& graph, const NodeInputs& in, const char* name,
                                   const CompositeTarget& target, rg::ImageRef lin) {
     auto pass = graph.addPass(name, rg::PassType::Compute);
-    const auto& s = in.shared->samplers;
+    const auto& s = samplersOf(in.shared);
     rg::BindingTable table = frameTable(pass, in.constants);
     table.sampled(LS_BINDING_DEPTH, in.depth, s.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
         .sampledIfValid(LS_BINDING_COMPOSITE_LIN, lin, s.nearest());

@@ -25,7 +25,7 @@ rg::GraphicsPipelineDesc fullscreenPipeline(rg::ShaderCode fragment, const rg::P
 namespace ls {
 
 void addMarchInputs(rg::BindingTable& table, const NodeInputs& in) {
-    const auto& s = in.shared->samplers;
+    const auto& s = samplersOf(in.shared);
     table
         .sampledIfValid(LS_BINDING_SHADOW_MAP, in.shadowMap, s.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
         .sampledIfValid(LS_BINDING_POINT_TABLE, in.table, s.nearest())

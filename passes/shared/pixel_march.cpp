@@ -77,7 +77,7 @@ const CompositeVariants& fixupShaders(const ScatterSpec& spec) {
 
 rg::BindingTable declarePixelMarch(rg::PassBuilder& pass, const NodeInputs& in) {
     rg::BindingTable table = frameTable(pass, in.constants);
-    table.sampled(LS_BINDING_DEPTH, in.depth, in.shared->samplers.nearest(),
+    table.sampled(LS_BINDING_DEPTH, in.depth, samplersOf(in.shared).nearest(),
                   VK_IMAGE_ASPECT_DEPTH_BIT);
     addMarchInputs(table, in);
     return table;

@@ -9,7 +9,7 @@ rg::ImageRef addScreenLinNode(rg::RenderGraph& graph, const Shared& shared, Scre
                                          rg::ImageDesc::screen(VK_FORMAT_R16G16B16A16_SFLOAT));
     auto pass = graph.addPass(node.name, rg::PassType::Graphics);
     rg::BindingTable table = frameTable(pass, node.constants);
-    table.sampled(LS_BINDING_DEPTH, node.depth, shared->samplers.nearest(),
+    table.sampled(LS_BINDING_DEPTH, node.depth, samplersOf(shared).nearest(),
                   VK_IMAGE_ASPECT_DEPTH_BIT);
     if (node.rows) node.rows(table);
     lin = pass.colorAttachment(lin, rg::LoadOp::DontCare);

@@ -36,4 +36,9 @@ const rg::Pipeline& PipelineLibrary::graphics(const std::string& name,
     return it->second;
 }
 
+const rg::Samplers& samplersOf(const Shared& shared) {
+    static const rg::Samplers none;
+    return shared ? shared->samplers : none;
+}
+
 }  // namespace ls

@@ -87,4 +87,8 @@ private:
 
 using Shared = std::shared_ptr<SharedState>;
 
+// The samplers a node's binding table names when it is declared: null handles for a graph
+// without a device (the budget's, whose passes never record).
+const rg::Samplers& samplersOf(const Shared& shared);
+
 }  // namespace ls

@@ -49,7 +49,7 @@ rg::ImageRef addSlicePlanes(rg::RenderGraph& graph, const Shared& shared,
         graph.createImage(channels ? "slice planes' sum (8-bit channels)" : "slice planes' sum",
                           rg::ImageDesc::screen(accumulationFormat(options.target)));
     auto pass = graph.addPass("slice planes (seed 002)", rg::PassType::Graphics);
-    const auto& s = shared->samplers;
+    const auto& s = samplersOf(shared);
     rg::BindingTable table(pass);
     table
         .uniform(LS_BINDING_FRAME, in.constants,
@@ -100,8 +100,8 @@ rg::ImageRef addSliceResolve(rg::RenderGraph& graph, const Shared& shared,
                                          rg::ImageDesc::screen(VK_FORMAT_R16G16B16A16_SFLOAT));
     auto pass = graph.addPass("resolve slice planes", rg::PassType::Graphics);
     rg::BindingTable table = frameTable(pass, in.constants);
-    table.sampled(LS_BINDING_DEPTH, in.depth, shared->samplers.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
-        .sampled(LS_BINDING_PLANE_SUM, in.planeSum, shared->samplers.linear());
+    table.sampled(LS_BINDING_DEPTH, in.depth, samplersOf(shared).nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
+        .sampled(LS_BINDING_PLANE_SUM, in.planeSum, samplersOf(shared).linear());
     lin = pass.colorAttachment(lin, rg::LoadOp::DontCare);
     pass.execute([shared, placement, table, options](rg::PassContext& ctx) {
         const ScatterSpec& spec = shared->spec;
