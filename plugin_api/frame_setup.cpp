@@ -410,8 +410,9 @@ std::string ndcText(double x, double y) { return "(" + num(x) + ", " + num(y) + 
 // Checks face `i`'s world -> clip matrix against the face it must be: its axis, its corners (a
 // 90-degree square frustum with Vulkan's orientation) and its depth direction, at 1 m and 10 m
 // from the light, to 1e-3 in clip x/w and y/w.
-glm::mat4 checkCubeFace(const Mat4& given, size_t i, const glm::vec3& light, bool reversedZ) {
-    const std::string field = "light.cubeFaceViewProjections[" + std::to_string(i) + "]";
+glm::mat4 checkCubeFace(const Mat4& given, size_t i, const glm::vec3& light, bool reversedZ,
+                        const std::string& at) {
+    const std::string field = at + ".cubeFaceViewProjections[" + std::to_string(i) + "]";
     const glm::mat4 m = matrix(given, field);
     const CubeFace& f = kCubeFaces[i];
     if (conditioning(m) < 1e-9)
@@ -542,86 +543,75 @@ void checkOccluders(const std::vector<Occluder>& occluders) {
     }
 }
 
-void checkSettings(const Settings& s) {
+void checkSettings(const Settings& s, const std::string& at) {
+    const std::string c = at + ".";
     if (s.slices == 0 || s.slices % 4 != 0 || s.slices > 16384)
-        fail("custom.slices = " + std::to_string(s.slices) +
+        fail(c + "slices = " + std::to_string(s.slices) +
              ": must be a positive multiple of 4 (a quarter per screen edge), at most 16384");
     if (s.samplesPerSlice < 2 || s.samplesPerSlice > 16384)
-        fail("custom.samplesPerSlice = " + std::to_string(s.samplesPerSlice) +
+        fail(c + "samplesPerSlice = " + std::to_string(s.samplesPerSlice) +
              ": must be between 2 and 16384");
     const uint32_t st = s.initialSampleStep;
     if (st == 0 || (st & (st - 1)) != 0 || st > 128)
-        fail("custom.initialSampleStep = " + std::to_string(st) +
+        fail(c + "initialSampleStep = " + std::to_string(st) +
              ": must be a power of two between 1 and 128");
     if (!(s.refinementThreshold > 0.0f) || !finite(s.refinementThreshold))
-        fail("custom.refinementThreshold = " + num(s.refinementThreshold) + ": must be > 0");
+        fail(c + "refinementThreshold = " + num(s.refinementThreshold) + ": must be > 0");
     if (!(s.inscatterRefinementThreshold >= 0.0f) || !finite(s.inscatterRefinementThreshold))
-        fail("custom.inscatterRefinementThreshold = " + num(s.inscatterRefinementThreshold) +
+        fail(c + "inscatterRefinementThreshold = " + num(s.inscatterRefinementThreshold) +
              ": must be finite and >= 0 (0: off)");
     if (!(s.bilateralThreshold > 0.0f) || !finite(s.bilateralThreshold))
-        fail("custom.bilateralThreshold = " + num(s.bilateralThreshold) + ": must be > 0");
-    inRange(s.shadowDepthBias, "custom.shadowDepthBias", -1.0, 1.0,
+        fail(c + "bilateralThreshold = " + num(s.bilateralThreshold) + ": must be > 0");
+    inRange(s.shadowDepthBias, c + "shadowDepthBias", -1.0, 1.0,
             "the depth range: beyond it every ray is lit, or shadowed, all the same");
     if (s.coneSamples < 1 || s.coneSamples > 4096)
-        fail("custom.coneSamples = " + std::to_string(s.coneSamples) + ": must be between 1 and 4096");
+        fail(c + "coneSamples = " + std::to_string(s.coneSamples) + ": must be between 1 and 4096");
     if (s.slicePlanes < 2 || s.slicePlanes > 4096)
-        fail("custom.slicePlanes = " + std::to_string(s.slicePlanes) + ": must be between 2 and 4096");
+        fail(c + "slicePlanes = " + std::to_string(s.slicePlanes) + ": must be between 2 and 4096");
     if (s.sliceTarget != SliceTarget::Float16 && s.sliceTarget != SliceTarget::Float32 &&
         s.sliceTarget != SliceTarget::Rgba8Channels)
-        fail("custom.sliceTarget is not a SliceTarget value");
+        fail(c + "sliceTarget is not a SliceTarget value");
     if (s.sliceRange != 0.0f)
-        inRange(s.sliceRange, "custom.sliceRange", 1e-30, 1e30,
+        inRange(s.sliceRange, c + "sliceRange", 1e-30, 1e30,
                 "or 0: automatic; the 8-bit target is scaled by 4 / sliceRange");
-    if (s.sliceBlur > 8) fail("custom.sliceBlur = " + std::to_string(s.sliceBlur) + ": at most 8 pixels");
-    inRange(s.sliceAmbient, "custom.sliceAmbient", 0.0, limits::kMaxAmbient,
+    if (s.sliceBlur > 8) fail(c + "sliceBlur = " + std::to_string(s.sliceBlur) + ": at most 8 pixels");
+    inRange(s.sliceAmbient, c + "sliceAmbient", 0.0, limits::kMaxAmbient,
             "1/m^2, beside the inverse square; lightscatter.h, limits::kMaxAmbient");
     if (!(s.noiseAmplitude >= 0.0f && s.noiseAmplitude <= 1.0f))
-        fail("custom.noiseAmplitude = " + num(s.noiseAmplitude) + ": must be in [0, 1]");
-    inRange(s.noiseScale, "custom.noiseScale", limits::kMinNoiseScale, limits::kMaxNoiseScale,
+        fail(c + "noiseAmplitude = " + num(s.noiseAmplitude) + ": must be in [0, 1]");
+    inRange(s.noiseScale, c + "noiseScale", limits::kMinNoiseScale, limits::kMaxNoiseScale,
             "a tile's size; lightscatter.h, limits::kMinNoiseScale");
     for (size_t i = 0; i < s.noiseVelocity.size(); ++i)
         if (!finite(s.noiseVelocity[i]))
-            fail("custom.noiseVelocity[" + std::to_string(i) + "] is not finite");
+            fail(c + "noiseVelocity[" + std::to_string(i) + "] is not finite");
     if (s.lightModel != LightModel::Full && s.lightModel != LightModel::Simplified)
-        fail("custom.lightModel is not a LightModel value");
-    inRange(s.simplifiedA1, "custom.simplifiedA1", limits::kMinSimplifiedA1,
+        fail(c + "lightModel is not a LightModel value");
+    inRange(s.simplifiedA1, c + "simplifiedA1", limits::kMinSimplifiedA1,
             limits::kMaxSimplifiedA1,
             "seed 004's falloff I / (a1 r^2 + a0); lightscatter.h, limits::kMinSimplifiedA1");
-    inRange(s.simplifiedA0, "custom.simplifiedA0", 0.0, limits::kMaxSimplifiedA0,
+    inRange(s.simplifiedA0, c + "simplifiedA0", 0.0, limits::kMaxSimplifiedA0,
             "m^2, seed 004's falloff I / (a1 r^2 + a0); lightscatter.h, limits::kMaxSimplifiedA0");
 }
 
-FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
+namespace {
+
+void oneLayer(const ImageInput* img, const std::string& field) {
+    if (img && img->arrayLayers != 1)
+        fail(field + ".arrayLayers = " + std::to_string(img->arrayLayers) +
+             ": must be 1 (only a point light's shadow map has layers: 6)");
+}
+
+}  // namespace
+
+Settings mergedSettings(Profile profile, const Settings& custom) {
+    // Everything is the engine's (custom) but what the profile decides: a field added to Settings
+    // is the engine's without a word here.
+    return profile == Profile::Custom ? custom : withProfileSizes(custom, profile);
+}
+
+FrameSetup setupFrameWide(const FrameDescription& f, bool withImages) {
     FrameSetup s;
-    s.settings = f.profile == Profile::Custom ? f.custom : profileSettings(f.profile);
-    if (f.profile != Profile::Custom) {
-        // Profiles fix slices and samples; the finer choices are the engine's.
-        s.settings.initialSampleStep = f.custom.initialSampleStep;
-        s.settings.refinementThreshold = f.custom.refinementThreshold;
-        s.settings.inscatterRefinementThreshold = f.custom.inscatterRefinementThreshold;
-        s.settings.bilateralThreshold = f.custom.bilateralThreshold;
-        s.settings.minMaxTrees = f.custom.minMaxTrees;
-        s.settings.shadowFilter = f.custom.shadowFilter;
-        s.settings.fixup = f.custom.fixup;
-        s.settings.fixupMaxSteps = f.custom.fixupMaxSteps;
-        s.settings.shadowDepthBias = f.custom.shadowDepthBias;
-        s.settings.interpolation = f.custom.interpolation;
-        s.settings.coneSamples = f.custom.coneSamples;
-        s.settings.coneLimited = f.custom.coneLimited;
-        s.settings.coneJitter = f.custom.coneJitter;
-        s.settings.shadowSampling = f.custom.shadowSampling;
-        s.settings.slicePlaneScaling = f.custom.slicePlaneScaling;
-        s.settings.sliceRange = f.custom.sliceRange;
-        s.settings.sliceBlur = f.custom.sliceBlur;
-        s.settings.sliceDither = f.custom.sliceDither;
-        s.settings.sliceAmbient = f.custom.sliceAmbient;
-        s.settings.noiseAmplitude = f.custom.noiseAmplitude;
-        s.settings.noiseScale = f.custom.noiseScale;
-        s.settings.noiseVelocity = f.custom.noiseVelocity;
-        s.settings.lightModel = f.custom.lightModel;
-        s.settings.simplifiedA0 = f.custom.simplifiedA0;
-        s.settings.simplifiedA1 = f.custom.simplifiedA1;
-    }
+    s.settings = mergedSettings(f.profile, f.custom);
     checkSettings(s.settings);
     // Checked, and converted, only for the methods that read them (beamOccluders): the others
     // ignore them, as the header says, and a scene of 100,000 parts must not stop them.
@@ -644,51 +634,6 @@ FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
         fail("camera.projection * camera.view is singular");
     checkMatrixScale(s.camera.projection, "camera.projection");
 
-    // Light.
-    const Light& l = f.light;
-    s.light.kind = static_cast<ls::LightKind>(static_cast<int>(l.type));
-    s.light.position = vecInRange(l.position, "light.position", -limits::kMaxLength,
-                                  limits::kMaxLength, "metres; lightscatter.h, limits::kMaxLength");
-    const glm::vec3 dir = vec(l.direction, "light.direction", false);
-    // A float's square overflows from 1.8e19 and underflows below 1e-19: such lengths are
-    // normalised in double (ordinary ones as they always were, to the bit).
-    const glm::dvec3 dirD(dir);
-    const double dirScale = std::max({std::fabs(dirD.x), std::fabs(dirD.y), std::fabs(dirD.z)});
-    if (!(dirScale > 0.0)) fail("light.direction is the zero vector");
-    const float dirLength = glm::length(dir);
-    s.light.direction = std::isfinite(dirLength) && dirLength > 1e-12f
-                            ? glm::normalize(dir)
-                            : glm::vec3(glm::normalize(dirD / dirScale));
-    s.light.intensity = vecInRange(l.intensity, "light.intensity", 0.0, limits::kMaxIntensity,
-                                   "W/m^2 or W/sr; lightscatter.h, limits::kMaxIntensity");
-    if (l.type == LightType::Spot)
-        inRange(l.halfAngleDegrees, "light.halfAngleDegrees", limits::kMinHalfAngleDegrees, 89.0,
-                "degrees; below it single precision cannot resolve the cone, lightscatter.h, "
-                "limits::kMinHalfAngleDegrees");
-    s.light.cosHalfAngle = std::cos(l.halfAngleDegrees * 3.14159265f / 180.0f);
-    if (!(l.range > 0.0f) || !finite(l.range))
-        fail("light.range = " + num(l.range) + ": must be > 0 and finite (1e30: no range)");
-    s.light.range = l.range;
-    inRange(l.radius, "light.radius", limits::kMinRadius, limits::kMaxLength,
-            "metres; it keeps rays through the light finite, lightscatter.h, limits::kMinRadius");
-    s.light.radius = l.radius;
-    s.light.shadowMapSize = l.shadowMapSize;
-    s.light.shadowReversedZ = l.shadowReversedZ;
-    if (l.type == LightType::Point && l.shadowMapSize > 0) {
-        for (size_t i = 0; i < 6; ++i)
-            s.light.cubeFaceViewProj[i] =
-                checkCubeFace(l.cubeFaceViewProjections[i], i, s.light.position, l.shadowReversedZ);
-    } else if (l.shadowMapSize > 0) {
-        s.light.shadowViewProj = matrix(l.shadowViewProjection, "light.shadowViewProjection");
-        // An all-zero (default) or otherwise singular matrix puts every point at one texel and
-        // depth: the light would silently vanish or light everything.
-        if (conditioning(s.light.shadowViewProj) < 1e-9)
-            fail("light.shadowViewProjection is singular (all zero?): with light.shadowMapSize " +
-                 std::to_string(l.shadowMapSize) +
-                 " it must be the shadow map's world -> light clip matrix");
-        checkMatrixScale(s.light.shadowViewProj, "light.shadowViewProjection");
-    }
-
     // Medium.
     const Medium& m = f.medium;
     const std::string perMetre = "1/m; lightscatter.h, limits::kMaxCoefficient";
@@ -707,8 +652,6 @@ FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
     s.medium.maxDistance = m.maxDistance;
 
     // Images.
-    s.shadowed = l.shadowMapSize > 0;
-    s.lightColor = f.lightColor.has_value();
     s.engineNoise = f.noise.has_value();
     s.depthAttachment = !withImages || (f.depth.usage & VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT) != 0;
     s.inscatterOut = f.inscatterOut.has_value();
@@ -726,37 +669,10 @@ FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
                  std::to_string(f.color.extent.height) + " differs from depth.extent " +
                  std::to_string(f.depth.extent.width) + "x" + std::to_string(f.depth.extent.height));
         s.screen = f.depth.extent;
-        if (s.shadowed != f.shadowMap.has_value())
-            fail(s.shadowed ? "shadowMap is missing but light.shadowMapSize is " +
-                                  std::to_string(l.shadowMapSize)
-                            : "shadowMap is given but light.shadowMapSize is 0");
-        auto oneLayer = [](const ImageInput* img, const char* field) {
-            if (img && img->arrayLayers != 1)
-                fail(std::string(field) + ".arrayLayers = " + std::to_string(img->arrayLayers) +
-                     ": must be 1 (only a point light's shadow map has layers: 6)");
-        };
         oneLayer(&f.depth, "depth");
         oneLayer(&f.color, "color");
-        oneLayer(f.lightColor ? &*f.lightColor : nullptr, "lightColor");
         oneLayer(f.noise ? &*f.noise : nullptr, "noise");
         oneLayer(f.inscatterOut ? &*f.inscatterOut : nullptr, "inscatterOut");
-        if (f.shadowMap) {
-            const uint32_t layers = l.type == LightType::Point ? 6 : 1;
-            if (f.shadowMap->arrayLayers != layers)
-                fail("shadowMap.arrayLayers = " + std::to_string(f.shadowMap->arrayLayers) + ": must be " +
-                     (layers == 6 ? std::string("6 for a point light (its cube faces +X, -X, +Y, -Y, +Z, -Z)")
-                                  : std::string("1 for a ") +
-                                        (l.type == LightType::Spot ? "spot" : "directional") +
-                                        " light (6 only for a point light's cube map)"));
-            checkImage(*f.shadowMap, "shadowMap", VK_IMAGE_USAGE_SAMPLED_BIT, "SAMPLED");
-            checkDepthFormat(f.shadowMap->format, "shadowMap");
-            if (f.shadowMap->extent.width != l.shadowMapSize ||
-                f.shadowMap->extent.height != l.shadowMapSize)
-                fail("shadowMap.extent " + std::to_string(f.shadowMap->extent.width) + "x" +
-                     std::to_string(f.shadowMap->extent.height) +
-                     " does not match light.shadowMapSize " + std::to_string(l.shadowMapSize));
-        }
-        if (f.lightColor) checkImage(*f.lightColor, "lightColor", VK_IMAGE_USAGE_SAMPLED_BIT, "SAMPLED");
         if (f.noise) checkImage(*f.noise, "noise", VK_IMAGE_USAGE_SAMPLED_BIT, "SAMPLED");
         if (f.inscatterOut) {
             checkImage(*f.inscatterOut, "inscatterOut", VK_IMAGE_USAGE_STORAGE_BIT, "STORAGE",
@@ -769,13 +685,100 @@ FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
                 fail("inscatterOut.extent differs from depth.extent");
         }
     }
+    return s;
+}
+
+void setupLight(FrameSetup& s, const LightInput& light, const LightPaths& at, bool withImages) {
+    if (light.settings) {
+        // The light's own settings, as if the frame's profile were Custom with them.
+        s.settings = *light.settings;
+        checkSettings(s.settings, at.settings);
+    }
+    // Light.
+    const Light& l = light.light;
+    s.light.kind = static_cast<ls::LightKind>(static_cast<int>(l.type));
+    s.light.position = vecInRange(l.position, at.light + ".position", -limits::kMaxLength,
+                                  limits::kMaxLength, "metres; lightscatter.h, limits::kMaxLength");
+    const glm::vec3 dir = vec(l.direction, at.light + ".direction", false);
+    // A float's square overflows from 1.8e19 and underflows below 1e-19: such lengths are
+    // normalised in double (ordinary ones as they always were, to the bit).
+    const glm::dvec3 dirD(dir);
+    const double dirScale = std::max({std::fabs(dirD.x), std::fabs(dirD.y), std::fabs(dirD.z)});
+    if (!(dirScale > 0.0)) fail(at.light + ".direction is the zero vector");
+    const float dirLength = glm::length(dir);
+    s.light.direction = std::isfinite(dirLength) && dirLength > 1e-12f
+                            ? glm::normalize(dir)
+                            : glm::vec3(glm::normalize(dirD / dirScale));
+    s.light.intensity = vecInRange(l.intensity, at.light + ".intensity", 0.0, limits::kMaxIntensity,
+                                   "W/m^2 or W/sr; lightscatter.h, limits::kMaxIntensity");
+    if (l.type == LightType::Spot)
+        inRange(l.halfAngleDegrees, at.light + ".halfAngleDegrees", limits::kMinHalfAngleDegrees, 89.0,
+                "degrees; below it single precision cannot resolve the cone, lightscatter.h, "
+                "limits::kMinHalfAngleDegrees");
+    s.light.cosHalfAngle = std::cos(l.halfAngleDegrees * 3.14159265f / 180.0f);
+    if (!(l.range > 0.0f) || !finite(l.range))
+        fail(at.light + ".range = " + num(l.range) + ": must be > 0 and finite (1e30: no range)");
+    s.light.range = l.range;
+    inRange(l.radius, at.light + ".radius", limits::kMinRadius, limits::kMaxLength,
+            "metres; it keeps rays through the light finite, lightscatter.h, limits::kMinRadius");
+    s.light.radius = l.radius;
+    s.light.shadowMapSize = l.shadowMapSize;
+    s.light.shadowReversedZ = l.shadowReversedZ;
+    if (l.type == LightType::Point && l.shadowMapSize > 0) {
+        for (size_t i = 0; i < 6; ++i)
+            s.light.cubeFaceViewProj[i] =
+                checkCubeFace(l.cubeFaceViewProjections[i], i, s.light.position, l.shadowReversedZ, at.light);
+    } else if (l.shadowMapSize > 0) {
+        s.light.shadowViewProj = matrix(l.shadowViewProjection, at.light + ".shadowViewProjection");
+        // An all-zero (default) or otherwise singular matrix puts every point at one texel and
+        // depth: the light would silently vanish or light everything.
+        if (conditioning(s.light.shadowViewProj) < 1e-9)
+            fail(at.light + ".shadowViewProjection is singular (all zero?): with light.shadowMapSize " +
+                 std::to_string(l.shadowMapSize) +
+                 " it must be the shadow map's world -> light clip matrix");
+        checkMatrixScale(s.light.shadowViewProj, at.light + ".shadowViewProjection");
+    }
+
+    // The light's images.
+    s.shadowed = l.shadowMapSize > 0;
+    s.lightColor = light.lightColor.has_value();
+    if (withImages) {
+        if (s.shadowed != light.shadowMap.has_value())
+            fail(s.shadowed ? at.shadowMap + " is missing but " + at.light + ".shadowMapSize is " +
+                                  std::to_string(l.shadowMapSize)
+                            : at.shadowMap + " is given but " + at.light + ".shadowMapSize is 0");
+        oneLayer(light.lightColor ? &*light.lightColor : nullptr, at.lightColor);
+        if (light.shadowMap) {
+            const ImageInput& map = *light.shadowMap;
+            const uint32_t layers = l.type == LightType::Point ? 6 : 1;
+            if (map.arrayLayers != layers)
+                fail(at.shadowMap + ".arrayLayers = " + std::to_string(map.arrayLayers) + ": must be " +
+                     (layers == 6 ? std::string("6 for a point light (its cube faces +X, -X, +Y, -Y, +Z, -Z)")
+                                  : std::string("1 for a ") +
+                                        (l.type == LightType::Spot ? "spot" : "directional") +
+                                        " light (6 only for a point light's cube map)"));
+            checkImage(map, at.shadowMap, VK_IMAGE_USAGE_SAMPLED_BIT, "SAMPLED");
+            checkDepthFormat(map.format, at.shadowMap);
+            if (map.extent.width != l.shadowMapSize || map.extent.height != l.shadowMapSize)
+                fail(at.shadowMap + ".extent " + std::to_string(map.extent.width) + "x" +
+                     std::to_string(map.extent.height) + " does not match " + at.light +
+                     ".shadowMapSize " + std::to_string(l.shadowMapSize));
+        }
+        if (light.lightColor)
+            checkImage(*light.lightColor, at.lightColor, VK_IMAGE_USAGE_SAMPLED_BIT, "SAMPLED");
+    }
     if (s.lightColor && !s.shadowed)
-        fail("lightColor needs a shadow-mapped light: the color is looked up in the shadow map's space");
+        fail(at.lightColor + " needs a shadow-mapped light: the color is looked up in the shadow map's space");
     if (s.lightColor && l.type == LightType::Point)
-        fail("lightColor is not supported with a point light: a light-space color texture needs a "
+        fail(at.lightColor + " is not supported with a point light: a light-space color texture needs a "
              "spot or directional light's single shadow-map frustum");
 
     applySettings(s, s.settings, l.shadowMapSize);
+}
+
+FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
+    FrameSetup s = setupFrameWide(f, withImages);
+    setupLight(s, LightInput{f.light, f.shadowMap, f.lightColor, std::nullopt}, LightPaths{}, withImages);
     return s;
 }
 
@@ -833,48 +836,8 @@ bool defaultLight(const Light& l) {
            l.shadowReversedZ == d.shadowReversedZ;
 }
 
-bool identifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '['; }
 
 }  // namespace
-
-FrameDescription withLight(const FrameDescription& frame, size_t i) {
-    FrameDescription f = frame;
-    f.lights.clear();
-    f.light = frame.lights[i].light;
-    f.shadowMap = frame.lights[i].shadowMap;
-    f.lightColor = frame.lights[i].lightColor;
-    if (frame.lights[i].settings) {
-        f.profile = Profile::Custom;
-        f.custom = *frame.lights[i].settings;
-    }
-    return f;
-}
-
-std::string lightMessage(const std::string& message, size_t i, bool ownSettings) {
-    const std::string prefix = "lights[" + std::to_string(i) + "].";
-    const std::string lead = "lightscatter: ";
-    std::string m = message.rfind(lead, 0) == 0 ? message.substr(lead.size()) : message;
-    std::string out;
-    for (size_t k = 0; k < m.size();) {
-        const bool start = k == 0 || !identifierChar(m[k - 1]);
-        bool matched = false;
-        for (const char* field : {"light.", "shadowMap", "lightColor", "custom."}) {
-            const std::string f = field;
-            if (!start || m.compare(k, f.size(), f) != 0) continue;
-            // The settings checked as the frame's custom are the light's own where it has them.
-            if (f == "custom." && !ownSettings) continue;
-            const size_t end = k + f.size();
-            // "shadowMap" and "lightColor" as whole names only (not "shadowMapSize").
-            if (f.back() != '.' && end < m.size() && std::isalnum(static_cast<unsigned char>(m[end]))) continue;
-            out += prefix + (f == "custom." ? std::string("settings.") : f);
-            k = end;
-            matched = true;
-            break;
-        }
-        if (!matched) out += m[k++];
-    }
-    return lead + "lights[" + std::to_string(i) + "]: " + out;
-}
 
 std::vector<FrameSetup> setupLights(const FrameDescription& frame, bool withImages) {
     std::string both;
@@ -888,19 +851,27 @@ std::vector<FrameSetup> setupLights(const FrameDescription& frame, bool withImag
     if (frame.lights.size() > kMaxLights)
         fail("lights holds " + std::to_string(frame.lights.size()) + " lights: at most " +
              std::to_string(kMaxLights) + " (kMaxLights; each light is a chain of passes and a table of its own)");
-    // The frame without its lights (an unshadowed default light, which breaks no rule): whatever
-    // fails here is not about a light.
-    FrameDescription bare = frame;
-    bare.lights.clear();
-    setupFrame(bare, withImages);
+    // The frame's own part once; whatever fails there is not about a light.
+    const FrameSetup frameWide = setupFrameWide(frame, withImages);
     std::vector<FrameSetup> setups;
     setups.reserve(frame.lights.size());
     for (size_t i = 0; i < frame.lights.size(); ++i) {
+        const std::string at = "lights[" + std::to_string(i) + "]";
+        LightPaths paths{at + ".light", at + ".shadowMap", at + ".lightColor",
+                         frame.lights[i].settings ? at + ".settings" : "custom"};
+        FrameSetup s = frameWide;
+        s.lightPath = paths.light;
+        s.settingsPath = paths.settings;
         try {
-            setups.push_back(setupFrame(withLight(frame, i), withImages));
+            setupLight(s, frame.lights[i], paths, withImages);
         } catch (const InvalidInput& e) {
-            throw InvalidInput(lightMessage(e.what(), i, frame.lights[i].settings.has_value()));
+            // The message says which light it is about before naming the field.
+            const std::string lead = "lightscatter: ";
+            std::string m = e.what();
+            if (m.rfind(lead, 0) == 0) m = m.substr(lead.size());
+            throw InvalidInput(lead + at + ": " + m);
         }
+        setups.push_back(std::move(s));
     }
     return setups;
 }
@@ -919,11 +890,6 @@ ValidatedFrame validateFrame(const FrameDescription& frame, bool withImages) {
     v.list = !frame.lights.empty();
     if (v.list) {
         v.lights = setupLights(frame, withImages);
-        for (size_t i = 0; i < v.lights.size(); ++i) {
-            const std::string at = "lights[" + std::to_string(i) + "]";
-            v.lights[i].lightPath = at + ".light";
-            if (frame.lights[i].settings) v.lights[i].settingsPath = at + ".settings";
-        }
     } else {
         v.lights.push_back(setupFrame(frame, withImages));
     }

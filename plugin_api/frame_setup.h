@@ -45,17 +45,27 @@ void applySettings(ls::LightSetup& s, const Settings& settings, uint32_t shadowM
 FrameSetup setupFrame(const FrameDescription& frame, bool withImages = true);
 
 // Several lights (FrameDescription::lights): refuses a frame that gives both the list and the single
-// light's fields, checks the frame without its lights, then each light as the frame's one light
-// (errors name lights[i].field). Returns each light's setup, in order.
+// light's fields, checks the frame's part once, then each light (errors name lights[i].field).
+// Returns each light's setup, in order.
 std::vector<FrameSetup> setupLights(const FrameDescription& frame, bool withImages = true);
-// The frame with lights[i] as its single light (light, shadowMap, lightColor) and no list.
-FrameDescription withLight(const FrameDescription& frame, size_t i);
-// A message about the frame's single light, retold about lights[i]: "light.x" becomes
-// "lights[i].light.x", "shadowMap" and "lightColor" become "lights[i].shadowMap" and so on, and
-// the message says which light it is about.
-std::string lightMessage(const std::string& message, size_t i, bool ownSettings = false);
+// How the engine named a light's fields: `light`, `shadowMap`, `lightColor` and `custom` for a frame
+// that gave `light`, lights[i].light ... lights[i].settings (or `custom` without own settings) for
+// the list.
+struct LightPaths {
+    std::string light = "light", shadowMap = "shadowMap", lightColor = "lightColor", settings = "custom";
+};
+// The frame's part (settings, time, camera, medium, the engine's depth, color, noise and output),
+// and a light's part added to it (the light, its images and its own settings), each checked.
+FrameSetup setupFrameWide(const FrameDescription& frame, bool withImages = true);
+void setupLight(FrameSetup& setup, const LightInput& light, const LightPaths& paths, bool withImages = true);
 
-void checkSettings(const Settings& s);
+// The settings a frame runs with: `custom`, with the profile's sizes where the profile is not
+// Custom (Settings' comments say which fields those are).
+Settings mergedSettings(Profile profile, const Settings& custom);
+// `s` with the profile's sizes (its slices, samplesPerSlice, shadowMapSize, slicePlanes and
+// sliceTarget); Custom leaves it as it is.
+Settings withProfileSizes(Settings s, Profile profile);
+void checkSettings(const Settings& s, const std::string& at = "custom");
 void checkOccluders(const std::vector<Occluder>& occluders);
 // The occluders checked (at most kMaxOccluders, each box valid) and in double, for the beam tree.
 std::vector<ls::beam::Occluder> beamOccluders(const std::vector<Occluder>& occluders);

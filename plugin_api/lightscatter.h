@@ -454,7 +454,10 @@ struct FrameDescription {
     Medium medium;
     Method method = Method::Epipolar;
     Profile profile = Profile::Balanced;
-    Settings custom;  // used when profile == Custom
+    // The engine's settings. With Profile::Custom all of them; with any other profile all but the
+    // profile's sizes (slices, samplesPerSlice, shadowMapSize, slicePlanes, sliceTarget), which the
+    // profile decides. A light's own LightInput::settings replace them for its chain.
+    Settings custom;
     DebugOptions debug;
 };
 

@@ -1,5 +1,6 @@
 // Method and profile names (the command line's contract) and the seed's quality profiles.
 #include "lightscatter.h"
+#include "frame_setup.h"
 #include "method_units.h"
 #include "registry/method_registry.h"
 
@@ -79,8 +80,10 @@ std::vector<std::string> profileNames() {
     return v;
 }
 
-Settings profileSettings(Profile profile) {
-    Settings s;
+Settings profileSettings(Profile profile) { return detail::withProfileSizes(Settings{}, profile); }
+
+Settings detail::withProfileSizes(Settings s, Profile profile) {
+    if (profile == Profile::Custom) return s;
     for (const auto& row : kProfiles) {
         if (row.profile != profile) continue;
         s.slices = row.slices;
