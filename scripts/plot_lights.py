@@ -6,7 +6,7 @@ are told apart in a legend (no labels on the plot). Uses Debian's python3-matplo
 
     scripts/plot_lights.py BENCH_DIR OUT_DIR      # writes OUT_DIR/lights_scaling.png
 
-The numbers behind it are computed by light_rows() here, which scripts/write_report.py imports
+The numbers behind it are computed by light_rows() here, which scripts/report/lights.py imports
 for docs/performance.md."""
 import json
 import sys

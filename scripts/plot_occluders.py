@@ -8,7 +8,7 @@ Uses Debian's python3-matplotlib.
     scripts/plot_occluders.py BENCH_DIR OUT_DIR      # writes OUT_DIR/occluders_scaling.png
 
 The numbers behind it (and the crossover) are computed by occluder_rows() and crossover() here, which
-scripts/write_report.py imports for docs/performance.md."""
+scripts/report/occluders.py imports for docs/performance.md."""
 import json
 import math
 import re
