@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """The cost of N lights, from a `lightscatter bench` run of bench/lights_scaling.json (the atrium
-under N = 1, 2, 4, 8 shadowed spots, scripts/make_lights_scenes.py): the plugin's median frame time
+under N = 1, 2, 4, 8 shadowed spots, tools/make_scenes/make_lights_scenes.py): the plugin's median frame time
 (p10 to p90 as bars) against the number of lights for each method, and the time per light. Lines
 are told apart in a legend (no labels on the plot). Uses Debian's python3-matplotlib.
 

@@ -18,7 +18,7 @@ from pathlib import Path
 
 
 def boxes(r):
-    """The scene's box count: occluders_<N> is N boxes on a floor (scripts/make_occluder_scenes.py)."""
+    """The scene's box count: occluders_<N> is N boxes on a floor (tools/make_scenes/make_occluder_scenes.py)."""
     m = re.search(r"occluders_(\d+)$", r["scene"])
     return int(m.group(1)) if m else r.get("occluders", 0)
 

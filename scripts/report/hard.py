@@ -17,7 +17,7 @@ def hard_section(hard):
         bounds[name] = tuple(float(x) for x in fields.split(","))[:2]
     default = tuple(float(x) for x in re.search(r"kDefault\{([\d., ]+)\}", test).group(1).split(","))[:2]
     w, h = hard[0]["size"]
-    p(f"Every hard case of [model.md](model.md#hard-cases) as a scene (`scenes/hard`, from `tools/make_hard_cases.py`), {w}x{h}, balanced "
+    p(f"Every hard case of [model.md](model.md#hard-cases) as a scene (`scenes/hard`, from `tools/make_scenes/make_hard_cases.py`), {w}x{h}, balanced "
       "profile. `test_hard_suite` asserts finite pixels and the bound below for each (mean relative error); thin "
       "media must stay within 1% of float64. A point light without a cube shadow map is unshadowed in the "
       "plugin but shadowed in the reference, so its cases count the missing shadows as error.\n")

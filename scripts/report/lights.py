@@ -61,7 +61,7 @@ def lights_section(scaling_dir, rows_dir):
                 else "GPU timestamps")
         p("### The cost of N lights\n")
         p(f"The atrium under N = 1, 2, 4 and 8 shadowed spots and nothing else (`scenes/atrium_spots_N`, "
-          f"`scripts/make_lights_scenes.py`; every spot's cone reaches the court in view, so every light costs its "
+          f"`tools/make_scenes/make_lights_scenes.py`; every spot's cone reaches the court in view, so every light costs its "
           f"chain), at {w}x{h}, balanced settings, the median of {r0['frames']} frames after warm-up, on "
           f"**{r0['device']}** ({kind}). Measured on {date.today().isoformat()} with `./build/host_example/lightscatter "
           f"bench --config bench/lights_scaling.json --out build/bench-lights-scaling`; no error is measured "

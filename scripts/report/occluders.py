@@ -28,7 +28,7 @@ def occluders_section(occ_dir):
     p = out.append
     p(OCCLUDERS_HEADING + "\n")
     p(f"Seed 004 says its beam tree cannot cope with highly tessellated scenes. `scenes/occluders_N` "
-      f"(`scripts/make_occluder_scenes.py`) are N boxes (pillars and crates, varied heights, turned, on a "
+      f"(`tools/make_scenes/make_occluder_scenes.py`) are N boxes (pillars and crates, varied heights, turned, on a "
       f"jittered grid over the same 16 m square) on a floor under a spot light shining down across them; the "
       f"host hands the plugin one oriented box per connected part of each glTF primitive (here each box and "
       f"the floor), so the tree gets N + 1 occluders. Measured "
