@@ -45,7 +45,7 @@ def page_lines(bench_dir, hard_dir, config, slices_dir=None, occluders_dir=None,
       f"{first['frames']} frames after warm-up, per-pass GPU timestamps summed over the plugin's passes "
       "(the engine's own shadow map and shading are not included). Every error is Lin against the float64 "
       "reference renderer (exact visibility against the scene's triangles through a BVH, adaptive quadrature; "
-      "`host_example/exact_renderer`), at the same pixel centres: mean relative error = sum |a - b| / sum |b| over "
+      "`reference/exact_renderer`), at the same pixel centres: mean relative error = sum |a - b| / sum |b| over "
       "every pixel and channel; p99 and max are of |a - b| divided by the reference's 99th percentile; "
       "'over 5%' counts pixels off by more than 5% of that percentile; PSNR is of the tone-mapped 8-bit "
       "images.\n")
