@@ -127,7 +127,7 @@ fi
 # The plots need both halves: the timing run's rows with the error run's errors.
 import json, sys
 sys.path.insert(0, "scripts")
-import report_speed as rs
+from report import speed as rs
 runs = rs.merge_errors(rs.load_runs("build/bench-report"), rs.load_runs("build/bench-report-error"))
 json.dump({"runs": runs}, open("build/bench-report/merged.json", "w"))
 PY

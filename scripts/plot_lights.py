@@ -1,12 +1,12 @@
 #!/usr/bin/python3
 """The cost of N lights, from a `lightscatter bench` run of bench/lights_scaling.json (the atrium
-under N = 1, 2, 4, 8 shadowed spots, scripts/make_lights_scenes.py): the plugin's median frame time
+under N = 1, 2, 4, 8 shadowed spots, tools/make_scenes/make_lights_scenes.py): the plugin's median frame time
 (p10 to p90 as bars) against the number of lights for each method, and the time per light. Lines
 are told apart in a legend (no labels on the plot). Uses Debian's python3-matplotlib.
 
     scripts/plot_lights.py BENCH_DIR OUT_DIR      # writes OUT_DIR/lights_scaling.png
 
-The numbers behind it are computed by light_rows() here, which scripts/write_report.py imports
+The numbers behind it are computed by light_rows() here, which scripts/report/lights.py imports
 for docs/performance.md."""
 import json
 import sys

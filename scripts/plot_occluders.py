@@ -8,7 +8,7 @@ Uses Debian's python3-matplotlib.
     scripts/plot_occluders.py BENCH_DIR OUT_DIR      # writes OUT_DIR/occluders_scaling.png
 
 The numbers behind it (and the crossover) are computed by occluder_rows() and crossover() here, which
-scripts/write_report.py imports for docs/performance.md."""
+scripts/report/occluders.py imports for docs/performance.md."""
 import json
 import math
 import re
@@ -18,7 +18,7 @@ from pathlib import Path
 
 
 def boxes(r):
-    """The scene's box count: occluders_<N> is N boxes on a floor (scripts/make_occluder_scenes.py)."""
+    """The scene's box count: occluders_<N> is N boxes on a floor (tools/make_scenes/make_occluder_scenes.py)."""
     m = re.search(r"occluders_(\d+)$", r["scene"])
     return int(m.group(1)) if m else r.get("occluders", 0)
 

@@ -1,7 +1,7 @@
-// The hard-case suite (scenes/hard, made by tools/make_hard_cases.py): every case, every method, at
-// 64x36 with the balanced profile, against the float64 reference with exact visibility. Each must
-// give finite pixels and stay within the bound docs/performance.md states for it (mean relative
-// error of Lin, sum |a - b| / sum |b|); thin media within 1% of float64.
+// The hard-case suite (scenes/hard, made by tools/make_scenes/make_hard_cases.py): every case,
+// every method, at 64x36 with the balanced profile, against the float64 reference with exact
+// visibility. Each must give finite pixels and stay within the bound docs/performance.md states for
+// it (mean relative error of Lin, sum |a - b| / sum |b|); thin media within 1% of float64.
 #include <gtest/gtest.h>
 
 #include <cmath>

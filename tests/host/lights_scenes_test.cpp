@@ -1,7 +1,7 @@
-// The light-count scaling scenes (scenes/atrium_spots_N, scripts/make_lights_scenes.py): the
-// generator writes the shipped files byte for byte, and each is the atrium under N shadowed spots
-// with the atrium's own camera and medium, so the benchmark's rows differ in the lights alone. No
-// GPU.
+// The light-count scaling scenes (scenes/atrium_spots_N, tools/make_scenes/make_lights_scenes.py):
+// the generator writes the shipped files byte for byte, and each is the atrium under N shadowed
+// spots with the atrium's own camera and medium, so the benchmark's rows differ in the lights
+// alone. No GPU.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -37,12 +37,14 @@ TEST(LightsScenes, TheGeneratorWritesTheShippedFiles) {
         fs::temp_directory_path() / ("ls_lights_scenes_" + std::to_string(::getpid()));
     fs::create_directories(dir);
     const std::string command = "/usr/bin/python3 " + std::string(LS_SOURCE_DIR) +
-                                "/scripts/make_lights_scenes.py " + dir.string() + " > /dev/null";
+                                "/tools/make_scenes/make_lights_scenes.py " + dir.string() +
+                                " > /dev/null";
     ASSERT_EQ(std::system(command.c_str()), 0) << command;
     for (size_t count : kCounts) {
         const std::string name = "atrium_spots_" + std::to_string(count) + ".json";
         EXPECT_EQ(readAll(dir / name), readAll(fs::path(LS_SOURCE_DIR) / "scenes" / name))
-            << name << " differs from what scripts/make_lights_scenes.py writes: regenerate it";
+            << name
+            << " differs from what tools/make_scenes/make_lights_scenes.py writes: regenerate it";
     }
     fs::remove_all(dir);
 }

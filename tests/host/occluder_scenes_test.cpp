@@ -1,8 +1,8 @@
-// The occluder-scaling scenes (scenes/occluders_N, scripts/make_occluder_scenes.py): they load,
-// give the beam tree N boxes and the floor, none of whose world bounds touch (seed 004's assumption
-// of its boxes), the generator writes the shipped files byte for byte, and the tree of the 1000-box
-// field needs more triangles than the plugin's first triangle buffer holds (so the GPU test of that
-// scene exercises its growth). No GPU.
+// The occluder-scaling scenes (scenes/occluders_N, tools/make_scenes/make_occluder_scenes.py): they
+// load, give the beam tree N boxes and the floor, none of whose world bounds touch (seed 004's
+// assumption of its boxes), the generator writes the shipped files byte for byte, and the tree of
+// the 1000-box field needs more triangles than the plugin's first triangle buffer holds (so the GPU
+// test of that scene exercises its growth). No GPU.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -86,14 +86,16 @@ TEST(OccluderScenes, TheGeneratorWritesTheShippedFiles) {
         fs::temp_directory_path() / ("ls_occluder_scenes_" + std::to_string(::getpid()));
     fs::create_directories(dir);
     const std::string command = "/usr/bin/python3 " + std::string(LS_SOURCE_DIR) +
-                                "/scripts/make_occluder_scenes.py " + dir.string() + " > /dev/null";
+                                "/tools/make_scenes/make_occluder_scenes.py " + dir.string() +
+                                " > /dev/null";
     ASSERT_EQ(std::system(command.c_str()), 0) << command;
     for (int count : kCounts)
         for (const char* ext : {".json", ".gltf", ".bin"}) {
             const std::string name = "occluders_" + std::to_string(count) + ext;
             EXPECT_EQ(readAll(dir / name), readAll(fs::path(LS_SOURCE_DIR) / "scenes" / name))
                 << name
-                << " differs from what scripts/make_occluder_scenes.py writes: regenerate it";
+                << " differs from what tools/make_scenes/make_occluder_scenes.py writes: "
+                   "regenerate it";
         }
     fs::remove_all(dir);
 }

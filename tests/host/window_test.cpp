@@ -45,8 +45,9 @@ TEST(Window, OpensRendersResizesAndShowsTheScene) {
     EXPECT_GT(levels, 40);
 }
 
-// The window's tone mapping (shaders/host/tonemap.frag) at an exposure that puts every lit pixel
-// far beyond 1e19: the ACES fit used to overflow there to NaN, which the swapchain stores as black.
+// The window's tone mapping (host_example/shaders/tonemap.frag) at an exposure that puts every lit
+// pixel far beyond 1e19: the ACES fit used to overflow there to NaN, which the swapchain stores as
+// black.
 TEST(Window, VeryBrightPixelsStayWhite) {
     ASSERT_EQ(std::system("command -v xvfb-run > /dev/null"), 0)
         << "xvfb-run is missing (Debian package xvfb)";

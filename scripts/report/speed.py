@@ -1,7 +1,7 @@
 """The speed side of docs/performance.md at a real screen size: the timing run's rows with the error
 run's errors merged in, where epipolar's time goes (per pass), the screen size where it overtakes
 brute force, the min/max trees on and off at high quality, and seed 000's own size. Every figure is
-read from `lightscatter bench` results; write_report.py places the sections."""
+read from `lightscatter bench` results; page.py places the sections."""
 import json
 import math
 from pathlib import Path

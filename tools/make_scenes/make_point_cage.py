@@ -7,7 +7,7 @@ down onto the floor, sideways and towards the camera, which stands outside. The 
 shadow map (shadowMapSize), which brute-force samples face by face; the cage's bars cross every
 face of the cube and the seams between faces. Deterministic; standard library only.
 
-    python3 scripts/make_point_cage.py [OUT_DIR]
+    python3 tools/make_scenes/make_point_cage.py [OUT_DIR]
 
 OUT_DIR defaults to the repository's scenes/. Do not edit the generated files by hand.
 """
@@ -78,7 +78,7 @@ def scene_document():
 def main():
     here = os.path.dirname(os.path.abspath(__file__))
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("out", nargs="?", default=os.path.join(here, "..", "scenes"))
+    parser.add_argument("out", nargs="?", default=os.path.join(here, "..", "..", "scenes"))
     args = parser.parse_args()
     os.makedirs(args.out, exist_ok=True)
     data, vertex_count, index_count = cube_buffer()

@@ -5,7 +5,7 @@ a grille of bars, a box) in hard_cases.gltf, a city of boxes 20 km deep in hard_
 positions use the same camera and Vulkan projection as the host, for the suite's 16:9 screens.
 Standard library only.
 
-    /usr/bin/python3 tools/make_hard_cases.py scenes/hard
+    /usr/bin/python3 tools/make_scenes/make_hard_cases.py scenes/hard
 """
 import base64
 import json
@@ -124,7 +124,7 @@ def cage_camera(distance=2.7, elevation=3.0):
 
 
 def cage_bars():
-    """(centre, half size) of every bar of the cage, as scripts/make_point_cage.py builds its cage."""
+    """(centre, half size) of every bar of the cage, as tools/make_scenes/make_point_cage.py builds its cage."""
     lx, ly, lz = CAGE_CENTER
     h, b = CAGE_HALF, CAGE_BAR
     bars = []

@@ -9,7 +9,7 @@ scenes measure the cost of N lights (bench/lights_scaling.json). Each spot is as
 (400/250/120 or 120/250/400 W/sr, atrium_lights' two spots), so scene N + 1 adds a light to scene N.
 Deterministic; standard library only.
 
-    python3 scripts/make_lights_scenes.py [OUT_DIR] [--counts 1,2,4,8]
+    python3 tools/make_scenes/make_lights_scenes.py [OUT_DIR] [--counts 1,2,4,8]
 
 OUT_DIR defaults to the repository's scenes/. The glTF is the atrium's (not copied: OUT_DIR must
 hold atrium.gltf for the scenes to load). Do not edit the generated files by hand.
@@ -49,7 +49,7 @@ def scene_document(atrium, count):
 
 def main():
     here = os.path.dirname(os.path.abspath(__file__))
-    scenes = os.path.join(here, "..", "scenes")
+    scenes = os.path.join(here, "..", "..", "scenes")
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("out", nargs="?", default=scenes)
     parser.add_argument("--counts", default=",".join(str(c) for c in COUNTS),

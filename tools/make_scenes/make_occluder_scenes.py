@@ -7,7 +7,7 @@ by a camera looking across the field. Seed 004's beam tree gets one occluder per
 the N boxes and the floor, N + 1 in all. The field covers the same 16 m x 16 m for every N, so the
 boxes get smaller as N grows. Deterministic (a fixed seed); standard library only.
 
-    python3 scripts/make_occluder_scenes.py [OUT_DIR] [--counts 1,10,100,1000]
+    python3 tools/make_scenes/make_occluder_scenes.py [OUT_DIR] [--counts 1,10,100,1000]
 
 OUT_DIR defaults to the repository's scenes/. Do not edit the generated files by hand.
 """
@@ -91,7 +91,7 @@ def scene_document(name):
 def main():
     here = os.path.dirname(os.path.abspath(__file__))
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("out", nargs="?", default=os.path.join(here, "..", "scenes"))
+    parser.add_argument("out", nargs="?", default=os.path.join(here, "..", "..", "scenes"))
     parser.add_argument("--counts", default=",".join(str(c) for c in COUNTS),
                         help="comma-separated box counts (default 1,10,100,1000)")
     args = parser.parse_args()

@@ -1,22 +1,17 @@
 #!/usr/bin/python3
 """The 'Temporal stability' section of docs/performance.md, from a `lightscatter bench` run of
-bench/flicker.json (rows with "motion" and "flicker"). scripts/write_report.py imports it; run on its
-own it prints the section:
-
-    scripts/report_flicker.py BENCH_DIR [IMAGE_DIR]
-
-With IMAGE_DIR, the flicker heat maps of epipolar (balanced) and brute force are copied there for
-the page (docs/performance)."""
+bench/flicker.json (rows with "motion" and "flicker"). `scripts/write_report.py --flicker-section
+BENCH_DIR [PAGE.md]` prints it or splices it into the page; with the page, the flicker heat maps of
+epipolar (balanced) and brute force are copied beside it (docs/performance)."""
 import json
 import math
 import os
 import re
 import shutil
-import sys
 from datetime import date
 from pathlib import Path
 
-from write_report import fmt
+from .common import fmt
 
 FLICKER_HEADING = "## Temporal stability"
 
@@ -259,7 +254,3 @@ def flicker_section(bench_dir, image_dir=None):
                     p(f"| {scene} | {what} | {cells[0]} | {cells[1]} |")
             p("")
     return out
-
-
-if __name__ == "__main__":
-    print("\n".join(flicker_section(Path(sys.argv[1]), sys.argv[2] if len(sys.argv) > 2 else None)))

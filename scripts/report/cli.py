@@ -1,0 +1,93 @@
+"""The command line of scripts/write_report.py:
+
+    write_report.py BENCH HARD CONFIG [SLICES OCCLUDERS LIGHTS_SCALING LIGHTS FLICKER ERRORS TREES SEED]
+        the whole page, on stdout (scripts/make-report.sh runs it; an empty folder argument leaves
+        its section out)
+    write_report.py --NAME-section DIR... [PAGE.md]
+        one section alone, on stdout, or spliced into PAGE.md in place (the rest of the page is
+        left as it is)"""
+import argparse
+from pathlib import Path
+
+from . import flicker
+from .common import splice_section
+from .gpu import GPU_HEADING, gpu_section
+from .lights import LIGHTS_HEADING, lights_section
+from .occluders import OCCLUDERS_HEADING, occluders_section
+from .page import page_lines
+from .slices import slices_section
+
+
+def flicker_lines(dirs, page):
+    # Its heat maps go beside the page.
+    image_dir = page.parent / "performance" if page else None
+    return flicker.flicker_section(dirs[0], image_dir), flicker.FLICKER_HEADING
+
+
+def slices_lines(dirs, page):
+    lines = slices_section(dirs[0])
+    return lines, lines[0].rstrip("\n")
+
+
+# --NAME-section: (its result folders, what they are, the section's lines and heading).
+SECTIONS = {
+    "gpu": (("GPU_DIR",), "scripts/gpu-bench.sh run's OUT",
+            lambda dirs, page: (gpu_section(dirs[0]), GPU_HEADING)),
+    "flicker": (("FLICKER_DIR",), "a bench run of bench/flicker.json", flicker_lines),
+    "occluders": (("OCCLUDERS_DIR",), "a bench run of bench/occluders.json",
+                  lambda dirs, page: (occluders_section(dirs[0]), OCCLUDERS_HEADING)),
+    "lights": (("SCALING_DIR", "LIGHTS_DIR"), "bench runs of bench/lights_scaling.json and bench/lights.json",
+               lambda dirs, page: (lights_section(dirs[0], dirs[1]), LIGHTS_HEADING)),
+    "slices": (("SLICES_DIR",), "a bench run of bench/slices.json", slices_lines),
+}
+
+# The whole page's optional result folders, in their order on the command line.
+PAGE_FOLDERS = (("slices", "bench/slices.json"), ("occluders", "bench/occluders.json"),
+                ("lights_scaling", "bench/lights_scaling.json"), ("lights", "bench/lights.json"),
+                ("flicker", "bench/flicker.json"),
+                ("errors", "the main configuration's error run (one frame each), merged into BENCH's rows"),
+                ("trees", "bench/trees.json"), ("seed", "bench/seed_size.json"))
+
+
+def parser():
+    p = argparse.ArgumentParser(prog="scripts/write_report.py", description=__doc__,
+                                formatter_class=argparse.RawDescriptionHelpFormatter)
+    one = p.add_mutually_exclusive_group()
+    for name, (folders, what, _) in SECTIONS.items():
+        one.add_argument(f"--{name}-section", nargs="+", metavar="DIR",
+                         help=f"{' '.join(folders)} [PAGE.md]: {what}")
+    p.add_argument("bench", nargs="?", metavar="BENCH",
+                   help="the main bench run (bench.json and budget.json; scripts/make-report.sh)")
+    p.add_argument("hard", nargs="?", metavar="HARD", help="a bench run of bench/hard.json")
+    p.add_argument("config", nargs="?", metavar="CONFIG", help="the main run's configuration, as named on the page")
+    for name, what in PAGE_FOLDERS:
+        p.add_argument(name, nargs="?", default="", metavar=name.upper(), help=f"{what} (empty: none)")
+    return p
+
+
+def main(argv=None):
+    p = parser()
+    args = p.parse_args(argv)
+    for name, (folders, _, make) in SECTIONS.items():
+        given = getattr(args, f"{name}_section")
+        if given is None:
+            continue
+        if args.bench is not None:
+            p.error(f"--{name}-section takes no other folders")
+        if not len(folders) <= len(given) <= len(folders) + 1:
+            p.error(f"--{name}-section takes {' '.join(folders)} [PAGE.md]")
+        dirs = [Path(d) for d in given[:len(folders)]]
+        page = Path(given[len(folders)]) if len(given) > len(folders) else None
+        lines, heading = make(dirs, page)
+        if page:
+            page.write_text(splice_section(page.read_text(), heading, lines))
+        else:
+            print("\n".join(lines))
+        return 0
+    if args.config is None:
+        p.error("the whole page needs BENCH, HARD and CONFIG (or one --NAME-section)")
+    folders = {name: Path(getattr(args, name)) if getattr(args, name) else None for name, _ in PAGE_FOLDERS}
+    print("\n".join(page_lines(Path(args.bench), Path(args.hard), args.config,
+                               **{f"{name}_dir": d for name, d in folders.items()})))
+    return 0
+

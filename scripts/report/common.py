@@ -1,0 +1,67 @@
+"""Pieces every section of docs/performance.md shares: the number format, seed 000's published
+figures, the load-average note, and splicing a section into the page."""
+import os
+import re
+from pathlib import Path
+
+# Seed 000, "Performance": GeForce GTX 680 at 2560x1600, spot light (time ms, memory MB).
+SEED = {"brute-force": (91.18, None), "high-quality": (5.986, 88.0), "balanced": (3.269, 44.0),
+        "high-performance": (2.267, 18.0)}
+
+
+def fmt(x, digits=3):
+    if x is None:
+        return "-"
+    if x == 0:
+        return "0"
+    if abs(x) >= 100:
+        return f"{x:.0f}"
+    return f"{x:.{digits}g}"
+
+
+
+def load_note(bench_dir):
+    """A sentence on the machine's load average around a timing run (load-before.txt and
+    load-after.txt, `uptime` written by scripts/make-report.sh), or None without them: on a CPU
+    device the timings share the cores with whatever else runs."""
+    loads, worst = [], 0.0
+    for when in ("before", "after"):
+        f = Path(bench_dir) / f"load-{when}.txt"
+        m = re.search(r"load average: ([\d.]+), ([\d.]+), ([\d.]+)", f.read_text()) if f.exists() else None
+        if m:
+            loads.append(f"{m.group(1)} {when} the run" + (" (the run's own threads included)" if when == "after" else ""))
+            if when == "before":
+                worst = float(m.group(1))
+    if not loads:
+        return None
+    cores = os.cpu_count() or 1
+    busy = ("other work shared the CPU, so treat single figures as rough; the trend over the counts is "
+            "what to read" if worst > 0.5 * cores else "little else ran")
+    return f"The machine's load average (1 minute) was {' and '.join(loads)}, on {cores} cores: {busy}."
+
+
+
+def splice_section(page, heading, lines, before="## Scaling"):
+    """`page` (Markdown) with the section starting at `heading` replaced by `lines`, up to the next
+    '## ' heading; inserted before the `before` heading if the page has none yet."""
+    text = page.split("\n")
+    section = "\n".join(lines).rstrip("\n").split("\n") + [""]
+    if heading in text:
+        start = text.index(heading)
+        end = next((i for i in range(start + 1, len(text)) if text[i].startswith("## ")), len(text))
+        return "\n".join(text[:start] + section + text[end:])
+    at = text.index(before) if before in text else len(text)
+    return "\n".join(text[:at] + section + text[at:])
+
+
+
+def kept_section(page_text, heading):
+    """The section at `heading` of the page as it was (up to the next '## '), for a section whose
+    results this run does not have: it stays as last measured, with its own date and command."""
+    text = page_text.split("\n")
+    if heading not in text:
+        return []
+    start = text.index(heading)
+    end = next((i for i in range(start + 1, len(text)) if text[i].startswith("## ")), len(text))
+    return text[start:end]
+
