@@ -11,6 +11,7 @@
 #include "rendergraph/device_caps_vulkan.h"
 #include "rendergraph/executor.h"
 #include "rendergraph/host_buffer.h"
+#include "rendergraph/image_readback.h"
 #include "rendergraph/owned_image.h"
 #include "rendergraph/pipeline.h"
 #include "rendergraph/vk_error.h"
@@ -47,19 +48,7 @@ rg::ImportedImage engineColor(VkImage image, VkExtent2D size) {
 // The engine's own use after the graph: a copy from TRANSFER_SRC_OPTIMAL into `host`, read on the CPU.
 void copyToHost(const rg::Device& dev, VkImage image, VkExtent2D size, rg::HostBuffer& host) {
     dev.submitAndWait([&](VkCommandBuffer cmd) {
-        VkBufferImageCopy region{};
-        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        region.imageExtent = {size.width, size.height, 1};
-        vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, host.buffer(), 1, &region);
-        VkMemoryBarrier2 toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-        toHost.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
-        toHost.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-        toHost.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-        toHost.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-        VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-        dep.memoryBarrierCount = 1;
-        dep.pMemoryBarriers = &toHost;
-        vkCmdPipelineBarrier2(cmd, &dep);
+        rg::recordReadback(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, size, host.buffer());
     });
 }
 
@@ -295,20 +284,8 @@ TEST_F(ImportsGpu, SixLayerDepthImageIsTransitionedWhole) {
 
             // The engine's next use, after the graph's last barrier: a copy of every layer.
             dev().submitAndWait([&](VkCommandBuffer cmd) {
-                VkBufferImageCopy region{};
-                region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, kLayers};
-                region.imageExtent = {size.width, size.height, 1};
-                vkCmdCopyImageToBuffer(cmd, depth.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                                       copied.buffer(), 1, &region);
-                VkMemoryBarrier2 toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-                toHost.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
-                toHost.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-                toHost.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-                toHost.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-                VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-                dep.memoryBarrierCount = 1;
-                dep.pMemoryBarriers = &toHost;
-                vkCmdPipelineBarrier2(cmd, &dep);
+                rg::recordReadback(cmd, depth.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, size,
+                                   copied.buffer(), VK_IMAGE_ASPECT_DEPTH_BIT, kLayers);
             });
             const auto* texels = static_cast<const float*>(copied.data());
             for (uint32_t layer = 0; layer < kLayers; ++layer)
