@@ -12,6 +12,7 @@
 #include "mesh_vert.h"
 #include "rendergraph/device_caps_vulkan.h"
 #include "rendergraph/host_buffer.h"
+#include "rendergraph/image_readback.h"
 #include "rendergraph/pipeline.h"
 #include "rendergraph/report.h"
 #include "rendergraph/vk_error.h"
@@ -547,25 +548,13 @@ FrameOutput EngineRenderer::render(const RenderOptions& options) {
         d.pImageMemoryBarriers = b;
         vkCmdPipelineBarrier2(cmd_, &d);
     };
-    VkBufferImageCopy region{};
-    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.imageExtent = {size_.width, size_.height, 1};
-    vkCmdCopyImageToBuffer(cmd_, color_->image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                           colorBuffer.buffer(), 1, &region);
-    vkCmdCopyImageToBuffer(cmd_, inscatter_->image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                           linBuffer.buffer(), 1, &region);
+    rg::recordReadback(cmd_, color_->image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, size_,
+                       colorBuffer.buffer());
+    rg::recordReadback(cmd_, inscatter_->image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, size_,
+                       linBuffer.buffer());
     transition(VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
                VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
                VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT);
-    VkMemoryBarrier2 toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-    toHost.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
-    toHost.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-    toHost.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-    toHost.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    dep.memoryBarrierCount = 1;
-    dep.pMemoryBarriers = &toHost;
-    vkCmdPipelineBarrier2(cmd_, &dep);
     RG_VK(vkEndCommandBuffer(cmd_));
     device_.submitAndWait(cmd_, fence_);
 

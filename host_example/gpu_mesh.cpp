@@ -14,22 +14,10 @@ VkBuffer GpuMesh::makeBuffer(VkDeviceSize size, VkBufferUsageFlags usage, const 
     VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
     info.size = std::max<VkDeviceSize>(size, 4);
     info.usage = usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-    VkBuffer buffer;
-    RG_VK(vkCreateBuffer(device_.device(), &info, nullptr, &buffer));
-    device_.setName(buffer, VK_OBJECT_TYPE_BUFFER, name);
-    VkMemoryRequirements req;
-    vkGetBufferMemoryRequirements(device_.device(), buffer, &req);
-    try {
-        const uint32_t type = device_.findMemoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-        const std::string what = "buffer '" + name + "'";
-        memory = rg::allocateDeviceMemory(device_, req.size, type, what);
-        rg::checkBind(device_, vkBindBufferMemory(device_.device(), buffer, memory, 0), "vkBindBufferMemory",
-                      req.size, type, what);
-    } catch (...) {
-        vkDestroyBuffer(device_.device(), buffer, nullptr);
-        throw;
-    }
-    return buffer;
+    const rg::BoundBuffer b = rg::createBoundBuffer(
+        device_, info, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, name, "buffer '" + name + "'");
+    memory = b.memory;
+    return b.buffer;
 }
 
 GpuMesh::GpuMesh(const rg::Device& device, const MeshData& mesh) : device_(device) {

@@ -6,6 +6,7 @@
 #include "block_occupants.h"
 #include "compile.h"
 #include "format_info.h"
+#include "import_barriers.h"
 
 namespace rg::detail {
 namespace {
@@ -162,14 +163,10 @@ void deriveSync(const RenderGraph& graph, CompiledGraph& out) {
         const auto& r = decls[id];
         if (!r.imported) continue;
         auto& s = state[id];
-        if (r.buffer) {
-            s.writeStages = r.importedBuffer.initialStages;
-            s.writeAccess = r.importedBuffer.initialAccess & kWriteAccess;
-        } else {
-            s.layout = r.importedImage.initialLayout;
-            s.writeStages = r.importedImage.initialStages;
-            s.writeAccess = r.importedImage.initialAccess & kWriteAccess;
-        }
+        const ImportEnd start = importStart(r);
+        s.layout = start.layout;
+        s.writeStages = start.stages;
+        s.writeAccess = start.access & kWriteAccess;
         s.touched = true;
     }
 
@@ -300,14 +297,7 @@ void deriveSync(const RenderGraph& graph, CompiledGraph& out) {
         b.srcStages = s.writeStages | s.readStages;
         b.srcAccess = s.writeAccess;
         b.oldLayout = s.layout;
-        if (r.buffer) {
-            b.dstStages = r.importedBuffer.finalStages;
-            b.dstAccess = r.importedBuffer.finalAccess;
-        } else {
-            b.newLayout = r.importedImage.finalLayout;
-            b.dstStages = r.importedImage.finalStages;
-            b.dstAccess = r.importedImage.finalAccess;
-        }
+        handBackImport(b, r);
         if (!out.resources[id].used && b.oldLayout == b.newLayout) continue;
         out.finalBarriers.push_back(b);
         out.resources[id].lastLayout = r.buffer ? VK_IMAGE_LAYOUT_UNDEFINED : s.layout;

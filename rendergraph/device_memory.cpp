@@ -24,6 +24,24 @@ std::string deviceHas(const Device& device, uint32_t memoryType) {
                             deviceHas(device, memoryType) + " (" + why + ")");
 }
 
+// Memory for `req` of a type with `properties`, named for `name` and bound by `bind` (a
+// vkBind*Memory call, named `call`); freed again when the bind fails.
+template <class Bind>
+VkDeviceMemory allocateAndBind(const Device& device, const VkMemoryRequirements& req,
+                               VkMemoryPropertyFlags properties, const std::string& name,
+                               const std::string& what, const char* call, Bind bind) {
+    const uint32_t type = device.findMemoryType(req.memoryTypeBits, properties);
+    const VkDeviceMemory memory = allocateDeviceMemory(device, req.size, type, what);
+    try {
+        device.setName(memory, VK_OBJECT_TYPE_DEVICE_MEMORY, name + " memory");
+        checkBind(device, bind(memory), call, req.size, type, what);
+    } catch (...) {
+        vkFreeMemory(device.device(), memory, nullptr);
+        throw;
+    }
+    return memory;
+}
+
 }  // namespace
 
 std::string bytesText(VkDeviceSize bytes) {
@@ -87,6 +105,46 @@ void checkImageLimits(const Device& device, VkExtent2D extent, uint32_t layers,
         throw VulkanError(what + " has " + std::to_string(layers) +
                           " layers: the device takes at most " +
                           std::to_string(l.maxImageArrayLayers) + " (maxImageArrayLayers)");
+}
+
+BoundBuffer createBoundBuffer(const Device& device, const VkBufferCreateInfo& info,
+                              VkMemoryPropertyFlags properties, const std::string& name,
+                              const std::string& what) {
+    BoundBuffer b;
+    RG_VK_CREATE(vkCreateBuffer(device.device(), &info, nullptr, &b.buffer));
+    try {
+        device.setName(b.buffer, VK_OBJECT_TYPE_BUFFER, name);
+        VkMemoryRequirements req;
+        vkGetBufferMemoryRequirements(device.device(), b.buffer, &req);
+        b.memory = allocateAndBind(
+            device, req, properties, name, what, "vkBindBufferMemory",
+            [&](VkDeviceMemory m) { return vkBindBufferMemory(device.device(), b.buffer, m, 0); });
+        b.bytes = req.size;
+    } catch (...) {
+        vkDestroyBuffer(device.device(), b.buffer, nullptr);
+        throw;
+    }
+    return b;
+}
+
+BoundImage createBoundImage(const Device& device, const VkImageCreateInfo& info,
+                            VkMemoryPropertyFlags properties, const std::string& name,
+                            const std::string& what) {
+    BoundImage b;
+    RG_VK_CREATE(vkCreateImage(device.device(), &info, nullptr, &b.image));
+    try {
+        device.setName(b.image, VK_OBJECT_TYPE_IMAGE, name);
+        VkMemoryRequirements req;
+        vkGetImageMemoryRequirements(device.device(), b.image, &req);
+        b.memory = allocateAndBind(
+            device, req, properties, name, what, "vkBindImageMemory",
+            [&](VkDeviceMemory m) { return vkBindImageMemory(device.device(), b.image, m, 0); });
+        b.bytes = req.size;
+    } catch (...) {
+        vkDestroyImage(device.device(), b.image, nullptr);
+        throw;
+    }
+    return b;
 }
 
 }  // namespace rg

@@ -31,4 +31,28 @@ void checkBind(const Device& device, VkResult result, const char* call, VkDevice
 void checkImageLimits(const Device& device, VkExtent2D extent, uint32_t layers,
                       const std::string& what);
 
+// A buffer or an image with memory of its own, bound at offset 0.
+struct BoundBuffer {
+    VkBuffer buffer = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    VkDeviceSize bytes = 0;  // of the memory
+};
+struct BoundImage {
+    VkImage image = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    VkDeviceSize bytes = 0;
+};
+
+// The one way a buffer or an image is created with memory of its own: created from `info`, named
+// `name` (its memory "`name` memory"), given memory of a type with `properties` and bound. Fails
+// like allocateDeviceMemory and checkBind, naming `what`, and then leaves nothing behind; the
+// creation and the allocation are fault points of fault_injection.h. The memory is not counted by
+// deviceMemoryInUse(): owners that count do so themselves.
+BoundBuffer createBoundBuffer(const Device& device, const VkBufferCreateInfo& info,
+                              VkMemoryPropertyFlags properties, const std::string& name,
+                              const std::string& what);
+BoundImage createBoundImage(const Device& device, const VkImageCreateInfo& info,
+                            VkMemoryPropertyFlags properties, const std::string& name,
+                            const std::string& what);
+
 }  // namespace rg

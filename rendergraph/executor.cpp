@@ -5,9 +5,10 @@
 
 #include "compile.h"
 #include "device_memory.h"
-#include "format_info.h"
-#include "memory_counter.h"
 #include "fault_injection.h"
+#include "format_info.h"
+#include "import_barriers.h"
+#include "memory_counter.h"
 #include "vk_error.h"
 
 namespace rg {
@@ -441,14 +442,7 @@ uint64_t GraphExecutor::record(VkCommandBuffer cmd, uint64_t frame) {
         for (auto& b : plan.barriers) {
             const ResourceDecl& r = graph_.resource(b.resource);
             if (!r.imported || compiled_.resources[b.resource].firstPass != pos) continue;
-            if (r.buffer) {
-                b.srcStages = r.importedBuffer.initialStages;
-                b.srcAccess = r.importedBuffer.initialAccess;
-            } else {
-                b.srcStages = r.importedImage.initialStages;
-                b.srcAccess = r.importedImage.initialAccess;
-                b.oldLayout = r.importedImage.initialLayout;
-            }
+            detail::waitOnImport(b, r);
         }
     }
     for (uint32_t pos = 0; pos < compiled_.passes.size(); ++pos) recordPass(cmd, pos);
@@ -456,19 +450,10 @@ uint64_t GraphExecutor::record(VkCommandBuffer cmd, uint64_t frame) {
     for (auto& b : finals) {
         const ResourceDecl& r = graph_.resource(b.resource);
         if (compiled_.resources[b.resource].used) {
-            if (r.buffer) {
-                b.dstStages = r.importedBuffer.finalStages;
-                b.dstAccess = r.importedBuffer.finalAccess;
-            } else {
-                b.dstStages = r.importedImage.finalStages;
-                b.dstAccess = r.importedImage.finalAccess;
-                b.newLayout = r.importedImage.finalLayout;
-            }
+            detail::handBackImport(b, r);
         } else if (!r.buffer) {
-            b.srcStages = r.importedImage.initialStages;
-            b.srcAccess = r.importedImage.initialAccess;
-            b.oldLayout = r.importedImage.initialLayout;
-            b.newLayout = r.importedImage.finalLayout;
+            detail::waitOnImport(b, r);
+            b.newLayout = detail::importFinish(r).layout;
         }
     }
     recordBarriers(cmd, finals);

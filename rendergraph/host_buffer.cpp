@@ -1,7 +1,6 @@
 #include "host_buffer.h"
 
 #include "device_memory.h"
-#include "fault_injection.h"
 #include "memory_counter.h"
 #include "vk_error.h"
 
@@ -14,24 +13,18 @@ HostBuffer::HostBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFla
     info.size = size;
     info.usage = usage;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    RG_VK_CREATE(vkCreateBuffer(device_, &info, nullptr, &buffer_));
-    device.setName(buffer_, VK_OBJECT_TYPE_BUFFER, name);
-    VkMemoryRequirements req;
-    vkGetBufferMemoryRequirements(device_, buffer_, &req);
-    const std::string what = "host-visible buffer '" + name + "'";
+    const BoundBuffer bound = createBoundBuffer(
+        device, info, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
+        name, "host-visible buffer '" + name + "'");
+    buffer_ = bound.buffer;
+    memory_ = bound.memory;
+    memoryBytes_ = bound.bytes;
+    detail::countDeviceMemory(memoryBytes_);
     try {
-        const uint32_t type = device.findMemoryType(
-            req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-        memory_ = allocateDeviceMemory(device, req.size, type, what);
-        memoryBytes_ = req.size;
-        detail::countDeviceMemory(memoryBytes_);
-        device.setName(memory_, VK_OBJECT_TYPE_DEVICE_MEMORY, name + " memory");
-        checkBind(device, vkBindBufferMemory(device_, buffer_, memory_, 0), "vkBindBufferMemory", req.size, type,
-                  what);
         RG_VK(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
     } catch (...) {
         detail::uncountDeviceMemory(memoryBytes_);
-        if (memory_) vkFreeMemory(device_, memory_, nullptr);
+        vkFreeMemory(device_, memory_, nullptr);
         vkDestroyBuffer(device_, buffer_, nullptr);
         throw;
     }

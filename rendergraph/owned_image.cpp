@@ -1,10 +1,8 @@
 #include "owned_image.h"
 
 #include "device_memory.h"
-#include "fault_injection.h"
 #include "format_info.h"
 #include "memory_counter.h"
-#include "vk_error.h"
 
 namespace rg {
 
@@ -26,24 +24,12 @@ OwnedImage::OwnedImage(const rg::Device& device, VkFormat format, VkExtent2D ext
                              std::to_string(extent.height) + " " + formatName(format) +
                              (layers > 1 ? ", " + std::to_string(layers) + " layers" : "") + ")";
     checkImageLimits(device, extent, layers, "image '" + name + "'");
-    RG_VK_CREATE(vkCreateImage(device.device(), &info, nullptr, &image_));
-    device.setName(image_, VK_OBJECT_TYPE_IMAGE, name);
-    VkMemoryRequirements req;
-    vkGetImageMemoryRequirements(device.device(), image_, &req);
-    try {
-        const uint32_t type = device.findMemoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-        memory_ = allocateDeviceMemory(device, req.size, type, what);
-        memoryBytes_ = req.size;
-        detail::countDeviceMemory(memoryBytes_);
-        device.setName(memory_, VK_OBJECT_TYPE_DEVICE_MEMORY, name + " memory");
-        checkBind(device, vkBindImageMemory(device.device(), image_, memory_, 0), "vkBindImageMemory", req.size,
-                  type, what);
-    } catch (...) {
-        detail::uncountDeviceMemory(memoryBytes_);
-        if (memory_) vkFreeMemory(device.device(), memory_, nullptr);
-        vkDestroyImage(device.device(), image_, nullptr);
-        throw;
-    }
+    const BoundImage bound =
+        createBoundImage(device, info, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, name, what);
+    image_ = bound.image;
+    memory_ = bound.memory;
+    memoryBytes_ = bound.bytes;
+    detail::countDeviceMemory(memoryBytes_);
 }
 
 OwnedImage::~OwnedImage() {

@@ -308,126 +308,112 @@ class ConfigReader {
                 add(c, r);
             }
         }
-        // One-parameter sweeps from one profile (balanced unless sweepProfile says otherwise).
-        auto sweepRun = [&](const std::string& family, const std::string& label) {
-            BenchRun r = base;
-            r.family = family;
-            r.label = label;
-            r.custom = true;
-            r.settings = lightscatter::profileSettings(sweepProfile);
-            return r;
-        };
         constexpr uint32_t kMax = std::numeric_limits<uint32_t>::max();
         auto values = [&](const char* key) {
             return sweeps.contains(key) ? list(sweeps[key], std::string("sweeps.") + key)
                                         : json::array();
         };
-        for (const json& v : values("slices")) {
-            const uint32_t n = whole(v, "sweeps.slices[]", 0, kMax);
-            BenchRun r = sweepRun("slices", "slices=" + std::to_string(n));
-            r.settings.slices = n;
-            checkSettings(r, "sweeps.slices");
-            add(c, r);
-        }
-        for (const json& v : values("samples")) {
-            const uint32_t n = whole(v, "sweeps.samples[]", 0, kMax);
-            BenchRun r = sweepRun("samples", "samples=" + std::to_string(n));
-            r.settings.samplesPerSlice = n;
-            checkSettings(r, "sweeps.samples");
-            add(c, r);
-        }
-        for (const json& v : values("initialStep")) {
-            const uint32_t n = whole(v, "sweeps.initialStep[]", 0, kMax);
-            BenchRun r = sweepRun("initialStep", "initialStep=" + std::to_string(n));
-            r.settings.initialSampleStep = n;
-            checkSettings(r, "sweeps.initialStep");
-            add(c, r);
-        }
+        // One-parameter sweeps from one profile (balanced unless sweepProfile says otherwise):
+        // `read` checks each value of sweeps.<key> and calls emit(label, change) for each run it
+        // makes; with `checked`, the plugin's rules check the run's settings.
+        auto sweep = [&](const char* key, const char* family, bool checked, auto read) {
+            for (const json& v : values(key))
+                read(v, [&](const std::string& label, const auto& change) {
+                    BenchRun r = base;
+                    r.family = family;
+                    r.label = label;
+                    r.custom = true;
+                    r.settings = lightscatter::profileSettings(sweepProfile);
+                    change(r);
+                    if (checked) checkSettings(r, std::string("sweeps.") + key);
+                    add(c, r);
+                });
+        };
+        using Settings = lightscatter::Settings;
+        auto wholeSetting = [&](const char* key, uint32_t Settings::*field) {
+            sweep(key, key, true, [&](const json& v, auto emit) {
+                const uint32_t n = whole(v, std::string("sweeps.") + key + "[]", 0, kMax);
+                emit(std::string(key) + "=" + std::to_string(n),
+                     [&](BenchRun& r) { r.settings.*field = n; });
+            });
+        };
+        auto numberSetting = [&](const char* key, float Settings::*field) {
+            sweep(key, key, true, [&](const json& v, auto emit) {
+                if (!v.is_number())
+                    fail(std::string("sweeps.") + key + "[] = " + echo(v) + ": must be a number");
+                emit(std::string(key) + "=" + shortNumber(v.get<double>()),
+                     [&](BenchRun& r) { r.settings.*field = v.get<float>(); });
+            });
+        };
+        wholeSetting("slices", &Settings::slices);
+        wholeSetting("samples", &Settings::samplesPerSlice);
+        wholeSetting("initialStep", &Settings::initialSampleStep);
         // Epipolar's depth breaks: a smaller threshold marches more samples where the depth steps
         // a little (temporal stability: bench/flicker.json).
-        for (const json& v : values("refinementThreshold")) {
-            if (!v.is_number())
-                fail("sweeps.refinementThreshold[] = " + echo(v) + ": must be a number");
-            BenchRun r = sweepRun("refinementThreshold",
-                                  "refinementThreshold=" + shortNumber(v.get<double>()));
-            r.settings.refinementThreshold = v.get<float>();
-            checkSettings(r, "sweeps.refinementThreshold");
-            add(c, r);
-        }
+        numberSetting("refinementThreshold", &Settings::refinementThreshold);
         // Epipolar's refinement on in-scattering differences (0: off): the samples between two
         // marched ones that differ by more than this are marched too.
-        for (const json& v : values("inscatterRefinementThreshold")) {
-            if (!v.is_number())
-                fail("sweeps.inscatterRefinementThreshold[] = " + echo(v) + ": must be a number");
-            BenchRun r = sweepRun("inscatterRefinementThreshold",
-                                  "inscatterRefinementThreshold=" + shortNumber(v.get<double>()));
-            r.settings.inscatterRefinementThreshold = v.get<float>();
-            checkSettings(r, "sweeps.inscatterRefinementThreshold");
-            add(c, r);
-        }
-        for (const json& v : values("minMaxTrees")) {
+        numberSetting("inscatterRefinementThreshold", &Settings::inscatterRefinementThreshold);
+        sweep("minMaxTrees", "trees", false, [&](const json& v, auto emit) {
             if (!v.is_boolean())
                 fail("sweeps.minMaxTrees[] = " + echo(v) + ": must be true or false");
-            BenchRun r =
-                sweepRun("trees", std::string("minMaxTrees=") + (v.get<bool>() ? "on" : "off"));
-            r.settings.minMaxTrees = v.get<bool>();
-            add(c, r);
-        }
-        for (const json& v : values("shadowMapSize")) {
+            emit(std::string("minMaxTrees=") + (v.get<bool>() ? "on" : "off"),
+                 [&](BenchRun& r) { r.settings.minMaxTrees = v.get<bool>(); });
+        });
+        sweep("shadowMapSize", "shadowMapSize", false, [&](const json& v, auto emit) {
             const uint32_t n = whole(v, "sweeps.shadowMapSize[]", 1, 16384);
-            for (lightscatter::Method m : methods) {
-                BenchRun r = sweepRun("shadowMapSize", std::string(lightscatter::methodName(m)) +
-                                                           " shadowMap=" + std::to_string(n));
-                r.method = m;
-                r.shadowMapSize = n;
-                add(c, r);
-            }
-        }
+            for (lightscatter::Method m : methods)
+                emit(std::string(lightscatter::methodName(m)) + " shadowMap=" + std::to_string(n),
+                     [&](BenchRun& r) {
+                         r.method = m;
+                         r.shadowMapSize = n;
+                     });
+        });
         // Seed 003's comparison: cone-march with each sample count and mode (the cone-limited
         // march, the naive full-ray march, the cone-limited march without shadow-map sampling).
         const json counts = values("coneSamples"), modes = values("coneModes");
         if (!modes.empty() && counts.empty()) fail("sweeps.coneModes needs sweeps.coneSamples");
-        for (const json& n : counts) {
+        sweep("coneSamples", "cone", false, [&](const json& n, auto emit) {
             const uint32_t samples = whole(n, "sweeps.coneSamples[]", 1, 4096);
             for (const json& mode : modes.empty() ? json::array({"cone"}) : modes) {
                 const std::string m = mode.is_string() ? mode.get<std::string>() : echo(mode);
                 if (m != "cone" && m != "naive" && m != "no-shadow-sampling")
                     fail("sweeps.coneModes[] = " + echo(mode) +
                          ": must be cone, naive or no-shadow-sampling");
-                BenchRun r = sweepRun("cone", m + " " + std::to_string(samples));
-                r.method = lightscatter::Method::ConeMarch;
-                r.settings.coneSamples = samples;
-                r.settings.coneLimited = m != "naive";
-                r.settings.shadowSampling = m != "no-shadow-sampling";
-                add(c, r);
+                emit(m + " " + std::to_string(samples), [&](BenchRun& r) {
+                    r.method = lightscatter::Method::ConeMarch;
+                    r.settings.coneSamples = samples;
+                    r.settings.coneLimited = m != "naive";
+                    r.settings.shadowSampling = m != "no-shadow-sampling";
+                });
             }
-        }
+        });
         // Seed 002: the slices method with each plane count and accumulation target.
         const json planes = values("slicePlanes"), targets = values("sliceTargets");
         if (!targets.empty() && planes.empty())
             fail("sweeps.sliceTargets needs sweeps.slicePlanes");
-        for (const json& n : planes) {
+        sweep("slicePlanes", "planes", false, [&](const json& n, auto emit) {
             const uint32_t count = whole(n, "sweeps.slicePlanes[]", 2, 4096);
             for (const json& target : targets.empty() ? json::array({"float16"}) : targets) {
                 const std::string t = target.is_string() ? target.get<std::string>() : echo(target);
                 if (t != "float16" && t != "float32" && t != "rgba8" && t != "rgba8-dither")
                     fail("sweeps.sliceTargets[] = " + echo(target) +
                          ": must be float16, float32, rgba8 (the seed's rounding) or rgba8-dither");
-                BenchRun r = sweepRun("planes", "slices " + std::to_string(count) + " " + t);
-                r.method = lightscatter::Method::Slices;
-                r.settings.slicePlanes = count;
-                r.settings.sliceTarget = t == "float16" ? lightscatter::SliceTarget::Float16
-                                         : t == "float32"
-                                             ? lightscatter::SliceTarget::Float32
-                                             : lightscatter::SliceTarget::Rgba8Channels;
-                r.settings.sliceDither = t == "rgba8-dither";
-                add(c, r);
+                emit("slices " + std::to_string(count) + " " + t, [&](BenchRun& r) {
+                    r.method = lightscatter::Method::Slices;
+                    r.settings.slicePlanes = count;
+                    r.settings.sliceTarget = t == "float16" ? lightscatter::SliceTarget::Float16
+                                             : t == "float32"
+                                                 ? lightscatter::SliceTarget::Float32
+                                                 : lightscatter::SliceTarget::Rgba8Channels;
+                    r.settings.sliceDither = t == "rgba8-dither";
+                });
             }
-        }
+        });
         // Seed 004's simplified light model against the full one, for each method of the
         // configuration that honours it (beam-tree-analytic, analytic); both are measured against
         // the full model's float64 reference.
-        for (const json& v : values("lightModel")) {
+        sweep("lightModel", "lightModel", false, [&](const json& v, auto emit) {
             const std::string name = v.is_string() ? v.get<std::string>() : echo(v);
             if (name != "full" && name != "simplified")
                 fail("sweeps.lightModel[] = " + echo(v) + ": must be full or simplified");
@@ -437,28 +423,28 @@ class ConfigReader {
                     m != lightscatter::Method::Analytic)
                     continue;
                 any = true;
-                BenchRun r = sweepRun(
-                    "lightModel", std::string(lightscatter::methodName(m)) + " lightModel=" + name);
-                r.method = m;
-                r.settings.lightModel = name == "simplified" ? lightscatter::LightModel::Simplified
-                                                             : lightscatter::LightModel::Full;
-                add(c, r);
+                emit(std::string(lightscatter::methodName(m)) + " lightModel=" + name,
+                     [&](BenchRun& r) {
+                         r.method = m;
+                         r.settings.lightModel = name == "simplified"
+                                                     ? lightscatter::LightModel::Simplified
+                                                     : lightscatter::LightModel::Full;
+                     });
             }
             if (!any)
                 fail("sweeps.lightModel needs method beam-tree-analytic or analytic in methods");
-        }
-        for (const json& v : values("size")) {
+        });
+        sweep("size", "size", false, [&](const json& v, auto emit) {
             const VkExtent2D s = size(v, "sweeps.size[]");
-            for (lightscatter::Method m : methods) {
-                BenchRun r = sweepRun("size", std::string(lightscatter::methodName(m)) +
-                                                  " size=" + v.get<std::string>());
-                r.method = m;
-                r.size = s;
-                r.measureError = c.measureError && r.size.width == c.size.width &&
-                                 r.size.height == c.size.height;
-                add(c, r);
-            }
-        }
+            for (lightscatter::Method m : methods)
+                emit(std::string(lightscatter::methodName(m)) + " size=" + v.get<std::string>(),
+                     [&](BenchRun& r) {
+                         r.method = m;
+                         r.size = s;
+                         r.measureError = c.measureError && r.size.width == c.size.width &&
+                                          r.size.height == c.size.height;
+                     });
+        });
     }
 
     std::string path_, root_;

@@ -4,9 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <cstring>
 #include <functional>
 #include <optional>
@@ -586,25 +584,6 @@ TEST(ReferenceRenderer, ProgressRisesToOne) {
         renderReference(c.scene, c.mesh, 0, 0, c.options, [&](double f) { seen.push_back(f); });
     EXPECT_TRUE(empty.rgb.empty());
     EXPECT_EQ(seen, std::vector<double>{1.0});
-}
-
-// Not a test: times the shipped scenes at 96x54 with the default options. Run with
-// --gtest_also_run_disabled_tests --gtest_filter='*Timing*'.
-TEST(ReferenceRenderer, DISABLED_TimingOfShippedScenes) {
-    for (const char* name : {"window_room", "atrium"}) {
-        const host::SceneDesc scene =
-            host::loadSceneFile(std::string(LS_SOURCE_DIR) + "/scenes/" + name + ".json");
-        const host::MeshData mesh = host::loadSceneMeshes(scene);
-        const auto start = std::chrono::steady_clock::now();
-        const ReferenceImage image = renderReference(scene, mesh, 96, 54);
-        const double seconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        double sum = 0.0;
-        for (double v : image.rgb) sum += v;
-        std::printf("%s: 96x54 in %.2f s (%zu triangles, mean Lin %.6g)\n", name, seconds,
-                    host::reference::Bvh::fromMesh(mesh).triangles().size(),
-                    sum / static_cast<double>(image.rgb.size()));
-    }
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
 // loadSceneFile: every field, the defaults, path resolution, and each rule's one-line error.
+#include <gtest/gtest-spi.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -192,14 +193,31 @@ TEST_F(SceneFileTest, LoadSceneMeshesAppendsEveryModel) {
     expectVec3(m.bounds.max, {10.5f, 0.5f, 0.5f});
 }
 
-TEST_F(SceneFileTest, ShippedScenesLoad) {
-    const fs::path scenes = fs::path(LS_SOURCE_DIR) / "scenes";
-    if (!fs::exists(scenes)) GTEST_SKIP() << "no scenes/ folder in " << LS_SOURCE_DIR;
-    for (const auto& entry : fs::directory_iterator(scenes)) {
+// Every SCENE.json in `folder` loads with its meshes, and there is at least one: a folder with
+// none (or none at all) fails rather than passing on nothing.
+void expectScenesLoad(const fs::path& folder) {
+    ASSERT_TRUE(fs::is_directory(folder)) << folder << " is not a folder";
+    size_t loaded = 0;
+    for (const auto& entry : fs::directory_iterator(folder)) {
         if (entry.path().extension() != ".json") continue;
         SCOPED_TRACE(entry.path().string());
         EXPECT_NO_THROW(host::loadSceneMeshes(host::loadSceneFile(entry.path().string())));
+        ++loaded;
     }
+    EXPECT_GT(loaded, 0u) << "no scene files in " << folder;
+}
+
+TEST_F(SceneFileTest, ShippedScenesLoad) {
+    expectScenesLoad(fs::path(LS_SOURCE_DIR) / "scenes");
+}
+
+// EXPECT_NONFATAL_FAILURE's statement may not name a local variable.
+fs::path gEmptyFolder;
+
+TEST_F(SceneFileTest, ShippedScenesCheckFailsOnAnEmptyFolder) {
+    gEmptyFolder = dir_ / "empty scenes";
+    fs::create_directories(gEmptyFolder);
+    EXPECT_NONFATAL_FAILURE(expectScenesLoad(gEmptyFolder), "no scene files in");
 }
 
 TEST_F(SceneFileTest, FilesThatCannotBeRead) {

@@ -6,6 +6,7 @@
 
 #include "rendergraph/format_info.h"
 #include "rendergraph/host_buffer.h"
+#include "rendergraph/image_readback.h"
 #include "rendergraph/vk_error.h"
 
 namespace plugin_test {
@@ -82,22 +83,11 @@ std::vector<float> TestImage::download() {
     rg::HostBuffer staging(device_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, "test download");
     device_.submitAndWait([&](VkCommandBuffer cmd) {
         transition(cmd, resting_, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
-        VkBufferImageCopy region{};
-        region.imageSubresource = {rg::hasDepth(format_) ? VkImageAspectFlags{VK_IMAGE_ASPECT_DEPTH_BIT}
-                                                         : VkImageAspectFlags{VK_IMAGE_ASPECT_COLOR_BIT},
-                                   0, 0, 1};
-        region.imageExtent = {extent_.width, extent_.height, 1};
-        vkCmdCopyImageToBuffer(cmd, image_.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.buffer(), 1, &region);
+        rg::recordReadback(cmd, image_.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, extent_,
+                           staging.buffer(),
+                           rg::hasDepth(format_) ? VkImageAspectFlags{VK_IMAGE_ASPECT_DEPTH_BIT}
+                                                 : VkImageAspectFlags{VK_IMAGE_ASPECT_COLOR_BIT});
         transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, resting_);
-        VkMemoryBarrier2 host{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-        host.srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-        host.srcAccessMask = VK_ACCESS_2_MEMORY_WRITE_BIT;
-        host.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-        host.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-        VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-        dep.memoryBarrierCount = 1;
-        dep.pMemoryBarriers = &host;
-        vkCmdPipelineBarrier2(cmd, &dep);
     });
     std::vector<float> out(size_t{extent_.width} * extent_.height * channels);
     if (half) {

@@ -11,6 +11,8 @@
 #include "rendergraph/device_caps_vulkan.h"
 #include "rendergraph/executor.h"
 #include "rendergraph/host_buffer.h"
+#include "rendergraph/image_readback.h"
+#include "rendergraph/owned_image.h"
 #include "rendergraph/pipeline.h"
 #include "rendergraph/vk_error.h"
 #include "support/gpu_test.h"
@@ -19,38 +21,14 @@ using testing_support::GpuTest;
 
 namespace {
 
-struct EngineImage {
-    const rg::Device& dev;
-    VkImage image = VK_NULL_HANDLE;
-    VkDeviceMemory memory = VK_NULL_HANDLE;
-    EngineImage(const rg::Device& d, VkExtent2D e, const char* name, VkFormat format = VK_FORMAT_R8G8B8A8_UNORM,
-                VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+// An engine's image: the runtime's own kind of owned image, with an engine's defaults.
+struct EngineImage : rg::OwnedImage {
+    EngineImage(const rg::Device& d, VkExtent2D e, const char* name,
+                VkFormat format = VK_FORMAT_R8G8B8A8_UNORM,
+                VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
+                                          VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                 uint32_t layers = 1, VkImageCreateFlags flags = 0)
-        : dev(d) {
-        VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-        info.flags = flags;
-        info.imageType = VK_IMAGE_TYPE_2D;
-        info.format = format;
-        info.extent = {e.width, e.height, 1};
-        info.mipLevels = 1;
-        info.arrayLayers = layers;
-        info.samples = VK_SAMPLE_COUNT_1_BIT;
-        info.tiling = VK_IMAGE_TILING_OPTIMAL;
-        info.usage = usage;
-        RG_VK(vkCreateImage(dev.device(), &info, nullptr, &image));
-        dev.setName(image, VK_OBJECT_TYPE_IMAGE, name);
-        VkMemoryRequirements req;
-        vkGetImageMemoryRequirements(dev.device(), image, &req);
-        VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-        alloc.allocationSize = req.size;
-        alloc.memoryTypeIndex = dev.findMemoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-        RG_VK(vkAllocateMemory(dev.device(), &alloc, nullptr, &memory));
-        RG_VK(vkBindImageMemory(dev.device(), image, memory, 0));
-    }
-    ~EngineImage() {
-        vkDestroyImage(dev.device(), image, nullptr);
-        vkFreeMemory(dev.device(), memory, nullptr);
-    }
+        : rg::OwnedImage(d, format, e, usage, name, layers, flags) {}
 };
 
 // An engine's RGBA8 color target as the graph imports it: overwritten, then handed to a copy.
@@ -70,19 +48,7 @@ rg::ImportedImage engineColor(VkImage image, VkExtent2D size) {
 // The engine's own use after the graph: a copy from TRANSFER_SRC_OPTIMAL into `host`, read on the CPU.
 void copyToHost(const rg::Device& dev, VkImage image, VkExtent2D size, rg::HostBuffer& host) {
     dev.submitAndWait([&](VkCommandBuffer cmd) {
-        VkBufferImageCopy region{};
-        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        region.imageExtent = {size.width, size.height, 1};
-        vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, host.buffer(), 1, &region);
-        VkMemoryBarrier2 toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-        toHost.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
-        toHost.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-        toHost.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-        toHost.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-        VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-        dep.memoryBarrierCount = 1;
-        dep.pMemoryBarriers = &toHost;
-        vkCmdPipelineBarrier2(cmd, &dep);
+        rg::recordReadback(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, size, host.buffer());
     });
 }
 
@@ -99,7 +65,7 @@ TEST_F(ImportsGpu, RendersIntoEngineImagesAndLeavesThemInTheFinalLayout) {
     auto pipeline = std::make_shared<rg::Pipeline>();
     auto colorValue = std::make_shared<std::array<float, 4>>();
     rg::RenderGraph g;
-    rg::ImageRef target = g.importImage("engine color", describe(images[0].image));
+    rg::ImageRef target = g.importImage("engine color", describe(images[0].image()));
     {
         auto p = g.addPass("fill engine image", rg::PassType::Graphics);
         (void)p.colorAttachment(target, rg::LoadOp::DontCare);
@@ -122,10 +88,10 @@ TEST_F(ImportsGpu, RendersIntoEngineImagesAndLeavesThemInTheFinalLayout) {
 
     for (int frame = 0; frame < 4; ++frame) {
         const EngineImage& img = images[frame % 2];
-        g.updateImport(target, describe(img.image));
+        g.updateImport(target, describe(img.image()));
         *colorValue = {static_cast<float>(frame) * 0.25f, 1.0f, 0.0f, 1.0f};
         exec.run();
-        copyToHost(dev(), img.image, size, host);
+        copyToHost(dev(), img.image(), size, host);
         const auto* px = static_cast<const uint8_t*>(host.data());
         const int expectedRed = static_cast<int>(std::lround(frame * 0.25 * 255.0));
         for (uint32_t i = 0; i < size.width * size.height; ++i) {
@@ -146,9 +112,9 @@ TEST_F(ImportsGpu, EngineDepthIsAReadOnlyDepthAttachment) {
                       VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
     rg::HostBuffer host(dev(), 4 * size.width * size.height, VK_BUFFER_USAGE_TRANSFER_DST_BIT, "engine readback");
 
-    const rg::ImportedImage c = engineColor(color.image, size);
+    const rg::ImportedImage c = engineColor(color.image(), size);
     rg::ImportedImage d;
-    d.image = depth.image;
+    d.image = depth.image();
     d.format = VK_FORMAT_D32_SFLOAT;
     d.extent = size;
     d.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
@@ -197,7 +163,7 @@ TEST_F(ImportsGpu, EngineDepthIsAReadOnlyDepthAttachment) {
             b.dstAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
             b.oldLayout = first ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
             b.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-            b.image = depth.image;
+            b.image = depth.image();
             b.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
             VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
             dep.imageMemoryBarrierCount = 1;
@@ -205,11 +171,12 @@ TEST_F(ImportsGpu, EngineDepthIsAReadOnlyDepthAttachment) {
             vkCmdPipelineBarrier2(cmd, &dep);
             VkClearDepthStencilValue value{clearDepth, 0};
             VkImageSubresourceRange range{VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
-            vkCmdClearDepthStencilImage(cmd, depth.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &value, 1, &range);
+            vkCmdClearDepthStencilImage(cmd, depth.image(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                        &value, 1, &range);
         });
         first = false;
         exec.run();
-        copyToHost(dev(), color.image, size, host);
+        copyToHost(dev(), color.image(), size, host);
         const auto* px = static_cast<const uint8_t*>(host.data());
         const int green = clearDepth > 0.0f ? 255 : 0;  // depth 0 < 0.5 passes; 0 < 0 does not
         for (uint32_t i = 0; i < size.width * size.height; ++i)
@@ -237,7 +204,7 @@ TEST_F(ImportsGpu, SixLayerDepthImageIsTransitionedWhole) {
         const rg::Samplers samplers(dev());
 
         rg::ImportedImage d;
-        d.image = depth.image;
+        d.image = depth.image();
         d.format = VK_FORMAT_D32_SFLOAT;
         d.extent = size;
         d.arrayLayers = kLayers;
@@ -296,7 +263,7 @@ TEST_F(ImportsGpu, SixLayerDepthImageIsTransitionedWhole) {
                 b.oldLayout = frame == 0 ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
                 b.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
                 b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-                b.image = depth.image;
+                b.image = depth.image();
                 b.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, kLayers};
                 VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
                 dep.imageMemoryBarrierCount = 1;
@@ -305,7 +272,8 @@ TEST_F(ImportsGpu, SixLayerDepthImageIsTransitionedWhole) {
                 for (uint32_t layer = 0; layer < kLayers; ++layer) {
                     const VkClearDepthStencilValue value{layerDepth(layer), 0};
                     const VkImageSubresourceRange range{VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, layer, 1};
-                    vkCmdClearDepthStencilImage(cmd, depth.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &value, 1,
+                    vkCmdClearDepthStencilImage(cmd, depth.image(),
+                                                VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &value, 1,
                                                 &range);
                 }
             });
@@ -316,20 +284,8 @@ TEST_F(ImportsGpu, SixLayerDepthImageIsTransitionedWhole) {
 
             // The engine's next use, after the graph's last barrier: a copy of every layer.
             dev().submitAndWait([&](VkCommandBuffer cmd) {
-                VkBufferImageCopy region{};
-                region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, kLayers};
-                region.imageExtent = {size.width, size.height, 1};
-                vkCmdCopyImageToBuffer(cmd, depth.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, copied.buffer(), 1,
-                                       &region);
-                VkMemoryBarrier2 toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-                toHost.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
-                toHost.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-                toHost.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-                toHost.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-                VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-                dep.memoryBarrierCount = 1;
-                dep.pMemoryBarriers = &toHost;
-                vkCmdPipelineBarrier2(cmd, &dep);
+                rg::recordReadback(cmd, depth.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, size,
+                                   copied.buffer(), VK_IMAGE_ASPECT_DEPTH_BIT, kLayers);
             });
             const auto* texels = static_cast<const float*>(copied.data());
             for (uint32_t layer = 0; layer < kLayers; ++layer)
