@@ -10,107 +10,109 @@ namespace {
     throw InvalidInput("lightscatter: " + what);
 }
 
+MethodChoice pick(Method method, std::string reason) {
+    MethodChoice c;
+    c.method = method;
+    c.reason = std::move(reason);
+    return c;
+}
+
+// Auto's default: epipolar sampling (an unshadowed light is its closed form per pixel).
+MethodChoice sampled(std::string reason) {
+    return pick(Method::Epipolar, std::move(reason));
+}
+
+// Seed 001's closed form, where it is exact enough.
+MethodChoice closedForm(std::string reason) {
+    return pick(Method::Analytic, std::move(reason));
+}
+
 // Epipolar sampling for a shadowed light, unless the screen is too small for it to pay.
-void epipolarOrBruteForce(const FrameSetup& s, MethodChoice& c, const std::string& light) {
+MethodChoice epipolarOrBruteForce(const FrameSetup& s, const std::string& light) {
     const uint64_t pixels = uint64_t{s.screen.width} * s.screen.height;
     const uint64_t samples = uint64_t{s.settings.slices} * s.settings.samplesPerSlice;
-    if (pixels * kEpipolarSamplesPerPixel < samples) {
-        c.method = Method::BruteForce;
-        c.reason = light + " on a screen of " + std::to_string(pixels) + " pixels, fewer than " +
-                   std::to_string(samples / kEpipolarSamplesPerPixel) + " (epipolar samples / " +
-                   std::to_string(kEpipolarSamplesPerPixel) + "): per-pixel marching is cheaper";
-    } else {
-        c.method = Method::Epipolar;
-        c.reason = light + ": epipolar sampling";
-    }
+    if (pixels * kEpipolarSamplesPerPixel >= samples) return sampled(light + ": epipolar sampling");
+    return pick(Method::BruteForce,
+                light + " on a screen of " + std::to_string(pixels) + " pixels, fewer than " +
+                    std::to_string(samples / kEpipolarSamplesPerPixel) + " (epipolar samples / " +
+                    std::to_string(kEpipolarSamplesPerPixel) + "): per-pixel marching is cheaper");
 }
 
 // Auto: the cheapest method that meets the frame's needs, and why.
 MethodChoice autoChoice(const FrameSetup& s, bool lightReachesView) {
     const bool pointLike = ls::pointLike(s);
     const bool skipShadows = ls::skipsShadows(s);
-    MethodChoice c;
-    if (!lightReachesView) {
-        c.method = Method::Epipolar;
-        c.reason = "the light reaches no view ray (or nothing scatters): extinction only";
-    } else if (ls::cubeShadowed(s)) {
+    const std::string& set = s.settingsPath;  // "custom", or the light's own settings
+    if (!lightReachesView)
+        return sampled("the light reaches no view ray (or nothing scatters): extinction only");
+    if (ls::cubeShadowed(s)) {
         if (s.simplified || s.noise || skipShadows)
             refuse(
-                std::string(
-                    "a point light's cube shadow map is sampled by epipolar and brute-force only, "
-                    "which do not honour ") +
-                (s.simplified ? "custom.lightModel = simplified"
-                 : s.noise    ? "custom.noiseAmplitude > 0"
-                              : "custom.shadowSampling = false") +
+                "a point light's cube shadow map is sampled by epipolar and brute-force only, "
+                "which do not honour " +
+                set +
+                (s.simplified ? ".lightModel = simplified"
+                 : s.noise    ? ".noiseAmplitude > 0"
+                              : ".shadowSampling = false") +
                 " (remove the shadow map or that setting)");
-        epipolarOrBruteForce(s, c,
-                             "shadowed point light (a cube shadow map, marched face by face)");
-    } else if (s.simplified) {
+        return epipolarOrBruteForce(
+            s, "shadowed point light (a cube shadow map, marched face by face)");
+    }
+    if (s.simplified) {
         // Seed 004's light model: only its closed forms integrate it.
         if (!pointLike)
-            refuse(
-                "custom.lightModel = simplified (seed 004's light model) needs a point or "
-                "spot light; this frame's light is directional (use lightModel full)");
+            refuse(set +
+                   ".lightModel = simplified (seed 004's light model) needs a point or spot light; "
+                   "this frame's light is directional (use lightModel full)");
         if (s.noise)
-            refuse(
-                "custom.lightModel = simplified and custom.noiseAmplitude > 0: no method "
-                "honours both (the noise is slices', the simplified model "
-                "beam-tree-analytic's and analytic's)");
+            refuse(set + ".lightModel = simplified and " + set +
+                   ".noiseAmplitude > 0: no method honours both (the noise is slices', the "
+                   "simplified model beam-tree-analytic's and analytic's)");
         if (skipShadows)
-            refuse(
-                "custom.lightModel = simplified and custom.shadowSampling = false: no method "
-                "honours both (use shadowSampling true, or no shadow map, which analytic "
-                "then integrates)");
-        if (!s.shadowed) {
-            c.method = Method::Analytic;
-            c.reason =
-                "unshadowed point light, seed 004's simplified light model: its closed form "
-                "(2.17) per pixel";
-        } else if (s.depthAttachment) {
-            c.method = Method::BeamTreeAnalytic;
-            c.reason =
-                "shadowed light, seed 004's simplified light model: beam-tree-analytic, its closed "
-                "form in the lit space and sampling planes elsewhere";
-        } else {
-            refuse(
-                "custom.lightModel = simplified with a shadow map needs method "
-                "beam-tree-analytic, which depth-tests its planes against the engine's depth: "
-                "depth.usage needs DEPTH_STENCIL_ATTACHMENT beside SAMPLED");
-        }
-    } else if (s.noise && s.depthAttachment) {
-        c.method = Method::Slices;
-        c.reason =
-            "scrolling noise (custom.noiseAmplitude > 0): seed 002's slice planes, the only "
-            "method that samples it";
-    } else if (s.noise) {
-        refuse(
-            "custom.noiseAmplitude > 0 needs method slices, which depth-tests against the "
-            "engine's depth: depth.usage needs DEPTH_STENCIL_ATTACHMENT beside SAMPLED");
-    } else if (skipShadows) {
-        c.method = Method::ConeMarch;
-        c.reason = "shadow sampling is off: seed 003's low-end mode, which only cone-march has";
-    } else if (!s.shadowed && pointLike) {
-        const float tau = ls::opticalDepthToLight(s);
-        if (ls::isotropicMedium(s) && tau < kAnalyticMaxOpticalDepth) {
-            c.method = Method::Analytic;
-            c.reason = "unshadowed point light in an isotropic, thin medium (optical depth " +
-                       ls::twoDigits(tau) + " to the light): seed 001's closed form, within 1%";
-        } else {
-            c.method = Method::Epipolar;  // an unshadowed frame is the table in closed form
-            c.reason =
-                std::string("unshadowed point light: the point-light table per pixel (") +
-                (ls::isotropicMedium(s) ? "the optical depth to the light, " + ls::twoDigits(tau) +
-                                              ", puts seed 001's closed form over 1%"
-                                        : "seed 001's closed form assumes isotropic scattering") +
-                ")";
-        }
-    } else if (!s.shadowed) {
-        c.method = Method::Epipolar;
-        c.reason = "unshadowed directional light: closed form per pixel";
-    } else {
-        epipolarOrBruteForce(s, c, "shadowed light");
+            refuse(set + ".lightModel = simplified and " + set +
+                   ".shadowSampling = false: no method honours both (use shadowSampling true, or "
+                   "no shadow map, which analytic then integrates)");
+        if (!s.shadowed)
+            return closedForm(
+                "unshadowed point light, seed 004's simplified light model: its closed form (2.17) "
+                "per pixel");
+        if (!s.depthAttachment)
+            refuse(set +
+                   ".lightModel = simplified with a shadow map needs method beam-tree-analytic, "
+                   "which depth-tests its planes against the engine's depth: depth.usage needs "
+                   "DEPTH_STENCIL_ATTACHMENT beside SAMPLED");
+        return pick(
+            Method::BeamTreeAnalytic,
+            "shadowed light, seed 004's simplified light model: beam-tree-analytic, its closed "
+            "form in the lit space and sampling planes elsewhere");
     }
-    return c;
+    if (s.noise) {
+        if (!s.depthAttachment)
+            refuse(set +
+                   ".noiseAmplitude > 0 needs method slices, which depth-tests against the "
+                   "engine's depth: depth.usage needs DEPTH_STENCIL_ATTACHMENT beside SAMPLED");
+        return pick(Method::Slices, "scrolling noise (" + set +
+                                        ".noiseAmplitude > 0): seed 002's slice planes, the only "
+                                        "method that samples it");
+    }
+    if (skipShadows)
+        return pick(Method::ConeMarch,
+                    "shadow sampling is off: seed 003's low-end mode, which only cone-march has");
+    if (!s.shadowed && pointLike) {
+        const float tau = ls::opticalDepthToLight(s);
+        if (ls::isotropicMedium(s) && tau < kAnalyticMaxOpticalDepth)
+            return closedForm(
+                "unshadowed point light in an isotropic, thin medium (optical depth " +
+                ls::twoDigits(tau) + " to the light): seed 001's closed form, within 1%");
+        return sampled(std::string("unshadowed point light: the point-light table per pixel (") +
+                       (ls::isotropicMedium(s)
+                            ? "the optical depth to the light, " + ls::twoDigits(tau) +
+                                  ", puts seed 001's closed form over 1%"
+                            : "seed 001's closed form assumes isotropic scattering") +
+                       ")");
+    }
+    if (!s.shadowed) return sampled("unshadowed directional light: closed form per pixel");
+    return epipolarOrBruteForce(s, "shadowed light");
 }
 
 }  // namespace
@@ -143,12 +145,12 @@ MethodChoice chooseFrameMethod(Method requested, ValidatedFrame& v, const FrameD
             throw InvalidInput("lightscatter: lights[0]: " + std::string(e.what()).substr(14));
         }
     } else {
-        c.method = requested == Method::Auto ? Method::Epipolar : requested;
+        const bool automatic = requested == Method::Auto;
+        c = automatic ? sampled(std::to_string(n) + " lights: epipolar sampling per shadowed light")
+                      : pick(requested, {});
         c.unit = methodUnit(c.method);
         if (!c.unit) refuse("method is not a Method value");
-        if (requested == Method::Auto)
-            c.reason = std::to_string(n) + " lights: epipolar sampling per shadowed light";
-        else if (!c.unit->caps().severalLights)
+        if (!automatic && !c.unit->caps().severalLights)
             refuse(std::string("method ") + c.unit->name() +
                    " renders one light per frame so far; lights holds " + std::to_string(n) +
                    " (use epipolar, brute-force or auto, or one light)");

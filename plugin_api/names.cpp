@@ -7,6 +7,8 @@
 namespace lightscatter {
 namespace {
 
+constexpr const char* kAutoName = "auto";
+
 struct ProfileRow {
     Profile profile;
     const char* name;
@@ -42,9 +44,8 @@ const ls::MethodUnit* methodUnit(Method m) {
 }  // namespace detail
 
 const char* methodName(Method m) {
-    if (m == Method::Auto) return "auto";
     const ls::MethodUnit* unit = detail::methodUnit(m);
-    return unit ? unit->name() : "unknown";
+    return unit ? unit->name() : m == Method::Auto ? kAutoName : "unknown";
 }
 
 const char* profileName(Profile p) {
@@ -54,7 +55,7 @@ const char* profileName(Profile p) {
 }
 
 std::optional<Method> parseMethod(const std::string& name) {
-    if (name == methodName(Method::Auto)) return Method::Auto;
+    if (name == kAutoName) return Method::Auto;
     const auto& all = ls::methodRegistry();
     for (size_t i = 0; i < all.size(); ++i)
         if (name == all[i]->name()) return static_cast<Method>(i);
@@ -70,7 +71,7 @@ std::optional<Profile> parseProfile(const std::string& name) {
 std::vector<std::string> methodNames() {
     std::vector<std::string> v;
     for (const ls::MethodUnit* m : ls::methodRegistry()) v.emplace_back(m->name());
-    v.emplace_back(methodName(Method::Auto));
+    v.emplace_back(kAutoName);
     return v;
 }
 
