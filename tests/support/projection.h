@@ -1,5 +1,5 @@
 #pragma once
-// Vulkan-convention projections for tests: the host example's own (host_example/camera_math.h), so
+// Vulkan-convention projections for tests: the host example's own (host_example/engine/camera_math.h), so
 // tests and the engine build cameras the same way.
 #include "camera_math.h"
 
