@@ -26,7 +26,7 @@ install(TARGETS ${ls_installed} EXPORT lightscatterTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(FILES ${PROJECT_SOURCE_DIR}/plugin_api/lightscatter.h
+install(FILES ${PROJECT_SOURCE_DIR}/plugin_api/include/lightscatter.h
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/lightscatter)
 
 set(ls_package_dir ${CMAKE_INSTALL_LIBDIR}/cmake/lightscatter)

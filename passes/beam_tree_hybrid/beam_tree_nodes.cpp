@@ -19,7 +19,7 @@ constexpr VkPipelineStageFlags2 kVertexAndFragment =
     VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
 
 // vkCmdUpdateBuffer takes at most 64 KiB a call. The plugin sizes the buffer from the frame's
-// points before it builds the graph (plugin_api/plugin.cpp); a frame that does not fit is a bug
+// points before it builds the graph (plugin_api/src/plugin.cpp); a frame that does not fit is a bug
 // there, and is refused rather than drawn with triangles missing.
 void upload(VkCommandBuffer cmd, VkBuffer buffer, const std::vector<glm::vec4>& points,
             size_t capacity) {

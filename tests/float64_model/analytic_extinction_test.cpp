@@ -43,7 +43,7 @@ double imageError(double d, double tau, double offset) {
 }  // namespace
 
 TEST(AnalyticExtinction, TheClosedFormStaysWithinOnePercentBelowTheAutoThreshold) {
-    // kAnalyticMaxOpticalDepth in plugin_api/method_choice.cpp.
+    // kAnalyticMaxOpticalDepth in plugin_api/src/method_choice.cpp.
     const double threshold = 0.007;
     std::printf("%8s %6s %8s %12s\n", "d (m)", "offset", "tau", "image error");
     for (double d : {2.0, 20.0, 200.0})

@@ -101,7 +101,7 @@ TEST(OccluderScenes, TheGeneratorWritesTheShippedFiles) {
 }
 
 // The plugin's triangle buffer starts at 3 * 4096 points and grows to what a frame needs
-// (plugin_api/plugin.cpp); the 1000-box field's lit pyramids alone are more than that.
+// (plugin_api/src/plugin.cpp); the 1000-box field's lit pyramids alone are more than that.
 TEST(OccluderScenes, TheThousandBoxTreeOutgrowsTheFirstTriangleBuffer) {
     const host::SceneDesc scene = host::loadSceneFile(scenePath(1000));
     const auto occluders = treeOccluders(host::boundingBoxes(host::loadSceneMeshes(scene)));

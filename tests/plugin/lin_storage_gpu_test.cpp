@@ -1,6 +1,6 @@
 // Lin is linear in the light's intensity however bright the light: every method leaves Lin to the
 // composite in a screen texture, float16 for most (at most 65504), and a frame whose Lin can be
-// brighter stores it scaled by a power of two (plugin_api/lin_storage.h) instead of clamped.
+// brighter stores it scaled by a power of two (plugin_api/src/lin_storage.h) instead of clamped.
 #include <cmath>
 
 #include "plugin_fixture.h"

@@ -69,7 +69,7 @@ using Mat4 = std::array<float, 16>;  // column-major (GLM's layout), maps column
 // Lower ends: a length or angle below its bound is one single precision cannot resolve (each
 // bound says how); everything else may be 0 or subnormal, which renders as 0 would. A Lin below
 // 6e-8 W/(m^2 sr), float16's smallest value, which the methods' screen targets hold, reads as 0
-// (plugin_api/lin_storage.h scales a bright frame's Lin into float16's range).
+// (plugin_api/src/lin_storage.h scales a bright frame's Lin into float16's range).
 namespace limits {
 // Coordinates (light.position, the camera's position in camera.view), the far plane, the sky
 // distance and the light's radius, in metres: 1e8 m, a quarter of the way to the Moon. Squares
