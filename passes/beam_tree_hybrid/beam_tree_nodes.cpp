@@ -4,15 +4,21 @@
 #include <stdexcept>
 #include <string>
 
+#include "beam_tree_shaders.h"
 #include "lit_volume_table_frag.h"
 #include "shared/pass_helpers.h"
-#include "slice_planes_color_frag.h"
-#include "slice_planes_plain_frag.h"
-#include "slice_planes_shadowed_color_frag.h"
-#include "slice_planes_shadowed_frag.h"
+#include "shared/shader_variant.h"
+#include "slice_planes_frag_variants.h"
 #include "triangles_vert.h"
 
 namespace ls {
+
+// Bindings only some frames have are build-time variants of the planes' shader.
+rg::ShaderCode beamTreePlanesShader(bool shadowMap, bool cookie) {
+    return pickShader(ls_spirv::slice_planes_frag_variants,
+                      {{"LS_SHADOW_MAP", shadowMap}, {"LS_LIGHT_COLOR", cookie}, {"LS_NOISE", 0}});
+}
+
 namespace {
 
 constexpr VkPipelineStageFlags2 kVertexAndFragment =
@@ -47,15 +53,6 @@ rg::BufferRef addTriangleUpload(rg::RenderGraph& graph, BeamTreeFrameRef frame,
     return triangles;
 }
 
-// Bindings only some frames have are build-time variants of the planes' shader.
-rg::ShaderCode planesShader(bool shadowMap, bool cookie) {
-    if (shadowMap)
-        return cookie ? rg::spirv(ls_spirv::slice_planes_shadowed_color_frag)
-                      : rg::spirv(ls_spirv::slice_planes_shadowed_frag);
-    return cookie ? rg::spirv(ls_spirv::slice_planes_color_frag)
-                  : rg::spirv(ls_spirv::slice_planes_plain_frag);
-}
-
 struct PlaneDraw {
     uint32_t first = 0, count = 0;
     bool shadow = false;  // the shadow map is looked up (uncertain space)
@@ -71,7 +68,7 @@ void drawPlaneParts(rg::PassContext& ctx, const Shared& shared, const BeamTreeFr
         draw.shadow ? passTable : passTable.without(LS_BINDING_SHADOW_MAP);
     rg::GraphicsPipelineDesc desc;
     desc.vertex = rg::spirv(ls_spirv::triangles_vert);
-    desc.fragment = planesShader(draw.shadow, cookie);
+    desc.fragment = beamTreePlanesShader(draw.shadow, cookie);
     desc.formats = ctx.renderingFormats();
     desc.bindings = table.layout();
     desc.pushConstantBytes = sizeof(SlicePush);

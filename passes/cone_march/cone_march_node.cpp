@@ -1,24 +1,18 @@
 #include "cone_march_node.h"
 
-#include "cone_march_color_frag.h"
-#include "cone_march_plain_frag.h"
-#include "cone_march_shadowed_color_frag.h"
-#include "cone_march_shadowed_frag.h"
+#include "cone_march_frag_variants.h"
+#include "cone_march_shader.h"
 #include "shared/screen_lin_node.h"
+#include "shared/shader_variant.h"
 
 namespace ls {
-namespace {
 
 // Bindings that only some frames have are build-time variants, so a pipeline never declares a
 // descriptor it is not given.
 rg::ShaderCode coneMarchShader(bool shadowMap, bool lightColor) {
-    if (shadowMap)
-        return lightColor ? rg::spirv(ls_spirv::cone_march_shadowed_color_frag)
-                          : rg::spirv(ls_spirv::cone_march_shadowed_frag);
-    return lightColor ? rg::spirv(ls_spirv::cone_march_color_frag) : rg::spirv(ls_spirv::cone_march_plain_frag);
+    return pickShader(ls_spirv::cone_march_frag_variants,
+                      {{"LS_SHADOW_MAP", shadowMap}, {"LS_LIGHT_COLOR", lightColor}});
 }
-
-}  // namespace
 
 rg::ImageRef addConeMarch(rg::RenderGraph& graph, const Shared& shared, const ConeMarchInputs& in,
                           const ConeMarchOptions& options) {

@@ -1,10 +1,16 @@
-#include "shared/pass_helpers.h"
 #include "epipolar_nodes.h"
-#include "min_max_first_level_comp.h"
-#include "min_max_first_level_cube_comp.h"
+#include "epipolar_shaders.h"
+#include "min_max_first_level_comp_variants.h"
 #include "min_max_next_level_comp.h"
+#include "shared/pass_helpers.h"
+#include "shared/shader_variant.h"
 
 namespace ls {
+
+rg::ShaderCode minMaxFirstLevelShader(bool cubeShadow) {
+    return pickShader(ls_spirv::min_max_first_level_comp_variants,
+                      {{"LS_CUBE_SHADOW", cubeShadow}});
+}
 
 // One node per tree level: the first from the shadow map, each coarser one from the level below.
 // Every level lives in one texture (the levels' columns are disjoint): each pass reads the level
@@ -30,9 +36,7 @@ rg::ImageRef addMinMaxTrees(rg::RenderGraph& g, const NodeInputs& in, const Epip
             const bool cube = in.shared->spec.cubeShadow;
             const auto& p = in.shared->pipelines.compute(
                 cube ? "min/max trees level 1 (cube face)" : "min/max trees level 1",
-                cube ? rg::spirv(ls_spirv::min_max_first_level_cube_comp)
-                     : rg::spirv(ls_spirv::min_max_first_level_comp),
-                table.layout(), 0, {});
+                minMaxFirstLevelShader(cube), table.layout(), 0, {});
             p.bind(ctx.cmd());
             table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
             vkCmdDispatch(ctx.cmd(), groupCount(n / 2, 64), s.slices, 1);

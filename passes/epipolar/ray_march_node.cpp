@@ -1,59 +1,21 @@
 #include "epipolar_nodes.h"
-#include "ray_march_directional_color_count_frag.h"
-#include "ray_march_directional_color_frag.h"
-#include "ray_march_directional_color_trees_count_frag.h"
-#include "ray_march_directional_color_trees_frag.h"
-#include "ray_march_directional_count_frag.h"
-#include "ray_march_directional_frag.h"
-#include "ray_march_directional_trees_count_frag.h"
-#include "ray_march_directional_trees_frag.h"
-#include "ray_march_table_color_count_frag.h"
-#include "ray_march_table_color_frag.h"
-#include "ray_march_table_color_trees_count_frag.h"
-#include "ray_march_table_color_trees_frag.h"
-#include "ray_march_table_count_frag.h"
-#include "ray_march_table_cube_count_frag.h"
-#include "ray_march_table_cube_frag.h"
-#include "ray_march_table_cube_trees_count_frag.h"
-#include "ray_march_table_cube_trees_frag.h"
-#include "ray_march_table_frag.h"
-#include "ray_march_table_trees_count_frag.h"
-#include "ray_march_table_trees_frag.h"
+#include "epipolar_shaders.h"
+#include "ray_march_frag_variants.h"
 #include "shared/pass_helpers.h"
+#include "shared/shader_variant.h"
 
 namespace ls {
-namespace {
 
-// A variant and its counting twin (LS_COUNT_STEPS): the plain one has no counter and no atomics.
-struct RayMarchVariant {
-    rg::ShaderCode plain, counting;
-};
-#define LS_RAY_MARCH_VARIANT(name)                             \
-    RayMarchVariant {                                          \
-        rg::spirv(ls_spirv::ray_march_##name##_frag),          \
-            rg::spirv(ls_spirv::ray_march_##name##_count_frag) \
-    }
-
-RayMarchVariant rayMarchVariant(const ScatterSpec& spec) {
-    const bool table = spec.light != LightKind::Directional;
-    const bool color = spec.lightColor;
-    // A point light's cube map (light color is refused with it).
-    if (spec.cubeShadow)
-        return spec.minMaxTrees ? LS_RAY_MARCH_VARIANT(table_cube_trees)
-                                : LS_RAY_MARCH_VARIANT(table_cube);
-    if (spec.minMaxTrees) {
-        if (table)
-            return color ? LS_RAY_MARCH_VARIANT(table_color_trees)
-                         : LS_RAY_MARCH_VARIANT(table_trees);
-        return color ? LS_RAY_MARCH_VARIANT(directional_color_trees)
-                     : LS_RAY_MARCH_VARIANT(directional_trees);
-    }
-    if (table) return color ? LS_RAY_MARCH_VARIANT(table_color) : LS_RAY_MARCH_VARIANT(table);
-    return color ? LS_RAY_MARCH_VARIANT(directional_color) : LS_RAY_MARCH_VARIANT(directional);
+// The plain build has no counter and no atomics; a point light's cube map comes without light
+// color (refused with it).
+rg::ShaderCode rayMarchShader(const ScatterSpec& spec, bool countSteps) {
+    return pickShader(ls_spirv::ray_march_frag_variants,
+                      {{"LS_NEEDS_TABLE", spec.light != LightKind::Directional},
+                       {"LS_LIGHT_COLOR", spec.lightColor && !spec.cubeShadow},
+                       {"LS_CUBE_SHADOW", spec.cubeShadow},
+                       {"LS_TREES", spec.minMaxTrees},
+                       {"LS_COUNT_STEPS", countSteps}});
 }
-#undef LS_RAY_MARCH_VARIANT
-
-}  // namespace
 
 EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in,
                                      const EpipolarSizes& s, const EpipolarRayMarchInputs& i) {
@@ -84,9 +46,7 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in,
         if (adds && !in.shared->inView()) return;
         ScatterSpec spec = in.shared->spec;
         spec.minMaxTrees = trees;
-        const RayMarchVariant variant = rayMarchVariant(spec);
-        auto desc = fullscreenPipeline(counts.valid() ? variant.counting : variant.plain, ctx,
-                                       table.layout());
+        auto desc = fullscreenPipeline(rayMarchShader(spec, counts.valid()), ctx, table.layout());
         desc.specialization = spec.constants();
         desc.stencilTest = true;
         desc.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP,

@@ -1,30 +1,16 @@
 #include "epipolar_nodes.h"
+#include "epipolar_shaders.h"
 #include "shared/composite_target.h"
 #include "shared/pass_helpers.h"
-#include "unwarp_directional_rgba16f_frag.h"
-#include "unwarp_directional_rgba16f_out_frag.h"
-#include "unwarp_directional_rgba32f_frag.h"
-#include "unwarp_directional_rgba32f_out_frag.h"
-#include "unwarp_table_rgba16f_frag.h"
-#include "unwarp_table_rgba16f_out_frag.h"
-#include "unwarp_table_rgba32f_frag.h"
-#include "unwarp_table_rgba32f_out_frag.h"
+#include "shared/shader_variant.h"
+#include "unwarp_frag_variants.h"
 
 namespace ls {
-namespace {
 
-const CompositeVariants kDirectional{
-    rg::spirv(ls_spirv::unwarp_directional_rgba16f_frag),
-    rg::spirv(ls_spirv::unwarp_directional_rgba16f_out_frag),
-    rg::spirv(ls_spirv::unwarp_directional_rgba32f_frag),
-    rg::spirv(ls_spirv::unwarp_directional_rgba32f_out_frag)};
-const CompositeVariants kTable{
-    rg::spirv(ls_spirv::unwarp_table_rgba16f_frag),
-    rg::spirv(ls_spirv::unwarp_table_rgba16f_out_frag),
-    rg::spirv(ls_spirv::unwarp_table_rgba32f_frag),
-    rg::spirv(ls_spirv::unwarp_table_rgba32f_out_frag)};
-
-}  // namespace
+rg::ShaderCode unwarpShader(bool table, VkFormat color, bool withOutput) {
+    return pickCompositeShader(ls_spirv::unwarp_frag_variants, {{"LS_NEEDS_TABLE", table}}, color,
+                               withOutput);
+}
 
 // One draw: the bilateral unwarp composites every pixel it can serve into the engine's color; with
 // fix-up on, each served pixel also writes 1 into a cleared stencil (the fragments it cannot serve
@@ -54,7 +40,8 @@ UnwarpOutputs addUnwarp(rg::RenderGraph& g, const NodeInputs& in, const UnwarpIn
     pass.execute([in, table, written, markForFixup, addOnly](rg::PassContext& ctx) {
         const ScatterSpec& spec = in.shared->spec;
         auto desc = fullscreenPipeline(
-            (in.table.valid() ? kTable : kDirectional).pick(ctx, written), ctx, table.layout());
+            unwarpShader(in.table.valid(), ctx.format(written.color), written.inscatterOut.valid()),
+            ctx, table.layout());
         desc.pushConstantBytes = 8;
         desc.specialization = spec.constants();
         if (markForFixup) {

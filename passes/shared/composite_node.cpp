@@ -1,29 +1,19 @@
+#include "composite_comp_variants.h"
 #include "composite_target.h"
-#include "composite_rgba16f_add_comp.h"
-#include "composite_rgba16f_add_out_comp.h"
-#include "composite_rgba16f_comp.h"
-#include "composite_rgba16f_extinction_comp.h"
-#include "composite_rgba16f_extinction_out_comp.h"
-#include "composite_rgba16f_out_comp.h"
-#include "composite_rgba32f_add_comp.h"
-#include "composite_rgba32f_add_out_comp.h"
-#include "composite_rgba32f_comp.h"
-#include "composite_rgba32f_extinction_comp.h"
-#include "composite_rgba32f_extinction_out_comp.h"
-#include "composite_rgba32f_out_comp.h"
 #include "pass_helpers.h"
+#include "shader_variant.h"
 #include "shared_nodes.h"
+#include "shared_shaders.h"
 
 namespace ls {
-namespace {
 
-const CompositeVariants kWithLin{rg::spirv(ls_spirv::composite_rgba16f_comp), rg::spirv(ls_spirv::composite_rgba16f_out_comp),
-                                 rg::spirv(ls_spirv::composite_rgba32f_comp), rg::spirv(ls_spirv::composite_rgba32f_out_comp)};
-const CompositeVariants kExtinctionOnly{
-    rg::spirv(ls_spirv::composite_rgba16f_extinction_comp), rg::spirv(ls_spirv::composite_rgba16f_extinction_out_comp),
-    rg::spirv(ls_spirv::composite_rgba32f_extinction_comp), rg::spirv(ls_spirv::composite_rgba32f_extinction_out_comp)};
-const CompositeVariants kAddOnly{rg::spirv(ls_spirv::composite_rgba16f_add_comp), rg::spirv(ls_spirv::composite_rgba16f_add_out_comp),
-                                 rg::spirv(ls_spirv::composite_rgba32f_add_comp), rg::spirv(ls_spirv::composite_rgba32f_add_out_comp)};
+rg::ShaderCode compositeShader(bool addOnly, bool withLin, VkFormat color, bool withOutput) {
+    return pickCompositeShader(ls_spirv::composite_comp_variants,
+                               {{"LS_WITH_LIN", withLin || addOnly}, {"LS_ADD_ONLY", addOnly}},
+                               color, withOutput);
+}
+
+namespace {
 
 CompositeOutputs addCompositePass(rg::RenderGraph& graph, const NodeInputs& in, const char* name,
                                   const CompositeTarget& target, rg::ImageRef lin) {
@@ -33,10 +23,11 @@ CompositeOutputs addCompositePass(rg::RenderGraph& graph, const NodeInputs& in, 
     table.sampled(LS_BINDING_DEPTH, in.depth, s.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
         .sampledIfValid(LS_BINDING_COMPOSITE_LIN, lin, s.nearest());
     const CompositeOutputs written = addCompositeTarget(table, target);
-    const CompositeVariants& shaders = target.addOnly ? kAddOnly : lin.valid() ? kWithLin : kExtinctionOnly;
-    pass.execute([in, table, written, &shaders, name](rg::PassContext& ctx) {
-        const auto& p =
-            in.shared->pipelines.compute(name, shaders.pick(ctx, written), table.layout(), 0, {});
+    const bool addOnly = target.addOnly, withLin = lin.valid();
+    pass.execute([in, table, written, addOnly, withLin, name](rg::PassContext& ctx) {
+        const rg::ShaderCode shader = compositeShader(addOnly, withLin, ctx.format(written.color),
+                                                      written.inscatterOut.valid());
+        const auto& p = in.shared->pipelines.compute(name, shader, table.layout(), 0, {});
         p.bind(ctx.cmd());
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         const VkExtent2D e = ctx.extent(written.color);

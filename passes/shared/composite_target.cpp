@@ -3,13 +3,6 @@
 #include "pass_helpers.h"
 
 namespace ls {
-namespace {
-
-bool wideColor(const rg::PassContext& ctx, const CompositeOutputs& written) {
-    return ctx.format(written.color) == VK_FORMAT_R32G32B32A32_SFLOAT;
-}
-
-}  // namespace
 
 CompositeOutputs addCompositeTarget(rg::BindingTable& table, const CompositeTarget& target) {
     CompositeOutputs written;
@@ -18,13 +11,6 @@ CompositeOutputs addCompositeTarget(rg::BindingTable& table, const CompositeTarg
     // what it holds.
     written.inscatterOut = table.storageReadWriteIfValid(LS_BINDING_LIN_OUT, target.inscatterOut);
     return written;
-}
-
-rg::ShaderCode CompositeVariants::pick(const rg::PassContext& ctx,
-                                       const CompositeOutputs& written) const {
-    const bool out = written.inscatterOut.valid();
-    if (wideColor(ctx, written)) return out ? rgba32fOut : rgba32f;
-    return out ? rgba16fOut : rgba16f;
 }
 
 }  // namespace ls

@@ -24,10 +24,4 @@ struct CompositeTarget {
 // there is one, LS_BINDING_LIN_OUT); returns their new versions.
 CompositeOutputs addCompositeTarget(rg::BindingTable& table, const CompositeTarget& target);
 
-// A shader built for each color format, with and without the output image.
-struct CompositeVariants {
-    rg::ShaderCode rgba16f, rgba16fOut, rgba32f, rgba32fOut;
-    rg::ShaderCode pick(const rg::PassContext& ctx, const CompositeOutputs& written) const;
-};
-
 }  // namespace ls

@@ -2,78 +2,31 @@
 
 #include "composite_target.h"
 #include "pass_helpers.h"
-#include "pixel_march_directional_color_frag.h"
-#include "pixel_march_directional_frag.h"
-#include "pixel_march_table_color_frag.h"
-#include "pixel_march_table_cube_frag.h"
-#include "pixel_march_table_frag.h"
-#include "pixel_march_fixup_directional_rgba16f_frag.h"
-#include "pixel_march_fixup_directional_rgba16f_out_frag.h"
-#include "pixel_march_fixup_directional_rgba32f_frag.h"
-#include "pixel_march_fixup_directional_rgba32f_out_frag.h"
-#include "pixel_march_fixup_table_rgba16f_frag.h"
-#include "pixel_march_fixup_table_rgba16f_out_frag.h"
-#include "pixel_march_fixup_table_rgba32f_frag.h"
-#include "pixel_march_fixup_table_rgba32f_out_frag.h"
-#include "pixel_march_fixup_directional_color_rgba16f_frag.h"
-#include "pixel_march_fixup_directional_color_rgba16f_out_frag.h"
-#include "pixel_march_fixup_directional_color_rgba32f_frag.h"
-#include "pixel_march_fixup_directional_color_rgba32f_out_frag.h"
-#include "pixel_march_fixup_table_color_rgba16f_frag.h"
-#include "pixel_march_fixup_table_color_rgba16f_out_frag.h"
-#include "pixel_march_fixup_table_color_rgba32f_frag.h"
-#include "pixel_march_fixup_table_color_rgba32f_out_frag.h"
-#include "pixel_march_fixup_table_cube_rgba16f_frag.h"
-#include "pixel_march_fixup_table_cube_rgba16f_out_frag.h"
-#include "pixel_march_fixup_table_cube_rgba32f_frag.h"
-#include "pixel_march_fixup_table_cube_rgba32f_out_frag.h"
+#include "pixel_march_frag_variants.h"
+#include "shader_variant.h"
+#include "shared_shaders.h"
 
 namespace ls {
-namespace {
 
+// A point light's cube map comes without light color (refused with it).
 rg::ShaderCode pixelMarchShader(const ScatterSpec& spec) {
-    const bool table = spec.light != LightKind::Directional;
-    // A point light's cube map (light color is refused with it).
-    if (spec.cubeShadow) return rg::spirv(ls_spirv::pixel_march_table_cube_frag);
-    if (table) return spec.lightColor ? rg::spirv(ls_spirv::pixel_march_table_color_frag)
-                                      : rg::spirv(ls_spirv::pixel_march_table_frag);
-    return spec.lightColor ? rg::spirv(ls_spirv::pixel_march_directional_color_frag)
-                           : rg::spirv(ls_spirv::pixel_march_directional_frag);
+    return pickShader(ls_spirv::pixel_march_frag_variants,
+                      {{"LS_NEEDS_TABLE", spec.light != LightKind::Directional},
+                       {"LS_LIGHT_COLOR", spec.lightColor && !spec.cubeShadow},
+                       {"LS_CUBE_SHADOW", spec.cubeShadow},
+                       {"LS_COMPOSITE", 0},
+                       {"LS_COLOR_RGBA32F", 0},
+                       {"LS_WITH_OUTPUT", 0}});
 }
 
-// The fix-up's variants, compositing into the engine's color.
-const CompositeVariants& fixupShaders(const ScatterSpec& spec) {
-    static const CompositeVariants directional{
-        rg::spirv(ls_spirv::pixel_march_fixup_directional_rgba16f_frag),
-        rg::spirv(ls_spirv::pixel_march_fixup_directional_rgba16f_out_frag),
-        rg::spirv(ls_spirv::pixel_march_fixup_directional_rgba32f_frag),
-        rg::spirv(ls_spirv::pixel_march_fixup_directional_rgba32f_out_frag)};
-    static const CompositeVariants table{
-        rg::spirv(ls_spirv::pixel_march_fixup_table_rgba16f_frag),
-        rg::spirv(ls_spirv::pixel_march_fixup_table_rgba16f_out_frag),
-        rg::spirv(ls_spirv::pixel_march_fixup_table_rgba32f_frag),
-        rg::spirv(ls_spirv::pixel_march_fixup_table_rgba32f_out_frag)};
-    static const CompositeVariants directionalColor{
-        rg::spirv(ls_spirv::pixel_march_fixup_directional_color_rgba16f_frag),
-        rg::spirv(ls_spirv::pixel_march_fixup_directional_color_rgba16f_out_frag),
-        rg::spirv(ls_spirv::pixel_march_fixup_directional_color_rgba32f_frag),
-        rg::spirv(ls_spirv::pixel_march_fixup_directional_color_rgba32f_out_frag)};
-    static const CompositeVariants tableColor{
-        rg::spirv(ls_spirv::pixel_march_fixup_table_color_rgba16f_frag),
-        rg::spirv(ls_spirv::pixel_march_fixup_table_color_rgba16f_out_frag),
-        rg::spirv(ls_spirv::pixel_march_fixup_table_color_rgba32f_frag),
-        rg::spirv(ls_spirv::pixel_march_fixup_table_color_rgba32f_out_frag)};
-    static const CompositeVariants tableCube{
-        rg::spirv(ls_spirv::pixel_march_fixup_table_cube_rgba16f_frag),
-        rg::spirv(ls_spirv::pixel_march_fixup_table_cube_rgba16f_out_frag),
-        rg::spirv(ls_spirv::pixel_march_fixup_table_cube_rgba32f_frag),
-        rg::spirv(ls_spirv::pixel_march_fixup_table_cube_rgba32f_out_frag)};
-    if (spec.cubeShadow) return tableCube;
-    if (spec.light != LightKind::Directional) return spec.lightColor ? tableColor : table;
-    return spec.lightColor ? directionalColor : directional;
+rg::ShaderCode fixupShader(const ScatterSpec& spec, VkFormat color, bool withOutput) {
+    return pickCompositeShader(ls_spirv::pixel_march_frag_variants,
+                               {{"LS_NEEDS_TABLE", spec.light != LightKind::Directional},
+                                {"LS_LIGHT_COLOR", spec.lightColor && !spec.cubeShadow},
+                                {"LS_CUBE_SHADOW", spec.cubeShadow},
+                                {"LS_COMPOSITE", 1}},
+                               color, withOutput);
 }
-
-}  // namespace
 
 rg::BindingTable declarePixelMarch(rg::PassBuilder& pass, const NodeInputs& in) {
     rg::BindingTable table = frameTable(pass, in.constants);
@@ -86,9 +39,11 @@ rg::BindingTable declarePixelMarch(rg::PassBuilder& pass, const NodeInputs& in) 
 void drawPixelMarch(rg::PassContext& ctx, const NodeInputs& in, const rg::BindingTable& table,
                     const PixelMarchDraw& draw) {
     const ScatterSpec& spec = in.shared->spec;
-    auto desc = fullscreenPipeline(
-        draw.composite ? fixupShaders(spec).pick(ctx, *draw.composite) : pixelMarchShader(spec),
-        ctx, table.layout());
+    auto desc =
+        fullscreenPipeline(draw.composite ? fixupShader(spec, ctx.format(draw.composite->color),
+                                                        draw.composite->inscatterOut.valid())
+                                          : pixelMarchShader(spec),
+                           ctx, table.layout());
     desc.pushConstantBytes = draw.composite ? 8 : 4;
     desc.specialization = spec.constants();
     if (draw.whereStencilIsZero) {

@@ -1,9 +1,15 @@
 #include "screen_lin_node.h"
+#include "shader_variant.h"
 #include "shared_nodes.h"
-#include "unshadowed_directional_frag.h"
-#include "unshadowed_table_frag.h"
+#include "shared_shaders.h"
+#include "unshadowed_frag_variants.h"
 
 namespace ls {
+
+rg::ShaderCode unshadowedShader(const ScatterSpec& spec) {
+    return pickShader(ls_spirv::unshadowed_frag_variants,
+                      {{"LS_NEEDS_TABLE", spec.light != LightKind::Directional}});
+}
 
 rg::ImageRef addUnshadowed(rg::RenderGraph& graph, const NodeInputs& in) {
     return addScreenLinNode(graph, in.shared,
@@ -12,12 +18,7 @@ rg::ImageRef addUnshadowed(rg::RenderGraph& graph, const NodeInputs& in) {
                              .depth = in.depth,
                              // The table; an unshadowed frame has nothing else.
                              .rows = [in](rg::BindingTable& table) { addMarchInputs(table, in); },
-                             .shader =
-                                 [](const ScatterSpec& spec) {
-                                     return spec.light != LightKind::Directional
-                                                ? rg::spirv(ls_spirv::unshadowed_table_frag)
-                                                : rg::spirv(ls_spirv::unshadowed_directional_frag);
-                                 },
+                             .shader = unshadowedShader,
                              .specialize = {}});
 }
 

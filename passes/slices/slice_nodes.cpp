@@ -1,31 +1,25 @@
 #include "slice_nodes.h"
 
 #include "shared/pass_helpers.h"
-#include "slice_planes_plain_frag.h"
-#include "slice_planes_plain_noise_frag.h"
-#include "slice_planes_shadowed_color_frag.h"
-#include "slice_planes_shadowed_color_noise_frag.h"
-#include "slice_planes_shadowed_frag.h"
-#include "slice_planes_shadowed_noise_frag.h"
+#include "shared/shader_variant.h"
+#include "slice_planes_frag_variants.h"
 #include "slice_planes_vert.h"
 #include "slice_resolve_closed_form_frag.h"
+#include "slice_shaders.h"
 #include "tiling_noise_comp.h"
 
 namespace ls {
-namespace {
 
 // Bindings only some frames have are build-time variants (a pipeline never declares a descriptor
 // it is not given); the cookie is looked up in the shadow map's space, so it comes with one.
-rg::ShaderCode planesShader(bool shadowMap, bool cookie, bool noise) {
-    if (!shadowMap)
-        return noise ? rg::spirv(ls_spirv::slice_planes_plain_noise_frag)
-                     : rg::spirv(ls_spirv::slice_planes_plain_frag);
-    if (cookie)
-        return noise ? rg::spirv(ls_spirv::slice_planes_shadowed_color_noise_frag)
-                     : rg::spirv(ls_spirv::slice_planes_shadowed_color_frag);
-    return noise ? rg::spirv(ls_spirv::slice_planes_shadowed_noise_frag)
-                 : rg::spirv(ls_spirv::slice_planes_shadowed_frag);
+rg::ShaderCode slicePlanesShader(bool shadowMap, bool cookie, bool noise) {
+    return pickShader(ls_spirv::slice_planes_frag_variants,
+                      {{"LS_SHADOW_MAP", shadowMap},
+                       {"LS_LIGHT_COLOR", shadowMap && cookie},
+                       {"LS_NOISE", noise}});
 }
+
+namespace {
 
 VkFormat accumulationFormat(SliceAccumulation target) {
     switch (target) {
@@ -66,7 +60,7 @@ rg::ImageRef addSlicePlanes(rg::RenderGraph& graph, const Shared& shared,
                    noise = in.noise.valid();
         rg::GraphicsPipelineDesc desc;
         desc.vertex = rg::spirv(ls_spirv::slice_planes_vert);
-        desc.fragment = planesShader(shadow, cookie, noise);
+        desc.fragment = slicePlanesShader(shadow, cookie, noise);
         desc.formats = ctx.renderingFormats();
         desc.bindings = table.layout();
         desc.pushConstantBytes = sizeof(SlicePush);

@@ -1,0 +1,10 @@
+#pragma once
+// The build of slices' planes shader the beam tree's sampling planes ask for (the builds:
+// shaders/CMakeLists.txt).
+#include "rendergraph/pipeline.h"
+
+namespace ls {
+
+rg::ShaderCode beamTreePlanesShader(bool shadowMap, bool cookie);
+
+}  // namespace ls

@@ -1,0 +1,16 @@
+#pragma once
+// The builds of epipolar's shaders its nodes ask for (the builds: shaders/CMakeLists.txt).
+#include <vulkan/vulkan.h>
+
+#include "rendergraph/pipeline.h"
+#include "shared/shared_state.h"
+
+namespace ls {
+
+// spec.minMaxTrees says whether the trees are read; countSteps, the step-count buffer's build.
+rg::ShaderCode rayMarchShader(const ScatterSpec& spec, bool countSteps);
+// table: the point-light table is read (any light but a directional one).
+rg::ShaderCode unwarpShader(bool table, VkFormat color, bool withOutput);
+rg::ShaderCode minMaxFirstLevelShader(bool cubeShadow);
+
+}  // namespace ls

@@ -1,0 +1,18 @@
+#pragma once
+// The builds of the shared nodes' shaders they ask for (the builds: shaders/CMakeLists.txt).
+#include <vulkan/vulkan.h>
+
+#include "rendergraph/pipeline.h"
+#include "shared_state.h"
+
+namespace ls {
+
+rg::ShaderCode pixelMarchShader(const ScatterSpec& spec);
+// The march compositing into the engine's color (epipolar's fix-up).
+rg::ShaderCode fixupShader(const ScatterSpec& spec, VkFormat color, bool withOutput);
+// withLin: a Lin image is read (else only the extinction is applied); addOnly: a frame's later
+// light, adding Lin only (its build reads Lin).
+rg::ShaderCode compositeShader(bool addOnly, bool withLin, VkFormat color, bool withOutput);
+rg::ShaderCode unshadowedShader(const ScatterSpec& spec);
+
+}  // namespace ls

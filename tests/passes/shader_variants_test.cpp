@@ -1,0 +1,132 @@
+// No GPU: each build of a shader a node asks for is built, and each build is one a node asks for
+// (the builds are listed once, in shaders/CMakeLists.txt; the nodes ask by defines).
+#include <gtest/gtest.h>
+
+#include <set>
+#include <stdexcept>
+#include <string>
+
+#include "beam_tree_hybrid/beam_tree_shaders.h"
+#include "composite_comp_variants.h"
+#include "cone_march/cone_march_shader.h"
+#include "cone_march_frag_variants.h"
+#include "epipolar/epipolar_shaders.h"
+#include "min_max_first_level_comp_variants.h"
+#include "pixel_march_frag_variants.h"
+#include "ray_march_frag_variants.h"
+#include "shared/shared_shaders.h"
+#include "slice_planes_frag_variants.h"
+#include "slices/slice_shaders.h"
+#include "unshadowed_frag_variants.h"
+#include "unwarp_frag_variants.h"
+
+namespace ls {
+namespace {
+
+using Reached = std::set<const uint32_t*>;
+
+void reach(Reached& reached, const rg::ShaderCode& code) {
+    ASSERT_NE(code.words, nullptr);
+    ASSERT_GT(code.bytes, 0u);
+    reached.insert(code.words);
+}
+
+// Every build of the source is one the nodes asked for.
+void expectAllReached(const ls_spirv::ShaderVariants& shader, const Reached& reached) {
+    for (const ls_spirv::Variant& v : shader.variants())
+        EXPECT_TRUE(reached.count(v.words.data()))
+            << shader.source() << "'s build \"" << v.name << "\" is built but no node asks for it";
+}
+
+// The lights a spec can describe: a cube map only for a point light.
+template <typename F>
+void forEachSpec(F&& f) {
+    for (LightKind light : {LightKind::Directional, LightKind::Spot, LightKind::Point})
+        for (bool color : {false, true})
+            for (bool cube : {false, true})
+                for (bool trees : {false, true}) {
+                    if (cube && light != LightKind::Point) continue;
+                    ScatterSpec spec;
+                    spec.light = light;
+                    spec.lightColor = color;
+                    spec.cubeShadow = cube;
+                    spec.minMaxTrees = trees;
+                    f(spec);
+                }
+}
+
+constexpr VkFormat kColors[] = {VK_FORMAT_R16G16B16A16_SFLOAT, VK_FORMAT_R32G32B32A32_SFLOAT};
+
+TEST(ShaderVariants, EpipolarNodesAskForBuiltVariants) {
+    Reached rayMarch, pixelMarch, unwarp, minMax;
+    forEachSpec([&](const ScatterSpec& spec) {
+        for (bool count : {false, true}) reach(rayMarch, rayMarchShader(spec, count));
+        reach(pixelMarch, pixelMarchShader(spec));
+        for (VkFormat color : kColors)
+            for (bool out : {false, true}) reach(pixelMarch, fixupShader(spec, color, out));
+    });
+    for (bool table : {false, true})
+        for (VkFormat color : kColors)
+            for (bool out : {false, true}) reach(unwarp, unwarpShader(table, color, out));
+    for (bool cube : {false, true}) reach(minMax, minMaxFirstLevelShader(cube));
+    expectAllReached(ls_spirv::ray_march_frag_variants, rayMarch);
+    expectAllReached(ls_spirv::pixel_march_frag_variants, pixelMarch);
+    expectAllReached(ls_spirv::unwarp_frag_variants, unwarp);
+    expectAllReached(ls_spirv::min_max_first_level_comp_variants, minMax);
+}
+
+TEST(ShaderVariants, ScreenLinNodesAskForBuiltVariants) {
+    Reached composite, unshadowed, coneMarch, planes;
+    for (bool addOnly : {false, true})
+        for (bool lin : {false, true})
+            for (VkFormat color : kColors)
+                for (bool out : {false, true})
+                    reach(composite, compositeShader(addOnly, lin, color, out));
+    forEachSpec([&](const ScatterSpec& spec) { reach(unshadowed, unshadowedShader(spec)); });
+    for (bool shadow : {false, true})
+        for (bool color : {false, true}) {
+            reach(coneMarch, coneMarchShader(shadow, color));
+            reach(planes, beamTreePlanesShader(shadow, color));
+            for (bool noise : {false, true}) reach(planes, slicePlanesShader(shadow, color, noise));
+        }
+    expectAllReached(ls_spirv::composite_comp_variants, composite);
+    expectAllReached(ls_spirv::unshadowed_frag_variants, unshadowed);
+    expectAllReached(ls_spirv::cone_march_frag_variants, coneMarch);
+    expectAllReached(ls_spirv::slice_planes_frag_variants, planes);
+}
+
+TEST(ShaderVariants, CountingStepsIsAnotherBuild) {
+    const ScatterSpec spec;
+    EXPECT_NE(rayMarchShader(spec, false).words, rayMarchShader(spec, true).words);
+}
+
+std::string pickError(const ls_spirv::ShaderVariants& shader,
+                      std::initializer_list<ls_spirv::Define> defines) {
+    try {
+        shader.pick(defines);
+    } catch (const std::logic_error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(ShaderVariants, BuildNotMadeIsOneClearError) {
+    // The planes' shader is not built with a cookie and noise but no shadow map.
+    EXPECT_EQ(pickError(ls_spirv::slice_planes_frag_variants,
+                        {{"LS_SHADOW_MAP", 0}, {"LS_LIGHT_COLOR", 1}, {"LS_NOISE", 1}}),
+              "shader slice_planes.frag with [LS_SHADOW_MAP=0,LS_LIGHT_COLOR=1,LS_NOISE=1]: no "
+              "build has these defines (add it to shaders/CMakeLists.txt)");
+    EXPECT_EQ(pickError(ls_spirv::cone_march_frag_variants, {{"LS_SHADOW_MAP", 1}}),
+              "shader cone_march.frag with [LS_SHADOW_MAP=1]: the define LS_LIGHT_COLOR is not "
+              "given");
+    EXPECT_EQ(pickError(ls_spirv::cone_march_frag_variants,
+                        {{"LS_SHADOW_MAP", 1}, {"LS_LIGHT_COLOR", 0}, {"LS_NOISE", 0}}),
+              "shader cone_march.frag with [LS_SHADOW_MAP=1,LS_LIGHT_COLOR=0,LS_NOISE=0]: no build "
+              "of it has the define LS_NOISE");
+    EXPECT_EQ(pickError(ls_spirv::cone_march_frag_variants,
+                        {{"LS_SHADOW_MAP", 1}, {"LS_LIGHT_COLOR", 1}}),
+              "");
+}
+
+}  // namespace
+}  // namespace ls
