@@ -3,6 +3,8 @@
 # first command) and run every test.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# Every tracked C++ file as .clang-format writes it (the style holds by itself, not by review).
+scripts/check-format.sh
 scripts/build.sh
 ctest --test-dir build --output-on-failure -j"$(nproc)"
 # The same code under AddressSanitizer and UndefinedBehaviorSanitizer (build-asan/).
