@@ -42,7 +42,7 @@ SceneDesc poseAt(const SceneDesc& start, MotionKind what, const Motion& motion, 
         return s;
     }
     LightDesc& l = s.light;
-    if (l.type == LightKind::Directional) {
+    if (l.type == lightscatter::LightType::Directional) {
         // About the axis that turns the direction towards the camera's right (up, when the sun
         // shines along that right vector itself).
         const glm::dvec3 d = glm::normalize(glm::dvec3(l.direction));

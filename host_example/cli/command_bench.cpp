@@ -112,13 +112,13 @@ fs::path stripPath(const fs::path& out, const bench::BenchRun& run, const std::s
 bool skipped(const bench::BenchRun& run, const SceneDesc& scene) {
     // Seed 001's closed form takes unshadowed point and spot lights only.
     const bool unshadowedPointLike =
-        scene.light.type == LightKind::Point ||
-        (scene.light.type == LightKind::Spot && scene.light.shadowMapSize == 0);
+        scene.light.type == lightscatter::LightType::Point ||
+        (scene.light.type == lightscatter::LightType::Spot && scene.light.shadowMapSize == 0);
     if (run.method == lightscatter::Method::Analytic && !unshadowedPointLike) return true;
     // Seed 004's beam tree is built from a point or spot light.
     if ((run.method == lightscatter::Method::BeamTreeAnalytic ||
          run.method == lightscatter::Method::BeamTreeSampling) &&
-        scene.light.type == LightKind::Directional)
+        scene.light.type == lightscatter::LightType::Directional)
         return true;
     // A shadow-map sweep resizes the light's map; a light without one (point_fog's) keeps none:
     // a point light given a size would get a cube map, which is another scene, not a size.

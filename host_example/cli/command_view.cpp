@@ -214,7 +214,7 @@ void moveLight(GLFWwindow* w, LightDesc& light, float speed, float dt) {
     if (glfwGetKey(w, GLFW_KEY_UP) == GLFW_PRESS) m.y += 1;
     if (glfwGetKey(w, GLFW_KEY_DOWN) == GLFW_PRESS) m.y -= 1;
     if (m == glm::vec2(0.0f)) return;
-    if (light.type == LightKind::Directional) {  // turn the sun
+    if (light.type == lightscatter::LightType::Directional) {  // turn the sun
         glm::mat4 r = glm::rotate(glm::mat4(1.0f), m.x * dt * 0.6f, glm::vec3(0, 1, 0));
         r = glm::rotate(r, m.y * dt * 0.3f, glm::vec3(1, 0, 0));
         light.direction = glm::normalize(glm::vec3(r * glm::vec4(light.direction, 0.0f)));
@@ -228,7 +228,7 @@ void moveLight(GLFWwindow* w, LightDesc& light, float speed, float dt) {
 void animateLight(LightDesc& light, const LightDesc& start, int frame) {
     const float angle = static_cast<float>(frame) * 0.01f;
     const glm::mat4 r = glm::rotate(glm::mat4(1.0f), angle, glm::vec3(0, 1, 0));
-    if (light.type == LightKind::Directional) {
+    if (light.type == lightscatter::LightType::Directional) {
         light.direction = glm::normalize(glm::vec3(r * glm::vec4(start.direction, 0.0f)));
     } else {
         light.position = start.position + glm::vec3(std::cos(angle), 0.0f, std::sin(angle)) * 0.5f;
@@ -393,9 +393,9 @@ int runView(Args& args) {
                 lightscatter::Method::BruteForce, lightscatter::Method::ConeMarch,
                 lightscatter::Method::Slices};
             const LightDesc& l = renderer.scene().light;
-            if (l.type == LightKind::Point || (l.type == LightKind::Spot && l.shadowMapSize == 0))
+            if (l.type == lightscatter::LightType::Point || (l.type == lightscatter::LightType::Spot && l.shadowMapSize == 0))
                 methods.push_back(lightscatter::Method::Analytic);
-            if (l.type != LightKind::Directional) {
+            if (l.type != lightscatter::LightType::Directional) {
                 methods.push_back(lightscatter::Method::BeamTreeAnalytic);
                 methods.push_back(lightscatter::Method::BeamTreeSampling);
             }

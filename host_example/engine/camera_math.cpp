@@ -129,7 +129,7 @@ glm::mat4 shadowViewProjection(const LightDesc& light, const Bounds& scene, cons
     const float radius = scene.empty() ? 1.0f
                                        : std::max({glm::length(scene.max - scene.min) * 0.5f, 1e-3f,
                                                    1e-5f * glm::length(center)});
-    if (light.type == LightKind::Spot) {
+    if (light.type == lightscatter::LightType::Spot) {
         const glm::mat4 view = glm::lookAtRH(light.position, light.position + dir, safeUp(dir, {0, 1, 0}));
         const float farthest = glm::length(center - light.position) + radius;
         const float farP = std::max(std::min(light.range, farthest), 0.1f);

@@ -175,7 +175,7 @@ void EngineRenderer::createTargets() {
                                   (scene_.lightList ? "lights[" + std::to_string(i) + "]" : std::string("light")) +
                                   ".shadowMapSize " + std::to_string(sm);
         because(field, [&] {
-            if (l.type == LightKind::Point)
+            if (l.type == lightscatter::LightType::Point)
                 lights_[i].cubeShadow = std::make_unique<CubeShadowMap>(device_, sm, "host cube shadow map" + which);
             else
                 lights_[i].shadowMap = std::make_unique<GpuImage>(
@@ -320,9 +320,9 @@ void EngineRenderer::buildGraph() {
             colorRef_ = pass.colorAttachment(colorRef_, rg::LoadOp::Load);
             pass.depthTest(depthRef_);
         }
-        const LightKind kind = scene_.lightAt(i).type;
-        const int32_t lightType = kind == LightKind::Directional ? 0
-                                  : kind == LightKind::Spot      ? 1
+        const lightscatter::LightType kind = scene_.lightAt(i).type;
+        const int32_t lightType = kind == lightscatter::LightType::Directional ? 0
+                                  : kind == lightscatter::LightType::Spot      ? 1
                                                                  : 2;
         pass.execute([pipes, mesh, lighting, shadow, shadowed, reversed, lightType,
                       first](rg::PassContext& ctx) {

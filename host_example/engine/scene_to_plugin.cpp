@@ -46,9 +46,7 @@ lightscatter::Camera toPluginCamera(const CameraDesc& c, const glm::mat4& view,
 lightscatter::Light toPluginLight(const LightDesc& l, const glm::mat4& shadowViewProj,
                                   bool shadowed) {
     lightscatter::Light out;
-    out.type = l.type == LightKind::Directional ? lightscatter::LightType::Directional
-               : l.type == LightKind::Spot      ? lightscatter::LightType::Spot
-                                                : lightscatter::LightType::Point;
+    out.type = l.type;
     out.position = v3(l.position);
     out.direction = v3(l.direction);
     out.intensity = v3(l.intensity);
@@ -133,9 +131,7 @@ lightscatter::Medium toPluginMedium(const MediumDesc& m) {
     out.betaM = v3(m.betaM);
     out.g = m.g;
     out.sigmaA = v3(m.sigmaA);
-    out.phase = m.phase == PhaseKind::Isotropic ? lightscatter::MiePhase::Isotropic
-                : m.phase == PhaseKind::Hazy    ? lightscatter::MiePhase::Hazy
-                                                : lightscatter::MiePhase::CornetteShanks;
+    out.phase = m.phase;
     out.maxDistance = m.maxDistance;
     return out;
 }

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "lightscatter.h"  // the light types and phase functions, one enum each with the plugin
+
 namespace host {
 
 // Every failure to read a scene: one line naming the file, the field or value, and the rule broken.
@@ -69,8 +71,6 @@ void appendGltf(MeshData& mesh, const std::string& path, const glm::mat4& transf
 void appendGltfBytes(MeshData& mesh, const std::string& path, std::vector<unsigned char> bytes,
                      const glm::mat4& transform = glm::mat4(1.0f));
 
-enum class LightKind { Directional, Spot, Point };
-enum class PhaseKind { CornetteShanks, Isotropic, Hazy };
 
 struct CameraDesc {
     glm::vec3 position{0.0f, 1.7f, 5.0f};
@@ -84,7 +84,7 @@ struct CameraDesc {
 };
 
 struct LightDesc {
-    LightKind type = LightKind::Directional;
+    lightscatter::LightType type = lightscatter::LightType::Directional;
     glm::vec3 position{0.0f};
     glm::vec3 direction{0.0f, -1.0f, 0.0f};  // unit; the way light travels (directional), spot axis
     glm::vec3 intensity{1.0f};               // W/m^2 (directional) or W/sr
@@ -100,7 +100,7 @@ struct MediumDesc {
     glm::vec3 betaM{2e-5f, 2e-5f, 2e-5f};
     float g = 0.76f;
     glm::vec3 sigmaA{0.0f};
-    PhaseKind phase = PhaseKind::CornetteShanks;
+    lightscatter::MiePhase phase = lightscatter::MiePhase::CornetteShanks;
     float maxDistance = 1000.0f;
 };
 

@@ -377,14 +377,14 @@ class SceneReader {
                   {"type", "position", "direction", "intensity", "halfAngleDegrees", "range",
                    "radius", "shadowMapSize"});
         if (const json* x = member(v, "type")) {
-            light.type = oneOf<LightKind>(*x, name + ".type",
-                                          {{"directional", LightKind::Directional},
-                                           {"spot", LightKind::Spot},
-                                           {"point", LightKind::Point}});
+            light.type = oneOf<lightscatter::LightType>(*x, name + ".type",
+                                          {{"directional", lightscatter::LightType::Directional},
+                                           {"spot", lightscatter::LightType::Spot},
+                                           {"point", lightscatter::LightType::Point}});
         }
         // A point light's shadow map is a cube of six faces (six depth passes for the host, six
         // per-face passes for epipolar): it has one only when the scene asks (shadowMapSize > 0).
-        if (light.type == LightKind::Point) light.shadowMapSize = 0;
+        if (light.type == lightscatter::LightType::Point) light.shadowMapSize = 0;
         if (const json* x = member(v, "position")) {
             light.position =
                 vec3InRange(*x, name + ".position", -limits::kMaxLength, limits::kMaxLength);
@@ -431,10 +431,10 @@ class SceneReader {
         if (const json* x = member(v, "sigmaA"))
             medium.sigmaA = vec3InRange(*x, "medium.sigmaA", 0.0f, c);
         if (const json* x = member(v, "phase")) {
-            medium.phase = oneOf<PhaseKind>(*x, "medium.phase",
-                                            {{"cornette-shanks", PhaseKind::CornetteShanks},
-                                             {"isotropic", PhaseKind::Isotropic},
-                                             {"hazy", PhaseKind::Hazy}});
+            medium.phase = oneOf<lightscatter::MiePhase>(*x, "medium.phase",
+                                            {{"cornette-shanks", lightscatter::MiePhase::CornetteShanks},
+                                             {"isotropic", lightscatter::MiePhase::Isotropic},
+                                             {"hazy", lightscatter::MiePhase::Hazy}});
         }
         if (const json* x = member(v, "maxDistance")) {
             medium.maxDistance = inRange(*x, "medium.maxDistance", 0.0, limits::kMaxLength, true);

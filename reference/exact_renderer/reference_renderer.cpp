@@ -17,8 +17,8 @@ namespace host::reference {
 
 ls::ref::Light toReferenceLight(const LightDesc& l) {
     ls::ref::Light out;
-    out.type = l.type == LightKind::Directional ? ls::ref::Light::Directional
-               : l.type == LightKind::Spot      ? ls::ref::Light::Spot
+    out.type = l.type == lightscatter::LightType::Directional ? ls::ref::Light::Directional
+               : l.type == lightscatter::LightType::Spot      ? ls::ref::Light::Spot
                                                 : ls::ref::Light::Point;
     out.position = glm::dvec3(l.position);
     out.direction = glm::normalize(glm::dvec3(l.direction));
@@ -35,8 +35,8 @@ ls::ref::Medium toReferenceMedium(const MediumDesc& m) {
     out.betaM = glm::dvec3(m.betaM);
     out.sigmaA = glm::dvec3(m.sigmaA);
     out.g = m.g;
-    out.miePhase = m.phase == PhaseKind::Isotropic ? ls::ref::Medium::Isotropic
-                   : m.phase == PhaseKind::Hazy    ? ls::ref::Medium::Hazy
+    out.miePhase = m.phase == lightscatter::MiePhase::Isotropic ? ls::ref::Medium::Isotropic
+                   : m.phase == lightscatter::MiePhase::Hazy    ? ls::ref::Medium::Hazy
                                                    : ls::ref::Medium::CornetteShanks;
     out.maxDistance = m.maxDistance;
     return out;

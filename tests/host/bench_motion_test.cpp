@@ -185,7 +185,7 @@ TEST(Motion, TheCameraMovesRightAndTurnsRightBySteps) {
 TEST(Motion, ASunTurnsTowardsTheCamerasRightAndASpotMoves) {
     host::bench::Motion m;
     const host::SceneDesc sun = scene("atrium");
-    ASSERT_EQ(sun.light.type, host::LightKind::Directional);
+    ASSERT_EQ(sun.light.type, lightscatter::LightType::Directional);
     const auto& c = sun.camera;
     const glm::vec3 right = glm::normalize(glm::cross(c.target - c.position, c.up));
     const host::SceneDesc s30 = host::bench::poseAt(sun, host::bench::MotionKind::Light, m, 30);
@@ -194,7 +194,7 @@ TEST(Motion, ASunTurnsTowardsTheCamerasRightAndASpotMoves) {
     EXPECT_EQ(s30.camera.position, c.position) << "the camera stays";
 
     const host::SceneDesc spot = scene("window_room");
-    ASSERT_EQ(spot.light.type, host::LightKind::Spot);
+    ASSERT_EQ(spot.light.type, lightscatter::LightType::Spot);
     const host::SceneDesc p30 = host::bench::poseAt(spot, host::bench::MotionKind::Light, m, 30);
     EXPECT_NEAR(glm::length(p30.light.position - spot.light.position), 0.6, 1e-5);
     EXPECT_EQ(p30.light.direction, spot.light.direction);

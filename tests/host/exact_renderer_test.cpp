@@ -61,7 +61,7 @@ host::SceneDesc baseScene() {
     s.medium.betaM = {0.02f, 0.02f, 0.02f};
     s.medium.g = 0.6f;
     s.medium.maxDistance = 50.0f;
-    s.light.type = host::LightKind::Directional;
+    s.light.type = lightscatter::LightType::Directional;
     s.light.direction = {0.3f, -1.0f, 0.2f};
     s.light.intensity = {10.0f, 9.0f, 8.0f};
     return s;
@@ -138,7 +138,7 @@ double maxAbs(const glm::dvec3& v) {
 
 TEST(ReferenceRenderer, ConvertsTheScenesLightAndMedium) {
     host::LightDesc l;
-    l.type = host::LightKind::Spot;
+    l.type = lightscatter::LightType::Spot;
     l.position = {1, 2, 3};
     l.direction = {0, -2, 0};
     l.intensity = {4, 5, 6};
@@ -159,7 +159,7 @@ TEST(ReferenceRenderer, ConvertsTheScenesLightAndMedium) {
     m.betaM = {4, 5, 6};
     m.sigmaA = {0.5f, 0.25f, 0.125f};
     m.g = 0.5f;
-    m.phase = host::PhaseKind::Isotropic;
+    m.phase = lightscatter::MiePhase::Isotropic;
     m.maxDistance = 77.0f;
     const ls::ref::Medium medium = host::reference::toReferenceMedium(m);
     EXPECT_EQ(medium.betaT(), glm::dvec3(5.5, 7.25, 9.125));
@@ -328,7 +328,7 @@ std::vector<Affine> pyramidShadow(const ls::ref::Ray& r) {
     return out;
 }
 
-ShadowCase pyramidCase(host::LightKind kind) {
+ShadowCase pyramidCase(lightscatter::LightType kind) {
     ShadowCase c;
     c.scene = baseScene();
     c.scene.camera.position = {0.3f, 1.0f, 6.0f};
@@ -353,11 +353,11 @@ ShadowCase pyramidCase(host::LightKind kind) {
 }
 
 TEST(ReferenceRenderer, PointLightOccluderShadowIsItsPyramid) {
-    EXPECT_GT(checkShadowCase(pyramidCase(host::LightKind::Point)), 20);
+    EXPECT_GT(checkShadowCase(pyramidCase(lightscatter::LightType::Point)), 20);
 }
 
 TEST(ReferenceRenderer, SpotLightOccluderShadowIsItsPyramidInsideTheCone) {
-    EXPECT_GT(checkShadowCase(pyramidCase(host::LightKind::Spot)), 20);
+    EXPECT_GT(checkShadowCase(pyramidCase(lightscatter::LightType::Spot)), 20);
 }
 
 TEST(ReferenceRenderer, HandComputedRayThroughSpotConeAndShadow) {
@@ -366,11 +366,11 @@ TEST(ReferenceRenderer, HandComputedRayThroughSpotConeAndShadow) {
     // 0.75.
     const ls::ref::Ray ray{{-5.0, 1.0, 0.0}, {1.0, 0.0, 0.0}, 10.0};
     const double cone = 3.0 * std::tan(glm::radians(35.0));
-    ShadowCase spot = pyramidCase(host::LightKind::Spot);
+    ShadowCase spot = pyramidCase(lightscatter::LightType::Spot);
     const ReferenceScene spotScene(spot.scene, spot.mesh, 4, 4);
     EXPECT_TRUE(
         sameIntervals(spotScene.litIntervals(ray), {{5.0 - cone, 4.25}, {5.75, 5.0 + cone}}, 1e-8));
-    ShadowCase point = pyramidCase(host::LightKind::Point);
+    ShadowCase point = pyramidCase(lightscatter::LightType::Point);
     const ReferenceScene pointScene(point.scene, point.mesh, 4, 4);
     EXPECT_TRUE(sameIntervals(pointScene.litIntervals(ray), {{0.0, 4.25}, {5.75, 10.0}}, 1e-8));
     // The range alone cuts the spot when the cone is wide: |x| <= sqrt(4^2 - 3^2).
@@ -386,7 +386,7 @@ TEST(ReferenceRenderer, HandComputedRayThroughSpotConeAndShadow) {
 }
 
 TEST(ReferenceRenderer, UnshadowedOptionKeepsOnlyTheLightVolume) {
-    ShadowCase c = pyramidCase(host::LightKind::Point);
+    ShadowCase c = pyramidCase(lightscatter::LightType::Point);
     c.options.relTol = 1e-6;
     c.options.shadows = false;
     const ReferenceImage open = renderReference(c.scene, c.mesh, 16, 9, c.options);
@@ -476,11 +476,11 @@ TEST(ReferenceRenderer, SkyPixelsUseTheFarPlaneOrMaxDistance) {
 // through its own visibility (the sun's slab, the spot's and the point light's pyramids from
 // different positions): no light is dropped, counted twice or shadowed from another's position.
 TEST(ReferenceRenderer, SeveralLightsAreTheSumOfTheirSingleRenders) {
-    ShadowCase c = pyramidCase(host::LightKind::Spot);
+    ShadowCase c = pyramidCase(lightscatter::LightType::Spot);
     c.options.relTol = 1e-6;
     host::LightDesc sun = baseScene().light;
     host::LightDesc point = c.scene.light;
-    point.type = host::LightKind::Point;
+    point.type = lightscatter::LightType::Point;
     point.position = {1.5f, 3.0f, -0.5f};
     point.intensity = {5.0f, 8.0f, 12.0f};
     host::SceneDesc all = c.scene;
@@ -528,7 +528,7 @@ void expectSameImage(const ReferenceImage& a, const ReferenceImage& b, double re
 }
 
 TEST(ReferenceRenderer, DepthConventionDoesNotChangeTheImage) {
-    for (const host::LightKind kind : {host::LightKind::Directional, host::LightKind::Spot}) {
+    for (const lightscatter::LightType kind : {lightscatter::LightType::Directional, lightscatter::LightType::Spot}) {
         ShadowCase c = pyramidCase(kind);
         c.options.relTol = 1e-9;
         c.scene.camera.farPlane = 500.0f;  // every surface inside it
@@ -546,7 +546,7 @@ TEST(ReferenceRenderer, DepthConventionDoesNotChangeTheImage) {
 }
 
 TEST(ReferenceRenderer, ThreadCountDoesNotChangeTheImage) {
-    ShadowCase c = pyramidCase(host::LightKind::Spot);
+    ShadowCase c = pyramidCase(lightscatter::LightType::Spot);
     c.options.relTol = 1e-6;
     c.options.threads = 1;
     const ReferenceImage one = renderReference(c.scene, c.mesh, 20, 11, c.options);
@@ -564,7 +564,7 @@ TEST(ReferenceRenderer, ThreadCountDoesNotChangeTheImage) {
 }
 
 TEST(ReferenceRenderer, ProgressRisesToOne) {
-    ShadowCase c = pyramidCase(host::LightKind::Directional);
+    ShadowCase c = pyramidCase(lightscatter::LightType::Directional);
     c.options.threads = 3;
     std::vector<double> seen;
     const ReferenceImage image =

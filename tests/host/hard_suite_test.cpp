@@ -102,20 +102,20 @@ TEST_F(HardSuite, EveryCaseIsFiniteAndWithinItsBound) {
                                             lightscatter::Method::Slices, lightscatter::Method::BeamTreeAnalytic,
                                             lightscatter::Method::BeamTreeSampling}) {
             // Seed 001's closed form only takes unshadowed point and spot lights (refusals: Cli tests).
-            const bool unshadowedPointLike = scene.light.type == host::LightKind::Point ||
-                                             (scene.light.type == host::LightKind::Spot && scene.light.shadowMapSize == 0);
+            const bool unshadowedPointLike = scene.light.type == lightscatter::LightType::Point ||
+                                             (scene.light.type == lightscatter::LightType::Spot && scene.light.shadowMapSize == 0);
             if (method == lightscatter::Method::Analytic && !unshadowedPointLike) continue;
             // A point light's cube shadow map: epipolar and brute force only (the others refuse it
             // in one line: PointCageGpu.OnlyEpipolarAndBruteForceSampleTheCubeMap).
             const bool cubeShadowed =
-                scene.light.type == host::LightKind::Point && scene.light.shadowMapSize > 0;
+                scene.light.type == lightscatter::LightType::Point && scene.light.shadowMapSize > 0;
             if (cubeShadowed && method != lightscatter::Method::Epipolar &&
                 method != lightscatter::Method::BruteForce)
                 continue;
             // Seed 004's beam tree is built from a point or spot light.
             if ((method == lightscatter::Method::BeamTreeAnalytic ||
                  method == lightscatter::Method::BeamTreeSampling) &&
-                scene.light.type == host::LightKind::Directional)
+                scene.light.type == lightscatter::LightType::Directional)
                 continue;
             host::RenderOptions options;
             options.method = method;

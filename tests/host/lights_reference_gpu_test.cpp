@@ -187,7 +187,7 @@ TEST_F(LightsReferenceGpu, ACagedPointLightBesideASpotMatchesTheReference) {
     host::SceneDesc scene = shippedScene("point_cage");
     ASSERT_GT(scene.light.shadowMapSize, 0u);
     host::LightDesc spot;  // between the camera and the cage, shining down past it
-    spot.type = host::LightKind::Spot;
+    spot.type = lightscatter::LightType::Spot;
     spot.position = {2.5f, 5.0f, 3.5f};
     spot.direction = {-0.3f, -1.0f, -0.4f};
     spot.intensity = {40.0f, 70.0f, 120.0f};

@@ -57,7 +57,7 @@ TEST(LightsScenes, EachIsTheAtriumUnderNShadowedSpots) {
         SCOPED_TRACE(s.path);
         ASSERT_EQ(s.lightCount(), count);
         for (size_t i = 0; i < count; ++i) {
-            EXPECT_EQ(s.lightAt(i).type, host::LightKind::Spot);
+            EXPECT_EQ(s.lightAt(i).type, lightscatter::LightType::Spot);
             EXPECT_GT(s.lightAt(i).shadowMapSize, 0u);
         }
         ASSERT_EQ(s.models.size(), atrium.models.size());

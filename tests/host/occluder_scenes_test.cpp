@@ -61,7 +61,7 @@ std::vector<ls::beam::Occluder> treeOccluders(const std::vector<host::BoundingBo
 TEST(OccluderScenes, LoadAsNBoxesOnAFloorUnderASpotLight) {
     for (int count : kCounts) {
         const host::SceneDesc scene = host::loadSceneFile(scenePath(count));
-        EXPECT_EQ(scene.light.type, host::LightKind::Spot) << count;
+        EXPECT_EQ(scene.light.type, lightscatter::LightType::Spot) << count;
         EXPECT_GT(scene.light.shadowMapSize, 0u) << count;
         const host::MeshData mesh = host::loadSceneMeshes(scene);
         EXPECT_TRUE(mesh.warnings.empty()) << count;

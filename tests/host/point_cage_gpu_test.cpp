@@ -40,7 +40,7 @@ class PointCageGpu : public testing_support::GpuTest {};
 
 TEST_F(PointCageGpu, EpipolarAndBruteForceMatchTheReference) {
     const host::SceneDesc scene = cageScene();
-    ASSERT_EQ(scene.light.type, host::LightKind::Point);
+    ASSERT_EQ(scene.light.type, lightscatter::LightType::Point);
     ASSERT_GT(scene.light.shadowMapSize, 0u);
     const host::MeshData mesh = host::loadSceneMeshes(scene);
     const auto reference = host::reference::renderReference(scene, mesh, kSize.width, kSize.height);

@@ -95,7 +95,7 @@ TEST_F(SceneFileTest, AFullFileSetsEveryField) {
     EXPECT_TRUE(s.camera.reversedZ);
     EXPECT_TRUE(s.camera.infiniteFar);
 
-    EXPECT_EQ(s.light.type, host::LightKind::Spot);
+    EXPECT_EQ(s.light.type, lightscatter::LightType::Spot);
     expectVec3(s.light.position, {0, 10, 0});
     expectVec3(s.light.direction, {0, -0.6f, 0.8f});  // (0, -3, 4) / 5
     expectVec3(s.light.intensity, {100, 90, 80});
@@ -108,7 +108,7 @@ TEST_F(SceneFileTest, AFullFileSetsEveryField) {
     expectVec3(s.medium.betaM, {0.01f, 0.02f, 0.03f});
     EXPECT_FLOAT_EQ(s.medium.g, -0.5f);
     expectVec3(s.medium.sigmaA, {0, 0.001f, 0});
-    EXPECT_EQ(s.medium.phase, host::PhaseKind::Isotropic);
+    EXPECT_EQ(s.medium.phase, lightscatter::MiePhase::Isotropic);
     EXPECT_FLOAT_EQ(s.medium.maxDistance, 500.0f);
     expectVec3(s.skyColor, {0.1f, 0.2f, 0.3f});
     expectVec3(s.ambient, {0.01f, 0.02f, 0.03f});
@@ -476,11 +476,11 @@ TEST_F(SceneFileTest, ALightListGivesEveryLight) {
     const host::SceneDesc s = host::loadSceneFile(file);
     EXPECT_TRUE(s.lightList);
     ASSERT_EQ(s.lightCount(), 3u);
-    EXPECT_EQ(s.light.type, host::LightKind::Directional);
-    EXPECT_EQ(s.lightAt(1).type, host::LightKind::Spot);
+    EXPECT_EQ(s.light.type, lightscatter::LightType::Directional);
+    EXPECT_EQ(s.lightAt(1).type, lightscatter::LightType::Spot);
     EXPECT_EQ(s.lightAt(1).shadowMapSize, 256u);
     EXPECT_FLOAT_EQ(s.lightAt(1).halfAngleDegrees, 20.0f);
-    EXPECT_EQ(s.lightAt(2).type, host::LightKind::Point);
+    EXPECT_EQ(s.lightAt(2).type, lightscatter::LightType::Point);
     EXPECT_EQ(s.lightAt(2).shadowMapSize, 0u);
 }
 

@@ -20,7 +20,7 @@ glm::vec3 toClip(const glm::mat4& m, const glm::vec3& p) {
 
 host::LightDesc sun() {
     host::LightDesc l;
-    l.type = host::LightKind::Directional;
+    l.type = lightscatter::LightType::Directional;
     l.direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f));
     return l;
 }
@@ -153,7 +153,7 @@ Coverage coverage(const glm::mat4& m, const std::vector<host::Bounds>& parts,
 host::LightDesc sunAt(float elevationDegrees, float azimuthDegrees) {
     const float e = glm::radians(elevationDegrees), a = glm::radians(azimuthDegrees);
     host::LightDesc l;
-    l.type = host::LightKind::Directional;
+    l.type = lightscatter::LightType::Directional;
     l.direction = {std::cos(e) * std::sin(a), -std::sin(e), std::cos(e) * std::cos(a)};
     return l;
 }
