@@ -75,17 +75,18 @@ const CompositeVariants& fixupShaders(const ScatterSpec& spec) {
 
 }  // namespace
 
-rg::BindingTable declarePixelMarch(rg::PassBuilder& pass, const NodeInputs& in) {
-    rg::BindingTable table = frameTable(pass, in.constants);
-    table.sampled(LS_BINDING_DEPTH, in.depth, samplersOf(in.shared).nearest(),
+rg::BindingTable declarePixelMarch(rg::PassBuilder& pass, const FrameContext& frame,
+                                   const LightImages& light) {
+    rg::BindingTable table = frameTable(pass, frame.constants);
+    table.sampled(LS_BINDING_DEPTH, frame.depth, samplersOf(frame.shared).nearest(),
                   VK_IMAGE_ASPECT_DEPTH_BIT);
-    addMarchInputs(table, in);
+    addMarchInputs(table, frame.shared, light);
     return table;
 }
 
-void drawPixelMarch(rg::PassContext& ctx, const NodeInputs& in, const rg::BindingTable& table,
+void drawPixelMarch(rg::PassContext& ctx, const Shared& shared, const rg::BindingTable& table,
                     const PixelMarchDraw& draw) {
-    const ScatterSpec& spec = in.shared->spec;
+    const ScatterSpec& spec = shared->spec;
     auto desc = fullscreenPipeline(
         draw.composite ? fixupShaders(spec).pick(ctx, *draw.composite) : pixelMarchShader(spec),
         ctx, table.layout());
@@ -96,7 +97,7 @@ void drawPixelMarch(rg::PassContext& ctx, const NodeInputs& in, const rg::Bindin
         desc.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP,
                         VK_COMPARE_OP_EQUAL, 0xff, 0, 0};
     }
-    const auto& p = in.shared->pipelines.graphics(draw.pipeline, desc);
+    const auto& p = shared->pipelines.graphics(draw.pipeline, desc);
     p.bind(ctx.cmd());
     if (draw.whereStencilIsZero)
         vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 0);
