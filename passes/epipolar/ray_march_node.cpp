@@ -64,7 +64,8 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const EpipolarRayMarchI
                               : g.createImage("in-scattering (ray-marched samples)",
                                               rg::ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT,
                                                                       s.samples, s.slices));
-    const bool trees = in.trees.valid();
+    // The variant follows from the handles given: trees or none, a light color or none.
+    const bool trees = in.trees.valid(), color = in.light.lightColor.valid();
     auto pass =
         g.addPass(trees ? "ray march with min/max trees" : "ray march", rg::PassType::Graphics);
     const auto& sm = samplersOf(in.frame.shared);
@@ -80,11 +81,13 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const EpipolarRayMarchI
     pass.countSamples();  // the samples marched (FrameReport's PassTime::samples)
     marched =
         pass.colorAttachment(marched, in.accumulate.valid() ? rg::LoadOp::Load : rg::LoadOp::Clear);
-    pass.execute([shared = in.frame.shared, table, trees, adds, counts](rg::PassContext& ctx) {
+    pass.execute([shared = in.frame.shared, table, trees, color, adds,
+                  counts](rg::PassContext& ctx) {
         // A cube face out of view adds nothing (the first face's pass writes every sample's alpha).
         if (adds && !shared->inView()) return;
         ScatterSpec spec = shared->spec;
         spec.minMaxTrees = trees;
+        spec.lightColor = color;
         const RayMarchVariant variant = rayMarchVariant(spec);
         auto desc = fullscreenPipeline(counts.valid() ? variant.counting : variant.plain, ctx,
                                        table.layout());

@@ -86,7 +86,9 @@ rg::BindingTable declarePixelMarch(rg::PassBuilder& pass, const FrameContext& fr
 
 void drawPixelMarch(rg::PassContext& ctx, const Shared& shared, const rg::BindingTable& table,
                     const PixelMarchDraw& draw) {
-    const ScatterSpec& spec = shared->spec;
+    // The variant follows from the light's images declared in the table, not from the spec's flag.
+    ScatterSpec spec = shared->spec;
+    spec.lightColor = table.has(LS_BINDING_LIGHT_COLOR);
     auto desc = fullscreenPipeline(
         draw.composite ? fixupShaders(spec).pick(ctx, *draw.composite) : pixelMarchShader(spec),
         ctx, table.layout());
