@@ -1,6 +1,7 @@
 #include "analytic_method.h"
 
 #include "analytic_node.h"
+#include "shared/chain_inputs.h"
 #include "shared/refusals.h"
 
 namespace ls {
@@ -52,7 +53,7 @@ ChainOptions AnalyticMethod::options(const LightSetup&, const LightData*,
 ChainOutputs AnalyticMethod::addChain(rg::RenderGraph& g, const ChainInputs& in, const ChainConfig&,
                                       const CompositeTarget&) const {
     ChainOutputs out;
-    out.lin = addAnalytic(g, in.shared, {in.constants, in.depth});
+    out.lin = addAnalytic(g, {frameContext(in)});
     return out;
 }
 

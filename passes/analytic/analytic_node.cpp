@@ -5,12 +5,12 @@
 
 namespace ls {
 
-rg::ImageRef addAnalytic(rg::RenderGraph& graph, const Shared& shared, const AnalyticInputs& in) {
+rg::ImageRef addAnalytic(rg::RenderGraph& graph, const AnalyticInputs& in) {
     return addScreenLinNode(
-        graph, shared,
+        graph, in.frame.shared,
         {.name = "analytic in-scattering (seed 001)",
-         .constants = in.constants,
-         .depth = in.depth,
+         .constants = in.frame.constants,
+         .depth = in.frame.depth,
          .rows = {},
          .shader = [](const ScatterSpec&) { return rg::spirv(ls_spirv::analytic_frag); },
          .specialize = {}});

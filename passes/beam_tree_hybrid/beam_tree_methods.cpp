@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "beam_tree_nodes.h"
+#include "shared/chain_inputs.h"
 #include "shared/refusals.h"
 
 namespace ls {
@@ -70,13 +71,9 @@ BeamTreeFrameRef BeamTreeMethod::frameOf(const ChainInputs& in) {
 ChainOutputs BeamTreeAnalyticMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,
                                               const ChainConfig& c, const CompositeTarget&) const {
     const Options& o = *c.options.get<Options>();
-    BeamTreeInputs beam{in.constants, in.depth, in.table, {}, {}};
-    if (c.shadowed) {
-        beam.shadowMap = in.shadowMap;
-        beam.lightColor = in.lightColor;
-    }
+    const BeamTreeInputs beam{frameContext(in), lightImages(in, c), frameOf(in)};
     ChainOutputs out;
-    out.lin = addBeamTreeHybrid(g, in.shared, frameOf(in), beam, {o.capacityPoints, o.reversedZ});
+    out.lin = addBeamTreeHybrid(g, beam, {o.capacityPoints, o.reversedZ});
     return out;
 }
 
@@ -89,13 +86,11 @@ std::string BeamTreeAnalyticMethod::summary(const ChainConfig& c) const {
 ChainOutputs BeamTreeSamplingMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,
                                               const ChainConfig& c, const CompositeTarget&) const {
     const Options& o = *c.options.get<Options>();
-    BeamTreeSamplingInputs beam{in.constants, in.depth, {}, {}};
-    if (c.shadowed) {
-        beam.shadowMap = in.shadowMap;
-        beam.lightColor = in.lightColor;
-    }
+    LightImages light = lightImages(in, c);
+    light.table = {};  // the sampling planes read no table
+    const BeamTreeSamplingInputs beam{frameContext(in), light, frameOf(in)};
     ChainOutputs out;
-    out.lin = addBeamTreeSampling(g, in.shared, frameOf(in), beam, {o.capacityPoints, o.reversedZ});
+    out.lin = addBeamTreeSampling(g, beam, {o.capacityPoints, o.reversedZ});
     return out;
 }
 

@@ -85,25 +85,26 @@ void drawPlaneParts(rg::PassContext& ctx, const Shared& shared, const BeamTreeFr
 
 // The plane pass's declarations: the frame's constants, the triangles, the engine's depth as a
 // read-only depth attachment, and the shadow map and cookie where given.
-rg::BindingTable declarePlaneReads(rg::PassBuilder& pass, const Shared& shared,
-                                   rg::BufferRef constants, rg::BufferRef triangles,
-                                   rg::ImageRef depth, rg::ImageRef shadowMap,
-                                   rg::ImageRef lightColor) {
-    const auto& s = samplersOf(shared);
+rg::BindingTable declarePlaneReads(rg::PassBuilder& pass, const FrameContext& frame,
+                                   const LightImages& light, rg::BufferRef triangles) {
+    const auto& s = samplersOf(frame.shared);
     rg::BindingTable table(pass);
-    table.uniform(LS_BINDING_FRAME, constants, kVertexAndFragment)
+    table.uniform(LS_BINDING_FRAME, frame.constants, kVertexAndFragment)
         .storageBufferRead(LS_BINDING_BEAM_TRIANGLES, triangles,
                            VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT)
-        .sampledIfValid(LS_BINDING_SHADOW_MAP, shadowMap, s.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
-        .sampledIfValid(LS_BINDING_LIGHT_COLOR, lightColor, s.linear());
-    pass.depthTest(depth);
+        .sampledIfValid(LS_BINDING_SHADOW_MAP, light.shadowMap, s.nearest(),
+                        VK_IMAGE_ASPECT_DEPTH_BIT)
+        .sampledIfValid(LS_BINDING_LIGHT_COLOR, light.lightColor, s.linear());
+    pass.depthTest(frame.depth);
     return table;
 }
 
 }  // namespace
 
-rg::ImageRef addBeamTreeHybrid(rg::RenderGraph& graph, const Shared& shared, BeamTreeFrameRef frame,
-                               const BeamTreeInputs& in, const BeamTreeOptions& options) {
+rg::ImageRef addBeamTreeHybrid(rg::RenderGraph& graph, const BeamTreeInputs& in,
+                               const BeamTreeOptions& options) {
+    const Shared& shared = in.frame.shared;
+    const BeamTreeFrameRef& frame = in.beams;
     const rg::BufferRef triangles = addTriangleUpload(graph, frame, options.capacityPoints);
     rg::ImageRef lin = graph.createImage("in-scattering (lit pyramids and uncertain planes)",
                                          rg::ImageDesc::screen(VK_FORMAT_R32G32B32A32_SFLOAT));
@@ -111,11 +112,11 @@ rg::ImageRef addBeamTreeHybrid(rg::RenderGraph& graph, const Shared& shared, Bea
         auto pass = graph.addPass("lit pyramids in closed form (seed 004)", rg::PassType::Graphics);
         const auto& s = samplersOf(shared);
         rg::BindingTable table(pass);
-        table.uniform(LS_BINDING_FRAME, in.constants, kVertexAndFragment)
+        table.uniform(LS_BINDING_FRAME, in.frame.constants, kVertexAndFragment)
             .storageBufferRead(LS_BINDING_BEAM_TRIANGLES, triangles,
                                VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT)
-            .sampled(LS_BINDING_DEPTH, in.depth, s.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
-            .sampled(LS_BINDING_POINT_TABLE, in.table, s.nearest());
+            .sampled(LS_BINDING_DEPTH, in.frame.depth, s.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
+            .sampled(LS_BINDING_POINT_TABLE, in.light.table, s.nearest());
         lin = pass.colorAttachment(lin, rg::LoadOp::Clear);
         pass.execute([shared, frame, table](rg::PassContext& ctx) {
             const uint32_t count = frame->litPoints;
@@ -139,35 +140,33 @@ rg::ImageRef addBeamTreeHybrid(rg::RenderGraph& graph, const Shared& shared, Bea
         // Without a shadow map (a point light) the uncertain space is sampled as lit: then only the
         // inner boxes cast shadows.
         auto pass = graph.addPass("uncertain sampling planes (seed 004)", rg::PassType::Graphics);
-        const rg::BindingTable table = declarePlaneReads(pass, shared, in.constants, triangles,
-                                                         in.depth, in.shadowMap, in.lightColor);
+        const rg::BindingTable table = declarePlaneReads(pass, in.frame, in.light, triangles);
         lin = pass.colorAttachment(lin, rg::LoadOp::Load);
-        const bool reversedZ = options.reversedZ;
-        pass.execute([shared, frame, in, table, reversedZ](rg::PassContext& ctx) {
-            const PlaneDraw uncertain{frame->litPoints, frame->uncertainPoints,
-                                      in.shadowMap.valid()};
+        const bool reversedZ = options.reversedZ, shadow = in.light.shadowMap.valid();
+        pass.execute([shared, frame, shadow, table, reversedZ](rg::PassContext& ctx) {
+            const PlaneDraw uncertain{frame->litPoints, frame->uncertainPoints, shadow};
             drawPlaneParts(ctx, shared, *frame, table, uncertain, reversedZ);
         });
     }
     return lin;
 }
 
-rg::ImageRef addBeamTreeSampling(rg::RenderGraph& graph, const Shared& shared,
-                                 BeamTreeFrameRef frame, const BeamTreeSamplingInputs& in,
+rg::ImageRef addBeamTreeSampling(rg::RenderGraph& graph, const BeamTreeSamplingInputs& in,
                                  const BeamTreeOptions& options) {
+    const Shared& shared = in.frame.shared;
+    const BeamTreeFrameRef& frame = in.beams;
     const rg::BufferRef triangles = addTriangleUpload(graph, frame, options.capacityPoints);
     rg::ImageRef lin = graph.createImage("in-scattering (lit and uncertain planes)",
                                          rg::ImageDesc::screen(VK_FORMAT_R32G32B32A32_SFLOAT));
     // One pass, two draws: the lit parts skip the shadow map, the uncertain parts look it up.
     auto pass =
         graph.addPass("clipped sampling planes (seed 004 method 1)", rg::PassType::Graphics);
-    const rg::BindingTable table = declarePlaneReads(pass, shared, in.constants, triangles,
-                                                     in.depth, in.shadowMap, in.lightColor);
+    const rg::BindingTable table = declarePlaneReads(pass, in.frame, in.light, triangles);
     lin = pass.colorAttachment(lin, rg::LoadOp::Clear);
-    const bool reversedZ = options.reversedZ;
-    pass.execute([shared, frame, in, table, reversedZ](rg::PassContext& ctx) {
+    const bool reversedZ = options.reversedZ, shadow = in.light.shadowMap.valid();
+    pass.execute([shared, frame, shadow, table, reversedZ](rg::PassContext& ctx) {
         const PlaneDraw lit{0, frame->litPoints, false};
-        const PlaneDraw uncertain{frame->litPoints, frame->uncertainPoints, in.shadowMap.valid()};
+        const PlaneDraw uncertain{frame->litPoints, frame->uncertainPoints, shadow};
         drawPlaneParts(ctx, shared, *frame, table, lit, reversedZ);
         drawPlaneParts(ctx, shared, *frame, table, uncertain, reversedZ);
     });

@@ -5,24 +5,26 @@
 // `beam-tree-sampling` (5.3) samples the lit parts of the planes without shadow look-ups and the
 // uncertain parts with them.
 #include "beam_tree_frame.h"
-#include "shared/node_inputs.h"
+#include "shared/frame_context.h"
 
 namespace ls {
 
 struct BeamTreeInputs {
-    rg::BufferRef constants;
-    rg::ImageRef depth;       // the engine's depth: where each pixel's ray ends, and a read-only
-                              // depth attachment for the planes
-    rg::ImageRef table;       // the point-light table
-    rg::ImageRef shadowMap;   // invalid: the uncertain parts are not sampled (a point light)
-    rg::ImageRef lightColor;  // invalid without one
+    // Its constants, and the depth: where each pixel's ray ends, and a read-only depth attachment
+    // for the planes.
+    FrameContext frame;
+    // The point-light table (the lit pyramids'); the shadow map, invalid: the uncertain parts are
+    // sampled as lit (a point light); the light color, invalid without one.
+    LightImages light;
+    BeamTreeFrameRef beams;  // built with LitSpace::ClosedForm
 };
 
 struct BeamTreeSamplingInputs {
-    rg::BufferRef constants;
-    rg::ImageRef depth;       // the engine's depth: a read-only depth attachment for the planes
-    rg::ImageRef shadowMap;   // invalid: the uncertain parts are sampled as lit (a point light)
-    rg::ImageRef lightColor;  // invalid without one
+    FrameContext frame;  // its constants, and the depth: a read-only depth attachment for planes
+    // The shadow map, invalid: the uncertain parts are sampled as lit (a point light); the light
+    // color, invalid without one. The table is not read.
+    LightImages light;
+    BeamTreeFrameRef beams;  // built with LitSpace::Planes
 };
 
 struct BeamTreeOptions {
@@ -33,13 +35,12 @@ struct BeamTreeOptions {
 };
 
 // Returns Lin (R32G32B32A32_SFLOAT, screen): exits add, entries subtract, so partial sums go
-// negative. `frame` was built with LitSpace::ClosedForm.
-rg::ImageRef addBeamTreeHybrid(rg::RenderGraph& graph, const Shared& shared, BeamTreeFrameRef frame,
-                               const BeamTreeInputs& in, const BeamTreeOptions& options);
+// negative.
+rg::ImageRef addBeamTreeHybrid(rg::RenderGraph& graph, const BeamTreeInputs& in,
+                               const BeamTreeOptions& options);
 
-// Returns Lin (R32G32B32A32_SFLOAT, screen). `frame` was built with LitSpace::Planes.
-rg::ImageRef addBeamTreeSampling(rg::RenderGraph& graph, const Shared& shared,
-                                 BeamTreeFrameRef frame, const BeamTreeSamplingInputs& in,
+// Returns Lin (R32G32B32A32_SFLOAT, screen).
+rg::ImageRef addBeamTreeSampling(rg::RenderGraph& graph, const BeamTreeSamplingInputs& in,
                                  const BeamTreeOptions& options);
 
 }  // namespace ls

@@ -30,9 +30,10 @@ ChainOptions BruteForceMethod::options(const LightSetup&, const LightData*,
 
 ChainOutputs BruteForceMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,
                                         const ChainConfig& c, const CompositeTarget&) const {
-    const NodeInputs n = nodeInputs(in, c);
+    const FrameContext frame = frameContext(in);
+    const LightImages light = lightImages(in, c);
     ChainOutputs out;
-    out.lin = c.shadowed ? addBruteForce(g, n) : addUnshadowed(g, n);
+    out.lin = c.shadowed ? addBruteForce(g, {frame, light}) : addUnshadowed(g, {frame, light});
     return out;
 }
 

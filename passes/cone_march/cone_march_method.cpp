@@ -1,6 +1,7 @@
 #include "cone_march_method.h"
 
 #include "cone_march_node.h"
+#include "shared/chain_inputs.h"
 #include "shared/refusals.h"
 
 namespace ls {
@@ -18,11 +19,12 @@ ChainOptions ConeMarchMethod::options(const LightSetup& s, const LightData*,
 ChainOutputs ConeMarchMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,
                                        const ChainConfig& c, const CompositeTarget&) const {
     const Options& o = *c.options.get<Options>();
-    const ConeMarchInputs cone{in.constants, in.depth,
-                               c.shadowed && o.shadowSampling ? in.shadowMap : rg::ImageRef{},
-                               in.lightColor};
+    LightImages light;
+    if (c.shadowed && o.shadowSampling) light.shadowMap = in.shadowMap;
+    light.lightColor = in.lightColor;
+    light.shadowMapSize = c.shadowMapSize;
     ChainOutputs out;
-    out.lin = addConeMarch(g, in.shared, cone, o.march);
+    out.lin = addConeMarch(g, {frameContext(in), light}, o.march);
     return out;
 }
 

@@ -14,22 +14,23 @@ rg::ShaderCode coneMarchShader(bool shadowMap, bool lightColor) {
                       {{"LS_SHADOW_MAP", shadowMap}, {"LS_LIGHT_COLOR", lightColor}});
 }
 
-rg::ImageRef addConeMarch(rg::RenderGraph& graph, const Shared& shared, const ConeMarchInputs& in,
+rg::ImageRef addConeMarch(rg::RenderGraph& graph, const ConeMarchInputs& in,
                           const ConeMarchOptions& options) {
-    const bool shadow = in.shadowMap.valid(), color = in.lightColor.valid();
+    const bool shadow = in.light.shadowMap.valid(), color = in.light.lightColor.valid();
+    const Shared& shared = in.frame.shared;
     return addScreenLinNode(
         graph, shared,
         {.name = options.coneLimited ? "cone-limited ray march (seed 003)"
                                      : "naive ray march (seed 003's baseline)",
-         .constants = in.constants,
-         .depth = in.depth,
+         .constants = in.frame.constants,
+         .depth = in.frame.depth,
          .rows =
-             [in, shared](rg::BindingTable& table) {
+             [light = in.light, shared](rg::BindingTable& table) {
                  const auto& s = samplersOf(shared);
                  table
-                     .sampledIfValid(LS_BINDING_SHADOW_MAP, in.shadowMap, s.nearest(),
+                     .sampledIfValid(LS_BINDING_SHADOW_MAP, light.shadowMap, s.nearest(),
                                      VK_IMAGE_ASPECT_DEPTH_BIT)
-                     .sampledIfValid(LS_BINDING_LIGHT_COLOR, in.lightColor, s.linear());
+                     .sampledIfValid(LS_BINDING_LIGHT_COLOR, light.lightColor, s.linear());
              },
          .shader = [shadow, color](const ScatterSpec&) { return coneMarchShader(shadow, color); },
          .specialize =

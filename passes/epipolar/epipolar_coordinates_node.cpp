@@ -4,33 +4,34 @@
 
 namespace ls {
 
-EpipolarCoordinates addEpipolarCoordinates(rg::RenderGraph& g, const NodeInputs& in,
-                                           const EpipolarSizes& s, rg::ImageRef sliceEndPoints) {
+EpipolarCoordinates addEpipolarCoordinates(rg::RenderGraph& g, const EpipolarCoordinatesInputs& in,
+                                           const EpipolarSizes& s) {
     auto perSample = [&s](VkFormat format) {
         return rg::ImageDesc::absolute(format, s.samples, s.slices);
     };
     EpipolarCoordinates out;
-    out.coordinates = g.createImage("coordinate texture", perSample(in.coordinateFormat));
+    out.coordinates = g.createImage("coordinate texture", perSample(in.frame.coordinateFormat));
     out.epipolarZ = g.createImage("epipolar camera-space z", perSample(VK_FORMAT_R32_SFLOAT));
-    out.epipolarStencil = g.createImage("epipolar depth-stencil", perSample(in.depthStencil));
+    out.epipolarStencil = g.createImage("epipolar depth-stencil", perSample(in.frame.depthStencil));
     auto pass = g.addPass("coordinates and epipolar z", rg::PassType::Graphics);
-    const auto& sm = samplersOf(in.shared);
-    rg::BindingTable table = frameTable(pass, in.constants);
-    table.sampled(LS_BINDING_COORDINATES_END_POINTS, sliceEndPoints, sm.nearest())
-        .sampled(LS_BINDING_COORDINATES_DEPTH, in.depth, sm.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT);
+    const auto& sm = samplersOf(in.frame.shared);
+    rg::BindingTable table = frameTable(pass, in.frame.constants);
+    table.sampled(LS_BINDING_COORDINATES_END_POINTS, in.sliceEndPoints, sm.nearest())
+        .sampled(LS_BINDING_COORDINATES_DEPTH, in.frame.depth, sm.nearest(),
+                 VK_IMAGE_ASPECT_DEPTH_BIT);
     // Invalid samples keep the clear values: epipolar z -1, which no valid sample has, tells them
     // apart besides the stencil (the coordinates of invalid samples are never read).
     out.coordinates = pass.colorAttachment(out.coordinates, rg::LoadOp::Clear);
     out.epipolarZ =
         pass.colorAttachment(out.epipolarZ, rg::LoadOp::Clear, {{-1.0f, 0.0f, 0.0f, 0.0f}});
     out.epipolarStencil = pass.stencilWrite(out.epipolarStencil, rg::LoadOp::Clear, 0);
-    pass.execute([in, table](rg::PassContext& ctx) {
+    pass.execute([shared = in.frame.shared, table](rg::PassContext& ctx) {
         auto desc =
             fullscreenPipeline(rg::spirv(ls_spirv::epipolar_coordinates_frag), ctx, table.layout());
         desc.stencilTest = true;
         desc.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_REPLACE, VK_STENCIL_OP_KEEP,
                         VK_COMPARE_OP_ALWAYS, 0xff, 0xff, 1};
-        const auto& p = in.shared->pipelines.graphics("coordinates and epipolar z", desc);
+        const auto& p = shared->pipelines.graphics("coordinates and epipolar z", desc);
         p.bind(ctx.cmd());
         vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 1);
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);

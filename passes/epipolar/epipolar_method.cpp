@@ -55,18 +55,21 @@ ChainOptions EpipolarMethod::options(const LightSetup& s, const LightData*,
 
 ChainOutputs EpipolarMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,
                                       const ChainConfig& c, const CompositeTarget& target) const {
-    const NodeInputs n = nodeInputs(in, c);
+    const FrameContext frame = frameContext(in);
+    const LightImages light = lightImages(in, c);
     ChainOutputs out;
     if (!c.shadowed) {
-        out.lin = addUnshadowed(g, n);
+        out.lin = addUnshadowed(g, {frame, light});
         return out;
     }
     const Options& o = *c.options.get<Options>();
-    const EpipolarSizes sizes{o.slices, o.samples, c.shadowMapSize};
-    const EpipolarOptions options{o.minMaxTrees, o.fixup, c.light == LightKind::Point,
-                                  in.stepCounts, o.inscatterRefinement};
+    const EpipolarOptions options{.sizes = {o.slices, o.samples},
+                                  .minMaxTrees = o.minMaxTrees,
+                                  .fixup = o.fixup,
+                                  .cubeShadow = c.light == LightKind::Point,
+                                  .inscatterRefinement = o.inscatterRefinement};
     // Composited in the chain's unwarp and fix-up: no composite pass.
-    const EpipolarOutputs e = addEpipolarNodes(g, n, sizes, options, target);
+    const EpipolarOutputs e = addEpipolarNodes(g, {frame, light, target, in.stepCounts}, options);
     out.composited = true;
     out.target = e.composited;
     out.stepCounts = e.stepCounts;

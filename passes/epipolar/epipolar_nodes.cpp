@@ -7,47 +7,50 @@
 
 namespace ls {
 
-EpipolarOutputs addEpipolarNodes(rg::RenderGraph& g, const NodeInputs& in,
-                                 const EpipolarSizes& sizes, const EpipolarOptions& options,
-                                 const CompositeTarget& target) {
-    const rg::ImageRef endPoints = addSliceEndPoints(g, in, sizes);
-    const EpipolarCoordinates samples = addEpipolarCoordinates(g, in, sizes, endPoints);
-    rg::ImageRef sources = addRefineSamples(g, in, sizes, samples.epipolarZ);
-    rg::ImageRef marking = addMarkRayMarchSamples(g, in, sources, samples.epipolarStencil);
+EpipolarOutputs addEpipolarNodes(rg::RenderGraph& g, const EpipolarInputs& in,
+                                 const EpipolarOptions& options) {
+    const EpipolarSizes& sizes = options.sizes;
+    const FrameContext& frame = in.frame;
+    const rg::ImageRef endPoints = addSliceEndPoints(g, {frame}, sizes);
+    const EpipolarCoordinates samples = addEpipolarCoordinates(g, {frame, endPoints}, sizes);
+    rg::ImageRef sources = addRefineSamples(g, {frame, samples.epipolarZ}, sizes);
+    rg::ImageRef marking = addMarkRayMarchSamples(g, {frame, sources, samples.epipolarStencil});
     // The shadow map's part: the line of every slice in it, the trees along those lines and the
     // march. A point light's cube map repeats it per face, each face adding its part of every ray
     // to the same samples; the faces' lines and trees die with their march, so they alias.
-    rg::BufferRef counts = options.stepCounts;
+    rg::BufferRef counts = in.stepCounts;
     struct Lines {
         rg::ImageRef uvFrame, trees;
     };
-    auto lines = [&](const NodeInputs& light) {
-        const rg::ImageRef uvFrame = addSliceUvFrame(g, light, sizes, endPoints);
-        return Lines{uvFrame, options.minMaxTrees ? addMinMaxTrees(g, light, sizes, uvFrame)
-                                                  : rg::ImageRef{}};
+    auto lines = [&](const FrameContext& light) {
+        const rg::ImageRef uvFrame = addSliceUvFrame(g, {light, endPoints}, sizes);
+        return Lines{uvFrame, options.minMaxTrees
+                                  ? addMinMaxTrees(g, {light, in.light, uvFrame}, sizes)
+                                  : rg::ImageRef{}};
     };
-    auto march = [&](const NodeInputs& light, const Lines& l, rg::ImageRef accumulate,
+    auto march = [&](const FrameContext& light, const Lines& l, rg::ImageRef accumulate,
                      bool overwrite) {
         const EpipolarRayMarch m =
-            addEpipolarRayMarch(g, light, sizes,
-                                {samples.coordinates, samples.epipolarZ, l.uvFrame, marking,
-                                 l.trees, accumulate, counts, overwrite});
+            addEpipolarRayMarch(g,
+                                {light, in.light, samples.coordinates, samples.epipolarZ, l.uvFrame,
+                                 marking, l.trees, accumulate, counts},
+                                {sizes, overwrite});
         counts = m.stepCounts;
         return m.marched;
     };
     rg::ImageRef marched;
     Lines single;
-    std::array<NodeInputs, 6> faces;
+    std::array<FrameContext, 6> faces;
     const std::string suffix = g.nameSuffix();
     if (!options.cubeShadow) {
-        single = lines(in);
-        marched = march(in, single, {}, false);
+        single = lines(frame);
+        marched = march(frame, single, {}, false);
     } else {
         for (uint32_t face = 0; face < 6; ++face) {
             g.setNameSuffix(suffix + " (cube face " + cubeFaceName(static_cast<int>(face)) + ")");
-            faces[face] = in;
-            faces[face].shared = in.shared ? in.shared->cubeFaces[face] : nullptr;
-            faces[face].constants = addUploadConstants(g, faces[face].shared);
+            faces[face] = frame;
+            faces[face].shared = frame.shared ? frame.shared->cubeFaces[face] : nullptr;
+            faces[face].constants = addUploadConstants(g, {faces[face].shared});
             marched = march(faces[face], lines(faces[face]), marched, false);
         }
         g.setNameSuffix(suffix);
@@ -57,12 +60,13 @@ EpipolarOutputs addEpipolarNodes(rg::RenderGraph& g, const NodeInputs& in,
         // A spot's or the sun's lines and trees live on to this march; a cube's faces build theirs
         // again, so that the six faces' trees still alias (the second build costs the trees' time
         // again, not their memory).
-        const RefinedSamples refined = addRefineOnInscattering(g, in, sources, marched, marking);
+        const RefinedSamples refined =
+            addRefineOnInscattering(g, {frame, sources, marched, marking});
         sources = refined.interpolationSource;
         marking = refined.epipolarStencil;
         if (!options.cubeShadow) {
             g.setNameSuffix(suffix + " (refinement)");
-            marched = march(in, single, marched, true);
+            marched = march(frame, single, marched, true);
         } else {
             for (uint32_t face = 0; face < 6; ++face) {
                 g.setNameSuffix(suffix + " (refinement, cube face " +
@@ -72,13 +76,17 @@ EpipolarOutputs addEpipolarNodes(rg::RenderGraph& g, const NodeInputs& in,
         }
         g.setNameSuffix(suffix);
     }
-    const rg::ImageRef interpolated = addInterpolate(g, in, sizes, sources, marched, marking);
+    const rg::ImageRef interpolated = addInterpolate(g, {frame, sources, marched, marking}, sizes);
     const UnwarpOutputs screen =
-        addUnwarp(g, in, {endPoints, samples.epipolarZ, interpolated}, target, options.fixup);
+        addUnwarp(g, {frame, in.light, endPoints, samples.epipolarZ, interpolated, in.target},
+                  {options.fixup});
     if (!options.fixup) return {screen.composited, counts};
-    return {addFixup(g, in, screen.cameraStencil,
-                     {screen.composited.color, screen.composited.inscatterOut, target.addOnly}),
-            counts};
+    return {
+        addFixup(g, {frame,
+                     in.light,
+                     screen.cameraStencil,
+                     {screen.composited.color, screen.composited.inscatterOut, in.target.addOnly}}),
+        counts};
 }
 
 }  // namespace ls

@@ -4,115 +4,164 @@
 // declares the auxiliary textures of the seed's table with their formats (the stencil textures
 // with the depth-stencil format the device offers) and the stencil writes and tests as uses, so
 // the runtime orders the passes, derives their barriers and aliases what it can. Every node also
-// reads the frame's constants and, where it says so, the light's images from NodeInputs.
+// reads the frame's constants (FrameContext) and, where it says so, the light's images
+// (LightImages).
 #include "shared/composite_target.h"
-#include "shared/node_inputs.h"
+#include "shared/frame_context.h"
 
 namespace ls {
 
 struct EpipolarSizes {
     uint32_t slices = 1024;
     uint32_t samples = 1024;
-    uint32_t shadowMapSize = 2048;
 };
 
 // Entry and exit of each slice's line in NDC: RGBA32F, slices x 1.
-rg::ImageRef addSliceEndPoints(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s);
+struct SliceEndPointsInputs {
+    FrameContext frame;
+};
+rg::ImageRef addSliceEndPoints(rg::RenderGraph& g, const SliceEndPointsInputs& in,
+                               const EpipolarSizes& s);
 
-// Each sample's NDC position and the camera-space z under it (from in.depth); valid samples get
+// Each sample's NDC position and the camera-space z under it (from frame.depth); valid samples get
 // stencil 1.
+struct EpipolarCoordinatesInputs {
+    FrameContext frame;
+    rg::ImageRef sliceEndPoints;
+};
 struct EpipolarCoordinates {
-    rg::ImageRef coordinates;      // in.coordinateFormat (RG16 unorm or RG32F), samples x slices
+    rg::ImageRef coordinates;      // frame.coordinateFormat (RG16 unorm or RG32F), samples x slices
     rg::ImageRef epipolarZ;        // R32F, samples x slices
     rg::ImageRef epipolarStencil;  // depth-stencil, samples x slices
 };
-EpipolarCoordinates addEpipolarCoordinates(rg::RenderGraph& g, const NodeInputs& in,
-                                           const EpipolarSizes& s, rg::ImageRef sliceEndPoints);
+EpipolarCoordinates addEpipolarCoordinates(rg::RenderGraph& g, const EpipolarCoordinatesInputs& in,
+                                           const EpipolarSizes& s);
 
 // Each sample's two interpolation sources: RG16UI, samples x slices.
-rg::ImageRef addRefineSamples(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
-                              rg::ImageRef epipolarZ);
+struct RefineSamplesInputs {
+    FrameContext frame;
+    rg::ImageRef epipolarZ;
+};
+rg::ImageRef addRefineSamples(rg::RenderGraph& g, const RefineSamplesInputs& in,
+                              const EpipolarSizes& s);
 
 // Each slice's line in the shadow map, origin and direction: RGBA32F, slices x 1.
-rg::ImageRef addSliceUvFrame(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
-                             rg::ImageRef sliceEndPoints);
+struct SliceUvFrameInputs {
+    FrameContext frame;  // the light's (or the cube face's) constants
+    rg::ImageRef sliceEndPoints;
+};
+rg::ImageRef addSliceUvFrame(rg::RenderGraph& g, const SliceUvFrameInputs& in,
+                             const EpipolarSizes& s);
 
-// The 1D min/max trees of in.shadowMap along each slice's line, every level in one texture:
-// RG16F, shadow-map size x slices.
-rg::ImageRef addMinMaxTrees(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
-                            rg::ImageRef sliceUvFrame);
+// The 1D min/max trees of light.shadowMap along each slice's line, every level in one texture:
+// RG16F, light.shadowMapSize x slices.
+struct MinMaxTreesInputs {
+    FrameContext frame;
+    LightImages light;  // its shadow map and size
+    rg::ImageRef sliceUvFrame;
+};
+rg::ImageRef addMinMaxTrees(rg::RenderGraph& g, const MinMaxTreesInputs& in,
+                            const EpipolarSizes& s);
 
 // Raises the ray-marching samples to stencil 2; returns the stencil's new version.
-rg::ImageRef addMarkRayMarchSamples(rg::RenderGraph& g, const NodeInputs& in,
-                                    rg::ImageRef interpolationSource, rg::ImageRef epipolarStencil);
+struct MarkRayMarchInputs {
+    FrameContext frame;
+    rg::ImageRef interpolationSource, epipolarStencil;
+};
+rg::ImageRef addMarkRayMarchSamples(rg::RenderGraph& g, const MarkRayMarchInputs& in);
 
 // Lin (or the shadowed fraction) of the ray-marching samples (stencil 2): RGBA16F, samples x
 // slices. Reads the light's images; without trees every sample is marched texel by texel.
-// A point light's cube map is marched one face per pass (in.shared is the face's state): the first
-// face's pass writes a new texture, each later one adds its part of every ray to `accumulate`
+// A point light's cube map is marched one face per pass (frame.shared is the face's state): the
+// first face's pass writes a new texture, each later one adds its part of every ray to `accumulate`
 // (and returns its new version); alpha, the sample's validity, is the first face's. The refinement
 // march (overwrite) writes its samples into `accumulate`, keeping the first march's samples.
 struct EpipolarRayMarchInputs {
+    FrameContext frame;
+    LightImages light;
     rg::ImageRef coordinates, epipolarZ, sliceUvFrame;
     rg::ImageRef epipolarStencil;  // after the marking
     rg::ImageRef trees;        // invalid: marched without trees
     rg::ImageRef accumulate;   // invalid: a new texture
     // The step counter (step_counts.h), cleared; invalid: the plain variant, nothing counted.
     rg::BufferRef stepCounts;
+};
+struct EpipolarRayMarchOptions {
+    EpipolarSizes sizes;
     bool overwrite = false;  // with accumulate: write the marched samples instead of adding
 };
 struct EpipolarRayMarch {
     rg::ImageRef marched;
     rg::BufferRef stepCounts;  // the counter's new version; invalid when not counted
 };
-EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in,
-                                     const EpipolarSizes& s, const EpipolarRayMarchInputs& i);
+EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const EpipolarRayMarchInputs& in,
+                                     const EpipolarRayMarchOptions& options);
 
 // Refinement on in-scattering differences: every sample whose two interpolation sources differ in
 // `marched` by more than frame.epipolar3.x (relative, per channel) or in validity becomes a
 // ray-marching sample (its own source, stencil 1 -> 2), and the samples already marched leave the
 // march's stencil value (2 -> 3), so a second march at stencil 2 costs only the new samples.
+struct RefineOnInscatteringInputs {
+    FrameContext frame;
+    rg::ImageRef interpolationSource, marched, epipolarStencil;
+};
 struct RefinedSamples {
     rg::ImageRef interpolationSource;  // the sources' new version (rewritten in place)
     rg::ImageRef epipolarStencil;      // the stencil's new version
 };
-RefinedSamples addRefineOnInscattering(rg::RenderGraph& g, const NodeInputs& in,
-                                       rg::ImageRef interpolationSource, rg::ImageRef marched,
-                                       rg::ImageRef epipolarStencil);
+RefinedSamples addRefineOnInscattering(rg::RenderGraph& g, const RefineOnInscatteringInputs& in);
 
 // Every valid sample, interpolated between its two sources: RGBA16F, samples x slices.
-rg::ImageRef addInterpolate(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
-                            rg::ImageRef interpolationSource, rg::ImageRef marched,
-                            rg::ImageRef epipolarStencil);
+struct InterpolateInputs {
+    FrameContext frame;
+    rg::ImageRef interpolationSource, marched, epipolarStencil;
+};
+rg::ImageRef addInterpolate(rg::RenderGraph& g, const InterpolateInputs& in,
+                            const EpipolarSizes& s);
 
 // The samples unwarped to the screen and composited into the target (no screen-sized Lin), and with
 // markForFixup the pixels no sample could serve left to the fix-up: 0 in a camera stencil where
 // every served pixel wrote 1.
-// Reads in.table and in.depth.
 struct UnwarpInputs {
+    FrameContext frame;  // its constants and depth
+    LightImages light;   // its table, where given
     rg::ImageRef sliceEndPoints, epipolarZ, interpolated;
+    CompositeTarget target;
+};
+struct UnwarpOptions {
+    bool markForFixup = false;
 };
 struct UnwarpOutputs {
     CompositeOutputs composited;  // the target's new versions
     rg::ImageRef cameraStencil;   // depth-stencil, screen; invalid without markForFixup
 };
-UnwarpOutputs addUnwarp(rg::RenderGraph& g, const NodeInputs& in, const UnwarpInputs& i,
-                        const CompositeTarget& target, bool markForFixup);
+UnwarpOutputs addUnwarp(rg::RenderGraph& g, const UnwarpInputs& in, const UnwarpOptions& options);
 
 // Marches the pixels marked in cameraStencil on their own and composites them into the target
 // (the unwarp's new versions); returns the target's new versions. Reads the light's images.
-CompositeOutputs addFixup(rg::RenderGraph& g, const NodeInputs& in, rg::ImageRef cameraStencil,
-                          const CompositeTarget& target);
+struct FixupInputs {
+    FrameContext frame;
+    LightImages light;
+    rg::ImageRef cameraStencil;
+    CompositeTarget target;
+};
+CompositeOutputs addFixup(rg::RenderGraph& g, const FixupInputs& in);
 
 // The whole chain, from the engine's depth to the composited color. With
 // cubeShadow (a point light's six-layer shadow map) the samples are shared by the six faces and
-// each face adds its own line frames, trees and march (in.shared->cubeFaces; each face's constants
-// are uploaded by the chain); the fix-up marches the whole cube.
+// each face adds its own line frames, trees and march (frame.shared->cubeFaces; each face's
+// constants are uploaded by the chain); the fix-up marches the whole cube.
+struct EpipolarInputs {
+    FrameContext frame;
+    LightImages light;
+    CompositeTarget target;
+    rg::BufferRef stepCounts;  // the step counter, cleared, that the marches add to; invalid: none
+};
 struct EpipolarOptions {
+    EpipolarSizes sizes;
     bool minMaxTrees = true;
     bool fixup = true;
     bool cubeShadow = false;
-    rg::BufferRef stepCounts;  // the step counter, cleared, that the marches add to; invalid: none
     // A second, stencil-limited march of the samples between two marched ones that differ
     // (frame.epipolar3.x), before interpolation.
     bool inscatterRefinement = false;
@@ -123,8 +172,7 @@ struct EpipolarOutputs {
     CompositeOutputs composited;
     rg::BufferRef stepCounts;
 };
-EpipolarOutputs addEpipolarNodes(rg::RenderGraph& g, const NodeInputs& in,
-                                 const EpipolarSizes& sizes, const EpipolarOptions& options,
-                                 const CompositeTarget& target);
+EpipolarOutputs addEpipolarNodes(rg::RenderGraph& g, const EpipolarInputs& in,
+                                 const EpipolarOptions& options);
 
 }  // namespace ls

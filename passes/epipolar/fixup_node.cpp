@@ -5,17 +5,16 @@ namespace ls {
 
 // Pixels the unwarp could not interpolate (stencil 0; it marked the rest) are ray-marched on their
 // own, without trees, and composited into the engine's color like the unwarp's.
-CompositeOutputs addFixup(rg::RenderGraph& g, const NodeInputs& in, rg::ImageRef cameraStencil,
-                          const CompositeTarget& target) {
+CompositeOutputs addFixup(rg::RenderGraph& g, const FixupInputs& in) {
     auto pass = g.addPass("fix-up ray march", rg::PassType::Graphics);
-    rg::BindingTable table = declarePixelMarch(pass, in);
-    pass.stencilTest(cameraStencil);
-    const CompositeOutputs written = addCompositeTarget(table, target);
-    const bool addOnly = target.addOnly;
-    pass.execute([in, table, written, addOnly](rg::PassContext& ctx) {
+    rg::BindingTable table = declarePixelMarch(pass, in.frame, in.light);
+    pass.stencilTest(in.cameraStencil);
+    const CompositeOutputs written = addCompositeTarget(table, in.target);
+    const bool addOnly = in.target.addOnly;
+    pass.execute([shared = in.frame.shared, table, written, addOnly](rg::PassContext& ctx) {
         // The cap is a setting, read per frame like the other constants.
-        const auto maxSteps = static_cast<uint32_t>(in.shared->constants.epipolar2.y);
-        drawPixelMarch(ctx, in, table,
+        const auto maxSteps = static_cast<uint32_t>(shared->constants.epipolar2.y);
+        drawPixelMarch(ctx, shared, table,
                        {.pipeline = "fix-up",
                         .maxSteps = maxSteps,
                         .whereStencilIsZero = true,

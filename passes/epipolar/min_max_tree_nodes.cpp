@@ -15,26 +15,26 @@ rg::ShaderCode minMaxFirstLevelShader(bool cubeShadow) {
 // One node per tree level: the first from the shadow map, each coarser one from the level below.
 // Every level lives in one texture (the levels' columns are disjoint): each pass reads the level
 // below and writes its own, and keeps what earlier passes wrote, so it read-modify-writes it.
-rg::ImageRef addMinMaxTrees(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
-                            rg::ImageRef sliceUvFrame) {
-    const uint32_t n = s.shadowMapSize;
+rg::ImageRef addMinMaxTrees(rg::RenderGraph& g, const MinMaxTreesInputs& in,
+                            const EpipolarSizes& s) {
+    const uint32_t n = in.light.shadowMapSize;
     const uint32_t levels = treeLevels(n);
     rg::ImageRef tree =
         g.createImage("1D min/max trees", rg::ImageDesc::absolute(VK_FORMAT_R16G16_SFLOAT, n, s.slices));
     {
         auto pass = g.addPass("min/max trees level 1", rg::PassType::Compute);
-        const auto& sm = samplersOf(in.shared);
-        rg::BindingTable table = frameTable(pass, in.constants);
+        const auto& sm = samplersOf(in.frame.shared);
+        rg::BindingTable table = frameTable(pass, in.frame.constants);
         table
-            .sampled(LS_BINDING_TREE_SHADOW_MAP, in.shadowMap, sm.nearest(),
+            .sampled(LS_BINDING_TREE_SHADOW_MAP, in.light.shadowMap, sm.nearest(),
                      VK_IMAGE_ASPECT_DEPTH_BIT)
-            .sampled(LS_BINDING_TREE_UV_FRAME, sliceUvFrame, sm.nearest());
+            .sampled(LS_BINDING_TREE_UV_FRAME, in.sliceUvFrame, sm.nearest());
         tree = table.storageWrite(LS_BINDING_TREE_FIRST_LEVEL, tree);
-        pass.execute([in, table, s, n](rg::PassContext& ctx) {
-            if (!in.shared->inView()) return;  // a cube face out of view
+        pass.execute([shared = in.frame.shared, table, s, n](rg::PassContext& ctx) {
+            if (!shared->inView()) return;  // a cube face out of view
             // A point light's cube map: the face's layer of the 2D array.
-            const bool cube = in.shared->spec.cubeShadow;
-            const auto& p = in.shared->pipelines.compute(
+            const bool cube = shared->spec.cubeShadow;
+            const auto& p = shared->pipelines.compute(
                 cube ? "min/max trees level 1 (cube face)" : "min/max trees level 1",
                 minMaxFirstLevelShader(cube), table.layout(), 0, {});
             p.bind(ctx.cmd());
@@ -46,11 +46,11 @@ rg::ImageRef addMinMaxTrees(rg::RenderGraph& g, const NodeInputs& in, const Epip
         auto pass = g.addPass("min/max trees level " + std::to_string(level), rg::PassType::Compute);
         rg::BindingTable table(pass);
         tree = table.storageReadWrite(LS_BINDING_TREE_LEVEL, tree);
-        pass.execute([in, table, level, n, s](rg::PassContext& ctx) {
-            if (!in.shared->inView()) return;
-            const auto& p = in.shared->pipelines.compute(
-                "min/max trees next level", rg::spirv(ls_spirv::min_max_next_level_comp),
-                table.layout(), 8, {});
+        pass.execute([shared = in.frame.shared, table, level, n, s](rg::PassContext& ctx) {
+            if (!shared->inView()) return;
+            const auto& p = shared->pipelines.compute("min/max trees next level",
+                                                      rg::spirv(ls_spirv::min_max_next_level_comp),
+                                                      table.layout(), 8, {});
             p.bind(ctx.cmd());
             table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
             const int32_t push[2] = {static_cast<int32_t>(level), static_cast<int32_t>(n)};

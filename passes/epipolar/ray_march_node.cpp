@@ -17,35 +17,39 @@ rg::ShaderCode rayMarchShader(const ScatterSpec& spec, bool countSteps) {
                        {"LS_COUNT_STEPS", countSteps}});
 }
 
-EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in,
-                                     const EpipolarSizes& s, const EpipolarRayMarchInputs& i) {
-    const bool adds = i.accumulate.valid() && !i.overwrite;
+EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const EpipolarRayMarchInputs& in,
+                                     const EpipolarRayMarchOptions& options) {
+    const EpipolarSizes& s = options.sizes;
+    const bool adds = in.accumulate.valid() && !options.overwrite;
     rg::ImageRef marched =
-        i.accumulate.valid() ? i.accumulate
-                             : g.createImage("in-scattering (ray-marched samples)",
-                                             rg::ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT,
-                                                                     s.samples, s.slices));
-    const bool trees = i.trees.valid();
+        in.accumulate.valid() ? in.accumulate
+                              : g.createImage("in-scattering (ray-marched samples)",
+                                              rg::ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT,
+                                                                      s.samples, s.slices));
+    // The variant follows from the handles given: trees or none, a light color or none.
+    const bool trees = in.trees.valid(), color = in.light.lightColor.valid();
     auto pass =
         g.addPass(trees ? "ray march with min/max trees" : "ray march", rg::PassType::Graphics);
-    const auto& sm = samplersOf(in.shared);
-    rg::BindingTable table = frameTable(pass, in.constants);
-    table.sampled(LS_BINDING_MARCH_COORDINATES, i.coordinates, sm.nearest())
-        .sampled(LS_BINDING_MARCH_EPIPOLAR_Z, i.epipolarZ, sm.nearest())
-        .sampled(LS_BINDING_MARCH_UV_FRAME, i.sliceUvFrame, sm.nearest())
-        .sampledIfValid(LS_BINDING_MARCH_TREES, i.trees, sm.nearest());
-    addMarchInputs(table, in);
+    const auto& sm = samplersOf(in.frame.shared);
+    rg::BindingTable table = frameTable(pass, in.frame.constants);
+    table.sampled(LS_BINDING_MARCH_COORDINATES, in.coordinates, sm.nearest())
+        .sampled(LS_BINDING_MARCH_EPIPOLAR_Z, in.epipolarZ, sm.nearest())
+        .sampled(LS_BINDING_MARCH_UV_FRAME, in.sliceUvFrame, sm.nearest())
+        .sampledIfValid(LS_BINDING_MARCH_TREES, in.trees, sm.nearest());
+    addMarchInputs(table, in.frame.shared, in.light);
     const rg::BufferRef counts =
-        table.storageBufferReadWriteIfValid(LS_BINDING_MARCH_STEP_COUNTS, i.stepCounts);
-    pass.stencilTest(i.epipolarStencil);
+        table.storageBufferReadWriteIfValid(LS_BINDING_MARCH_STEP_COUNTS, in.stepCounts);
+    pass.stencilTest(in.epipolarStencil);
     pass.countSamples();  // the samples marched (FrameReport's PassTime::samples)
     marched =
-        pass.colorAttachment(marched, i.accumulate.valid() ? rg::LoadOp::Load : rg::LoadOp::Clear);
-    pass.execute([in, table, trees, adds, counts](rg::PassContext& ctx) {
+        pass.colorAttachment(marched, in.accumulate.valid() ? rg::LoadOp::Load : rg::LoadOp::Clear);
+    pass.execute([shared = in.frame.shared, table, trees, color, adds,
+                  counts](rg::PassContext& ctx) {
         // A cube face out of view adds nothing (the first face's pass writes every sample's alpha).
-        if (adds && !in.shared->inView()) return;
-        ScatterSpec spec = in.shared->spec;
+        if (adds && !shared->inView()) return;
+        ScatterSpec spec = shared->spec;
         spec.minMaxTrees = trees;
+        spec.lightColor = color;
         auto desc = fullscreenPipeline(rayMarchShader(spec, counts.valid()), ctx, table.layout());
         desc.specialization = spec.constants();
         desc.stencilTest = true;
@@ -56,7 +60,7 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const NodeInputs& in,
             desc.colorWriteMask =
                 VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT;
         }
-        const auto& p = in.shared->pipelines.graphics(
+        const auto& p = shared->pipelines.graphics(
             std::string(adds ? "ray march (adding a face)" : "ray march") +
                 (counts.valid() ? ", counting" : ""),
             desc);

@@ -6,17 +6,15 @@ namespace ls {
 
 // One draw over the valid samples (stencil != 0); the shader keeps the fragments whose stencil
 // must rise (see refine_on_inscattering.frag) and discards the rest.
-RefinedSamples addRefineOnInscattering(rg::RenderGraph& g, const NodeInputs& in,
-                                       rg::ImageRef interpolationSource, rg::ImageRef marched,
-                                       rg::ImageRef epipolarStencil) {
+RefinedSamples addRefineOnInscattering(rg::RenderGraph& g, const RefineOnInscatteringInputs& in) {
     auto pass = g.addPass("refine on in-scattering differences", rg::PassType::Graphics);
-    rg::BindingTable table = frameTable(pass, in.constants);
-    table.sampled(LS_BINDING_REFINE_MARCHED, marched, samplersOf(in.shared).nearest());
+    rg::BindingTable table = frameTable(pass, in.frame.constants);
+    table.sampled(LS_BINDING_REFINE_MARCHED, in.marched, samplersOf(in.frame.shared).nearest());
     RefinedSamples out;
     out.interpolationSource =
-        table.storageReadWrite(LS_BINDING_REFINE_LIN_SOURCES, interpolationSource);
-    out.epipolarStencil = pass.stencilWrite(epipolarStencil, rg::LoadOp::Load);
-    pass.execute([in, table](rg::PassContext& ctx) {
+        table.storageReadWrite(LS_BINDING_REFINE_LIN_SOURCES, in.interpolationSource);
+    out.epipolarStencil = pass.stencilWrite(in.epipolarStencil, rg::LoadOp::Load);
+    pass.execute([shared = in.frame.shared, table](rg::PassContext& ctx) {
         rg::GraphicsPipelineDesc desc = fullscreenPipeline(
             rg::spirv(ls_spirv::refine_on_inscattering_frag), ctx, table.layout());
         desc.stencilTest = true;  // every valid sample: 0 != stencil
@@ -27,7 +25,7 @@ RefinedSamples addRefineOnInscattering(rg::RenderGraph& g, const NodeInputs& in,
                         0xff,
                         0xff,
                         0};
-        const auto& p = in.shared->pipelines.graphics("refine on in-scattering differences", desc);
+        const auto& p = shared->pipelines.graphics("refine on in-scattering differences", desc);
         p.bind(ctx.cmd());
         vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 0);
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);

@@ -6,21 +6,22 @@
 
 namespace ls {
 
-rg::ImageRef addRefineSamples(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
-                              rg::ImageRef epipolarZ) {
+rg::ImageRef addRefineSamples(rg::RenderGraph& g, const RefineSamplesInputs& in,
+                              const EpipolarSizes& s) {
     rg::ImageRef sources = g.createImage(
         "interpolation source", rg::ImageDesc::absolute(VK_FORMAT_R16G16_UINT, s.samples, s.slices));
     auto pass = g.addPass("refine sample locations", rg::PassType::Compute);
-    rg::BindingTable table = frameTable(pass, in.constants);
-    table.sampled(LS_BINDING_REFINE_EPIPOLAR_Z, epipolarZ, samplersOf(in.shared).nearest());
+    rg::BindingTable table = frameTable(pass, in.frame.constants);
+    table.sampled(LS_BINDING_REFINE_EPIPOLAR_Z, in.epipolarZ,
+                  samplersOf(in.frame.shared).nearest());
     sources = table.storageWrite(LS_BINDING_REFINE_SOURCES, sources);
-    pass.execute([in, table, s](rg::PassContext& ctx) {
+    pass.execute([shared = in.frame.shared, table, s](rg::PassContext& ctx) {
         // The light type only: near a point or spot light the first section is cut geometrically.
         rg::Specialization spec;
-        spec.set(LS_SPEC_LIGHT_TYPE, static_cast<int32_t>(in.shared->spec.light));
-        const auto& p = in.shared->pipelines.compute("refine sample locations",
-                                                     rg::spirv(ls_spirv::refine_samples_comp),
-                                                     table.layout(), 0, spec);
+        spec.set(LS_SPEC_LIGHT_TYPE, static_cast<int32_t>(shared->spec.light));
+        const auto& p = shared->pipelines.compute("refine sample locations",
+                                                  rg::spirv(ls_spirv::refine_samples_comp),
+                                                  table.layout(), 0, spec);
         p.bind(ctx.cmd());
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         vkCmdDispatch(ctx.cmd(), groupCount(s.samples, 128), s.slices, 1);

@@ -4,14 +4,15 @@
 
 namespace ls {
 
-rg::ImageRef addSliceEndPoints(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s) {
+rg::ImageRef addSliceEndPoints(rg::RenderGraph& g, const SliceEndPointsInputs& in,
+                               const EpipolarSizes& s) {
     const rg::ImageRef endPoints = g.createImage(
         "slice end points", rg::ImageDesc::absolute(VK_FORMAT_R32G32B32A32_SFLOAT, s.slices, 1));
     auto pass = g.addPass("slice end points", rg::PassType::Compute);
-    rg::BindingTable table = frameTable(pass, in.constants);
+    rg::BindingTable table = frameTable(pass, in.frame.constants);
     const rg::ImageRef out = table.storageWrite(LS_BINDING_SLICE_END_POINTS_OUT, endPoints);
-    pass.execute([in, table, s](rg::PassContext& ctx) {
-        const auto& p = in.shared->pipelines.compute(
+    pass.execute([shared = in.frame.shared, table, s](rg::PassContext& ctx) {
+        const auto& p = shared->pipelines.compute(
             "slice end points", rg::spirv(ls_spirv::slice_end_points_comp), table.layout(), 0, {});
         p.bind(ctx.cmd());
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);

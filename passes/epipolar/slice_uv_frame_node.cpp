@@ -4,20 +4,21 @@
 
 namespace ls {
 
-rg::ImageRef addSliceUvFrame(rg::RenderGraph& g, const NodeInputs& in, const EpipolarSizes& s,
-                             rg::ImageRef sliceEndPoints) {
+rg::ImageRef addSliceUvFrame(rg::RenderGraph& g, const SliceUvFrameInputs& in,
+                             const EpipolarSizes& s) {
     rg::ImageRef uvFrame = g.createImage(
         "slice uv origin and direction",
         rg::ImageDesc::absolute(VK_FORMAT_R32G32B32A32_SFLOAT, s.slices, 1));
     auto pass = g.addPass("slice uv origin and direction", rg::PassType::Compute);
-    rg::BindingTable table = frameTable(pass, in.constants);
-    table.sampled(LS_BINDING_UV_FRAME_END_POINTS, sliceEndPoints, samplersOf(in.shared).nearest());
+    rg::BindingTable table = frameTable(pass, in.frame.constants);
+    table.sampled(LS_BINDING_UV_FRAME_END_POINTS, in.sliceEndPoints,
+                  samplersOf(in.frame.shared).nearest());
     uvFrame = table.storageWrite(LS_BINDING_UV_FRAME_OUT, uvFrame);
-    pass.execute([in, table, s](rg::PassContext& ctx) {
-        if (!in.shared->inView()) return;  // a cube face out of view: no ray reads its lines
-        const auto& p = in.shared->pipelines.compute("slice uv origin and direction",
-                                                     rg::spirv(ls_spirv::slice_uv_frame_comp),
-                                                     table.layout(), 0, {});
+    pass.execute([shared = in.frame.shared, table, s](rg::PassContext& ctx) {
+        if (!shared->inView()) return;  // a cube face out of view: no ray reads its lines
+        const auto& p = shared->pipelines.compute("slice uv origin and direction",
+                                                  rg::spirv(ls_spirv::slice_uv_frame_comp),
+                                                  table.layout(), 0, {});
         p.bind(ctx.cmd());
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         vkCmdDispatch(ctx.cmd(), groupCount(s.slices, 64), 1, 1);

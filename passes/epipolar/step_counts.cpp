@@ -11,9 +11,9 @@ std::array<uint64_t, kStepCounters> sumStepCounts(const uint32_t* rows, uint32_t
     return sum;
 }
 
-rg::BufferRef addClearStepCounts(rg::RenderGraph& g, rg::BufferRef counts) {
+rg::BufferRef addClearStepCounts(rg::RenderGraph& g, const ClearStepCountsInputs& in) {
     auto pass = g.addPass("clear step counts", rg::PassType::Transfer);
-    const rg::BufferRef cleared = pass.transferDst(counts);
+    const rg::BufferRef cleared = pass.transferDst(in.counts);
     pass.execute([cleared](rg::PassContext& ctx) {
         vkCmdFillBuffer(ctx.cmd(), ctx.buffer(cleared), 0, VK_WHOLE_SIZE, 0u);
     });

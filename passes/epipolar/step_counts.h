@@ -31,6 +31,9 @@ inline uint64_t stepCountBytes(uint32_t slices) {
 std::array<uint64_t, kStepCounters> sumStepCounts(const uint32_t* rows, uint32_t slices);
 
 // Zeroes the counter before the frame's marches; returns its new version.
-rg::BufferRef addClearStepCounts(rg::RenderGraph& g, rg::BufferRef counts);
+struct ClearStepCountsInputs {
+    rg::BufferRef counts;
+};
+rg::BufferRef addClearStepCounts(rg::RenderGraph& g, const ClearStepCountsInputs& in);
 
 }  // namespace ls

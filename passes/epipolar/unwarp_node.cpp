@@ -16,31 +16,32 @@ rg::ShaderCode unwarpShader(bool table, VkFormat color, bool withOutput) {
 // fix-up on, each served pixel also writes 1 into a cleared stencil (the fragments it cannot serve
 // are discarded), and the fix-up marches the zeros. Without fix-up there is no attachment: the pass
 // renders over the screen.
-UnwarpOutputs addUnwarp(rg::RenderGraph& g, const NodeInputs& in, const UnwarpInputs& i,
-                        const CompositeTarget& target, bool markForFixup) {
+UnwarpOutputs addUnwarp(rg::RenderGraph& g, const UnwarpInputs& in, const UnwarpOptions& options) {
+    const bool markForFixup = options.markForFixup;
     UnwarpOutputs out;
     auto pass = g.addPass("unwarp epipolar to screen", rg::PassType::Graphics);
-    const auto& sm = samplersOf(in.shared);
-    rg::BindingTable table = frameTable(pass, in.constants);
-    table.sampled(LS_BINDING_UNWARP_END_POINTS, i.sliceEndPoints, sm.nearest())
-        .sampled(LS_BINDING_UNWARP_EPIPOLAR_Z, i.epipolarZ, sm.nearest())
-        .sampled(LS_BINDING_UNWARP_INSCATTER, i.interpolated, sm.nearest())
-        .sampled(LS_BINDING_UNWARP_DEPTH, in.depth, sm.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
-        .sampledIfValid(LS_BINDING_POINT_TABLE, in.table, sm.nearest());
-    out.composited = addCompositeTarget(table, target);
+    const auto& sm = samplersOf(in.frame.shared);
+    rg::BindingTable table = frameTable(pass, in.frame.constants);
+    table.sampled(LS_BINDING_UNWARP_END_POINTS, in.sliceEndPoints, sm.nearest())
+        .sampled(LS_BINDING_UNWARP_EPIPOLAR_Z, in.epipolarZ, sm.nearest())
+        .sampled(LS_BINDING_UNWARP_INSCATTER, in.interpolated, sm.nearest())
+        .sampled(LS_BINDING_UNWARP_DEPTH, in.frame.depth, sm.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
+        .sampledIfValid(LS_BINDING_POINT_TABLE, in.light.table, sm.nearest());
+    out.composited = addCompositeTarget(table, in.target);
     if (markForFixup) {
         const rg::ImageRef stencil =
-            g.createImage("camera depth-stencil", rg::ImageDesc::screen(in.depthStencil));
+            g.createImage("camera depth-stencil", rg::ImageDesc::screen(in.frame.depthStencil));
         out.cameraStencil = pass.stencilWrite(stencil, rg::LoadOp::Clear, 0);
     } else {
-        pass.renderArea(in.screen);
+        pass.renderArea(in.frame.screen);
     }
     const CompositeOutputs written = out.composited;
-    const bool addOnly = target.addOnly;
-    pass.execute([in, table, written, markForFixup, addOnly](rg::PassContext& ctx) {
-        const ScatterSpec& spec = in.shared->spec;
+    const bool addOnly = in.target.addOnly;
+    pass.execute([shared = in.frame.shared, light = in.light, table, written, markForFixup,
+                  addOnly](rg::PassContext& ctx) {
+        const ScatterSpec& spec = shared->spec;
         auto desc = fullscreenPipeline(
-            unwarpShader(in.table.valid(), ctx.format(written.color), written.inscatterOut.valid()),
+            unwarpShader(light.table.valid(), ctx.format(written.color), written.inscatterOut.valid()),
             ctx, table.layout());
         desc.pushConstantBytes = 8;
         desc.specialization = spec.constants();
@@ -49,7 +50,7 @@ UnwarpOutputs addUnwarp(rg::RenderGraph& g, const NodeInputs& in, const UnwarpIn
             desc.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_REPLACE, VK_STENCIL_OP_KEEP,
                             VK_COMPARE_OP_ALWAYS, 0xff, 0xff, 1};
         }
-        const auto& p = in.shared->pipelines.graphics("unwarp", desc);
+        const auto& p = shared->pipelines.graphics("unwarp", desc);
         p.bind(ctx.cmd());
         if (markForFixup) vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 1);
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);

@@ -1,26 +1,24 @@
 #pragma once
-// The node inputs of a light's chain for the nodes that take the whole set (epipolar's, brute
-// force's, the unshadowed closed form's): the light's images where it is shadowed.
+// A light's chain inputs as the nodes take them: the frame's part, and the light's images (its
+// shadow map and light color only where it is shadowed).
+#include "frame_context.h"
 #include "method_unit.h"
-#include "node_inputs.h"
 
 namespace ls {
 
-inline NodeInputs nodeInputs(const ChainInputs& in, const ChainConfig& c) {
-    NodeInputs n;
-    n.shared = in.shared;
-    n.constants = in.constants;
-    n.depth = in.depth;
-    n.table = in.table;
+inline FrameContext frameContext(const ChainInputs& in) {
+    return {in.shared, in.constants, in.depth, in.screen, in.depthStencil, in.coordinateFormat};
+}
+
+inline LightImages lightImages(const ChainInputs& in, const ChainConfig& c) {
+    LightImages l;
+    l.table = in.table;
     if (c.shadowed) {
-        n.shadowMap = in.shadowMap;
-        n.lightColor = in.lightColor;
+        l.shadowMap = in.shadowMap;
+        l.lightColor = in.lightColor;
     }
-    n.screen = in.screen;
-    n.depthStencil = in.depthStencil;
-    n.coordinateFormat = in.coordinateFormat;
-    n.shadowMapSize = c.shadowMapSize;
-    return n;
+    l.shadowMapSize = c.shadowMapSize;
+    return l;
 }
 
 // An unshadowed light's Lin for the methods that march a shadow map (epipolar, brute force): the

@@ -15,19 +15,20 @@ rg::ShaderCode compositeShader(bool addOnly, bool withLin, VkFormat color, bool 
 
 namespace {
 
-CompositeOutputs addCompositePass(rg::RenderGraph& graph, const NodeInputs& in, const char* name,
-                                  const CompositeTarget& target, rg::ImageRef lin) {
+CompositeOutputs addCompositePass(rg::RenderGraph& graph, const FrameContext& frame,
+                                  const char* name, const CompositeTarget& target,
+                                  rg::ImageRef lin) {
     auto pass = graph.addPass(name, rg::PassType::Compute);
-    const auto& s = samplersOf(in.shared);
-    rg::BindingTable table = frameTable(pass, in.constants);
-    table.sampled(LS_BINDING_DEPTH, in.depth, s.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
+    const auto& s = samplersOf(frame.shared);
+    rg::BindingTable table = frameTable(pass, frame.constants);
+    table.sampled(LS_BINDING_DEPTH, frame.depth, s.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
         .sampledIfValid(LS_BINDING_COMPOSITE_LIN, lin, s.nearest());
     const CompositeOutputs written = addCompositeTarget(table, target);
     const bool addOnly = target.addOnly, withLin = lin.valid();
-    pass.execute([in, table, written, addOnly, withLin, name](rg::PassContext& ctx) {
+    pass.execute([shared = frame.shared, table, written, addOnly, withLin, name](rg::PassContext& ctx) {
         const rg::ShaderCode shader = compositeShader(addOnly, withLin, ctx.format(written.color),
                                                       written.inscatterOut.valid());
-        const auto& p = in.shared->pipelines.compute(name, shader, table.layout(), 0, {});
+        const auto& p = shared->pipelines.compute(name, shader, table.layout(), 0, {});
         p.bind(ctx.cmd());
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         const VkExtent2D e = ctx.extent(written.color);
@@ -38,14 +39,14 @@ CompositeOutputs addCompositePass(rg::RenderGraph& graph, const NodeInputs& in, 
 
 }  // namespace
 
-CompositeOutputs addComposite(rg::RenderGraph& graph, const NodeInputs& in, rg::ImageRef color,
-                              rg::ImageRef lin, rg::ImageRef inscatterOut) {
-    return addCompositePass(graph, in, "composite", {color, inscatterOut, false}, lin);
+CompositeOutputs addComposite(rg::RenderGraph& graph, const CompositeInputs& in) {
+    return addCompositePass(graph, in.frame, "composite", {in.color, in.inscatterOut, false},
+                            in.lin);
 }
 
-CompositeOutputs addInscatter(rg::RenderGraph& graph, const NodeInputs& in, rg::ImageRef color, rg::ImageRef lin,
-                              rg::ImageRef inscatterOut) {
-    return addCompositePass(graph, in, "add in-scattering", {color, inscatterOut, true}, lin);
+CompositeOutputs addInscatter(rg::RenderGraph& graph, const CompositeInputs& in) {
+    return addCompositePass(graph, in.frame, "add in-scattering", {in.color, in.inscatterOut, true},
+                            in.lin);
 }
 
 }  // namespace ls

@@ -24,12 +24,13 @@ rg::GraphicsPipelineDesc fullscreenPipeline(rg::ShaderCode fragment, const rg::P
 
 namespace ls {
 
-void addMarchInputs(rg::BindingTable& table, const NodeInputs& in) {
-    const auto& s = samplersOf(in.shared);
+void addMarchInputs(rg::BindingTable& table, const Shared& shared, const LightImages& light) {
+    const auto& s = samplersOf(shared);
     table
-        .sampledIfValid(LS_BINDING_SHADOW_MAP, in.shadowMap, s.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
-        .sampledIfValid(LS_BINDING_POINT_TABLE, in.table, s.nearest())
-        .sampledIfValid(LS_BINDING_LIGHT_COLOR, in.lightColor, s.linear());
+        .sampledIfValid(LS_BINDING_SHADOW_MAP, light.shadowMap, s.nearest(),
+                        VK_IMAGE_ASPECT_DEPTH_BIT)
+        .sampledIfValid(LS_BINDING_POINT_TABLE, light.table, s.nearest())
+        .sampledIfValid(LS_BINDING_LIGHT_COLOR, light.lightColor, s.linear());
 }
 
 }  // namespace ls

@@ -5,7 +5,7 @@
 // method's shader is built in. Binding numbers are shaders/shared/bindings.h's.
 #include <vector>
 
-#include "node_inputs.h"
+#include "frame_context.h"
 #include "rendergraph/binding_table.h"
 #include "rendergraph/pass_context.h"
 #include "rendergraph/pipeline.h"
@@ -29,6 +29,6 @@ namespace ls {
 
 // The inputs every marching node samples besides its own textures: the shadow map, the
 // point-light table and the light-color texture, each only when the frame has it.
-void addMarchInputs(rg::BindingTable& table, const NodeInputs& in);
+void addMarchInputs(rg::BindingTable& table, const Shared& shared, const LightImages& light);
 
 }  // namespace ls

@@ -28,17 +28,20 @@ rg::ShaderCode fixupShader(const ScatterSpec& spec, VkFormat color, bool withOut
                                color, withOutput);
 }
 
-rg::BindingTable declarePixelMarch(rg::PassBuilder& pass, const NodeInputs& in) {
-    rg::BindingTable table = frameTable(pass, in.constants);
-    table.sampled(LS_BINDING_DEPTH, in.depth, samplersOf(in.shared).nearest(),
+rg::BindingTable declarePixelMarch(rg::PassBuilder& pass, const FrameContext& frame,
+                                   const LightImages& light) {
+    rg::BindingTable table = frameTable(pass, frame.constants);
+    table.sampled(LS_BINDING_DEPTH, frame.depth, samplersOf(frame.shared).nearest(),
                   VK_IMAGE_ASPECT_DEPTH_BIT);
-    addMarchInputs(table, in);
+    addMarchInputs(table, frame.shared, light);
     return table;
 }
 
-void drawPixelMarch(rg::PassContext& ctx, const NodeInputs& in, const rg::BindingTable& table,
+void drawPixelMarch(rg::PassContext& ctx, const Shared& shared, const rg::BindingTable& table,
                     const PixelMarchDraw& draw) {
-    const ScatterSpec& spec = in.shared->spec;
+    // The variant follows from the light's images declared in the table, not from the spec's flag.
+    ScatterSpec spec = shared->spec;
+    spec.lightColor = table.has(LS_BINDING_LIGHT_COLOR);
     auto desc =
         fullscreenPipeline(draw.composite ? fixupShader(spec, ctx.format(draw.composite->color),
                                                         draw.composite->inscatterOut.valid())
@@ -51,7 +54,7 @@ void drawPixelMarch(rg::PassContext& ctx, const NodeInputs& in, const rg::Bindin
         desc.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP,
                         VK_COMPARE_OP_EQUAL, 0xff, 0, 0};
     }
-    const auto& p = in.shared->pipelines.graphics(draw.pipeline, desc);
+    const auto& p = shared->pipelines.graphics(draw.pipeline, desc);
     p.bind(ctx.cmd());
     if (draw.whereStencilIsZero)
         vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 0);

@@ -3,7 +3,7 @@
 // the shadow map, one step per texel it crosses. Brute force draws it over every pixel; the
 // epipolar fix-up over the pixels its unwarp left unmarked in a stencil, with an optional step cap. The
 // caller adds the pass, its target and any stencil it tests; these add the march's reads and draw.
-#include "node_inputs.h"
+#include "frame_context.h"
 #include "rendergraph/binding_table.h"
 #include "rendergraph/pass_context.h"
 #include "rendergraph/render_graph.h"
@@ -13,7 +13,8 @@ namespace ls {
 
 // The march's reads: the frame constants, the engine's depth and the light's images. The caller
 // adds any rows of its own (the composite target) to the table before drawing with it.
-rg::BindingTable declarePixelMarch(rg::PassBuilder& pass, const NodeInputs& in);
+rg::BindingTable declarePixelMarch(rg::PassBuilder& pass, const FrameContext& frame,
+                                   const LightImages& light);
 
 struct PixelMarchDraw {
     const char* pipeline = "";       // names the pipeline
@@ -26,7 +27,7 @@ struct PixelMarchDraw {
 };
 
 // Records the march as one full-screen draw of the pass.
-void drawPixelMarch(rg::PassContext& ctx, const NodeInputs& in, const rg::BindingTable& table,
+void drawPixelMarch(rg::PassContext& ctx, const Shared& shared, const rg::BindingTable& table,
                     const PixelMarchDraw& draw);
 
 }  // namespace ls

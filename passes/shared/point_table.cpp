@@ -51,8 +51,8 @@ bool PointTable::update(const Shared& shared) {
         VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
     desc.finalAccess = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
     const rg::ImageRef table = g.importImage("point-light table", desc);
-    const rg::BufferRef constants = addUploadConstants(g, shared);
-    addPointTable(g, shared, constants, table);
+    const rg::BufferRef constants = addUploadConstants(g, {shared});
+    addPointTable(g, {shared, constants, table});
     const rg::VulkanDeviceCaps caps(device_);
     rg::GraphExecutor exec(device_, g, rg::compile(g, caps));
     exec.run();

@@ -4,12 +4,11 @@
 
 namespace ls {
 
-rg::ImageRef addPointTable(rg::RenderGraph& graph, const Shared& shared, rg::BufferRef constants,
-                           rg::ImageRef table) {
+rg::ImageRef addPointTable(rg::RenderGraph& graph, const PointTableInputs& in) {
     auto pass = graph.addPass("point-light table", rg::PassType::Compute);
-    rg::BindingTable rows = frameTable(pass, constants);
-    table = rows.storageWrite(LS_BINDING_POINT_TABLE_OUT, table);
-    pass.execute([shared, rows, table](rg::PassContext& ctx) {
+    rg::BindingTable rows = frameTable(pass, in.constants);
+    const rg::ImageRef table = rows.storageWrite(LS_BINDING_POINT_TABLE_OUT, in.table);
+    pass.execute([shared = in.shared, rows, table](rg::PassContext& ctx) {
         const auto& p =
             shared->pipelines.compute("point-light table", rg::spirv(ls_spirv::point_table_comp),
                                       rows.layout(), 0, shared->spec.constants());

@@ -2,15 +2,23 @@
 // Nodes every method shares: the frame constants, the point-light table, the
 // closed form for lights without a shadow map (whatever the method), and the composite. Each
 // function adds one pass to the graph, takes the handles it reads and returns those it writes.
-#include "node_inputs.h"
+#include "frame_context.h"
 
 namespace ls {
 
 // Copies this frame's constants into a graph buffer (vkCmdUpdateBuffer, recorded per frame).
-rg::BufferRef addUploadConstants(rg::RenderGraph& graph, const Shared& shared);
+struct UploadConstantsInputs {
+    Shared shared;  // whose constants
+};
+rg::BufferRef addUploadConstants(rg::RenderGraph& graph, const UploadConstantsInputs& in);
 
-// Closed-form Lin for a light without a shadow map (R16G16B16A16_SFLOAT, screen); reads in.table.
-rg::ImageRef addUnshadowed(rg::RenderGraph& graph, const NodeInputs& in);
+// Closed-form Lin for a light without a shadow map (R16G16B16A16_SFLOAT, screen); reads
+// light.table (an unshadowed light has no other image).
+struct UnshadowedInputs {
+    FrameContext frame;
+    LightImages light;
+};
+rg::ImageRef addUnshadowed(rg::RenderGraph& graph, const UnshadowedInputs& in);
 
 // color = color * exp(-betaT S) + Lin, and Lin alone into `inscatterOut` when it is valid.
 // Without Lin (the light's volume misses the view) only the extinction is applied.
@@ -18,17 +26,25 @@ struct CompositeOutputs {
     rg::ImageRef color;
     rg::ImageRef inscatterOut;  // invalid when none was given
 };
-CompositeOutputs addComposite(rg::RenderGraph& graph, const NodeInputs& in, rg::ImageRef color,
-                              rg::ImageRef lin, rg::ImageRef inscatterOut);
+struct CompositeInputs {
+    FrameContext frame;         // its constants and depth
+    rg::ImageRef color;         // the engine's color
+    rg::ImageRef lin;           // invalid: extinction only
+    rg::ImageRef inscatterOut;  // invalid: none
+};
+CompositeOutputs addComposite(rg::RenderGraph& graph, const CompositeInputs& in);
 
 // Several lights: adds one more light's Lin into the color, after the first light's composite
 // (which applied the extinction), and into `inscatterOut` when it is valid (which then holds the
 // sum). Each light's Lin is dead after it, so the next light's chain may reuse its memory.
-CompositeOutputs addInscatter(rg::RenderGraph& graph, const NodeInputs& in, rg::ImageRef color, rg::ImageRef lin,
-                              rg::ImageRef inscatterOut);
+CompositeOutputs addInscatter(rg::RenderGraph& graph, const CompositeInputs& in);
 
 // Fills the point-light table (R32G32B32A32_SFLOAT) for the current medium and light radius.
-rg::ImageRef addPointTable(rg::RenderGraph& graph, const Shared& shared, rg::BufferRef constants,
-                           rg::ImageRef table);
+struct PointTableInputs {
+    Shared shared;
+    rg::BufferRef constants;
+    rg::ImageRef table;  // the table to fill
+};
+rg::ImageRef addPointTable(rg::RenderGraph& graph, const PointTableInputs& in);
 
 }  // namespace ls

@@ -11,13 +11,16 @@ rg::ShaderCode unshadowedShader(const ScatterSpec& spec) {
                       {{"LS_NEEDS_TABLE", spec.light != LightKind::Directional}});
 }
 
-rg::ImageRef addUnshadowed(rg::RenderGraph& graph, const NodeInputs& in) {
-    return addScreenLinNode(graph, in.shared,
+rg::ImageRef addUnshadowed(rg::RenderGraph& graph, const UnshadowedInputs& in) {
+    return addScreenLinNode(graph, in.frame.shared,
                             {.name = "unshadowed in-scattering",
-                             .constants = in.constants,
-                             .depth = in.depth,
+                             .constants = in.frame.constants,
+                             .depth = in.frame.depth,
                              // The table; an unshadowed frame has nothing else.
-                             .rows = [in](rg::BindingTable& table) { addMarchInputs(table, in); },
+                             .rows =
+                                 [in](rg::BindingTable& table) {
+                                     addMarchInputs(table, in.frame.shared, in.light);
+                                 },
                              .shader = unshadowedShader,
                              .specialize = {}});
 }

@@ -2,11 +2,11 @@
 
 namespace ls {
 
-rg::BufferRef addUploadConstants(rg::RenderGraph& graph, const Shared& shared) {
+rg::BufferRef addUploadConstants(rg::RenderGraph& graph, const UploadConstantsInputs& in) {
     rg::BufferRef buffer = graph.createBuffer("frame constants", {sizeof(FrameConstants)});
     auto pass = graph.addPass("upload frame constants", rg::PassType::Transfer);
     buffer = pass.transferDst(buffer);
-    pass.execute([shared, buffer](rg::PassContext& ctx) {
+    pass.execute([shared = in.shared, buffer](rg::PassContext& ctx) {
         vkCmdUpdateBuffer(ctx.cmd(), ctx.buffer(buffer), 0, sizeof(FrameConstants),
                           &shared->constants);
     });

@@ -35,9 +35,9 @@ VkFormat accumulationFormat(SliceAccumulation target) {
 
 }  // namespace
 
-rg::ImageRef addSlicePlanes(rg::RenderGraph& graph, const Shared& shared,
-                            SlicePlacementRef placement, const SlicePlanesInputs& in,
+rg::ImageRef addSlicePlanes(rg::RenderGraph& graph, const SlicePlanesInputs& in,
                             const SlicePlanesOptions& options) {
+    const Shared& shared = in.frame.shared;
     const bool channels = options.target == SliceAccumulation::Rgba8Channels;
     rg::ImageRef sum =
         graph.createImage(channels ? "slice planes' sum (8-bit channels)" : "slice planes' sum",
@@ -46,17 +46,19 @@ rg::ImageRef addSlicePlanes(rg::RenderGraph& graph, const Shared& shared,
     const auto& s = samplersOf(shared);
     rg::BindingTable table(pass);
     table
-        .uniform(LS_BINDING_FRAME, in.constants,
+        .uniform(LS_BINDING_FRAME, in.frame.constants,
                  VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT)
-        .sampledIfValid(LS_BINDING_SHADOW_MAP, in.shadowMap, s.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
-        .sampledIfValid(LS_BINDING_LIGHT_COLOR, in.lightColor, s.linear())
+        .sampledIfValid(LS_BINDING_SHADOW_MAP, in.light.shadowMap, s.nearest(),
+                        VK_IMAGE_ASPECT_DEPTH_BIT)
+        .sampledIfValid(LS_BINDING_LIGHT_COLOR, in.light.lightColor, s.linear())
         .sampledIfValid(LS_BINDING_NOISE, in.noise, s.linearRepeat());
-    pass.depthTest(in.depth);
+    pass.depthTest(in.frame.depth);
     sum = pass.colorAttachment(sum, rg::LoadOp::Clear);
-    pass.execute([shared, placement, table, in, options, channels](rg::PassContext& ctx) {
+    pass.execute([shared, placement = in.placement, table, in, options,
+                  channels](rg::PassContext& ctx) {
         if (placement->planes == 0) return;  // cleared: the light's volume misses the view
         const ScatterSpec& spec = shared->spec;
-        const bool shadow = in.shadowMap.valid(), cookie = in.lightColor.valid(),
+        const bool shadow = in.light.shadowMap.valid(), cookie = in.light.lightColor.valid(),
                    noise = in.noise.valid();
         rg::GraphicsPipelineDesc desc;
         desc.vertex = rg::spirv(ls_spirv::slice_planes_vert);
@@ -87,17 +89,19 @@ bool sliceResolveNeeded(const SliceResolveOptions& options) {
            options.closedFormOutsideSlab;
 }
 
-rg::ImageRef addSliceResolve(rg::RenderGraph& graph, const Shared& shared,
-                             SlicePlacementRef placement, const SliceResolveInputs& in,
+rg::ImageRef addSliceResolve(rg::RenderGraph& graph, const SliceResolveInputs& in,
                              const SliceResolveOptions& options) {
+    const Shared& shared = in.frame.shared;
     rg::ImageRef lin = graph.createImage("in-scattering (screen)",
                                          rg::ImageDesc::screen(VK_FORMAT_R16G16B16A16_SFLOAT));
     auto pass = graph.addPass("resolve slice planes", rg::PassType::Graphics);
-    rg::BindingTable table = frameTable(pass, in.constants);
-    table.sampled(LS_BINDING_DEPTH, in.depth, samplersOf(shared).nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
+    rg::BindingTable table = frameTable(pass, in.frame.constants);
+    table
+        .sampled(LS_BINDING_DEPTH, in.frame.depth, samplersOf(shared).nearest(),
+                 VK_IMAGE_ASPECT_DEPTH_BIT)
         .sampled(LS_BINDING_PLANE_SUM, in.planeSum, samplersOf(shared).linear());
     lin = pass.colorAttachment(lin, rg::LoadOp::DontCare);
-    pass.execute([shared, placement, table, options](rg::PassContext& ctx) {
+    pass.execute([shared, placement = in.placement, table, options](rg::PassContext& ctx) {
         const ScatterSpec& spec = shared->spec;
         auto desc = fullscreenPipeline(rg::spirv(ls_spirv::slice_resolve_closed_form_frag), ctx,
                                        table.layout());
@@ -118,11 +122,11 @@ rg::ImageRef addSliceResolve(rg::RenderGraph& graph, const Shared& shared,
     return lin;
 }
 
-rg::ImageRef addTilingNoise(rg::RenderGraph& graph, const Shared& shared, rg::ImageRef noise) {
+rg::ImageRef addTilingNoise(rg::RenderGraph& graph, const TilingNoiseInputs& in) {
     auto pass = graph.addPass("tiling noise (seed 002)", rg::PassType::Compute);
     rg::BindingTable table(pass);
-    noise = table.storageWrite(LS_BINDING_NOISE_OUT, noise);
-    pass.execute([shared, table, noise](rg::PassContext& ctx) {
+    const rg::ImageRef noise = table.storageWrite(LS_BINDING_NOISE_OUT, in.noise);
+    pass.execute([shared = in.shared, table, noise](rg::PassContext& ctx) {
         const auto& p = shared->pipelines.compute(
             "tiling noise", rg::spirv(ls_spirv::tiling_noise_comp), table.layout(), 0, {});
         p.bind(ctx.cmd());

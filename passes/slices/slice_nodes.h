@@ -4,7 +4,7 @@
 // depth, then resolved into Lin. And the plugin's own tiling noise, made once.
 #include <memory>
 
-#include "shared/node_inputs.h"
+#include "shared/frame_context.h"
 #include "slice_geometry.h"
 
 namespace ls {
@@ -13,11 +13,12 @@ namespace ls {
 using SlicePlacementRef = std::shared_ptr<const SlicePlacement>;
 
 struct SlicePlanesInputs {
-    rg::BufferRef constants;  // the frame's FrameConstants
-    rg::ImageRef depth;       // the engine's depth: a read-only depth attachment
-    rg::ImageRef shadowMap;   // invalid: no shadow-map sampling
-    rg::ImageRef lightColor;  // the cookie, in the shadow map's space; invalid without one
-    rg::ImageRef noise;       // tiling noise (red, green layers); invalid: no noise
+    FrameContext frame;  // its constants, and the depth: a read-only depth attachment
+    // light.shadowMap invalid: no shadow-map sampling; light.lightColor: the cookie, in the shadow
+    // map's space, invalid without one. The table is not read.
+    LightImages light;
+    rg::ImageRef noise;  // tiling noise (red, green layers); invalid: no noise
+    SlicePlacementRef placement;
 };
 
 struct SlicePlanesOptions {
@@ -28,14 +29,13 @@ struct SlicePlanesOptions {
 
 // Returns the planes' sum: R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT (Lin, rgb), or R8G8B8A8_UNORM
 // (luminance, one quarter of the planes per channel), screen-sized.
-rg::ImageRef addSlicePlanes(rg::RenderGraph& graph, const Shared& shared,
-                            SlicePlacementRef placement, const SlicePlanesInputs& in,
+rg::ImageRef addSlicePlanes(rg::RenderGraph& graph, const SlicePlanesInputs& in,
                             const SlicePlanesOptions& options);
 
 struct SliceResolveInputs {
-    rg::BufferRef constants;
-    rg::ImageRef depth;     // the engine's depth: where each pixel's ray ends
+    FrameContext frame;     // its constants, and the depth: where each pixel's ray ends
     rg::ImageRef planeSum;  // addSlicePlanes' result
+    SlicePlacementRef placement;
 };
 
 struct SliceResolveOptions {
@@ -49,11 +49,14 @@ struct SliceResolveOptions {
 bool sliceResolveNeeded(const SliceResolveOptions& options);
 
 // Returns Lin (R16G16B16A16_SFLOAT, screen).
-rg::ImageRef addSliceResolve(rg::RenderGraph& graph, const Shared& shared,
-                             SlicePlacementRef placement, const SliceResolveInputs& in,
+rg::ImageRef addSliceResolve(rg::RenderGraph& graph, const SliceResolveInputs& in,
                              const SliceResolveOptions& options);
 
 // Fills `noise` (R8G8_UNORM, storage) with two layers of tiling value noise.
-rg::ImageRef addTilingNoise(rg::RenderGraph& graph, const Shared& shared, rg::ImageRef noise);
+struct TilingNoiseInputs {
+    Shared shared;
+    rg::ImageRef noise;
+};
+rg::ImageRef addTilingNoise(rg::RenderGraph& graph, const TilingNoiseInputs& in);
 
 }  // namespace ls

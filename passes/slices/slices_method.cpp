@@ -1,5 +1,6 @@
 #include "slices_method.h"
 
+#include "shared/chain_inputs.h"
 #include "shared/refusals.h"
 #include "slice_nodes.h"
 
@@ -36,20 +37,21 @@ ChainOutputs SlicesMethod::addChain(rg::RenderGraph& g, const ChainInputs& in, c
     const Options& o = *c.options.get<Options>();
     const SlicePlacementRef placement =
         in.data ? static_cast<const Data*>(in.data)->placement : nullptr;
-    SlicePlanesInputs planes{in.constants, in.depth, {}, {}, {}};
-    if (c.shadowed && o.shadowSampling) planes.shadowMap = in.shadowMap;
-    if (c.shadowed) planes.lightColor = in.lightColor;
+    const FrameContext frame = frameContext(in);
+    SlicePlanesInputs planes{frame, {}, {}, placement};
+    if (c.shadowed && o.shadowSampling) planes.light.shadowMap = in.shadowMap;
+    if (c.shadowed) planes.light.lightColor = in.lightColor;
+    planes.light.shadowMapSize = c.shadowMapSize;
     if (o.noise) planes.noise = in.noise;
     SlicePlanesOptions planeOptions;
     planeOptions.target = o.target;
     planeOptions.dither = o.dither;
     planeOptions.reversedZ = o.reversedZ;
-    const rg::ImageRef sum = addSlicePlanes(g, in.shared, placement, planes, planeOptions);
+    const rg::ImageRef sum = addSlicePlanes(g, planes, planeOptions);
     const SliceResolveOptions resolve{o.target, o.blur, c.light == LightKind::Directional};
     ChainOutputs out;
-    out.lin = sliceResolveNeeded(resolve)
-                  ? addSliceResolve(g, in.shared, placement, {in.constants, in.depth, sum}, resolve)
-                  : sum;
+    out.lin =
+        sliceResolveNeeded(resolve) ? addSliceResolve(g, {frame, sum, placement}, resolve) : sum;
     return out;
 }
 

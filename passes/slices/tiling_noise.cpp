@@ -24,7 +24,7 @@ bool TilingNoise::ensure(const Shared& shared) {
     desc.finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     desc.finalStages = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
     desc.finalAccess = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
-    addTilingNoise(g, shared, g.importImage("tiling noise", desc));
+    addTilingNoise(g, {shared, g.importImage("tiling noise", desc)});
     const rg::VulkanDeviceCaps caps(device_);
     rg::GraphExecutor exec(device_, g, rg::compile(g, caps));
     exec.run();

@@ -148,9 +148,9 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const std::vector<ls::Shared>& 
         return fg;
     }
     // The camera and the medium are every light's: light 0's constants serve the composite.
-    ls::NodeInputs frame;
+    ls::FrameContext frame;
     frame.shared = sharedOf(0);
-    frame.constants = ls::addUploadConstants(g, frame.shared);
+    frame.constants = ls::addUploadConstants(g, {frame.shared});
     frame.depth = fg.depth;
     frame.screen = c.screen;
     frame.depthStencil = c.depthStencil;
@@ -165,7 +165,7 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const std::vector<ls::Shared>& 
         g.setNameSuffix(which(i));
         ls::ChainInputs in;
         in.shared = sharedOf(i);
-        in.constants = i == 0 ? frame.constants : ls::addUploadConstants(g, in.shared);
+        in.constants = i == 0 ? frame.constants : ls::addUploadConstants(g, {in.shared});
         in.depth = fg.depth;
         in.shadowMap = fg.lights[i].shadowMap;
         in.lightColor = fg.lights[i].lightColor;
@@ -184,7 +184,7 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const std::vector<ls::Shared>& 
             // Imported and cleared once, before the first chain that marches.
             fg.stepCounts = g.importBuffer("ray-march step counts",
                                            stepCountImport(VK_NULL_HANDLE, c.stepCountSlices));
-            counts = ls::addClearStepCounts(g, fg.stepCounts);
+            counts = ls::addClearStepCounts(g, {fg.stepCounts});
         }
         in.stepCounts = counts;
         // The first chain's composite applies the extinction; the others add their Lin.
@@ -193,18 +193,18 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const std::vector<ls::Shared>& 
         if (o.stepCounts.valid()) counts = o.stepCounts;
         ls::CompositeOutputs written = o.target;
         if (!o.composited) {
-            ls::NodeInputs composite = frame;
+            ls::FrameContext composite = frame;
             composite.shared = in.shared;
             composite.constants = in.constants;
-            written = chains == 0 ? ls::addComposite(g, composite, color, o.lin, linOut)
-                                  : ls::addInscatter(g, composite, color, o.lin, linOut);
+            written = chains == 0 ? ls::addComposite(g, {composite, color, o.lin, linOut})
+                                  : ls::addInscatter(g, {composite, color, o.lin, linOut});
         }
         color = written.color;
         linOut = written.inscatterOut;
         ++chains;
     }
     g.setNameSuffix({});
-    if (chains == 0) ls::addComposite(g, frame, color, {}, linOut);  // extinction only
+    if (chains == 0) ls::addComposite(g, {frame, color, {}, linOut});  // extinction only
     if (counts.valid()) g.markOutput(counts);
     fg.summary = frameSummary(c, chains);
     return fg;
