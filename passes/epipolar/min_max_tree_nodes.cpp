@@ -6,6 +6,16 @@
 #include "shared/shader_variant.h"
 
 namespace ls {
+namespace {
+
+// min_max_next_level.comp's push block (its fields written once, in min_max_push_fields.h).
+struct TreeLevelPush {
+#define LS_INT int32_t
+#include "shaders/epipolar/min_max_push_fields.h"
+#undef LS_INT
+};
+
+}  // namespace
 
 rg::ShaderCode minMaxFirstLevelShader(bool cubeShadow) {
     return pickShader(ls_spirv::min_max_first_level_comp_variants,
@@ -50,11 +60,10 @@ rg::ImageRef addMinMaxTrees(rg::RenderGraph& g, const MinMaxTreesInputs& in,
             if (!shared->inView()) return;
             const auto& p = shared->pipelines.compute("min/max trees next level",
                                                       rg::spirv(ls_spirv::min_max_next_level_comp),
-                                                      table.layout(), 8, {});
+                                                      table.layout(), sizeof(TreeLevelPush), {});
             p.bind(ctx.cmd());
             table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
-            const int32_t push[2] = {static_cast<int32_t>(level), static_cast<int32_t>(n)};
-            p.push(ctx.cmd(), push);
+            p.push(ctx.cmd(), TreeLevelPush{static_cast<int32_t>(level), static_cast<int32_t>(n)});
             vkCmdDispatch(ctx.cmd(), groupCount(n >> level, 64), s.slices, 1);
         });
     }

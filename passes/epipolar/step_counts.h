@@ -8,20 +8,21 @@
 #include <cstdint>
 
 #include "rendergraph/render_graph.h"
+#include "shaders/epipolar/step_counts_layout.h"
 
 namespace ls {
 
-// The counters of a row, in ray_march.frag's order (kCount*).
+// The counters of a row (shaders/epipolar/step_counts_layout.h, which ray_march.frag adds into).
 enum class StepCount : uint32_t {
-    Samples,          // ray-marching samples marched (each once, whatever the cube faces)
-    Rays,             // rays that cross the shadow map's frustum (once per cube face)
-    LineSteps,        // level-0 steps along the slice's line: shadow-map look-ups
-    TreeNodes,        // min/max tree nodes tested
-    DegenerateRays,   // rays off their slice's line, marched on their own
-    DegenerateSteps,  // ... and their look-ups
+    Samples = LS_COUNT_SAMPLES,
+    Rays = LS_COUNT_RAYS,
+    LineSteps = LS_COUNT_LINE_STEPS,
+    TreeNodes = LS_COUNT_TREE_NODES,
+    DegenerateRays = LS_COUNT_DEGENERATE_RAYS,
+    DegenerateSteps = LS_COUNT_DEGENERATE_STEPS,
 };
-inline constexpr uint32_t kStepCounters = 6;
-inline constexpr uint32_t kStepCountStride = 8;  // uint32 per row (ray_march.frag's kCountStride)
+inline constexpr uint32_t kStepCounters = LS_COUNTERS;
+inline constexpr uint32_t kStepCountStride = LS_COUNT_STRIDE;  // uint32 per row
 
 inline uint64_t stepCountBytes(uint32_t slices) {
     return uint64_t{slices} * kStepCountStride * sizeof(uint32_t);

@@ -6,6 +6,16 @@
 #include "unwarp_frag_variants.h"
 
 namespace ls {
+namespace {
+
+// unwarp.frag's push block (its fields written once, in unwarp_push_fields.h).
+struct UnwarpPush {
+#define LS_INT int32_t
+#include "shaders/epipolar/unwarp_push_fields.h"
+#undef LS_INT
+};
+
+}  // namespace
 
 rg::ShaderCode unwarpShader(bool table, VkFormat color, bool withOutput) {
     return pickCompositeShader(ls_spirv::unwarp_frag_variants, {{"LS_NEEDS_TABLE", table}}, color,
@@ -54,8 +64,7 @@ UnwarpOutputs addUnwarp(rg::RenderGraph& g, const UnwarpInputs& in, const Unwarp
         p.bind(ctx.cmd());
         if (markForFixup) vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 1);
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
-        const int32_t push[2] = {markForFixup ? 1 : 0, addOnly ? 1 : 0};
-        p.push(ctx.cmd(), push);
+        p.push(ctx.cmd(), UnwarpPush{markForFixup ? 1 : 0, addOnly ? 1 : 0});
         vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
     });
     return out;

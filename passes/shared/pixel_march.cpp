@@ -7,6 +7,24 @@
 #include "shared_shaders.h"
 
 namespace ls {
+namespace {
+
+// pixel_march.frag's push block, plain and compositing (its fields written once, in
+// pixel_march_push_fields.h).
+#define LS_UINT uint32_t
+struct PixelMarchPush {
+#define LS_PIXEL_MARCH_COMPOSITES 0
+#include "shaders/shared/pixel_march_push_fields.h"
+#undef LS_PIXEL_MARCH_COMPOSITES
+};
+struct FixupPush {
+#define LS_PIXEL_MARCH_COMPOSITES 1
+#include "shaders/shared/pixel_march_push_fields.h"
+#undef LS_PIXEL_MARCH_COMPOSITES
+};
+#undef LS_UINT
+
+}  // namespace
 
 // A point light's cube map comes without light color (refused with it).
 rg::ShaderCode pixelMarchShader(const ScatterSpec& spec) {
@@ -47,7 +65,7 @@ void drawPixelMarch(rg::PassContext& ctx, const Shared& shared, const rg::Bindin
                                                         draw.composite->inscatterOut.valid())
                                           : pixelMarchShader(spec),
                            ctx, table.layout());
-    desc.pushConstantBytes = draw.composite ? 8 : 4;
+    desc.pushConstantBytes = draw.composite ? sizeof(FixupPush) : sizeof(PixelMarchPush);
     desc.specialization = spec.constants();
     if (draw.whereStencilIsZero) {
         desc.stencilTest = true;
@@ -60,10 +78,9 @@ void drawPixelMarch(rg::PassContext& ctx, const Shared& shared, const rg::Bindin
         vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 0);
     table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
     if (draw.composite) {
-        const uint32_t push[2] = {draw.maxSteps, draw.addOnly ? 1u : 0u};
-        p.push(ctx.cmd(), push);
+        p.push(ctx.cmd(), FixupPush{draw.maxSteps, draw.addOnly ? 1u : 0u});
     } else {
-        p.push(ctx.cmd(), draw.maxSteps);
+        p.push(ctx.cmd(), PixelMarchPush{draw.maxSteps});
     }
     vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
 }

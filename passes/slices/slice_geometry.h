@@ -12,21 +12,22 @@
 
 namespace ls {
 
-// Mirrors shaders/slices/slice_push.glsl (128 bytes, the push-constant size every device has).
+// The push blocks of shaders/slices/slice_push.glsl and slice_resolve.frag, their fields written
+// once (shaders/slices/*_push_fields.h). Only mat4 and vec4 members: laid out as the blocks are.
+#define LS_MAT4 glm::mat4
+#define LS_VEC4 glm::vec4
+#define LS_INIT(x) {x}
 struct SlicePush {
-    glm::mat4 viewToWorld{1.0f};
-    glm::vec4 boxMin{0.0f};  // xy, z: first plane's front depth, w: spacing
-    glm::vec4 boxMax{0.0f};  // xy, z: plane count, w: 4 / range of the 8-bit target
-    glm::vec4 noise{0.0f};   // scroll of the two layers, tiles
-    glm::vec4 params{0.0f};  // ambient, noise amplitude, 1 / noise scale, farthest ray reach
+#include "shaders/slices/slice_push_fields.h"
 };
-static_assert(sizeof(SlicePush) == 128);
-
-// Mirrors the push block of shaders/slices/slice_resolve.frag.
 struct SliceResolvePush {
-    glm::vec4 tint{0.0f};  // rgb: Lin per unit of the 8-bit channels' sum
-    glm::vec4 slab{0.0f};  // x, y: the view depths the planes cover
+#include "shaders/slices/slice_resolve_push_fields.h"
 };
+#undef LS_MAT4
+#undef LS_VEC4
+#undef LS_INIT
+static_assert(sizeof(SlicePush) == 128);  // the push-constant size every device has
+static_assert(sizeof(SliceResolvePush) == 32);
 
 struct SlicePlacement {
     SlicePush push;

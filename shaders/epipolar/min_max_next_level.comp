@@ -6,7 +6,11 @@
 #include "min_max_tree.glsl"
 layout(local_size_x = 64) in;
 layout(binding = LS_BINDING_TREE_LEVEL, rg16f) uniform image2D tree;
-layout(push_constant) uniform Push { int level; int n; } pc;
+#define LS_INT int
+layout(push_constant) uniform Push {
+#include "min_max_push_fields.h"
+} pc;
+#undef LS_INT
 
 void main() {
     int node = int(gl_GlobalInvocationID.x);

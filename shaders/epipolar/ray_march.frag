@@ -32,13 +32,14 @@ layout(binding = LS_BINDING_LIGHT_COLOR) uniform sampler2D lightColorMap;
 #if defined(LS_COUNT_STEPS) && LS_COUNT_STEPS
 // One row of kCountStride counters per slice: a row's sums stay far below 2^32 at any profile,
 // where one counter for the whole frame would wrap at 1920x1080. The plugin adds the rows up.
-const int kCountSamples = 0;          // ray-marching samples (once each, whatever the cube face)
-const int kCountRays = 1;             // rays that cross the shadow map (once per cube face)
-const int kCountLineSteps = 2;        // level-0 steps along the slice's line (look-ups)
-const int kCountTreeNodes = 3;        // min/max tree nodes tested
-const int kCountDegenerateRays = 4;   // rays marched on their own (marchFrustumSegment)
-const int kCountDegenerateSteps = 5;  // ... and their look-ups
-const int kCountStride = 8;
+#include "step_counts_layout.h"
+const int kCountSamples = LS_COUNT_SAMPLES;
+const int kCountRays = LS_COUNT_RAYS;
+const int kCountLineSteps = LS_COUNT_LINE_STEPS;
+const int kCountTreeNodes = LS_COUNT_TREE_NODES;
+const int kCountDegenerateRays = LS_COUNT_DEGENERATE_RAYS;
+const int kCountDegenerateSteps = LS_COUNT_DEGENERATE_STEPS;
+const int kCountStride = LS_COUNT_STRIDE;
 // Stores to a buffer make the stencil test late unless asked otherwise: every sample's invocation
 // would run (and count), not only the ray-marching samples'. The plain variant stores nothing, so
 // the stencil test may run first there anyway.

@@ -21,10 +21,11 @@ layout(binding = LS_BINDING_POINT_TABLE) uniform sampler2D pointTable;
 #include "integrate.glsl"
 #include "light_volume.glsl"
 #include "composite_into.glsl"
+#define LS_INT int
 layout(push_constant) uniform Push {
-    int fixup;    // 1: the fix-up serves the pixels no sample can
-    int addOnly;  // 1: a frame's later light (compositeInto)
+#include "unwarp_push_fields.h"
 } pc;
+#undef LS_INT
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);

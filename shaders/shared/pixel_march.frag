@@ -23,14 +23,16 @@ layout(binding = LS_BINDING_LIGHT_COLOR) uniform sampler2D lightColorMap;
 // The stencil test before the shader: a fragment that fails it must not store (late tests would
 // run the shader, stores and all, for every pixel).
 layout(early_fragment_tests) in;
-layout(push_constant) uniform Push {
-    uint maxSteps;  // 0: one step per texel
-    uint addOnly;   // a frame's later light
-} pc;
+#define LS_PIXEL_MARCH_COMPOSITES 1
 #else
-layout(push_constant) uniform Push { uint maxSteps; } pc;  // 0: one step per texel
+#define LS_PIXEL_MARCH_COMPOSITES 0
 layout(location = 0) out vec4 outInscatter;
 #endif
+#define LS_UINT uint
+layout(push_constant) uniform Push {
+#include "pixel_march_push_fields.h"
+} pc;
+#undef LS_UINT
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);

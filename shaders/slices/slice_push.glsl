@@ -3,14 +3,14 @@
 #ifndef LS_SLICE_PUSH_GLSL
 #define LS_SLICE_PUSH_GLSL
 
+#define LS_MAT4 mat4
+#define LS_VEC4 vec4
+#define LS_INIT(x)
 layout(push_constant) uniform SlicePush {
-    mat4 viewToWorld;
-    vec4 boxMin;  // xy: the planes' view-space x, y minimum; z: view depth of the first plane's
-                  // front; w: the spacing between planes along the view axis (m)
-    vec4 boxMax;  // xy: maximum; z: the number of planes; w: 4 / the 8-bit target's range
-    vec4 noise;   // xy: layer 1's scroll, zw: layer 2's (tiles)
-    vec4 params;  // x: ambient (1/m^2), y: noise amplitude, z: 1 / noise scale, w: the farthest a
-                  // ray reaches (the sky distance)
+#include "slice_push_fields.h"
 } slice;
+#undef LS_MAT4
+#undef LS_VEC4
+#undef LS_INIT
 
 #endif

@@ -13,10 +13,13 @@ layout(constant_id = LS_SPEC_RESOLVE_CHANNELS) const bool kChannels = false;
 layout(constant_id = LS_SPEC_RESOLVE_BLUR_RADIUS) const int kBlurRadius = 0;
 layout(constant_id = LS_SPEC_RESOLVE_CLOSED_FORM_OUTSIDE_SLAB) const bool kClosedFormOutsideSlab = false;
 
+#define LS_VEC4 vec4
+#define LS_INIT(x)
 layout(push_constant) uniform ResolvePush {
-    vec4 tint;  // rgb: Lin per unit of the channels' sum (the light's and medium's color x range)
-    vec4 slab;  // x, y: the view depths the planes cover
+#include "slice_resolve_push_fields.h"
 } resolve;
+#undef LS_VEC4
+#undef LS_INIT
 
 layout(location = 0) out vec4 outInscatter;
 
