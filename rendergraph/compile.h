@@ -20,7 +20,7 @@ namespace detail {
 void validate(const RenderGraph& graph, const DeviceCaps& caps);
 
 struct Schedule {
-    std::vector<uint32_t> order;   // live passes, declaration indices, execution order
+    std::vector<uint32_t> order;  // live passes, declaration indices, execution order
     std::vector<uint32_t> culled;
 };
 Schedule schedule(const RenderGraph& graph);

@@ -14,7 +14,9 @@ namespace {
 
 using VersionKey = std::pair<uint32_t, uint32_t>;  // resource, version
 
-std::string quote(const std::string& s) { return "'" + s + "'"; }
+std::string quote(const std::string& s) {
+    return "'" + s + "'";
+}
 
 struct VersionInfo {
     uint32_t producer = kInvalidIndex;
@@ -65,7 +67,8 @@ Schedule schedule(const RenderGraph& graph) {
                 in.readers.push_back(p);
             if (isWrite(u.kind) && consumedHere.insert({u.resource, u.inVersion}).second)
                 in.writers.push_back(p);
-            if (u.outVersion != kInvalidIndex && producedHere.insert({u.resource, u.outVersion}).second)
+            if (u.outVersion != kInvalidIndex &&
+                producedHere.insert({u.resource, u.outVersion}).second)
                 versions[{u.resource, u.outVersion}].producer = p;
         }
     }
@@ -155,7 +158,8 @@ Schedule schedule(const RenderGraph& graph) {
         }
     }
 
-    // Kahn's algorithm; among ready passes the earliest declared goes first, so the order is stable.
+    // Kahn's algorithm; among ready passes the earliest declared goes first, so the order is
+    // stable.
     Schedule s;
     std::priority_queue<uint32_t, std::vector<uint32_t>, std::greater<>> ready;
     for (uint32_t p = 0; p < n; ++p)

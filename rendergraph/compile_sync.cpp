@@ -84,21 +84,34 @@ VkImageLayout layoutFor(const std::vector<const ResourceUse*>& uses, VkFormat fo
         switch (u->kind) {
             case UseKind::StorageRead:
             case UseKind::StorageWrite:
-            case UseKind::StorageReadWrite: return VK_IMAGE_LAYOUT_GENERAL;
-            case UseKind::ColorAttachment: return VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-            case UseKind::TransferSrc: return VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-            case UseKind::TransferDst: return VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-            case UseKind::DepthWrite: depthWrite = true; break;
-            case UseKind::StencilWrite: stencilWrite = true; break;
-            case UseKind::DepthTest: depthRead = true; break;
-            case UseKind::StencilTest: stencilRead = true; break;
+            case UseKind::StorageReadWrite:
+                return VK_IMAGE_LAYOUT_GENERAL;
+            case UseKind::ColorAttachment:
+                return VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+            case UseKind::TransferSrc:
+                return VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+            case UseKind::TransferDst:
+                return VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+            case UseKind::DepthWrite:
+                depthWrite = true;
+                break;
+            case UseKind::StencilWrite:
+                stencilWrite = true;
+                break;
+            case UseKind::DepthTest:
+                depthRead = true;
+                break;
+            case UseKind::StencilTest:
+                stencilRead = true;
+                break;
             case UseKind::Sampled: {
                 const VkImageAspectFlags a = u->aspect ? u->aspect : fullAspect(format);
                 depthRead |= (a & VK_IMAGE_ASPECT_DEPTH_BIT) != 0;
                 stencilRead |= (a & VK_IMAGE_ASPECT_STENCIL_BIT) != 0;
                 break;
             }
-            default: break;
+            default:
+                break;
         }
     }
     const bool attachment = std::any_of(uses.begin(), uses.end(),
@@ -116,9 +129,12 @@ VkImageLayout layoutFor(const std::vector<const ResourceUse*>& uses, VkFormat fo
 
 VkAttachmentLoadOp loadOp(LoadOp op) {
     switch (op) {
-        case LoadOp::Load: return VK_ATTACHMENT_LOAD_OP_LOAD;
-        case LoadOp::Clear: return VK_ATTACHMENT_LOAD_OP_CLEAR;
-        case LoadOp::DontCare: return VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+        case LoadOp::Load:
+            return VK_ATTACHMENT_LOAD_OP_LOAD;
+        case LoadOp::Clear:
+            return VK_ATTACHMENT_LOAD_OP_CLEAR;
+        case LoadOp::DontCare:
+            return VK_ATTACHMENT_LOAD_OP_DONT_CARE;
     }
     return VK_ATTACHMENT_LOAD_OP_LOAD;
 }
@@ -143,7 +159,7 @@ struct SyncState {
     VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
     VkPipelineStageFlags2 writeStages = 0;  // the last write (or layout transition)
     VkAccessFlags2 writeAccess = 0;
-    VkPipelineStageFlags2 readStages = 0;   // reads since then
+    VkPipelineStageFlags2 readStages = 0;                                   // reads since then
     std::vector<std::pair<VkPipelineStageFlags2, VkAccessFlags2>> visible;  // made visible to
     bool touched = false;
 };
@@ -199,10 +215,15 @@ void deriveSync(const RenderGraph& graph, CompiledGraph& out) {
                             plan.colors.push_back(attachment(*u, ps.layout));
                             break;
                         case UseKind::DepthTest:
-                        case UseKind::DepthWrite: plan.depth = attachment(*u, ps.layout); break;
+                        case UseKind::DepthWrite:
+                            plan.depth = attachment(*u, ps.layout);
+                            break;
                         case UseKind::StencilTest:
-                        case UseKind::StencilWrite: plan.stencil = attachment(*u, ps.layout); break;
-                        default: break;
+                        case UseKind::StencilWrite:
+                            plan.stencil = attachment(*u, ps.layout);
+                            break;
+                        default:
+                            break;
                     }
                     if (isAttachment(u->kind)) plan.renderExtent = out.resources[id].extent;
                 }
@@ -256,16 +277,18 @@ void deriveSync(const RenderGraph& graph, CompiledGraph& out) {
         }
     }
 
-    // First uses wait for whatever last touched the same memory: the resource itself in the previous
-    // frame, and every resource it shares memory with (earlier in this frame, or later in the
-    // previous one). A barrier's first scope covers all earlier submissions on the queue, so this
-    // also orders frame N+1 after frame N.
+    // First uses wait for whatever last touched the same memory: the resource itself in the
+    // previous frame, and every resource it shares memory with (earlier in this frame, or later in
+    // the previous one). A barrier's first scope covers all earlier submissions on the queue, so
+    // this also orders frame N+1 after frame N.
     std::vector<std::vector<BlockOccupants::Occupant>> inBlock(out.blocks.size());
     for (uint32_t id = 0; id < decls.size(); ++id) {
         const ResourcePlan& p = out.resources[id];
-        if (!p.used || decls[id].imported || p.block == kInvalidIndex || p.memory.size == 0) continue;
+        if (!p.used || decls[id].imported || p.block == kInvalidIndex || p.memory.size == 0)
+            continue;
         inBlock.at(p.block).push_back({p.offset, p.offset + p.memory.size,
-                                       state[id].writeStages | state[id].readStages, state[id].writeAccess});
+                                       state[id].writeStages | state[id].readStages,
+                                       state[id].writeAccess});
     }
     std::vector<BlockOccupants> occupants;
     occupants.reserve(inBlock.size());

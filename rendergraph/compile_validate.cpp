@@ -11,7 +11,9 @@
 namespace rg::detail {
 namespace {
 
-std::string quote(const std::string& s) { return "'" + s + "'"; }
+std::string quote(const std::string& s) {
+    return "'" + s + "'";
+}
 
 std::string extentText(VkExtent2D e) {
     return std::to_string(e.width) + "x" + std::to_string(e.height);
@@ -19,18 +21,25 @@ std::string extentText(VkExtent2D e) {
 
 VkFormatFeatureFlags2 requiredFeature(UseKind kind) {
     switch (kind) {
-        case UseKind::Sampled: return VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_BIT;
+        case UseKind::Sampled:
+            return VK_FORMAT_FEATURE_2_SAMPLED_IMAGE_BIT;
         case UseKind::StorageRead:
         case UseKind::StorageWrite:
-        case UseKind::StorageReadWrite: return VK_FORMAT_FEATURE_2_STORAGE_IMAGE_BIT;
-        case UseKind::ColorAttachment: return VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BIT;
+        case UseKind::StorageReadWrite:
+            return VK_FORMAT_FEATURE_2_STORAGE_IMAGE_BIT;
+        case UseKind::ColorAttachment:
+            return VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BIT;
         case UseKind::DepthTest:
         case UseKind::DepthWrite:
         case UseKind::StencilTest:
-        case UseKind::StencilWrite: return VK_FORMAT_FEATURE_2_DEPTH_STENCIL_ATTACHMENT_BIT;
-        case UseKind::TransferSrc: return VK_FORMAT_FEATURE_2_TRANSFER_SRC_BIT;
-        case UseKind::TransferDst: return VK_FORMAT_FEATURE_2_TRANSFER_DST_BIT;
-        default: return 0;
+        case UseKind::StencilWrite:
+            return VK_FORMAT_FEATURE_2_DEPTH_STENCIL_ATTACHMENT_BIT;
+        case UseKind::TransferSrc:
+            return VK_FORMAT_FEATURE_2_TRANSFER_SRC_BIT;
+        case UseKind::TransferDst:
+            return VK_FORMAT_FEATURE_2_TRANSFER_DST_BIT;
+        default:
+            return 0;
     }
 }
 
@@ -41,17 +50,22 @@ bool allowedIn(PassType type, UseKind kind) {
     return type != PassType::Transfer;
 }
 
-// Depth and stencil are separate aspects: one pass may test or write each, and may sample the aspect
-// it does not write. Anything else on one image in one pass is a feedback loop or a layout clash.
+// Depth and stencil are separate aspects: one pass may test or write each, and may sample the
+// aspect it does not write. Anything else on one image in one pass is a feedback loop or a layout
+// clash.
 bool compatible(const ResourceUse& a, const ResourceUse& b, VkFormat format) {
     auto aspectOf = [&](const ResourceUse& u) -> VkImageAspectFlags {
         switch (u.kind) {
             case UseKind::DepthTest:
-            case UseKind::DepthWrite: return VK_IMAGE_ASPECT_DEPTH_BIT;
+            case UseKind::DepthWrite:
+                return VK_IMAGE_ASPECT_DEPTH_BIT;
             case UseKind::StencilTest:
-            case UseKind::StencilWrite: return VK_IMAGE_ASPECT_STENCIL_BIT;
-            case UseKind::Sampled: return u.aspect ? u.aspect : fullAspect(format);
-            default: return 0;
+            case UseKind::StencilWrite:
+                return VK_IMAGE_ASPECT_STENCIL_BIT;
+            case UseKind::Sampled:
+                return u.aspect ? u.aspect : fullAspect(format);
+            default:
+                return 0;
         }
     };
     if (a.kind == b.kind && !isWrite(a.kind) && a.aspect == b.aspect) return true;  // repeated read
@@ -68,12 +82,14 @@ bool compatible(const ResourceUse& a, const ResourceUse& b, VkFormat format) {
 }
 
 void checkDescriptions(const RenderGraph& graph) {
-    std::unordered_set<std::string_view> names;  // a set, not every earlier name: linear in the graph
+    std::unordered_set<std::string_view>
+        names;  // a set, not every earlier name: linear in the graph
     for (uint32_t i = 0; i < graph.resources().size(); ++i) {
         const auto& r = graph.resource(i);
         const std::string name = quote(r.name);
         if (r.name.empty())
-            throw GraphError(Rule::BadDescription, "resource #" + std::to_string(i) + " has no name");
+            throw GraphError(Rule::BadDescription,
+                             "resource #" + std::to_string(i) + " has no name");
         if (!names.insert(r.name).second)
             throw GraphError(Rule::BadDescription,
                              "resource " + name + " is declared twice; names must be unique");
@@ -120,10 +136,9 @@ void checkUse(const RenderGraph& graph, const DeviceCaps& caps, const PassDecl& 
                                                     std::to_string(u.inVersion) + " of " + res +
                                                     ", which no pass produces");
     if (u.buffer != r.buffer)
-        throw GraphError(Rule::UnknownResource, where + " uses " + res + " as " +
-                                                    (u.buffer ? "a buffer" : "an image") +
-                                                    " but it is " +
-                                                    (r.buffer ? "a buffer" : "an image"));
+        throw GraphError(Rule::UnknownResource,
+                         where + " uses " + res + " as " + (u.buffer ? "a buffer" : "an image") +
+                             " but it is " + (r.buffer ? "a buffer" : "an image"));
     if (!allowedIn(pass.type, u.kind))
         throw GraphError(Rule::WrongPassType,
                          where + " declares a " + useKindName(u.kind) + " use of " + res +
@@ -131,14 +146,15 @@ void checkUse(const RenderGraph& graph, const DeviceCaps& caps, const PassDecl& 
                              "passes, transfers only in transfer passes)");
     if (r.buffer) {
         if (isImageOnly(u.kind))
-            throw GraphError(Rule::UnknownResource, where + " uses buffer " + res + " as " +
-                                                        useKindName(u.kind));
+            throw GraphError(Rule::UnknownResource,
+                             where + " uses buffer " + res + " as " + useKindName(u.kind));
         if (r.imported) {
             const VkBufferUsageFlags need = bufferUsageFor(u.kind);
             if ((r.importedBuffer.usage & need) != need)
                 throw GraphError(Rule::UsageNotDeclared,
                                  where + " uses imported buffer " + res + " as " +
-                                     useKindName(u.kind) + " but it was not created with that usage");
+                                     useKindName(u.kind) +
+                                     " but it was not created with that usage");
         }
         return;
     }
@@ -170,20 +186,22 @@ void checkUse(const RenderGraph& graph, const DeviceCaps& caps, const PassDecl& 
             if (isDepthStencil(f))
                 throw GraphError(Rule::ColorOnDepthFormat,
                                  where + " uses " + res + " (" + fmt + ") as " +
-                                     useKindName(u.kind) + ", which a depth-stencil format cannot be");
+                                     useKindName(u.kind) +
+                                     ", which a depth-stencil format cannot be");
             break;
         case UseKind::Sampled:
             if (u.aspect != 0 && (u.aspect & ~fullAspect(f)) != 0)
-                throw GraphError(Rule::StencilWithoutStencilFormat,
-                                 where + " samples an aspect of " + res + " that " + fmt +
-                                     " does not have");
+                throw GraphError(
+                    Rule::StencilWithoutStencilFormat,
+                    where + " samples an aspect of " + res + " that " + fmt + " does not have");
             if (isDepthStencil(f) && hasDepth(f) && hasStencil(f) && u.aspect != 0 &&
                 u.aspect != VK_IMAGE_ASPECT_DEPTH_BIT && u.aspect != VK_IMAGE_ASPECT_STENCIL_BIT)
                 throw GraphError(Rule::ConflictingUses,
                                  where + " samples " + res +
                                      " with both aspects at once; sample depth or stencil");
             break;
-        default: break;
+        default:
+            break;
     }
     const VkFormatFeatureFlags2 need = requiredFeature(u.kind);
     if ((caps.optimalFeatures(f) & need) != need)
@@ -211,16 +229,16 @@ void checkPass(const RenderGraph& graph, const DeviceCaps& caps, const PassDecl&
         if (auto it = firstUse.find(u.resource); it != firstUse.end()) {
             const ResourceUse& prev = *it->second;
             if (prev.inVersion != u.inVersion)
-                throw GraphError(Rule::ConflictingUses,
-                                 where + " uses versions " + std::to_string(prev.inVersion) +
-                                     " and " + std::to_string(u.inVersion) + " of " +
-                                     quote(r.name) + " at once");
+                throw GraphError(Rule::ConflictingUses, where + " uses versions " +
+                                                            std::to_string(prev.inVersion) +
+                                                            " and " + std::to_string(u.inVersion) +
+                                                            " of " + quote(r.name) + " at once");
             if (r.buffer ? (isWrite(prev.kind) || isWrite(u.kind))
                          : !compatible(prev, u, r.image.format))
-                throw GraphError(Rule::ConflictingUses,
-                                 where + " uses " + quote(r.name) + " both as " +
-                                     useKindName(prev.kind) + " and as " + useKindName(u.kind) +
-                                     "; no single layout serves both");
+                throw GraphError(Rule::ConflictingUses, where + " uses " + quote(r.name) +
+                                                            " both as " + useKindName(prev.kind) +
+                                                            " and as " + useKindName(u.kind) +
+                                                            "; no single layout serves both");
         } else {
             firstUse[u.resource] = &u;
         }
@@ -231,26 +249,29 @@ void checkPass(const RenderGraph& graph, const DeviceCaps& caps, const PassDecl&
                 attachmentExtent = {e, u.resource};
             } else if (attachmentExtent->first.width != e.width ||
                        attachmentExtent->first.height != e.height) {
-                throw GraphError(Rule::ExtentMismatch,
-                                 where + " renders to " +
-                                     quote(graph.resource(attachmentExtent->second).name) + " (" +
-                                     extentText(attachmentExtent->first) + ") and " +
-                                     quote(r.name) + " (" + extentText(e) +
-                                     "); attachments of one pass must share an extent");
+                throw GraphError(
+                    Rule::ExtentMismatch,
+                    where + " renders to " + quote(graph.resource(attachmentExtent->second).name) +
+                        " (" + extentText(attachmentExtent->first) + ") and " + quote(r.name) +
+                        " (" + extentText(e) + "); attachments of one pass must share an extent");
             }
         }
     }
     const bool area = pass.renderArea.width > 0 && pass.renderArea.height > 0;
     if (pass.type == PassType::Graphics && !hasAttachment && !area)
         throw GraphError(Rule::WrongPassType,
-                         where + " is a graphics pass without attachments; make it a compute pass, "
-                                 "give it a render target or declare its render area");
-    if (pass.type != PassType::Graphics && (pass.renderArea.width > 0 || pass.renderArea.height > 0))
-        throw GraphError(Rule::WrongPassType, where + " declares a render area but is not a graphics pass");
+                         where +
+                             " is a graphics pass without attachments; make it a compute pass, "
+                             "give it a render target or declare its render area");
+    if (pass.type != PassType::Graphics &&
+        (pass.renderArea.width > 0 || pass.renderArea.height > 0))
+        throw GraphError(Rule::WrongPassType,
+                         where + " declares a render area but is not a graphics pass");
     if (hasAttachment && (pass.renderArea.width > 0 || pass.renderArea.height > 0))
         throw GraphError(Rule::ExtentMismatch,
-                         where + " declares a render area and has attachments; it renders over the "
-                                 "attachments' extent, so declare one or the other");
+                         where +
+                             " declares a render area and has attachments; it renders over the "
+                             "attachments' extent, so declare one or the other");
 }
 
 }  // namespace

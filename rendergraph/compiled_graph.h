@@ -45,7 +45,7 @@ struct PassResourceState {
 };
 
 struct PassPlan {
-    uint32_t pass = kInvalidIndex;  // index into RenderGraph::passes()
+    uint32_t pass = kInvalidIndex;      // index into RenderGraph::passes()
     std::vector<BarrierPlan> barriers;  // recorded as one vkCmdPipelineBarrier2 before the pass
     std::vector<PassResourceState> states;
     std::vector<AttachmentPlan> colors;
@@ -65,7 +65,7 @@ struct ResourcePlan {
     uint32_t memoryType = 0;
     uint32_t firstPass = kInvalidIndex;  // positions in CompiledGraph::passes
     uint32_t lastPass = kInvalidIndex;
-    uint32_t block = kInvalidIndex;      // transient only
+    uint32_t block = kInvalidIndex;  // transient only
     VkDeviceSize offset = 0;
     VkImageLayout lastLayout = VK_IMAGE_LAYOUT_UNDEFINED;
 };
@@ -76,16 +76,16 @@ struct MemoryBlockPlan {
 };
 
 struct CompiledGraph {
-    std::vector<PassPlan> passes;   // execution order
-    std::vector<uint32_t> culled;   // declaration indices of passes nobody needs
+    std::vector<PassPlan> passes;         // execution order
+    std::vector<uint32_t> culled;         // declaration indices of passes nobody needs
     std::vector<ResourcePlan> resources;  // indexed like RenderGraph::resources()
     std::vector<MemoryBlockPlan> blocks;
     std::vector<BarrierPlan> finalBarriers;  // imports handed back in their final states
-    VkDeviceSize unaliasedBytes = 0;  // every used transient in memory of its own
-    VkDeviceSize aliasedBytes = 0;    // the blocks actually allocated
+    VkDeviceSize unaliasedBytes = 0;         // every used transient in memory of its own
+    VkDeviceSize aliasedBytes = 0;           // the blocks actually allocated
     VkExtent2D screen{0, 0};
-    bool exactSizes = false;          // memory sizes from a device rather than an estimate
-    bool poisonTransients = false;    // see CompileOptions
+    bool exactSizes = false;        // memory sizes from a device rather than an estimate
+    bool poisonTransients = false;  // see CompileOptions
 };
 
 struct CompileOptions {

@@ -22,21 +22,31 @@ std::string lower(std::string s) {
 
 const char* typeName(VkPhysicalDeviceType t) {
     switch (t) {
-        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete GPU";
-        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated GPU";
-        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual GPU";
-        case VK_PHYSICAL_DEVICE_TYPE_CPU: return "CPU";
-        default: return "other";
+        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+            return "discrete GPU";
+        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+            return "integrated GPU";
+        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+            return "virtual GPU";
+        case VK_PHYSICAL_DEVICE_TYPE_CPU:
+            return "CPU";
+        default:
+            return "other";
     }
 }
 
 int typeRank(VkPhysicalDeviceType t) {
     switch (t) {
-        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 0;
-        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 1;
-        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
-        case VK_PHYSICAL_DEVICE_TYPE_CPU: return 3;
-        default: return 4;
+        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+            return 0;
+        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+            return 1;
+        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+            return 2;
+        case VK_PHYSICAL_DEVICE_TYPE_CPU:
+            return 3;
+        default:
+            return 4;
     }
 }
 
@@ -45,8 +55,9 @@ bool hasExtension(VkPhysicalDevice pd, const char* name) {
     vkEnumerateDeviceExtensionProperties(pd, nullptr, &n, nullptr);
     std::vector<VkExtensionProperties> exts(n);
     vkEnumerateDeviceExtensionProperties(pd, nullptr, &n, exts.data());
-    return std::any_of(exts.begin(), exts.end(),
-                       [&](const VkExtensionProperties& e) { return !std::strcmp(e.extensionName, name); });
+    return std::any_of(exts.begin(), exts.end(), [&](const VkExtensionProperties& e) {
+        return !std::strcmp(e.extensionName, name);
+    });
 }
 
 bool hasInstanceExtension(const char* name) {
@@ -54,8 +65,9 @@ bool hasInstanceExtension(const char* name) {
     vkEnumerateInstanceExtensionProperties(nullptr, &n, nullptr);
     std::vector<VkExtensionProperties> exts(n);
     vkEnumerateInstanceExtensionProperties(nullptr, &n, exts.data());
-    return std::any_of(exts.begin(), exts.end(),
-                       [&](const VkExtensionProperties& e) { return !std::strcmp(e.extensionName, name); });
+    return std::any_of(exts.begin(), exts.end(), [&](const VkExtensionProperties& e) {
+        return !std::strcmp(e.extensionName, name);
+    });
 }
 
 bool hasLayer(const char* name) {
@@ -96,8 +108,10 @@ std::string unsuitable(VkPhysicalDevice pd, bool swapchain) {
     if (!f13.maintenance4) return "no maintenance4";
     if (!f12.separateDepthStencilLayouts) return "no separateDepthStencilLayouts";
     if (!f12.hostQueryReset) return "no hostQueryReset";
-    if (!hasExtension(pd, VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME)) return "no VK_KHR_push_descriptor";
-    if (swapchain && !hasExtension(pd, VK_KHR_SWAPCHAIN_EXTENSION_NAME)) return "no VK_KHR_swapchain";
+    if (!hasExtension(pd, VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME))
+        return "no VK_KHR_push_descriptor";
+    if (swapchain && !hasExtension(pd, VK_KHR_SWAPCHAIN_EXTENSION_NAME))
+        return "no VK_KHR_swapchain";
     if (graphicsComputeFamily(pd) < 0) return "no graphics+compute queue with timestamps";
     return {};
 }
@@ -106,7 +120,9 @@ std::atomic<size_t> gMessagesInProcess{0};
 
 }  // namespace
 
-size_t validationMessagesInProcess() { return gMessagesInProcess.load(); }
+size_t validationMessagesInProcess() {
+    return gMessagesInProcess.load();
+}
 
 VKAPI_ATTR VkBool32 VKAPI_CALL Device::onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                  VkDebugUtilsMessageTypeFlagsEXT type,
@@ -117,7 +133,8 @@ VKAPI_ATTR VkBool32 VKAPI_CALL Device::onMessage(VkDebugUtilsMessageSeverityFlag
     if (!(type & (VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
                   VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT)))
         return VK_FALSE;
-    std::string text = (severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT) ? "error: " : "warning: ";
+    std::string text =
+        (severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT) ? "error: " : "warning: ";
     if (data->pMessageIdName) text += std::string(data->pMessageIdName) + ": ";
     text += data->pMessage ? data->pMessage : "";
     {
@@ -142,7 +159,8 @@ Device::Device(const DeviceOptions& options) : echo_(options.echoMessages) {
 
 Device::Device(const ExternalDevice& external) : echo_(false) {
     if (!external.instance || !external.physical || !external.device || !external.queue)
-        throw VulkanError("an external device needs its instance, physical device, device and queue");
+        throw VulkanError(
+            "an external device needs its instance, physical device, device and queue");
     owns_ = false;
     instance_ = external.instance;
     physical_ = external.physical;
@@ -160,7 +178,9 @@ Device::Device(const ExternalDevice& external) : echo_(false) {
     }
 }
 
-Device::~Device() { destroy(); }
+Device::~Device() {
+    destroy();
+}
 
 void Device::destroy() {
     if (!owns_) {
@@ -281,9 +301,10 @@ void Device::pickPhysicalDevice(const DeviceOptions& options) {
         if (!wanted.empty())
             throw VulkanError("no suitable Vulkan device matches '" + wanted +
                               "' (from --device or LS_DEVICE); devices:" + listing);
-        throw VulkanError("no Vulkan 1.3 device with synchronization2, dynamic rendering and push "
-                          "descriptors; devices:" +
-                          (listing.empty() ? std::string(" none") : listing));
+        throw VulkanError(
+            "no Vulkan 1.3 device with synchronization2, dynamic rendering and push "
+            "descriptors; devices:" +
+            (listing.empty() ? std::string(" none") : listing));
     }
     physical_ = best;
     queueFamily_ = static_cast<uint32_t>(graphicsComputeFamily(physical_));
@@ -298,7 +319,8 @@ void Device::loadProperties() {
     vkGetPhysicalDeviceProperties(physical_, &properties_);
     vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
     VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
-    VkPhysicalDeviceMaintenance3Properties maintenance3{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
+    VkPhysicalDeviceMaintenance3Properties maintenance3{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
     driver.pNext = &maintenance3;
     VkPhysicalDeviceProperties2 p2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
     p2.pNext = &driver;
@@ -364,7 +386,8 @@ void Device::createDevice(const DeviceOptions& options) {
     f11.pNext = &f12;
     VkPhysicalDeviceFeatures2& features = enabled_.core;
     features.pNext = &f11;
-    features.features.shaderStorageImageExtendedFormats = supported.shaderStorageImageExtendedFormats;
+    features.features.shaderStorageImageExtendedFormats =
+        supported.shaderStorageImageExtendedFormats;
     features.features.shaderClipDistance = supported.shaderClipDistance;
     features.features.fragmentStoresAndAtomics = supported.fragmentStoresAndAtomics;
     features.features.shaderImageGatherExtended = supported.shaderImageGatherExtended;

@@ -12,15 +12,15 @@
 namespace rg {
 
 struct DeviceOptions {
-    bool validation = false;      // VK_LAYER_KHRONOS_validation; refused loudly if missing
-    bool syncValidation = true;   // with validation: synchronization validation too
+    bool validation = false;     // VK_LAYER_KHRONOS_validation; refused loudly if missing
+    bool syncValidation = true;  // with validation: synchronization validation too
     // Case-insensitive substring of the device name. Empty: the LS_DEVICE environment variable,
     // then the first discrete GPU, integrated GPU, virtual GPU, CPU (lavapipe), in that order.
     std::string deviceName;
-    bool announce = true;         // print which device was picked to stderr
-    bool echoMessages = true;     // print validation messages to stderr as they arrive
+    bool announce = true;      // print which device was picked to stderr
+    bool echoMessages = true;  // print validation messages to stderr as they arrive
     std::vector<std::string> instanceExtensions;  // e.g. the window system's surface extensions
-    bool swapchain = false;       // enable VK_KHR_swapchain on the device
+    bool swapchain = false;                       // enable VK_KHR_swapchain on the device
 };
 
 // An engine's own Vulkan objects, wrapped without taking ownership (plugin integration).
@@ -38,7 +38,7 @@ struct ExternalDevice {
 size_t validationMessagesInProcess();
 
 class Device {
-public:
+  public:
     explicit Device(const DeviceOptions& options = {});
     // Wraps an engine's device, which must have the features and extensions this runtime needs
     // (Vulkan 1.3 synchronization2, dynamicRendering, maintenance4; VK_KHR_push_descriptor).
@@ -63,7 +63,9 @@ public:
 
     uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags props) const;
     const VkPhysicalDeviceMemoryProperties& memoryProperties() const { return memory_; }
-    VkDeviceSize maxAllocationSize() const { return maxAllocation_; }  // Vulkan 1.1's limit; 0 unknown
+    VkDeviceSize maxAllocationSize() const {
+        return maxAllocation_;
+    }  // Vulkan 1.1's limit; 0 unknown
 
     // The feature chain the device was created with (core -> 1.1 -> 1.2 -> 1.3); all off for an
     // external device, whose features only its creator knows.
@@ -92,10 +94,10 @@ public:
     std::vector<std::string> takeMessages();
     size_t messageCount() const;
 
-private:
-    static VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(
-        VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT type,
-        const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
+  private:
+    static VKAPI_ATTR VkBool32 VKAPI_CALL
+    onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT type,
+              const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
     void destroy();
     void loadProperties();
     void loadFunctions();

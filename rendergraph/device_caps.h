@@ -1,8 +1,8 @@
 #pragma once
 // What the compiler needs to know about a device: format features and memory requirements. A
 // Vulkan-backed implementation answers for a real device; OfflineDeviceCaps answers without one
-// (graph-validation tests, memory budgets on a machine with no GPU), modelled on a typical Vulkan 1.3
-// desktop device and labelled as an estimate wherever it is reported.
+// (graph-validation tests, memory budgets on a machine with no GPU), modelled on a typical
+// Vulkan 1.3 desktop device and labelled as an estimate wherever it is reported.
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
@@ -18,7 +18,7 @@ struct MemoryRequirements {
 };
 
 class DeviceCaps {
-public:
+  public:
     virtual ~DeviceCaps() = default;
     virtual std::string name() const = 0;
     // True when the sizes come from the device itself rather than an estimate.
@@ -34,7 +34,7 @@ public:
 // A device without a GPU behind it. Formats follow what lavapipe and current desktop GPUs offer;
 // D24_UNORM_S8_UINT can be switched off to model devices that lack it.
 class OfflineDeviceCaps : public DeviceCaps {
-public:
+  public:
     explicit OfflineDeviceCaps(bool hasD24S8 = true) : hasD24S8_(hasD24S8) {}
     std::string name() const override { return "offline estimate (no device)"; }
     bool exact() const override { return false; }
@@ -47,7 +47,7 @@ public:
     // Lets tests remove features to provoke the format rule.
     void removeFeatures(VkFormat format, VkFormatFeatureFlags2 features);
 
-private:
+  private:
     bool hasD24S8_;
     VkFormat removedFormat_ = VK_FORMAT_UNDEFINED;
     VkFormatFeatureFlags2 removed_ = 0;

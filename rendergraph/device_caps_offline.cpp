@@ -15,7 +15,9 @@ constexpr VkFormatFeatureFlags2 kColor = VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BI
 constexpr VkFormatFeatureFlags2 kBlend = VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BLEND_BIT;
 constexpr VkFormatFeatureFlags2 kDepth = VK_FORMAT_FEATURE_2_DEPTH_STENCIL_ATTACHMENT_BIT;
 
-VkDeviceSize alignUp(VkDeviceSize v, VkDeviceSize a) { return (v + a - 1) / a * a; }
+VkDeviceSize alignUp(VkDeviceSize v, VkDeviceSize a) {
+    return (v + a - 1) / a * a;
+}
 
 }  // namespace
 
@@ -35,18 +37,29 @@ VkFormatFeatureFlags2 OfflineDeviceCaps::optimalFeatures(VkFormat format) const 
             break;
         case VK_FORMAT_B8G8R8A8_UNORM:
         case VK_FORMAT_R8G8B8A8_SRGB:
-        case VK_FORMAT_B8G8R8A8_SRGB: f = kSampled | kFilter | kColor | kBlend; break;
-        case VK_FORMAT_R16G16_UNORM: f = kSampled | kFilter | kColor | kBlend; break;
+        case VK_FORMAT_B8G8R8A8_SRGB:
+            f = kSampled | kFilter | kColor | kBlend;
+            break;
+        case VK_FORMAT_R16G16_UNORM:
+            f = kSampled | kFilter | kColor | kBlend;
+            break;
         case VK_FORMAT_R16G16_UINT:
         case VK_FORMAT_R32_UINT:
         case VK_FORMAT_R32G32_UINT:
-        case VK_FORMAT_R16_UINT: f = kSampled | kStorage | kColor; break;
+        case VK_FORMAT_R16_UINT:
+            f = kSampled | kStorage | kColor;
+            break;
         case VK_FORMAT_D16_UNORM:
         case VK_FORMAT_S8_UINT:
         case VK_FORMAT_D32_SFLOAT:
-        case VK_FORMAT_D32_SFLOAT_S8_UINT: f = kSampled | kDepth; break;
-        case VK_FORMAT_D24_UNORM_S8_UINT: f = hasD24S8_ ? (kSampled | kDepth) : 0; break;
-        default: break;
+        case VK_FORMAT_D32_SFLOAT_S8_UINT:
+            f = kSampled | kDepth;
+            break;
+        case VK_FORMAT_D24_UNORM_S8_UINT:
+            f = hasD24S8_ ? (kSampled | kDepth) : 0;
+            break;
+        default:
+            break;
     }
     if (format == removedFormat_) f &= ~removed_;
     return f;

@@ -7,7 +7,7 @@
 namespace rg {
 
 class VulkanDeviceCaps : public DeviceCaps {
-public:
+  public:
     explicit VulkanDeviceCaps(const Device& device) : device_(device) {}
     std::string name() const override { return "device '" + device_.name() + "'"; }
     bool exact() const override { return true; }
@@ -21,7 +21,7 @@ public:
         return device_.findMemoryType(typeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     }
 
-private:
+  private:
     const Device& device_;
 };
 

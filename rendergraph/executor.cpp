@@ -50,7 +50,8 @@ GraphExecutor::GraphExecutor(const Device& device, RenderGraph& graph, CompiledG
             const PassPlan& plan = compiled_.passes[pos];
             for (const auto& c : plan.colors)
                 formats_[pos].colors.push_back(graph_.resource(c.resource).image.format);
-            if (plan.depth) formats_[pos].depth = graph_.resource(plan.depth->resource).image.format;
+            if (plan.depth)
+                formats_[pos].depth = graph_.resource(plan.depth->resource).image.format;
             if (plan.stencil)
                 formats_[pos].stencil = graph_.resource(plan.stencil->resource).image.format;
         }
@@ -94,7 +95,9 @@ GraphExecutor::GraphExecutor(const Device& device, RenderGraph& graph, CompiledG
     }
 }
 
-GraphExecutor::~GraphExecutor() { destroy(); }
+GraphExecutor::~GraphExecutor() {
+    destroy();
+}
 
 void GraphExecutor::destroy() {
     const VkDevice dev = device_.device();
@@ -114,7 +117,8 @@ void GraphExecutor::destroy() {
     for (auto& [img, views] : importedViews_) destroyViews(views);
     importedViews_.clear();
     for (uint32_t id = 0; id < buffers_.size(); ++id)
-        if (buffers_[id] && !graph_.resource(id).imported) vkDestroyBuffer(dev, buffers_[id], nullptr);
+        if (buffers_[id] && !graph_.resource(id).imported)
+            vkDestroyBuffer(dev, buffers_[id], nullptr);
     buffers_.clear();
     for (size_t b = 0; b < blocks_.size(); ++b) {
         detail::uncountDeviceMemory(std::max<VkDeviceSize>(compiled_.blocks[b].size, 1));
@@ -134,7 +138,8 @@ void GraphExecutor::destroy() {
 void GraphExecutor::createMemory() {
     for (uint32_t b = 0; b < compiled_.blocks.size(); ++b) {
         const VkDeviceSize bytes = std::max<VkDeviceSize>(compiled_.blocks[b].size, 1);
-        blocks_.push_back(allocateDeviceMemory(device_, bytes, compiled_.blocks[b].memoryType, blockContents(b)));
+        blocks_.push_back(
+            allocateDeviceMemory(device_, bytes, compiled_.blocks[b].memoryType, blockContents(b)));
         detail::countDeviceMemory(bytes);
         device_.setName(blocks_.back(), VK_OBJECT_TYPE_DEVICE_MEMORY,
                         "render graph transient block " + std::to_string(b));
@@ -162,7 +167,8 @@ void GraphExecutor::createMemory() {
 std::string GraphExecutor::blockContents(uint32_t block) const {
     std::vector<uint32_t> ids;
     for (uint32_t id = 0; id < graph_.resources().size(); ++id)
-        if (!graph_.resource(id).imported && compiled_.resources[id].used && compiled_.resources[id].block == block)
+        if (!graph_.resource(id).imported && compiled_.resources[id].used &&
+            compiled_.resources[id].block == block)
             ids.push_back(id);
     std::sort(ids.begin(), ids.end(), [&](uint32_t a, uint32_t b) {
         return compiled_.resources[a].memory.size > compiled_.resources[b].memory.size;
@@ -171,13 +177,15 @@ std::string GraphExecutor::blockContents(uint32_t block) const {
     for (size_t i = 0; i < ids.size() && i < 3; ++i) {
         const ResourceDecl& r = graph_.resource(ids[i]);
         const ResourcePlan& p = compiled_.resources[ids[i]];
-        largest += std::string(i ? ", " : "") + "'" + r.name + "' " +
-                   (r.buffer ? "buffer" : std::to_string(p.extent.width) + "x" + std::to_string(p.extent.height) +
-                                              " " + formatName(r.image.format)) +
-                   " " + bytesText(p.memory.size);
+        largest +=
+            std::string(i ? ", " : "") + "'" + r.name + "' " +
+            (r.buffer ? "buffer"
+                      : std::to_string(p.extent.width) + "x" + std::to_string(p.extent.height) +
+                            " " + formatName(r.image.format)) +
+            " " + bytesText(p.memory.size);
     }
-    return "the render graph's transient memory block " + std::to_string(block) + " (" + std::to_string(ids.size()) +
-           " resources; the largest " + largest + ")";
+    return "the render graph's transient memory block " + std::to_string(block) + " (" +
+           std::to_string(ids.size()) + " resources; the largest " + largest + ")";
 }
 
 void GraphExecutor::createResource(uint32_t id) {
@@ -208,14 +216,16 @@ void GraphExecutor::createResource(uint32_t id) {
         throw VulkanError("the driver's memory requirements differ from the compiled plan");
     // The message, and the scan of the block it names, only for a bind that failed: this runs for
     // every resource of every graph built.
-    const VkResult bound = r.buffer ? vkBindBufferMemory(dev, buffers_[id], blocks_[plan.block], plan.offset)
-                                    : vkBindImageMemory(dev, images_[id].image, blocks_[plan.block], plan.offset);
+    const VkResult bound =
+        r.buffer ? vkBindBufferMemory(dev, buffers_[id], blocks_[plan.block], plan.offset)
+                 : vkBindImageMemory(dev, images_[id].image, blocks_[plan.block], plan.offset);
     if (bound != VK_SUCCESS)
         checkBind(device_, bound, r.buffer ? "vkBindBufferMemory" : "vkBindImageMemory",
                   compiled_.blocks[plan.block].size, plan.memoryType,
                   "render graph resource '" + r.name + "' in " + blockContents(plan.block));
     // An image only copied to and from has no view (Vulkan forbids one).
-    if (!r.buffer && (plan.imageUsage & kViewUsages)) images_[id] = makeViews(id, images_[id].image);
+    if (!r.buffer && (plan.imageUsage & kViewUsages))
+        images_[id] = makeViews(id, images_[id].image);
 }
 
 GraphExecutor::ImageObjects GraphExecutor::makeViews(uint32_t resource, VkImage image) {
@@ -319,9 +329,11 @@ std::vector<BarrierPlan> GraphExecutor::poisonFirstUses(VkCommandBuffer cmd,
     for (BarrierPlan& b : patched) {
         if (!b.firstUse) continue;
         BarrierPlan fill = b;
-        fill.dstStages = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;  // fills count as copies, clears as clears
+        fill.dstStages =
+            VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;  // fills count as copies, clears as clears
         fill.dstAccess = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-        fill.newLayout = b.buffer ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+        fill.newLayout =
+            b.buffer ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
         toFill.push_back(fill);
         b.srcStages = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
         b.srcAccess = VK_ACCESS_2_TRANSFER_WRITE_BIT;
@@ -341,8 +353,8 @@ std::vector<BarrierPlan> GraphExecutor::poisonFirstUses(VkCommandBuffer cmd,
         if (isDepthStencil(r.image.format)) {
             // Depth must stay in [0, 1]; an odd depth and stencil stand in for NaN.
             const VkClearDepthStencilValue v{0.5f, 0xA5u};
-            vkCmdClearDepthStencilImage(cmd, images_[b.resource].image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                                        &v, 1, &range);
+            vkCmdClearDepthStencilImage(cmd, images_[b.resource].image,
+                                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &v, 1, &range);
         } else {
             VkClearColorValue v;
             if (isIntegerFormat(r.image.format)) {
@@ -350,8 +362,8 @@ std::vector<BarrierPlan> GraphExecutor::poisonFirstUses(VkCommandBuffer cmd,
             } else {
                 for (float& c : v.float32) c = std::bit_cast<float>(kNaN);
             }
-            vkCmdClearColorImage(cmd, images_[b.resource].image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &v, 1,
-                                 &range);
+            vkCmdClearColorImage(cmd, images_[b.resource].image,
+                                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &v, 1, &range);
         }
     }
     return patched;
@@ -400,8 +412,12 @@ void GraphExecutor::recordPass(VkCommandBuffer cmd, uint32_t position) {
             vkCmdBeginQuery(cmd, samples_,
                             slot_ * countedPerFrame_ + static_cast<uint32_t>(counted), 0);
         vkCmdBeginRendering(cmd, &info);
-        VkViewport viewport{0.0f, 0.0f, static_cast<float>(plan.renderExtent.width),
-                            static_cast<float>(plan.renderExtent.height), 0.0f, 1.0f};
+        VkViewport viewport{0.0f,
+                            0.0f,
+                            static_cast<float>(plan.renderExtent.width),
+                            static_cast<float>(plan.renderExtent.height),
+                            0.0f,
+                            1.0f};
         VkRect2D scissor{{0, 0}, plan.renderExtent};
         vkCmdSetViewport(cmd, 0, 1, &viewport);
         vkCmdSetScissor(cmd, 0, 1, &scissor);
@@ -548,7 +564,9 @@ FrameTimings GraphExecutor::readTimings(uint64_t frame) {
     return t;
 }
 
-VkImage GraphExecutor::image(uint32_t resource) const { return images_.at(resource).image; }
+VkImage GraphExecutor::image(uint32_t resource) const {
+    return images_.at(resource).image;
+}
 
 VkImageView GraphExecutor::view(uint32_t resource, VkImageAspectFlags aspect) const {
     const ImageObjects& o = images_.at(resource);
@@ -557,17 +575,23 @@ VkImageView GraphExecutor::view(uint32_t resource, VkImageAspectFlags aspect) co
     return o.full;
 }
 
-VkBuffer GraphExecutor::buffer(uint32_t resource) const { return buffers_.at(resource); }
+VkBuffer GraphExecutor::buffer(uint32_t resource) const {
+    return buffers_.at(resource);
+}
 
 // ---------------------------------------------------------------------------------------------
 
-const Device& PassContext::device() const { return executor_.device_; }
+const Device& PassContext::device() const {
+    return executor_.device_;
+}
 
 const std::string& PassContext::passName() const {
     return executor_.graph_.passes()[executor_.compiled_.passes[position_].pass].name;
 }
 
-VkImage PassContext::image(ImageRef ref) const { return executor_.image(ref.id); }
+VkImage PassContext::image(ImageRef ref) const {
+    return executor_.image(ref.id);
+}
 
 const PassResourceState& PassContext::declared(ImageRef ref, const char* asking) const {
     for (const auto& s : executor_.compiled_.passes[position_].states)
@@ -581,7 +605,9 @@ VkImageView PassContext::view(ImageRef ref, VkImageAspectFlags aspect) const {
     return executor_.view(ref.id, aspect);
 }
 
-VkImageLayout PassContext::layout(ImageRef ref) const { return declared(ref, "the layout").layout; }
+VkImageLayout PassContext::layout(ImageRef ref) const {
+    return declared(ref, "the layout").layout;
+}
 
 VkExtent2D PassContext::extent(ImageRef ref) const {
     return executor_.compiled_.resources.at(ref.id).extent;
@@ -591,7 +617,9 @@ VkFormat PassContext::format(ImageRef ref) const {
     return executor_.graph_.resource(ref.id).image.format;
 }
 
-VkBuffer PassContext::buffer(BufferRef ref) const { return executor_.buffer(ref.id); }
+VkBuffer PassContext::buffer(BufferRef ref) const {
+    return executor_.buffer(ref.id);
+}
 
 VkDeviceSize PassContext::size(BufferRef ref) const {
     return executor_.graph_.resource(ref.id).bufferDesc.size;

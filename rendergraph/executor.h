@@ -33,7 +33,7 @@ struct FrameTimings {
 };
 
 class GraphExecutor {
-public:
+  public:
     GraphExecutor(const Device& device, RenderGraph& graph, CompiledGraph compiled);
     ~GraphExecutor();
     GraphExecutor(const GraphExecutor&) = delete;
@@ -69,7 +69,7 @@ public:
     VkImageView view(uint32_t resource, VkImageAspectFlags aspect) const;
     VkBuffer buffer(uint32_t resource) const;
 
-private:
+  private:
     friend class PassContext;
     struct ImageObjects {
         VkImage image = VK_NULL_HANDLE;
@@ -85,7 +85,8 @@ private:
     ImageObjects makeViews(uint32_t resource, VkImage image);
     void refreshImports();
     void recordBarriers(VkCommandBuffer cmd, const std::vector<BarrierPlan>& barriers);
-    std::vector<BarrierPlan> poisonFirstUses(VkCommandBuffer cmd, const std::vector<BarrierPlan>& barriers);
+    std::vector<BarrierPlan> poisonFirstUses(VkCommandBuffer cmd,
+                                             const std::vector<BarrierPlan>& barriers);
     void recordPass(VkCommandBuffer cmd, uint32_t position);
 
     const Device& device_;

@@ -10,9 +10,13 @@ std::atomic<uint64_t> gArmedAt{0};  // absolute count that fails; 0: none
 
 }  // namespace
 
-void failNthVulkanCreation(uint64_t n) { gArmedAt = n == 0 ? 0 : gCount.load() + n; }
+void failNthVulkanCreation(uint64_t n) {
+    gArmedAt = n == 0 ? 0 : gCount.load() + n;
+}
 
-uint64_t vulkanCreationCount() { return gCount.load(); }
+uint64_t vulkanCreationCount() {
+    return gCount.load();
+}
 
 namespace detail {
 

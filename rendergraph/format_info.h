@@ -10,7 +10,9 @@ namespace rg {
 
 bool hasDepth(VkFormat format);
 bool hasStencil(VkFormat format);
-inline bool isDepthStencil(VkFormat f) { return hasDepth(f) || hasStencil(f); }
+inline bool isDepthStencil(VkFormat f) {
+    return hasDepth(f) || hasStencil(f);
+}
 VkImageAspectFlags fullAspect(VkFormat format);
 // UINT and SINT color formats (cleared and read as integers).
 bool isIntegerFormat(VkFormat format);

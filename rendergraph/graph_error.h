@@ -26,12 +26,12 @@ enum class Rule {
 const char* ruleName(Rule rule);
 
 class GraphError : public std::runtime_error {
-public:
+  public:
     GraphError(Rule rule, const std::string& message)
         : std::runtime_error(message + " [rule: " + ruleName(rule) + "]"), rule_(rule) {}
     Rule rule() const { return rule_; }
 
-private:
+  private:
     Rule rule_;
 };
 

@@ -11,7 +11,7 @@
 namespace rg {
 
 class HostBuffer {
-public:
+  public:
     HostBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFlags usage,
                const std::string& name);
     ~HostBuffer();
@@ -25,7 +25,7 @@ public:
     // Import description: written by transfers in the graph, read by the host afterwards.
     ImportedBuffer asReadback() const;
 
-private:
+  private:
     VkDevice device_;
     VkBuffer buffer_ = VK_NULL_HANDLE;
     VkDeviceMemory memory_ = VK_NULL_HANDLE;

@@ -1,6 +1,6 @@
 #pragma once
-// Device memory the runtime holds right now (every VkDeviceMemory allocated through it, by the graph
-// executor, owned images and host buffers, minus what was freed), for soak tests and reports.
+// Device memory the runtime holds right now (every VkDeviceMemory allocated through it, by the
+// graph executor, owned images and host buffers, minus what was freed), for soak tests and reports.
 #include <cstdint>
 
 #include <vulkan/vulkan.h>

@@ -8,8 +8,12 @@
 namespace rg {
 namespace {
 
-VkDeviceSize alignUp(VkDeviceSize v, VkDeviceSize a) { return a <= 1 ? v : (v + a - 1) / a * a; }
-VkDeviceSize alignDown(VkDeviceSize v, VkDeviceSize a) { return a <= 1 ? v : v / a * a; }
+VkDeviceSize alignUp(VkDeviceSize v, VkDeviceSize a) {
+    return a <= 1 ? v : (v + a - 1) / a * a;
+}
+VkDeviceSize alignDown(VkDeviceSize v, VkDeviceSize a) {
+    return a <= 1 ? v : v / a * a;
+}
 
 struct Range {
     VkDeviceSize begin;
@@ -38,8 +42,9 @@ namespace {
 
 // Places the items in `order`, each at the best fit among the gaps the already placed ones leave
 // while it is alive.
-PlacementResult placeInOrder(const std::vector<PlacementItem>& items, const std::vector<uint32_t>& order,
-                             VkDeviceSize granularity, bool aliasing) {
+PlacementResult placeInOrder(const std::vector<PlacementItem>& items,
+                             const std::vector<uint32_t>& order, VkDeviceSize granularity,
+                             bool aliasing) {
     PlacementResult result;
     result.placements.resize(items.size());
     std::vector<uint32_t> blockOfType;  // memory type -> block index (one block per type)
@@ -120,16 +125,21 @@ PlacementResult placeResources(const std::vector<PlacementItem>& items, VkDevice
                                bool aliasing) {
     // Best fit depends on the order the items go in, and no one order wins on every graph (largest
     // first leaves gaps a long-lived middle-sized item cannot use): try a few, keep the smallest.
-    const auto length = [&](uint32_t i) { return VkDeviceSize{items[i].last - items[i].first + 1}; };
+    const auto length = [&](uint32_t i) {
+        return VkDeviceSize{items[i].last - items[i].first + 1};
+    };
     using Key = std::function<bool(uint32_t, uint32_t)>;
     const Key orders[] = {
         [&](uint32_t a, uint32_t b) { return items[a].size > items[b].size; },
-        [&](uint32_t a, uint32_t b) { return items[a].size * length(a) > items[b].size * length(b); },
+        [&](uint32_t a, uint32_t b) {
+            return items[a].size * length(a) > items[b].size * length(b);
+        },
         [&](uint32_t a, uint32_t b) {
             return length(a) != length(b) ? length(a) > length(b) : items[a].size > items[b].size;
         },
         [&](uint32_t a, uint32_t b) {
-            return items[a].first != items[b].first ? items[a].first < items[b].first : items[a].size > items[b].size;
+            return items[a].first != items[b].first ? items[a].first < items[b].first
+                                                    : items[a].size > items[b].size;
         },
     };
     PlacementResult best;

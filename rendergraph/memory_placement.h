@@ -3,8 +3,9 @@
 // lifetimes do not overlap.
 //
 // Invariant (tested over every placement): two resources placed in the same block whose lifetimes
-// overlap never overlap in memory; where one is linear (a buffer) and the other is not (an optimally
-// tiled image), their ranges are also at least bufferImageGranularity apart, page for page.
+// overlap never overlap in memory; where one is linear (a buffer) and the other is not (an
+// optimally tiled image), their ranges are also at least bufferImageGranularity apart, page for
+// page.
 #include <vulkan/vulkan.h>
 
 #include <cstdint>

@@ -7,8 +7,8 @@
 namespace rg {
 
 OwnedImage::OwnedImage(const rg::Device& device, VkFormat format, VkExtent2D extent,
-                   VkImageUsageFlags usage, const std::string& name, uint32_t layers,
-                   VkImageCreateFlags flags)
+                       VkImageUsageFlags usage, const std::string& name, uint32_t layers,
+                       VkImageCreateFlags flags)
     : device_(device), format_(format), extent_(extent), usage_(usage), layers_(layers) {
     VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
     info.flags = flags;

@@ -10,7 +10,7 @@
 namespace rg {
 
 class OwnedImage {
-public:
+  public:
     // One mip level, `layers` array layers (created with `flags`, e.g. CUBE_COMPATIBLE for six),
     // optimal tiling, device-local memory.
     OwnedImage(const Device& device, VkFormat format, VkExtent2D extent, VkImageUsageFlags usage,
@@ -25,7 +25,7 @@ public:
     VkImageUsageFlags usage() const { return usage_; }
     uint32_t layers() const { return layers_; }
 
-private:
+  private:
     const Device& device_;
     VkFormat format_;
     VkExtent2D extent_;

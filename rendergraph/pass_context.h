@@ -21,7 +21,7 @@ struct RenderingFormats {
 };
 
 class PassContext {
-public:
+  public:
     PassContext(GraphExecutor& executor, uint32_t position, VkCommandBuffer cmd)
         : executor_(executor), position_(position), cmd_(cmd) {}
 
@@ -41,10 +41,10 @@ public:
     VkBuffer buffer(BufferRef ref) const;
     VkDeviceSize size(BufferRef ref) const;
 
-    VkExtent2D renderExtent() const;                 // graphics passes
+    VkExtent2D renderExtent() const;                   // graphics passes
     const RenderingFormats& renderingFormats() const;  // for pipeline creation
 
-private:
+  private:
     const PassResourceState& declared(ImageRef ref, const char* asking) const;
 
     GraphExecutor& executor_;

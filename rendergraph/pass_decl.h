@@ -49,12 +49,12 @@ struct ResourceUse {
     bool buffer = false;
     uint32_t graph = 0;
     uint32_t resource = kInvalidIndex;
-    uint32_t inVersion = 0;                 // the version read or overwritten
-    uint32_t outVersion = kInvalidIndex;    // the version produced, for writes
-    VkPipelineStageFlags2 shaderStages = 0; // 0: the pass type's natural stage
+    uint32_t inVersion = 0;                  // the version read or overwritten
+    uint32_t outVersion = kInvalidIndex;     // the version produced, for writes
+    VkPipelineStageFlags2 shaderStages = 0;  // 0: the pass type's natural stage
     LoadOp load = LoadOp::Load;
     VkClearValue clear{};
-    VkImageAspectFlags aspect = 0;          // Sampled depth-stencil images: which aspect is read
+    VkImageAspectFlags aspect = 0;  // Sampled depth-stencil images: which aspect is read
 
     // Whether the pass needs the contents of `inVersion` (as opposed to only coming after it).
     bool readsContents() const;

@@ -24,7 +24,8 @@ struct SpecData {
     VkSpecializationInfo info{};
     explicit SpecData(const Specialization& s) {
         for (const auto& [id, v] : s.values) {
-            entries.push_back({id, static_cast<uint32_t>(data.size() * sizeof(uint32_t)), sizeof(uint32_t)});
+            entries.push_back(
+                {id, static_cast<uint32_t>(data.size() * sizeof(uint32_t)), sizeof(uint32_t)});
             data.push_back(v);
         }
         info.mapEntryCount = static_cast<uint32_t>(entries.size());
@@ -64,9 +65,13 @@ Specialization& Specialization::set(uint32_t id, float v) {
     return set(id, bits);
 }
 
-Pipeline::~Pipeline() { reset(); }
+Pipeline::~Pipeline() {
+    reset();
+}
 
-Pipeline::Pipeline(Pipeline&& o) noexcept { *this = std::move(o); }
+Pipeline::Pipeline(Pipeline&& o) noexcept {
+    *this = std::move(o);
+}
 
 Pipeline& Pipeline::operator=(Pipeline&& o) noexcept {
     if (this != &o) {
@@ -102,7 +107,8 @@ Pipeline Pipeline::compute(const Device& device, const std::string& name, Shader
     }
 }
 
-Pipeline Pipeline::graphics(const Device& device, const std::string& name, const GraphicsPipelineDesc& d) {
+Pipeline Pipeline::graphics(const Device& device, const std::string& name,
+                            const GraphicsPipelineDesc& d) {
     try {
         return makeGraphics(device, name, d);
     } catch (const VulkanError& e) {
@@ -127,8 +133,10 @@ Pipeline Pipeline::makeCompute(const Device& device, const std::string& name, Sh
     info.stage.pName = "main";
     info.stage.pSpecializationInfo = spec.get();
     info.layout = p.layout_;
-    const VkResult r = detail::creationFails() ? VK_ERROR_OUT_OF_DEVICE_MEMORY : vkCreateComputePipelines(device.device(), VK_NULL_HANDLE, 1, &info, nullptr,
-                                                &p.pipeline_);
+    const VkResult r = detail::creationFails()
+                           ? VK_ERROR_OUT_OF_DEVICE_MEMORY
+                           : vkCreateComputePipelines(device.device(), VK_NULL_HANDLE, 1, &info,
+                                                      nullptr, &p.pipeline_);
     vkDestroyShaderModule(device.device(), module, nullptr);
     check(r, "vkCreateComputePipelines");
     device.setName(p.pipeline_, VK_OBJECT_TYPE_PIPELINE, name);
@@ -141,7 +149,8 @@ Pipeline Pipeline::makeGraphics(const Device& device, const std::string& name,
     p.device_ = device.device();
     p.bindPoint_ = VK_PIPELINE_BIND_POINT_GRAPHICS;
     p.pushStages_ = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-    makeLayout(device, name, d.bindings, d.pushConstantBytes, p.pushStages_, p.setLayout_, p.layout_);
+    makeLayout(device, name, d.bindings, d.pushConstantBytes, p.pushStages_, p.setLayout_,
+               p.layout_);
     VkShaderModule vs = makeModule(device.device(), d.vertex);
     VkShaderModule fs = VK_NULL_HANDLE;
     try {
@@ -172,7 +181,8 @@ Pipeline Pipeline::makeGraphics(const Device& device, const std::string& name,
     VkPipelineInputAssemblyStateCreateInfo assembly{
         VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
     assembly.topology = d.topology;
-    VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+    VkPipelineViewportStateCreateInfo viewport{
+        VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
     viewport.viewportCount = 1;
     viewport.scissorCount = 1;
     VkPipelineRasterizationStateCreateInfo raster{
@@ -211,7 +221,8 @@ Pipeline Pipeline::makeGraphics(const Device& device, const std::string& name,
             b.colorBlendOp = b.alphaBlendOp = VK_BLEND_OP_ADD;
         }
     }
-    VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+    VkPipelineColorBlendStateCreateInfo blend{
+        VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
     blend.attachmentCount = static_cast<uint32_t>(blends.size());
     blend.pAttachments = blends.data();
     std::vector<VkDynamicState> dynamic{VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
@@ -239,8 +250,10 @@ Pipeline Pipeline::makeGraphics(const Device& device, const std::string& name,
     info.pColorBlendState = &blend;
     info.pDynamicState = &dyn;
     info.layout = p.layout_;
-    const VkResult r = detail::creationFails() ? VK_ERROR_OUT_OF_DEVICE_MEMORY : vkCreateGraphicsPipelines(device.device(), VK_NULL_HANDLE, 1, &info, nullptr,
-                                                 &p.pipeline_);
+    const VkResult r = detail::creationFails()
+                           ? VK_ERROR_OUT_OF_DEVICE_MEMORY
+                           : vkCreateGraphicsPipelines(device.device(), VK_NULL_HANDLE, 1, &info,
+                                                       nullptr, &p.pipeline_);
     vkDestroyShaderModule(device.device(), vs, nullptr);
     vkDestroyShaderModule(device.device(), fs, nullptr);
     check(r, "vkCreateGraphicsPipelines");
@@ -250,13 +263,16 @@ Pipeline Pipeline::makeGraphics(const Device& device, const std::string& name,
 
 DescriptorPush& DescriptorPush::sampled(uint32_t binding, VkImageView view, VkImageLayout layout,
                                         VkSampler sampler) {
-    entries_.push_back({binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, {sampler, view, layout}, {}});
+    entries_.push_back(
+        {binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, {sampler, view, layout}, {}});
     return *this;
 }
 
 DescriptorPush& DescriptorPush::storage(uint32_t binding, VkImageView view) {
-    entries_.push_back(
-        {binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, {VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL}, {}});
+    entries_.push_back({binding,
+                        VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
+                        {VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL},
+                        {}});
     return *this;
 }
 
@@ -280,7 +296,8 @@ void DescriptorPush::push(const Device& device, VkCommandBuffer cmd, const Pipel
         w.dstBinding = e.binding;
         w.descriptorCount = 1;
         w.descriptorType = e.type;
-        if (e.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER || e.type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER)
+        if (e.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER ||
+            e.type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER)
             w.pBufferInfo = &e.buffer;
         else
             w.pImageInfo = &e.image;
@@ -293,7 +310,8 @@ void DescriptorPush::push(const Device& device, VkCommandBuffer cmd, const Pipel
 
 Samplers::Samplers(const Device& device) : device_(device.device()) {
     VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-    info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    info.addressModeU = info.addressModeV = info.addressModeW =
+        VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     info.maxLod = VK_LOD_CLAMP_NONE;
     info.magFilter = info.minFilter = VK_FILTER_NEAREST;
     info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;

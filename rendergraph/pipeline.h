@@ -68,7 +68,7 @@ struct GraphicsPipelineDesc {
 };
 
 class Pipeline {
-public:
+  public:
     Pipeline() = default;
     ~Pipeline();
     Pipeline(Pipeline&& other) noexcept;
@@ -94,7 +94,7 @@ public:
         vkCmdPushConstants(cmd, layout_, pushStages_, 0, sizeof(T), &constants);
     }
 
-private:
+  private:
     static Pipeline makeCompute(const Device& device, const std::string& name, ShaderCode code,
                                 const std::vector<Binding>& bindings, uint32_t pushConstantBytes,
                                 const Specialization& specialization);
@@ -111,7 +111,7 @@ private:
 
 // Collects descriptor writes and pushes them with vkCmdPushDescriptorSetKHR.
 class DescriptorPush {
-public:
+  public:
     DescriptorPush& sampled(uint32_t binding, VkImageView view, VkImageLayout layout,
                             VkSampler sampler);
     DescriptorPush& storage(uint32_t binding, VkImageView view);  // GENERAL layout
@@ -121,7 +121,7 @@ public:
                                   VkDeviceSize range = VK_WHOLE_SIZE);
     void push(const Device& device, VkCommandBuffer cmd, const Pipeline& pipeline);
 
-private:
+  private:
     struct Entry {
         uint32_t binding;
         VkDescriptorType type;
@@ -134,7 +134,7 @@ private:
 // The samplers the passes need: nearest and linear clamped to the edge, and linear repeating (for
 // tiling textures).
 class Samplers {
-public:
+  public:
     explicit Samplers(const Device& device);
     // None at all (null handles): for a graph that is declared and compiled, never recorded
     // (a budget without a device).
@@ -146,7 +146,7 @@ public:
     VkSampler linear() const { return linear_; }
     VkSampler linearRepeat() const { return linearRepeat_; }
 
-private:
+  private:
     VkDevice device_ = VK_NULL_HANDLE;
     VkSampler nearest_ = VK_NULL_HANDLE;
     VkSampler linear_ = VK_NULL_HANDLE;

@@ -89,9 +89,10 @@ void RenderGraph::updateImport(ImageRef image, const ImportedImage& desc) {
         old.extent.height != desc.extent.height || old.usage != desc.usage ||
         old.mipLevels != desc.mipLevels || old.arrayLayers != desc.arrayLayers ||
         old.initialLayout != desc.initialLayout || old.finalLayout != desc.finalLayout)
-        throw GraphError(Rule::ImportChanged,
-                         "imported image '" + r.name +
-                             "': format, extent, levels, usage or layouts changed; build a new graph");
+        throw GraphError(
+            Rule::ImportChanged,
+            "imported image '" + r.name +
+                "': format, extent, levels, usage or layouts changed; build a new graph");
     r.importedImage = desc;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // The declarative front of the runtime: resources and passes are declared here, then compiled
-// (compile.h) and executed (executor.h). Declaring never touches the GPU and never fails; every rule
-// is checked by the compiler so that one message can name the pass, the resource and the rule.
+// (compile.h) and executed (executor.h). Declaring never touches the GPU and never fails; every
+// rule is checked by the compiler so that one message can name the pass, the resource and the rule.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -17,11 +17,11 @@ struct ResourceDecl {
     std::string name;
     bool buffer = false;
     bool imported = false;
-    ImageDesc image;          // transient images
-    BufferDesc bufferDesc;    // transient buffers
+    ImageDesc image;        // transient images
+    BufferDesc bufferDesc;  // transient buffers
     ImportedImage importedImage;
     ImportedBuffer importedBuffer;
-    bool output = false;      // marked as a result: its producers are never culled
+    bool output = false;  // marked as a result: its producers are never culled
     uint32_t versionCount = 1;
 };
 
@@ -30,7 +30,7 @@ class RenderGraph;
 // Returned by RenderGraph::addPass; records the pass's uses. Writes return the new version, which
 // later readers must name.
 class PassBuilder {
-public:
+  public:
     PassBuilder(RenderGraph& graph, uint32_t pass) : graph_(&graph), pass_(pass) {}
 
     void sampled(ImageRef image, VkPipelineStageFlags2 stages = 0, VkImageAspectFlags aspect = 0);
@@ -64,7 +64,7 @@ public:
     PassBuilder& renderArea(VkExtent2D extent);
     uint32_t index() const { return pass_; }
 
-private:
+  private:
     ResourceUse& add(UseKind kind, bool buffer, uint32_t graph, uint32_t id, uint32_t version);
     uint32_t writeVersion(ResourceUse& use);
 
@@ -73,7 +73,7 @@ private:
 };
 
 class RenderGraph {
-public:
+  public:
     RenderGraph();
 
     ImageRef createImage(std::string name, const ImageDesc& desc);
@@ -108,7 +108,7 @@ public:
     // The extent an image resolves to at the current screen size.
     VkExtent2D imageExtent(uint32_t resource) const;
 
-private:
+  private:
     friend class PassBuilder;
     uint32_t id_;
     VkExtent2D screen_{0, 0};

@@ -10,9 +10,12 @@ namespace {
 
 const char* passTypeName(PassType t) {
     switch (t) {
-        case PassType::Graphics: return "graphics";
-        case PassType::Compute: return "compute";
-        case PassType::Transfer: return "transfer";
+        case PassType::Graphics:
+            return "graphics";
+        case PassType::Compute:
+            return "compute";
+        case PassType::Transfer:
+            return "transfer";
     }
     return "?";
 }
@@ -105,7 +108,8 @@ nlohmann::json reportJson(const RenderGraph& graph, const CompiledGraph& compile
     }
     j["resources"] = resources;
     json blocks = json::array();
-    for (const auto& b : compiled.blocks) blocks.push_back({{"memoryType", b.memoryType}, {"bytes", b.size}});
+    for (const auto& b : compiled.blocks)
+        blocks.push_back({{"memoryType", b.memoryType}, {"bytes", b.size}});
     j["memoryBlocks"] = blocks;
     j["totals"] = {{"unaliasedBytes", compiled.unaliasedBytes},
                    {"aliasedBytes", compiled.aliasedBytes}};
@@ -134,18 +138,22 @@ std::string reportText(const RenderGraph& graph, const CompiledGraph& compiled,
     for (uint32_t id = 0; id < graph.resources().size(); ++id) {
         const ResourceDecl& r = graph.resource(id);
         const ResourcePlan& p = compiled.resources[id];
-        std::string shape = r.buffer ? "buffer" : formatName(r.image.format) + " " +
-                                                      std::to_string(p.extent.width) + "x" +
-                                                      std::to_string(p.extent.height);
-        std::string where = r.imported ? "imported" : !p.used ? "not allocated"
-                                         : "block " + std::to_string(p.block) + " @ " +
-                                               std::to_string(p.offset);
+        std::string shape = r.buffer ? "buffer"
+                                     : formatName(r.image.format) + " " +
+                                           std::to_string(p.extent.width) + "x" +
+                                           std::to_string(p.extent.height);
+        std::string where =
+            r.imported ? "imported"
+            : !p.used  ? "not allocated"
+                       : "block " + std::to_string(p.block) + " @ " + std::to_string(p.offset);
         std::snprintf(line, sizeof line, "  %-32s %-30s %12s  passes %-8s %s", r.name.c_str(),
-                      shape.c_str(), (r.imported || !p.used) ? "-" : formatBytes(p.memory.size).c_str(),
+                      shape.c_str(),
+                      (r.imported || !p.used) ? "-" : formatBytes(p.memory.size).c_str(),
                       lifetimeText(p).c_str(), where.c_str());
         o << line << "\n";
     }
-    o << "Memory (" << (compiled.exactSizes ? "sizes from the device" : "estimated sizes, no device")
+    o << "Memory ("
+      << (compiled.exactSizes ? "sizes from the device" : "estimated sizes, no device")
       << "): " << formatBytes(compiled.unaliasedBytes) << " without aliasing, "
       << formatBytes(compiled.aliasedBytes) << " with aliasing in " << compiled.blocks.size()
       << " block(s)\n";

@@ -7,14 +7,14 @@
 namespace rg {
 
 class VulkanError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 
 // Out of device memory, said in the terms of what needed it (device_memory.h): which object, how
 // many bytes, what the device has.
 class OutOfDeviceMemory : public VulkanError {
-public:
+  public:
     using VulkanError::VulkanError;
 };
 

@@ -167,7 +167,8 @@ class ConfigReader {
             methods.push_back(*parsed);
         }
         if (methods.empty())
-            fail(name + " is empty: list at least one method, or leave the key out for the default list");
+            fail(name +
+                 " is empty: list at least one method, or leave the key out for the default list");
         return methods;
     }
 

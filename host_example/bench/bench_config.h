@@ -5,17 +5,17 @@
 #include <string>
 #include <vector>
 
+#include <vulkan/vulkan.h>
 #include "lightscatter.h"
 #include "motion.h"
-#include <vulkan/vulkan.h>
 
 namespace host::bench {
 
 struct BenchRun {
-    std::string scene;       // path of SCENE.json
-    std::string label;       // e.g. "epipolar balanced", "slices=512"
-    std::string family;      // "profiles", "slices", "samples", "initialStep", "shadowMapSize", "size", "trees",
-                             // "cone" (cone-march's sample counts and modes)
+    std::string scene;   // path of SCENE.json
+    std::string label;   // e.g. "epipolar balanced", "slices=512"
+    std::string family;  // "profiles", "slices", "samples", "initialStep", "shadowMapSize", "size",
+                         // "trees", "cone" (cone-march's sample counts and modes)
     lightscatter::Method method = lightscatter::Method::Epipolar;
     lightscatter::Profile profile = lightscatter::Profile::Balanced;
     lightscatter::Settings settings;  // used as Custom when custom is true
@@ -29,10 +29,11 @@ struct BenchConfig {
     std::string name;
     int frames = 10;
     int warmup = 3;
-    VkExtent2D size{480, 270};       // where errors are measured
-    bool measureError = true;        // false: timings only, no float64 reference (e.g. 1080p, many objects)
+    VkExtent2D size{480, 270};  // where errors are measured
+    bool measureError =
+        true;  // false: timings only, no float64 reference (e.g. 1080p, many objects)
     std::vector<std::string> scenes;
-    std::vector<BenchRun> runs;      // expanded
+    std::vector<BenchRun> runs;  // expanded
     // The temporal-stability mode: every run that measures error renders the motion's frames
     // (for each motion in turn) instead of `frames` still ones, and is judged against the
     // reference at every pose.

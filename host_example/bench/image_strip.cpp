@@ -16,8 +16,9 @@ std::array<uint8_t, 4> heatColor(double t) {
             static_cast<uint8_t>(std::lround(255 * std::clamp(3 * t - 2, 0.0, 1.0))), 255};
 }
 
-void writeStrip(const std::string& path, unsigned width, unsigned height, const std::vector<double>& reference,
-                const std::vector<float>& method, float exposure) {
+void writeStrip(const std::string& path, unsigned width, unsigned height,
+                const std::vector<double>& reference, const std::vector<float>& method,
+                float exposure) {
     const size_t pixels = size_t{width} * height;
     std::vector<float> ref(pixels * 4, 1.0f);
     std::vector<double> values;
@@ -26,7 +27,8 @@ void writeStrip(const std::string& path, unsigned width, unsigned height, const 
             ref[p * 4 + c] = static_cast<float>(reference[p * 3 + c]);
             values.push_back(reference[p * 3 + c]);
         }
-    std::nth_element(values.begin(), values.begin() + static_cast<long>(values.size() * 99 / 100), values.end());
+    std::nth_element(values.begin(), values.begin() + static_cast<long>(values.size() * 99 / 100),
+                     values.end());
     const double scale = std::max(values[values.size() * 99 / 100], 1e-30) * 0.1;
     const auto a = toneMap(ref, exposure), b = toneMap(method, exposure);
     std::vector<uint8_t> strip(pixels * 3 * 4);

@@ -11,8 +11,9 @@ namespace host::bench {
 // The heat map's colour for t in [0, 1]: black, red, yellow, white.
 std::array<uint8_t, 4> heatColor(double t);
 
-void writeStrip(const std::string& path, unsigned width, unsigned height, const std::vector<double>& reference,
-                const std::vector<float>& method, float exposure);
+void writeStrip(const std::string& path, unsigned width, unsigned height,
+                const std::vector<double>& reference, const std::vector<float>& method,
+                float exposure);
 
 }  // namespace host::bench
 

@@ -10,13 +10,14 @@ namespace host::bench {
 
 double percentile(std::vector<double> v, double p) {
     if (v.empty()) return 0;
-    const size_t k = std::min(v.size() - 1, static_cast<size_t>(p * static_cast<double>(v.size() - 1) + 0.5));
+    const size_t k =
+        std::min(v.size() - 1, static_cast<size_t>(p * static_cast<double>(v.size() - 1) + 0.5));
     std::nth_element(v.begin(), v.begin() + static_cast<long>(k), v.end());
     return v[k];
 }
 
-ErrorMetrics compareToReference(const std::vector<float>& method, const std::vector<double>& reference,
-                                float exposure) {
+ErrorMetrics compareToReference(const std::vector<float>& method,
+                                const std::vector<double>& reference, float exposure) {
     ErrorMetrics m;
     const size_t pixels = reference.size() / 3;
     std::vector<double> errors, values;
@@ -55,12 +56,14 @@ ErrorMetrics compareToReference(const std::vector<float>& method, const std::vec
 
     std::vector<float> refRgba(pixels * 4, 1.0f);
     for (size_t p = 0; p < pixels; ++p)
-        for (size_t c = 0; c < 3; ++c) refRgba[p * 4 + c] = static_cast<float>(reference[p * 3 + c]);
+        for (size_t c = 0; c < 3; ++c)
+            refRgba[p * 4 + c] = static_cast<float>(reference[p * 3 + c]);
     const auto a8 = toneMap(method, exposure), b8 = toneMap(refRgba, exposure);
     double mse = 0;
     for (size_t p = 0; p < pixels; ++p)
         for (size_t c = 0; c < 3; ++c) {
-            const double d = static_cast<double>(a8[p * 4 + c]) - static_cast<double>(b8[p * 4 + c]);
+            const double d =
+                static_cast<double>(a8[p * 4 + c]) - static_cast<double>(b8[p * 4 + c]);
             mse += d * d;
         }
     mse /= static_cast<double>(std::max<size_t>(pixels * 3, 1));
@@ -72,7 +75,9 @@ Spread spreadOf(std::vector<double> v) {
     Spread s;
     if (v.empty()) return s;
     std::sort(v.begin(), v.end());
-    auto at = [&](double p) { return v[static_cast<size_t>(p * static_cast<double>(v.size() - 1) + 0.5)]; };
+    auto at = [&](double p) {
+        return v[static_cast<size_t>(p * static_cast<double>(v.size() - 1) + 0.5)];
+    };
     s.median = at(0.5);
     s.p10 = at(0.1);
     s.p90 = at(0.9);

@@ -7,18 +7,18 @@
 namespace host::bench {
 
 struct ErrorMetrics {
-    double meanRelative = 0;   // sum |a - b| / sum |b| over every pixel and channel (relative L1)
-    double rmse = 0;           // root mean square of a - b, in Lin's units
-    double p99 = 0;            // 99th percentile of |a - b|, divided by the reference's 99th percentile
-    double max = 0;            // largest |a - b|, divided by the reference's 99th percentile
-    double fractionOver = 0;   // pixels with a channel off by more than 5% of the reference's p99
-    double psnr = 0;           // dB, of the tone-mapped 8-bit images (exposure, ACES, sRGB)
-    size_t nonFinite = 0;      // NaN or Inf values in the method's image
+    double meanRelative = 0;  // sum |a - b| / sum |b| over every pixel and channel (relative L1)
+    double rmse = 0;          // root mean square of a - b, in Lin's units
+    double p99 = 0;  // 99th percentile of |a - b|, divided by the reference's 99th percentile
+    double max = 0;  // largest |a - b|, divided by the reference's 99th percentile
+    double fractionOver = 0;  // pixels with a channel off by more than 5% of the reference's p99
+    double psnr = 0;          // dB, of the tone-mapped 8-bit images (exposure, ACES, sRGB)
+    size_t nonFinite = 0;     // NaN or Inf values in the method's image
 };
 
 // `method` is RGBA float (as the GPU returns it), `reference` RGB double.
-ErrorMetrics compareToReference(const std::vector<float>& method, const std::vector<double>& reference,
-                                float exposure);
+ErrorMetrics compareToReference(const std::vector<float>& method,
+                                const std::vector<double>& reference, float exposure);
 
 // The p-th quantile (0..1) of `values`, nearest rank; 0 for none.
 double percentile(std::vector<double> values, double p);

@@ -243,8 +243,9 @@ int runBench(Args& args) {
                                 std::to_string(sceneForRun.light.shadowMapSize);
         if (key != rendererKey) {
             renderer.reset();
-            renderer = std::make_unique<EngineRenderer>(device, sceneForRun, mesh, run.size,
-                                                        configPath + ": run '" + run.label + "' at size");
+            renderer =
+                std::make_unique<EngineRenderer>(device, sceneForRun, mesh, run.size,
+                                                 configPath + ": run '" + run.label + "' at size");
             rendererKey = key;
         }
         const RenderOptions options = runOptions(run);

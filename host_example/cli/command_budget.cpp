@@ -1,11 +1,12 @@
-// lightscatter budget [--method epipolar|slices|beam-tree-analytic|beam-tree-sampling] [--profile NAME|all] [--settings FILE.json]
+// lightscatter budget [--method epipolar|slices|beam-tree-analytic|beam-tree-sampling] [--profile
+// NAME|all] [--settings FILE.json]
 //   [--size WxH] [--shadow-map N] [--lights sun,spot,point] [--json]
 #include <cstdio>
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 #include <vector>
-#include <nlohmann/json.hpp>
 
 #include "command_options.h"
 #include "commands.h"
@@ -15,7 +16,9 @@
 namespace host {
 namespace {
 
-double mib(uint64_t bytes) { return static_cast<double>(bytes) / (1024.0 * 1024.0); }
+double mib(uint64_t bytes) {
+    return static_cast<double>(bytes) / (1024.0 * 1024.0);
+}
 
 // The methods whose textures depend on the profile, the ones lightscatter::budget knows.
 lightscatter::Method budgetMethod(const std::string& name) {
@@ -24,11 +27,13 @@ lightscatter::Method budgetMethod(const std::string& name) {
         m == lightscatter::Method::BeamTreeAnalytic || m == lightscatter::Method::BeamTreeSampling)
         return *m;
     if (!m)
-        throw std::runtime_error("unknown method '" + name +
-                                 "' (budget knows: epipolar, slices, beam-tree-analytic, beam-tree-sampling)");
-    throw std::runtime_error("--method " + name +
-                             ": budget knows epipolar, slices, beam-tree-analytic and beam-tree-sampling only, the "
-                             "methods whose textures depend on the profile");
+        throw std::runtime_error(
+            "unknown method '" + name +
+            "' (budget knows: epipolar, slices, beam-tree-analytic, beam-tree-sampling)");
+    throw std::runtime_error(
+        "--method " + name +
+        ": budget knows epipolar, slices, beam-tree-analytic and beam-tree-sampling only, the "
+        "methods whose textures depend on the profile");
 }
 
 // --lights: a comma-separated list of sun (or directional), spot and point.
@@ -37,7 +42,8 @@ std::vector<lightscatter::LightType> parseLights(const std::string& list) {
     size_t start = 0;
     while (true) {
         const size_t comma = list.find(',', start);
-        const std::string name = list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        const std::string name =
+            list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
         if (name == "sun" || name == "directional")
             lights.push_back(lightscatter::LightType::Directional);
         else if (name == "spot")
@@ -45,8 +51,9 @@ std::vector<lightscatter::LightType> parseLights(const std::string& list) {
         else if (name == "point")
             lights.push_back(lightscatter::LightType::Point);
         else
-            throw std::runtime_error("--lights " + list + ": unknown light '" + name +
-                                     "' (a comma-separated list of sun, directional, spot and point)");
+            throw std::runtime_error(
+                "--lights " + list + ": unknown light '" + name +
+                "' (a comma-separated list of sun, directional, spot and point)");
         if (comma == std::string::npos) return lights;
         start = comma + 1;
     }
@@ -55,8 +62,9 @@ std::vector<lightscatter::LightType> parseLights(const std::string& list) {
 std::string lightsName(const std::vector<lightscatter::LightType>& lights) {
     std::string s;
     for (auto l : lights)
-        s += std::string(s.empty() ? "" : ",") +
-             (l == lightscatter::LightType::Directional ? "sun" : l == lightscatter::LightType::Spot ? "spot" : "point");
+        s += std::string(s.empty() ? "" : ",") + (l == lightscatter::LightType::Directional ? "sun"
+                                                  : l == lightscatter::LightType::Spot      ? "spot"
+                                                                                       : "point");
     return s;
 }
 
@@ -64,9 +72,11 @@ std::string lightsName(const std::vector<lightscatter::LightType>& lights) {
 
 int runBudget(Args& args) {
     const lightscatter::Method method = budgetMethod(args.take("--method", "epipolar"));
-    const bool slices = method != lightscatter::Method::Epipolar;  // planes: slices, beam-tree-analytic
+    const bool slices =
+        method != lightscatter::Method::Epipolar;  // planes: slices, beam-tree-analytic
     const std::string settingsPath = args.take("--settings", "");
-    const std::string profileName = args.take("--profile", settingsPath.empty() ? "all" : "balanced");
+    const std::string profileName =
+        args.take("--profile", settingsPath.empty() ? "all" : "balanced");
     const VkExtent2D size = parseSize(args.take("--size", "2560x1600"), "--size");
     const std::string sm = args.take("--shadow-map", "");
     const std::vector<lightscatter::LightType> lights = parseLights(args.take("--lights", "spot"));
@@ -76,10 +86,12 @@ int runBudget(Args& args) {
     lightscatter::Settings custom;
     if (profileName == "all") {
         if (!settingsPath.empty())
-            throw std::runtime_error("--settings overlays one profile: give --profile NAME, not all");
-        profiles = {lightscatter::Profile::HighQuality, lightscatter::Profile::Balanced,
-                    lightscatter::Profile::HighPerformance, lightscatter::Profile::LowHighQuality,
-                    lightscatter::Profile::LowBalanced, lightscatter::Profile::LowHighPerformance};
+            throw std::runtime_error(
+                "--settings overlays one profile: give --profile NAME, not all");
+        profiles = {
+            lightscatter::Profile::HighQuality,     lightscatter::Profile::Balanced,
+            lightscatter::Profile::HighPerformance, lightscatter::Profile::LowHighQuality,
+            lightscatter::Profile::LowBalanced,     lightscatter::Profile::LowHighPerformance};
     } else if (!lightscatter::parseProfile(profileName)) {
         std::string known = "all";
         for (const auto& n : lightscatter::profileNames()) known += ", " + n;
@@ -93,10 +105,11 @@ int runBudget(Args& args) {
 
     nlohmann::json all = nlohmann::json::array();
     for (lightscatter::Profile p : profiles) {
-        const auto s = p == lightscatter::Profile::Custom ? custom : lightscatter::profileSettings(p);
+        const auto s =
+            p == lightscatter::Profile::Custom ? custom : lightscatter::profileSettings(p);
         const uint32_t shadow = shadowOverride ? shadowOverride : s.shadowMapSize;
-        const lightscatter::Budget b = lightscatter::budget(
-            p, size.width, size.height, shadow, lights, &s, method);
+        const lightscatter::Budget b =
+            lightscatter::budget(p, size.width, size.height, shadow, lights, &s, method);
         if (json) {
             nlohmann::json j;
             j["method"] = lightscatter::methodName(method);
@@ -116,14 +129,20 @@ int runBudget(Args& args) {
             j["depthStencilFormat"] = b.depthStencilFormat;
             nlohmann::json entries = nlohmann::json::array();
             for (const auto& e : b.entries)
-                entries.push_back({{"name", e.name}, {"format", e.format}, {"width", e.width},
-                                   {"height", e.height}, {"bytes", e.bytes}, {"transient", e.transient}});
+                entries.push_back({{"name", e.name},
+                                   {"format", e.format},
+                                   {"width", e.width},
+                                   {"height", e.height},
+                                   {"bytes", e.bytes},
+                                   {"transient", e.transient}});
             j["resources"] = entries;
             j["totalBytes"] = b.totalBytes;
             j["peakBytes"] = b.peakBytes;
-            if (b.seed && method == lightscatter::Method::Epipolar)  // seed 000's figures are epipolar's
+            if (b.seed &&
+                method == lightscatter::Method::Epipolar)  // seed 000's figures are epipolar's
                 j["seed"] = {{"screen", {b.seed->screenWidth, b.seed->screenHeight}},
-                             {"megabytes", b.seed->megabytes}, {"milliseconds", b.seed->milliseconds}};
+                             {"megabytes", b.seed->megabytes},
+                             {"milliseconds", b.seed->milliseconds}};
             all.push_back(j);
             continue;
         }
@@ -131,7 +150,8 @@ int runBudget(Args& args) {
             method == lightscatter::Method::BeamTreeAnalytic
                 ? std::to_string(s.slicePlanes) + " sampling planes where uncertain, float32 target"
             : method == lightscatter::Method::BeamTreeSampling
-                ? std::to_string(s.slicePlanes) + " sampling planes where lit or uncertain, float32 target"
+                ? std::to_string(s.slicePlanes) +
+                      " sampling planes where lit or uncertain, float32 target"
             : slices
                 ? std::to_string(s.slicePlanes) + " planes into " + sliceTargetName(s.sliceTarget) +
                       (s.sliceBlur ? ", blur " + std::to_string(s.sliceBlur) : "")
@@ -139,13 +159,15 @@ int runBudget(Args& args) {
                       " samples";
         std::printf("%s, %s: %s, %u^2 shadow map, %ux%u screen, light%s %s (sizes %s)\n",
                     lightscatter::methodName(method), lightscatter::profileName(p), what.c_str(),
-                    shadow, size.width, size.height, lights.size() > 1 ? "s" : "", lightsName(lights).c_str(),
+                    shadow, size.width, size.height, lights.size() > 1 ? "s" : "",
+                    lightsName(lights).c_str(),
                     b.estimated ? "estimated without a device" : "from the device");
         for (const auto& e : b.entries)
-            std::printf("  %-40s %-22s %5u x %-5u %10.2f MiB%s\n", e.name.c_str(), e.format.c_str(), e.width,
-                        e.height, mib(e.bytes), e.transient ? "" : "  (kept across frames)");
-        std::printf("  total without aliasing %.1f MiB, peak with aliasing %.1f MiB", mib(b.totalBytes),
-                    mib(b.peakBytes));
+            std::printf("  %-40s %-22s %5u x %-5u %10.2f MiB%s\n", e.name.c_str(), e.format.c_str(),
+                        e.width, e.height, mib(e.bytes),
+                        e.transient ? "" : "  (kept across frames)");
+        std::printf("  total without aliasing %.1f MiB, peak with aliasing %.1f MiB",
+                    mib(b.totalBytes), mib(b.peakBytes));
         if (b.seed && method == lightscatter::Method::Epipolar)
             std::printf("; seed 000: %.1f MB at %ux%u", b.seed->megabytes, b.seed->screenWidth,
                         b.seed->screenHeight);

@@ -17,7 +17,8 @@ namespace host {
 namespace {
 
 bool endsWith(const std::string& s, const std::string& suffix) {
-    return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+    return s.size() >= suffix.size() &&
+           s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 // Epipolar's ray-march steps (DebugOptions::countSteps), as counted and per ray-marching sample.
@@ -51,11 +52,13 @@ nlohmann::json timingsJson(const rg::Device& device, const SceneOptions& o, VkEx
     j["frames"] = frames;
     j["depthStencilFormat"] = f.plugin.depthStencilFormat;
     nlohmann::json passes = nlohmann::json::array();
-    for (const auto& p : f.plugin.passes) passes.push_back({{"name", p.name}, {"milliseconds", p.milliseconds}});
+    for (const auto& p : f.plugin.passes)
+        passes.push_back({{"name", p.name}, {"milliseconds", p.milliseconds}});
     j["passes"] = passes;
     j["totalMilliseconds"] = f.plugin.totalMilliseconds;
     nlohmann::json engine = nlohmann::json::array();
-    for (const auto& p : f.engine.passes) engine.push_back({{"name", p.name}, {"milliseconds", p.milliseconds}});
+    for (const auto& p : f.engine.passes)
+        engine.push_back({{"name", p.name}, {"milliseconds", p.milliseconds}});
     j["engine"] = {{"passes", engine}, {"totalMilliseconds", f.engine.totalMilliseconds}};
     if (f.plugin.steps) j["steps"] = stepsJson(*f.plugin.steps);
     return j;
@@ -103,27 +106,40 @@ int runRender(Args& args) {
     Activity writing("writing " + out);
     if (endsWith(out, ".png")) {
         const std::vector<uint8_t> pixels = toneMap(frame.color, scene.exposure);
-        outputs.write(out, [&](const std::string& tmp) { return encodePng(tmp, size.width, size.height, pixels); },
-                      "PNG");
+        outputs.write(
+            out,
+            [&](const std::string& tmp) { return encodePng(tmp, size.width, size.height, pixels); },
+            "PNG");
     } else {
-        outputs.write(out, [&](const std::string& tmp) { return encodeExr(tmp, size.width, size.height, frame.color); },
-                      "OpenEXR");
+        outputs.write(
+            out,
+            [&](const std::string& tmp) {
+                return encodeExr(tmp, size.width, size.height, frame.color);
+            },
+            "OpenEXR");
     }
     if (!inscatter.empty())
-        outputs.write(inscatter,
-                      [&](const std::string& tmp) { return encodeExr(tmp, size.width, size.height, frame.inscatter); },
-                      "OpenEXR");
-    if (!timings.empty()) outputs.writeText(timings, timingsJson(device, o, size, frame, frames).dump(2) + "\n");
+        outputs.write(
+            inscatter,
+            [&](const std::string& tmp) {
+                return encodeExr(tmp, size.width, size.height, frame.inscatter);
+            },
+            "OpenEXR");
+    if (!timings.empty())
+        outputs.writeText(timings, timingsJson(device, o, size, frame, frames).dump(2) + "\n");
     outputs.commit();
 
-    if (!frame.plugin.notice.empty()) std::cerr << "lightscatter: notice: " << frame.plugin.notice << "\n";
-    const std::string method = o.render.method == lightscatter::Method::Auto
-                                   ? "auto -> " + frame.plugin.method + " (" + frame.plugin.reason + ")"
-                                   : std::string(lightscatter::methodName(o.render.method));
+    if (!frame.plugin.notice.empty())
+        std::cerr << "lightscatter: notice: " << frame.plugin.notice << "\n";
+    const std::string method =
+        o.render.method == lightscatter::Method::Auto
+            ? "auto -> " + frame.plugin.method + " (" + frame.plugin.reason + ")"
+            : std::string(lightscatter::methodName(o.render.method));
     std::printf("%s: %ux%u, %s, %s, %s on '%s'%s: plugin %.3f ms, engine %.3f ms\n", out.c_str(),
                 size.width, size.height, method.c_str(),
-                lightscatter::profileName(o.render.profile), frame.plugin.passNames.empty() ? "-" : "rendered",
-                device.name().c_str(), device.isCpu() ? " (CPU timings)" : "", frame.plugin.totalMilliseconds,
+                lightscatter::profileName(o.render.profile),
+                frame.plugin.passNames.empty() ? "-" : "rendered", device.name().c_str(),
+                device.isCpu() ? " (CPU timings)" : "", frame.plugin.totalMilliseconds,
                 frame.engine.totalMilliseconds);
     if (countSteps) {
         if (frame.plugin.steps) {
@@ -135,7 +151,8 @@ int runRender(Args& args) {
         }
     }
     if (device.messageCount() > 0) {
-        std::cerr << "lightscatter: the validation layer reported " << device.messageCount() << " message(s)\n";
+        std::cerr << "lightscatter: the validation layer reported " << device.messageCount()
+                  << " message(s)\n";
         return 3;
     }
     return 0;

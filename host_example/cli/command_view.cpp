@@ -393,7 +393,8 @@ int runView(Args& args) {
                 lightscatter::Method::BruteForce, lightscatter::Method::ConeMarch,
                 lightscatter::Method::Slices};
             const LightDesc& l = renderer.scene().light;
-            if (l.type == lightscatter::LightType::Point || (l.type == lightscatter::LightType::Spot && l.shadowMapSize == 0))
+            if (l.type == lightscatter::LightType::Point ||
+                (l.type == lightscatter::LightType::Spot && l.shadowMapSize == 0))
                 methods.push_back(lightscatter::Method::Analytic);
             if (l.type != lightscatter::LightType::Directional) {
                 methods.push_back(lightscatter::Method::BeamTreeAnalytic);

@@ -9,7 +9,8 @@ namespace host {
 Swapchain::Swapchain(const rg::Device& device, VkSurfaceKHR surface, VkExtent2D wanted)
     : device_(device), surface_(surface) {
     VkBool32 present = VK_FALSE;
-    vkGetPhysicalDeviceSurfaceSupportKHR(device.physical(), device.queueFamily(), surface, &present);
+    vkGetPhysicalDeviceSurfaceSupportKHR(device.physical(), device.queueFamily(), surface,
+                                         &present);
     if (!present) throw rg::VulkanError("the device's queue cannot present to this window");
     create(wanted, VK_NULL_HANDLE);
 }
@@ -42,8 +43,10 @@ void Swapchain::create(VkExtent2D wanted, VkSwapchainKHR old) {
     format_ = chosen.format;
     extent_ = caps.currentExtent.width != UINT32_MAX
                   ? caps.currentExtent
-                  : VkExtent2D{std::clamp(wanted.width, caps.minImageExtent.width, caps.maxImageExtent.width),
-                               std::clamp(wanted.height, caps.minImageExtent.height, caps.maxImageExtent.height)};
+                  : VkExtent2D{std::clamp(wanted.width, caps.minImageExtent.width,
+                                          caps.maxImageExtent.width),
+                               std::clamp(wanted.height, caps.minImageExtent.height,
+                                          caps.maxImageExtent.height)};
     usage_ = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
              (caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT);  // screenshots
     VkSwapchainCreateInfoKHR info{VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR};

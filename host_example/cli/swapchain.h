@@ -9,7 +9,7 @@
 namespace host {
 
 class Swapchain {
-public:
+  public:
     Swapchain(const rg::Device& device, VkSurfaceKHR surface, VkExtent2D wanted);
     ~Swapchain();
     Swapchain(const Swapchain&) = delete;
@@ -23,7 +23,7 @@ public:
     uint32_t imageCount() const { return static_cast<uint32_t>(images_.size()); }
     VkImageUsageFlags usage() const { return usage_; }
 
-private:
+  private:
     void create(VkExtent2D wanted, VkSwapchainKHR old);
     const rg::Device& device_;
     VkSurfaceKHR surface_;

@@ -46,8 +46,8 @@ glm::mat4 cameraView(const CameraDesc& c) {
 }
 
 glm::mat4 cameraProjection(const CameraDesc& c, float aspect) {
-    return vulkanPerspective(glm::radians(c.fovYDegrees), aspect, c.nearPlane, c.farPlane, c.reversedZ,
-                             c.infiniteFar);
+    return vulkanPerspective(glm::radians(c.fovYDegrees), aspect, c.nearPlane, c.farPlane,
+                             c.reversedZ, c.infiniteFar);
 }
 
 namespace {
@@ -101,7 +101,8 @@ bool finiteMatrix(const glm::mat4& m) {
 }
 
 // Whether a box may be seen: not all of its corners beyond one side of the view frustum.
-bool mayBeSeen(const Bounds& b, const glm::mat4& view, float tanX, float tanY, float nearD, float farD) {
+bool mayBeSeen(const Bounds& b, const glm::mat4& view, float tanX, float tanY, float nearD,
+               float farD) {
     bool out[6] = {true, true, true, true, true, true};
     for (int i = 0; i < 8; ++i) {
         const glm::vec3 v = glm::vec3(view * glm::vec4(corner(b, i), 1.0f));
@@ -120,8 +121,9 @@ bool mayBeSeen(const Bounds& b, const glm::mat4& view, float tanX, float tanY, f
 
 }  // namespace
 
-glm::mat4 shadowViewProjection(const LightDesc& light, const Bounds& scene, const std::vector<Bounds>& parts,
-                               const CameraDesc& camera, float aspect) {
+glm::mat4 shadowViewProjection(const LightDesc& light, const Bounds& scene,
+                               const std::vector<Bounds>& parts, const CameraDesc& camera,
+                               float aspect) {
     const glm::vec3 dir = glm::normalize(light.direction);
     const glm::vec3 center = scene.empty() ? glm::vec3(0.0f) : (scene.min + scene.max) * 0.5f;
     // At least a millimetre, and a hundred thousandth of the distance from the origin: the light's
@@ -130,7 +132,8 @@ glm::mat4 shadowViewProjection(const LightDesc& light, const Bounds& scene, cons
                                        : std::max({glm::length(scene.max - scene.min) * 0.5f, 1e-3f,
                                                    1e-5f * glm::length(center)});
     if (light.type == lightscatter::LightType::Spot) {
-        const glm::mat4 view = glm::lookAtRH(light.position, light.position + dir, safeUp(dir, {0, 1, 0}));
+        const glm::mat4 view =
+            glm::lookAtRH(light.position, light.position + dir, safeUp(dir, {0, 1, 0}));
         const float farthest = glm::length(center - light.position) + radius;
         const float farP = std::max(std::min(light.range, farthest), 0.1f);
         const float nearP = std::clamp(farP * 1e-3f, 1e-3f, 0.05f);
@@ -138,10 +141,12 @@ glm::mat4 shadowViewProjection(const LightDesc& light, const Bounds& scene, cons
         const float fov = 2.0f * glm::radians(std::min(light.halfAngleDegrees + 2.0f, 89.5f));
         return vulkanPerspective(fov, 1.0f, nearP, farP, false, false) * view;
     }
-    const glm::mat4 view = glm::lookAtRH(center - dir * (2.0f * radius), center, safeUp(dir, {0, 1, 0}));
+    const glm::mat4 view =
+        glm::lookAtRH(center - dir * (2.0f * radius), center, safeUp(dir, {0, 1, 0}));
     if (scene.empty()) return vulkanOrtho(radius, radius, radius, 3.0f * radius) * view;
 
-    // Depth covers the whole scene, so that every caster between the sun and the view is in the map.
+    // Depth covers the whole scene, so that every caster between the sun and the view is in the
+    // map.
     glm::vec3 sceneMin(1e30f), sceneMax(-1e30f);
     for (int i = 0; i < 8; ++i) {
         const glm::vec3 l = glm::vec3(view * glm::vec4(corner(scene, i), 1.0f));
@@ -164,13 +169,15 @@ glm::mat4 shadowViewProjection(const LightDesc& light, const Bounds& scene, cons
     for (const Bounds& b : boxes) {
         if (b.empty() || !mayBeSeen(b, cameraV, tanX, tanY, nearD, farLimit)) continue;
         seen.push_back(&b);
-        for (int i = 0; i < 8; ++i) farD = std::max(farD, glm::length(corner(b, i) - camera.position));
+        for (int i = 0; i < 8; ++i)
+            farD = std::max(farD, glm::length(corner(b, i) - camera.position));
     }
     farD = std::min(farD, farLimit);
     glm::vec2 viewMin(1e30f), viewMax(-1e30f);
     for (int i = 0; i < 8; ++i) {
         const float d = (i & 4) ? farD : nearD;
-        const glm::vec4 p(((i & 1) ? 1.0f : -1.0f) * tanX * d, ((i & 2) ? 1.0f : -1.0f) * tanY * d, -d, 1.0f);
+        const glm::vec4 p(((i & 1) ? 1.0f : -1.0f) * tanX * d, ((i & 2) ? 1.0f : -1.0f) * tanY * d,
+                          -d, 1.0f);
         const glm::vec2 l = glm::vec2(view * (invView * p));
         viewMin = glm::min(viewMin, l);
         viewMax = glm::max(viewMax, l);
@@ -209,14 +216,17 @@ std::array<glm::mat4, 6> cubeFaceViewProjections(const LightDesc& light, const B
     float farthest = 1.0f;
     if (!scene.empty())
         for (int c = 0; c < 8; ++c) {
-            const glm::vec3 corner((c & 1) ? scene.max.x : scene.min.x, (c & 2) ? scene.max.y : scene.min.y,
+            const glm::vec3 corner((c & 1) ? scene.max.x : scene.min.x,
+                                   (c & 2) ? scene.max.y : scene.min.y,
                                    (c & 4) ? scene.max.z : scene.min.z);
             farthest = std::max(farthest, glm::length(corner - light.position));
         }
     const float nearP = 0.02f, farP = 1.05f * farthest + 1.0f;
     const glm::mat4 projection = glm::perspectiveRH_ZO(glm::radians(90.0f), 1.0f, nearP, farP);
-    static const glm::vec3 kAxes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-    static const glm::vec3 kUps[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
+    static const glm::vec3 kAxes[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                       {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
+    static const glm::vec3 kUps[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1},
+                                      {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
     std::array<glm::mat4, 6> faces;
     for (size_t i = 0; i < 6; ++i)
         faces[i] = projection * glm::lookAtRH(light.position, light.position + kAxes[i], kUps[i]);

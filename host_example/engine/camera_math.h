@@ -21,8 +21,9 @@ glm::mat4 cameraProjection(const CameraDesc& camera, float aspect);
 // the light, as wide as the parts of the scene (`parts`: bounds of each draw; empty: the scene's)
 // that the camera sees, so a far-away model outside the view does not spread the map's texels
 // over kilometres.
-glm::mat4 shadowViewProjection(const LightDesc& light, const Bounds& scene, const std::vector<Bounds>& parts,
-                               const CameraDesc& camera, float aspect);
+glm::mat4 shadowViewProjection(const LightDesc& light, const Bounds& scene,
+                               const std::vector<Bounds>& parts, const CameraDesc& camera,
+                               float aspect);
 
 // A point light's cube shadow map: world -> clip of each face in Vulkan's layer order +X, -X, +Y,
 // -Y, +Z, -Z, oriented as Vulkan samples a cube (lightscatter.h, Light::cubeFaceViewProjections):

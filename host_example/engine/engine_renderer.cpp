@@ -97,7 +97,10 @@ auto because(const std::string& cause, F&& make) -> decltype(make()) {
 
 EngineRenderer::EngineRenderer(const rg::Device& device, SceneDesc scene, const MeshData& mesh,
                                VkExtent2D size, std::string sizeOrigin)
-    : device_(device), scene_(std::move(scene)), bounds_(mesh.bounds), size_(size),
+    : device_(device),
+      scene_(std::move(scene)),
+      bounds_(mesh.bounds),
+      size_(size),
       sizeOrigin_(std::move(sizeOrigin)) {
     for (const Primitive& p : mesh.primitives) {
         Bounds b;
@@ -117,14 +120,16 @@ EngineRenderer::EngineRenderer(const rg::Device& device, SceneDesc scene, const 
     // More parts than the beam tree takes are merged into a grid of boxes; the other methods
     // ignore occluders either way.
     std::vector<BoundingBoxes> boxes = boundingBoxes(mesh);
-    if (boxes.size() > lightscatter::kMaxOccluders) boxes = gridBoxes(mesh, lightscatter::kMaxOccluders);
+    if (boxes.size() > lightscatter::kMaxOccluders)
+        boxes = gridBoxes(mesh, lightscatter::kMaxOccluders);
     for (const BoundingBoxes& b : boxes) {
         lightscatter::Occluder o;
         o.outer = toPlugin(b.outer);
         if (b.inner) o.inner = toPlugin(*b.inner);
         occluders_.push_back(o);
     }
-    mesh_ = because(scene_.path + ": the scene's models", [&] { return std::make_unique<GpuMesh>(device, mesh); });
+    mesh_ = because(scene_.path + ": the scene's models",
+                    [&] { return std::make_unique<GpuMesh>(device, mesh); });
     plugin_ = std::make_unique<lightscatter::Plugin>(lightscatter::VulkanContext{
         device.instance(), device.physical(), device.device(), device.queue(), device.queueFamily(),
         &device.enabledFeatures()});
@@ -162,7 +167,8 @@ EngineRenderer::~EngineRenderer() {
 
 void EngineRenderer::createTargets() {
     // What the device cannot give is said in the terms of the option or field that asked for it.
-    const std::string screen = sizeOrigin_ + " " + std::to_string(size_.width) + "x" + std::to_string(size_.height);
+    const std::string screen =
+        sizeOrigin_ + " " + std::to_string(size_.width) + "x" + std::to_string(size_.height);
     because(screen, [&] { createScreenTargets(); });
     lights_.clear();
     lights_.resize(scene_.lightCount());
@@ -171,12 +177,14 @@ void EngineRenderer::createTargets() {
         const uint32_t sm = l.shadowMapSize;
         if (sm == 0) continue;
         const std::string which = i == 0 ? "" : " (light " + std::to_string(i) + ")";
-        const std::string field = scene_.path + ": " +
-                                  (scene_.lightList ? "lights[" + std::to_string(i) + "]" : std::string("light")) +
-                                  ".shadowMapSize " + std::to_string(sm);
+        const std::string field =
+            scene_.path + ": " +
+            (scene_.lightList ? "lights[" + std::to_string(i) + "]" : std::string("light")) +
+            ".shadowMapSize " + std::to_string(sm);
         because(field, [&] {
             if (l.type == lightscatter::LightType::Point)
-                lights_[i].cubeShadow = std::make_unique<CubeShadowMap>(device_, sm, "host cube shadow map" + which);
+                lights_[i].cubeShadow =
+                    std::make_unique<CubeShadowMap>(device_, sm, "host cube shadow map" + which);
             else
                 lights_[i].shadowMap = std::make_unique<GpuImage>(
                     device_, VK_FORMAT_D32_SFLOAT, VkExtent2D{sm, sm},
@@ -323,7 +331,7 @@ void EngineRenderer::buildGraph() {
         const lightscatter::LightType kind = scene_.lightAt(i).type;
         const int32_t lightType = kind == lightscatter::LightType::Directional ? 0
                                   : kind == lightscatter::LightType::Spot      ? 1
-                                                                 : 2;
+                                                                               : 2;
         pass.execute([pipes, mesh, lighting, shadow, shadowed, reversed, lightType,
                       first](rg::PassContext& ctx) {
             const int key = (first ? 8 : 0) + lightType * 2 + (shadowed ? 1 : 0);
@@ -488,9 +496,10 @@ void EngineRenderer::record(VkCommandBuffer cmd, const RenderOptions& options,
         // The plugin's memory grows with the screen and the profile's slices and samples.
         std::string why = e.what();
         if (why.rfind("lightscatter: ", 0) == 0) why.erase(0, 14);
-        throw std::runtime_error("the plugin's frame at " + sizeOrigin_ + " " + std::to_string(size_.width) + "x" +
-                                 std::to_string(size_.height) + " with profile " +
-                                 lightscatter::profileName(options.profile) + ": " + why);
+        throw std::runtime_error("the plugin's frame at " + sizeOrigin_ + " " +
+                                 std::to_string(size_.width) + "x" + std::to_string(size_.height) +
+                                 " with profile " + lightscatter::profileName(options.profile) +
+                                 ": " + why);
     }
 }
 

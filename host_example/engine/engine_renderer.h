@@ -33,7 +33,7 @@ struct FrameOutput {
 };
 
 class EngineRenderer {
-public:
+  public:
     // `sizeOrigin` names where `size` came from in messages about what the device cannot hold at
     // it ("--size", a benchmark's "size").
     EngineRenderer(const rg::Device& device, SceneDesc scene, const MeshData& mesh, VkExtent2D size,
@@ -47,8 +47,9 @@ public:
 
     // For a window: records the engine passes and the plugin into `cmd`; the HDR color is left in
     // GENERAL layout, readable by a later pass (finalStages/Access below).
-    void record(VkCommandBuffer cmd, const RenderOptions& options, VkPipelineStageFlags2 finalStages,
-                VkAccessFlags2 finalAccess, VkImageLayout finalLayout = VK_IMAGE_LAYOUT_GENERAL);
+    void record(VkCommandBuffer cmd, const RenderOptions& options,
+                VkPipelineStageFlags2 finalStages, VkAccessFlags2 finalAccess,
+                VkImageLayout finalLayout = VK_IMAGE_LAYOUT_GENERAL);
     FrameOutput timings();  // after the engine waited for a recorded frame
     // Throws SceneError, in the scene's terms, when the plugin would refuse the frame `options`
     // make; renders nothing.
@@ -63,7 +64,7 @@ public:
     size_t occluderCount() const { return occluders_.size(); }  // seed 004's boxes, one a primitive
     std::string engineGraphDot() const;
 
-private:
+  private:
     std::vector<lightscatter::Occluder> occluders_;
     struct Pipelines;
     // One light of the scene ("light", or each of "lights"), the first one included: its shadow
@@ -81,7 +82,8 @@ private:
     void recordCubeShadows(VkCommandBuffer cmd);
     // Light i as the plugin takes it: the light with its shadow map's matrices, and the map.
     lightscatter::LightInput pluginLight(size_t i, float aspect) const;
-    lightscatter::FrameDescription describe(const RenderOptions& options, VkPipelineStageFlags2 finalStages,
+    lightscatter::FrameDescription describe(const RenderOptions& options,
+                                            VkPipelineStageFlags2 finalStages,
                                             VkAccessFlags2 finalAccess) const;
 
     const rg::Device& device_;

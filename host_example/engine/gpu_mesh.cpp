@@ -22,7 +22,8 @@ VkBuffer GpuMesh::makeBuffer(VkDeviceSize size, VkBufferUsageFlags usage, const 
 
 GpuMesh::GpuMesh(const rg::Device& device, const MeshData& mesh) : device_(device) {
     // Every texture against the device's limits before anything is allocated.
-    for (const Texture& t : mesh.textures) rg::checkImageLimits(device, {t.width, t.height}, 1, "texture '" + t.name + "'");
+    for (const Texture& t : mesh.textures)
+        rg::checkImageLimits(device, {t.width, t.height}, 1, "texture '" + t.name + "'");
     try {
         upload(mesh);
     } catch (...) {
@@ -35,8 +36,10 @@ void GpuMesh::upload(const MeshData& mesh) {
     const rg::Device& device = device_;
     const VkDeviceSize vBytes = mesh.vertices.size() * sizeof(Vertex);
     const VkDeviceSize iBytes = mesh.indices.size() * sizeof(uint32_t);
-    vertexBuffer_ = makeBuffer(vBytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "scene vertices", vertexMemory_);
-    indexBuffer_ = makeBuffer(iBytes, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, "scene indices", indexMemory_);
+    vertexBuffer_ =
+        makeBuffer(vBytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "scene vertices", vertexMemory_);
+    indexBuffer_ =
+        makeBuffer(iBytes, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, "scene indices", indexMemory_);
 
     // Textures, plus a white one for materials without. By reference: the pixels are held by the
     // mesh and, for the upload, by the staging buffer, never copied a third time (a 16384^2
@@ -47,8 +50,8 @@ void GpuMesh::upload(const MeshData& mesh) {
     textures.push_back(&whiteTexture);
     VkDeviceSize staged = vBytes + iBytes;
     for (const Texture* t : textures) staged += t->rgba.size();
-    rg::HostBuffer staging(device, std::max<VkDeviceSize>(staged, 4), VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                           "scene upload");
+    rg::HostBuffer staging(device, std::max<VkDeviceSize>(staged, 4),
+                           VK_BUFFER_USAGE_TRANSFER_SRC_BIT, "scene upload");
     auto* bytes = static_cast<uint8_t*>(staging.data());
     if (vBytes) std::memcpy(bytes, mesh.vertices.data(), vBytes);
     if (iBytes) std::memcpy(bytes + vBytes, mesh.indices.data(), iBytes);
@@ -72,8 +75,9 @@ void GpuMesh::upload(const MeshData& mesh) {
             VkBufferCopy c{vBytes, 0, iBytes};
             vkCmdCopyBuffer(cmd, staging.buffer(), indexBuffer_, 1, &c);
         }
-        auto barrier = [&](VkImage img, VkImageLayout from, VkImageLayout to, VkPipelineStageFlags2 src,
-                           VkAccessFlags2 srcAccess, VkPipelineStageFlags2 dst, VkAccessFlags2 dstAccess) {
+        auto barrier = [&](VkImage img, VkImageLayout from, VkImageLayout to,
+                           VkPipelineStageFlags2 src, VkAccessFlags2 srcAccess,
+                           VkPipelineStageFlags2 dst, VkAccessFlags2 dstAccess) {
             VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
             b.srcStageMask = src;
             b.srcAccessMask = srcAccess;
@@ -91,22 +95,26 @@ void GpuMesh::upload(const MeshData& mesh) {
         };
         for (size_t i = 0; i < textures.size(); ++i) {
             const VkImage img = textures_[i]->image();
-            barrier(img, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE,
-                    0, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+            barrier(img, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                    VK_PIPELINE_STAGE_2_NONE, 0, VK_PIPELINE_STAGE_2_COPY_BIT,
+                    VK_ACCESS_2_TRANSFER_WRITE_BIT);
             VkBufferImageCopy region{};
             region.bufferOffset = textureOffsets[i];
             region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
             region.imageExtent = {textures[i]->width, textures[i]->height, 1};
-            vkCmdCopyBufferToImage(cmd, staging.buffer(), img, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-            barrier(img, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                    VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                    VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+            vkCmdCopyBufferToImage(cmd, staging.buffer(), img, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                   1, &region);
+            barrier(img, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
+                    VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                    VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
         }
         // Geometry is read by every later frame's draws.
         VkMemoryBarrier2 m{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
         m.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
         m.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-        m.dstStageMask = VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT | VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT;
+        m.dstStageMask =
+            VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT | VK_PIPELINE_STAGE_2_INDEX_INPUT_BIT;
         m.dstAccessMask = VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT | VK_ACCESS_2_INDEX_READ_BIT;
         VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
         dep.memoryBarrierCount = 1;
@@ -131,14 +139,17 @@ void GpuMesh::upload(const MeshData& mesh) {
         if (p.material >= 0 && static_cast<size_t>(p.material) < mesh.materials.size()) {
             const Material& m = mesh.materials[static_cast<size_t>(p.material)];
             d.baseColor = m.baseColorFactor;
-            if (m.baseColorTexture >= 0 && static_cast<size_t>(m.baseColorTexture) < mesh.textures.size())
+            if (m.baseColorTexture >= 0 &&
+                static_cast<size_t>(m.baseColorTexture) < mesh.textures.size())
                 d.texture = views_[static_cast<size_t>(m.baseColorTexture)];
         }
         draws_.push_back(d);
     }
 }
 
-GpuMesh::~GpuMesh() { release(); }
+GpuMesh::~GpuMesh() {
+    release();
+}
 
 void GpuMesh::release() {
     const VkDevice dev = device_.device();

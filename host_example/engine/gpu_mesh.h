@@ -1,6 +1,6 @@
 #pragma once
-// A scene's triangles and textures on the device: one vertex and one index buffer, an sRGB image per
-// texture (and a white one for untextured materials), uploaded once and left ready for drawing.
+// A scene's triangles and textures on the device: one vertex and one index buffer, an sRGB image
+// per texture (and a white one for untextured materials), uploaded once and left ready for drawing.
 #include <memory>
 #include <vector>
 
@@ -11,7 +11,7 @@
 namespace host {
 
 class GpuMesh {
-public:
+  public:
     GpuMesh(const rg::Device& device, const MeshData& mesh);
     ~GpuMesh();
     GpuMesh(const GpuMesh&) = delete;
@@ -26,7 +26,7 @@ public:
     VkBuffer vertices() const { return vertexBuffer_; }
     VkBuffer indices() const { return indexBuffer_; }
 
-private:
+  private:
     void upload(const MeshData& mesh);
     void release();  // destroys what was made, for the destructor and a failed constructor
     VkBuffer makeBuffer(VkDeviceSize size, VkBufferUsageFlags usage, const std::string& name,

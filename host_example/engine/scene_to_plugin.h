@@ -8,8 +8,10 @@
 namespace host {
 
 lightscatter::Mat4 toPluginMatrix(const glm::mat4& m);
-lightscatter::Camera toPluginCamera(const CameraDesc& camera, const glm::mat4& view, const glm::mat4& projection);
-lightscatter::Light toPluginLight(const LightDesc& light, const glm::mat4& shadowViewProj, bool shadowed);
+lightscatter::Camera toPluginCamera(const CameraDesc& camera, const glm::mat4& view,
+                                    const glm::mat4& projection);
+lightscatter::Light toPluginLight(const LightDesc& light, const glm::mat4& shadowViewProj,
+                                  bool shadowed);
 lightscatter::Medium toPluginMedium(const MediumDesc& medium);
 
 // The plugin's refusal of a frame built from SCENE.json (lightscatter::InvalidInput), in the

@@ -1,6 +1,7 @@
 #pragma once
 // The host example's scene: what SCENE.json says (camera, light, medium, which glTF files) and the
-// triangles of its glTF models, flattened to world space. Nothing here touches Vulkan or the plugin.
+// triangles of its glTF models, flattened to world space. Nothing here touches Vulkan or the
+// plugin.
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <stdexcept>
@@ -13,7 +14,7 @@ namespace host {
 
 // Every failure to read a scene: one line naming the file, the field or value, and the rule broken.
 class SceneError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 
@@ -39,7 +40,7 @@ struct Primitive {
     uint32_t indexCount = 0;  // a multiple of 3: triangle lists (strips and fans are converted)
     int material = -1;        // index into MeshData::materials, -1: default white
     uint32_t firstVertex = 0, vertexCount = 0;  // into MeshData::vertices
-    glm::mat3 axes{1.0f};     // its node's world axes, orthonormalised (for an oriented bounding box)
+    glm::mat3 axes{1.0f};  // its node's world axes, orthonormalised (for an oriented bounding box)
 };
 
 struct Bounds {
@@ -64,13 +65,13 @@ struct MeshData {
 
 // Appends the default scene of a .gltf or .glb file (node hierarchy and transforms applied, then
 // `transform`) to `mesh`. Throws SceneError naming the file and what is wrong.
-void appendGltf(MeshData& mesh, const std::string& path, const glm::mat4& transform = glm::mat4(1.0f));
+void appendGltf(MeshData& mesh, const std::string& path,
+                const glm::mat4& transform = glm::mat4(1.0f));
 
 // appendGltf of a file's bytes already in memory: `path` names it in messages, and the URIs it
 // references resolve against its folder. The fuzzer's way in (tests/fuzz/gltf_fuzzer.cpp).
 void appendGltfBytes(MeshData& mesh, const std::string& path, std::vector<unsigned char> bytes,
                      const glm::mat4& transform = glm::mat4(1.0f));
-
 
 struct CameraDesc {
     glm::vec3 position{0.0f, 1.7f, 5.0f};
@@ -91,8 +92,8 @@ struct LightDesc {
     float halfAngleDegrees = 30.0f;
     float range = 1e30f;
     float radius = 0.05f;
-    uint32_t shadowMapSize = 2048;           // 0: no shadow map; point lights: 0 unless given (a
-                                             // cube map of six faces this size)
+    uint32_t shadowMapSize = 2048;  // 0: no shadow map; point lights: 0 unless given (a
+                                    // cube map of six faces this size)
 };
 
 struct MediumDesc {
@@ -120,9 +121,9 @@ struct SceneDesc {
     LightDesc& lightAt(size_t i) { return i == 0 ? light : moreLights.at(i - 1); }
     const LightDesc& lightAt(size_t i) const { return i == 0 ? light : moreLights.at(i - 1); }
     MediumDesc medium;
-    glm::vec3 skyColor{0.0f};           // radiance of the sky behind everything (linear)
-    glm::vec3 ambient{0.0f};            // irradiance added to every surface, W/m^2 (linear)
-    float exposure = 1.0f;              // display only: multiplies radiance before tone mapping
+    glm::vec3 skyColor{0.0f};  // radiance of the sky behind everything (linear)
+    glm::vec3 ambient{0.0f};   // irradiance added to every surface, W/m^2 (linear)
+    float exposure = 1.0f;     // display only: multiplies radiance before tone mapping
 };
 
 // Reads and checks SCENE.json. Throws SceneError naming the file and the field.

@@ -335,8 +335,9 @@ class SceneReader {
     void checkCoordinates(const glm::vec3& point, const std::string& name) const {
         for (int i = 0; i < 3; ++i) {
             if (std::fabs(double(point[i])) > kMaxCoordinate) {
-                fail(name + "[" + std::to_string(i) + "] = " + format(point[i]) + ": must be within +-" +
-                     format(kMaxCoordinate) + " (the renderer works in single precision)");
+                fail(name + "[" + std::to_string(i) + "] = " + format(point[i]) +
+                     ": must be within +-" + format(kMaxCoordinate) +
+                     " (the renderer works in single precision)");
             }
         }
     }
@@ -377,10 +378,11 @@ class SceneReader {
                   {"type", "position", "direction", "intensity", "halfAngleDegrees", "range",
                    "radius", "shadowMapSize"});
         if (const json* x = member(v, "type")) {
-            light.type = oneOf<lightscatter::LightType>(*x, name + ".type",
-                                          {{"directional", lightscatter::LightType::Directional},
-                                           {"spot", lightscatter::LightType::Spot},
-                                           {"point", lightscatter::LightType::Point}});
+            light.type = oneOf<lightscatter::LightType>(
+                *x, name + ".type",
+                {{"directional", lightscatter::LightType::Directional},
+                 {"spot", lightscatter::LightType::Spot},
+                 {"point", lightscatter::LightType::Point}});
         }
         // A point light's shadow map is a cube of six faces (six depth passes for the host, six
         // per-face passes for epipolar): it has one only when the scene asks (shadowMapSize > 0).
@@ -431,10 +433,11 @@ class SceneReader {
         if (const json* x = member(v, "sigmaA"))
             medium.sigmaA = vec3InRange(*x, "medium.sigmaA", 0.0f, c);
         if (const json* x = member(v, "phase")) {
-            medium.phase = oneOf<lightscatter::MiePhase>(*x, "medium.phase",
-                                            {{"cornette-shanks", lightscatter::MiePhase::CornetteShanks},
-                                             {"isotropic", lightscatter::MiePhase::Isotropic},
-                                             {"hazy", lightscatter::MiePhase::Hazy}});
+            medium.phase = oneOf<lightscatter::MiePhase>(
+                *x, "medium.phase",
+                {{"cornette-shanks", lightscatter::MiePhase::CornetteShanks},
+                 {"isotropic", lightscatter::MiePhase::Isotropic},
+                 {"hazy", lightscatter::MiePhase::Hazy}});
         }
         if (const json* x = member(v, "maxDistance")) {
             medium.maxDistance = inRange(*x, "medium.maxDistance", 0.0, limits::kMaxLength, true);

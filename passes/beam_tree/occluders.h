@@ -43,8 +43,8 @@ struct LightVolume {
 
 // Builds the tree: the outer boxes' light-facing faces front to back from the light (a BSP order,
 // front_to_back.h, so boxes may overlap and a box is never lost behind a farther box's face), then
-// the backplate, then the inner boxes' faces as stoppers, front to back too. An outer box that holds
-// the light makes all of the light's volume uncertain.
+// the backplate, then the inner boxes' faces as stoppers, front to back too. An outer box that
+// holds the light makes all of the light's volume uncertain.
 LightVolume buildLightVolume(const LightFrustum& frustum, const std::vector<Occluder>& occluders,
                              double epsilon = 1e-3);
 

@@ -1,6 +1,6 @@
-#include "shared/pass_helpers.h"
 #include "epipolar_coordinates_frag.h"
 #include "epipolar_nodes.h"
+#include "shared/pass_helpers.h"
 
 namespace ls {
 
@@ -29,8 +29,13 @@ EpipolarCoordinates addEpipolarCoordinates(rg::RenderGraph& g, const EpipolarCoo
         auto desc =
             fullscreenPipeline(rg::spirv(ls_spirv::epipolar_coordinates_frag), ctx, table.layout());
         desc.stencilTest = true;
-        desc.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_REPLACE, VK_STENCIL_OP_KEEP,
-                        VK_COMPARE_OP_ALWAYS, 0xff, 0xff, 1};
+        desc.stencil = {VK_STENCIL_OP_KEEP,
+                        VK_STENCIL_OP_REPLACE,
+                        VK_STENCIL_OP_KEEP,
+                        VK_COMPARE_OP_ALWAYS,
+                        0xff,
+                        0xff,
+                        1};
         const auto& p = shared->pipelines.graphics("coordinates and epipolar z", desc);
         p.bind(ctx.cmd());
         vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 1);

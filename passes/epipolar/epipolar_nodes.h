@@ -81,8 +81,8 @@ struct EpipolarRayMarchInputs {
     LightImages light;
     rg::ImageRef coordinates, epipolarZ, sliceUvFrame;
     rg::ImageRef epipolarStencil;  // after the marking
-    rg::ImageRef trees;        // invalid: marched without trees
-    rg::ImageRef accumulate;   // invalid: a new texture
+    rg::ImageRef trees;            // invalid: marched without trees
+    rg::ImageRef accumulate;       // invalid: a new texture
     // The step counter (step_counts.h), cleared; invalid: the plain variant, nothing counted.
     rg::BufferRef stepCounts;
 };

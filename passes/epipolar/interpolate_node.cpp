@@ -1,14 +1,14 @@
-#include "shared/pass_helpers.h"
 #include "epipolar_nodes.h"
 #include "interpolate_frag.h"
+#include "shared/pass_helpers.h"
 
 namespace ls {
 
 rg::ImageRef addInterpolate(rg::RenderGraph& g, const InterpolateInputs& in,
                             const EpipolarSizes& s) {
-    rg::ImageRef interpolated = g.createImage(
-        "in-scattering (all samples)",
-        rg::ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT, s.samples, s.slices));
+    rg::ImageRef interpolated =
+        g.createImage("in-scattering (all samples)",
+                      rg::ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT, s.samples, s.slices));
     auto pass = g.addPass("interpolate in-scattering", rg::PassType::Graphics);
     rg::BindingTable table(pass);
     table
@@ -20,8 +20,13 @@ rg::ImageRef addInterpolate(rg::RenderGraph& g, const InterpolateInputs& in,
     pass.execute([shared = in.frame.shared, table](rg::PassContext& ctx) {
         auto desc = fullscreenPipeline(rg::spirv(ls_spirv::interpolate_frag), ctx, table.layout());
         desc.stencilTest = true;  // every valid sample: 1 <= stencil
-        desc.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP,
-                        VK_COMPARE_OP_LESS_OR_EQUAL, 0xff, 0, 1};
+        desc.stencil = {VK_STENCIL_OP_KEEP,
+                        VK_STENCIL_OP_KEEP,
+                        VK_STENCIL_OP_KEEP,
+                        VK_COMPARE_OP_LESS_OR_EQUAL,
+                        0xff,
+                        0,
+                        1};
         const auto& p = shared->pipelines.graphics("interpolate in-scattering", desc);
         p.bind(ctx.cmd());
         vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 1);

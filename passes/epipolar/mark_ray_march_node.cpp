@@ -1,6 +1,6 @@
-#include "shared/pass_helpers.h"
 #include "epipolar_nodes.h"
 #include "mark_ray_march_frag.h"
+#include "shared/pass_helpers.h"
 
 namespace ls {
 
@@ -15,8 +15,13 @@ rg::ImageRef addMarkRayMarchSamples(rg::RenderGraph& g, const MarkRayMarchInputs
         rg::GraphicsPipelineDesc desc =
             fullscreenPipeline(rg::spirv(ls_spirv::mark_ray_march_frag), ctx, table.layout());
         desc.stencilTest = true;
-        desc.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_INCREMENT_AND_CLAMP, VK_STENCIL_OP_KEEP,
-                        VK_COMPARE_OP_EQUAL, 0xff, 0xff, 1};
+        desc.stencil = {VK_STENCIL_OP_KEEP,
+                        VK_STENCIL_OP_INCREMENT_AND_CLAMP,
+                        VK_STENCIL_OP_KEEP,
+                        VK_COMPARE_OP_EQUAL,
+                        0xff,
+                        0xff,
+                        1};
         const auto& p = shared->pipelines.graphics("mark ray-marching samples", desc);
         p.bind(ctx.cmd());
         vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 1);

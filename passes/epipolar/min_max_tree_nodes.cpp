@@ -29,8 +29,8 @@ rg::ImageRef addMinMaxTrees(rg::RenderGraph& g, const MinMaxTreesInputs& in,
                             const EpipolarSizes& s) {
     const uint32_t n = in.light.shadowMapSize;
     const uint32_t levels = treeLevels(n);
-    rg::ImageRef tree =
-        g.createImage("1D min/max trees", rg::ImageDesc::absolute(VK_FORMAT_R16G16_SFLOAT, n, s.slices));
+    rg::ImageRef tree = g.createImage(
+        "1D min/max trees", rg::ImageDesc::absolute(VK_FORMAT_R16G16_SFLOAT, n, s.slices));
     {
         auto pass = g.addPass("min/max trees level 1", rg::PassType::Compute);
         const auto& sm = samplersOf(in.frame.shared);
@@ -53,7 +53,8 @@ rg::ImageRef addMinMaxTrees(rg::RenderGraph& g, const MinMaxTreesInputs& in,
         });
     }
     for (uint32_t level = 2; level <= levels; ++level) {
-        auto pass = g.addPass("min/max trees level " + std::to_string(level), rg::PassType::Compute);
+        auto pass =
+            g.addPass("min/max trees level " + std::to_string(level), rg::PassType::Compute);
         rg::BindingTable table(pass);
         tree = table.storageReadWrite(LS_BINDING_TREE_LEVEL, tree);
         pass.execute([shared = in.frame.shared, table, level, n, s](rg::PassContext& ctx) {

@@ -53,8 +53,13 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const EpipolarRayMarchI
         auto desc = fullscreenPipeline(rayMarchShader(spec, counts.valid()), ctx, table.layout());
         desc.specialization = spec.constants();
         desc.stencilTest = true;
-        desc.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP,
-                        VK_COMPARE_OP_EQUAL, 0xff, 0, 2};
+        desc.stencil = {VK_STENCIL_OP_KEEP,
+                        VK_STENCIL_OP_KEEP,
+                        VK_STENCIL_OP_KEEP,
+                        VK_COMPARE_OP_EQUAL,
+                        0xff,
+                        0,
+                        2};
         if (adds) {
             desc.blend = rg::BlendMode::Additive;
             desc.colorWriteMask =

@@ -1,6 +1,6 @@
-#include "shared/pass_helpers.h"
 #include "epipolar_nodes.h"
 #include "refine_samples_comp.h"
+#include "shared/pass_helpers.h"
 
 #include <string>
 
@@ -8,8 +8,9 @@ namespace ls {
 
 rg::ImageRef addRefineSamples(rg::RenderGraph& g, const RefineSamplesInputs& in,
                               const EpipolarSizes& s) {
-    rg::ImageRef sources = g.createImage(
-        "interpolation source", rg::ImageDesc::absolute(VK_FORMAT_R16G16_UINT, s.samples, s.slices));
+    rg::ImageRef sources =
+        g.createImage("interpolation source",
+                      rg::ImageDesc::absolute(VK_FORMAT_R16G16_UINT, s.samples, s.slices));
     auto pass = g.addPass("refine sample locations", rg::PassType::Compute);
     rg::BindingTable table = frameTable(pass, in.frame.constants);
     table.sampled(LS_BINDING_REFINE_EPIPOLAR_Z, in.epipolarZ,

@@ -1,5 +1,5 @@
-#include "shared/pass_helpers.h"
 #include "epipolar_nodes.h"
+#include "shared/pass_helpers.h"
 #include "slice_end_points_comp.h"
 
 namespace ls {

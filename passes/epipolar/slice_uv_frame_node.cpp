@@ -1,14 +1,14 @@
-#include "shared/pass_helpers.h"
 #include "epipolar_nodes.h"
+#include "shared/pass_helpers.h"
 #include "slice_uv_frame_comp.h"
 
 namespace ls {
 
 rg::ImageRef addSliceUvFrame(rg::RenderGraph& g, const SliceUvFrameInputs& in,
                              const EpipolarSizes& s) {
-    rg::ImageRef uvFrame = g.createImage(
-        "slice uv origin and direction",
-        rg::ImageDesc::absolute(VK_FORMAT_R32G32B32A32_SFLOAT, s.slices, 1));
+    rg::ImageRef uvFrame =
+        g.createImage("slice uv origin and direction",
+                      rg::ImageDesc::absolute(VK_FORMAT_R32G32B32A32_SFLOAT, s.slices, 1));
     auto pass = g.addPass("slice uv origin and direction", rg::PassType::Compute);
     rg::BindingTable table = frameTable(pass, in.frame.constants);
     table.sampled(LS_BINDING_UV_FRAME_END_POINTS, in.sliceEndPoints,

@@ -50,15 +50,20 @@ UnwarpOutputs addUnwarp(rg::RenderGraph& g, const UnwarpInputs& in, const Unwarp
     pass.execute([shared = in.frame.shared, light = in.light, table, written, markForFixup,
                   addOnly](rg::PassContext& ctx) {
         const ScatterSpec& spec = shared->spec;
-        auto desc = fullscreenPipeline(
-            unwarpShader(light.table.valid(), ctx.format(written.color), written.inscatterOut.valid()),
-            ctx, table.layout());
+        auto desc = fullscreenPipeline(unwarpShader(light.table.valid(), ctx.format(written.color),
+                                                    written.inscatterOut.valid()),
+                                       ctx, table.layout());
         desc.pushConstantBytes = 8;
         desc.specialization = spec.constants();
         if (markForFixup) {
             desc.stencilTest = true;
-            desc.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_REPLACE, VK_STENCIL_OP_KEEP,
-                            VK_COMPARE_OP_ALWAYS, 0xff, 0xff, 1};
+            desc.stencil = {VK_STENCIL_OP_KEEP,
+                            VK_STENCIL_OP_REPLACE,
+                            VK_STENCIL_OP_KEEP,
+                            VK_COMPARE_OP_ALWAYS,
+                            0xff,
+                            0xff,
+                            1};
         }
         const auto& p = shared->pipelines.graphics("unwarp", desc);
         p.bind(ctx.cmd());

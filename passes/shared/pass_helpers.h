@@ -14,7 +14,9 @@
 
 namespace ls {
 
-inline uint32_t groupCount(uint32_t n, uint32_t size) { return (n + size - 1) / size; }
+inline uint32_t groupCount(uint32_t n, uint32_t size) {
+    return (n + size - 1) / size;
+}
 
 // A binding table whose first row is the frame-constants uniform buffer (LS_BINDING_FRAME).
 rg::BindingTable frameTable(rg::PassBuilder& pass, rg::BufferRef constants);

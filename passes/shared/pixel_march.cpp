@@ -69,8 +69,13 @@ void drawPixelMarch(rg::PassContext& ctx, const Shared& shared, const rg::Bindin
     desc.specialization = spec.constants();
     if (draw.whereStencilIsZero) {
         desc.stencilTest = true;
-        desc.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP,
-                        VK_COMPARE_OP_EQUAL, 0xff, 0, 0};
+        desc.stencil = {VK_STENCIL_OP_KEEP,
+                        VK_STENCIL_OP_KEEP,
+                        VK_STENCIL_OP_KEEP,
+                        VK_COMPARE_OP_EQUAL,
+                        0xff,
+                        0,
+                        0};
     }
     const auto& p = shared->pipelines.graphics(draw.pipeline, desc);
     p.bind(ctx.cmd());

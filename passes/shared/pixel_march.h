@@ -1,8 +1,9 @@
 #pragma once
 // The per-pixel march (shaders/shared/pixel_march.frag): each pixel marches its own ray through
 // the shadow map, one step per texel it crosses. Brute force draws it over every pixel; the
-// epipolar fix-up over the pixels its unwarp left unmarked in a stencil, with an optional step cap. The
-// caller adds the pass, its target and any stencil it tests; these add the march's reads and draw.
+// epipolar fix-up over the pixels its unwarp left unmarked in a stencil, with an optional step cap.
+// The caller adds the pass, its target and any stencil it tests; these add the march's reads and
+// draw.
 #include "frame_context.h"
 #include "rendergraph/binding_table.h"
 #include "rendergraph/pass_context.h"
@@ -17,8 +18,8 @@ rg::BindingTable declarePixelMarch(rg::PassBuilder& pass, const FrameContext& fr
                                    const LightImages& light);
 
 struct PixelMarchDraw {
-    const char* pipeline = "";       // names the pipeline
-    uint32_t maxSteps = 0;           // steps per ray at most; 0: one per texel crossed
+    const char* pipeline = "";        // names the pipeline
+    uint32_t maxSteps = 0;            // steps per ray at most; 0: one per texel crossed
     bool whereStencilIsZero = false;  // draw only where the pass's stencil attachment holds 0
     // Composite into these (rows of the pass's table, addCompositeTarget) instead of writing
     // Lin to the pass's color attachment: the epipolar fix-up.

@@ -1,6 +1,6 @@
 #include "pass_helpers.h"
-#include "shared_nodes.h"
 #include "point_table_comp.h"
+#include "shared_nodes.h"
 
 namespace ls {
 

@@ -13,7 +13,8 @@ TableLayout tableLayoutFor(const MediumParams& medium, float lightRadius, uint32
     // resolves both; past 50 extinction lengths (or the sky distance without extinction) nothing
     // is left to resolve.
     const float minBeta = std::min({bt.x, bt.y, bt.z});
-    const float scale = std::max(minBeta > 0.0f ? 50.0f / minBeta : 0.0f, 10.0f * medium.maxDistance);
+    const float scale =
+        std::max(minBeta > 0.0f ? 50.0f / minBeta : 0.0f, 10.0f * medium.maxDistance);
     TableLayout t;
     t.width = width;
     t.height = height;
@@ -50,7 +51,9 @@ const char* cubeFaceName(int face) {
     return face >= 0 && face < 6 ? kNames[face] : "?";
 }
 
-bool treesFit(uint32_t shadowMapSize) { return treeLevels(shadowMapSize) >= 2; }
+bool treesFit(uint32_t shadowMapSize) {
+    return treeLevels(shadowMapSize) >= 2;
+}
 
 namespace {
 
@@ -91,7 +94,8 @@ FrameConstants makeFrameConstants(const CameraParams& camera, const LightParams&
     f.cameraPos = glm::vec4(glm::vec3(invView[3]), camera.nearPlane);
     f.cameraForward = glm::vec4(-glm::normalize(glm::vec3(invView[2])), camera.farPlane);
     f.screenSize = {static_cast<float>(screen.width), static_cast<float>(screen.height),
-                    1.0f / static_cast<float>(screen.width), 1.0f / static_cast<float>(screen.height)};
+                    1.0f / static_cast<float>(screen.width),
+                    1.0f / static_cast<float>(screen.height)};
     f.lightPos = glm::vec4(light.position, 0.0f);
     f.lightDir = glm::vec4(glm::normalize(light.direction), light.cosHalfAngle);
     f.lightIntensity = glm::vec4(light.intensity, light.range);
@@ -103,7 +107,8 @@ FrameConstants makeFrameConstants(const CameraParams& camera, const LightParams&
     f.depthInfo = {camera.reversedZ ? 1.0f : 0.0f, camera.infiniteFar ? 1.0f : 0.0f,
                    camera.nearPlane, camera.farPlane};
     const float size = static_cast<float>(std::max(light.shadowMapSize, 1u));
-    f.shadowInfo = {size, 1.0f / size, light.shadowReversedZ ? 1.0f : 0.0f, settings.shadowDepthBias};
+    f.shadowInfo = {size, 1.0f / size, light.shadowReversedZ ? 1.0f : 0.0f,
+                    settings.shadowDepthBias};
     f.epipolar = {static_cast<float>(settings.slices), static_cast<float>(settings.samples),
                   static_cast<float>(settings.initialStep), settings.refinementThreshold};
     f.epipolar2 = {settings.bilateralThreshold, static_cast<float>(settings.fixupMaxSteps),
@@ -111,7 +116,8 @@ FrameConstants makeFrameConstants(const CameraParams& camera, const LightParams&
                    settings.interpolateFraction ? 1.0f : 0.0f};
     f.cubeFace = {0.0f, 1.0f, 0.0f, 0.0f};  // no per-face pass: in view
     f.epipolar3 = {settings.inscatterRefinementThreshold, 0.0f, 0.0f, 0.0f};
-    f.lutInfo = {table.logRange, static_cast<float>(table.width), static_cast<float>(table.height), 0.0f};
+    f.lutInfo = {table.logRange, static_cast<float>(table.width), static_cast<float>(table.height),
+                 0.0f};
     return f;
 }
 

@@ -31,7 +31,7 @@ struct LightParams {
     float radius = 0.05f;
     glm::mat4 shadowViewProj{1.0f};
     glm::mat4 cubeFaceViewProj[6]{};  // point light with a shadow map: world -> clip per face
-    uint32_t shadowMapSize = 0;  // 0: unshadowed
+    uint32_t shadowMapSize = 0;       // 0: unshadowed
     bool shadowReversedZ = false;
 };
 

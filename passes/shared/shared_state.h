@@ -33,7 +33,7 @@ struct ScatterSpec {
 // pass asks for the pipeline it describes, and any field that differs gives another pipeline. The
 // name labels the pipeline (debug names, errors) and is no part of the key.
 class PipelineLibrary {
-public:
+  public:
     explicit PipelineLibrary(const rg::Device& device) : device_(device) {}
     const rg::Pipeline& compute(const std::string& name, rg::ShaderCode code,
                                 const std::vector<rg::Binding>& bindings, uint32_t pushBytes,
@@ -41,7 +41,7 @@ public:
     const rg::Pipeline& graphics(const std::string& name, const rg::GraphicsPipelineDesc& desc);
     size_t size() const { return pipelines_.size(); }
 
-private:
+  private:
     const rg::Device& device_;
     std::map<rg::PipelineKey, rg::Pipeline> pipelines_;
 };
@@ -80,9 +80,12 @@ struct SharedState {
     std::array<std::shared_ptr<SharedState>, 6> cubeFaces;
     bool inView() const { return constants.cubeFace.y > 0.5f; }
 
-private:
+  private:
     SharedState(std::shared_ptr<SharedResources> r, const rg::Device& d)
-        : resources(std::move(r)), device(d), samplers(resources->samplers), pipelines(resources->pipelines) {}
+        : resources(std::move(r)),
+          device(d),
+          samplers(resources->samplers),
+          pipelines(resources->pipelines) {}
 };
 
 using Shared = std::shared_ptr<SharedState>;

@@ -12,17 +12,16 @@ rg::ShaderCode unshadowedShader(const ScatterSpec& spec) {
 }
 
 rg::ImageRef addUnshadowed(rg::RenderGraph& graph, const UnshadowedInputs& in) {
-    return addScreenLinNode(graph, in.frame.shared,
-                            {.name = "unshadowed in-scattering",
-                             .constants = in.frame.constants,
-                             .depth = in.frame.depth,
-                             // The table; an unshadowed frame has nothing else.
-                             .rows =
-                                 [in](rg::BindingTable& table) {
-                                     addMarchInputs(table, in.frame.shared, in.light);
-                                 },
-                             .shader = unshadowedShader,
-                             .specialize = {}});
+    return addScreenLinNode(
+        graph, in.frame.shared,
+        {.name = "unshadowed in-scattering",
+         .constants = in.frame.constants,
+         .depth = in.frame.depth,
+         // The table; an unshadowed frame has nothing else.
+         .rows =
+             [in](rg::BindingTable& table) { addMarchInputs(table, in.frame.shared, in.light); },
+         .shader = unshadowedShader,
+         .specialize = {}});
 }
 
 }  // namespace ls

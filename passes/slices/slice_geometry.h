@@ -16,7 +16,8 @@ namespace ls {
 // once (shaders/slices/*_push_fields.h). Only mat4 and vec4 members: laid out as the blocks are.
 #define LS_MAT4 glm::mat4
 #define LS_VEC4 glm::vec4
-#define LS_INIT(x) {x}
+#define LS_INIT(x) \
+    { x }
 struct SlicePush {
 #include "shaders/slices/slice_push_fields.h"
 };

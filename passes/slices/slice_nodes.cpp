@@ -54,33 +54,33 @@ rg::ImageRef addSlicePlanes(rg::RenderGraph& graph, const SlicePlanesInputs& in,
         .sampledIfValid(LS_BINDING_NOISE, in.noise, s.linearRepeat());
     pass.depthTest(in.frame.depth);
     sum = pass.colorAttachment(sum, rg::LoadOp::Clear);
-    pass.execute([shared, placement = in.placement, table, in, options,
-                  channels](rg::PassContext& ctx) {
-        if (placement->planes == 0) return;  // cleared: the light's volume misses the view
-        const ScatterSpec& spec = shared->spec;
-        const bool shadow = in.light.shadowMap.valid(), cookie = in.light.lightColor.valid(),
-                   noise = in.noise.valid();
-        rg::GraphicsPipelineDesc desc;
-        desc.vertex = rg::spirv(ls_spirv::slice_planes_vert);
-        desc.fragment = slicePlanesShader(shadow, cookie, noise);
-        desc.formats = ctx.renderingFormats();
-        desc.bindings = table.layout();
-        desc.pushConstantBytes = sizeof(SlicePush);
-        desc.specialization = spec.constants();
-        const bool dither = channels && options.dither;
-        desc.specialization.set(LS_SPEC_PLANES_CHANNELS, channels)
-            .set(LS_SPEC_PLANES_DITHER, dither);
-        desc.depthTest = true;
-        desc.depthWrite = false;
-        // A plane counts where it is in front of the surface.
-        desc.depthCompare = options.reversedZ ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_LESS;
-        desc.blend = rg::BlendMode::Additive;
-        const auto& p = shared->pipelines.graphics("slice planes", desc);
-        p.bind(ctx.cmd());
-        table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
-        p.push(ctx.cmd(), placement->push);
-        vkCmdDraw(ctx.cmd(), 6, placement->planes, 0, 0);
-    });
+    pass.execute(
+        [shared, placement = in.placement, table, in, options, channels](rg::PassContext& ctx) {
+            if (placement->planes == 0) return;  // cleared: the light's volume misses the view
+            const ScatterSpec& spec = shared->spec;
+            const bool shadow = in.light.shadowMap.valid(), cookie = in.light.lightColor.valid(),
+                       noise = in.noise.valid();
+            rg::GraphicsPipelineDesc desc;
+            desc.vertex = rg::spirv(ls_spirv::slice_planes_vert);
+            desc.fragment = slicePlanesShader(shadow, cookie, noise);
+            desc.formats = ctx.renderingFormats();
+            desc.bindings = table.layout();
+            desc.pushConstantBytes = sizeof(SlicePush);
+            desc.specialization = spec.constants();
+            const bool dither = channels && options.dither;
+            desc.specialization.set(LS_SPEC_PLANES_CHANNELS, channels)
+                .set(LS_SPEC_PLANES_DITHER, dither);
+            desc.depthTest = true;
+            desc.depthWrite = false;
+            // A plane counts where it is in front of the surface.
+            desc.depthCompare = options.reversedZ ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_LESS;
+            desc.blend = rg::BlendMode::Additive;
+            const auto& p = shared->pipelines.graphics("slice planes", desc);
+            p.bind(ctx.cmd());
+            table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
+            p.push(ctx.cmd(), placement->push);
+            vkCmdDraw(ctx.cmd(), 6, placement->planes, 0, 0);
+        });
     return sum;
 }
 

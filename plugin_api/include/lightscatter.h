@@ -12,9 +12,9 @@
 // Requirements on the engine's VkDevice: Vulkan 1.3, the extensions requiredDeviceExtensions()
 // lists (VK_KHR_push_descriptor) and the features requiredDeviceFeatures() turns on
 // (synchronization2, dynamicRendering, maintenance4; separateDepthStencilLayouts, hostQueryReset;
-// shaderStorageImageExtendedFormats, shaderClipDistance, fragmentStoresAndAtomics). The engine tells
-// the plugin what it enabled (VulkanContext::enabledFeatures), and the plugin refuses a device that
-// lacks one.
+// shaderStorageImageExtendedFormats, shaderClipDistance, fragmentStoresAndAtomics). The engine
+// tells the plugin what it enabled (VulkanContext::enabledFeatures), and the plugin refuses a
+// device that lacks one.
 //
 // Linking: CMake target lightscatter::plugin, from find_package(lightscatter CONFIG) on an
 // installed tree or from add_subdirectory on the source tree (README.md, "Integrating the plugin").
@@ -136,22 +136,23 @@ enum class Method {
     Auto,
 };
 enum class Profile {
-    HighQuality,      // 2048 slices x 1024 samples, 4096^2 shadow map (seed 000)
-    Balanced,         // 1024 x 1024, 2048^2
-    HighPerformance,  // 1024 x 512, 1024^2
-    LowHighQuality,   // the seed's set for weaker devices: 1024 x 1024, 2048^2
-    LowBalanced,      // 512 x 512, 1024^2
+    HighQuality,         // 2048 slices x 1024 samples, 4096^2 shadow map (seed 000)
+    Balanced,            // 1024 x 1024, 2048^2
+    HighPerformance,     // 1024 x 512, 1024^2
+    LowHighQuality,      // the seed's set for weaker devices: 1024 x 1024, 2048^2
+    LowBalanced,         // 512 x 512, 1024^2
     LowHighPerformance,  // 512 x 256, 512^2
-    Custom,           // Settings as given
+    Custom,              // Settings as given
 };
 enum class LightType { Directional, Spot, Point };
 // The Mie lobe: Cornette-Shanks with Medium::g, isotropic, or seed 004's hazy atmosphere
 // (1 + 9 cos^16(alpha / 2)) / (8 pi), normalised over the sphere (docs/model.md), which ignores g.
 enum class MiePhase { CornetteShanks, Isotropic, Hazy };
 enum class ShadowFilter { Nearest, Bilinear };
-// What epipolar samples carry between ray marching and the screen. Seed 000 interpolates Lin itself;
-// interpolating the shadowed fraction of the closed-form unshadowed Lin instead keeps the glow around
-// a light (which no sparse sampling resolves) exact, and changes nothing where there is no glow.
+// What epipolar samples carry between ray marching and the screen. Seed 000 interpolates Lin
+// itself; interpolating the shadowed fraction of the closed-form unshadowed Lin instead keeps the
+// glow around a light (which no sparse sampling resolves) exact, and changes nothing where there is
+// no glow.
 enum class Interpolation { ShadowedFraction, Inscattering };
 // Where the slices method adds up its planes. Float16: an R16G16B16A16_SFLOAT target, Lin per
 // channel; its 11-bit mantissa stops the error falling beyond about 128 planes (docs/methods.md).
@@ -174,11 +175,11 @@ LIGHTSCATTER_API std::vector<std::string> profileNames();
 
 // Every choice seed 000 leaves open.
 struct Settings {
-    uint32_t slices = 1024;              // epipolar lines; a multiple of 4 (one quarter per edge)
-    uint32_t samplesPerSlice = 1024;     // samples along each line
-    uint32_t initialSampleStep = 16;     // ray-marching samples every N samples (power of two, <= 128)
-    float refinementThreshold = 0.03f;   // relative camera-z jump that is a depth break; > 0
-                                         // and finite (only compared: any such value is safe)
+    uint32_t slices = 1024;           // epipolar lines; a multiple of 4 (one quarter per edge)
+    uint32_t samplesPerSlice = 1024;  // samples along each line
+    uint32_t initialSampleStep = 16;  // ray-marching samples every N samples (power of two, <= 128)
+    float refinementThreshold = 0.03f;  // relative camera-z jump that is a depth break; > 0
+                                        // and finite (only compared: any such value is safe)
     // Epipolar refinement on what the samples carry (docs/epipolar.md, "Refinement on in-scattering
     // differences"). 0 (the default): off. Above 0: after the first march, wherever the two
     // ray-marching samples an interpolated sample lies between differ in some channel by more than
@@ -187,28 +188,28 @@ struct Settings {
     // stencil-limited march), so a shadow edge no depth break marks is not interpolated across.
     // Finite (only compared).
     float inscatterRefinementThreshold = 0.0f;
-    float bilateralThreshold = 0.1f;     // relative camera-z difference accepted when unwarping;
-                                         // > 0 and finite (only compared)
-    bool minMaxTrees = true;             // 1D min/max binary trees per slice
+    float bilateralThreshold = 0.1f;  // relative camera-z difference accepted when unwarping;
+                                      // > 0 and finite (only compared)
+    bool minMaxTrees = true;          // 1D min/max binary trees per slice
     ShadowFilter shadowFilter = ShadowFilter::Bilinear;  // 2x2 PCF or nearest texel
-    bool fixup = true;                   // ray-march pixels the unwarp cannot interpolate
-    uint32_t fixupMaxSteps = 0;          // 0: every shadow-map texel; else at most this many
-    float shadowDepthBias = 0.0f;        // added to the ray's light-space depth before comparing;
-                                         // in [-1, 1], the depth range (beyond it every ray is
-                                         // lit, or shadowed, all the same)
+    bool fixup = true;             // ray-march pixels the unwarp cannot interpolate
+    uint32_t fixupMaxSteps = 0;    // 0: every shadow-map texel; else at most this many
+    float shadowDepthBias = 0.0f;  // added to the ray's light-space depth before comparing;
+                                   // in [-1, 1], the depth range (beyond it every ray is
+                                   // lit, or shadowed, all the same)
     Interpolation interpolation = Interpolation::ShadowedFraction;
-    uint32_t shadowMapSize = 2048;       // the profile's recommendation (the light's own size rules)
+    uint32_t shadowMapSize = 2048;  // the profile's recommendation (the light's own size rules)
     // cone-march (seed 003), taken from `custom` with every profile:
-    uint32_t coneSamples = 32;           // samples per pixel, 1 to 4096
-    bool coneLimited = true;             // only the ray's part in the cone and range; false: the
-                                         // seed's naive baseline over the whole ray
-    bool coneJitter = false;             // per-pixel jittered sample offsets instead of midpoints
+    uint32_t coneSamples = 32;  // samples per pixel, 1 to 4096
+    bool coneLimited = true;    // only the ray's part in the cone and range; false: the
+                                // seed's naive baseline over the whole ray
+    bool coneJitter = false;    // per-pixel jittered sample offsets instead of midpoints
     // false: seed 003's low-end mode, no shadow-map look-ups (shafts without shadows). Only
     // cone-march honours it; the other methods refuse it (Auto picks cone-march).
     bool shadowSampling = true;
     // slices (seed 002). The plane count and target follow the profile (docs/methods.md); the rest
     // is taken from `custom` with every profile.
-    uint32_t slicePlanes = 128;          // view-aligned planes across the light's volume, 2 to 4096
+    uint32_t slicePlanes = 128;  // view-aligned planes across the light's volume, 2 to 4096
     SliceTarget sliceTarget = SliceTarget::Float16;
     // The seed's scaling of the count: fewer planes, down to an eighth, as the light's volume
     // shrinks on screen (its depth extent over its distance from the camera).
@@ -221,7 +222,7 @@ struct Settings {
     // rounding, after the seed's suggestion of interleaved sampling), so that shares under half an
     // 8-bit step still add up; false is the seed's plain rounding, which loses them (banding).
     bool sliceDither = true;
-    uint32_t sliceBlur = 0;              // seed 002's blur at composite: radius in pixels, 0 off
+    uint32_t sliceBlur = 0;  // seed 002's blur at composite: radius in pixels, 0 off
     // The seed's ambient term beside the inverse square (point and spot lights, 1/m^2): art
     // direction outside docs/model.md, 0 by default. In [0, limits::kMaxAmbient].
     float sliceAmbient = 0.0f;
@@ -229,10 +230,10 @@ struct Settings {
     // samples of a tiling noise texture projected from the light (FrameDescription::noise, or the
     // plugin's own). Art direction the model does not have; amplitude 0 turns it off. Honoured by
     // slices only; the other methods refuse a non-zero amplitude.
-    float noiseAmplitude = 0.0f;         // a in [0, 1]
-    float noiseScale = 1.0f;             // a tile's size: metres (directional) or, for point and
-                                         // spot lights, the tangent of the angle it spans; in
-                                         // [limits::kMinNoiseScale, limits::kMaxNoiseScale]
+    float noiseAmplitude = 0.0f;  // a in [0, 1]
+    float noiseScale = 1.0f;      // a tile's size: metres (directional) or, for point and
+                                  // spot lights, the tangent of the angle it spans; in
+                                  // [limits::kMinNoiseScale, limits::kMaxNoiseScale]
     // Tiles per second, two layers; any finite value (the scroll is taken modulo one tile in
     // double precision).
     std::array<float, 4> noiseVelocity{0.05f, 0.02f, -0.03f, 0.04f};
@@ -280,7 +281,7 @@ struct Camera {
 
 struct Light {
     LightType type = LightType::Directional;
-    Vec3 position{0, 0, 0};       // point, spot; each in [-limits::kMaxLength, kMaxLength]
+    Vec3 position{0, 0, 0};  // point, spot; each in [-limits::kMaxLength, kMaxLength]
     // Direction light travels (directional), cone axis (spot): finite, not zero (normalised in
     // double precision, so any such length will do).
     Vec3 direction{0, -1, 0};
@@ -312,7 +313,7 @@ struct Light {
     // refused naming light.cubeFaceViewProjections[i]. Epipolar (face by face) and brute-force
     // sample a cube shadow map; the other methods refuse it.
     std::array<Mat4, 6> cubeFaceViewProjections{};
-    uint32_t shadowMapSize = 0;   // 0: no shadow map
+    uint32_t shadowMapSize = 0;  // 0: no shadow map
     bool shadowReversedZ = false;
 };
 
@@ -374,8 +375,8 @@ struct ImageInput {
     uint32_t arrayLayers = 1;  // 6 for a point light's cube shadow map, else 1
 };
 
-// Seed 004's occluders: bounding volumes of the scene's objects, in world space (metres), from which
-// the beam-tree methods work out on the CPU which parts of a point or spot light's volume are
+// Seed 004's occluders: bounding volumes of the scene's objects, in world space (metres), from
+// which the beam-tree methods work out on the CPU which parts of a point or spot light's volume are
 // certainly lit, uncertain or certainly dark. An oriented box: `axes` orthonormal (to 1e-3),
 // `halfExtents` > 0 along them.
 struct OccluderBox {
@@ -416,7 +417,7 @@ struct DebugOptions {
 // the meaning and rules of FrameDescription::light, shadowMap and lightColor.
 struct LightInput {
     Light light;
-    std::optional<ImageInput> shadowMap;   // the light's depth (sampled); 6 layers for a point light
+    std::optional<ImageInput> shadowMap;  // the light's depth (sampled); 6 layers for a point light
     std::optional<ImageInput> lightColor;  // optional light-space color (stained glass), sampled
     // This light's own settings (for instance profileSettings(Profile::HighPerformance) for a small
     // spot beside a high-quality sun): its chain uses them as if the frame's profile were Custom
@@ -427,10 +428,10 @@ struct LightInput {
 };
 
 struct FrameDescription {
-    ImageInput depth;       // D16/D24/D32 (sampled); the camera's depth
-    ImageInput color;       // linear HDR color (storage, R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT)
-    std::optional<ImageInput> shadowMap;   // the light's depth (sampled); 6 layers for a point light
-    std::optional<ImageInput> lightColor;  // optional light-space color (stained glass), sampled
+    ImageInput depth;  // D16/D24/D32 (sampled); the camera's depth
+    ImageInput color;  // linear HDR color (storage, R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT)
+    std::optional<ImageInput> shadowMap;  // the light's depth (sampled); 6 layers for a point light
+    std::optional<ImageInput> lightColor;    // optional light-space color (stained glass), sampled
     std::optional<ImageInput> inscatterOut;  // optional: Lin alone, R32G32B32A32_SFLOAT storage
     // Optional tiling noise for Settings::noiseAmplitude (sampled, repeating; red and green are two
     // independent layers with values in [0, 1] and mean 0.5). Without it the plugin makes its own.
@@ -465,14 +466,14 @@ struct FrameDescription {
 // (as a path from FrameDescription: "custom.slices", "depth.layout"; or from VulkanContext:
 // "context.enabledFeatures") and the rule. The engine's images and command buffer are untouched.
 class LIGHTSCATTER_API InvalidInput : public std::invalid_argument {
-public:
+  public:
     using std::invalid_argument::invalid_argument;
 };
 
 // Thrown when Vulkan fails the plugin: out of device or host memory while building a frame's
 // textures or pipelines, a lost device. The message names the call, and the resource or pass.
 class LIGHTSCATTER_API DeviceError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 
@@ -510,9 +511,9 @@ struct FrameReport {
     std::vector<PassTime> cpuWork;  // CPU time the plugin spent preparing the frame (the beam tree)
     double totalMilliseconds = 0;
     std::string device;
-    std::vector<std::string> passNames;   // the nodes this frame was built from
-    std::vector<std::string> setupPasses; // run before the frame this time (the point-light table)
-    std::string depthStencilFormat;       // what was chosen for the stencil textures
+    std::vector<std::string> passNames;    // the nodes this frame was built from
+    std::vector<std::string> setupPasses;  // run before the frame this time (the point-light table)
+    std::string depthStencilFormat;        // what was chosen for the stencil textures
     // With DebugOptions::countSteps on an epipolar frame, once `timed` (the frame is done): what
     // its ray march did. Empty otherwise.
     std::optional<StepCounts> steps;
@@ -539,9 +540,9 @@ struct Budget {
     Settings settings;
     uint32_t screenWidth = 0, screenHeight = 0;
     std::vector<BudgetEntry> entries;
-    uint64_t totalBytes = 0;   // everything, each in memory of its own
-    uint64_t peakBytes = 0;    // with transient aliasing (plus persistent resources)
-    bool estimated = true;     // sizes estimated without a device
+    uint64_t totalBytes = 0;  // everything, each in memory of its own
+    uint64_t peakBytes = 0;   // with transient aliasing (plus persistent resources)
+    bool estimated = true;    // sizes estimated without a device
     std::string depthStencilFormat;
     std::optional<SeedFigure> seed;  // the seed's published figure for this profile
 };
@@ -618,7 +619,7 @@ struct VulkanContext {
 };
 
 class LIGHTSCATTER_API Plugin {
-public:
+  public:
     // Throws InvalidInput for a context that lacks a handle or a feature (see VulkanContext).
     explicit Plugin(const VulkanContext& context);
     ~Plugin();
@@ -656,7 +657,7 @@ public:
     std::string graphDot() const;
     std::string graphJson() const;
 
-private:
+  private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

@@ -13,7 +13,9 @@
 namespace lightscatter::detail {
 namespace {
 
-[[noreturn]] void fail(const std::string& message) { throw InvalidInput("lightscatter: " + message); }
+[[noreturn]] void fail(const std::string& message) {
+    throw InvalidInput("lightscatter: " + message);
+}
 
 std::string num(double v) {
     char buf[64];
@@ -28,7 +30,9 @@ std::string metres(double v) {
     return buf;
 }
 
-bool finite(float v) { return std::isfinite(v); }
+bool finite(float v) {
+    return std::isfinite(v);
+}
 
 glm::mat4 matrix(const Mat4& m, const std::string& field) {
     for (size_t i = 0; i < 16; ++i)
@@ -41,7 +45,8 @@ glm::mat4 matrix(const Mat4& m, const std::string& field) {
 glm::vec3 vec(const Vec3& v, const std::string& field, bool nonNegative) {
     for (size_t i = 0; i < 3; ++i) {
         if (!finite(v[i])) fail(field + " has a non-finite component (" + num(v[i]) + ")");
-        if (nonNegative && v[i] < 0.0f) fail(field + " = " + num(v[i]) + " in a channel: must be >= 0");
+        if (nonNegative && v[i] < 0.0f)
+            fail(field + " = " + num(v[i]) + " in a channel: must be >= 0");
     }
     return {v[0], v[1], v[2]};
 }
@@ -405,7 +410,9 @@ const CubeFace kCubeFaces[6] = {
     {"+Z", {0, 0, 1}, {1, 0, 0}, {0, -1, 0}},  {"-Z", {0, 0, -1}, {-1, 0, 0}, {0, -1, 0}},
 };
 
-std::string ndcText(double x, double y) { return "(" + num(x) + ", " + num(y) + ")"; }
+std::string ndcText(double x, double y) {
+    return "(" + num(x) + ", " + num(y) + ")";
+}
 
 // Checks face `i`'s world -> clip matrix against the face it must be: its axis, its corners (a
 // 90-degree square frustum with Vulkan's orientation) and its depth direction, at 1 m and 10 m
@@ -416,17 +423,17 @@ glm::mat4 checkCubeFace(const Mat4& given, size_t i, const glm::vec3& light, boo
     const glm::mat4 m = matrix(given, field);
     const CubeFace& f = kCubeFaces[i];
     if (conditioning(m) < 1e-9)
-        fail(field + " is singular (all zero?): a point light's shadow map needs each face's world -> clip "
-                     "matrix (face " + f.name + ")");
+        fail(field +
+             " is singular (all zero?): a point light's shadow map needs each face's world -> clip "
+             "matrix (face " +
+             f.name + ")");
     checkMatrixScale(m, field);
     const glm::dmat4 d(m);
     const glm::dvec3 L(light);
     double depthAt[2] = {0, 0};
     for (int k = 0; k < 2; ++k) {
         const double dist = k == 0 ? 1.0 : 10.0;
-        const struct {
-            double u, v;
-        } probes[4] = {{0, 0}, {1, 0}, {0, 1}, {-1, -1}};
+        const struct { double u, v; } probes[4] = {{0, 0}, {1, 0}, {0, 1}, {-1, -1}};
         for (const auto& p : probes) {
             const glm::dvec3 dir = f.axis + p.u * f.sc + p.v * f.tc;
             const glm::dvec4 c = d * glm::dvec4(L + dist * dir, 1.0);
@@ -437,10 +444,11 @@ glm::mat4 checkCubeFace(const Mat4& given, size_t i, const glm::vec3& light, boo
             const double x = c.x / c.w, y = c.y / c.w;
             if (std::fabs(x - p.u) > 1e-3 || std::fabs(y - p.v) > 1e-3) {
                 if (p.u == 0 && p.v == 0)
-                    fail(field + " does not look along " + f.name + " from light.position: the axis " +
-                         metres(dist) + " out lands at clip " + ndcText(x, y) +
-                         ", not the centre (face order +X, -X, +Y, -Y, +Z, -Z)");
-                fail(field + " is not face " + f.name + " as Vulkan samples a cube: a direction that must land at clip " +
+                    fail(field + " does not look along " + f.name +
+                         " from light.position: the axis " + metres(dist) + " out lands at clip " +
+                         ndcText(x, y) + ", not the centre (face order +X, -X, +Y, -Y, +Z, -Z)");
+                fail(field + " is not face " + f.name +
+                     " as Vulkan samples a cube: a direction that must land at clip " +
                      ndcText(p.u, p.v) + " lands at " + ndcText(x, y) +
                      " (a 90-degree square frustum, oriented as lightscatter.h documents)");
             }
@@ -450,8 +458,9 @@ glm::mat4 checkCubeFace(const Mat4& given, size_t i, const glm::vec3& light, boo
     const bool decreasing = depthAt[1] < depthAt[0];
     if (depthAt[1] == depthAt[0] || decreasing != reversedZ)
         fail(field + " puts depth " + num(depthAt[0]) + " at 1 m and " + num(depthAt[1]) +
-             " at 10 m from the light, but light.shadowReversedZ is " + (reversedZ ? "true" : "false") +
-             ": depth must " + (reversedZ ? "decrease" : "increase") + " away from the light");
+             " at 10 m from the light, but light.shadowReversedZ is " +
+             (reversedZ ? "true" : "false") + ": depth must " +
+             (reversedZ ? "decrease" : "increase") + " away from the light");
     return m;
 }
 
@@ -463,18 +472,23 @@ void checkBox(const OccluderBox& b, const std::string& field) {
     const glm::vec3 c = vec(b.center, field + ".center", false);
     const glm::vec3 h = vec(b.halfExtents, field + ".halfExtents", false);
     for (int i = 0; i < 3; ++i) {
-        if (!(h[i] > 0.0f)) fail(field + ".halfExtents[" + std::to_string(i) + "] = " + num(h[i]) + ": must be > 0");
+        if (!(h[i] > 0.0f))
+            fail(field + ".halfExtents[" + std::to_string(i) + "] = " + num(h[i]) +
+                 ": must be > 0");
         // The beam tree works in double, but its pyramids end on the shaders' float lengths.
         if (std::fabs(c[i]) > limits::kMaxLength || h[i] > limits::kMaxLength)
-            fail(field + (std::fabs(c[i]) > limits::kMaxLength ? ".center[" : ".halfExtents[") + std::to_string(i) +
-                 "] = " + num(std::fabs(c[i]) > limits::kMaxLength ? c[i] : h[i]) + ": must be within +-" +
-                 num(limits::kMaxLength) + " m (limits::kMaxLength)");
+            fail(field + (std::fabs(c[i]) > limits::kMaxLength ? ".center[" : ".halfExtents[") +
+                 std::to_string(i) +
+                 "] = " + num(std::fabs(c[i]) > limits::kMaxLength ? c[i] : h[i]) +
+                 ": must be within +-" + num(limits::kMaxLength) + " m (limits::kMaxLength)");
     }
     glm::vec3 a[3];
     for (int i = 0; i < 3; ++i) {
-        a[i] = vec(b.axes[static_cast<size_t>(i)], field + ".axes[" + std::to_string(i) + "]", false);
+        a[i] =
+            vec(b.axes[static_cast<size_t>(i)], field + ".axes[" + std::to_string(i) + "]", false);
         if (std::fabs(glm::length(a[i]) - 1.0f) > 1e-3f)
-            fail(field + ".axes[" + std::to_string(i) + "] has length " + num(glm::length(a[i])) + ": must be unit");
+            fail(field + ".axes[" + std::to_string(i) + "] has length " + num(glm::length(a[i])) +
+                 ": must be unit");
     }
     for (int i = 0; i < 3; ++i)
         if (std::fabs(glm::dot(a[i], a[(i + 1) % 3])) > 1e-3f)
@@ -497,7 +511,8 @@ bool boxInside(const OccluderBox& inner, const OccluderBox& outer) {
         }
         for (int i = 0; i < 3; ++i) {
             const auto& ax = outer.axes[static_cast<size_t>(i)];
-            if (std::fabs(glm::dot(p - oc, glm::vec3(ax[0], ax[1], ax[2]))) > oh[i] + tolerance) return false;
+            if (std::fabs(glm::dot(p - oc, glm::vec3(ax[0], ax[1], ax[2]))) > oh[i] + tolerance)
+                return false;
         }
     }
     return true;
@@ -538,7 +553,8 @@ void checkOccluders(const std::vector<Occluder>& occluders) {
         if (!occluders[i].inner) continue;
         checkBox(*occluders[i].inner, field + ".inner");
         if (!boxInside(*occluders[i].inner, occluders[i].outer))
-            fail(field + ".inner is not inside " + field + ".outer: an inner box lies within the object, "
+            fail(field + ".inner is not inside " + field +
+                 ".outer: an inner box lies within the object, "
                  "and the outer box encloses it");
     }
 }
@@ -574,7 +590,8 @@ void checkSettings(const Settings& s, const std::string& at) {
     if (s.sliceRange != 0.0f)
         inRange(s.sliceRange, c + "sliceRange", 1e-30, 1e30,
                 "or 0: automatic; the 8-bit target is scaled by 4 / sliceRange");
-    if (s.sliceBlur > 8) fail(c + "sliceBlur = " + std::to_string(s.sliceBlur) + ": at most 8 pixels");
+    if (s.sliceBlur > 8)
+        fail(c + "sliceBlur = " + std::to_string(s.sliceBlur) + ": at most 8 pixels");
     inRange(s.sliceAmbient, c + "sliceAmbient", 0.0, limits::kMaxAmbient,
             "1/m^2, beside the inverse square; lightscatter.h, limits::kMaxAmbient");
     if (!(s.noiseAmplitude >= 0.0f && s.noiseAmplitude <= 1.0f))
@@ -586,8 +603,7 @@ void checkSettings(const Settings& s, const std::string& at) {
             fail(c + "noiseVelocity[" + std::to_string(i) + "] is not finite");
     if (s.lightModel != LightModel::Full && s.lightModel != LightModel::Simplified)
         fail(c + "lightModel is not a LightModel value");
-    inRange(s.simplifiedA1, c + "simplifiedA1", limits::kMinSimplifiedA1,
-            limits::kMaxSimplifiedA1,
+    inRange(s.simplifiedA1, c + "simplifiedA1", limits::kMinSimplifiedA1, limits::kMaxSimplifiedA1,
             "seed 004's falloff I / (a1 r^2 + a0); lightscatter.h, limits::kMinSimplifiedA1");
     inRange(s.simplifiedA0, c + "simplifiedA0", 0.0, limits::kMaxSimplifiedA0,
             "m^2, seed 004's falloff I / (a1 r^2 + a0); lightscatter.h, limits::kMaxSimplifiedA0");
@@ -642,7 +658,8 @@ FrameSetup setupFrameWide(const FrameDescription& f, bool withImages) {
     s.medium.sigmaA = vecInRange(m.sigmaA, "medium.sigmaA", 0.0, limits::kMaxCoefficient, perMetre);
     if (!(m.g > -1.0f && m.g < 1.0f)) fail("medium.g = " + num(m.g) + ": must be in (-1, 1)");
     s.medium.g = m.g;
-    if (m.phase != MiePhase::CornetteShanks && m.phase != MiePhase::Isotropic && m.phase != MiePhase::Hazy)
+    if (m.phase != MiePhase::CornetteShanks && m.phase != MiePhase::Isotropic &&
+        m.phase != MiePhase::Hazy)
         fail("medium.phase is not a MiePhase value");
     s.medium.isotropicMie = m.phase == MiePhase::Isotropic;
     s.medium.hazyMie = m.phase == MiePhase::Hazy;
@@ -653,7 +670,8 @@ FrameSetup setupFrameWide(const FrameDescription& f, bool withImages) {
 
     // Images.
     s.engineNoise = f.noise.has_value();
-    s.depthAttachment = !withImages || (f.depth.usage & VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT) != 0;
+    s.depthAttachment =
+        !withImages || (f.depth.usage & VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT) != 0;
     s.inscatterOut = f.inscatterOut.has_value();
     if (withImages) {
         checkImage(f.depth, "depth", VK_IMAGE_USAGE_SAMPLED_BIT, "SAMPLED");
@@ -667,7 +685,8 @@ FrameSetup setupFrameWide(const FrameDescription& f, bool withImages) {
             f.color.extent.height != f.depth.extent.height)
             fail("color.extent " + std::to_string(f.color.extent.width) + "x" +
                  std::to_string(f.color.extent.height) + " differs from depth.extent " +
-                 std::to_string(f.depth.extent.width) + "x" + std::to_string(f.depth.extent.height));
+                 std::to_string(f.depth.extent.width) + "x" +
+                 std::to_string(f.depth.extent.height));
         s.screen = f.depth.extent;
         oneLayer(&f.depth, "depth");
         oneLayer(&f.color, "color");
@@ -712,7 +731,8 @@ void setupLight(FrameSetup& s, const LightInput& light, const LightPaths& at, bo
     s.light.intensity = vecInRange(l.intensity, at.light + ".intensity", 0.0, limits::kMaxIntensity,
                                    "W/m^2 or W/sr; lightscatter.h, limits::kMaxIntensity");
     if (l.type == LightType::Spot)
-        inRange(l.halfAngleDegrees, at.light + ".halfAngleDegrees", limits::kMinHalfAngleDegrees, 89.0,
+        inRange(l.halfAngleDegrees, at.light + ".halfAngleDegrees", limits::kMinHalfAngleDegrees,
+                89.0,
                 "degrees; below it single precision cannot resolve the cone, lightscatter.h, "
                 "limits::kMinHalfAngleDegrees");
     s.light.cosHalfAngle = std::cos(l.halfAngleDegrees * 3.14159265f / 180.0f);
@@ -726,14 +746,15 @@ void setupLight(FrameSetup& s, const LightInput& light, const LightPaths& at, bo
     s.light.shadowReversedZ = l.shadowReversedZ;
     if (l.type == LightType::Point && l.shadowMapSize > 0) {
         for (size_t i = 0; i < 6; ++i)
-            s.light.cubeFaceViewProj[i] =
-                checkCubeFace(l.cubeFaceViewProjections[i], i, s.light.position, l.shadowReversedZ, at.light);
+            s.light.cubeFaceViewProj[i] = checkCubeFace(
+                l.cubeFaceViewProjections[i], i, s.light.position, l.shadowReversedZ, at.light);
     } else if (l.shadowMapSize > 0) {
         s.light.shadowViewProj = matrix(l.shadowViewProjection, at.light + ".shadowViewProjection");
         // An all-zero (default) or otherwise singular matrix puts every point at one texel and
         // depth: the light would silently vanish or light everything.
         if (conditioning(s.light.shadowViewProj) < 1e-9)
-            fail(at.light + ".shadowViewProjection is singular (all zero?): with light.shadowMapSize " +
+            fail(at.light +
+                 ".shadowViewProjection is singular (all zero?): with light.shadowMapSize " +
                  std::to_string(l.shadowMapSize) +
                  " it must be the shadow map's world -> light clip matrix");
         checkMatrixScale(s.light.shadowViewProj, at.light + ".shadowViewProjection");
@@ -752,11 +773,14 @@ void setupLight(FrameSetup& s, const LightInput& light, const LightPaths& at, bo
             const ImageInput& map = *light.shadowMap;
             const uint32_t layers = l.type == LightType::Point ? 6 : 1;
             if (map.arrayLayers != layers)
-                fail(at.shadowMap + ".arrayLayers = " + std::to_string(map.arrayLayers) + ": must be " +
-                     (layers == 6 ? std::string("6 for a point light (its cube faces +X, -X, +Y, -Y, +Z, -Z)")
-                                  : std::string("1 for a ") +
-                                        (l.type == LightType::Spot ? "spot" : "directional") +
-                                        " light (6 only for a point light's cube map)"));
+                fail(at.shadowMap + ".arrayLayers = " + std::to_string(map.arrayLayers) +
+                     ": must be " +
+                     (layers == 6
+                          ? std::string(
+                                "6 for a point light (its cube faces +X, -X, +Y, -Y, +Z, -Z)")
+                          : std::string("1 for a ") +
+                                (l.type == LightType::Spot ? "spot" : "directional") +
+                                " light (6 only for a point light's cube map)"));
             checkImage(map, at.shadowMap, VK_IMAGE_USAGE_SAMPLED_BIT, "SAMPLED");
             checkDepthFormat(map.format, at.shadowMap);
             if (map.extent.width != l.shadowMapSize || map.extent.height != l.shadowMapSize)
@@ -768,9 +792,11 @@ void setupLight(FrameSetup& s, const LightInput& light, const LightPaths& at, bo
             checkImage(*light.lightColor, at.lightColor, VK_IMAGE_USAGE_SAMPLED_BIT, "SAMPLED");
     }
     if (s.lightColor && !s.shadowed)
-        fail(at.lightColor + " needs a shadow-mapped light: the color is looked up in the shadow map's space");
+        fail(at.lightColor +
+             " needs a shadow-mapped light: the color is looked up in the shadow map's space");
     if (s.lightColor && l.type == LightType::Point)
-        fail(at.lightColor + " is not supported with a point light: a light-space color texture needs a "
+        fail(at.lightColor +
+             " is not supported with a point light: a light-space color texture needs a "
              "spot or directional light's single shadow-map frustum");
 
     applySettings(s, s.settings, l.shadowMapSize);
@@ -778,7 +804,8 @@ void setupLight(FrameSetup& s, const LightInput& light, const LightPaths& at, bo
 
 FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
     FrameSetup s = setupFrameWide(f, withImages);
-    setupLight(s, LightInput{f.light, f.shadowMap, f.lightColor, std::nullopt}, LightPaths{}, withImages);
+    setupLight(s, LightInput{f.light, f.shadowMap, f.lightColor, std::nullopt}, LightPaths{},
+               withImages);
     return s;
 }
 
@@ -830,12 +857,12 @@ namespace {
 bool defaultLight(const Light& l) {
     const Light d;
     return l.type == d.type && l.position == d.position && l.direction == d.direction &&
-           l.intensity == d.intensity && l.halfAngleDegrees == d.halfAngleDegrees && l.range == d.range &&
-           l.radius == d.radius && l.shadowViewProjection == d.shadowViewProjection &&
-           l.cubeFaceViewProjections == d.cubeFaceViewProjections && l.shadowMapSize == d.shadowMapSize &&
-           l.shadowReversedZ == d.shadowReversedZ;
+           l.intensity == d.intensity && l.halfAngleDegrees == d.halfAngleDegrees &&
+           l.range == d.range && l.radius == d.radius &&
+           l.shadowViewProjection == d.shadowViewProjection &&
+           l.cubeFaceViewProjections == d.cubeFaceViewProjections &&
+           l.shadowMapSize == d.shadowMapSize && l.shadowReversedZ == d.shadowReversedZ;
 }
-
 
 }  // namespace
 
@@ -846,11 +873,13 @@ std::vector<FrameSetup> setupLights(const FrameDescription& frame, bool withImag
     if (frame.lightColor) both += both.empty() ? "lightColor" : ", lightColor";
     if (!both.empty())
         fail("lights holds " + std::to_string(frame.lights.size()) + " lights and " + both +
-             " is given too: give the single light (light, shadowMap, lightColor) or the list (lights), "
+             " is given too: give the single light (light, shadowMap, lightColor) or the list "
+             "(lights), "
              "never both");
     if (frame.lights.size() > kMaxLights)
         fail("lights holds " + std::to_string(frame.lights.size()) + " lights: at most " +
-             std::to_string(kMaxLights) + " (kMaxLights; each light is a chain of passes and a table of its own)");
+             std::to_string(kMaxLights) +
+             " (kMaxLights; each light is a chain of passes and a table of its own)");
     // The frame's own part once; whatever fails there is not about a light.
     const FrameSetup frameWide = setupFrameWide(frame, withImages);
     std::vector<FrameSetup> setups;

@@ -44,20 +44,22 @@ void applySettings(ls::LightSetup& s, const Settings& settings, uint32_t shadowM
 // Checks everything; `withImages` false skips the image handles (the budget has none).
 FrameSetup setupFrame(const FrameDescription& frame, bool withImages = true);
 
-// Several lights (FrameDescription::lights): refuses a frame that gives both the list and the single
-// light's fields, checks the frame's part once, then each light (errors name lights[i].field).
-// Returns each light's setup, in order.
+// Several lights (FrameDescription::lights): refuses a frame that gives both the list and the
+// single light's fields, checks the frame's part once, then each light (errors name
+// lights[i].field). Returns each light's setup, in order.
 std::vector<FrameSetup> setupLights(const FrameDescription& frame, bool withImages = true);
-// How the engine named a light's fields: `light`, `shadowMap`, `lightColor` and `custom` for a frame
-// that gave `light`, lights[i].light ... lights[i].settings (or `custom` without own settings) for
-// the list.
+// How the engine named a light's fields: `light`, `shadowMap`, `lightColor` and `custom` for a
+// frame that gave `light`, lights[i].light ... lights[i].settings (or `custom` without own
+// settings) for the list.
 struct LightPaths {
-    std::string light = "light", shadowMap = "shadowMap", lightColor = "lightColor", settings = "custom";
+    std::string light = "light", shadowMap = "shadowMap", lightColor = "lightColor",
+                settings = "custom";
 };
 // The frame's part (settings, time, camera, medium, the engine's depth, color, noise and output),
 // and a light's part added to it (the light, its images and its own settings), each checked.
 FrameSetup setupFrameWide(const FrameDescription& frame, bool withImages = true);
-void setupLight(FrameSetup& setup, const LightInput& light, const LightPaths& paths, bool withImages = true);
+void setupLight(FrameSetup& setup, const LightInput& light, const LightPaths& paths,
+                bool withImages = true);
 
 // The settings a frame runs with: `custom`, with the profile's sizes where the profile is not
 // Custom (Settings' comments say which fields those are).

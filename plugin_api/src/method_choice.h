@@ -21,10 +21,10 @@ inline constexpr float kAnalyticMaxOpticalDepth = 0.007f;
 inline constexpr uint32_t kEpipolarSamplesPerPixel = 24;
 
 struct MethodChoice {
-    Method method = Method::Epipolar;  // never Auto
+    Method method = Method::Epipolar;      // never Auto
     const ls::MethodUnit* unit = nullptr;  // the method's
-    std::string reason;                // why, for Auto; empty otherwise
-    std::string notice;                // an assumption of the method that the frame breaks
+    std::string reason;                    // why, for Auto; empty otherwise
+    std::string notice;                    // an assumption of the method that the frame breaks
 };
 
 // Throws InvalidInput naming the method and the rule when it cannot honour the frame.

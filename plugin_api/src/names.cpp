@@ -1,6 +1,6 @@
 // Method and profile names (the command line's contract) and the seed's quality profiles.
-#include "lightscatter.h"
 #include "frame_setup.h"
+#include "lightscatter.h"
 #include "method_units.h"
 #include "registry/method_registry.h"
 
@@ -13,14 +13,15 @@ struct ProfileRow {
     Profile profile;
     const char* name;
     uint32_t slices, samples, shadowMap;
-    uint32_t planes;          // the slices method (seed 002)
+    uint32_t planes;  // the slices method (seed 002)
     SliceTarget sliceTarget;
 };
 
-// Seed 000, "Performance": 2560x1600 on a GeForce GTX 680 and the smaller set used on a Quadro 1000M
-// and Intel HD Graphics. The plane counts are ours (docs/methods.md); high-performance is seed 002's
-// own configuration, 100 planes into the four channels of an 8-bit target.
-constexpr SliceTarget kF16 = SliceTarget::Float16, kF32 = SliceTarget::Float32, kRgba8 = SliceTarget::Rgba8Channels;
+// Seed 000, "Performance": 2560x1600 on a GeForce GTX 680 and the smaller set used on a Quadro
+// 1000M and Intel HD Graphics. The plane counts are ours (docs/methods.md); high-performance is
+// seed 002's own configuration, 100 planes into the four channels of an 8-bit target.
+constexpr SliceTarget kF16 = SliceTarget::Float16, kF32 = SliceTarget::Float32,
+                      kRgba8 = SliceTarget::Rgba8Channels;
 constexpr ProfileRow kProfiles[] = {
     {Profile::HighQuality, "high-quality", 2048, 1024, 4096, 256, kF32},
     {Profile::Balanced, "balanced", 1024, 1024, 2048, 128, kF16},
@@ -81,7 +82,9 @@ std::vector<std::string> profileNames() {
     return v;
 }
 
-Settings profileSettings(Profile profile) { return detail::withProfileSizes(Settings{}, profile); }
+Settings profileSettings(Profile profile) {
+    return detail::withProfileSizes(Settings{}, profile);
+}
 
 Settings detail::withProfileSizes(Settings s, Profile profile) {
     if (profile == Profile::Custom) return s;
@@ -96,6 +99,8 @@ Settings detail::withProfileSizes(Settings s, Profile profile) {
     return s;
 }
 
-std::vector<const char*> requiredDeviceExtensions() { return {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME}; }
+std::vector<const char*> requiredDeviceExtensions() {
+    return {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
+}
 
 }  // namespace lightscatter

@@ -19,7 +19,7 @@ ls::ref::Light toReferenceLight(const LightDesc& l) {
     ls::ref::Light out;
     out.type = l.type == lightscatter::LightType::Directional ? ls::ref::Light::Directional
                : l.type == lightscatter::LightType::Spot      ? ls::ref::Light::Spot
-                                                : ls::ref::Light::Point;
+                                                              : ls::ref::Light::Point;
     out.position = glm::dvec3(l.position);
     out.direction = glm::normalize(glm::dvec3(l.direction));
     out.intensity = glm::dvec3(l.intensity);
@@ -37,7 +37,7 @@ ls::ref::Medium toReferenceMedium(const MediumDesc& m) {
     out.g = m.g;
     out.miePhase = m.phase == lightscatter::MiePhase::Isotropic ? ls::ref::Medium::Isotropic
                    : m.phase == lightscatter::MiePhase::Hazy    ? ls::ref::Medium::Hazy
-                                                   : ls::ref::Medium::CornetteShanks;
+                                                                : ls::ref::Medium::CornetteShanks;
     out.maxDistance = m.maxDistance;
     return out;
 }

@@ -99,7 +99,8 @@ glm::dvec3 pointArctanClosedForm(const Medium& medium, const Light& light, const
     return light.intensity * medium.betaM * (kIsotropicPhase * sum);
 }
 
-glm::dvec3 simplifiedClosedForm(const Medium& medium, const Light& light, const Ray& ray, double a0, double a1) {
+glm::dvec3 simplifiedClosedForm(const Medium& medium, const Light& light, const Ray& ray, double a0,
+                                double a1) {
     const Interval whole{0.0, ray.length};
     return simplifiedClosedForm(medium, light, ray, {&whole, 1}, a0, a1);
 }

@@ -51,9 +51,10 @@ namespace ls::ref {
 // betaS I / (4 pi a1) times the arctangent integral with w^2 = h^2 + a0 / a1, h the ray's distance
 // from the light. a1 = 1, a0 = r0^2 is seed 001's closed form with the model's r0. Throws
 // std::invalid_argument for a directional light, a1 <= 0 or a0 < 0.
-[[nodiscard]] glm::dvec3 simplifiedClosedForm(const Medium& medium, const Light& light, const Ray& ray,
+[[nodiscard]] glm::dvec3 simplifiedClosedForm(const Medium& medium, const Light& light,
+                                              const Ray& ray, double a0, double a1);
+[[nodiscard]] glm::dvec3 simplifiedClosedForm(const Medium& medium, const Light& light,
+                                              const Ray& ray, std::span<const Interval> lit,
                                               double a0, double a1);
-[[nodiscard]] glm::dvec3 simplifiedClosedForm(const Medium& medium, const Light& light, const Ray& ray,
-                                              std::span<const Interval> lit, double a0, double a1);
 
 }  // namespace ls::ref

@@ -29,9 +29,12 @@ double phaseHazy(double cosTheta) {
 
 double Medium::pM(double cosTheta) const {
     switch (miePhase) {
-        case Isotropic: return kIsotropicPhase;
-        case Hazy: return phaseHazy(cosTheta);
-        case CornetteShanks: break;
+        case Isotropic:
+            return kIsotropicPhase;
+        case Hazy:
+            return phaseHazy(cosTheta);
+        case CornetteShanks:
+            break;
     }
     return phaseCornetteShanks(cosTheta, g);
 }

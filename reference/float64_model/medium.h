@@ -32,15 +32,16 @@ struct Medium {
 // Cornette-Shanks with asymmetry g, 1/sr.
 [[nodiscard]] double phaseCornetteShanks(double cosTheta, double g);
 
-// Seed 004's (after Nishita) phase function for a hazy atmosphere, K (1 + 9 cos^16(alpha / 2)), 1/sr,
-// with cos^16(alpha / 2) = ((1 + cos alpha) / 2)^8 and K = 1 / (8 pi): over the sphere
-// 2 pi integral_{-1}^{1} ((1 + x) / 2)^8 dx = 4 pi / 9, so the integral of p is K (4 pi + 4 pi) = 1.
+// Seed 004's (after Nishita) phase function for a hazy atmosphere, K (1 + 9 cos^16(alpha / 2)),
+// 1/sr, with cos^16(alpha / 2) = ((1 + cos alpha) / 2)^8 and K = 1 / (8 pi): over the sphere 2 pi
+// integral_{-1}^{1} ((1 + x) / 2)^8 dx = 4 pi / 9, so the integral of p is K (4 pi + 4 pi) = 1.
 [[nodiscard]] double phaseHazy(double cosTheta);
 inline constexpr double kHazyK = 1.0 / (8.0 * 3.141592653589793238462643383279502884);
 // The K seed 004's appendix A gives, 1 / 16.45948 (= 2^15 / (54647 pi^2)): it integrates p times
 // sqrt(1 - x^2) over x, a ring's radius where the sphere's area element 2 pi dx has none, and so
 // normalises to 1.527 instead of 1 (tests/float64_model/phase_test.cpp).
-inline constexpr double kSeed004HazyK = 32768.0 / (54647.0 * 9.869604401089358618834490999876151135);
+inline constexpr double kSeed004HazyK =
+    32768.0 / (54647.0 * 9.869604401089358618834490999876151135);
 
 inline constexpr double kPi = 3.141592653589793238462643383279502884;
 inline constexpr double kIsotropicPhase = 1.0 / (4.0 * kPi);

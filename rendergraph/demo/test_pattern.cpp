@@ -23,7 +23,9 @@ struct TestPatternPipelines {
 
 namespace {
 
-uint32_t groups(uint32_t n) { return (n + 7) / 8; }
+uint32_t groups(uint32_t n) {
+    return (n + 7) / 8;
+}
 
 GraphicsPipelineDesc fullscreen(ShaderCode fragment, const PassContext& ctx) {
     GraphicsPipelineDesc d;
@@ -56,7 +58,9 @@ TestPatternHandles declareTestPattern(RenderGraph& graph, VkExtent2D size, VkFor
                                                    spirv(ls_spirv::pattern_comp),
                                                    {{0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}});
             pipes->pattern.bind(ctx.cmd());
-            DescriptorPush().storage(0, ctx.view(out)).push(ctx.device(), ctx.cmd(), pipes->pattern);
+            DescriptorPush()
+                .storage(0, ctx.view(out))
+                .push(ctx.device(), ctx.cmd(), pipes->pattern);
             const VkExtent2D e = ctx.extent(out);
             vkCmdDispatch(ctx.cmd(), groups(e.width), groups(e.height), 1);
         });
@@ -70,8 +74,13 @@ TestPatternHandles declareTestPattern(RenderGraph& graph, VkExtent2D size, VkFor
                 auto d = fullscreen(spirv(ls_spirv::circle_mask_frag), ctx);
                 d.pushConstantBytes = 8;
                 d.stencilTest = true;
-                d.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_REPLACE, VK_STENCIL_OP_KEEP,
-                             VK_COMPARE_OP_ALWAYS, 0xff, 0xff, 1};
+                d.stencil = {VK_STENCIL_OP_KEEP,
+                             VK_STENCIL_OP_REPLACE,
+                             VK_STENCIL_OP_KEEP,
+                             VK_COMPARE_OP_ALWAYS,
+                             0xff,
+                             0xff,
+                             1};
                 pipes->mask = Pipeline::graphics(ctx.device(), "mark circle in stencil", d);
             }
             pipes->mask.bind(ctx.cmd());
@@ -92,12 +101,18 @@ TestPatternHandles declareTestPattern(RenderGraph& graph, VkExtent2D size, VkFor
             Pipeline& p = invert ? pipes->invert : pipes->copy;
             if (!p) {
                 auto d = fullscreen(spirv(ls_spirv::copy_frag), ctx);
-                d.bindings = {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT}};
+                d.bindings = {
+                    {0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT}};
                 d.specialization.set(0, invert);
                 if (invert) {
                     d.stencilTest = true;
-                    d.stencil = {VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP,
-                                 VK_COMPARE_OP_EQUAL, 0xff, 0, 1};
+                    d.stencil = {VK_STENCIL_OP_KEEP,
+                                 VK_STENCIL_OP_KEEP,
+                                 VK_STENCIL_OP_KEEP,
+                                 VK_COMPARE_OP_EQUAL,
+                                 0xff,
+                                 0,
+                                 1};
                 }
                 p = Pipeline::graphics(ctx.device(), name, d);
             }
@@ -119,9 +134,10 @@ TestPatternHandles declareTestPattern(RenderGraph& graph, VkExtent2D size, VkFor
         const ImageRef src = h.composed;
         pass.execute([pipes, src, out](PassContext& ctx) {
             if (!pipes->blur)
-                pipes->blur = Pipeline::compute(
-                    ctx.device(), "blur to 8-bit", spirv(ls_spirv::blur_comp),
-                    {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}});
+                pipes->blur =
+                    Pipeline::compute(ctx.device(), "blur to 8-bit", spirv(ls_spirv::blur_comp),
+                                      {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
+                                       {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}});
             pipes->blur.bind(ctx.cmd());
             DescriptorPush()
                 .sampled(0, ctx.view(src), ctx.layout(src), pipes->samplers.nearest())
@@ -139,9 +155,10 @@ TestPatternHandles declareTestPattern(RenderGraph& graph, VkExtent2D size, VkFor
         const ImageRef src = h.composed;
         pass.execute([pipes, src, out](PassContext& ctx) {
             if (!pipes->histogram)
-                pipes->histogram = Pipeline::compute(
-                    ctx.device(), "luma", spirv(ls_spirv::histogram_comp),
-                    {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}});
+                pipes->histogram =
+                    Pipeline::compute(ctx.device(), "luma", spirv(ls_spirv::histogram_comp),
+                                      {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
+                                       {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}});
             pipes->histogram.bind(ctx.cmd());
             DescriptorPush()
                 .sampled(0, ctx.view(src), ctx.layout(src), pipes->samplers.nearest())
@@ -172,11 +189,12 @@ TestPatternHandles declareTestPattern(RenderGraph& graph, VkExtent2D size, VkFor
 TestPatternRenderer::TestPatternRenderer(const Device& device, VkExtent2D size)
     : device_(device),
       size_(size),
-      readback_(device, VkDeviceSize{4} * size.width * size.height, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                "test pattern readback") {
+      readback_(device, VkDeviceSize{4} * size.width * size.height,
+                VK_BUFFER_USAGE_TRANSFER_DST_BIT, "test pattern readback") {
     const VulkanDeviceCaps caps(device);
-    depthStencil_ = firstSupported(caps, {VK_FORMAT_D24_UNORM_S8_UINT, VK_FORMAT_D32_SFLOAT_S8_UINT},
-                                   VK_FORMAT_FEATURE_2_DEPTH_STENCIL_ATTACHMENT_BIT);
+    depthStencil_ =
+        firstSupported(caps, {VK_FORMAT_D24_UNORM_S8_UINT, VK_FORMAT_D32_SFLOAT_S8_UINT},
+                       VK_FORMAT_FEATURE_2_DEPTH_STENCIL_ATTACHMENT_BIT);
     if (depthStencil_ == VK_FORMAT_UNDEFINED)
         throw VulkanError("the device has no depth-stencil format with stencil");
     pipelines_ = std::make_shared<TestPatternPipelines>(device);

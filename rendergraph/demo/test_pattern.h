@@ -1,9 +1,9 @@
 #pragma once
 // A small graph that exercises the runtime end to end: a compute pass writes a test pattern, a
-// stencil-only graphics pass marks a circle, two graphics passes copy the pattern and invert it where
-// the stencil test passes, a compute pass blurs into 8-bit, a transfer pass reads it back. A debug
-// pass nobody reads is declared too, and culled. The pattern image dies before the blur output is
-// born, so the two share memory.
+// stencil-only graphics pass marks a circle, two graphics passes copy the pattern and invert it
+// where the stencil test passes, a compute pass blurs into 8-bit, a transfer pass reads it back. A
+// debug pass nobody reads is declared too, and culled. The pattern image dies before the blur
+// output is born, so the two share memory.
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -31,7 +31,7 @@ TestPatternHandles declareTestPattern(RenderGraph& graph, VkExtent2D size, VkFor
 
 // Renders the pattern on a device and returns RGBA8 pixels, row-major, top row first.
 class TestPatternRenderer {
-public:
+  public:
     TestPatternRenderer(const Device& device, VkExtent2D size);
     ~TestPatternRenderer();
     std::vector<uint8_t> render(FrameTimings* timings = nullptr);
@@ -39,7 +39,7 @@ public:
     const CompiledGraph& compiled() const { return executor_->compiled(); }
     VkFormat depthStencilFormat() const { return depthStencil_; }
 
-private:
+  private:
     const Device& device_;
     VkExtent2D size_;
     VkFormat depthStencil_;

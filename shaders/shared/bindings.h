@@ -8,14 +8,14 @@
 #define LS_BINDINGS_H
 
 // Bindings every scattering shader that reads them uses (set 0, push descriptors).
-#define LS_BINDING_FRAME 0         // FrameConstants (frame.glsl)
-#define LS_BINDING_DEPTH 1         // the engine's depth (passes other than the epipolar ones)
-#define LS_BINDING_SHADOW_MAP 6    // the light's shadow map (a 2D array for a point light's cube)
-#define LS_BINDING_POINT_TABLE 7   // the point-light table (point_table.comp)
-#define LS_BINDING_LIGHT_COLOR 8   // the light-space color texture
-#define LS_BINDING_NOISE 9         // slices' tiling noise (repeating)
-#define LS_BINDING_ENGINE_COLOR 10 // composite_into.glsl: the engine's color, read-modify-written
-#define LS_BINDING_LIN_OUT 11      // composite_into.glsl: the Lin output image
+#define LS_BINDING_FRAME 0          // FrameConstants (frame.glsl)
+#define LS_BINDING_DEPTH 1          // the engine's depth (passes other than the epipolar ones)
+#define LS_BINDING_SHADOW_MAP 6     // the light's shadow map (a 2D array for a point light's cube)
+#define LS_BINDING_POINT_TABLE 7    // the point-light table (point_table.comp)
+#define LS_BINDING_LIGHT_COLOR 8    // the light-space color texture
+#define LS_BINDING_NOISE 9          // slices' tiling noise (repeating)
+#define LS_BINDING_ENGINE_COLOR 10  // composite_into.glsl: the engine's color, read-modify-written
+#define LS_BINDING_LIN_OUT 11       // composite_into.glsl: the Lin output image
 
 // Bindings of one shader each.
 #define LS_BINDING_POINT_TABLE_OUT 1       // point_table.comp
@@ -57,20 +57,20 @@
 #define LS_BINDING_UNWARP_DEPTH 4
 
 // Specialisation constants of frame.glsl (ScatterSpec::constants()); id 2 is unused.
-#define LS_SPEC_LIGHT_TYPE 0        // 0 directional, 1 spot, 2 point
-#define LS_SPEC_MIE_PHASE 1         // 0 Cornette-Shanks, 1 isotropic, 2 hazy
+#define LS_SPEC_LIGHT_TYPE 0  // 0 directional, 1 spot, 2 point
+#define LS_SPEC_MIE_PHASE 1   // 0 Cornette-Shanks, 1 isotropic, 2 hazy
 #define LS_SPEC_LIGHT_COLOR 3
 #define LS_SPEC_BILINEAR_SHADOW 4
 #define LS_SPEC_SIMPLIFIED_MODEL 5
 // One shader's own, from 10 up (ids may repeat across shaders that never share a pipeline).
-#define LS_SPEC_CONE_SAMPLES 10       // cone_march.frag
+#define LS_SPEC_CONE_SAMPLES 10  // cone_march.frag
 #define LS_SPEC_CONE_LIMITED 11
 #define LS_SPEC_CONE_JITTER 12
-#define LS_SPEC_PLANES_CHANNELS 10    // slice_planes.frag
+#define LS_SPEC_PLANES_CHANNELS 10  // slice_planes.frag
 #define LS_SPEC_PLANES_DITHER 11
-#define LS_SPEC_RESOLVE_CHANNELS 10   // slice_resolve.frag
+#define LS_SPEC_RESOLVE_CHANNELS 10  // slice_resolve.frag
 #define LS_SPEC_RESOLVE_BLUR_RADIUS 11
 #define LS_SPEC_RESOLVE_CLOSED_FORM_OUTSIDE_SLAB 12
-#define LS_SPEC_UNCLIPPED_DEPTH 20    // triangles.vert
+#define LS_SPEC_UNCLIPPED_DEPTH 20  // triangles.vert
 
 #endif

@@ -3,35 +3,35 @@
 // LS_MAT4, LS_VEC4 and LS_DEFAULT (a C++ default member value; nothing in GLSL) before including
 // this. Only mat4 and vec4 members, in this order: std140 then places every member where the C++
 // struct does, and frame_constants.h checks the size of the whole.
-LS_MAT4 viewProj;       // world -> camera clip
+LS_MAT4 viewProj;  // world -> camera clip
 // The ray through NDC (x, y) points along x col0 + y col1 + col2 (xyz, unnormalised; col2 is
 // the unit view axis): made from the projection's rows in double precision, never from a
 // point unprojected near the camera minus the camera's position, which cancels when the
 // near plane is small (passes/shared/scattering_params.cpp).
 LS_MAT4 rayBasis;
-LS_MAT4 lightViewProj;  // world -> light clip (the shadow map)
-LS_VEC4 cameraPos;      // xyz; w: near
-LS_VEC4 cameraForward;  // xyz: unit view axis; w: far (ignored when infinite)
-LS_VEC4 screenSize;     // w, h, 1/w, 1/h
-LS_VEC4 lightPos;       // xyz (point, spot)
-LS_VEC4 lightDir;       // xyz: direction light travels / spot axis; w: cos(half angle)
-LS_VEC4 lightIntensity; // rgb: E (directional) or I; w: spot range
-LS_VEC4 lightScreen;    // xy: NDC of the light (or of the point the shafts converge to); z: sign of
-                        // its clip w (+1 in front of the camera, -1 behind); w: 1 when on screen
-LS_VEC4 betaR;          // rgb; w: g
-LS_VEC4 betaM;          // rgb; w: max distance (sky)
-LS_VEC4 betaT;          // rgb; w: r0
-LS_VEC4 depthInfo;      // x: reversed z, y: infinite far, z: near, w: far
-LS_VEC4 shadowInfo;     // x: shadow-map size, y: 1/size, z: reversed z, w: depth bias
-LS_VEC4 epipolar;       // x: slices, y: samples per slice, z: initial step, w: refinement threshold
-LS_VEC4 epipolar2;      // x: bilateral threshold, y: fix-up max steps (0: all), z: tree levels,
-                        // w: 1 when samples carry the shadowed fraction instead of Lin
-LS_VEC4 lutInfo;        // x: log range of hEff / r0, y: table width, z: table height, w: -
-LS_VEC4 simplified;     // kSimplifiedModel: x: a0 / a1 (at least 1e-12), y: 1 / a1, zw: -
-LS_VEC4 cubeFace;       // x: the cube face (layer) an epipolar per-face pass marches, in the
-                        // order below (lightViewProj is then that face's matrix); y: 1 when the
-                        // face's frustum reaches the view (always 1 outside per-face passes)
-LS_VEC4 epipolar3;      // x: in-scattering refinement threshold (0: off), yzw: -
+LS_MAT4 lightViewProj;   // world -> light clip (the shadow map)
+LS_VEC4 cameraPos;       // xyz; w: near
+LS_VEC4 cameraForward;   // xyz: unit view axis; w: far (ignored when infinite)
+LS_VEC4 screenSize;      // w, h, 1/w, 1/h
+LS_VEC4 lightPos;        // xyz (point, spot)
+LS_VEC4 lightDir;        // xyz: direction light travels / spot axis; w: cos(half angle)
+LS_VEC4 lightIntensity;  // rgb: E (directional) or I; w: spot range
+LS_VEC4 lightScreen;  // xy: NDC of the light (or of the point the shafts converge to); z: sign of
+                      // its clip w (+1 in front of the camera, -1 behind); w: 1 when on screen
+LS_VEC4 betaR;        // rgb; w: g
+LS_VEC4 betaM;        // rgb; w: max distance (sky)
+LS_VEC4 betaT;        // rgb; w: r0
+LS_VEC4 depthInfo;    // x: reversed z, y: infinite far, z: near, w: far
+LS_VEC4 shadowInfo;   // x: shadow-map size, y: 1/size, z: reversed z, w: depth bias
+LS_VEC4 epipolar;     // x: slices, y: samples per slice, z: initial step, w: refinement threshold
+LS_VEC4 epipolar2;    // x: bilateral threshold, y: fix-up max steps (0: all), z: tree levels,
+                      // w: 1 when samples carry the shadowed fraction instead of Lin
+LS_VEC4 lutInfo;      // x: log range of hEff / r0, y: table width, z: table height, w: -
+LS_VEC4 simplified;   // kSimplifiedModel: x: a0 / a1 (at least 1e-12), y: 1 / a1, zw: -
+LS_VEC4 cubeFace;     // x: the cube face (layer) an epipolar per-face pass marches, in the
+                      // order below (lightViewProj is then that face's matrix); y: 1 when the
+                      // face's frustum reaches the view (always 1 outside per-face passes)
+LS_VEC4 epipolar3;    // x: in-scattering refinement threshold (0: off), yzw: -
 // x: the power of two Lin is stored with between a method's passes and the composite (float16
 // targets hold at most 65504), y: 1 / x
 LS_VEC4 linStorage LS_DEFAULT(1.0f, 1.0f, 0.0f, 0.0f);

@@ -3,5 +3,5 @@
 // first, and LS_PIXEL_MARCH_COMPOSITES 1 for the build that composites (the fix-up's).
 LS_UINT maxSteps;  // 0: one step per texel
 #if LS_PIXEL_MARCH_COMPOSITES
-LS_UINT addOnly;   // a frame's later light
+LS_UINT addOnly;  // a frame's later light
 #endif

@@ -6,8 +6,9 @@ LS_MAT4 viewToWorld LS_INIT(1.0f);
 // xy: the planes' view-space x, y minimum; z: view depth of the first plane's front; w: the
 // spacing between planes along the view axis (m)
 LS_VEC4 boxMin LS_INIT(0.0f);
-LS_VEC4 boxMax LS_INIT(0.0f);  // xy: maximum; z: the number of planes; w: 4 / the 8-bit target's range
-LS_VEC4 noise LS_INIT(0.0f);   // xy: layer 1's scroll, zw: layer 2's (tiles)
+LS_VEC4 boxMax
+    LS_INIT(0.0f);  // xy: maximum; z: the number of planes; w: 4 / the 8-bit target's range
+LS_VEC4 noise LS_INIT(0.0f);  // xy: layer 1's scroll, zw: layer 2's (tiles)
 // x: ambient (1/m^2), y: noise amplitude, z: 1 / noise scale, w: the farthest a ray reaches (the
 // sky distance)
 LS_VEC4 params LS_INIT(0.0f);

@@ -29,8 +29,9 @@ double imageError(double d, double tau, double offset) {
     double diff = 0.0, sum = 0.0;
     for (int y = 0; y < n; ++y)
         for (int x = 0; x < n; ++x) {
-            const glm::dvec3 dir = glm::normalize(glm::dvec3((2.0 * (x + 0.5) / n - 1.0) * tanHalf,
-                                                             (2.0 * (y + 0.5) / n - 1.0) * tanHalf, -1.0));
+            const glm::dvec3 dir =
+                glm::normalize(glm::dvec3((2.0 * (x + 0.5) / n - 1.0) * tanHalf,
+                                          (2.0 * (y + 0.5) / n - 1.0) * tanHalf, -1.0));
             const Ray ray{{0.0, 0.0, 0.0}, dir, 1.5 * d / -dir.z};
             const double exact = integrateInscatter(medium, light, ray).value.x;
             const double closed = pointArctanClosedForm(medium, light, ray).x;

@@ -87,17 +87,21 @@ TEST(Phase, MaxPBoundsEveryAngle) {
 // weights each ring by sqrt(1 - x^2) and so normalises the function to about 1.527, not 1.
 TEST(Phase, HazyNormalisedAndTheSeedsKExplained) {
     EXPECT_NEAR(sphereIntegral([](double mu, double) { return phaseHazy(mu); }, 0.0), 1.0, 1e-12);
-    EXPECT_NEAR(phaseHazy(1.0), 10.0 * kHazyK, 1e-15);   // 1 + 9 cos^16(0)
-    EXPECT_NEAR(phaseHazy(-1.0), kHazyK, 1e-15);          // cos(pi / 2) = 0
+    EXPECT_NEAR(phaseHazy(1.0), 10.0 * kHazyK, 1e-15);                 // 1 + 9 cos^16(0)
+    EXPECT_NEAR(phaseHazy(-1.0), kHazyK, 1e-15);                       // cos(pi / 2) = 0
     EXPECT_NEAR(phaseHazy(0.0), kHazyK * (1.0 + 9.0 / 256.0), 1e-15);  // cos^16(pi / 4) = 2^-8
     const Interval whole{-1.0, 1.0};
     auto unnormalised = [](double x) { return 1.0 + 9.0 * std::pow(0.5 * (1.0 + x), 8.0); };
     const QuadResult seeds = integrateAdaptive(
-        [&](double x) { return glm::dvec3(2.0 * kPi * unnormalised(x) * std::sqrt(1.0 - x * x)); }, {&whole, 1});
+        [&](double x) { return glm::dvec3(2.0 * kPi * unnormalised(x) * std::sqrt(1.0 - x * x)); },
+        {&whole, 1});
     EXPECT_NEAR(seeds.value.x, 54647.0 * kPi * kPi / 32768.0, 1e-9);  // appendix A's value
     EXPECT_NEAR(1.0 / kSeed004HazyK, 16.45948, 1e-5);
-    const double withSeedsK =
-        sphereIntegral([](double mu, double) { return kSeed004HazyK * (1.0 + 9.0 * std::pow(0.5 * (1.0 + mu), 8.0)); }, 0.0);
+    const double withSeedsK = sphereIntegral(
+        [](double mu, double) {
+            return kSeed004HazyK * (1.0 + 9.0 * std::pow(0.5 * (1.0 + mu), 8.0));
+        },
+        0.0);
     EXPECT_NEAR(withSeedsK, 8.0 * kPi * kSeed004HazyK, 1e-12);
     EXPECT_GT(withSeedsK, 1.5);
     Medium m;

@@ -1,7 +1,7 @@
 // Each command of the lightscatter command line end to end, on lavapipe with validation, and every
 // failure path: one line naming the file, field or value, a non-zero exit, no file half-written.
-#include <algorithm>
 #include <gtest/gtest.h>
+#include <algorithm>
 
 #include <cmath>
 #include <cstdlib>
@@ -52,20 +52,25 @@ TEST(Cli, RenderWritesPngLinAndTimings) {
     // auto is the default: on a 64x36 screen a shadowed light is marched per pixel.
     EXPECT_EQ(j["method"], "auto");
     EXPECT_EQ(j["methodRan"], "brute-force");
-    EXPECT_NE(j["reason"].get<std::string>().find("per-pixel marching is cheaper"), std::string::npos) << j["reason"];
+    EXPECT_NE(j["reason"].get<std::string>().find("per-pixel marching is cheaper"),
+              std::string::npos)
+        << j["reason"];
     EXPECT_GE(j["passes"].size(), 3u);  // constants, brute-force march, composite
     EXPECT_GT(j["totalMilliseconds"].get<double>(), 0.0);
 }
 
-// A sun and two spots ("lights") in one frame: epipolar and brute force, Lin summed into --inscatter.
+// A sun and two spots ("lights") in one frame: epipolar and brute force, Lin summed into
+// --inscatter.
 TEST(Cli, RenderASunAndTwoSpots) {
     for (const char* method : {"epipolar", "brute-force", "auto"}) {
-        const auto r = run("render " + scene("atrium_lights") + " --size 48x27 --method " + method +
-                           " --out lights.png --inscatter lights.exr --timings lights.json --validation");
+        const auto r =
+            run("render " + scene("atrium_lights") + " --size 48x27 --method " + method +
+                " --out lights.png --inscatter lights.exr --timings lights.json --validation");
         ASSERT_EQ(r.exitCode, 0) << method << ": " << r.out;
         std::ifstream t(path("lights.json"));
         const auto j = nlohmann::json::parse(t);
-        EXPECT_NE(j["reason"].get<std::string>().find("3 lights"), std::string::npos) << j["reason"];
+        EXPECT_NE(j["reason"].get<std::string>().find("3 lights"), std::string::npos)
+            << j["reason"];
         const host::FloatImage lin = host::readExr(path("lights.exr"));
         float most = 0;
         for (size_t i = 0; i < lin.rgba.size(); ++i)
@@ -73,9 +78,11 @@ TEST(Cli, RenderASunAndTwoSpots) {
         EXPECT_GT(most, 0.0f);
     }
     // Several lights run epipolar or brute-force only so far.
-    const auto slices = run("render " + scene("atrium_lights") + " --size 48x27 --method slices --out s.png");
+    const auto slices =
+        run("render " + scene("atrium_lights") + " --size 48x27 --method slices --out s.png");
     EXPECT_NE(slices.exitCode, 0);
-    EXPECT_NE(slices.out.find("method slices renders one light per frame"), std::string::npos) << slices.out;
+    EXPECT_NE(slices.out.find("method slices renders one light per frame"), std::string::npos)
+        << slices.out;
 }
 
 // --count-steps: epipolar's ray-march steps printed and in --timings (a frame of three lights sums
@@ -114,20 +121,24 @@ TEST(Cli, RenderEachSceneWithEachMethod) {
             EXPECT_TRUE(exists(std::string(name) + ".exr")) << name;
         }
     // analytic is seed 001's closed form: the unshadowed point light only; one line elsewhere.
-    const auto point = run("render " + scene("point_fog") + " --size 48x27 --method analytic --out p.exr --validation");
+    const auto point = run("render " + scene("point_fog") +
+                           " --size 48x27 --method analytic --out p.exr --validation");
     EXPECT_EQ(point.exitCode, 0) << point.out;
     // The plugin refuses once the engine has its device, so the device's line comes first.
     auto refusedAfterDevice = [](const cli_test::Result& r, const std::string& fragment) {
         EXPECT_NE(r.exitCode, 0) << r.out;
         const size_t device = r.out.find("using Vulkan device");
-        const std::string rest = r.out.substr(device == std::string::npos ? 0 : r.out.find('\n', device) + 1);
+        const std::string rest =
+            r.out.substr(device == std::string::npos ? 0 : r.out.find('\n', device) + 1);
         EXPECT_NE(rest.find(fragment), std::string::npos) << r.out;
         EXPECT_EQ(std::count(rest.begin(), rest.end(), '\n'), 1) << r.out;
     };
-    refusedAfterDevice(run("render " + scene("atrium") + " --size 48x27 --method analytic --out a.exr"),
-                       "light is directional");
-    refusedAfterDevice(run("render " + scene("window_room") + " --size 48x27 --method analytic --out w.exr"),
-                       "cannot cast shadows");
+    refusedAfterDevice(
+        run("render " + scene("atrium") + " --size 48x27 --method analytic --out a.exr"),
+        "light is directional");
+    refusedAfterDevice(
+        run("render " + scene("window_room") + " --size 48x27 --method analytic --out w.exr"),
+        "cannot cast shadows");
 }
 
 // Seed 002's slice planes through the command line: an image, Lin, and timings naming the method.
@@ -259,7 +270,8 @@ TEST(Cli, BudgetOfSlicesPrintsTheirTextures) {
     EXPECT_EQ(nlohmann::json::parse(e.out)[0]["method"], "epipolar");
 
     expectFailure(run("budget --method cone-march"),
-                  "--method cone-march: budget knows epipolar, slices, beam-tree-analytic and beam-tree-sampling only");
+                  "--method cone-march: budget knows epipolar, slices, beam-tree-analytic and "
+                  "beam-tree-sampling only");
     expectFailure(run("budget --method raytrace"), "unknown method 'raytrace'");
 }
 
@@ -278,12 +290,13 @@ TEST(Cli, BudgetPrintsEveryProfileBesideTheSeed) {
 }
 
 TEST(Cli, GraphDumpsTheCompiledFrameGraph) {
-    const auto dot = run("graph " + scene("window_room") + " --dot --size 64x36 --method epipolar --validation");
+    const auto dot =
+        run("graph " + scene("window_room") + " --dot --size 64x36 --method epipolar --validation");
     ASSERT_EQ(dot.exitCode, 0) << dot.out;
     EXPECT_NE(dot.out.find("digraph"), std::string::npos);
     EXPECT_NE(dot.out.find("ray march with min/max trees"), std::string::npos);
-    const auto json =
-        run("graph " + scene("window_room") + " --json --size 64x36 --method brute-force --validation");
+    const auto json = run("graph " + scene("window_room") +
+                          " --json --size 64x36 --method brute-force --validation");
     ASSERT_EQ(json.exitCode, 0) << json.out;
     const auto j = nlohmann::json::parse(json.out);
     bool brute = false;
@@ -319,17 +332,21 @@ TEST(Cli, ANonexistentDeviceIsAClearError) {
 }
 
 TEST(Cli, PatternRendersTheRuntimesTestPattern) {
-    const auto r = run("pattern --size 64x48 --out pattern.png --report pattern.json --dot pattern.dot --validation");
+    const auto r =
+        run("pattern --size 64x48 --out pattern.png --report pattern.json --dot pattern.dot "
+            "--validation");
     ASSERT_EQ(r.exitCode, 0) << r.out;
     EXPECT_TRUE(exists("pattern.png"));
     EXPECT_TRUE(exists("pattern.dot"));
     std::ifstream report(path("pattern.json"));
     const auto j = nlohmann::json::parse(report);
-    EXPECT_LT(j["totals"]["aliasedBytes"].get<uint64_t>(), j["totals"]["unaliasedBytes"].get<uint64_t>());
+    EXPECT_LT(j["totals"]["aliasedBytes"].get<uint64_t>(),
+              j["totals"]["unaliasedBytes"].get<uint64_t>());
 }
 
 TEST(Cli, BenchRunsTheSmallConfigurationAndPlotsIt) {
-    const auto r = run("bench --config " + std::string(LS_SOURCE_DIR) + "/bench/small.json --out bench --validation");
+    const auto r = run("bench --config " + std::string(LS_SOURCE_DIR) +
+                       "/bench/small.json --out bench --validation");
     ASSERT_EQ(r.exitCode, 0) << r.out;
     std::ifstream csv(path("bench/bench.csv"));
     std::string line;
@@ -345,8 +362,10 @@ TEST(Cli, BenchRunsTheSmallConfigurationAndPlotsIt) {
         EXPECT_LT(run["error"]["meanRelative"].get<double>(), 0.2) << run["label"];
     }
     EXPECT_TRUE(exists("bench/strips/window_room_brute-force.png"));
-    ASSERT_EQ(std::system(("/usr/bin/python3 " + std::string(LS_SOURCE_DIR) + "/scripts/plot_bench.py " + path("bench") +
-                           " " + path("plots") + " > /dev/null").c_str()),
-              0);
+    ASSERT_EQ(
+        std::system(("/usr/bin/python3 " + std::string(LS_SOURCE_DIR) + "/scripts/plot_bench.py " +
+                     path("bench") + " " + path("plots") + " > /dev/null")
+                        .c_str()),
+        0);
     EXPECT_TRUE(exists("plots/time_vs_error_window_room.png"));
 }

@@ -14,10 +14,10 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "exact_renderer/reference_renderer.h"
 #include "float64_model/closed_forms.h"
 #include "float64_model/inscatter_integral.h"
 #include "float64_model/ray_geometry.h"
-#include "exact_renderer/reference_renderer.h"
 
 namespace {
 
@@ -528,7 +528,8 @@ void expectSameImage(const ReferenceImage& a, const ReferenceImage& b, double re
 }
 
 TEST(ReferenceRenderer, DepthConventionDoesNotChangeTheImage) {
-    for (const lightscatter::LightType kind : {lightscatter::LightType::Directional, lightscatter::LightType::Spot}) {
+    for (const lightscatter::LightType kind :
+         {lightscatter::LightType::Directional, lightscatter::LightType::Spot}) {
         ShadowCase c = pyramidCase(kind);
         c.options.relTol = 1e-9;
         c.scene.camera.farPlane = 500.0f;  // every surface inside it

@@ -10,12 +10,13 @@
 namespace cli_test {
 
 struct Comparison {
-    double meanError = 0;      // mean |a - b| / p99(b), over RGB
-    double badFraction = 0;    // pixels with any channel off by more than 2% of p99(b)
+    double meanError = 0;    // mean |a - b| / p99(b), over RGB
+    double badFraction = 0;  // pixels with any channel off by more than 2% of p99(b)
     bool sameSize = false;
     bool pass() const { return sameSize && meanError < 2e-3 && badFraction < 5e-3; }
     std::string describe() const {
-        return "mean error " + std::to_string(meanError) + " of the 99th percentile, " + std::to_string(badFraction * 100) +
+        return "mean error " + std::to_string(meanError) + " of the 99th percentile, " +
+               std::to_string(badFraction * 100) +
                "% of pixels off by more than 2% (limits 0.002, 0.5%)";
     }
 };
@@ -29,7 +30,8 @@ inline Comparison compareImages(const std::vector<float>& a, const std::vector<f
     std::vector<float> values;
     for (size_t i = 0; i < b.size(); ++i)
         if (i % 4 != 3) values.push_back(b[i]);
-    std::nth_element(values.begin(), values.begin() + static_cast<long>(values.size() * 99 / 100), values.end());
+    std::nth_element(values.begin(), values.begin() + static_cast<long>(values.size() * 99 / 100),
+                     values.end());
     double peak = values[values.size() * 99 / 100];
     if (!(peak > 0)) peak = 1;
     double sum = 0;

@@ -203,7 +203,8 @@ TEST_F(LightsReferenceGpu, ACagedPointLightBesideASpotMatchesTheReference) {
         expectWithin(judge(dev(), scene, mesh, ref, methodOptions(method), "point_cage + spot"),
                      kBound);
     // Epipolar marches the cube face by face; point_cage's single-light epipolar bound.
-    expectWithin(judge(dev(), scene, mesh, ref, methodOptions(lightscatter::Method::Epipolar), "point_cage + spot"),
+    expectWithin(judge(dev(), scene, mesh, ref, methodOptions(lightscatter::Method::Epipolar),
+                       "point_cage + spot"),
                  0.09);
     host::SceneDesc open = scene;
     open.light.shadowMapSize = 0;  // the point light without its cube map: its shafts are gone

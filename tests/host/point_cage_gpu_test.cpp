@@ -54,7 +54,8 @@ TEST_F(PointCageGpu, EpipolarAndBruteForceMatchTheReference) {
     options.method = lightscatter::Method::Epipolar;
     const host::FrameOutput epipolar = renderer.render(options);
     EXPECT_EQ(epipolar.plugin.method, "epipolar");
-    const double epipolarError = againstReference(epipolar, reference.rgb, scene.exposure, "epipolar");
+    const double epipolarError =
+        againstReference(epipolar, reference.rgb, scene.exposure, "epipolar");
 
     // The same light without its cube map: the shafts are gone, and the bounds see it.
     host::SceneDesc open = scene;
@@ -120,7 +121,8 @@ TEST_F(PointCageGpu, RaysAcrossCubeFacesMatchTheReferenceLikeTheOthers) {
         }
         const double acrossError = errorAcross / refAcross, withinError = errorWithin / refWithin;
         std::printf(
-            "point_cage %ux%u, %s: %zu rays cross cube faces (mean relative error %.4f), %zu stay in "
+            "point_cage %ux%u, %s: %zu rays cross cube faces (mean relative error %.4f), %zu stay "
+            "in "
             "one (%.4f)\n",
             kSize.width, kSize.height, lightscatter::methodName(method), across, acrossError,
             crossing.size() - across, withinError);
@@ -151,14 +153,16 @@ TEST_F(PointCageGpu, EpipolarMarchesOnlyTheFacesThatReachTheView) {
             diff += std::fabs(epipolar.inscatter[i] - brute.inscatter[i]);
             sum += std::fabs(brute.inscatter[i]);
         }
-    std::printf("point_cage looking away along +Z: epipolar within %.4f of brute force\n", diff / sum);
+    std::printf("point_cage looking away along +Z: epipolar within %.4f of brute force\n",
+                diff / sum);
     ASSERT_GT(sum, 0.0);
     EXPECT_LT(diff / sum, 0.05);
 
     // From the default camera, which sees the cage from outside, every face reaches the view.
     host::EngineRenderer outside(dev(), cageScene(), mesh, kSize);
     const host::FrameOutput all = outside.render(options);
-    EXPECT_NE(all.plugin.reason.find("cube faces reaching the view: +X, -X, +Y, -Y, +Z, -Z"), std::string::npos)
+    EXPECT_NE(all.plugin.reason.find("cube faces reaching the view: +X, -X, +Y, -Y, +Z, -Z"),
+              std::string::npos)
         << all.plugin.reason;
 }
 
@@ -172,7 +176,8 @@ TEST_F(PointCageGpu, OnlyEpipolarAndBruteForceSampleTheCubeMap) {
     host::EngineRenderer tiny(dev(), scene, mesh, {16, 16});
     const host::FrameOutput small = tiny.render(options);
     EXPECT_EQ(small.plugin.method, "brute-force");
-    EXPECT_NE(small.plugin.reason.find("cube shadow map"), std::string::npos) << small.plugin.reason;
+    EXPECT_NE(small.plugin.reason.find("cube shadow map"), std::string::npos)
+        << small.plugin.reason;
     options.profile = lightscatter::Profile::Custom;
     options.custom.slices = 16;
     options.custom.samplesPerSlice = 16;
@@ -180,8 +185,9 @@ TEST_F(PointCageGpu, OnlyEpipolarAndBruteForceSampleTheCubeMap) {
     EXPECT_EQ(larger.plugin.method, "epipolar") << larger.plugin.reason;
     options.profile = lightscatter::Profile::Balanced;
     for (lightscatter::Method m :
-         {lightscatter::Method::Analytic, lightscatter::Method::ConeMarch, lightscatter::Method::Slices,
-          lightscatter::Method::BeamTreeAnalytic, lightscatter::Method::BeamTreeSampling}) {
+         {lightscatter::Method::Analytic, lightscatter::Method::ConeMarch,
+          lightscatter::Method::Slices, lightscatter::Method::BeamTreeAnalytic,
+          lightscatter::Method::BeamTreeSampling}) {
         options.method = m;
         try {
             (void)tiny.render(options);

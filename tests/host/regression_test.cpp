@@ -20,9 +20,9 @@ std::string reference(const std::string& name) {
 
 TEST(Regression, ShippedScenesMatchTheirReferences) {
     for (const char* name : {"atrium", "window_room", "engine_spot", "point_fog"}) {
-        const auto r =
-            cli_test::run(std::string("render ") + cli_test::scene(name) + " --method epipolar --size 96x54 --out " +
-                          name + ".png --inscatter " + name + "_lin.exr --validation");
+        const auto r = cli_test::run(std::string("render ") + cli_test::scene(name) +
+                                     " --method epipolar --size 96x54 --out " + name +
+                                     ".png --inscatter " + name + "_lin.exr --validation");
         ASSERT_EQ(r.exitCode, 0) << name << ": " << r.out;
         const auto got = host::readExr(
             (std::filesystem::path(cli_test::scratch()) / (std::string(name) + "_lin.exr"))

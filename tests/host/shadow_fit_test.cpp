@@ -48,15 +48,18 @@ TEST(ShadowFit, AFarAwayModelOutsideTheViewDoesNotWidenTheSunsBox) {
     farModel.add({9000.0f, 0.0f, 9000.0f});
     farModel.add({9010.0f, 30.0f, 9010.0f});
     const glm::mat4 near = host::shadowViewProjection(sun(), room, {room}, roomCamera(), aspect);
-    const glm::mat4 far = host::shadowViewProjection(sun(), withFarModel, {room, farModel}, roomCamera(), aspect);
+    const glm::mat4 far =
+        host::shadowViewProjection(sun(), withFarModel, {room, farModel}, roomCamera(), aspect);
     // One metre across the room covers about as many texels with or without the far model.
     const glm::vec3 a = toClip(far, {0.0f, 0.0f, 0.0f}), b = toClip(far, {1.0f, 0.0f, 0.0f});
     const glm::vec3 a0 = toClip(near, {0.0f, 0.0f, 0.0f}), b0 = toClip(near, {1.0f, 0.0f, 0.0f});
-    const float withModel = glm::length(glm::vec2(b - a)), without = glm::length(glm::vec2(b0 - a0));
-    EXPECT_GT(withModel, 0.5f * without) << "the far model shrank the room to " << withModel / without
-                                          << " of its texels";
+    const float withModel = glm::length(glm::vec2(b - a)),
+                without = glm::length(glm::vec2(b0 - a0));
+    EXPECT_GT(withModel, 0.5f * without)
+        << "the far model shrank the room to " << withModel / without << " of its texels";
     // Every point of the room the camera sees is inside the map, in depth too.
-    const glm::mat4 camera = host::cameraProjection(roomCamera(), aspect) * host::cameraView(roomCamera());
+    const glm::mat4 camera =
+        host::cameraProjection(roomCamera(), aspect) * host::cameraView(roomCamera());
     int seen = 0;
     for (float x = -5.0f; x <= 5.0f; x += 0.5f)
         for (float y = 0.0f; y <= 4.0f; y += 0.5f)
@@ -89,7 +92,8 @@ TEST(ShadowFit, TheWholeSceneInViewKeepsTheWholeSceneInTheMap) {
     c.fovYDegrees = 70.0f;
     const glm::mat4 m = host::shadowViewProjection(sun(), scene, {}, c, 1.0f);
     for (int i = 0; i < 8; ++i) {
-        const glm::vec3 p((i & 1) ? 50.0f : -50.0f, (i & 2) ? 20.0f : 0.0f, (i & 4) ? 50.0f : -50.0f);
+        const glm::vec3 p((i & 1) ? 50.0f : -50.0f, (i & 2) ? 20.0f : 0.0f,
+                          (i & 4) ? 50.0f : -50.0f);
         const glm::vec3 clip = toClip(m, p);
         EXPECT_LE(std::abs(clip.x), 1.0f) << i;
         EXPECT_LE(std::abs(clip.y), 1.0f) << i;

@@ -3,10 +3,10 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "model_conversion.h"
-#include "plugin_fixture.h"
 #include "float64_model/closed_forms.h"
 #include "float64_model/inscatter_integral.h"
+#include "model_conversion.h"
+#include "plugin_fixture.h"
 
 using namespace plugin_test;
 using lightscatter::Method;
@@ -41,11 +41,14 @@ Judged judge(TestFrame& frame, const std::vector<float>& lin, double floor) {
             const double want = expected[i][c], got = lin[i * 4 + static_cast<size_t>(c)];
             const double err = std::fabs(got - want) / std::max(std::fabs(want), floor * j.peak);
             if (err > j.worst && std::getenv("LS_DEBUG_JUDGE")) {
-                const uint32_t x = static_cast<uint32_t>(i % s.screen.width), y = static_cast<uint32_t>(i / s.screen.width);
-                const PixelRay r = pixelRay(s.scene, s.view, s.screen.width, s.screen.height, x, y, s.medium.maxDistance);
+                const uint32_t x = static_cast<uint32_t>(i % s.screen.width),
+                               y = static_cast<uint32_t>(i / s.screen.width);
+                const PixelRay r = pixelRay(s.scene, s.view, s.screen.width, s.screen.height, x, y,
+                                            s.medium.maxDistance);
                 const glm::dvec3 q = r.origin - l.position;
-                std::printf("worst so far px %u,%u c%d got %.6g want %.6g  h %.4g sC %.4g S %.4g\n", x, y, c, got, want,
-                            glm::length(glm::cross(r.dir, q)), glm::dot(r.dir, q), r.S);
+                std::printf("worst so far px %u,%u c%d got %.6g want %.6g  h %.4g sC %.4g S %.4g\n",
+                            x, y, c, got, want, glm::length(glm::cross(r.dir, q)),
+                            glm::dot(r.dir, q), r.S);
             }
             j.worst = std::max(j.worst, std::isfinite(got) ? err : 1e30);
             sum += err;
@@ -73,7 +76,8 @@ TEST_F(ClosedFormGpu, UnshadowedDirectionalMatchesHoffmanPreetham) {
     TestFrame frame(dev(), unshadowed(sunThroughGrille()));
     const auto report = run(frame, Method::Epipolar);
     // No shadow map: the per-pixel closed form, nothing epipolar.
-    for (const auto& name : report.passNames) EXPECT_EQ(name.find("epipolar"), std::string::npos) << name;
+    for (const auto& name : report.passNames)
+        EXPECT_EQ(name.find("epipolar"), std::string::npos) << name;
     const Judged j = judge(frame, frame.inscatter(), 1e-3);
     std::printf("directional: worst %.2e mean %.2e\n", j.worst, j.mean);
     EXPECT_GT(j.peak, 0.0);
@@ -126,7 +130,8 @@ TEST_F(ClosedFormGpu, HazyPhaseMatchesTheFloat64Model) {
     TestFrame pointFrame(dev(), point);
     run(pointFrame, Method::Epipolar);
     const Judged p = judge(pointFrame, pointFrame.inscatter(), 1e-3);
-    std::printf("hazy: directional worst %.2e, point mean %.2e worst %.2e\n", d.worst, p.mean, p.worst);
+    std::printf("hazy: directional worst %.2e, point mean %.2e worst %.2e\n", d.worst, p.mean,
+                p.worst);
     EXPECT_LT(d.worst, 2e-3);
     EXPECT_LT(p.mean, 1e-3);
     EXPECT_LT(p.worst, 1e-2);

@@ -35,7 +35,7 @@ bool hasPass(const lightscatter::FrameReport& r, const std::string& name) {
 }  // namespace
 
 class EpipolarGpu : public PluginGpuTest {
-protected:
+  protected:
     std::vector<float> render(TestFrame& frame, Method method, lightscatter::Settings settings,
                               lightscatter::FrameReport* report = nullptr) {
         frame.resetColor();
@@ -71,7 +71,8 @@ TEST_F(EpipolarGpu, DirectionalLightMatchesBruteForce) {
     const auto brute = render(frame, Method::BruteForce, settings);
     const auto epi = render(frame, Method::Epipolar, settings, &report);
     const ErrorStats e = compare(epi, brute);
-    std::printf("directional: mean %.2e rms %.2e max %.2e\n", e.meanRelative, e.rmsRelative, e.maxRelative);
+    std::printf("directional: mean %.2e rms %.2e max %.2e\n", e.meanRelative, e.rmsRelative,
+                e.maxRelative);
     // A directional light needs no point-light table.
     for (const auto& p : report.passNames) EXPECT_EQ(p.find("table"), std::string::npos) << p;
     EXPECT_GT(e.peak, 0.0);
@@ -145,15 +146,16 @@ TEST_P(EpipolarComposite, AttenuatesTheEngineColorAndAddsLin) {
     settings.fixup = GetParam();
     const auto report = run(frame, Method::Epipolar, settings);
     EXPECT_EQ(std::count(report.passNames.begin(), report.passNames.end(), "composite"), 0);
-    EXPECT_EQ(std::count(report.passNames.begin(), report.passNames.end(), "fix-up ray march"), GetParam() ? 1 : 0);
+    EXPECT_EQ(std::count(report.passNames.begin(), report.passNames.end(), "fix-up ray march"),
+              GetParam() ? 1 : 0);
     const auto lin = frame.inscatter();
     const auto color = frame.color();
     const lightscatter::Medium& m = spec.medium;
     double worst = 0;
     for (uint32_t y = 0; y < spec.screen.height; ++y)
         for (uint32_t x = 0; x < spec.screen.width; ++x) {
-            const PixelRay r = pixelRay(spec.scene, spec.view, spec.screen.width, spec.screen.height, x, y,
-                                        m.maxDistance);
+            const PixelRay r = pixelRay(spec.scene, spec.view, spec.screen.width,
+                                        spec.screen.height, x, y, m.maxDistance);
             for (int c = 0; c < 3; ++c) {
                 const size_t i = (size_t{y} * spec.screen.width + x) * 4 + static_cast<size_t>(c);
                 const double betaT = m.betaR[c] + m.betaM[c] + m.sigmaA[c];
@@ -165,7 +167,9 @@ TEST_P(EpipolarComposite, AttenuatesTheEngineColorAndAddsLin) {
 }
 
 INSTANTIATE_TEST_SUITE_P(FixUp, EpipolarComposite, testing::Bool(),
-                         [](const testing::TestParamInfo<bool>& i) { return i.param ? "On" : "Off"; });
+                         [](const testing::TestParamInfo<bool>& i) {
+                             return i.param ? "On" : "Off";
+                         });
 
 TEST_F(EpipolarGpu, ColoredShaftsMatchBruteForceWithTreesOnAndOff) {
     FrameSpec spec = sceneWith(spotOverGrille());

@@ -13,11 +13,14 @@ namespace plugin_test {
 
 TestImage::TestImage(const rg::Device& device, VkFormat format, VkExtent2D extent,
                      VkImageUsageFlags usage, VkImageLayout restingLayout, const std::string& name)
-    : device_(device), format_(format), extent_(extent),
+    : device_(device),
+      format_(format),
+      extent_(extent),
       usage_(usage | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT),
       resting_(restingLayout),
       image_(device, format, extent, usage_, name) {
-    device.submitAndWait([&](VkCommandBuffer cmd) { transition(cmd, VK_IMAGE_LAYOUT_UNDEFINED, resting_); });
+    device.submitAndWait(
+        [&](VkCommandBuffer cmd) { transition(cmd, VK_IMAGE_LAYOUT_UNDEFINED, resting_); });
 }
 
 void TestImage::transition(VkCommandBuffer cmd, VkImageLayout from, VkImageLayout to) const {
@@ -44,11 +47,13 @@ void TestImage::upload(const std::vector<float>& texels) {
     device_.submitAndWait([&](VkCommandBuffer cmd) {
         transition(cmd, resting_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
         VkBufferImageCopy region{};
-        region.imageSubresource = {rg::hasDepth(format_) ? VkImageAspectFlags{VK_IMAGE_ASPECT_DEPTH_BIT}
-                                                         : VkImageAspectFlags{VK_IMAGE_ASPECT_COLOR_BIT},
+        region.imageSubresource = {rg::hasDepth(format_)
+                                       ? VkImageAspectFlags{VK_IMAGE_ASPECT_DEPTH_BIT}
+                                       : VkImageAspectFlags{VK_IMAGE_ASPECT_COLOR_BIT},
                                    0, 0, 1};
         region.imageExtent = {extent_.width, extent_.height, 1};
-        vkCmdCopyBufferToImage(cmd, staging.buffer(), image_.image(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        vkCmdCopyBufferToImage(cmd, staging.buffer(), image_.image(),
+                               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
         transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, resting_);
     });
 }
@@ -58,9 +63,13 @@ namespace {
 float halfToFloat(uint16_t h) {
     const uint32_t sign = (h >> 15) & 1u, exponent = (h >> 10) & 0x1fu, mantissa = h & 0x3ffu;
     float v;
-    if (exponent == 0) v = std::ldexp(static_cast<float>(mantissa), -24);
-    else if (exponent == 31) v = mantissa ? std::numeric_limits<float>::quiet_NaN() : std::numeric_limits<float>::infinity();
-    else v = std::ldexp(static_cast<float>(mantissa | 0x400u), static_cast<int>(exponent) - 25);
+    if (exponent == 0)
+        v = std::ldexp(static_cast<float>(mantissa), -24);
+    else if (exponent == 31)
+        v = mantissa ? std::numeric_limits<float>::quiet_NaN()
+                     : std::numeric_limits<float>::infinity();
+    else
+        v = std::ldexp(static_cast<float>(mantissa | 0x400u), static_cast<int>(exponent) - 25);
     return sign ? -v : v;
 }
 
@@ -71,7 +80,8 @@ void TestImage::clear(float value) {
         transition(cmd, resting_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
         VkClearColorValue c{{value, value, value, value}};
         VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-        vkCmdClearColorImage(cmd, image_.image(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &c, 1, &range);
+        vkCmdClearColorImage(cmd, image_.image(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &c, 1,
+                             &range);
         transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, resting_);
     });
 }

@@ -12,7 +12,7 @@
 namespace plugin_test {
 
 class TestImage {
-public:
+  public:
     TestImage(const rg::Device& device, VkFormat format, VkExtent2D extent, VkImageUsageFlags usage,
               VkImageLayout restingLayout, const std::string& name);
     TestImage(const TestImage&) = delete;
@@ -25,7 +25,7 @@ public:
     lightscatter::ImageInput input() const;
     VkImage image() const { return image_.image(); }
 
-private:
+  private:
     void transition(VkCommandBuffer cmd, VkImageLayout from, VkImageLayout to) const;
     const rg::Device& device_;
     VkFormat format_;

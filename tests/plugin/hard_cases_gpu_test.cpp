@@ -18,8 +18,12 @@ namespace {
 constexpr VkExtent2D kScreen{24, 16};
 constexpr float kRefinement = 0.1f;  // Settings::inscatterRefinementThreshold when on
 
-glm::vec3 eye() { return {0.0f, 2.5f, 9.0f}; }
-glm::vec3 forward() { return glm::normalize(glm::vec3(0.0f, 1.5f, 0.0f) - eye()); }
+glm::vec3 eye() {
+    return {0.0f, 2.5f, 9.0f};
+}
+glm::vec3 forward() {
+    return glm::normalize(glm::vec3(0.0f, 1.5f, 0.0f) - eye());
+}
 
 // The world point at distance d along the ray through NDC (x, y) of the default view.
 glm::vec3 throughNdc(const View& v, float x, float y, float d) {
@@ -29,7 +33,9 @@ glm::vec3 throughNdc(const View& v, float x, float y, float d) {
     return eye() + dir * d;
 }
 
-lightscatter::Vec3 v3(glm::vec3 v) { return {v.x, v.y, v.z}; }
+lightscatter::Vec3 v3(glm::vec3 v) {
+    return {v.x, v.y, v.z};
+}
 
 FrameSpec base(lightscatter::Light light) {
     return sceneWith(light, kScreen);
@@ -78,13 +84,15 @@ std::vector<Case> cases() {
                      return base(spotAt(throughNdc(view, 2.5f, 0.3f, 6), {-0.5f, -1, 0}));
                  }});
     c.push_back({"light behind the camera", [=] {
-                     return base(spotAt(eye() - forward() * 3.0f + glm::vec3(0, 1, 0), forward(), 40));
+                     return base(
+                         spotAt(eye() - forward() * 3.0f + glm::vec3(0, 1, 0), forward(), 40));
                  }});
     c.push_back({"spot light at the camera", [=] { return base(spotAt(eye(), forward(), 30)); }});
     c.push_back({"point light at the camera", [=] { return base(pointAt(eye())); }});
     c.push_back({"ray through a point light", [=] {
                      // On the ray through the centre of pixel (12, 8).
-                     const float x = (12.5f / kScreen.width) * 2 - 1, y = (8.5f / kScreen.height) * 2 - 1;
+                     const float x = (12.5f / kScreen.width) * 2 - 1,
+                                 y = (8.5f / kScreen.height) * 2 - 1;
                      return base(pointAt(throughNdc(view, x, y, 4)));
                  }});
     c.push_back({"directional light along the view axis", [=] { return base(sun(forward())); }});
@@ -97,7 +105,8 @@ std::vector<Case> cases() {
                      // Apex above the camera, axis tilted so that the camera lies on the surface.
                      const float a = glm::radians(30.0f);
                      const glm::vec3 apex = eye() + glm::vec3(0, 4, 0);
-                     const glm::vec3 axis(std::sin(a), -std::cos(a), 0);  // 30 deg from the way down
+                     const glm::vec3 axis(std::sin(a), -std::cos(a),
+                                          0);  // 30 deg from the way down
                      return base(spotAt(apex, axis, 30));
                  }});
     c.push_back({"sky at the far plane", [=] {
@@ -200,8 +209,10 @@ TEST_F(HardCasesGpu, EveryCaseGivesFinitePixelsWithEveryMethod) {
             const auto report = run(frame, method, settings);
             const auto lin = frame.inscatter();
             const auto color = frame.color();
-            EXPECT_EQ(countNonFinite(lin), 0u) << hard.name << " (" << lightscatter::methodName(method) << ")";
-            EXPECT_EQ(countNonFinite(color), 0u) << hard.name << " (" << lightscatter::methodName(method) << ")";
+            EXPECT_EQ(countNonFinite(lin), 0u)
+                << hard.name << " (" << lightscatter::methodName(method) << ")";
+            EXPECT_EQ(countNonFinite(color), 0u)
+                << hard.name << " (" << lightscatter::methodName(method) << ")";
             float most = 0;
             for (float x : lin) most = std::max(most, x);
             EXPECT_GE(most, 0.0f) << hard.name;
@@ -211,9 +222,9 @@ TEST_F(HardCasesGpu, EveryCaseGivesFinitePixelsWithEveryMethod) {
 }
 
 // The same cases at a size where the epipolar image can be judged: it must stay within the bound
-// docs/epipolar.md states for hard cases (mean error 2% of the frame's peak Lin). The worst measured
-// (lavapipe, 48x32): the light behind the camera, 0.88%; a spot light at the camera, where every
-// ray projects to a point of the shadow map and is marched on its own, 0.45%.
+// docs/epipolar.md states for hard cases (mean error 2% of the frame's peak Lin). The worst
+// measured (lavapipe, 48x32): the light behind the camera, 0.88%; a spot light at the camera, where
+// every ray projects to a point of the shadow map and is marched on its own, 0.45%.
 TEST_F(HardCasesGpu, EpipolarStaysCloseToBruteForce) {
     for (const Case& hard : cases()) {
         FrameSpec spec = hard.make();

@@ -30,7 +30,7 @@ bool contains(const std::string& text, const std::string& part) {
 
 // A command pool and command buffers of the engine's own.
 class EngineCommands {
-public:
+  public:
     EngineCommands(const rg::Device& device, uint32_t count) : device_(device) {
         VkCommandPoolCreateInfo info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
         info.queueFamilyIndex = device.queueFamily();
@@ -59,7 +59,7 @@ public:
         RG_VK(vkQueueWaitIdle(device_.queue()));
     }
 
-private:
+  private:
     const rg::Device& device_;
     VkCommandPool pool_ = VK_NULL_HANDLE;
     std::vector<VkCommandBuffer> cmds_;
@@ -68,7 +68,7 @@ private:
 }  // namespace
 
 class PluginIntegrationGpu : public PluginGpuTest {
-protected:
+  protected:
     // Expects `change` to make the frame invalid with a message naming `field` (and containing
     // `rule`), and the engine's color to be untouched by the refused call.
     void expectRefused(const std::function<void(lightscatter::FrameDescription&)>& change,
@@ -140,7 +140,8 @@ TEST_F(PluginIntegrationGpu, ADeviceWithoutARequiredFeatureIsRefusedNamingIt) {
         {"shaderStorageImageExtendedFormats",
          [](auto& f) { f.core.features.shaderStorageImageExtendedFormats = VK_FALSE; }},
         {"shaderClipDistance", [](auto& f) { f.core.features.shaderClipDistance = VK_FALSE; }},
-        {"fragmentStoresAndAtomics", [](auto& f) { f.core.features.fragmentStoresAndAtomics = VK_FALSE; }},
+        {"fragmentStoresAndAtomics",
+         [](auto& f) { f.core.features.fragmentStoresAndAtomics = VK_FALSE; }},
     };
     for (const Case& c : cases) {
         lightscatter::DeviceFeatures features = lightscatter::requiredDeviceFeatures();
@@ -420,18 +421,22 @@ TEST_F(PluginIntegrationGpu, BadOccludersAreRefused) {
             change(d.occluders[2]);
         };
     };
-    expectRefused(one([](auto& o) { o.outer.center[1] = std::nanf(""); }), "occluders[2].outer.center",
-                  "non-finite");
-    expectRefused(one([](auto& o) { o.outer.halfExtents[0] = -1.0f; }), "occluders[2].outer.halfExtents[0]",
-                  "must be > 0");
-    expectRefused(one([](auto& o) { o.outer.center[2] = 1e20f; }), "occluders[2].outer.center[2] = 1e+20",
-                  "must be within +-1e+08 m");
-    expectRefused(one([](auto& o) { o.outer.halfExtents[1] = 3e38f; }), "occluders[2].outer.halfExtents[1]",
-                  "must be within +-1e+08 m");
-    expectRefused(one([](auto& o) { o.outer.axes[1] = {0.0f, 2.0f, 0.0f}; }), "occluders[2].outer.axes[1]",
-                  "must be unit");
-    expectRefused(one([](auto& o) { o.outer.axes[1] = {1.0f, 0.0f, 0.0f}; }), "occluders[2].outer.axes[0] and [1]",
-                  "not orthogonal");
+    expectRefused(one([](auto& o) { o.outer.center[1] = std::nanf(""); }),
+                  "occluders[2].outer.center", "non-finite");
+    expectRefused(one([](auto& o) { o.outer.halfExtents[0] = -1.0f; }),
+                  "occluders[2].outer.halfExtents[0]", "must be > 0");
+    expectRefused(one([](auto& o) { o.outer.center[2] = 1e20f; }),
+                  "occluders[2].outer.center[2] = 1e+20", "must be within +-1e+08 m");
+    expectRefused(one([](auto& o) { o.outer.halfExtents[1] = 3e38f; }),
+                  "occluders[2].outer.halfExtents[1]", "must be within +-1e+08 m");
+    expectRefused(one([](auto& o) {
+                      o.outer.axes[1] = {0.0f, 2.0f, 0.0f};
+                  }),
+                  "occluders[2].outer.axes[1]", "must be unit");
+    expectRefused(one([](auto& o) {
+                      o.outer.axes[1] = {1.0f, 0.0f, 0.0f};
+                  }),
+                  "occluders[2].outer.axes[0] and [1]", "not orthogonal");
     expectRefused(one([](auto& o) {
                       o.inner = lightscatter::OccluderBox{};
                       o.inner->center = {0.3f, 0.0f, 0.0f};  // pokes out of the outer box

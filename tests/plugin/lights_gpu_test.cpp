@@ -1,6 +1,7 @@
 // Several lights in one frame (FrameDescription::lights): the summed Lin of two lights equals the
 // sum of the two single-light renders, for epipolar and brute force, each light on its own settings
-// when it has them; a light whose volume misses the view adds no node; the refusals name the fields.
+// when it has them; a light whose volume misses the view adds no node; the refusals name the
+// fields.
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -127,8 +128,8 @@ TEST_F(LightsGpu, EachLightTakesItsOwnSettings) {
     const double peak = peakOf(linA) + peakOf(linB);
     const double withOwn = differences({input(da), own});
     const double withFrames = differences({input(da), input(db)});  // both on `fine`
-    std::printf("own settings: max |diff| %.3g; the frame's settings for both: %.3g (peak %.3g)\n", withOwn,
-                withFrames, peak);
+    std::printf("own settings: max |diff| %.3g; the frame's settings for both: %.3g (peak %.3g)\n",
+                withOwn, withFrames, peak);
     EXPECT_LE(withOwn, 1e-6 * peak);
     EXPECT_GT(withFrames, 1e-3 * peak);  // the coarse settings change the second spot's Lin
 }

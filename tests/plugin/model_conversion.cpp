@@ -16,7 +16,7 @@ ls::ref::Medium refMedium(const lightscatter::Medium& m) {
     r.g = m.g;
     r.miePhase = m.phase == lightscatter::MiePhase::Isotropic ? ls::ref::Medium::Isotropic
                  : m.phase == lightscatter::MiePhase::Hazy    ? ls::ref::Medium::Hazy
-                                                               : ls::ref::Medium::CornetteShanks;
+                                                              : ls::ref::Medium::CornetteShanks;
     r.maxDistance = m.maxDistance;
     return r;
 }
@@ -64,9 +64,10 @@ std::vector<float> float64Unshadowed(const TestFrame& frame) {
 }
 
 std::vector<float> float64Simplified(const TestFrame& frame, double a0, double a1) {
-    return perPixel(frame, [a0, a1](const auto& medium, const auto& light, const ls::ref::Ray& ray) {
-        return ls::ref::simplifiedClosedForm(medium, light, ray, a0, a1);
-    });
+    return perPixel(frame,
+                    [a0, a1](const auto& medium, const auto& light, const ls::ref::Ray& ray) {
+                        return ls::ref::simplifiedClosedForm(medium, light, ray, a0, a1);
+                    });
 }
 
 }  // namespace plugin_test

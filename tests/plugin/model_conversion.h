@@ -3,10 +3,10 @@
 // the GPU against it.
 #include <vector>
 
-#include "lightscatter.h"
-#include "test_frame.h"
 #include "float64_model/light.h"
 #include "float64_model/medium.h"
+#include "lightscatter.h"
+#include "test_frame.h"
 
 namespace plugin_test {
 

@@ -14,7 +14,8 @@ using namespace plugin_test;
 namespace {
 
 lightscatter::VulkanContext contextOf(const rg::Device& d) {
-    return {d.instance(), d.physical(), d.device(), d.queue(), d.queueFamily(), &d.enabledFeatures()};
+    return {d.instance(), d.physical(),    d.device(),
+            d.queue(),    d.queueFamily(), &d.enabledFeatures()};
 }
 
 FrameSpec smallSpot() {
@@ -39,8 +40,8 @@ class OutOfMemoryGpu : public PluginGpuTest {};
 
 TEST_F(OutOfMemoryGpu, EveryFaultPointOfAFirstFrameFailsCleanlyAndTheNextFrameWorks) {
     TestFrame frame(dev(), smallSpot());
-    const auto description =
-        frame.description(lightscatter::Method::Epipolar, lightscatter::Profile::Custom, tinySettings());
+    const auto description = frame.description(lightscatter::Method::Epipolar,
+                                               lightscatter::Profile::Custom, tinySettings());
 
     // A first frame on a fresh plugin, counting its fault points: textures, memory, pipelines, the
     // executor's own objects.
@@ -54,7 +55,8 @@ TEST_F(OutOfMemoryGpu, EveryFaultPointOfAFirstFrameFailsCleanlyAndTheNextFrameWo
         points = rg::vulkanCreationCount() - before;
         expected = frame.inscatter();
     }
-    std::printf("a first epipolar frame passes %llu fault points\n", static_cast<unsigned long long>(points));
+    std::printf("a first epipolar frame passes %llu fault points\n",
+                static_cast<unsigned long long>(points));
     ASSERT_GT(points, 20u);
 
     VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
@@ -62,7 +64,8 @@ TEST_F(OutOfMemoryGpu, EveryFaultPointOfAFirstFrameFailsCleanlyAndTheNextFrameWo
     poolInfo.queueFamilyIndex = dev().queueFamily();
     VkCommandPool pool;
     RG_VK(vkCreateCommandPool(dev().device(), &poolInfo, nullptr, &pool));
-    const std::shared_ptr<void> poolGuard(nullptr, [&](void*) { vkDestroyCommandPool(dev().device(), pool, nullptr); });
+    const std::shared_ptr<void> poolGuard(
+        nullptr, [&](void*) { vkDestroyCommandPool(dev().device(), pool, nullptr); });
     VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
     alloc.commandPool = pool;
     alloc.commandBufferCount = 1;
@@ -97,7 +100,8 @@ TEST_F(OutOfMemoryGpu, EveryFaultPointOfAFirstFrameFailsCleanlyAndTheNextFrameWo
             error = e.what();
         }
         rg::failNthVulkanCreation(0);
-        ASSERT_FALSE(error.empty()) << "fault point " << n << " of " << points << " did not fail the frame";
+        ASSERT_FALSE(error.empty())
+            << "fault point " << n << " of " << points << " did not fail the frame";
         EXPECT_NE(error.find("VK_ERROR_OUT_OF_DEVICE_MEMORY"), std::string::npos) << error;
         // A failed allocation says what needed the memory, how much, and what the device has.
         if (error.find("vkAllocateMemory") != std::string::npos) {
@@ -111,7 +115,8 @@ TEST_F(OutOfMemoryGpu, EveryFaultPointOfAFirstFrameFailsCleanlyAndTheNextFrameWo
 
         frame.resetColor();
         plugin.render(description);
-        EXPECT_EQ(frame.inscatter(), expected) << "the frame after fault point " << n << " (" << error << ")";
+        EXPECT_EQ(frame.inscatter(), expected)
+            << "the frame after fault point " << n << " (" << error << ")";
         RG_VK(vkResetCommandBuffer(cmd, 0));
     }
     EXPECT_GT(allocations, 0) << "no fault point was a memory allocation";
@@ -128,7 +133,9 @@ TEST_F(OutOfMemoryGpu, AFailedConstructionLeavesNothingBehind) {
             lightscatter::Plugin plugin(contextOf(dev()));
             ADD_FAILURE() << "fault point " << n << " of the constructor did not fail it";
         } catch (const lightscatter::DeviceError& e) {
-            EXPECT_NE(std::string(e.what()).find("VK_ERROR_OUT_OF_DEVICE_MEMORY"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("VK_ERROR_OUT_OF_DEVICE_MEMORY"),
+                      std::string::npos)
+                << e.what();
         }
         rg::failNthVulkanCreation(0);
     }

@@ -12,7 +12,7 @@ namespace plugin_test {
 lightscatter::Plugin& plugin();
 
 class PluginGpuTest : public testing_support::GpuTest {
-protected:
+  protected:
     lightscatter::FrameReport run(TestFrame& frame, lightscatter::Method method,
                                   std::optional<lightscatter::Settings> settings = std::nullopt) {
         if (!settings) settings = smallSettings(frame.spec().screen);

@@ -1,6 +1,7 @@
-// Every method's graph with its transients poisoned at first use (NaN, all ones): the output must be
-// free of NaN and equal to the unpoisoned one, which shows that no pass reads memory that another
-// resource (or the previous frame) left behind. The rendergraph test shows the poison is real.
+// Every method's graph with its transients poisoned at first use (NaN, all ones): the output must
+// be free of NaN and equal to the unpoisoned one, which shows that no pass reads memory that
+// another resource (or the previous frame) left behind. The rendergraph test shows the poison is
+// real.
 #include <cmath>
 #include <string>
 
@@ -29,7 +30,9 @@ std::vector<Case> cases() {
         {"spot epipolar without trees", spotOverGrille(), Method::Epipolar,
          [](lightscatter::Settings& s) { s.minMaxTrees = false; }},
         {"spot epipolar interpolating Lin", spotOverGrille(), Method::Epipolar,
-         [](lightscatter::Settings& s) { s.interpolation = lightscatter::Interpolation::Inscattering; }},
+         [](lightscatter::Settings& s) {
+             s.interpolation = lightscatter::Interpolation::Inscattering;
+         }},
         {"spot epipolar without fix-up", spotOverGrille(), Method::Epipolar,
          [](lightscatter::Settings& s) { s.fixup = false; }},
         {"spot brute force", spotOverGrille(), Method::BruteForce},
@@ -37,7 +40,12 @@ std::vector<Case> cases() {
         {"directional epipolar", sunThroughGrille(), Method::Epipolar},
         {"directional brute force", sunThroughGrille(), Method::BruteForce},
         {"point closed form", point, Method::Epipolar, nullptr, false, false},
-        {"spot behind the camera", spotOverGrille(), Method::Epipolar, nullptr, false, true,
+        {"spot behind the camera",
+         spotOverGrille(),
+         Method::Epipolar,
+         nullptr,
+         false,
+         true,
          {0.0f, 2.5f, -9.0f}},
     };
 }
@@ -67,7 +75,8 @@ TEST_F(PoisonedTransientsGpu, EveryMethodGivesTheSameImageWithoutNaN) {
         for (int run = 0; run < 2; ++run) {  // the second frame reuses the poisoned graph
             frame.resetColor();
             plugin().render(description);
-            ASSERT_NE(plugin().graphJson().find("\"poisonTransients\": true"), std::string::npos) << c.name;
+            ASSERT_NE(plugin().graphJson().find("\"poisonTransients\": true"), std::string::npos)
+                << c.name;
             const auto poisoned = frame.inscatter();
             size_t nan = 0, differ = 0;
             for (size_t i = 0; i < poisoned.size(); ++i) {
@@ -77,7 +86,8 @@ TEST_F(PoisonedTransientsGpu, EveryMethodGivesTheSameImageWithoutNaN) {
             EXPECT_EQ(nan, 0u) << c.name;
             EXPECT_EQ(differ, 0u) << c.name;
             const auto color = frame.color();
-            for (float v : color) ASSERT_FALSE(std::isnan(v)) << c.name << ": NaN in the composited color";
+            for (float v : color)
+                ASSERT_FALSE(std::isnan(v)) << c.name << ": NaN in the composited color";
         }
     }
 }

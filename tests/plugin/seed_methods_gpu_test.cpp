@@ -4,9 +4,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "float64_model/closed_forms.h"
 #include "model_conversion.h"
 #include "plugin_fixture.h"
-#include "float64_model/closed_forms.h"
 
 using namespace plugin_test;
 using lightscatter::Method;
@@ -43,14 +43,16 @@ FrameSpec pointAhead(float distance) {
     return s;
 }
 
-double worstRelative(const std::vector<float>& got, const std::vector<glm::dvec3>& want, double& peak) {
+double worstRelative(const std::vector<float>& got, const std::vector<glm::dvec3>& want,
+                     double& peak) {
     peak = 0;
     for (const auto& w : want) peak = std::max({peak, w.x, w.y, w.z});
     double worst = 0;
     for (size_t i = 0; i < want.size(); ++i)
         for (int c = 0; c < 3; ++c) {
             const double g = got[i * 4 + static_cast<size_t>(c)], w = want[i][c];
-            worst = std::max(worst, std::isfinite(g) ? std::fabs(g - w) / std::max(w, 1e-6 * peak) : 1e30);
+            worst = std::max(worst,
+                             std::isfinite(g) ? std::fabs(g - w) / std::max(w, 1e-6 * peak) : 1e30);
         }
     return worst;
 }
@@ -83,18 +85,24 @@ TEST_F(SeedMethodsGpu, AnalyticMatchesTheFloat64ClosedForm) {
         double nearest = 1e30, farthest = 0;
         for (uint32_t y = 0; y < s.screen.height; ++y)
             for (uint32_t x = 0; x < s.screen.width; ++x) {
-                const PixelRay r = pixelRay(s.scene, s.view, s.screen.width, s.screen.height, x, y, s.medium.maxDistance);
-                want.push_back(ls::ref::pointArctanClosedForm(medium, light, {r.origin, r.dir, r.S}));
+                const PixelRay r = pixelRay(s.scene, s.view, s.screen.width, s.screen.height, x, y,
+                                            s.medium.maxDistance);
+                want.push_back(
+                    ls::ref::pointArctanClosedForm(medium, light, {r.origin, r.dir, r.S}));
                 const double h = glm::length(glm::cross(r.dir, r.origin - light.position));
                 nearest = std::min(nearest, h);
                 farthest = std::max(farthest, h);
             }
         double peak = 0;
         const double worst = worstRelative(frame.inscatter(), want, peak);
-        std::printf("analytic, light %g m ahead: rays pass %.1e to %.1e m from it, worst relative error %.2e\n",
-                    static_cast<double>(distance), nearest, farthest, worst);
+        std::printf(
+            "analytic, light %g m ahead: rays pass %.1e to %.1e m from it, worst relative error "
+            "%.2e\n",
+            static_cast<double>(distance), nearest, farthest, worst);
         EXPECT_GT(peak, 0.0);
-        EXPECT_LT(nearest, 1e-4 * std::max(1.0, static_cast<double>(distance)));  // one ray through the light
+        EXPECT_LT(
+            nearest,
+            1e-4 * std::max(1.0, static_cast<double>(distance)));  // one ray through the light
         EXPECT_LT(worst, 1e-3) << "light " << distance << " m ahead";
     }
 }
@@ -118,7 +126,8 @@ TEST_F(SeedMethodsGpu, ConeMarchConvergesToBruteForce) {
         const auto report = run(frame, Method::ConeMarch, settings);
         EXPECT_EQ(report.method, "cone-march");
         const double e = meanRelative(frame.inscatter(), brute);
-        std::printf("cone-march, %3u samples: mean relative error against brute force %.4f\n", n, e);
+        std::printf("cone-march, %3u samples: mean relative error against brute force %.4f\n", n,
+                    e);
         EXPECT_LT(e, previous) << n << " samples";
         previous = e;
     }
@@ -152,7 +161,8 @@ TEST_F(SeedMethodsGpu, NoShadowSamplingMatchesTheUnshadowedClosedForm) {
     for (float v : closed) sum += v;
     EXPECT_GT(sum, 0.0);
     const double e = meanRelative(march, closed);
-    std::printf("cone-march without shadow sampling, 256 samples, against the closed form: %.2e\n", e);
+    std::printf("cone-march without shadow sampling, 256 samples, against the closed form: %.2e\n",
+                e);
     EXPECT_LT(e, 0.01);
 
     // The methods that need the shadow map refuse the mode.
@@ -162,7 +172,8 @@ TEST_F(SeedMethodsGpu, NoShadowSamplingMatchesTheUnshadowedClosedForm) {
             run(shadowed, m, settings);
             ADD_FAILURE() << lightscatter::methodName(m) << " accepted shadowSampling = false";
         } catch (const lightscatter::InvalidInput& err) {
-            EXPECT_NE(std::string(err.what()).find("custom.shadowSampling"), std::string::npos) << err.what();
+            EXPECT_NE(std::string(err.what()).find("custom.shadowSampling"), std::string::npos)
+                << err.what();
         }
     }
 }
@@ -186,30 +197,34 @@ TEST_F(SeedMethodsGpu, AutoPicksByWhatTheFrameHolds) {
     };
     std::vector<Row> rows;
     {
-        Row r{"shadowed spot, small screen", base(), smallSettings({48, 32}), "brute-force", "per-pixel marching is cheaper"};
+        Row r{"shadowed spot, small screen", base(), smallSettings({48, 32}), "brute-force",
+              "per-pixel marching is cheaper"};
         r.settings.slices = 1024;
         r.settings.samplesPerSlice = 1024;
         rows.push_back(r);
     }
-    rows.push_back({"shadowed spot, few epipolar samples", base(), smallSettings({48, 32}), "epipolar", "epipolar sampling"});
+    rows.push_back({"shadowed spot, few epipolar samples", base(), smallSettings({48, 32}),
+                    "epipolar", "epipolar sampling"});
     {
         Row r{"no shadow sampling", base(), smallSettings({48, 32}), "cone-march", "low-end mode"};
         r.settings.shadowSampling = false;
         rows.push_back(r);
     }
     {
-        Row r{"unshadowed point, thin isotropic medium", pointAhead(5.0f), smallSettings({32, 24}), "analytic",
-              "seed 001's closed form"};
+        Row r{"unshadowed point, thin isotropic medium", pointAhead(5.0f), smallSettings({32, 24}),
+              "analytic", "seed 001's closed form"};
         r.spec.medium.betaM = {1e-4f, 1e-4f, 1e-4f};
         rows.push_back(r);
     }
     {
-        Row r{"unshadowed point, denser medium", pointAhead(5.0f), smallSettings({32, 24}), "epipolar", "over 1%"};
+        Row r{"unshadowed point, denser medium", pointAhead(5.0f), smallSettings({32, 24}),
+              "epipolar", "over 1%"};
         r.spec.medium.betaM = {0.05f, 0.05f, 0.05f};
         rows.push_back(r);
     }
     {
-        Row r{"unshadowed point, Mie lobe", pointAhead(5.0f), smallSettings({32, 24}), "epipolar", "isotropic"};
+        Row r{"unshadowed point, Mie lobe", pointAhead(5.0f), smallSettings({32, 24}), "epipolar",
+              "isotropic"};
         r.spec.medium.betaM = {1e-4f, 1e-4f, 1e-4f};
         r.spec.medium.phase = lightscatter::MiePhase::CornetteShanks;
         rows.push_back(r);
@@ -223,9 +238,11 @@ TEST_F(SeedMethodsGpu, AutoPicksByWhatTheFrameHolds) {
         TestFrame frame(dev(), row.spec);
         frame.resetColor();
         const auto report = run(frame, Method::Auto, row.settings);
-        std::printf("auto, %-40s -> %-11s (%s)\n", row.what, report.method.c_str(), report.reason.c_str());
+        std::printf("auto, %-40s -> %-11s (%s)\n", row.what, report.method.c_str(),
+                    report.reason.c_str());
         EXPECT_EQ(report.method, row.method) << row.what;
-        EXPECT_NE(report.reason.find(row.because), std::string::npos) << row.what << ": " << report.reason;
+        EXPECT_NE(report.reason.find(row.because), std::string::npos)
+            << row.what << ": " << report.reason;
     }
 }
 
@@ -252,13 +269,16 @@ TEST_F(SeedMethodsGpu, ALightThatReachesNoViewRayBuildsNoChain) {
     clear.betaR = {0.0f, 0.0f, 0.0f};
     clear.betaM = {0.0f, 0.0f, 0.0f};
     clear.sigmaA = {0.01f, 0.01f, 0.01f};  // absorbs, scatters nothing
-    for (Method m : {Method::Epipolar, Method::BruteForce, Method::ConeMarch, Method::Slices, Method::Auto}) {
-        for (const auto& names : {passesFor(away, fog(), m), passesFor(dark, fog(), m), passesFor(sunThroughGrille(), clear, m)}) {
+    for (Method m :
+         {Method::Epipolar, Method::BruteForce, Method::ConeMarch, Method::Slices, Method::Auto}) {
+        for (const auto& names : {passesFor(away, fog(), m), passesFor(dark, fog(), m),
+                                  passesFor(sunThroughGrille(), clear, m)}) {
             std::string all;
             for (const auto& n : names) all += n + "; ";
             EXPECT_LE(names.size(), 3u) << lightscatter::methodName(m) << ": " << all;
             for (const auto& n : names)
-                EXPECT_TRUE(n.find("upload") != std::string::npos || n.find("camera") != std::string::npos ||
+                EXPECT_TRUE(n.find("upload") != std::string::npos ||
+                            n.find("camera") != std::string::npos ||
                             n.find("composite") != std::string::npos)
                     << lightscatter::methodName(m) << ": " << n;
         }

@@ -40,11 +40,16 @@ TEST(SettingsMerge, EveryFieldButTheProfileSizesIsTheEngines) {
         EXPECT_EQ(merged.slicePlanes, profile.slicePlanes);
         EXPECT_EQ(merged.sliceTarget, profile.sliceTarget);
         copyProfileSizes(merged, custom);
-        EXPECT_EQ(std::memcmp(static_cast<const void*>(&merged), static_cast<const void*>(&custom), sizeof custom), 0)
-            << lightscatter::profileName(p) << ": a field of custom did not reach the frame's settings";
+        EXPECT_EQ(std::memcmp(static_cast<const void*>(&merged), static_cast<const void*>(&custom),
+                              sizeof custom),
+                  0)
+            << lightscatter::profileName(p)
+            << ": a field of custom did not reach the frame's settings";
     }
     Settings asGiven = lightscatter::detail::mergedSettings(Profile::Custom, custom);
-    EXPECT_EQ(std::memcmp(static_cast<const void*>(&asGiven), static_cast<const void*>(&custom), sizeof custom), 0);
+    EXPECT_EQ(std::memcmp(static_cast<const void*>(&asGiven), static_cast<const void*>(&custom),
+                          sizeof custom),
+              0);
 }
 
 // The test above would pass for a merge that copies nothing at all if the profile's sizes were

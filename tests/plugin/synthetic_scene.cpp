@@ -73,7 +73,8 @@ PixelRay pixelRay(const Scene& scene, const View& view, uint32_t width, uint32_t
     const double cosAxis = glm::dot(r.dir, forward);
     double t = scene.intersect(r.origin, r.dir);
     // Beyond the far plane a surface is clipped: that pixel is sky.
-    if (!view.infiniteFar && t * cosAxis > view.farPlane) t = std::numeric_limits<double>::infinity();
+    if (!view.infiniteFar && t * cosAxis > view.farPlane)
+        t = std::numeric_limits<double>::infinity();
     if (std::isinf(t)) {
         t = maxDistance;
         if (!view.infiniteFar) t = std::min(view.farPlane / cosAxis, maxDistance);
@@ -82,7 +83,8 @@ PixelRay pixelRay(const Scene& scene, const View& view, uint32_t width, uint32_t
     return r;
 }
 
-std::vector<float> renderDepth(const Scene& scene, const View& view, uint32_t width, uint32_t height) {
+std::vector<float> renderDepth(const Scene& scene, const View& view, uint32_t width,
+                               uint32_t height) {
     std::vector<float> depth(size_t{width} * height);
     const glm::dmat4 vp = view.viewProj();
     const glm::dvec3 eye = glm::dvec3(glm::inverse(glm::dmat4(view.view))[3]);
@@ -101,8 +103,8 @@ std::vector<float> renderDepth(const Scene& scene, const View& view, uint32_t wi
     return depth;
 }
 
-std::vector<float> renderShadowMap(const Scene& scene, const glm::mat4& lightViewProj, uint32_t size,
-                                   bool reversedZ) {
+std::vector<float> renderShadowMap(const Scene& scene, const glm::mat4& lightViewProj,
+                                   uint32_t size, bool reversedZ) {
     std::vector<float> depth(size_t{size} * size, reversedZ ? 0.0f : 1.0f);
     const glm::dmat4 m(lightViewProj);
     const glm::dmat4 inv = glm::inverse(m);
@@ -123,14 +125,14 @@ std::vector<float> renderShadowMap(const Scene& scene, const glm::mat4& lightVie
 Scene grilleScene() {
     Scene s;
     s.quads.push_back({{0, 0, 0}, {20, 0, 0}, {0, 0, -20}});  // ground, facing up
-    for (int i = -2; i <= 2; ++i)  // bars of a grille at y = 3
+    for (int i = -2; i <= 2; ++i)                             // bars of a grille at y = 3
         s.quads.push_back({{0.5 * i, 3.0, 0}, {0.12, 0, 0}, {0, 0, -1.6}});
     s.quads.push_back({{-1.2, 1.0, 0.4}, {0.5, 0, 0}, {0, 1.0, 0}});  // a wall piece
     return s;
 }
 
-View lookAt(glm::vec3 eye, glm::vec3 target, float fovDegrees, float aspect, float nearP, float farP,
-            bool reversedZ, bool infiniteFar) {
+View lookAt(glm::vec3 eye, glm::vec3 target, float fovDegrees, float aspect, float nearP,
+            float farP, bool reversedZ, bool infiniteFar) {
     View v;
     glm::vec3 up(0, 1, 0);
     if (std::fabs(glm::dot(glm::normalize(target - eye), up)) > 0.999f) up = glm::vec3(0, 0, -1);
@@ -146,16 +148,20 @@ View lookAt(glm::vec3 eye, glm::vec3 target, float fovDegrees, float aspect, flo
 
 glm::mat4 spotShadowMatrix(const lightscatter::Light& light, float nearP, float farP) {
     const glm::vec3 pos(light.position[0], light.position[1], light.position[2]);
-    const glm::vec3 dir = glm::normalize(glm::vec3(light.direction[0], light.direction[1], light.direction[2]));
+    const glm::vec3 dir =
+        glm::normalize(glm::vec3(light.direction[0], light.direction[1], light.direction[2]));
     glm::vec3 up(0, 1, 0);
     if (std::fabs(glm::dot(dir, up)) > 0.999f) up = glm::vec3(0, 0, -1);
     const glm::mat4 view = glm::lookAtRH(pos, pos + dir, up);
     // A little wider than the cone, so the cone's edge falls inside the map.
     const float fov = 2.0f * glm::radians(std::min(light.halfAngleDegrees + 2.0f, 89.0f));
-    return testing_support::vulkanPerspective(fov, 1.0f, nearP, farP, light.shadowReversedZ, false) * view;
+    return testing_support::vulkanPerspective(fov, 1.0f, nearP, farP, light.shadowReversedZ,
+                                              false) *
+           view;
 }
 
-glm::mat4 directionalShadowMatrix(const glm::vec3& direction, const glm::vec3& center, float radius) {
+glm::mat4 directionalShadowMatrix(const glm::vec3& direction, const glm::vec3& center,
+                                  float radius) {
     const glm::vec3 dir = glm::normalize(direction);
     glm::vec3 up(0, 1, 0);
     if (std::fabs(glm::dot(dir, up)) > 0.999f) up = glm::vec3(0, 0, -1);

@@ -1,6 +1,7 @@
 #pragma once
-// Small scenes for plugin tests: parallelograms ray-cast in double precision into the camera's depth
-// buffer and the light's shadow map at pixel and texel centres, as a rasterizer would sample them.
+// Small scenes for plugin tests: parallelograms ray-cast in double precision into the camera's
+// depth buffer and the light's shadow map at pixel and texel centres, as a rasterizer would sample
+// them.
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <limits>
@@ -28,12 +29,13 @@ struct View {
 };
 
 // The depth-buffer values a rasterizer would store (sky: the far value).
-std::vector<float> renderDepth(const Scene& scene, const View& view, uint32_t width, uint32_t height);
+std::vector<float> renderDepth(const Scene& scene, const View& view, uint32_t width,
+                               uint32_t height);
 
 // Shadow map of a light whose world -> clip matrix is `lightViewProj` (standard depth, 1 = empty).
 // Empty texels hold the far value: 1, or 0 for a reversed-z projection.
-std::vector<float> renderShadowMap(const Scene& scene, const glm::mat4& lightViewProj, uint32_t size,
-                                   bool reversedZ = false);
+std::vector<float> renderShadowMap(const Scene& scene, const glm::mat4& lightViewProj,
+                                   uint32_t size, bool reversedZ = false);
 
 // The ray through a pixel centre and the distance S to its end (surface, or the sky rule of
 // docs/model.md), in double.
@@ -48,9 +50,10 @@ lightscatter::Mat4 toMat4(const glm::mat4& m);
 
 // Scenes used by several tests.
 Scene grilleScene();  // ground, a grille of bars above it, a box
-View lookAt(glm::vec3 eye, glm::vec3 target, float fovDegrees, float aspect, float nearP, float farP,
-            bool reversedZ = false, bool infiniteFar = false);
+View lookAt(glm::vec3 eye, glm::vec3 target, float fovDegrees, float aspect, float nearP,
+            float farP, bool reversedZ = false, bool infiniteFar = false);
 glm::mat4 spotShadowMatrix(const lightscatter::Light& light, float nearP, float farP);
-glm::mat4 directionalShadowMatrix(const glm::vec3& direction, const glm::vec3& center, float radius);
+glm::mat4 directionalShadowMatrix(const glm::vec3& direction, const glm::vec3& center,
+                                  float radius);
 
 }  // namespace plugin_test

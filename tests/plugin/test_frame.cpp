@@ -4,45 +4,50 @@
 
 namespace plugin_test {
 
-TestFrame::TestFrame(const rg::Device& device, FrameSpec spec) : device_(device), spec_(std::move(spec)) {
+TestFrame::TestFrame(const rg::Device& device, FrameSpec spec)
+    : device_(device), spec_(std::move(spec)) {
     light_ = spec_.light;
     const VkExtent2D s = spec_.screen;
     const VkImageUsageFlags depthUsage =
-        VK_IMAGE_USAGE_SAMPLED_BIT | (spec_.depthAttachment ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT : 0);
+        VK_IMAGE_USAGE_SAMPLED_BIT |
+        (spec_.depthAttachment ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT : 0);
     depth_ = std::make_unique<TestImage>(device, VK_FORMAT_D32_SFLOAT, s, depthUsage,
                                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, "test depth");
     if (!spec_.noise.empty()) {
-        noise_ = std::make_unique<TestImage>(device, VK_FORMAT_R32G32B32A32_SFLOAT, VkExtent2D{16, 16},
-                                             VK_IMAGE_USAGE_SAMPLED_BIT, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                                             "test noise");
+        noise_ = std::make_unique<TestImage>(
+            device, VK_FORMAT_R32G32B32A32_SFLOAT, VkExtent2D{16, 16}, VK_IMAGE_USAGE_SAMPLED_BIT,
+            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, "test noise");
         noise_->upload(spec_.noise);
     }
-    depth_->upload(spec_.depthOverride.empty() ? renderDepth(spec_.scene, spec_.view, s.width, s.height)
-                                               : spec_.depthOverride);
-    color_ = std::make_unique<TestImage>(device, VK_FORMAT_R32G32B32A32_SFLOAT, s, VK_IMAGE_USAGE_STORAGE_BIT,
-                                         VK_IMAGE_LAYOUT_GENERAL, "test color");
+    depth_->upload(spec_.depthOverride.empty()
+                       ? renderDepth(spec_.scene, spec_.view, s.width, s.height)
+                       : spec_.depthOverride);
+    color_ = std::make_unique<TestImage>(device, VK_FORMAT_R32G32B32A32_SFLOAT, s,
+                                         VK_IMAGE_USAGE_STORAGE_BIT, VK_IMAGE_LAYOUT_GENERAL,
+                                         "test color");
     resetColor();
-    out_ = std::make_unique<TestImage>(device, VK_FORMAT_R32G32B32A32_SFLOAT, s, VK_IMAGE_USAGE_STORAGE_BIT,
-                                       VK_IMAGE_LAYOUT_GENERAL, "test in-scattering");
+    out_ = std::make_unique<TestImage>(device, VK_FORMAT_R32G32B32A32_SFLOAT, s,
+                                       VK_IMAGE_USAGE_STORAGE_BIT, VK_IMAGE_LAYOUT_GENERAL,
+                                       "test in-scattering");
     if (spec_.shadowed && light_.type != lightscatter::LightType::Point) {
         if (light_.shadowMapSize == 0) light_.shadowMapSize = 128;
-        const glm::mat4 m =
-            light_.type == lightscatter::LightType::Spot
-                ? spotShadowMatrix(light_, spec_.shadowNear, spec_.shadowFar)
-                : directionalShadowMatrix({light_.direction[0], light_.direction[1], light_.direction[2]},
-                                          spec_.sceneCenter, spec_.sceneRadius);
+        const glm::mat4 m = light_.type == lightscatter::LightType::Spot
+                                ? spotShadowMatrix(light_, spec_.shadowNear, spec_.shadowFar)
+                                : directionalShadowMatrix({light_.direction[0], light_.direction[1],
+                                                           light_.direction[2]},
+                                                          spec_.sceneCenter, spec_.sceneRadius);
         light_.shadowViewProjection = toMat4(m);
         const uint32_t n = light_.shadowMapSize;
-        shadow_ = std::make_unique<TestImage>(device, VK_FORMAT_D32_SFLOAT, VkExtent2D{n, n},
-                                              VK_IMAGE_USAGE_SAMPLED_BIT,
-                                              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, "test shadow map");
+        shadow_ = std::make_unique<TestImage>(
+            device, VK_FORMAT_D32_SFLOAT, VkExtent2D{n, n}, VK_IMAGE_USAGE_SAMPLED_BIT,
+            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, "test shadow map");
         shadow_->upload(renderShadowMap(spec_.scene, m, n, light_.shadowReversedZ));
         if (spec_.coloredLight) {
             // Stripes of red, green and blue glass across the light's view.
             const uint32_t c = 32;
-            lightColor_ = std::make_unique<TestImage>(device, VK_FORMAT_R32G32B32A32_SFLOAT, VkExtent2D{c, c},
-                                                      VK_IMAGE_USAGE_SAMPLED_BIT,
-                                                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, "test light color");
+            lightColor_ = std::make_unique<TestImage>(
+                device, VK_FORMAT_R32G32B32A32_SFLOAT, VkExtent2D{c, c}, VK_IMAGE_USAGE_SAMPLED_BIT,
+                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, "test light color");
             std::vector<float> texels(size_t{c} * c * 4, 1.0f);
             for (uint32_t y = 0; y < c; ++y)
                 for (uint32_t x = 0; x < c; ++x) {
@@ -62,9 +67,9 @@ void TestFrame::resetColor() {
     color_->upload(c);
 }
 
-lightscatter::FrameDescription TestFrame::description(lightscatter::Method method,
-                                                      lightscatter::Profile profile,
-                                                      const lightscatter::Settings& settings) const {
+lightscatter::FrameDescription TestFrame::description(
+    lightscatter::Method method, lightscatter::Profile profile,
+    const lightscatter::Settings& settings) const {
     lightscatter::FrameDescription f;
     f.depth = depth_->input();
     f.color = color_->input();
@@ -128,7 +133,8 @@ lightscatter::Medium fog() {
 
 View defaultView(VkExtent2D screen) {
     return lookAt({0.0f, 2.5f, 9.0f}, {0.0f, 1.5f, 0.0f}, 60.0f,
-                  static_cast<float>(screen.width) / static_cast<float>(screen.height), 0.1f, 50.0f);
+                  static_cast<float>(screen.width) / static_cast<float>(screen.height), 0.1f,
+                  50.0f);
 }
 
 lightscatter::Settings smallSettings(VkExtent2D screen) {

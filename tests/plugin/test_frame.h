@@ -15,21 +15,22 @@ struct FrameSpec {
     lightscatter::Light light;
     lightscatter::Medium medium;
     VkExtent2D screen{48, 32};
-    float shadowNear = 0.5f, shadowFar = 30.0f;   // spot shadow frustum
-    glm::vec3 sceneCenter{0.0f, 1.0f, 0.0f};      // directional shadow box
+    float shadowNear = 0.5f, shadowFar = 30.0f;  // spot shadow frustum
+    glm::vec3 sceneCenter{0.0f, 1.0f, 0.0f};     // directional shadow box
     float sceneRadius = 12.0f;
-    float background = 0.25f;                      // the engine's color before compositing
+    float background = 0.25f;  // the engine's color before compositing
     bool shadowed = true;
-    std::vector<float> depthOverride;              // replaces the ray-cast depth when not empty
-    bool coloredLight = false;                     // stained glass: light-space color texture
-    bool depthAttachment = true;                   // the depth image allows a depth attachment
-    std::vector<float> noise;                      // 16x16 RGBA noise texels for slices; empty: none
+    std::vector<float> depthOverride;  // replaces the ray-cast depth when not empty
+    bool coloredLight = false;         // stained glass: light-space color texture
+    bool depthAttachment = true;       // the depth image allows a depth attachment
+    std::vector<float> noise;          // 16x16 RGBA noise texels for slices; empty: none
 };
 
 class TestFrame {
-public:
+  public:
     TestFrame(const rg::Device& device, FrameSpec spec);
-    lightscatter::FrameDescription description(lightscatter::Method method, lightscatter::Profile profile,
+    lightscatter::FrameDescription description(lightscatter::Method method,
+                                               lightscatter::Profile profile,
                                                const lightscatter::Settings& settings) const;
     std::vector<float> inscatter() { return out_->download(); }  // RGBA per pixel
     std::vector<float> color() { return color_->download(); }
@@ -37,7 +38,7 @@ public:
     const FrameSpec& spec() const { return spec_; }
     const lightscatter::Light& light() const { return light_; }
 
-private:
+  private:
     const rg::Device& device_;
     FrameSpec spec_;
     lightscatter::Light light_;
@@ -62,10 +63,10 @@ lightscatter::Settings smallSettings(VkExtent2D screen = {48, 32});
 
 // Relative error statistics of `a` against `b` (RGB of RGBA arrays), over pixels where b matters.
 struct ErrorStats {
-    double meanRelative = 0;   // mean |a - b| / max(b), per channel, over every pixel
-    double maxRelative = 0;    // max |a - b| / max(b)
+    double meanRelative = 0;  // mean |a - b| / max(b), per channel, over every pixel
+    double maxRelative = 0;   // max |a - b| / max(b)
     double rmsRelative = 0;
-    double peak = 0;           // max(b)
+    double peak = 0;  // max(b)
     size_t nonFinite = 0;
 };
 ErrorStats compare(const std::vector<float>& a, const std::vector<float>& b);

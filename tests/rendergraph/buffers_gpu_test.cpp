@@ -35,10 +35,13 @@ TEST_F(BuffersGpu, ComputeChainThroughTransientBuffers) {
         const rg::BufferRef target = a;
         p.execute([pipes, target](rg::PassContext& ctx) {
             if (!pipes->fill)
-                pipes->fill = rg::Pipeline::compute(ctx.device(), "fill", rg::spirv(ls_spirv::fill_buffer_comp),
+                pipes->fill = rg::Pipeline::compute(ctx.device(), "fill",
+                                                    rg::spirv(ls_spirv::fill_buffer_comp),
                                                     {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}}, 4);
             pipes->fill.bind(ctx.cmd());
-            rg::DescriptorPush().storageBuffer(0, ctx.buffer(target)).push(ctx.device(), ctx.cmd(), pipes->fill);
+            rg::DescriptorPush()
+                .storageBuffer(0, ctx.buffer(target))
+                .push(ctx.device(), ctx.cmd(), pipes->fill);
             pipes->fill.push(ctx.cmd(), kCount);
             vkCmdDispatch(ctx.cmd(), (kCount + 63) / 64, 1, 1);
         });
@@ -50,9 +53,11 @@ TEST_F(BuffersGpu, ComputeChainThroughTransientBuffers) {
         const rg::BufferRef src = a, dst = b;
         p.execute([pipes, src, dst](rg::PassContext& ctx) {
             if (!pipes->square)
-                pipes->square = rg::Pipeline::compute(
-                    ctx.device(), "square", rg::spirv(ls_spirv::square_buffer_comp),
-                    {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}}, 4);
+                pipes->square = rg::Pipeline::compute(ctx.device(), "square",
+                                                      rg::spirv(ls_spirv::square_buffer_comp),
+                                                      {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                                       {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}},
+                                                      4);
             pipes->square.bind(ctx.cmd());
             rg::DescriptorPush()
                 .storageBuffer(0, ctx.buffer(src))

@@ -17,7 +17,8 @@ ImageRef color(RenderGraph& g, const char* name, VkFormat f = VK_FORMAT_R16G16B1
 
 TEST(CompileRules, UnknownResourceFromAnotherGraph) {
     RenderGraph other;
-    const ImageRef foreign = other.createImage("foreign", ImageDesc::absolute(VK_FORMAT_R32_SFLOAT, 4, 4));
+    const ImageRef foreign =
+        other.createImage("foreign", ImageDesc::absolute(VK_FORMAT_R32_SFLOAT, 4, 4));
     RenderGraph g;
     auto p = g.addPass("consumer", PassType::Compute);
     p.sampled(foreign);
@@ -80,7 +81,8 @@ TEST(CompileRules, MissingD24S8IsReportedAndAlternativeChosen) {
 
 TEST(CompileRules, ImportedImageWithoutTheUsage) {
     RenderGraph g;
-    ImageRef engine = g.importImage("engine color", graph_test::importedColor(kSize, VK_IMAGE_USAGE_SAMPLED_BIT));
+    ImageRef engine =
+        g.importImage("engine color", graph_test::importedColor(kSize, VK_IMAGE_USAGE_SAMPLED_BIT));
     auto p = g.addPass("composite", PassType::Compute);
     (void)p.storageWrite(engine);
     expectRejected(g, Rule::UsageNotDeclared, {"'composite'", "'engine color'", "storage"});
@@ -89,12 +91,14 @@ TEST(CompileRules, ImportedImageWithoutTheUsage) {
 TEST(CompileRules, AttachmentExtentsDiffer) {
     RenderGraph g;
     ImageRef c = color(g, "color");
-    ImageRef ds = g.createImage("small stencil", ImageDesc::absolute(VK_FORMAT_D32_SFLOAT_S8_UINT, 32, 32));
+    ImageRef ds =
+        g.createImage("small stencil", ImageDesc::absolute(VK_FORMAT_D32_SFLOAT_S8_UINT, 32, 32));
     auto p = g.addPass("draw", PassType::Graphics);
     (void)p.colorAttachment(c, LoadOp::Clear);
     (void)p.stencilWrite(ds, LoadOp::Clear);
     p.sideEffect();
-    expectRejected(g, Rule::ExtentMismatch, {"'draw'", "'color'", "64x32", "'small stencil'", "32x32"});
+    expectRejected(g, Rule::ExtentMismatch,
+                   {"'draw'", "'color'", "64x32", "'small stencil'", "32x32"});
 }
 
 TEST(CompileRules, CycleIsNamed) {
@@ -128,7 +132,8 @@ TEST(CompileRules, TwoWritersOfTheSameVersionAreUnordered) {
 TEST(CompileRules, StencilTestOnFormatWithoutStencil) {
     RenderGraph g;
     ImageRef c = color(g, "color");
-    ImageRef d = g.createImage("depth only", ImageDesc::absolute(VK_FORMAT_D32_SFLOAT, kSize.width, kSize.height));
+    ImageRef d = g.createImage(
+        "depth only", ImageDesc::absolute(VK_FORMAT_D32_SFLOAT, kSize.width, kSize.height));
     auto w = g.addPass("write depth", PassType::Graphics);
     d = w.depthWrite(d, LoadOp::Clear);
     auto p = g.addPass("stencil tested draw", PassType::Graphics);
@@ -165,7 +170,8 @@ TEST(CompileRules, SampledAndColorAttachmentInOnePassConflict) {
     p.sampled(c);
     (void)p.colorAttachment(c, LoadOp::Load);
     p.sideEffect();
-    expectRejected(g, Rule::ConflictingUses, {"'loop'", "'feedback'", "sampled", "color attachment"});
+    expectRejected(g, Rule::ConflictingUses,
+                   {"'loop'", "'feedback'", "sampled", "color attachment"});
 }
 
 TEST(CompileRules, DepthSampledWhileStencilWrittenIsAllowed) {

@@ -45,7 +45,8 @@ rg::ImportedImage engineColor(VkImage image, VkExtent2D size) {
     return d;
 }
 
-// The engine's own use after the graph: a copy from TRANSFER_SRC_OPTIMAL into `host`, read on the CPU.
+// The engine's own use after the graph: a copy from TRANSFER_SRC_OPTIMAL into `host`, read on the
+// CPU.
 void copyToHost(const rg::Device& dev, VkImage image, VkExtent2D size, rg::HostBuffer& host) {
     dev.submitAndWait([&](VkCommandBuffer cmd) {
         rg::recordReadback(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, size, host.buffer());
@@ -59,7 +60,8 @@ class ImportsGpu : public GpuTest {};
 TEST_F(ImportsGpu, RendersIntoEngineImagesAndLeavesThemInTheFinalLayout) {
     const VkExtent2D size{24, 16};
     EngineImage images[2] = {{dev(), size, "engine image 0"}, {dev(), size, "engine image 1"}};
-    rg::HostBuffer host(dev(), 4 * size.width * size.height, VK_BUFFER_USAGE_TRANSFER_DST_BIT, "engine readback");
+    rg::HostBuffer host(dev(), 4 * size.width * size.height, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                        "engine readback");
 
     auto describe = [&](VkImage img) { return engineColor(img, size); };
     auto pipeline = std::make_shared<rg::Pipeline>();
@@ -108,9 +110,11 @@ TEST_F(ImportsGpu, RendersIntoEngineImagesAndLeavesThemInTheFinalLayout) {
 TEST_F(ImportsGpu, EngineDepthIsAReadOnlyDepthAttachment) {
     const VkExtent2D size{16, 8};
     EngineImage color(dev(), size, "engine color");
-    EngineImage depth(dev(), size, "engine depth", VK_FORMAT_D32_SFLOAT,
-                      VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
-    rg::HostBuffer host(dev(), 4 * size.width * size.height, VK_BUFFER_USAGE_TRANSFER_DST_BIT, "engine readback");
+    EngineImage depth(
+        dev(), size, "engine depth", VK_FORMAT_D32_SFLOAT,
+        VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+    rg::HostBuffer host(dev(), 4 * size.width * size.height, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                        "engine readback");
 
     const rg::ImportedImage c = engineColor(color.image(), size);
     rg::ImportedImage d;
@@ -194,11 +198,14 @@ TEST_F(ImportsGpu, SixLayerDepthImageIsTransitionedWhole) {
     const VkExtent2D size{4, 4};
     for (const bool cube : {true, false}) {
         SCOPED_TRACE(cube ? "cube-compatible" : "2D array");
-        const VkImageUsageFlags usage =
-            VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-        EngineImage depth(dev(), size, cube ? "engine cube depth" : "engine array depth", VK_FORMAT_D32_SFLOAT, usage,
-                          kLayers, cube ? VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT : 0);
-        rg::HostBuffer sampled(dev(), kLayers * sizeof(float), VK_BUFFER_USAGE_TRANSFER_DST_BIT, "sampled layers");
+        const VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT |
+                                        VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                                        VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+        EngineImage depth(dev(), size, cube ? "engine cube depth" : "engine array depth",
+                          VK_FORMAT_D32_SFLOAT, usage, kLayers,
+                          cube ? VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT : 0);
+        rg::HostBuffer sampled(dev(), kLayers * sizeof(float), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                               "sampled layers");
         rg::HostBuffer copied(dev(), kLayers * size.width * size.height * sizeof(float),
                               VK_BUFFER_USAGE_TRANSFER_DST_BIT, "copied layers");
         const rg::Samplers samplers(dev());
@@ -231,10 +238,13 @@ TEST_F(ImportsGpu, SixLayerDepthImageIsTransitionedWhole) {
                 if (!*pipeline)
                     *pipeline = rg::Pipeline::compute(
                         ctx.device(), "read every layer", rg::spirv(ls_spirv::read_layers_comp),
-                        {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}, {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}}, 0);
+                        {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
+                         {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}},
+                        0);
                 pipeline->bind(ctx.cmd());
                 rg::DescriptorPush()
-                    .sampled(0, ctx.view(layers, VK_IMAGE_ASPECT_DEPTH_BIT), ctx.layout(layers), nearest)
+                    .sampled(0, ctx.view(layers, VK_IMAGE_ASPECT_DEPTH_BIT), ctx.layout(layers),
+                             nearest)
                     .storageBuffer(1, ctx.buffer(target))
                     .push(ctx.device(), ctx.cmd(), *pipeline);
                 vkCmdDispatch(ctx.cmd(), 1, 1, 1);
@@ -253,14 +263,17 @@ TEST_F(ImportsGpu, SixLayerDepthImageIsTransitionedWhole) {
         const rg::VulkanDeviceCaps caps(dev());
         rg::GraphExecutor exec(dev(), g, rg::compile(g, caps));
         for (int frame = 0; frame < 2; ++frame) {
-            auto layerDepth = [&](uint32_t layer) { return 0.1f * static_cast<float>(layer + 1) + 0.05f * static_cast<float>(frame); };
+            auto layerDepth = [&](uint32_t layer) {
+                return 0.1f * static_cast<float>(layer + 1) + 0.05f * static_cast<float>(frame);
+            };
             dev().submitAndWait([&](VkCommandBuffer cmd) {
                 VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
                 b.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
                 b.srcAccessMask = VK_ACCESS_2_TRANSFER_READ_BIT;
                 b.dstStageMask = VK_PIPELINE_STAGE_2_CLEAR_BIT;
                 b.dstAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-                b.oldLayout = frame == 0 ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+                b.oldLayout =
+                    frame == 0 ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
                 b.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
                 b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
                 b.image = depth.image();
@@ -280,7 +293,8 @@ TEST_F(ImportsGpu, SixLayerDepthImageIsTransitionedWhole) {
             exec.run();
             const auto* v = static_cast<const float*>(sampled.data());
             for (uint32_t layer = 0; layer < kLayers; ++layer)
-                EXPECT_FLOAT_EQ(v[layer], layerDepth(layer)) << "layer " << layer << ", frame " << frame;
+                EXPECT_FLOAT_EQ(v[layer], layerDepth(layer))
+                    << "layer " << layer << ", frame " << frame;
 
             // The engine's next use, after the graph's last barrier: a copy of every layer.
             dev().submitAndWait([&](VkCommandBuffer cmd) {
@@ -289,7 +303,8 @@ TEST_F(ImportsGpu, SixLayerDepthImageIsTransitionedWhole) {
             });
             const auto* texels = static_cast<const float*>(copied.data());
             for (uint32_t layer = 0; layer < kLayers; ++layer)
-                EXPECT_FLOAT_EQ(texels[layer * size.width * size.height], layerDepth(layer)) << "layer " << layer;
+                EXPECT_FLOAT_EQ(texels[layer * size.width * size.height], layerDepth(layer))
+                    << "layer " << layer;
         }
     }
 }

@@ -13,7 +13,7 @@
 using testing_support::GpuTest;
 
 class PassContextGpu : public GpuTest {
-protected:
+  protected:
     // A graph whose "snoop" pass declares a sampled read of "declared" and runs `probe` on a
     // context for it; "undeclared" is written by the same pass that writes "declared", so it is
     // alive and allocated, just not this pass's to touch.

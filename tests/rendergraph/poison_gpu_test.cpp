@@ -17,13 +17,18 @@ class PoisonGpu : public GpuTest {};
 TEST_F(PoisonGpu, UnwrittenTransientsReadBackAsTheSignallingPattern) {
     constexpr uint32_t kSide = 8, kTexels = kSide * kSide;
     const VkDeviceSize floatBytes = kTexels * 4, uintBytes = kTexels * 4, bufferBytes = 256;
-    rg::HostBuffer floats(dev(), floatBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, "poison float readback");
-    rg::HostBuffer uints(dev(), uintBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, "poison uint readback");
-    rg::HostBuffer words(dev(), bufferBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, "poison buffer readback");
+    rg::HostBuffer floats(dev(), floatBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                          "poison float readback");
+    rg::HostBuffer uints(dev(), uintBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                         "poison uint readback");
+    rg::HostBuffer words(dev(), bufferBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                         "poison buffer readback");
 
     rg::RenderGraph g;
-    rg::ImageRef f = g.createImage("float image", rg::ImageDesc::absolute(VK_FORMAT_R32_SFLOAT, kSide, kSide));
-    rg::ImageRef u = g.createImage("uint image", rg::ImageDesc::absolute(VK_FORMAT_R16G16_UINT, kSide, kSide));
+    rg::ImageRef f =
+        g.createImage("float image", rg::ImageDesc::absolute(VK_FORMAT_R32_SFLOAT, kSide, kSide));
+    rg::ImageRef u =
+        g.createImage("uint image", rg::ImageDesc::absolute(VK_FORMAT_R16G16_UINT, kSide, kSide));
     rg::BufferRef b = g.createBuffer("buffer", {bufferBytes});
     rg::BufferRef outF = g.importBuffer("float readback", floats.asReadback());
     rg::BufferRef outU = g.importBuffer("uint readback", uints.asReadback());
@@ -50,8 +55,10 @@ TEST_F(PoisonGpu, UnwrittenTransientsReadBackAsTheSignallingPattern) {
             VkBufferImageCopy region{};
             region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
             region.imageExtent = {kSide, kSide, 1};
-            vkCmdCopyImageToBuffer(ctx.cmd(), ctx.image(fi), ctx.layout(fi), ctx.buffer(fo), 1, &region);
-            vkCmdCopyImageToBuffer(ctx.cmd(), ctx.image(ui), ctx.layout(ui), ctx.buffer(uo), 1, &region);
+            vkCmdCopyImageToBuffer(ctx.cmd(), ctx.image(fi), ctx.layout(fi), ctx.buffer(fo), 1,
+                                   &region);
+            vkCmdCopyImageToBuffer(ctx.cmd(), ctx.image(ui), ctx.layout(ui), ctx.buffer(uo), 1,
+                                   &region);
             const VkBufferCopy copy{0, 0, bufferBytes};
             vkCmdCopyBuffer(ctx.cmd(), ctx.buffer(bi), ctx.buffer(bo), 1, &copy);
         });
@@ -70,6 +77,7 @@ TEST_F(PoisonGpu, UnwrittenTransientsReadBackAsTheSignallingPattern) {
         const auto* bv = static_cast<const uint32_t*>(words.data());
         for (uint32_t i = 0; i < kTexels; ++i) ASSERT_TRUE(std::isnan(fv[i])) << "texel " << i;
         for (uint32_t i = 0; i < 2 * kTexels; ++i) ASSERT_EQ(uv[i], 0xffffu) << "channel " << i;
-        for (uint32_t i = 0; i < bufferBytes / 4; ++i) ASSERT_EQ(bv[i], 0x7fc00000u) << "word " << i;
+        for (uint32_t i = 0; i < bufferBytes / 4; ++i)
+            ASSERT_EQ(bv[i], 0x7fc00000u) << "word " << i;
     }
 }

@@ -1,6 +1,6 @@
 // Reports name every pass and resource with its placement; DOT marks culled passes.
-#include "graph_test_util.h"
 #include "rendergraph/report.h"
+#include "graph_test_util.h"
 
 using namespace rg;
 

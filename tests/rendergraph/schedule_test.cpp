@@ -76,7 +76,8 @@ TEST(Schedule, CullsPassesNobodyNeeds) {
 
 TEST(Schedule, WritesToImportsAndSideEffectsAreKept) {
     RenderGraph g;
-    ImageRef engine = g.importImage("engine", graph_test::importedColor({16, 16}, VK_IMAGE_USAGE_STORAGE_BIT));
+    ImageRef engine =
+        g.importImage("engine", graph_test::importedColor({16, 16}, VK_IMAGE_USAGE_STORAGE_BIT));
     auto p = g.addPass("write engine image", PassType::Compute);
     (void)p.storageWrite(engine);
     auto s = g.addPass("side effect", PassType::Compute);
@@ -130,8 +131,10 @@ TEST(Schedule, Lifetimes) {
 
 TEST(Schedule, StencilTestOrdersAfterStencilWrite) {
     RenderGraph g;
-    ImageRef ds = g.createImage("stencil", ImageDesc::absolute(VK_FORMAT_D32_SFLOAT_S8_UINT, 16, 16));
-    ImageRef color = g.createImage("color", ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT, 16, 16));
+    ImageRef ds =
+        g.createImage("stencil", ImageDesc::absolute(VK_FORMAT_D32_SFLOAT_S8_UINT, 16, 16));
+    ImageRef color =
+        g.createImage("color", ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT, 16, 16));
     ImageRef marked{ds.graph, ds.id, 1};
     // Declared first: the test of the marks the next pass makes.
     auto use = g.addPass("stencil-tested draw", PassType::Graphics);

@@ -95,7 +95,8 @@ TEST(Sync, WriteAfterReadWaitsForTheReader) {
 
 TEST(Sync, ImportIsHandedBackInItsFinalLayout) {
     RenderGraph g;
-    auto desc = graph_test::importedColor({8, 8}, VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT);
+    auto desc =
+        graph_test::importedColor({8, 8}, VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT);
     desc.initialLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     desc.initialStages = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
     desc.initialAccess = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
@@ -175,8 +176,9 @@ ImportedImage engineDepth(VkImageUsageFlags usage) {
 // stored, and handed back to the engine in its own layout.
 TEST(Sync, ImportedDepthSampledThenTestedReadOnly) {
     RenderGraph g;
-    ImageRef depth =
-        g.importImage("engine depth", engineDepth(VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT));
+    ImageRef depth = g.importImage(
+        "engine depth",
+        engineDepth(VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT));
     ImageRef z = g.createImage("z", ImageDesc::absolute(VK_FORMAT_R32_SFLOAT, 8, 8));
     ImageRef out = g.createImage("out", ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT, 8, 8));
     auto s = g.addPass("sample depth", PassType::Compute);

@@ -50,14 +50,18 @@ TEST_F(TestPatternGpu, PixelsMatchTheCpuModelOverSeveralFrames) {
                 std::array<float, 4> sum{};
                 for (int dy = -1; dy <= 1; ++dy)
                     for (int dx = -1; dx <= 1; ++dx) {
-                        const int sx = std::clamp(static_cast<int>(x) + dx, 0, static_cast<int>(size.width) - 1);
-                        const int sy = std::clamp(static_cast<int>(y) + dy, 0, static_cast<int>(size.height) - 1);
+                        const int sx = std::clamp(static_cast<int>(x) + dx, 0,
+                                                  static_cast<int>(size.width) - 1);
+                        const int sy = std::clamp(static_cast<int>(y) + dy, 0,
+                                                  static_cast<int>(size.height) - 1);
                         const auto c = composed(sx, sy, size.width, size.height);
-                        for (int k = 0; k < 4; ++k) sum[static_cast<size_t>(k)] += c[static_cast<size_t>(k)];
+                        for (int k = 0; k < 4; ++k)
+                            sum[static_cast<size_t>(k)] += c[static_cast<size_t>(k)];
                     }
                 for (int k = 0; k < 4; ++k) {
                     const float expected = sum[static_cast<size_t>(k)] / 9.0f * 255.0f;
-                    const float got = pixels[(size_t{y} * size.width + x) * 4 + static_cast<size_t>(k)];
+                    const float got =
+                        pixels[(size_t{y} * size.width + x) * 4 + static_cast<size_t>(k)];
                     // float16 storage and 8-bit rounding: within two steps.
                     if (std::fabs(got - expected) > 2.0f && bad++ < 5)
                         ADD_FAILURE() << "pixel " << x << "," << y << " channel " << k << ": "

@@ -19,7 +19,8 @@ TEST_F(ValidationHarness, MissingBarrierIsReportedAsAHazard) {
     vkGetBufferMemoryRequirements(d.device(), a, &req);
     VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     alloc.allocationSize = req.size * 2;
-    alloc.memoryTypeIndex = d.findMemoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    alloc.memoryTypeIndex =
+        d.findMemoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     VkDeviceMemory mem;
     RG_VK(vkAllocateMemory(d.device(), &alloc, nullptr, &mem));
     RG_VK(vkBindBufferMemory(d.device(), a, mem, 0));
@@ -34,7 +35,8 @@ TEST_F(ValidationHarness, MissingBarrierIsReportedAsAHazard) {
     vkFreeMemory(d.device(), mem, nullptr);
     const auto messages = dev().takeMessages();  // taken here so TearDown sees none
     bool hazard = false;
-    for (const auto& m : messages) hazard |= m.find("SYNC-HAZARD-READ-AFTER-WRITE") != std::string::npos;
+    for (const auto& m : messages)
+        hazard |= m.find("SYNC-HAZARD-READ-AFTER-WRITE") != std::string::npos;
     EXPECT_TRUE(hazard) << "synchronization validation did not report the missing barrier ("
                         << messages.size() << " messages)";
 }

@@ -15,11 +15,12 @@ namespace testing_support {
 
 rg::Device& device();
 
-// Registers what must be destroyed before the shared device (plugins, caches); run in reverse order.
+// Registers what must be destroyed before the shared device (plugins, caches); run in reverse
+// order.
 void atTeardown(std::function<void()> destroy);
 
 class GpuTest : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override;
     void TearDown() override;
     rg::Device& dev() { return device(); }
