@@ -7,10 +7,16 @@
 #include <glm/glm.hpp>
 
 #include "frame_constants.h"
+#include "shaders/shared/bindings.h"
 
 namespace ls {
 
-enum class LightKind : int { Directional = 0, Spot = 1, Point = 2 };
+// The light's type, with the shaders' values (shaders/shared/bindings.h).
+enum class LightKind : int {
+    Directional = LS_LIGHT_DIRECTIONAL,
+    Spot = LS_LIGHT_SPOT,
+    Point = LS_LIGHT_POINT
+};
 
 struct CameraParams {
     glm::mat4 view{1.0f};

@@ -11,6 +11,15 @@
 #include "rendergraph/format_info.h"
 
 namespace lightscatter::detail {
+
+// The API's light types and phases are the passes' and the shaders' values (bindings.h): a frame's
+// are passed on as they are.
+static_assert(static_cast<int>(LightType::Directional) == LS_LIGHT_DIRECTIONAL &&
+              static_cast<int>(LightType::Spot) == LS_LIGHT_SPOT &&
+              static_cast<int>(LightType::Point) == LS_LIGHT_POINT);
+static_assert(static_cast<int>(MiePhase::CornetteShanks) == LS_MIE_CORNETTE_SHANKS &&
+              static_cast<int>(MiePhase::Isotropic) == LS_MIE_ISOTROPIC &&
+              static_cast<int>(MiePhase::Hazy) == LS_MIE_HAZY);
 namespace {
 
 [[noreturn]] void fail(const std::string& message) {

@@ -35,9 +35,8 @@ uint64_t recordLightShafts(Engine& engine) {
     spot.light.halfAngleDegrees = 30.0f;
     spot.light.shadowViewProjection = engine.lightViewProjection;
     spot.light.shadowMapSize = 1024;
-    spot.shadowMap = lightscatter::ImageInput{engine.shadowMap,
-                                              VK_FORMAT_D32_SFLOAT,
-                                              {1024, 1024},
+    const VkExtent2D mapExtent{spot.light.shadowMapSize, spot.light.shadowMapSize};
+    spot.shadowMap = lightscatter::ImageInput{engine.shadowMap, VK_FORMAT_D32_SFLOAT, mapExtent,
                                               VK_IMAGE_USAGE_SAMPLED_BIT,
                                               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     spot.shadowMap->finalLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
