@@ -50,9 +50,6 @@ std::string firstRefusal(std::initializer_list<std::string> refusals) {
     return {};
 }
 
-}  // namespace ls
-
-namespace ls {
 namespace {
 float maxOf(const glm::vec3& v) {
     return std::max({v.x, v.y, v.z});

@@ -30,10 +30,6 @@ inline bool skipsShadows(const LightSetup& s) {
     return !s.shadowSampling && s.shadowed;
 }
 
-}  // namespace ls
-
-namespace ls {
-
 // Scattering is isotropic: no Rayleigh part and an isotropic Mie lobe.
 bool isotropicMedium(const LightSetup& s);
 // The optical depth from the camera to the light along the largest extinction channel.

@@ -36,16 +36,10 @@ rg::ImportedBuffer stepCountImport(VkBuffer buffer, uint32_t slices) {
 }
 
 rg::ImportedImage importDescription(const ImageInput& in) {
-    rg::ImportedImage d;
+    rg::ImportedImage d = importDescription(importState(in));
     d.image = in.image;
-    d.format = in.format;
-    d.extent = in.extent;
-    d.arrayLayers = in.arrayLayers;
-    d.usage = in.usage;
-    d.initialLayout = in.layout;
     d.initialStages = in.stages;
     d.initialAccess = in.access;
-    d.finalLayout = in.finalLayout;
     d.finalStages = in.finalStages;
     d.finalAccess = in.finalAccess;
     return d;

@@ -903,11 +903,7 @@ std::vector<FrameSetup> setupLights(const FrameDescription& frame, bool withImag
         try {
             setupLight(s, frame.lights[i], paths, withImages);
         } catch (const InvalidInput& e) {
-            // The message says which light it is about before naming the field.
-            const std::string lead = "lightscatter: ";
-            std::string m = e.what();
-            if (m.rfind(lead, 0) == 0) m = m.substr(lead.size());
-            throw InvalidInput(lead + at + ": " + m);
+            throw aboutLight(e, i);
         }
         setups.push_back(std::move(s));
     }
@@ -917,6 +913,13 @@ std::vector<FrameSetup> setupLights(const FrameDescription& frame, bool withImag
 }  // namespace lightscatter::detail
 
 namespace lightscatter::detail {
+
+InvalidInput aboutLight(const InvalidInput& e, size_t i) {
+    const std::string lead = "lightscatter: ";
+    std::string m = e.what();
+    if (m.rfind(lead, 0) == 0) m = m.substr(lead.size());
+    return InvalidInput(lead + "lights[" + std::to_string(i) + "]: " + m);
+}
 
 std::vector<LightInput> lightInputs(const FrameDescription& frame) {
     if (!frame.lights.empty()) return frame.lights;

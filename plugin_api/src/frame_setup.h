@@ -36,6 +36,9 @@ ValidatedFrame validateFrame(const FrameDescription& frame, bool withImages = tr
 // gives no list.
 std::vector<LightInput> lightInputs(const FrameDescription& frame);
 
+// A refusal of lights[i] of the list, saying which light it is about before naming the field.
+InvalidInput aboutLight(const InvalidInput& e, size_t i);
+
 // The settings' part the methods read, in their terms, into `s` (a light with a shadow map of
 // `shadowMapSize`, 0 without one).
 ls::SliceAccumulation sliceAccumulation(SliceTarget target);

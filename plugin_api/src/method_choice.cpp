@@ -117,20 +117,23 @@ MethodChoice autoChoice(const FrameSetup& s, bool lightReachesView) {
 
 }  // namespace
 
+const ls::MethodUnit& MethodChoice::unit() const {
+    return *methodUnit(method);
+}
+
 MethodChoice chooseMethod(Method requested, const FrameSetup& s, bool lightReachesView) {
     MethodChoice c;
     if (requested == Method::Auto) {
         c = autoChoice(s, lightReachesView);
-        c.unit = methodUnit(c.method);
         // Auto picks a method that honours the frame; its notice still says what it assumes.
-        if (c.unit->caps().readsOccluders) c.notice = c.unit->notice(s);
+        if (c.unit().caps().readsOccluders) c.notice = c.unit().notice(s);
         return c;
     }
+    const ls::MethodUnit* unit = methodUnit(requested);
+    if (!unit) refuse("method is not a Method value");
+    if (const std::string r = unit->refusal(s); !r.empty()) refuse(r);
     c.method = requested;
-    c.unit = methodUnit(requested);
-    if (!c.unit) refuse("method is not a Method value");
-    if (const std::string r = c.unit->refusal(s); !r.empty()) refuse(r);
-    c.notice = c.unit->notice(s);
+    c.notice = unit->notice(s);
     return c;
 }
 
@@ -142,25 +145,25 @@ MethodChoice chooseFrameMethod(Method requested, ValidatedFrame& v, const FrameD
             c = chooseMethod(requested, v.lights[0], v.touchesView[0]);
         } catch (const InvalidInput& e) {
             if (!v.list) throw;
-            throw InvalidInput("lightscatter: lights[0]: " + std::string(e.what()).substr(14));
+            throw aboutLight(e, 0);
         }
     } else {
         const bool automatic = requested == Method::Auto;
         c = automatic ? sampled(std::to_string(n) + " lights: epipolar sampling per shadowed light")
                       : pick(requested, {});
-        c.unit = methodUnit(c.method);
-        if (!c.unit) refuse("method is not a Method value");
-        if (!automatic && !c.unit->caps().severalLights)
-            refuse(std::string("method ") + c.unit->name() +
+        const ls::MethodUnit* unit = methodUnit(c.method);
+        if (!unit) refuse("method is not a Method value");
+        if (!automatic && !unit->caps().severalLights)
+            refuse(std::string("method ") + unit->name() +
                    " renders one light per frame so far; lights holds " + std::to_string(n) +
                    " (use epipolar, brute-force or auto, or one light)");
         for (size_t i = 0; i < n; ++i)
-            if (const std::string r = c.unit->refusal(v.lights[i]); !r.empty())
-                refuse("lights[" + std::to_string(i) + "]: " + r);
+            if (const std::string r = unit->refusal(v.lights[i]); !r.empty())
+                throw aboutLight(InvalidInput(r), i);
     }
     // Checked, and converted, only for the methods that read them: the others ignore them, as
     // the header says, and a scene of 100,000 parts must not stop them.
-    if (c.unit->caps().readsOccluders) {
+    if (c.unit().caps().readsOccluders) {
         const std::vector<ls::beam::Occluder> occluders = beamOccluders(frame.occluders);
         for (size_t i = 0; i < n; ++i)
             if (v.touchesView[i]) v.lights[i].beamOccluders = occluders;

@@ -21,10 +21,11 @@ inline constexpr float kAnalyticMaxOpticalDepth = 0.007f;
 inline constexpr uint32_t kEpipolarSamplesPerPixel = 24;
 
 struct MethodChoice {
-    Method method = Method::Epipolar;      // never Auto
-    const ls::MethodUnit* unit = nullptr;  // the method's
-    std::string reason;                    // why, for Auto; empty otherwise
-    std::string notice;                    // an assumption of the method that the frame breaks
+    Method method = Method::Epipolar;  // never Auto
+    // The method's unit (the registry's; `method` is never Auto nor out of the enum).
+    const ls::MethodUnit& unit() const;
+    std::string reason;  // why, for Auto; empty otherwise
+    std::string notice;  // an assumption of the method that the frame breaks
 };
 
 // Throws InvalidInput naming the method and the rule when it cannot honour the frame.

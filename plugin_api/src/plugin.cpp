@@ -26,7 +26,6 @@ namespace lightscatter {
 
 using detail::FrameGraph;
 using detail::GraphConfig;
-using detail::ImportState;
 
 namespace {
 
@@ -188,7 +187,7 @@ struct Plugin::Impl {
     void prepare(const FrameDescription& frame) {
         Chosen chosen = choose(frame);
         const detail::ValidatedFrame& v = chosen.frame;
-        const ls::MethodUnit& method = *chosen.choice.unit;
+        const ls::MethodUnit& method = chosen.choice.unit();
         const size_t n = v.lights.size();
         lastChoice = chosen.choice;
         while (lightShared.size() < n) lightShared.push_back(ls::SharedState::sibling(*shared));
