@@ -1,7 +1,7 @@
 # cmake --install: the public header, the library (SPIR-V embedded in it) and the CMake package
 # lightscatterConfig.cmake with its version file, exporting one target, lightscatter::plugin.
 #
-#   <prefix>/include/lightscatter/lightscatter.h
+#   <prefix>/include/lightscatter/lightscatter.h, vocabulary.h (which lightscatter.h includes)
 #   <prefix>/lib/liblightscatter.a (LS_BUILD_SHARED: liblightscatter.so)
 #   <prefix>/lib/cmake/lightscatter/lightscatterConfig.cmake, ...ConfigVersion.cmake, ...Targets*.cmake
 include(CMakePackageConfigHelpers)
@@ -17,7 +17,7 @@ else()
   set_target_properties(lightscatter_package PROPERTIES OUTPUT_NAME lightscatter EXPORT_NAME plugin
                         LINKER_LANGUAGE CXX ARCHIVE_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/package)
   target_include_directories(lightscatter_package
-                             INTERFACE $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/lightscatter>)
+                             INTERFACE $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
   target_compile_features(lightscatter_package INTERFACE cxx_std_17)
   target_link_libraries(lightscatter_package INTERFACE Vulkan::Vulkan)
   set(ls_installed lightscatter_package)
@@ -26,7 +26,8 @@ install(TARGETS ${ls_installed} EXPORT lightscatterTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(FILES ${PROJECT_SOURCE_DIR}/plugin_api/include/lightscatter.h
+install(FILES ${PROJECT_SOURCE_DIR}/plugin_api/include/lightscatter/lightscatter.h
+              ${PROJECT_SOURCE_DIR}/vocabulary/lightscatter/vocabulary.h
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/lightscatter)
 
 set(ls_package_dir ${CMAKE_INSTALL_LIBDIR}/cmake/lightscatter)

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
+#include <lightscatter/lightscatter.h>
 #include <vulkan/vulkan.h>
-#include "lightscatter.h"
 #include "motion.h"
 
 namespace host::bench {

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
+#include <lightscatter/lightscatter.h>
 #include "command_options.h"
 #include "commands.h"
-#include "lightscatter.h"
 #include "settings_file.h"
 
 namespace host {

@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
+#include <lightscatter/lightscatter.h>
 #include "cube_shadow_map.h"
 #include "gpu_image.h"
 #include "gpu_mesh.h"
-#include "lightscatter.h"
 #include "rendergraph/compile.h"
 #include "rendergraph/executor.h"
 #include "rendergraph/host_buffer.h"

@@ -2,7 +2,7 @@
 // The host's scene description in the plugin's terms.
 #include <glm/glm.hpp>
 
-#include "lightscatter.h"
+#include <lightscatter/lightscatter.h>
 #include "scene/scene.h"
 
 namespace host {

@@ -2,7 +2,7 @@
 // --settings FILE.json: lightscatter::Settings by field name, for the custom profile.
 #include <string>
 
-#include "lightscatter.h"
+#include <lightscatter/lightscatter.h>
 
 namespace host {
 

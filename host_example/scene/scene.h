@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "lightscatter.h"  // the light types and phase functions, one enum each with the plugin
+#include <lightscatter/lightscatter.h>  // the light types and phase functions, one enum each with the plugin
 
 namespace host {
 

@@ -8,8 +8,8 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
+#include <lightscatter/lightscatter.h>
 #include "activity.h"
-#include "lightscatter.h"
 #include "scene/input_file.h"
 #include "scene/json_input.h"
 #include "scene/scene.h"

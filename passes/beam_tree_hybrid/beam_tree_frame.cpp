@@ -39,7 +39,7 @@ BeamTreeFrame buildBeamTreeFrame(const CameraParams& camera, const LightParams& 
                                                : std::min(camera.farPlane, medium.maxDistance)) *
             2.0;
     beam::LightFrustum frustum;
-    if (light.kind == LightKind::Spot) {
+    if (light.kind == LightType::Spot) {
         const double halfAngle =
             std::acos(std::clamp(static_cast<double>(light.cosHalfAngle), -1.0, 1.0));
         frustum = beam::spotFrustum(L, glm::dvec3(light.direction), halfAngle,
@@ -48,7 +48,7 @@ BeamTreeFrame buildBeamTreeFrame(const CameraParams& camera, const LightParams& 
         frustum.position = L;  // no walls, and the cube below as its backplate
     }
     beam::LightVolume volume = beam::buildLightVolume(frustum, occluders);
-    if (light.kind != LightKind::Spot)
+    if (light.kind != LightType::Spot)
         for (const beam::Polygon& face : cubeFaces(L, reach)) volume.tree.addBackplate(face);
     out.litAsPlanes = lit == LitSpace::Planes;
     if (!out.litAsPlanes) beam::appendLitPyramids(volume.tree, out.points);

@@ -66,7 +66,7 @@ ChainOutputs EpipolarMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,
     const EpipolarOptions options{.sizes = {o.slices, o.samples},
                                   .minMaxTrees = o.minMaxTrees,
                                   .fixup = o.fixup,
-                                  .cubeShadow = c.light == LightKind::Point,
+                                  .cubeShadow = c.light == LightType::Point,
                                   .inscatterRefinement = o.inscatterRefinement};
     // Composited in the chain's unwarp and fix-up: no composite pass.
     const EpipolarOutputs e = addEpipolarNodes(g, {frame, light, target, in.stepCounts}, options);
@@ -80,7 +80,7 @@ std::string EpipolarMethod::summary(const ChainConfig& c) const {
     if (!c.shadowed) return unshadowedSummary(c);
     const Options& o = *c.options.get<Options>();
     return std::string("epipolar sampling") + (o.minMaxTrees ? " with min/max trees" : "") +
-           (c.light == LightKind::Point ? " per cube face" : "") +
+           (c.light == LightType::Point ? " per cube face" : "") +
            (o.inscatterRefinement ? ", refined on in-scattering differences" : "") +
            (o.fixup ? ", fix-up" : "") + ", composited in the unwarp";
 }

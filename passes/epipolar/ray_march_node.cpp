@@ -10,7 +10,7 @@ namespace ls {
 // color (refused with it).
 rg::ShaderCode rayMarchShader(const ScatterSpec& spec, bool countSteps) {
     return pickShader(ls_spirv::ray_march_frag_variants,
-                      {{"LS_NEEDS_TABLE", spec.light != LightKind::Directional},
+                      {{"LS_NEEDS_TABLE", spec.light != LightType::Directional},
                        {"LS_LIGHT_COLOR", spec.lightColor && !spec.cubeShadow},
                        {"LS_CUBE_SHADOW", spec.cubeShadow},
                        {"LS_TREES", spec.minMaxTrees},

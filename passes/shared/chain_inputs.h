@@ -24,7 +24,7 @@ inline LightImages lightImages(const ChainInputs& in, const ChainConfig& c) {
 // An unshadowed light's Lin for the methods that march a shadow map (epipolar, brute force): the
 // point-light table, or the directional closed form, per pixel.
 inline std::string unshadowedSummary(const ChainConfig& c) {
-    return c.light == LightKind::Directional
+    return c.light == LightType::Directional
                ? "unshadowed directional light: closed form per pixel"
                : "unshadowed light: the point-light table in closed form per pixel";
 }

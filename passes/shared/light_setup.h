@@ -18,7 +18,7 @@ struct LightSetup {
     MediumParams medium;
     EpipolarSettings epipolar;
     SliceSettings planes;  // slices' and the beam trees' sampling planes
-    SliceAccumulation sliceTarget = SliceAccumulation::Float16;
+    SliceTarget sliceTarget = SliceTarget::Float16;
     uint32_t sliceBlur = 0;
     bool sliceDither = false;
     ConeMarchOptions cone;

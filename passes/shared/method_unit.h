@@ -29,7 +29,7 @@ struct MethodCaps {
 // One light's chain in the frame graph's configuration: what decides its nodes and their
 // textures. Equal configurations build equal chains.
 struct ChainConfig {
-    LightKind light = LightKind::Directional;
+    LightType light = LightType::Directional;
     bool shadowed = false;
     uint32_t shadowMapSize = 0;
     ChainOptions options;  // the method's own (its Options struct)

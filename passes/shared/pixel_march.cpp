@@ -29,7 +29,7 @@ struct FixupPush {
 // A point light's cube map comes without light color (refused with it).
 rg::ShaderCode pixelMarchShader(const ScatterSpec& spec) {
     return pickShader(ls_spirv::pixel_march_frag_variants,
-                      {{"LS_NEEDS_TABLE", spec.light != LightKind::Directional},
+                      {{"LS_NEEDS_TABLE", spec.light != LightType::Directional},
                        {"LS_LIGHT_COLOR", spec.lightColor && !spec.cubeShadow},
                        {"LS_CUBE_SHADOW", spec.cubeShadow},
                        {"LS_COMPOSITE", 0},
@@ -39,7 +39,7 @@ rg::ShaderCode pixelMarchShader(const ScatterSpec& spec) {
 
 rg::ShaderCode fixupShader(const ScatterSpec& spec, VkFormat color, bool withOutput) {
     return pickCompositeShader(ls_spirv::pixel_march_frag_variants,
-                               {{"LS_NEEDS_TABLE", spec.light != LightKind::Directional},
+                               {{"LS_NEEDS_TABLE", spec.light != LightType::Directional},
                                 {"LS_LIGHT_COLOR", spec.lightColor && !spec.cubeShadow},
                                 {"LS_CUBE_SHADOW", spec.cubeShadow},
                                 {"LS_COMPOSITE", 1}},

@@ -17,22 +17,14 @@ PointTable::PointTable(const rg::Device& device, uint32_t width, uint32_t height
 
 bool PointTable::update(const Shared& shared) {
     const FrameConstants& c = shared->constants;
-    const std::array<float, 16> key{c.betaR.x,
-                                    c.betaR.y,
-                                    c.betaR.z,
-                                    c.betaR.w,  // w: g
-                                    c.betaM.x,
-                                    c.betaM.y,
-                                    c.betaM.z,
-                                    c.betaT.x,
-                                    c.betaT.y,
-                                    c.betaT.z,
-                                    c.betaT.w,  // w: r0
-                                    c.lutInfo.x,
-                                    c.lutInfo.y,
-                                    c.lutInfo.z,
-                                    shared->spec.isotropicMie ? 1.0f : 0.0f,
-                                    shared->spec.hazyMie ? 1.0f : 0.0f};
+    const std::array<float, 16> key{
+        c.betaR.x,   c.betaR.y,   c.betaR.z,
+        c.betaR.w,  // w: g
+        c.betaM.x,   c.betaM.y,   c.betaM.z,   c.betaT.x,
+        c.betaT.y,   c.betaT.z,
+        c.betaT.w,  // w: r0
+        c.lutInfo.x, c.lutInfo.y, c.lutInfo.z, static_cast<float>(shared->spec.phase),
+        0.0f};
     if (filled_ && key == key_) return false;
 
     rg::RenderGraph g;

@@ -57,7 +57,7 @@ float maxOf(const glm::vec3& v) {
 }  // namespace
 
 bool isotropicMedium(const LightSetup& s) {
-    return maxOf(s.medium.betaR) == 0.0f && s.medium.isotropicMie;
+    return maxOf(s.medium.betaR) == 0.0f && s.medium.phase == MiePhase::Isotropic;
 }
 
 float opticalDepthToLight(const LightSetup& s) {

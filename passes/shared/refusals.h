@@ -21,10 +21,10 @@ std::string refuseNoDepthAttachment(const LightSetup& s, const std::string& what
 std::string firstRefusal(std::initializer_list<std::string> refusals);
 
 inline bool pointLike(const LightSetup& s) {
-    return s.light.kind != LightKind::Directional;
+    return s.light.kind != LightType::Directional;
 }
 inline bool cubeShadowed(const LightSetup& s) {
-    return s.shadowed && s.light.kind == LightKind::Point;
+    return s.shadowed && s.light.kind == LightType::Point;
 }
 inline bool skipsShadows(const LightSetup& s) {
     return !s.shadowSampling && s.shadowed;

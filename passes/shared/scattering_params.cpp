@@ -25,7 +25,7 @@ TableLayout tableLayoutFor(const MediumParams& medium, float lightRadius, uint32
 
 LightOnScreen projectLight(const CameraParams& camera, const LightParams& light) {
     const glm::mat4 viewProj = camera.projection * camera.view;
-    const glm::vec4 clip = light.kind == LightKind::Directional
+    const glm::vec4 clip = light.kind == LightType::Directional
                                ? viewProj * glm::vec4(-light.direction, 0.0f)
                                : viewProj * glm::vec4(light.position, 1.0f);
     LightOnScreen s;

@@ -7,16 +7,15 @@
 #include <glm/glm.hpp>
 
 #include "frame_constants.h"
+#include "lightscatter/vocabulary.h"
 #include "shaders/shared/bindings.h"
 
 namespace ls {
 
-// The light's type, with the shaders' values (shaders/shared/bindings.h).
-enum class LightKind : int {
-    Directional = LS_LIGHT_DIRECTIONAL,
-    Spot = LS_LIGHT_SPOT,
-    Point = LS_LIGHT_POINT
-};
+// The vocabulary's words (lightscatter/vocabulary.h), as the API and the shaders name them.
+using lightscatter::LightType;
+using lightscatter::MiePhase;
+using lightscatter::SliceTarget;
 
 struct CameraParams {
     glm::mat4 view{1.0f};
@@ -28,7 +27,7 @@ struct CameraParams {
 };
 
 struct LightParams {
-    LightKind kind = LightKind::Directional;
+    LightType kind = LightType::Directional;
     glm::vec3 position{0.0f};
     glm::vec3 direction{0.0f, -1.0f, 0.0f};  // unit
     glm::vec3 intensity{1.0f};
@@ -46,8 +45,7 @@ struct MediumParams {
     glm::vec3 betaM{0.0f};
     glm::vec3 sigmaA{0.0f};
     float g = 0.0f;
-    bool isotropicMie = false;
-    bool hazyMie = false;  // seed 004's hazy lobe
+    MiePhase phase = MiePhase::CornetteShanks;
     float maxDistance = 1000.0f;
     glm::vec3 betaT() const { return betaR + betaM + sigmaA; }
 };
@@ -79,9 +77,6 @@ struct SliceSettings {
     float noiseScale = 1.0f;
     glm::vec4 noiseVelocity{0.0f};
 };
-
-// Where slices adds up its planes (lightscatter::SliceTarget).
-enum class SliceAccumulation { Float16, Float32, Rgba8Channels };
 
 // Seed 003's march.
 struct ConeMarchOptions {

@@ -7,9 +7,7 @@ namespace ls {
 rg::Specialization ScatterSpec::constants() const {
     rg::Specialization s;
     s.set(LS_SPEC_LIGHT_TYPE, static_cast<int32_t>(light));
-    s.set(LS_SPEC_MIE_PHASE, static_cast<int32_t>(isotropicMie ? LS_MIE_ISOTROPIC
-                                                  : hazyMie    ? LS_MIE_HAZY
-                                                               : LS_MIE_CORNETTE_SHANKS));
+    s.set(LS_SPEC_MIE_PHASE, static_cast<int32_t>(phase));
     s.set(LS_SPEC_LIGHT_COLOR, lightColor);
     s.set(LS_SPEC_BILINEAR_SHADOW, bilinearShadow);
     s.set(LS_SPEC_SIMPLIFIED_MODEL, simplifiedModel);

@@ -18,9 +18,8 @@ namespace ls {
 // Specialisation constants of shaders/shared/frame.glsl, and the options that choose a
 // shader variant (min/max trees).
 struct ScatterSpec {
-    LightKind light = LightKind::Directional;
-    bool isotropicMie = false;
-    bool hazyMie = false;
+    LightType light = LightType::Directional;
+    MiePhase phase = MiePhase::CornetteShanks;
     bool minMaxTrees = true;
     bool lightColor = false;
     bool bilinearShadow = true;

@@ -8,7 +8,7 @@ namespace ls {
 
 rg::ShaderCode unshadowedShader(const ScatterSpec& spec) {
     return pickShader(ls_spirv::unshadowed_frag_variants,
-                      {{"LS_NEEDS_TABLE", spec.light != LightKind::Directional}});
+                      {{"LS_NEEDS_TABLE", spec.light != LightType::Directional}});
 }
 
 rg::ImageRef addUnshadowed(rg::RenderGraph& graph, const UnshadowedInputs& in) {

@@ -12,7 +12,7 @@ bool lightTouchesView(const CameraParams& camera, const LightParams& light,
     // Nothing reaches the camera when nothing is emitted or nothing scatters.
     if (glm::all(glm::equal(light.intensity, glm::vec3(0.0f)))) return false;
     if (glm::all(glm::equal(medium.betaR + medium.betaM, glm::vec3(0.0f)))) return false;
-    if (light.kind != LightKind::Spot) return true;
+    if (light.kind != LightType::Spot) return true;
     // View rays end within the far plane's corners (or the sky distance with an infinite far
     // plane), so only the part of the cone within that reach of the camera can matter: an
     // unbounded spot is bounded by it.

@@ -35,7 +35,7 @@ std::vector<glm::vec3> viewFrustumCorners(const CameraParams& camera, float zNea
 // or, when unbounded, the reach of the view as its depth), or the shadow map's box.
 std::vector<glm::vec3> lightVolumeCorners(const LightParams& light, float reach) {
     std::vector<glm::vec3> c;
-    if (light.kind == LightKind::Spot) {
+    if (light.kind == LightType::Spot) {
         const glm::vec3 a = light.direction;
         const glm::vec3 helper = std::fabs(a.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
         const glm::vec3 r = glm::normalize(glm::cross(a, helper)), u = glm::cross(r, a);
@@ -64,8 +64,8 @@ glm::vec3 phaseSum(const MediumParams& m, float c) {
     const float g = m.g, g2 = g * g;
     const float denom = std::max(1.0f + g2 - 2.0f * g * c, 1e-6f);
     const float h = 0.5f * (1.0f + c), h2 = h * h, h4 = h2 * h2;
-    const float mie = m.hazyMie ? (1.0f + 9.0f * h4 * h4) / (8.0f * kPi)
-                      : m.isotropicMie
+    const float mie = m.phase == MiePhase::Hazy ? (1.0f + 9.0f * h4 * h4) / (8.0f * kPi)
+                      : m.phase == MiePhase::Isotropic
                           ? 1.0f / (4.0f * kPi)
                           : 1.0f / (4.0f * kPi) * 3.0f * (1.0f - g2) / (2.0f * (2.0f + g2)) *
                                 (1.0f + c * c) / (denom * std::sqrt(denom));
@@ -100,10 +100,10 @@ float estimatedSliceRange(const CameraParams& camera, const LightParams& light,
             const glm::vec3 P = C + s * v;
             glm::vec3 irr = light.intensity;
             float cosTheta = glm::dot(v, -light.direction);
-            if (light.kind != LightKind::Directional) {
+            if (light.kind != LightType::Directional) {
                 const glm::vec3 d = light.position - P;
                 const float dist = glm::length(d);
-                if (light.kind == LightKind::Spot &&
+                if (light.kind == LightType::Spot &&
                     (glm::dot(-d, light.direction) < cosCone * dist || dist > light.range))
                     continue;
                 cosTheta = dist > 0.0f ? glm::dot(v, d / dist) : 0.0f;
@@ -131,8 +131,8 @@ SlicePlacement placeSlices(const CameraParams& camera, const LightParams& light,
         lo = glm::min(lo, p);
         hi = glm::max(hi, p);
     }
-    const bool bounded = light.kind == LightKind::Spot ||
-                         (light.kind == LightKind::Directional && light.shadowMapSize > 0);
+    const bool bounded = light.kind == LightType::Spot ||
+                         (light.kind == LightType::Directional && light.shadowMapSize > 0);
     float boxFront = zNear, boxBack = zFar;  // view depths (positive) the planes span
     if (bounded) {
         const glm::vec3 cameraPos = glm::vec3(glm::inverse(camera.view)[3]);
@@ -145,7 +145,7 @@ SlicePlacement placeSlices(const CameraParams& camera, const LightParams& light,
         }
         boxFront = std::max(zNear, -lhi.z);
         boxBack = std::min(zFar, -llo.z);
-        if (light.kind == LightKind::Spot) {  // a directional light lights outside its box too
+        if (light.kind == LightType::Spot) {  // a directional light lights outside its box too
             lo = glm::max(lo, llo);
             hi = glm::min(hi, lhi);
         }

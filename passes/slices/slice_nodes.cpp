@@ -21,13 +21,13 @@ rg::ShaderCode slicePlanesShader(bool shadowMap, bool cookie, bool noise) {
 
 namespace {
 
-VkFormat accumulationFormat(SliceAccumulation target) {
+VkFormat accumulationFormat(SliceTarget target) {
     switch (target) {
-        case SliceAccumulation::Float32:
+        case SliceTarget::Float32:
             return VK_FORMAT_R32G32B32A32_SFLOAT;
-        case SliceAccumulation::Rgba8Channels:
+        case SliceTarget::Rgba8Channels:
             return VK_FORMAT_R8G8B8A8_UNORM;
-        case SliceAccumulation::Float16:
+        case SliceTarget::Float16:
             break;
     }
     return VK_FORMAT_R16G16B16A16_SFLOAT;
@@ -38,7 +38,7 @@ VkFormat accumulationFormat(SliceAccumulation target) {
 rg::ImageRef addSlicePlanes(rg::RenderGraph& graph, const SlicePlanesInputs& in,
                             const SlicePlanesOptions& options) {
     const Shared& shared = in.frame.shared;
-    const bool channels = options.target == SliceAccumulation::Rgba8Channels;
+    const bool channels = options.target == SliceTarget::Rgba8Channels;
     rg::ImageRef sum =
         graph.createImage(channels ? "slice planes' sum (8-bit channels)" : "slice planes' sum",
                           rg::ImageDesc::screen(accumulationFormat(options.target)));
@@ -85,7 +85,7 @@ rg::ImageRef addSlicePlanes(rg::RenderGraph& graph, const SlicePlanesInputs& in,
 }
 
 bool sliceResolveNeeded(const SliceResolveOptions& options) {
-    return options.target == SliceAccumulation::Rgba8Channels || options.blurRadius > 0 ||
+    return options.target == SliceTarget::Rgba8Channels || options.blurRadius > 0 ||
            options.closedFormOutsideSlab;
 }
 
@@ -107,7 +107,7 @@ rg::ImageRef addSliceResolve(rg::RenderGraph& graph, const SliceResolveInputs& i
                                        table.layout());
         desc.pushConstantBytes = sizeof(SliceResolvePush);
         desc.specialization = spec.constants();
-        const bool channels = options.target == SliceAccumulation::Rgba8Channels;
+        const bool channels = options.target == SliceTarget::Rgba8Channels;
         desc.specialization.set(LS_SPEC_RESOLVE_CHANNELS, channels)
             .set(LS_SPEC_RESOLVE_BLUR_RADIUS, static_cast<int32_t>(options.blurRadius))
             .set(LS_SPEC_RESOLVE_CLOSED_FORM_OUTSIDE_SLAB, options.closedFormOutsideSlab);

@@ -22,7 +22,7 @@ struct SlicePlanesInputs {
 };
 
 struct SlicePlanesOptions {
-    SliceAccumulation target = SliceAccumulation::Float16;
+    SliceTarget target = SliceTarget::Float16;
     bool dither = false;     // Rgba8Channels: stochastic rounding of each plane's share
     bool reversedZ = false;  // the engine's depth convention, for the depth test's direction
 };
@@ -39,7 +39,7 @@ struct SliceResolveInputs {
 };
 
 struct SliceResolveOptions {
-    SliceAccumulation target = SliceAccumulation::Float16;
+    SliceTarget target = SliceTarget::Float16;
     uint32_t blurRadius = 0;  // pixels; 0: no blur
     bool closedFormOutsideSlab =
         false;  // directional lights: add the rays' parts outside the planes

@@ -48,7 +48,7 @@ ChainOutputs SlicesMethod::addChain(rg::RenderGraph& g, const ChainInputs& in, c
     planeOptions.dither = o.dither;
     planeOptions.reversedZ = o.reversedZ;
     const rg::ImageRef sum = addSlicePlanes(g, planes, planeOptions);
-    const SliceResolveOptions resolve{o.target, o.blur, c.light == LightKind::Directional};
+    const SliceResolveOptions resolve{o.target, o.blur, c.light == LightType::Directional};
     ChainOutputs out;
     out.lin =
         sliceResolveNeeded(resolve) ? addSliceResolve(g, {frame, sum, placement}, resolve) : sum;
@@ -58,9 +58,9 @@ ChainOutputs SlicesMethod::addChain(rg::RenderGraph& g, const ChainInputs& in, c
 std::string SlicesMethod::summary(const ChainConfig& c) const {
     const Options& o = *c.options.get<Options>();
     return std::string("seed 002's view-aligned slice planes") +
-           (o.target == SliceAccumulation::Rgba8Channels ? " into 8-bit channels"
-            : o.target == SliceAccumulation::Float32     ? " into a float32 target"
-                                                         : "") +
+           (o.target == SliceTarget::Rgba8Channels ? " into 8-bit channels"
+            : o.target == SliceTarget::Float32     ? " into a float32 target"
+                                                   : "") +
            (c.shadowed && !o.shadowSampling ? ", no shadow-map sampling" : "") +
            (o.noise ? ", scrolling noise" : "") + (o.blur ? ", blurred" : "");
 }

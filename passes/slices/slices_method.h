@@ -11,7 +11,7 @@ namespace ls {
 class SlicesMethod final : public MethodUnit {
   public:
     struct Options {
-        SliceAccumulation target = SliceAccumulation::Float16;
+        SliceTarget target = SliceTarget::Float16;
         uint32_t blur = 0;
         bool dither = false;
         bool noise = false;

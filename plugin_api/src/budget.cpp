@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
+#include <lightscatter/lightscatter.h>
 #include "graph_config.h"
-#include "lightscatter.h"
 #include "method_units.h"
 #include "registry/method_registry.h"
 #include "rendergraph/compile.h"
@@ -118,7 +118,7 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
     describeEngineImages(images, screen);
     for (LightType type : lights) {
         detail::FrameSetup l;
-        l.light.kind = static_cast<ls::LightKind>(static_cast<int>(type));
+        l.light.kind = type;
         l.shadowed = type != LightType::Point || caps.cubeShadow;
         l.light.shadowMapSize = shadowMapSize;
         detail::applySettings(l, s, shadowMapSize);

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
+#include <lightscatter/lightscatter.h>
 #include "frame_setup.h"
-#include "lightscatter.h"
 
 namespace lightscatter {
 namespace {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "lightscatter.h"
+#include <lightscatter/lightscatter.h>
 #include "rendergraph/device_caps.h"
 #include "rendergraph/render_graph.h"
 #include "rendergraph/vk_equality.h"

@@ -12,14 +12,6 @@
 
 namespace lightscatter::detail {
 
-// The API's light types and phases are the passes' and the shaders' values (bindings.h): a frame's
-// are passed on as they are.
-static_assert(static_cast<int>(LightType::Directional) == LS_LIGHT_DIRECTIONAL &&
-              static_cast<int>(LightType::Spot) == LS_LIGHT_SPOT &&
-              static_cast<int>(LightType::Point) == LS_LIGHT_POINT);
-static_assert(static_cast<int>(MiePhase::CornetteShanks) == LS_MIE_CORNETTE_SHANKS &&
-              static_cast<int>(MiePhase::Isotropic) == LS_MIE_ISOTROPIC &&
-              static_cast<int>(MiePhase::Hazy) == LS_MIE_HAZY);
 namespace {
 
 [[noreturn]] void fail(const std::string& message) {
@@ -670,8 +662,7 @@ FrameSetup setupFrameWide(const FrameDescription& f, bool withImages) {
     if (m.phase != MiePhase::CornetteShanks && m.phase != MiePhase::Isotropic &&
         m.phase != MiePhase::Hazy)
         fail("medium.phase is not a MiePhase value");
-    s.medium.isotropicMie = m.phase == MiePhase::Isotropic;
-    s.medium.hazyMie = m.phase == MiePhase::Hazy;
+    s.medium.phase = m.phase;
     if (!(m.maxDistance > 0.0f && m.maxDistance <= limits::kMaxLength))
         fail("medium.maxDistance = " + num(m.maxDistance) + ": must be in (0, " +
              num(limits::kMaxLength) + "] (metres; lightscatter.h, limits::kMaxLength)");
@@ -724,7 +715,7 @@ void setupLight(FrameSetup& s, const LightInput& light, const LightPaths& at, bo
     }
     // Light.
     const Light& l = light.light;
-    s.light.kind = static_cast<ls::LightKind>(static_cast<int>(l.type));
+    s.light.kind = l.type;
     s.light.position = vecInRange(l.position, at.light + ".position", -limits::kMaxLength,
                                   limits::kMaxLength, "metres; lightscatter.h, limits::kMaxLength");
     const glm::vec3 dir = vec(l.direction, at.light + ".direction", false);
@@ -818,18 +809,6 @@ FrameSetup setupFrame(const FrameDescription& f, bool withImages) {
     return s;
 }
 
-ls::SliceAccumulation sliceAccumulation(SliceTarget target) {
-    switch (target) {
-        case SliceTarget::Float32:
-            return ls::SliceAccumulation::Float32;
-        case SliceTarget::Rgba8Channels:
-            return ls::SliceAccumulation::Rgba8Channels;
-        case SliceTarget::Float16:
-            break;
-    }
-    return ls::SliceAccumulation::Float16;
-}
-
 void applySettings(ls::LightSetup& s, const Settings& st, uint32_t shadowMapSize) {
     s.epipolar.slices = st.slices;
     s.epipolar.samples = st.samplesPerSlice;
@@ -852,7 +831,7 @@ void applySettings(ls::LightSetup& s, const Settings& st, uint32_t shadowMapSize
     s.planes.noiseScale = st.noiseScale;
     s.planes.noiseVelocity = {st.noiseVelocity[0], st.noiseVelocity[1], st.noiseVelocity[2],
                               st.noiseVelocity[3]};
-    s.sliceTarget = sliceAccumulation(st.sliceTarget);
+    s.sliceTarget = st.sliceTarget;
     s.sliceBlur = st.sliceBlur;
     s.sliceDither = st.sliceDither;
     s.cone = {st.coneSamples, st.coneLimited, st.coneJitter};

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <lightscatter/lightscatter.h>
 #include "beam_tree/occluders.h"
-#include "lightscatter.h"
 #include "shared/light_setup.h"
 #include "shared/scattering_params.h"
 #include "shared/view_reach.h"
@@ -41,7 +41,6 @@ InvalidInput aboutLight(const InvalidInput& e, size_t i);
 
 // The settings' part the methods read, in their terms, into `s` (a light with a shadow map of
 // `shadowMapSize`, 0 without one).
-ls::SliceAccumulation sliceAccumulation(SliceTarget target);
 void applySettings(ls::LightSetup& s, const Settings& settings, uint32_t shadowMapSize);
 
 // Checks everything; `withImages` false skips the image handles (the budget has none).

@@ -13,8 +13,8 @@ constexpr double kStoredPeak = 16384.0;  // float16 holds 65504
 // Cornette-Shanks' peak as the shaders evaluate it: at cos = +-1 (the side g points to), with
 // their floor of 1e-6 on 1 + g^2 - 2 g cos.
 double miePeak(const ls::MediumParams& m) {
-    if (m.isotropicMie) return 1.0 / (4.0 * kPi);
-    if (m.hazyMie) return 10.0 / (8.0 * kPi);
+    if (m.phase == ls::MiePhase::Isotropic) return 1.0 / (4.0 * kPi);
+    if (m.phase == ls::MiePhase::Hazy) return 10.0 / (8.0 * kPi);
     const double g = m.g, g2 = g * g;
     const double denom = std::max(1.0 + g2 - 2.0 * std::fabs(g), 1e-6);
     return 3.0 * (1.0 - g2) * 2.0 / (8.0 * kPi * (2.0 + g2) * denom * std::sqrt(denom));
@@ -28,7 +28,7 @@ float linStorageScale(const FrameSetup& s) {
     // Light reaching the camera from a point or spot light has travelled at least the distance
     // between the two (the triangle inequality), through the medium.
     const glm::dvec3 camera(glm::inverse(glm::dmat4(s.camera.view))[3]);
-    const double apart = s.light.kind == ls::LightKind::Directional
+    const double apart = s.light.kind == ls::LightType::Directional
                              ? 0.0
                              : glm::length(camera - glm::dvec3(s.light.position));
     double bound = 0.0;
@@ -42,7 +42,7 @@ float linStorageScale(const FrameSetup& s) {
             const double a1 = s.settings.simplifiedA1;
             const double w = std::sqrt(std::max(double(s.settings.simplifiedA0) / a1, 1e-12));
             lin = I * (betaR + betaM) * kPi / (4.0 * kPi * a1 * w);
-        } else if (s.light.kind == ls::LightKind::Directional) {
+        } else if (s.light.kind == ls::LightType::Directional) {
             lin = I * scatter / betaT;
         } else {
             const double r0 = std::max(double(s.light.radius), 1e-6);

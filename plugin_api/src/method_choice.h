@@ -4,8 +4,8 @@
 // meets the frame's needs, with the reason.
 #include <string>
 
+#include <lightscatter/lightscatter.h>
 #include "frame_setup.h"
-#include "lightscatter.h"
 #include "shared/method_unit.h"
 
 namespace lightscatter::detail {

@@ -1,7 +1,7 @@
 #pragma once
 // The public Method as the frame graph's method (passes/registry): the registry lists the methods
 // in the enum's order, Auto last and outside it.
-#include "lightscatter.h"
+#include <lightscatter/lightscatter.h>
 #include "shared/method_unit.h"
 
 namespace lightscatter::detail {

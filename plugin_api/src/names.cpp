@@ -1,6 +1,6 @@
 // Method and profile names (the command line's contract) and the seed's quality profiles.
+#include <lightscatter/lightscatter.h>
 #include "frame_setup.h"
-#include "lightscatter.h"
 #include "method_units.h"
 #include "registry/method_registry.h"
 

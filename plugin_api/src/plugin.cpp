@@ -5,11 +5,11 @@
 #include <optional>
 #include <string>
 
+#include <lightscatter/lightscatter.h>
 #include "epipolar/step_counts.h"
 #include "frame_graph.h"
 #include "frame_setup.h"
 #include "graph_config.h"
-#include "lightscatter.h"
 #include "lin_storage.h"
 #include "method_choice.h"
 #include "rendergraph/compile.h"
@@ -92,13 +92,12 @@ struct Plugin::Impl {
     static ls::ScatterSpec scatterSpec(const detail::FrameSetup& setup) {
         ls::ScatterSpec spec;
         spec.light = setup.light.kind;
-        spec.isotropicMie = setup.medium.isotropicMie;
-        spec.hazyMie = setup.medium.hazyMie;
+        spec.phase = setup.medium.phase;
         spec.minMaxTrees = setup.epipolar.minMaxTrees;
         spec.lightColor = setup.lightColor;
         spec.bilinearShadow = setup.epipolar.bilinearShadow;
         spec.simplifiedModel = setup.simplified;
-        spec.cubeShadow = setup.shadowed && setup.light.kind == ls::LightKind::Point;
+        spec.cubeShadow = setup.shadowed && setup.light.kind == ls::LightType::Point;
         return spec;
     }
 

@@ -56,15 +56,9 @@
 #define LS_BINDING_UNWARP_INSCATTER 3
 #define LS_BINDING_UNWARP_DEPTH 4
 
-// The values of frame.glsl's light type and Mie phase, the same in C++: ls::LightKind
-// (passes/shared/scattering_params.h) takes them, and lightscatter::LightType and
-// lightscatter::MiePhase equal them (plugin_api/src/frame_setup.cpp checks).
-#define LS_LIGHT_DIRECTIONAL 0
-#define LS_LIGHT_SPOT 1
-#define LS_LIGHT_POINT 2
-#define LS_MIE_CORNETTE_SHANKS 0
-#define LS_MIE_ISOTROPIC 1
-#define LS_MIE_HAZY 2
+// The light types' and Mie phases' values (LIGHTSCATTER_LIGHT_*, LIGHTSCATTER_MIE_*) are the
+// vocabulary's, which C++ names lightscatter::LightType and lightscatter::MiePhase.
+#include "lightscatter/vocabulary.h"
 
 // Specialisation constants of frame.glsl (ScatterSpec::constants()); id 2 is unused.
 #define LS_SPEC_LIGHT_TYPE 0  // 0 directional, 1 spot, 2 point

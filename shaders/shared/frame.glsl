@@ -14,9 +14,9 @@ layout(constant_id = LS_SPEC_BILINEAR_SHADOW) const bool kBilinearShadow = true;
 // frame.simplified (simplified.glsl, light_at.glsl).
 layout(constant_id = LS_SPEC_SIMPLIFIED_MODEL) const bool kSimplifiedModel = false;
 
-const int LIGHT_DIRECTIONAL = LS_LIGHT_DIRECTIONAL;
-const int LIGHT_SPOT = LS_LIGHT_SPOT;
-const int LIGHT_POINT = LS_LIGHT_POINT;
+const int LIGHT_DIRECTIONAL = LIGHTSCATTER_LIGHT_DIRECTIONAL;
+const int LIGHT_SPOT = LIGHTSCATTER_LIGHT_SPOT;
+const int LIGHT_POINT = LIGHTSCATTER_LIGHT_POINT;
 const float PI = 3.14159265358979;
 
 layout(std140, set = 0, binding = LS_BINDING_FRAME) uniform FrameConstants {

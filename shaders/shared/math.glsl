@@ -20,8 +20,8 @@ float phaseHazy(float c) {
 
 // betaR pR + betaM pM, per channel (1/(m sr)).
 vec3 phaseSum(float cosTheta) {
-    float mie = kMiePhase == LS_MIE_ISOTROPIC ? 1.0 / (4.0 * PI)
-              : kMiePhase == LS_MIE_HAZY    ? phaseHazy(cosTheta)
+    float mie = kMiePhase == LIGHTSCATTER_MIE_ISOTROPIC ? 1.0 / (4.0 * PI)
+              : kMiePhase == LIGHTSCATTER_MIE_HAZY    ? phaseHazy(cosTheta)
                                : phaseCornetteShanks(cosTheta, frame.betaR.w);
     return frame.betaR.rgb * phaseRayleigh(cosTheta) + frame.betaM.rgb * mie;
 }

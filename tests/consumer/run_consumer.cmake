@@ -33,15 +33,16 @@ if(MODE STREQUAL "package")
   list(SORT installed)
   string(REPLACE ";" "\n  " listing "${installed}")
   message(STATUS "installed:\n  ${listing}")
-  foreach(expected include/lightscatter/lightscatter.h lightscatterConfig.cmake
+  foreach(expected include/lightscatter/lightscatter.h include/lightscatter/vocabulary.h
+                   lightscatterConfig.cmake
                    lightscatterConfigVersion.cmake lightscatterTargets.cmake liblightscatter.a)
     if(NOT installed MATCHES "(^|;|/)${expected}(;|$)")
       message(FATAL_ERROR "cmake --install did not install ${expected}")
     endif()
   endforeach()
   foreach(file IN LISTS installed)
-    if(file MATCHES "\\.(spv|h|hpp)$" AND NOT file STREQUAL "include/lightscatter/lightscatter.h")
-      message(FATAL_ERROR "cmake --install installed ${file}: only lightscatter.h is public, and "
+    if(file MATCHES "\\.(spv|h|hpp)$" AND NOT file MATCHES "^include/lightscatter/(lightscatter|vocabulary)\\.h$")
+      message(FATAL_ERROR "cmake --install installed ${file}: only lightscatter.h and vocabulary.h are public, and "
                           "the shaders live inside the library")
     endif()
     if(file MATCHES "\\.a$" AND NOT file MATCHES "/liblightscatter\\.a$")

@@ -41,11 +41,11 @@ void expectAllReached(const ls_spirv::ShaderVariants& shader, const Reached& rea
 // The lights a spec can describe: a cube map only for a point light.
 template <typename F>
 void forEachSpec(F&& f) {
-    for (LightKind light : {LightKind::Directional, LightKind::Spot, LightKind::Point})
+    for (LightType light : {LightType::Directional, LightType::Spot, LightType::Point})
         for (bool color : {false, true})
             for (bool cube : {false, true})
                 for (bool trees : {false, true}) {
-                    if (cube && light != LightKind::Point) continue;
+                    if (cube && light != LightType::Point) continue;
                     ScatterSpec spec;
                     spec.light = light;
                     spec.lightColor = color;

@@ -6,7 +6,7 @@
 #include <set>
 #include <vector>
 
-#include "lightscatter.h"
+#include <lightscatter/lightscatter.h>
 
 using lightscatter::Profile;
 

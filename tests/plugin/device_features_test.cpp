@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "lightscatter.h"
+#include <lightscatter/lightscatter.h>
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "lightscatter.h"
+#include <lightscatter/lightscatter.h>
 #include "rendergraph/device.h"
 #include "rendergraph/owned_image.h"
 

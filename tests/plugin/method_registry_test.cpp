@@ -6,7 +6,7 @@
 #include <set>
 #include <string>
 
-#include "lightscatter.h"
+#include <lightscatter/lightscatter.h>
 #include "method_units.h"
 #include "registry/method_registry.h"
 

@@ -3,9 +3,9 @@
 // the GPU against it.
 #include <vector>
 
+#include <lightscatter/lightscatter.h>
 #include "float64_model/light.h"
 #include "float64_model/medium.h"
-#include "lightscatter.h"
 #include "test_frame.h"
 
 namespace plugin_test {

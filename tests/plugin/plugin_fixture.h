@@ -3,7 +3,7 @@
 // so pipelines are built once.
 #include <optional>
 
-#include "lightscatter.h"
+#include <lightscatter/lightscatter.h>
 #include "support/gpu_test.h"
 #include "test_frame.h"
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <memory>
 
-#include "lightscatter.h"
+#include <lightscatter/lightscatter.h>
 
 // The engine-side objects the README's integration example works with.
 struct Engine {

@@ -6,8 +6,8 @@
 #include <cstring>
 #include <type_traits>
 
+#include <lightscatter/lightscatter.h>
 #include "frame_setup.h"
-#include "lightscatter.h"
 
 using lightscatter::Profile;
 using lightscatter::Settings;

@@ -242,7 +242,7 @@ TEST(SlicePlacement, FillsTheViewFromInsideAndScalesTheCountWithDistance) {
     camera.nearPlane = 0.1f;
     camera.farPlane = 500.0f;
     ls::LightParams spot;
-    spot.kind = ls::LightKind::Spot;
+    spot.kind = ls::LightType::Spot;
     spot.position = {0, 1, 1};
     spot.direction = {0, 0, -1};
     spot.cosHalfAngle = std::cos(0.5f);

@@ -7,7 +7,7 @@
 #include <limits>
 #include <vector>
 
-#include "lightscatter.h"
+#include <lightscatter/lightscatter.h>
 
 namespace plugin_test {
 

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "lightscatter.h"
+#include <lightscatter/lightscatter.h>
 #include "readme_example.h"
 
 namespace {

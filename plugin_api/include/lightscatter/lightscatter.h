@@ -28,6 +28,8 @@
 #include <string>
 #include <vector>
 
+#include "lightscatter/vocabulary.h"  // LightType, MiePhase, SliceTarget
+
 // What the library exports: everything declared with LIGHTSCATTER_API (a shared build exports
 // nothing else).
 #if defined(_WIN32)
@@ -144,23 +146,12 @@ enum class Profile {
     LowHighPerformance,  // 512 x 256, 512^2
     Custom,              // Settings as given
 };
-enum class LightType { Directional, Spot, Point };
-// The Mie lobe: Cornette-Shanks with Medium::g, isotropic, or seed 004's hazy atmosphere
-// (1 + 9 cos^16(alpha / 2)) / (8 pi), normalised over the sphere (docs/model.md), which ignores g.
-enum class MiePhase { CornetteShanks, Isotropic, Hazy };
 enum class ShadowFilter { Nearest, Bilinear };
 // What epipolar samples carry between ray marching and the screen. Seed 000 interpolates Lin
 // itself; interpolating the shadowed fraction of the closed-form unshadowed Lin instead keeps the
 // glow around a light (which no sparse sampling resolves) exact, and changes nothing where there is
 // no glow.
 enum class Interpolation { ShadowedFraction, Inscattering };
-// Where the slices method adds up its planes. Float16: an R16G16B16A16_SFLOAT target, Lin per
-// channel; its 11-bit mantissa stops the error falling beyond about 128 planes (docs/methods.md).
-// Float32: R32G32B32A32_SFLOAT, twice the memory, converges. Rgba8Channels: seed 002's trick for
-// 8-bit blending, monochrome: plane i goes into channel i mod 4 of an R8G8B8A8_UNORM target, the
-// four are summed at the end and tinted by the light's and medium's color; each channel holds a
-// quarter of Settings::sliceRange, and each blend rounds to 1/255 of that.
-enum class SliceTarget { Float16, Float32, Rgba8Channels };
 // The light model the in-scattering integrates (Settings::lightModel). Full: docs/model.md's, with
 // transmittance and the phase functions. Simplified: seed 004's (eqs. 2.12-2.17), irradiance
 // I / (a1 r^2 + a0) with no transmittance anywhere and an isotropic phase.
