@@ -37,11 +37,19 @@ VkQueryPool createQueryPool(const Device& device, VkQueryType type, uint32_t cou
 
 }  // namespace
 
-GraphExecutor::GraphExecutor(const Device& device, RenderGraph& graph, CompiledGraph compiled)
-    : device_(device), graph_(graph), compiled_(std::move(compiled)) {
+GraphExecutor::GraphExecutor(const Device& device, RenderGraph& graph, CompiledGraph compiled,
+                             const TransientHeap* heap)
+    : device_(device), graph_(graph), compiled_(std::move(compiled)), heap_(heap) {
     const VkDevice dev = device_.device();
     images_.resize(graph_.resources().size());
     buffers_.resize(graph_.resources().size(), VK_NULL_HANDLE);
+    importViews_.resize(kTimingSlots);
+    for (const PassPlan& plan : compiled_.passes)
+        for (const PassResourceState& s : plan.states) {
+            if (graph_.resource(s.resource).imported) continue;
+            transientScope_.stages |= s.stages;
+            if (s.writes) transientScope_.writes |= s.access;
+        }
     try {
         createMemory();
 
@@ -99,28 +107,31 @@ GraphExecutor::~GraphExecutor() {
     destroy();
 }
 
+void GraphExecutor::destroyViews(ImageObjects& o) {
+    for (VkImageView v : {o.full, o.depth, o.stencil})
+        if (v) vkDestroyImageView(device_.device(), v, nullptr);
+    o.full = o.depth = o.stencil = VK_NULL_HANDLE;
+}
+
+// The owner has made sure the GPU is done with every frame recorded here (see the header).
 void GraphExecutor::destroy() {
     const VkDevice dev = device_.device();
     if (!dev) return;
-    vkDeviceWaitIdle(dev);
-    auto destroyViews = [&](ImageObjects& o) {
-        for (VkImageView v : {o.full, o.depth, o.stencil})
-            if (v) vkDestroyImageView(dev, v, nullptr);
-        o.full = o.depth = o.stencil = VK_NULL_HANDLE;
-    };
     for (uint32_t id = 0; id < images_.size(); ++id) {
         if (graph_.resource(id).imported) continue;
         destroyViews(images_[id]);
         if (images_[id].image) vkDestroyImage(dev, images_[id].image, nullptr);
         images_[id].image = VK_NULL_HANDLE;
     }
-    for (auto& [img, views] : importedViews_) destroyViews(views);
-    importedViews_.clear();
+    for (auto& slot : importViews_) {
+        for (ImageObjects& views : slot) destroyViews(views);
+        slot.clear();
+    }
     for (uint32_t id = 0; id < buffers_.size(); ++id)
         if (buffers_[id] && !graph_.resource(id).imported)
             vkDestroyBuffer(dev, buffers_[id], nullptr);
     buffers_.clear();
-    for (size_t b = 0; b < blocks_.size(); ++b) {
+    for (size_t b = 0; b < blocks_.size() && !heap_; ++b) {
         detail::uncountDeviceMemory(std::max<VkDeviceSize>(compiled_.blocks[b].size, 1));
         vkFreeMemory(dev, blocks_[b], nullptr);
     }
@@ -136,8 +147,17 @@ void GraphExecutor::destroy() {
 }
 
 void GraphExecutor::createMemory() {
+    if (heap_) heapGeneration_ = heap_->generation();
     for (uint32_t b = 0; b < compiled_.blocks.size(); ++b) {
         const VkDeviceSize bytes = std::max<VkDeviceSize>(compiled_.blocks[b].size, 1);
+        if (heap_) {
+            const uint32_t type = compiled_.blocks[b].memoryType;
+            if (heap_->size(type) < bytes)
+                throw VulkanError("the transient heap has no room for block " + std::to_string(b) +
+                                  " (TransientHeap::reserve first)");
+            blocks_.push_back(heap_->memory(type));
+            continue;
+        }
         blocks_.push_back(
             allocateDeviceMemory(device_, bytes, compiled_.blocks[b].memoryType, blockContents(b)));
         detail::countDeviceMemory(bytes);
@@ -259,7 +279,13 @@ GraphExecutor::ImageObjects GraphExecutor::makeViews(uint32_t resource, VkImage 
     return o;
 }
 
-void GraphExecutor::refreshImports() {
+// Views of this frame's imported images, made afresh: a handle says nothing of whether the image
+// behind it is the one seen before (an engine's allocator may give a destroyed image's handle to
+// the next one). The slot's views from kTimingSlots frames ago are done with.
+void GraphExecutor::refreshImports(uint32_t slot) {
+    std::vector<ImageObjects>& views = importViews_[slot];
+    for (ImageObjects& o : views) destroyViews(o);
+    views.clear();
     for (uint32_t id = 0; id < graph_.resources().size(); ++id) {
         const ResourceDecl& r = graph_.resource(id);
         if (!r.imported) continue;
@@ -269,15 +295,22 @@ void GraphExecutor::refreshImports() {
         }
         const VkImage img = r.importedImage.image;
         if (!img) throw VulkanError("imported image '" + r.name + "' has no VkImage to run with");
-        auto it = importedViews_.find(img);
         // The image and its debug name are the engine's; only the views are the runtime's, and an
         // image only copied to and from has none (Vulkan forbids one).
-        if (it == importedViews_.end()) {
-            ImageObjects views{img};
-            if (r.importedImage.usage & kViewUsages) views = makeViews(id, img);
-            it = importedViews_.emplace(img, views).first;
+        ImageObjects o{img};
+        if (r.importedImage.usage & kViewUsages) {
+            o = makeViews(id, img);
+            views.push_back(o);
         }
-        images_[id] = it->second;
+        images_[id] = o;
+    }
+}
+
+void GraphExecutor::releaseCompleted(uint64_t completed) {
+    for (uint32_t slot = 0; slot < kTimingSlots; ++slot) {
+        if (slotFrames_[slot] > completed || importViews_[slot].empty()) continue;
+        for (ImageObjects& o : importViews_[slot]) destroyViews(o);
+        importViews_[slot].clear();
     }
 }
 
@@ -369,16 +402,25 @@ std::vector<BarrierPlan> GraphExecutor::poisonFirstUses(VkCommandBuffer cmd,
     return patched;
 }
 
-void GraphExecutor::recordPass(VkCommandBuffer cmd, uint32_t position) {
+void GraphExecutor::recordPass(VkCommandBuffer cmd, uint32_t position,
+                               const TransientScope* before) {
     const PassPlan& plan = compiled_.passes[position];
     PassDecl& pass = graph_.passes()[plan.pass];
     device_.beginLabel(cmd, pass.name);
     vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, queries_,
                          firstQuery_ + 2 * position);
+    std::vector<BarrierPlan> barriers = plan.barriers;
+    // Another graph used this memory in the frame before: a first use waits on all it did.
+    if (before)
+        for (BarrierPlan& b : barriers) {
+            if (!b.firstUse) continue;
+            b.srcStages |= before->stages;
+            b.srcAccess |= before->writes;
+        }
     if (compiled_.poisonTransients)
-        recordBarriers(cmd, poisonFirstUses(cmd, plan.barriers));
+        recordBarriers(cmd, poisonFirstUses(cmd, barriers));
     else
-        recordBarriers(cmd, plan.barriers);
+        recordBarriers(cmd, barriers);
 
     PassContext ctx(*this, position, cmd);
     if (pass.type == PassType::Graphics) {
@@ -433,10 +475,14 @@ void GraphExecutor::recordPass(VkCommandBuffer cmd, uint32_t position) {
     device_.endLabel(cmd);
 }
 
-uint64_t GraphExecutor::record(VkCommandBuffer cmd, uint64_t frame) {
-    refreshImports();
+uint64_t GraphExecutor::record(VkCommandBuffer cmd, uint64_t frame, const FrameData& data,
+                               const TransientScope* before) {
+    if (heap_ && heap_->generation() != heapGeneration_)
+        throw VulkanError("the transient heap was replaced since this graph was placed in it");
     if (frame == 0) frame = lastFrame_ + 1;
     const uint32_t slot = static_cast<uint32_t>(frame % kTimingSlots);
+    refreshImports(slot);
+    frameData_ = &data;
     firstQuery_ = slot * queriesPerFrame_;
     slot_ = slot;
     // Reset on the host, so the slot reads as not finished until this frame has run; and in the
@@ -453,15 +499,32 @@ uint64_t GraphExecutor::record(VkCommandBuffer cmd, uint64_t frame) {
     device_.beginLabel(cmd, "render graph");
     // Import stages and access may change per frame (layouts may not), so the barriers that
     // wait on or hand back an import are patched here.
+    std::vector<bool> waited(graph_.resources().size(), false);
     for (uint32_t pos = 0; pos < compiled_.passes.size(); ++pos) {
         PassPlan& plan = compiled_.passes[pos];
         for (auto& b : plan.barriers) {
             const ResourceDecl& r = graph_.resource(b.resource);
             if (!r.imported || compiled_.resources[b.resource].firstPass != pos) continue;
             detail::waitOnImport(b, r);
+            waited[b.resource] = true;
         }
     }
-    for (uint32_t pos = 0; pos < compiled_.passes.size(); ++pos) recordPass(cmd, pos);
+    // An image given UNDEFINED for this frame needs the first-use barrier that transitions it.
+    for (uint32_t id = 0; id < graph_.resources().size(); ++id) {
+        const ResourceDecl& r = graph_.resource(id);
+        if (r.imported && !r.buffer && compiled_.resources[id].used && !waited[id] &&
+            r.importedImage.initialLayout != r.declaredLayout)
+            throw VulkanError("imported image '" + r.name +
+                              "' is given UNDEFINED where the graph has no barrier before its "
+                              "first use; build a graph for that layout");
+    }
+    try {
+        for (uint32_t pos = 0; pos < compiled_.passes.size(); ++pos) recordPass(cmd, pos, before);
+    } catch (...) {
+        frameData_ = nullptr;
+        throw;
+    }
+    frameData_ = nullptr;
     std::vector<BarrierPlan> finals = compiled_.finalBarriers;
     for (auto& b : finals) {
         const ResourceDecl& r = graph_.resource(b.resource);
@@ -477,7 +540,7 @@ uint64_t GraphExecutor::record(VkCommandBuffer cmd, uint64_t frame) {
     return frame;
 }
 
-void GraphExecutor::rehearse() {
+void GraphExecutor::rehearse(const FrameData& data) {
     // Nothing of it is submitted: the frame number and the timing slot it took are given back.
     const uint64_t lastFrame = lastFrame_;
     const std::vector<uint64_t> slotFrames = slotFrames_;
@@ -490,7 +553,7 @@ void GraphExecutor::rehearse() {
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     RG_VK(vkBeginCommandBuffer(cmd_, &begin));
     try {
-        record(cmd_);
+        record(cmd_, 0, data);
     } catch (...) {
         vkResetCommandBuffer(cmd_, 0);  // possibly inside a rendering scope: not ended, dropped
         restore();
@@ -501,12 +564,13 @@ void GraphExecutor::rehearse() {
     restore();
 }
 
-FrameTimings GraphExecutor::run(uint64_t frame) {
+FrameTimings GraphExecutor::run(uint64_t frame, const FrameData& data,
+                                const TransientScope* before) {
     RG_VK(vkResetCommandBuffer(cmd_, 0));
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     RG_VK(vkBeginCommandBuffer(cmd_, &begin));
-    frame = record(cmd_, frame);
+    frame = record(cmd_, frame, data, before);
     RG_VK(vkEndCommandBuffer(cmd_));
     device_.submitAndWait(cmd_, fence_);
     return readTimings(frame);
@@ -580,6 +644,20 @@ VkBuffer GraphExecutor::buffer(uint32_t resource) const {
 }
 
 // ---------------------------------------------------------------------------------------------
+
+const void* PassContext::hostData(uint32_t graph, uint32_t id, const void* tag) const {
+    const RenderGraph& g = executor_.graph_;
+    const std::string name = graph == g.id() && id < g.hostDataDecls().size()
+                                 ? "'" + g.hostDataDecls()[id].name + "'"
+                                 : "host data of another graph";
+    if (graph != g.id() || id >= g.hostDataDecls().size())
+        throw VulkanError("pass '" + passName() + "' reads " + name);
+    const void* v = executor_.frameData_ ? executor_.frameData_->find(graph, id, tag) : nullptr;
+    if (!v)
+        throw VulkanError("pass '" + passName() + "' reads host data " + name +
+                          ", which this frame did not give (FrameData::set)");
+    return v;
+}
 
 const Device& PassContext::device() const {
     return executor_.device_;

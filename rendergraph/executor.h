@@ -2,7 +2,12 @@
 // Realises a compiled graph on a device and runs it: memory blocks with transient resources bound
 // at their planned offsets, one command buffer per frame, barriers batched per pass, debug-utils
 // names and labels, and per-pass GPU timestamps. The executor is reused frame after frame until the
-// graph changes; only imported handles may change between frames (RenderGraph::updateImport).
+// graph changes; only imported handles may change between frames (RenderGraph::updateImport), and
+// the host data given to each record() (FrameData).
+//
+// Nothing here waits for the GPU but run(), on its own fence: the owner destroys an executor only
+// once every frame recorded with it has completed (rg::RetireList), and frame N is recorded only
+// once frame N - kTimingSlots has completed.
 #include <vulkan/vulkan.h>
 
 #include <map>
@@ -11,8 +16,10 @@
 
 #include "compiled_graph.h"
 #include "device.h"
+#include "host_data.h"
 #include "pass_context.h"
 #include "render_graph.h"
+#include "transient_heap.h"
 
 namespace rg {
 
@@ -32,24 +39,49 @@ struct FrameTimings {
     bool valid = false;              // false: not finished on the GPU, or not a frame still held
 };
 
+// What a graph's passes do to its transients, all passes together: a later user of the same memory
+// (another graph on a shared TransientHeap) waits on these.
+struct TransientScope {
+    VkPipelineStageFlags2 stages = VK_PIPELINE_STAGE_2_NONE;
+    VkAccessFlags2 writes = VK_ACCESS_2_NONE;
+};
+
 class GraphExecutor {
   public:
-    GraphExecutor(const Device& device, RenderGraph& graph, CompiledGraph compiled);
+    // With a heap, the transients are placed in its memory (TransientHeap::reserve must have made
+    // room for compiled.blocks) instead of blocks of the executor's own; the heap must outlive
+    // the executor, and an executor placed before the heap's generation changed must not record.
+    GraphExecutor(const Device& device, RenderGraph& graph, CompiledGraph compiled,
+                  const TransientHeap* heap = nullptr);
     ~GraphExecutor();
     GraphExecutor(const GraphExecutor&) = delete;
     GraphExecutor& operator=(const GraphExecutor&) = delete;
 
     // Records the frame into the executor's own command buffer, submits, waits, and returns the
     // timings of this frame (numbered as record() numbers it).
-    FrameTimings run(uint64_t frame = 0);
+    FrameTimings run(uint64_t frame = 0, const FrameData& data = {},
+                     const TransientScope* before = nullptr);
 
     // For engines that own submission: records the frame into `cmd` and returns its number, `frame`
     // when the caller numbers its frames (increasing), else the executor's next. Each of the last
     // kTimingSlots frames has timestamp queries of its own, reset on the host here, so frames may
     // be recorded ahead of their submission; the frame kTimingSlots before this one must have
-    // finished.
+    // finished. `data` holds the host data the passes read (RenderGraph::hostData). `before`: what
+    // used the transients' memory in the frame before when that was another graph (a shared
+    // TransientHeap); each first use of a transient then waits on it too.
+    //
+    // Views of imported images are made for each frame and destroyed kTimingSlots frames later
+    // (or by releaseCompleted()), never looked up by handle: an engine that destroys an image and
+    // gets the same handle back for a new one gets views of the new one.
     static constexpr uint32_t kTimingSlots = 8;
-    uint64_t record(VkCommandBuffer cmd, uint64_t frame = 0);
+    uint64_t record(VkCommandBuffer cmd, uint64_t frame = 0, const FrameData& data = {},
+                    const TransientScope* before = nullptr);
+    // Destroys the views of imported images made for frames up to `completed`, which the GPU
+    // has finished.
+    void releaseCompleted(uint64_t completed);
+    // Every stage and write access of the graph's passes on its transients.
+    const TransientScope& transientScope() const { return transientScope_; }
+    uint64_t heapGeneration() const { return heapGeneration_; }
     // A recorded frame's timings, read without waiting (valid is false until the GPU has finished
     // it, and for a frame that is not among the last kTimingSlots recorded); readTimings() reads
     // the last frame recorded.
@@ -57,7 +89,7 @@ class GraphExecutor {
     // Records a frame into the executor's own command buffer and throws it away (no frame number
     // or timing slot is used), so that what passes create on first use (pipelines) exists, or has
     // failed, before an engine's command buffer is touched.
-    void rehearse();
+    void rehearse(const FrameData& data = {});
     FrameTimings readTimings();
 
     const CompiledGraph& compiled() const { return compiled_; }
@@ -83,20 +115,26 @@ class GraphExecutor {
     void createResource(uint32_t resource);
     std::string blockContents(uint32_t block) const;
     ImageObjects makeViews(uint32_t resource, VkImage image);
-    void refreshImports();
+    void refreshImports(uint32_t slot);
+    void destroyViews(ImageObjects& o);
     void recordBarriers(VkCommandBuffer cmd, const std::vector<BarrierPlan>& barriers);
     std::vector<BarrierPlan> poisonFirstUses(VkCommandBuffer cmd,
                                              const std::vector<BarrierPlan>& barriers);
-    void recordPass(VkCommandBuffer cmd, uint32_t position);
+    void recordPass(VkCommandBuffer cmd, uint32_t position, const TransientScope* before);
 
     const Device& device_;
     RenderGraph& graph_;
     CompiledGraph compiled_;
-    std::vector<VkDeviceMemory> blocks_;
-    std::vector<ImageObjects> images_;  // by resource; imported ones refreshed per frame
+    const TransientHeap* heap_ = nullptr;
+    uint64_t heapGeneration_ = 0;
+    std::vector<VkDeviceMemory> blocks_;  // the heap's, or the executor's own
+    std::vector<ImageObjects> images_;    // by resource; imported ones refreshed per frame
     std::vector<VkBuffer> buffers_;
-    std::map<VkImage, ImageObjects> importedViews_;  // engine images seen so far
-    std::vector<RenderingFormats> formats_;          // by pass position
+    // Views of imported images, made for the frame of each timing slot.
+    std::vector<std::vector<ImageObjects>> importViews_;
+    TransientScope transientScope_;
+    const FrameData* frameData_ = nullptr;   // while record() runs
+    std::vector<RenderingFormats> formats_;  // by pass position
     VkQueryPool queries_ = VK_NULL_HANDLE;
     VkQueryPool samples_ = VK_NULL_HANDLE;  // occlusion queries of the passes that count samples
     std::vector<int32_t> countIndex_;       // by pass position: its occlusion query, or -1

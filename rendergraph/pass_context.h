@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "device.h"
+#include "host_data.h"
 #include "resources.h"
 
 namespace rg {
@@ -41,10 +42,18 @@ class PassContext {
     VkBuffer buffer(BufferRef ref) const;
     VkDeviceSize size(BufferRef ref) const;
 
+    // This frame's value of host data the graph declared (RenderGraph::hostData); throws
+    // VulkanError naming the pass and the data when the frame did not give it.
+    template <typename T>
+    const T& data(HostDataRef<T> ref) const {
+        return *static_cast<const T*>(hostData(ref.graph, ref.id, detail::hostDataTag<T>()));
+    }
+
     VkExtent2D renderExtent() const;                   // graphics passes
     const RenderingFormats& renderingFormats() const;  // for pipeline creation
 
   private:
+    const void* hostData(uint32_t graph, uint32_t id, const void* tag) const;
     const PassResourceState& declared(ImageRef ref, const char* asking) const;
 
     GraphExecutor& executor_;

@@ -45,6 +45,7 @@ ImageRef RenderGraph::importImage(std::string name, const ImportedImage& image) 
     r.name = std::move(name) + nameSuffix_;
     r.imported = true;
     r.importedImage = image;
+    r.declaredLayout = image.initialLayout;
     r.image = ImageDesc::absolute(image.format, image.extent.width, image.extent.height);
     r.image.mipLevels = image.mipLevels;
     r.image.arrayLayers = image.arrayLayers;
@@ -88,7 +89,9 @@ void RenderGraph::updateImport(ImageRef image, const ImportedImage& desc) {
     if (old.format != desc.format || old.extent.width != desc.extent.width ||
         old.extent.height != desc.extent.height || old.usage != desc.usage ||
         old.mipLevels != desc.mipLevels || old.arrayLayers != desc.arrayLayers ||
-        old.initialLayout != desc.initialLayout || old.finalLayout != desc.finalLayout)
+        (desc.initialLayout != r.declaredLayout &&
+         desc.initialLayout != VK_IMAGE_LAYOUT_UNDEFINED) ||
+        old.finalLayout != desc.finalLayout)
         throw GraphError(
             Rule::ImportChanged,
             "imported image '" + r.name +

@@ -8,6 +8,7 @@
 #include <variant>
 #include <vector>
 
+#include "host_data.h"
 #include "pass_decl.h"
 #include "resources.h"
 
@@ -20,6 +21,8 @@ struct ResourceDecl {
     ImageDesc image;        // transient images
     BufferDesc bufferDesc;  // transient buffers
     ImportedImage importedImage;
+    VkImageLayout declaredLayout = VK_IMAGE_LAYOUT_UNDEFINED;  // the import's initial layout
+                                                               // when the graph was compiled
     ImportedBuffer importedBuffer;
     bool output = false;  // marked as a result: its producers are never culled
     uint32_t versionCount = 1;
@@ -81,6 +84,14 @@ class RenderGraph {
     ImageRef importImage(std::string name, const ImportedImage& image);
     BufferRef importBuffer(std::string name, const ImportedBuffer& buffer);
     PassBuilder addPass(std::string name, PassType type);
+    // Host data the passes read when they are recorded; its value is given to each record()
+    // (FrameData), and a frame that lacks it fails with the pass and the data named.
+    template <typename T>
+    HostDataRef<T> hostData(std::string name) {
+        hostData_.push_back({std::move(name) + nameSuffix_, detail::hostDataTag<T>()});
+        return {id_, static_cast<uint32_t>(hostData_.size() - 1)};
+    }
+    const std::vector<HostDataDecl>& hostDataDecls() const { return hostData_; }
 
     // Keeps the passes that produce this version (and what they need) from being culled.
     void markOutput(ImageRef image);
@@ -94,8 +105,11 @@ class RenderGraph {
     void setScreenExtent(VkExtent2D extent) { screen_ = extent; }
     VkExtent2D screenExtent() const { return screen_; }
 
-    // Per-frame change of an import's handle or states. The format, extent and usage must stay what
-    // the graph was compiled with; anything else needs a new graph.
+    // Per-frame change of an import's handle or states. The format, extent, usage and layouts must
+    // stay what the graph was compiled with, but that an image's initial layout may be UNDEFINED
+    // for a frame (its contents discarded: an image not yet filled), where the graph transitions
+    // it at its first use (the executor refuses the frame otherwise). Anything else needs a new
+    // graph.
     void updateImport(ImageRef image, const ImportedImage& desc);
     void updateImport(BufferRef buffer, const ImportedBuffer& desc);
 
@@ -115,6 +129,7 @@ class RenderGraph {
     std::string nameSuffix_;
     std::vector<ResourceDecl> resources_;
     std::vector<PassDecl> passes_;
+    std::vector<HostDataDecl> hostData_;
 };
 
 }  // namespace rg

@@ -50,10 +50,10 @@ ChainOptions AnalyticMethod::options(const LightSetup&, const LightData*,
     return {};
 }
 
-ChainOutputs AnalyticMethod::addChain(rg::RenderGraph& g, const ChainInputs& in, const ChainConfig&,
-                                      const CompositeTarget&) const {
+ChainOutputs AnalyticMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,
+                                      const ChainConfig& c, const CompositeTarget&) const {
     ChainOutputs out;
-    out.lin = addAnalytic(g, {frameContext(in)});
+    out.lin = addAnalytic(g, {frameContext(in, c)});
     return out;
 }
 

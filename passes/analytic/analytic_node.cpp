@@ -7,7 +7,7 @@ namespace ls {
 
 rg::ImageRef addAnalytic(rg::RenderGraph& graph, const AnalyticInputs& in) {
     return addScreenLinNode(
-        graph, in.frame.shared,
+        graph, in.frame.shared, in.frame.spec,
         {.name = "analytic in-scattering (seed 001)",
          .constants = in.frame.constants,
          .depth = in.frame.depth,

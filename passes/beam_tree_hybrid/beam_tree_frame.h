@@ -22,7 +22,6 @@ struct BeamTreeFrame {
     double buildMilliseconds = 0;  // CPU: tree, pyramids and plane partition
     size_t treeNodes = 0, visiblePolygons = 0;
 };
-using BeamTreeFrameRef = std::shared_ptr<const BeamTreeFrame>;
 
 // For a point or spot light. A spot's frustum is the four walls around its cone cut at its range; a
 // point light's is a cube around it as far as the view reaches. `planes`: the sampling planes.

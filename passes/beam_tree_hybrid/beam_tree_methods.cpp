@@ -43,11 +43,15 @@ std::string BeamTreeMethod::notice(const LightSetup& s) const {
                                                : "it never looks the shadow map up");
 }
 
-std::vector<CpuWork> BeamTreeMethod::prepare(LightData* data, SharedState&,
+std::unique_ptr<LightData> BeamTreeMethod::makeData() const {
+    return std::make_unique<BeamTreeData>();
+}
+
+std::vector<CpuWork> BeamTreeMethod::prepare(LightData* data, LightFrame&,
                                              const LightSetup& s) const {
     SliceSettings planes;
     planes.planes = s.planes.planes;  // only the count: the planes' other settings are slices'
-    BeamTreeFrame& frame = *static_cast<Data*>(data)->frame;
+    BeamTreeFrame& frame = static_cast<BeamTreeData*>(data)->frame;
     frame = buildBeamTreeFrame(s.camera, s.light, s.medium, s.beamOccluders, planes, litSpace());
     return {{"beam tree (CPU, seed 004)", frame.buildMilliseconds}};
 }
@@ -59,19 +63,15 @@ ChainOptions BeamTreeMethod::options(const LightSetup& s, const LightData* data,
     o.reversedZ = s.camera.reversedZ;
     o.capacityPoints = before ? std::max(before->capacityPoints, kFirstCapacity) : kFirstCapacity;
     if (data)
-        while (o.capacityPoints < static_cast<const Data*>(data)->frame->points.size())
+        while (o.capacityPoints < static_cast<const BeamTreeData*>(data)->frame.points.size())
             o.capacityPoints *= 2;
     return ChainOptions(o);
-}
-
-BeamTreeFrameRef BeamTreeMethod::frameOf(const ChainInputs& in) {
-    return in.data ? static_cast<const Data*>(in.data)->frame : nullptr;
 }
 
 ChainOutputs BeamTreeAnalyticMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,
                                               const ChainConfig& c, const CompositeTarget&) const {
     const Options& o = *c.options.get<Options>();
-    const BeamTreeInputs beam{frameContext(in), lightImages(in, c), frameOf(in)};
+    const BeamTreeInputs beam{frameContext(in, c), lightImages(in, c)};
     ChainOutputs out;
     out.lin = addBeamTreeHybrid(g, beam, {o.capacityPoints, o.reversedZ});
     return out;
@@ -88,7 +88,7 @@ ChainOutputs BeamTreeSamplingMethod::addChain(rg::RenderGraph& g, const ChainInp
     const Options& o = *c.options.get<Options>();
     LightImages light = lightImages(in, c);
     light.table = {};  // the sampling planes read no table
-    const BeamTreeSamplingInputs beam{frameContext(in), light, frameOf(in)};
+    const BeamTreeSamplingInputs beam{frameContext(in, c), light};
     ChainOutputs out;
     out.lin = addBeamTreeSampling(g, beam, {o.capacityPoints, o.reversedZ});
     return out;

@@ -16,22 +16,17 @@ class BeamTreeMethod : public MethodUnit {
         bool reversedZ = false;
         bool operator==(const Options&) const = default;
     };
-    // This frame's triangles; the nodes upload them when they record.
-    struct Data final : LightData {
-        std::shared_ptr<BeamTreeFrame> frame = std::make_shared<BeamTreeFrame>();
-    };
     MethodCaps caps() const override;
     std::string refusal(const LightSetup& light) const override;
     std::string notice(const LightSetup& light) const override;
-    std::unique_ptr<LightData> makeData() const override { return std::make_unique<Data>(); }
-    std::vector<CpuWork> prepare(LightData* data, SharedState&,
+    std::unique_ptr<LightData> makeData() const override;
+    std::vector<CpuWork> prepare(LightData* data, LightFrame&,
                                  const LightSetup& light) const override;
     ChainOptions options(const LightSetup& light, const LightData* data,
                          const ChainOptions* previous) const override;
 
   protected:
     virtual LitSpace litSpace() const = 0;
-    static BeamTreeFrameRef frameOf(const ChainInputs& in);
 };
 
 class BeamTreeAnalyticMethod final : public BeamTreeMethod {

@@ -19,6 +19,10 @@ rg::ShaderCode beamTreePlanesShader(bool shadowMap, bool cookie) {
                       {{"LS_SHADOW_MAP", shadowMap}, {"LS_LIGHT_COLOR", cookie}, {"LS_NOISE", 0}});
 }
 
+const BeamTreeFrame& beamTreeOf(const LightFrame& frame) {
+    return static_cast<const BeamTreeData*>(frame.data)->frame;
+}
+
 namespace {
 
 constexpr VkPipelineStageFlags2 kVertexAndFragment =
@@ -40,15 +44,15 @@ void upload(VkCommandBuffer cmd, VkBuffer buffer, const std::vector<glm::vec4>& 
                           reinterpret_cast<const char*>(points.data()) + offset);
 }
 
-rg::BufferRef addTriangleUpload(rg::RenderGraph& graph, BeamTreeFrameRef frame,
+rg::BufferRef addTriangleUpload(rg::RenderGraph& graph, rg::HostDataRef<LightFrame> values,
                                 uint32_t capacityPoints) {
     const VkDeviceSize bytes = VkDeviceSize{capacityPoints} * sizeof(glm::vec4);
     rg::BufferRef triangles = graph.createBuffer("beam-tree triangles", {bytes});
     auto pass = graph.addPass("upload beam-tree triangles (seed 004)", rg::PassType::Transfer);
     triangles = pass.transferDst(triangles);
     const size_t capacity = capacityPoints;
-    pass.execute([frame, triangles, capacity](rg::PassContext& ctx) {
-        upload(ctx.cmd(), ctx.buffer(triangles), frame->points, capacity);
+    pass.execute([values, triangles, capacity](rg::PassContext& ctx) {
+        upload(ctx.cmd(), ctx.buffer(triangles), beamTreeOf(ctx.data(values)).points, capacity);
     });
     return triangles;
 }
@@ -60,8 +64,9 @@ struct PlaneDraw {
 
 // Records sampling-plane triangles [first, first + count) of the uploaded buffer, depth-tested
 // against the engine's depth and added to the bound color target.
-void drawPlaneParts(rg::PassContext& ctx, const Shared& shared, const BeamTreeFrame& frame,
-                    const rg::BindingTable& passTable, const PlaneDraw& draw, bool reversedZ) {
+void drawPlaneParts(rg::PassContext& ctx, const Shared& shared, const ScatterSpec& spec,
+                    const BeamTreeFrame& frame, const rg::BindingTable& passTable,
+                    const PlaneDraw& draw, bool reversedZ) {
     if (draw.count == 0) return;
     const bool cookie = passTable.has(LS_BINDING_LIGHT_COLOR);
     const rg::BindingTable table =
@@ -72,7 +77,7 @@ void drawPlaneParts(rg::PassContext& ctx, const Shared& shared, const BeamTreeFr
     desc.formats = ctx.renderingFormats();
     desc.bindings = table.layout();
     desc.pushConstantBytes = sizeof(SlicePush);
-    desc.specialization = shared->spec.constants();
+    desc.specialization = spec.constants();
     desc.depthTest = true;
     desc.depthCompare = reversedZ ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_LESS;
     desc.blend = rg::BlendMode::Additive;
@@ -104,8 +109,9 @@ rg::BindingTable declarePlaneReads(rg::PassBuilder& pass, const FrameContext& fr
 rg::ImageRef addBeamTreeHybrid(rg::RenderGraph& graph, const BeamTreeInputs& in,
                                const BeamTreeOptions& options) {
     const Shared& shared = in.frame.shared;
-    const BeamTreeFrameRef& frame = in.beams;
-    const rg::BufferRef triangles = addTriangleUpload(graph, frame, options.capacityPoints);
+    const ScatterSpec& spec = in.frame.spec;
+    const rg::HostDataRef<LightFrame> values = in.frame.values;
+    const rg::BufferRef triangles = addTriangleUpload(graph, values, options.capacityPoints);
     rg::ImageRef lin = graph.createImage("in-scattering (lit pyramids and uncertain planes)",
                                          rg::ImageDesc::screen(VK_FORMAT_R32G32B32A32_SFLOAT));
     {
@@ -118,15 +124,15 @@ rg::ImageRef addBeamTreeHybrid(rg::RenderGraph& graph, const BeamTreeInputs& in,
             .sampled(LS_BINDING_DEPTH, in.frame.depth, s.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
             .sampled(LS_BINDING_POINT_TABLE, in.light.table, s.nearest());
         lin = pass.colorAttachment(lin, rg::LoadOp::Clear);
-        pass.execute([shared, frame, table](rg::PassContext& ctx) {
-            const uint32_t count = frame->litPoints;
+        pass.execute([shared, spec, values, table](rg::PassContext& ctx) {
+            const uint32_t count = beamTreeOf(ctx.data(values)).litPoints;
             if (count == 0) return;
             rg::GraphicsPipelineDesc desc;
             desc.vertex = rg::spirv(ls_spirv::triangles_vert);
             desc.fragment = rg::spirv(ls_spirv::lit_volume_table_frag);
             desc.formats = ctx.renderingFormats();
             desc.bindings = table.layout();
-            desc.specialization = shared->spec.constants();
+            desc.specialization = spec.constants();
             desc.specialization.set(LS_SPEC_UNCLIPPED_DEPTH, true);  // no near or far clipping
             desc.blend =
                 rg::BlendMode::Additive;  // entries write -E: a float target subtracts them
@@ -143,9 +149,10 @@ rg::ImageRef addBeamTreeHybrid(rg::RenderGraph& graph, const BeamTreeInputs& in,
         const rg::BindingTable table = declarePlaneReads(pass, in.frame, in.light, triangles);
         lin = pass.colorAttachment(lin, rg::LoadOp::Load);
         const bool reversedZ = options.reversedZ, shadow = in.light.shadowMap.valid();
-        pass.execute([shared, frame, shadow, table, reversedZ](rg::PassContext& ctx) {
-            const PlaneDraw uncertain{frame->litPoints, frame->uncertainPoints, shadow};
-            drawPlaneParts(ctx, shared, *frame, table, uncertain, reversedZ);
+        pass.execute([shared, spec, values, shadow, table, reversedZ](rg::PassContext& ctx) {
+            const BeamTreeFrame& frame = beamTreeOf(ctx.data(values));
+            const PlaneDraw uncertain{frame.litPoints, frame.uncertainPoints, shadow};
+            drawPlaneParts(ctx, shared, spec, frame, table, uncertain, reversedZ);
         });
     }
     return lin;
@@ -154,8 +161,9 @@ rg::ImageRef addBeamTreeHybrid(rg::RenderGraph& graph, const BeamTreeInputs& in,
 rg::ImageRef addBeamTreeSampling(rg::RenderGraph& graph, const BeamTreeSamplingInputs& in,
                                  const BeamTreeOptions& options) {
     const Shared& shared = in.frame.shared;
-    const BeamTreeFrameRef& frame = in.beams;
-    const rg::BufferRef triangles = addTriangleUpload(graph, frame, options.capacityPoints);
+    const ScatterSpec& spec = in.frame.spec;
+    const rg::HostDataRef<LightFrame> values = in.frame.values;
+    const rg::BufferRef triangles = addTriangleUpload(graph, values, options.capacityPoints);
     rg::ImageRef lin = graph.createImage("in-scattering (lit and uncertain planes)",
                                          rg::ImageDesc::screen(VK_FORMAT_R32G32B32A32_SFLOAT));
     // One pass, two draws: the lit parts skip the shadow map, the uncertain parts look it up.
@@ -164,11 +172,12 @@ rg::ImageRef addBeamTreeSampling(rg::RenderGraph& graph, const BeamTreeSamplingI
     const rg::BindingTable table = declarePlaneReads(pass, in.frame, in.light, triangles);
     lin = pass.colorAttachment(lin, rg::LoadOp::Clear);
     const bool reversedZ = options.reversedZ, shadow = in.light.shadowMap.valid();
-    pass.execute([shared, frame, shadow, table, reversedZ](rg::PassContext& ctx) {
-        const PlaneDraw lit{0, frame->litPoints, false};
-        const PlaneDraw uncertain{frame->litPoints, frame->uncertainPoints, shadow};
-        drawPlaneParts(ctx, shared, *frame, table, lit, reversedZ);
-        drawPlaneParts(ctx, shared, *frame, table, uncertain, reversedZ);
+    pass.execute([shared, spec, values, shadow, table, reversedZ](rg::PassContext& ctx) {
+        const BeamTreeFrame& frame = beamTreeOf(ctx.data(values));
+        const PlaneDraw lit{0, frame.litPoints, false};
+        const PlaneDraw uncertain{frame.litPoints, frame.uncertainPoints, shadow};
+        drawPlaneParts(ctx, shared, spec, frame, table, lit, reversedZ);
+        drawPlaneParts(ctx, shared, spec, frame, table, uncertain, reversedZ);
     });
     return lin;
 }

@@ -9,22 +9,27 @@
 
 namespace ls {
 
+// This frame's beam tree and triangles (the methods' LightData), built on the CPU before each frame
+// is recorded; the nodes upload them from the frame's LightFrame when they record.
+struct BeamTreeData final : LightData {
+    BeamTreeFrame frame;
+};
+const BeamTreeFrame& beamTreeOf(const LightFrame& frame);
+
 struct BeamTreeInputs {
     // Its constants, and the depth: where each pixel's ray ends, and a read-only depth attachment
     // for the planes.
     FrameContext frame;
     // The point-light table (the lit pyramids'); the shadow map, invalid: the uncertain parts are
     // sampled as lit (a point light); the light color, invalid without one.
-    LightImages light;
-    BeamTreeFrameRef beams;  // built with LitSpace::ClosedForm
+    LightImages light;  // its beam tree is built with LitSpace::ClosedForm
 };
 
 struct BeamTreeSamplingInputs {
     FrameContext frame;  // its constants, and the depth: a read-only depth attachment for planes
     // The shadow map, invalid: the uncertain parts are sampled as lit (a point light); the light
     // color, invalid without one. The table is not read.
-    LightImages light;
-    BeamTreeFrameRef beams;  // built with LitSpace::Planes
+    LightImages light;  // its beam tree is built with LitSpace::Planes
 };
 
 struct BeamTreeOptions {

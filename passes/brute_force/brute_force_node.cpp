@@ -10,8 +10,8 @@ rg::ImageRef addBruteForce(rg::RenderGraph& graph, const BruteForceInputs& in) {
     auto pass = graph.addPass("brute-force ray march", rg::PassType::Graphics);
     const rg::BindingTable table = declarePixelMarch(pass, in.frame, in.light);
     lin = pass.colorAttachment(lin, rg::LoadOp::DontCare);
-    pass.execute([shared = in.frame.shared, table](rg::PassContext& ctx) {
-        drawPixelMarch(ctx, shared, table, {.pipeline = "brute-force ray march"});
+    pass.execute([shared = in.frame.shared, spec = in.frame.spec, table](rg::PassContext& ctx) {
+        drawPixelMarch(ctx, shared, spec, table, {.pipeline = "brute-force ray march"});
     });
     return lin;
 }

@@ -19,7 +19,7 @@ rg::ImageRef addConeMarch(rg::RenderGraph& graph, const ConeMarchInputs& in,
     const bool shadow = in.light.shadowMap.valid(), color = in.light.lightColor.valid();
     const Shared& shared = in.frame.shared;
     return addScreenLinNode(
-        graph, shared,
+        graph, shared, in.frame.spec,
         {.name = options.coneLimited ? "cone-limited ray march (seed 003)"
                                      : "naive ray march (seed 003's baseline)",
          .constants = in.frame.constants,

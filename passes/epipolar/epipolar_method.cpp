@@ -26,18 +26,16 @@ bool EpipolarMethod::readsTable(const LightSetup& s) const {
     return pointLike(s);
 }
 
-std::vector<CpuWork> EpipolarMethod::prepare(LightData*, SharedState& s,
+std::vector<CpuWork> EpipolarMethod::prepare(LightData*, LightFrame& frame,
                                              const LightSetup& light) const {
-    if (!s.spec.cubeShadow) return {};
+    if (!cubeShadowed(light)) return {};
     // A cube map is marched face by face, each as a spot light's map with its own matrix.
     for (int face = 0; face < 6; ++face) {
-        auto& f = s.cubeFaces[face];
-        if (!f) f = SharedState::sibling(s);
-        f->spec = s.spec;
-        f->constants = s.constants;
-        f->constants.lightViewProj = s.constants.cubeFaceViewProj[face];
+        FrameConstants& f = frame.faces[face];
+        f = frame.constants;
+        f.lightViewProj = frame.constants.cubeFaceViewProj[face];
         const bool inView = cubeFaceTouchesView(light.camera, light.light, light.medium, face);
-        f->constants.cubeFace = {static_cast<float>(face), inView ? 1.0f : 0.0f, 0.0f, 0.0f};
+        f.cubeFace = {static_cast<float>(face), inView ? 1.0f : 0.0f, 0.0f, 0.0f};
     }
     return {};
 }
@@ -55,7 +53,7 @@ ChainOptions EpipolarMethod::options(const LightSetup& s, const LightData*,
 
 ChainOutputs EpipolarMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,
                                       const ChainConfig& c, const CompositeTarget& target) const {
-    const FrameContext frame = frameContext(in);
+    const FrameContext frame = frameContext(in, c);
     const LightImages light = lightImages(in, c);
     ChainOutputs out;
     if (!c.shadowed) {
@@ -85,12 +83,11 @@ std::string EpipolarMethod::summary(const ChainConfig& c) const {
            (o.fixup ? ", fix-up" : "") + ", composited in the unwarp";
 }
 
-std::string EpipolarMethod::frameNote(const SharedState& s, const ChainConfig& c) const {
-    if (!c.shadowed || !s.spec.cubeShadow) return {};
+std::string EpipolarMethod::frameNote(const LightFrame& frame, const ChainConfig& c) const {
+    if (!c.shadowed || c.light != LightType::Point) return {};
     std::string list;
     for (int f = 0; f < 6; ++f)
-        if (s.cubeFaces[f] && s.cubeFaces[f]->inView())
-            list += std::string(list.empty() ? "" : ", ") + cubeFaceName(f);
+        if (frame.inView(f)) list += std::string(list.empty() ? "" : ", ") + cubeFaceName(f);
     return "cube faces reaching the view: " + (list.empty() ? std::string("none") : list) +
            " (the others' passes record no work)";
 }

@@ -19,14 +19,14 @@ class EpipolarMethod final : public MethodUnit {
     MethodCaps caps() const override;
     std::string refusal(const LightSetup& light) const override;
     bool readsTable(const LightSetup& light) const override;
-    std::vector<CpuWork> prepare(LightData*, SharedState& shared,
+    std::vector<CpuWork> prepare(LightData*, LightFrame& frame,
                                  const LightSetup& light) const override;
     ChainOptions options(const LightSetup& light, const LightData*,
                          const ChainOptions*) const override;
     ChainOutputs addChain(rg::RenderGraph& graph, const ChainInputs& in, const ChainConfig& config,
                           const CompositeTarget& target) const override;
     std::string summary(const ChainConfig& config) const override;
-    std::string frameNote(const SharedState& shared, const ChainConfig& config) const override;
+    std::string frameNote(const LightFrame& frame, const ChainConfig& config) const override;
 };
 
 }  // namespace ls

@@ -49,8 +49,8 @@ EpipolarOutputs addEpipolarNodes(rg::RenderGraph& g, const EpipolarInputs& in,
         for (uint32_t face = 0; face < 6; ++face) {
             g.setNameSuffix(suffix + " (cube face " + cubeFaceName(static_cast<int>(face)) + ")");
             faces[face] = frame;
-            faces[face].shared = frame.shared ? frame.shared->cubeFaces[face] : nullptr;
-            faces[face].constants = addUploadConstants(g, {faces[face].shared});
+            faces[face].face = static_cast<int>(face);
+            faces[face].constants = addUploadConstants(g, {frame.values, faces[face].face});
             marched = march(faces[face], lines(faces[face]), marched, false);
         }
         g.setNameSuffix(suffix);

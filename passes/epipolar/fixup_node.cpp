@@ -11,10 +11,11 @@ CompositeOutputs addFixup(rg::RenderGraph& g, const FixupInputs& in) {
     pass.stencilTest(in.cameraStencil);
     const CompositeOutputs written = addCompositeTarget(table, in.target);
     const bool addOnly = in.target.addOnly;
-    pass.execute([shared = in.frame.shared, table, written, addOnly](rg::PassContext& ctx) {
+    pass.execute([frame = in.frame, table, written, addOnly](rg::PassContext& ctx) {
         // The cap is a setting, read per frame like the other constants.
-        const auto maxSteps = static_cast<uint32_t>(shared->constants.epipolar2.y);
-        drawPixelMarch(ctx, shared, table,
+        const auto maxSteps =
+            static_cast<uint32_t>(ctx.data(frame.values).of(frame.face).epipolar2.y);
+        drawPixelMarch(ctx, frame.shared, frame.spec, table,
                        {.pipeline = "fix-up",
                         .maxSteps = maxSteps,
                         .whereStencilIsZero = true,

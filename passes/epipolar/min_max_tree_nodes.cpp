@@ -40,10 +40,11 @@ rg::ImageRef addMinMaxTrees(rg::RenderGraph& g, const MinMaxTreesInputs& in,
                      VK_IMAGE_ASPECT_DEPTH_BIT)
             .sampled(LS_BINDING_TREE_UV_FRAME, in.sliceUvFrame, sm.nearest());
         tree = table.storageWrite(LS_BINDING_TREE_FIRST_LEVEL, tree);
-        pass.execute([shared = in.frame.shared, table, s, n](rg::PassContext& ctx) {
-            if (!shared->inView()) return;  // a cube face out of view
+        pass.execute([frame = in.frame, table, s, n](rg::PassContext& ctx) {
+            if (!ctx.data(frame.values).inView(frame.face)) return;  // a cube face out of view
+            const Shared& shared = frame.shared;
             // A point light's cube map: the face's layer of the 2D array.
-            const bool cube = shared->spec.cubeShadow;
+            const bool cube = frame.spec.cubeShadow;
             const auto& p = shared->pipelines.compute(
                 cube ? "min/max trees level 1 (cube face)" : "min/max trees level 1",
                 minMaxFirstLevelShader(cube), table.layout(), 0, {});
@@ -57,8 +58,9 @@ rg::ImageRef addMinMaxTrees(rg::RenderGraph& g, const MinMaxTreesInputs& in,
             g.addPass("min/max trees level " + std::to_string(level), rg::PassType::Compute);
         rg::BindingTable table(pass);
         tree = table.storageReadWrite(LS_BINDING_TREE_LEVEL, tree);
-        pass.execute([shared = in.frame.shared, table, level, n, s](rg::PassContext& ctx) {
-            if (!shared->inView()) return;
+        pass.execute([frame = in.frame, table, level, n, s](rg::PassContext& ctx) {
+            if (!ctx.data(frame.values).inView(frame.face)) return;
+            const Shared& shared = frame.shared;
             const auto& p = shared->pipelines.compute("min/max trees next level",
                                                       rg::spirv(ls_spirv::min_max_next_level_comp),
                                                       table.layout(), sizeof(TreeLevelPush), {});

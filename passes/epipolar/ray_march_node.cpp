@@ -43,11 +43,11 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const EpipolarRayMarchI
     pass.countSamples();  // the samples marched (FrameReport's PassTime::samples)
     marched =
         pass.colorAttachment(marched, in.accumulate.valid() ? rg::LoadOp::Load : rg::LoadOp::Clear);
-    pass.execute([shared = in.frame.shared, table, trees, color, adds,
-                  counts](rg::PassContext& ctx) {
+    pass.execute([frame = in.frame, table, trees, color, adds, counts](rg::PassContext& ctx) {
         // A cube face out of view adds nothing (the first face's pass writes every sample's alpha).
-        if (adds && !shared->inView()) return;
-        ScatterSpec spec = shared->spec;
+        if (adds && !ctx.data(frame.values).inView(frame.face)) return;
+        const Shared& shared = frame.shared;
+        ScatterSpec spec = frame.spec;
         spec.minMaxTrees = trees;
         spec.lightColor = color;
         auto desc = fullscreenPipeline(rayMarchShader(spec, counts.valid()), ctx, table.layout());

@@ -16,17 +16,19 @@ rg::ImageRef addRefineSamples(rg::RenderGraph& g, const RefineSamplesInputs& in,
     table.sampled(LS_BINDING_REFINE_EPIPOLAR_Z, in.epipolarZ,
                   samplersOf(in.frame.shared).nearest());
     sources = table.storageWrite(LS_BINDING_REFINE_SOURCES, sources);
-    pass.execute([shared = in.frame.shared, table, s](rg::PassContext& ctx) {
-        // The light type only: near a point or spot light the first section is cut geometrically.
-        rg::Specialization spec;
-        spec.set(LS_SPEC_LIGHT_TYPE, static_cast<int32_t>(shared->spec.light));
-        const auto& p = shared->pipelines.compute("refine sample locations",
-                                                  rg::spirv(ls_spirv::refine_samples_comp),
-                                                  table.layout(), 0, spec);
-        p.bind(ctx.cmd());
-        table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
-        vkCmdDispatch(ctx.cmd(), groupCount(s.samples, 128), s.slices, 1);
-    });
+    pass.execute(
+        [shared = in.frame.shared, light = in.frame.spec.light, table, s](rg::PassContext& ctx) {
+            // The light type only: near a point or spot light the first section is cut
+            // geometrically.
+            rg::Specialization spec;
+            spec.set(LS_SPEC_LIGHT_TYPE, static_cast<int32_t>(light));
+            const auto& p = shared->pipelines.compute("refine sample locations",
+                                                      rg::spirv(ls_spirv::refine_samples_comp),
+                                                      table.layout(), 0, spec);
+            p.bind(ctx.cmd());
+            table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
+            vkCmdDispatch(ctx.cmd(), groupCount(s.samples, 128), s.slices, 1);
+        });
     return sources;
 }
 

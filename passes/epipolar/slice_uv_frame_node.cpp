@@ -14,8 +14,10 @@ rg::ImageRef addSliceUvFrame(rg::RenderGraph& g, const SliceUvFrameInputs& in,
     table.sampled(LS_BINDING_UV_FRAME_END_POINTS, in.sliceEndPoints,
                   samplersOf(in.frame.shared).nearest());
     uvFrame = table.storageWrite(LS_BINDING_UV_FRAME_OUT, uvFrame);
-    pass.execute([shared = in.frame.shared, table, s](rg::PassContext& ctx) {
-        if (!shared->inView()) return;  // a cube face out of view: no ray reads its lines
+    pass.execute([frame = in.frame, table, s](rg::PassContext& ctx) {
+        // A cube face out of view: no ray reads its lines.
+        if (!ctx.data(frame.values).inView(frame.face)) return;
+        const Shared& shared = frame.shared;
         const auto& p = shared->pipelines.compute("slice uv origin and direction",
                                                   rg::spirv(ls_spirv::slice_uv_frame_comp),
                                                   table.layout(), 0, {});

@@ -47,9 +47,8 @@ UnwarpOutputs addUnwarp(rg::RenderGraph& g, const UnwarpInputs& in, const Unwarp
     }
     const CompositeOutputs written = out.composited;
     const bool addOnly = in.target.addOnly;
-    pass.execute([shared = in.frame.shared, light = in.light, table, written, markForFixup,
-                  addOnly](rg::PassContext& ctx) {
-        const ScatterSpec& spec = shared->spec;
+    pass.execute([shared = in.frame.shared, spec = in.frame.spec, light = in.light, table, written,
+                  markForFixup, addOnly](rg::PassContext& ctx) {
         auto desc = fullscreenPipeline(unwarpShader(light.table.valid(), ctx.format(written.color),
                                                     written.inscatterOut.valid()),
                                        ctx, table.layout());

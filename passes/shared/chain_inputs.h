@@ -6,8 +6,9 @@
 
 namespace ls {
 
-inline FrameContext frameContext(const ChainInputs& in) {
-    return {in.shared, in.constants, in.depth, in.screen, in.depthStencil, in.coordinateFormat};
+inline FrameContext frameContext(const ChainInputs& in, const ChainConfig& c) {
+    return {in.shared, c.spec,          in.values,          -1, in.constants, in.depth,
+            in.screen, in.depthStencil, in.coordinateFormat};
 }
 
 inline LightImages lightImages(const ChainInputs& in, const ChainConfig& c) {

@@ -5,14 +5,20 @@
 // write them and passed to the nodes that read them.
 #include <vulkan/vulkan.h>
 
+#include "light_frame.h"
 #include "rendergraph/render_graph.h"
 #include "shared_state.h"
 
 namespace ls {
 
 struct FrameContext {
-    Shared shared;            // the light's (or a cube face's) constants and shader options
-    rg::BufferRef constants;  // those constants, uploaded by an earlier pass
+    Shared shared;     // the device's samplers and pipelines (null for the budget's graph)
+    ScatterSpec spec;  // the light's shader options
+    // The light's values of the frame being recorded, and which of them: -1 the light's own, 0-5
+    // a cube face's (epipolar's per-face chains).
+    rg::HostDataRef<LightFrame> values;
+    int face = -1;
+    rg::BufferRef constants;  // the light's (or the face's) constants, uploaded by an earlier pass
     rg::ImageRef depth;       // the engine's depth buffer
     VkExtent2D screen{0, 0};
     VkFormat depthStencil = VK_FORMAT_UNDEFINED;  // for the stencil textures

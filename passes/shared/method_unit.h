@@ -12,6 +12,7 @@
 #include "light_setup.h"
 #include "rendergraph/render_graph.h"
 #include "shared/composite_target.h"
+#include "shared/light_frame.h"
 #include "shared/shared_state.h"
 
 namespace ls {
@@ -26,21 +27,19 @@ struct MethodCaps {
     bool budgeted = false;
 };
 
-// One light's chain in the frame graph's configuration: what decides its nodes and their
-// textures. Equal configurations build equal chains.
+// One light's chain in the frame graph's configuration: what decides its nodes, their textures
+// and their shader builds. Equal configurations build equal chains.
 struct ChainConfig {
     LightType light = LightType::Directional;
     bool shadowed = false;
     uint32_t shadowMapSize = 0;
+    ScatterSpec spec;      // the light's shader options (scatterSpec())
     ChainOptions options;  // the method's own (its Options struct)
     bool operator==(const ChainConfig&) const = default;
 };
 
-// A method's state of one light kept across frames (the slice placement, the beam tree), filled
-// by prepare() before each frame is recorded; the chain's passes read it when they record.
-struct LightData {
-    virtual ~LightData() = default;
-};
+// A light's shader options, from what the frame holds.
+ScatterSpec scatterSpec(const LightSetup& light);
 
 // CPU work prepare() did for this frame, for the frame's report.
 struct CpuWork {
@@ -50,18 +49,18 @@ struct CpuWork {
 
 // What one light's chain reads. Images the frame lacks are invalid handles.
 struct ChainInputs {
-    Shared shared;            // the light's constants and shader options
-    rg::BufferRef constants;  // the light's FrameConstants, uploaded
-    rg::ImageRef depth;       // the engine's depth
-    rg::ImageRef shadowMap;   // the light's depth
-    rg::ImageRef lightColor;  // its light-space color
-    rg::ImageRef table;       // its point-light table, where readsTable() asked for one
-    rg::ImageRef noise;       // the frame's tiling noise, where readsNoise() asked for it
+    Shared shared;  // the device's samplers and pipelines (null for the budget's graph)
+    rg::HostDataRef<LightFrame> values;  // the light's values, given to each record()
+    rg::BufferRef constants;             // the light's FrameConstants, uploaded
+    rg::ImageRef depth;                  // the engine's depth
+    rg::ImageRef shadowMap;              // the light's depth
+    rg::ImageRef lightColor;             // its light-space color
+    rg::ImageRef table;                  // its point-light table, where readsTable() asked for one
+    rg::ImageRef noise;  // the frame's tiling noise, where readsNoise() asked for it
     VkExtent2D screen{0, 0};
     VkFormat depthStencil = VK_FORMAT_UNDEFINED;  // the stencil textures' format
     VkFormat coordinateFormat = VK_FORMAT_R32G32_SFLOAT;
     rg::BufferRef stepCounts;  // cleared, when the frame counts epipolar's steps; else invalid
-    const LightData* data = nullptr;  // prepare()'s; null for the budget
 };
 
 // What a chain leaves: a screen Lin for the composite, or the target's new versions where the
@@ -89,9 +88,9 @@ class MethodUnit {
     virtual bool readsNoise(const LightSetup&) const { return false; }
     // The light's state across frames; null when the method keeps none.
     virtual std::unique_ptr<LightData> makeData() const { return nullptr; }
-    // This frame's CPU work for the light, into `data` (made by makeData()); also per-face state
-    // in `shared` (a cube-shadowed light's faces).
-    virtual std::vector<CpuWork> prepare(LightData*, SharedState&, const LightSetup&) const {
+    // This frame's CPU work for the light, into `data` (made by makeData()) and `frame` (whose
+    // constants are filled already; a cube-shadowed light's faces).
+    virtual std::vector<CpuWork> prepare(LightData*, LightFrame&, const LightSetup&) const {
         return {};
     }
     // The chain's options for the light; `data` is prepare()'s (null for the budget), `previous`
@@ -107,7 +106,7 @@ class MethodUnit {
     virtual std::string summary(const ChainConfig& config) const = 0;
     // What changed this frame without a rebuild, appended to the report's reason (the cube faces
     // reaching the view); empty if nothing.
-    virtual std::string frameNote(const SharedState&, const ChainConfig&) const { return {}; }
+    virtual std::string frameNote(const LightFrame&, const ChainConfig&) const { return {}; }
 };
 
 }  // namespace ls

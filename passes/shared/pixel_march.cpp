@@ -55,10 +55,10 @@ rg::BindingTable declarePixelMarch(rg::PassBuilder& pass, const FrameContext& fr
     return table;
 }
 
-void drawPixelMarch(rg::PassContext& ctx, const Shared& shared, const rg::BindingTable& table,
-                    const PixelMarchDraw& draw) {
+void drawPixelMarch(rg::PassContext& ctx, const Shared& shared, const ScatterSpec& lightSpec,
+                    const rg::BindingTable& table, const PixelMarchDraw& draw) {
     // The variant follows from the light's images declared in the table, not from the spec's flag.
-    ScatterSpec spec = shared->spec;
+    ScatterSpec spec = lightSpec;
     spec.lightColor = table.has(LS_BINDING_LIGHT_COLOR);
     auto desc =
         fullscreenPipeline(draw.composite ? fixupShader(spec, ctx.format(draw.composite->color),

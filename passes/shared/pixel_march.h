@@ -27,8 +27,8 @@ struct PixelMarchDraw {
     bool addOnly = false;  // with composite: a frame's later light
 };
 
-// Records the march as one full-screen draw of the pass.
-void drawPixelMarch(rg::PassContext& ctx, const Shared& shared, const rg::BindingTable& table,
-                    const PixelMarchDraw& draw);
+// Records the march as one full-screen draw of the pass, with the light's shader options.
+void drawPixelMarch(rg::PassContext& ctx, const Shared& shared, const ScatterSpec& spec,
+                    const rg::BindingTable& table, const PixelMarchDraw& draw);
 
 }  // namespace ls

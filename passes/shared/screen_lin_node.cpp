@@ -4,7 +4,8 @@
 
 namespace ls {
 
-rg::ImageRef addScreenLinNode(rg::RenderGraph& graph, const Shared& shared, ScreenLinNode node) {
+rg::ImageRef addScreenLinNode(rg::RenderGraph& graph, const Shared& shared, const ScatterSpec& spec,
+                              ScreenLinNode node) {
     rg::ImageRef lin = graph.createImage("in-scattering (screen)",
                                          rg::ImageDesc::screen(VK_FORMAT_R16G16B16A16_SFLOAT));
     auto pass = graph.addPass(node.name, rg::PassType::Graphics);
@@ -13,8 +14,7 @@ rg::ImageRef addScreenLinNode(rg::RenderGraph& graph, const Shared& shared, Scre
                   VK_IMAGE_ASPECT_DEPTH_BIT);
     if (node.rows) node.rows(table);
     lin = pass.colorAttachment(lin, rg::LoadOp::DontCare);
-    pass.execute([shared, table, node = std::move(node)](rg::PassContext& ctx) {
-        const ScatterSpec& spec = shared->spec;
+    pass.execute([shared, spec, table, node = std::move(node)](rg::PassContext& ctx) {
         auto desc = fullscreenPipeline(node.shader(spec), ctx, table.layout());
         desc.specialization = spec.constants();
         if (node.specialize) node.specialize(desc.specialization);

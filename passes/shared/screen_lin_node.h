@@ -22,6 +22,7 @@ struct ScreenLinNode {
     std::function<void(rg::Specialization&)> specialize;
 };
 
-rg::ImageRef addScreenLinNode(rg::RenderGraph& graph, const Shared& shared, ScreenLinNode node);
+rg::ImageRef addScreenLinNode(rg::RenderGraph& graph, const Shared& shared, const ScatterSpec& spec,
+                              ScreenLinNode node);
 
 }  // namespace ls

@@ -8,7 +8,8 @@ namespace ls {
 
 // Copies this frame's constants into a graph buffer (vkCmdUpdateBuffer, recorded per frame).
 struct UploadConstantsInputs {
-    Shared shared;  // whose constants
+    rg::HostDataRef<LightFrame> values;  // whose constants
+    int face = -1;                       // the light's own, or a cube face's (0-5)
 };
 rg::BufferRef addUploadConstants(rg::RenderGraph& graph, const UploadConstantsInputs& in);
 
@@ -39,9 +40,12 @@ CompositeOutputs addComposite(rg::RenderGraph& graph, const CompositeInputs& in)
 // sum). Each light's Lin is dead after it, so the next light's chain may reuse its memory.
 CompositeOutputs addInscatter(rg::RenderGraph& graph, const CompositeInputs& in);
 
-// Fills the point-light table (R32G32B32A32_SFLOAT) for the current medium and light radius.
+// Fills the point-light table (R32G32B32A32_SFLOAT) for the current medium and light radius, in the
+// frames whose LightFrame::fillTable says so; the others record nothing and leave it as it was.
 struct PointTableInputs {
     Shared shared;
+    ScatterSpec spec;
+    rg::HostDataRef<LightFrame> values;
     rg::BufferRef constants;
     rg::ImageRef table;  // the table to fill
 };

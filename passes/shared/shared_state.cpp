@@ -18,6 +18,7 @@ const rg::Pipeline& PipelineLibrary::compute(const std::string& name, rg::Shader
                                              const std::vector<rg::Binding>& bindings,
                                              uint32_t pushBytes, const rg::Specialization& spec) {
     rg::PipelineKey key = rg::pipelineKey(code, bindings, pushBytes, spec);
+    std::lock_guard lock(mutex_);
     auto it = pipelines_.find(key);
     if (it == pipelines_.end())
         it = pipelines_
@@ -30,6 +31,7 @@ const rg::Pipeline& PipelineLibrary::compute(const std::string& name, rg::Shader
 const rg::Pipeline& PipelineLibrary::graphics(const std::string& name,
                                               const rg::GraphicsPipelineDesc& desc) {
     rg::PipelineKey key = rg::pipelineKey(desc);
+    std::lock_guard lock(mutex_);
     auto it = pipelines_.find(key);
     if (it == pipelines_.end())
         it = pipelines_.emplace(std::move(key), rg::Pipeline::graphics(device_, name, desc)).first;

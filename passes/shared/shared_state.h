@@ -1,10 +1,11 @@
 #pragma once
-// State the scattering passes share for as long as the plugin lives: the device, samplers, the
-// pipelines built so far, and this frame's constants (updated before each recording; the upload
-// pass copies them into the command buffer, so frames in flight never share them).
+// What the scattering passes share for as long as the plugin lives: the device, samplers and the
+// pipelines built so far; and the shader options of a light (ScatterSpec), part of its chain's
+// configuration.
 #include <array>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <utility>
 
@@ -16,7 +17,7 @@
 namespace ls {
 
 // Specialisation constants of shaders/shared/frame.glsl, and the options that choose a
-// shader variant (min/max trees).
+// shader variant (min/max trees). Fixed for a graph: a change builds (or finds) another.
 struct ScatterSpec {
     LightType light = LightType::Directional;
     MiePhase phase = MiePhase::CornetteShanks;
@@ -26,6 +27,7 @@ struct ScatterSpec {
     bool simplifiedModel = false;  // seed 004's light model (Settings::lightModel)
     bool cubeShadow = false;       // a point light's six-face shadow map (a 2D array of 6 layers)
     rg::Specialization constants() const;
+    bool operator==(const ScatterSpec&) const = default;
 };
 
 // The pipelines built so far, keyed by their whole description (rendergraph/pipeline_key.h): a
@@ -38,53 +40,28 @@ class PipelineLibrary {
                                 const std::vector<rg::Binding>& bindings, uint32_t pushBytes,
                                 const rg::Specialization& spec);
     const rg::Pipeline& graphics(const std::string& name, const rg::GraphicsPipelineDesc& desc);
-    size_t size() const { return pipelines_.size(); }
+    size_t size() const {
+        std::lock_guard lock(mutex_);
+        return pipelines_.size();
+    }
 
   private:
     const rg::Device& device_;
+    // Plugins on one device share the library and may record on several threads.
+    mutable std::mutex mutex_;
     std::map<rg::PipelineKey, rg::Pipeline> pipelines_;
 };
 
-// What every light's state shares: the samplers and the pipelines built so far.
-struct SharedResources {
-    explicit SharedResources(const rg::Device& d) : samplers(d), pipelines(d) {}
-    rg::Samplers samplers;
-    PipelineLibrary pipelines;
-};
-
-// One light's view of the shared state: its constants and shader options, over the resources
-// every light shares. A frame of several lights has one per light (sibling()).
+// What every pass of every light shares: the device, its samplers and the pipelines built so far.
+// Nothing of a frame: a pass reads its frame's values from the host data it declared
+// (light_frame.h), and its shader options from its inputs, fixed when the graph is built.
 struct SharedState {
-    explicit SharedState(const rg::Device& d)
-        : resources(std::make_shared<SharedResources>(d)),
-          device(d),
-          samplers(resources->samplers),
-          pipelines(resources->pipelines) {}
+    explicit SharedState(const rg::Device& d) : device(d), samplers(d), pipelines(d) {}
     SharedState(const SharedState&) = delete;
     SharedState& operator=(const SharedState&) = delete;
-    // Another light's state over the same device, samplers and pipelines.
-    static std::shared_ptr<SharedState> sibling(const SharedState& s) {
-        return std::shared_ptr<SharedState>(new SharedState(s.resources, s.device));
-    }
-    std::shared_ptr<SharedResources> resources;
     const rg::Device& device;
-    rg::Samplers& samplers;
-    PipelineLibrary& pipelines;
-    FrameConstants constants{};
-    ScatterSpec spec;
-    // A point light's cube shadow map under epipolar: one state per face (+X, -X, +Y, -Y, +Z, -Z),
-    // whose constants carry the face's matrix as lightViewProj and its index in cubeFace.x.
-    // A face whose frustum misses the view has constants.cubeFace.y 0: its passes stay in the graph
-    // (a face moving into view rebuilds nothing) and record no work.
-    std::array<std::shared_ptr<SharedState>, 6> cubeFaces;
-    bool inView() const { return constants.cubeFace.y > 0.5f; }
-
-  private:
-    SharedState(std::shared_ptr<SharedResources> r, const rg::Device& d)
-        : resources(std::move(r)),
-          device(d),
-          samplers(resources->samplers),
-          pipelines(resources->pipelines) {}
+    rg::Samplers samplers;
+    PipelineLibrary pipelines;
 };
 
 using Shared = std::shared_ptr<SharedState>;

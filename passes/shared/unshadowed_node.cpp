@@ -13,7 +13,7 @@ rg::ShaderCode unshadowedShader(const ScatterSpec& spec) {
 
 rg::ImageRef addUnshadowed(rg::RenderGraph& graph, const UnshadowedInputs& in) {
     return addScreenLinNode(
-        graph, in.frame.shared,
+        graph, in.frame.shared, in.frame.spec,
         {.name = "unshadowed in-scattering",
          .constants = in.frame.constants,
          .depth = in.frame.depth,

@@ -19,6 +19,10 @@ rg::ShaderCode slicePlanesShader(bool shadowMap, bool cookie, bool noise) {
                        {"LS_NOISE", noise}});
 }
 
+const SlicePlacement& placementOf(const LightFrame& frame) {
+    return static_cast<const SliceData*>(frame.data)->placement;
+}
+
 namespace {
 
 VkFormat accumulationFormat(SliceTarget target) {
@@ -55,9 +59,9 @@ rg::ImageRef addSlicePlanes(rg::RenderGraph& graph, const SlicePlanesInputs& in,
     pass.depthTest(in.frame.depth);
     sum = pass.colorAttachment(sum, rg::LoadOp::Clear);
     pass.execute(
-        [shared, placement = in.placement, table, in, options, channels](rg::PassContext& ctx) {
-            if (placement->planes == 0) return;  // cleared: the light's volume misses the view
-            const ScatterSpec& spec = shared->spec;
+        [shared, spec = in.frame.spec, table, in, options, channels](rg::PassContext& ctx) {
+            const SlicePlacement& placement = placementOf(ctx.data(in.frame.values));
+            if (placement.planes == 0) return;  // cleared: the light's volume misses the view
             const bool shadow = in.light.shadowMap.valid(), cookie = in.light.lightColor.valid(),
                        noise = in.noise.valid();
             rg::GraphicsPipelineDesc desc;
@@ -78,8 +82,8 @@ rg::ImageRef addSlicePlanes(rg::RenderGraph& graph, const SlicePlanesInputs& in,
             const auto& p = shared->pipelines.graphics("slice planes", desc);
             p.bind(ctx.cmd());
             table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
-            p.push(ctx.cmd(), placement->push);
-            vkCmdDraw(ctx.cmd(), 6, placement->planes, 0, 0);
+            p.push(ctx.cmd(), placement.push);
+            vkCmdDraw(ctx.cmd(), 6, placement.planes, 0, 0);
         });
     return sum;
 }
@@ -101,8 +105,8 @@ rg::ImageRef addSliceResolve(rg::RenderGraph& graph, const SliceResolveInputs& i
                  VK_IMAGE_ASPECT_DEPTH_BIT)
         .sampled(LS_BINDING_PLANE_SUM, in.planeSum, samplersOf(shared).linear());
     lin = pass.colorAttachment(lin, rg::LoadOp::DontCare);
-    pass.execute([shared, placement = in.placement, table, options](rg::PassContext& ctx) {
-        const ScatterSpec& spec = shared->spec;
+    pass.execute([shared, spec = in.frame.spec, values = in.frame.values, table,
+                  options](rg::PassContext& ctx) {
         auto desc = fullscreenPipeline(rg::spirv(ls_spirv::slice_resolve_closed_form_frag), ctx,
                                        table.layout());
         desc.pushConstantBytes = sizeof(SliceResolvePush);
@@ -114,8 +118,9 @@ rg::ImageRef addSliceResolve(rg::RenderGraph& graph, const SliceResolveInputs& i
         const auto& p = shared->pipelines.graphics("resolve slice planes", desc);
         p.bind(ctx.cmd());
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
-        SliceResolvePush push = placement->resolve;
-        if (placement->planes == 0) push.slab = {1e30f, 1e30f, 0.0f, 0.0f};  // all in closed form
+        const SlicePlacement& placement = placementOf(ctx.data(values));
+        SliceResolvePush push = placement.resolve;
+        if (placement.planes == 0) push.slab = {1e30f, 1e30f, 0.0f, 0.0f};  // all in closed form
         p.push(ctx.cmd(), push);
         vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
     });
@@ -126,7 +131,8 @@ rg::ImageRef addTilingNoise(rg::RenderGraph& graph, const TilingNoiseInputs& in)
     auto pass = graph.addPass("tiling noise (seed 002)", rg::PassType::Compute);
     rg::BindingTable table(pass);
     const rg::ImageRef noise = table.storageWrite(LS_BINDING_NOISE_OUT, in.noise);
-    pass.execute([shared = in.shared, table, noise](rg::PassContext& ctx) {
+    pass.execute([shared = in.shared, make = in.make, table, noise](rg::PassContext& ctx) {
+        if (!ctx.data(make).make) return;  // made in an earlier frame
         const auto& p = shared->pipelines.compute(
             "tiling noise", rg::spirv(ls_spirv::tiling_noise_comp), table.layout(), 0, {});
         p.bind(ctx.cmd());

@@ -9,8 +9,12 @@
 
 namespace ls {
 
-// Updated by the plugin before each frame is recorded; the nodes read it when they record.
-using SlicePlacementRef = std::shared_ptr<const SlicePlacement>;
+// Where this frame's planes go (the method's LightData), placed on the CPU before each frame is
+// recorded; the nodes read it from the frame's LightFrame when they record.
+struct SliceData final : LightData {
+    SlicePlacement placement;
+};
+const SlicePlacement& placementOf(const LightFrame& frame);
 
 struct SlicePlanesInputs {
     FrameContext frame;  // its constants, and the depth: a read-only depth attachment
@@ -18,7 +22,6 @@ struct SlicePlanesInputs {
     // map's space, invalid without one. The table is not read.
     LightImages light;
     rg::ImageRef noise;  // tiling noise (red, green layers); invalid: no noise
-    SlicePlacementRef placement;
 };
 
 struct SlicePlanesOptions {
@@ -35,7 +38,6 @@ rg::ImageRef addSlicePlanes(rg::RenderGraph& graph, const SlicePlanesInputs& in,
 struct SliceResolveInputs {
     FrameContext frame;     // its constants, and the depth: where each pixel's ray ends
     rg::ImageRef planeSum;  // addSlicePlanes' result
-    SlicePlacementRef placement;
 };
 
 struct SliceResolveOptions {
@@ -52,9 +54,11 @@ bool sliceResolveNeeded(const SliceResolveOptions& options);
 rg::ImageRef addSliceResolve(rg::RenderGraph& graph, const SliceResolveInputs& in,
                              const SliceResolveOptions& options);
 
-// Fills `noise` (R8G8_UNORM, storage) with two layers of tiling value noise.
+// Fills `noise` (R8G8_UNORM, storage) with two layers of tiling value noise, in the frames whose
+// NoiseFrame says so (the first that samples the plugin's own noise); the others record nothing.
 struct TilingNoiseInputs {
     Shared shared;
+    rg::HostDataRef<NoiseFrame> make;
     rg::ImageRef noise;
 };
 rg::ImageRef addTilingNoise(rg::RenderGraph& graph, const TilingNoiseInputs& in);

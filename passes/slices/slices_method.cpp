@@ -19,9 +19,13 @@ std::string SlicesMethod::refusal(const LightSetup& s) const {
          refuseSimplified(s, name())});
 }
 
-std::vector<CpuWork> SlicesMethod::prepare(LightData* data, SharedState&,
+std::unique_ptr<LightData> SlicesMethod::makeData() const {
+    return std::make_unique<SliceData>();
+}
+
+std::vector<CpuWork> SlicesMethod::prepare(LightData* data, LightFrame&,
                                            const LightSetup& s) const {
-    *static_cast<Data*>(data)->placement =
+    static_cast<SliceData*>(data)->placement =
         placeSlices(s.camera, s.light, s.medium, s.planes, s.timeSeconds);
     return {};
 }
@@ -35,10 +39,8 @@ ChainOptions SlicesMethod::options(const LightSetup& s, const LightData*,
 ChainOutputs SlicesMethod::addChain(rg::RenderGraph& g, const ChainInputs& in, const ChainConfig& c,
                                     const CompositeTarget&) const {
     const Options& o = *c.options.get<Options>();
-    const SlicePlacementRef placement =
-        in.data ? static_cast<const Data*>(in.data)->placement : nullptr;
-    const FrameContext frame = frameContext(in);
-    SlicePlanesInputs planes{frame, {}, {}, placement};
+    const FrameContext frame = frameContext(in, c);
+    SlicePlanesInputs planes{frame, {}, {}};
     if (c.shadowed && o.shadowSampling) planes.light.shadowMap = in.shadowMap;
     if (c.shadowed) planes.light.lightColor = in.lightColor;
     planes.light.shadowMapSize = c.shadowMapSize;
@@ -50,8 +52,7 @@ ChainOutputs SlicesMethod::addChain(rg::RenderGraph& g, const ChainInputs& in, c
     const rg::ImageRef sum = addSlicePlanes(g, planes, planeOptions);
     const SliceResolveOptions resolve{o.target, o.blur, c.light == LightType::Directional};
     ChainOutputs out;
-    out.lin =
-        sliceResolveNeeded(resolve) ? addSliceResolve(g, {frame, sum, placement}, resolve) : sum;
+    out.lin = sliceResolveNeeded(resolve) ? addSliceResolve(g, {frame, sum}, resolve) : sum;
     return out;
 }
 

@@ -19,16 +19,12 @@ class SlicesMethod final : public MethodUnit {
         bool reversedZ = false;  // the camera's depth convention (the planes depth-test)
         bool operator==(const Options&) const = default;
     };
-    // Where this frame's planes go; the nodes read it when they record.
-    struct Data final : LightData {
-        std::shared_ptr<SlicePlacement> placement = std::make_shared<SlicePlacement>();
-    };
     const char* name() const override { return "slices"; }
     MethodCaps caps() const override;
     std::string refusal(const LightSetup& light) const override;
     bool readsNoise(const LightSetup& light) const override { return light.noise; }
-    std::unique_ptr<LightData> makeData() const override { return std::make_unique<Data>(); }
-    std::vector<CpuWork> prepare(LightData* data, SharedState&,
+    std::unique_ptr<LightData> makeData() const override;
+    std::vector<CpuWork> prepare(LightData* data, LightFrame&,
                                  const LightSetup& light) const override;
     ChainOptions options(const LightSetup& light, const LightData*,
                          const ChainOptions*) const override;

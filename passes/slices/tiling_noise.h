@@ -1,9 +1,9 @@
 #pragma once
 // The plugin's own tiling noise for seed 002's scrolling noise: a plugin-owned image that outlives
-// frames, made on the GPU the first time a frame asks for noise without an engine image.
+// frames, made by the frame graph's noise pass (addTilingNoise) in the first frame recorded that
+// samples it.
 #include "rendergraph/device.h"
 #include "rendergraph/owned_image.h"
-#include "shared/shared_state.h"
 
 namespace ls {
 
@@ -17,12 +17,13 @@ class TilingNoise {
     TilingNoise(const TilingNoise&) = delete;
     TilingNoise& operator=(const TilingNoise&) = delete;
 
-    // Makes the noise if it has not been made (waits for the GPU). Returns true when it did.
-    bool ensure(const Shared& shared);
+    // A frame that makes the noise was recorded: the frames recorded after it find it made, in
+    // SHADER_READ_ONLY_OPTIMAL (before, its contents are undefined, UNDEFINED).
+    void recordedMake() { made_ = true; }
+    bool made() const { return made_; }
     VkImage image() const { return image_.image(); }
 
   private:
-    const rg::Device& device_;
     rg::OwnedImage image_;
     bool made_ = false;
 };

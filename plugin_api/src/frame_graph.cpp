@@ -5,6 +5,7 @@
 #include "epipolar/step_counts.h"
 #include "shared/point_table.h"
 #include "shared/shared_nodes.h"
+#include "slices/slice_nodes.h"
 #include "slices/tiling_noise.h"
 
 namespace lightscatter::detail {
@@ -45,9 +46,10 @@ rg::ImportedImage importDescription(const ImageInput& in) {
     return d;
 }
 
-rg::ImportedImage persistentImport(const ImportState& s, VkImage image) {
+rg::ImportedImage persistentImport(const ImportState& s, VkImage image, bool filled) {
     rg::ImportedImage d = importDescription(s);
     d.image = image;
+    if (!filled) d.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
     d.initialStages = d.finalStages =
         VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
     d.initialAccess = VK_ACCESS_2_NONE;
@@ -104,15 +106,11 @@ std::string frameSummary(const GraphConfig& c, size_t chains) {
 // composite applies the extinction and adds its Lin; each later chain adds its Lin to the color
 // (and to inscatterOut) as soon as it is done, so that its transients are dead before the next
 // chain starts and the next one may reuse their memory: no sum image is kept.
-FrameGraph buildFrameGraph(const GraphConfig& c, const std::vector<ls::Shared>& lightShared,
-                           const std::vector<const ls::LightData*>& lightData) {
+FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
     FrameGraph fg;
     fg.graph = std::make_unique<rg::RenderGraph>();
     rg::RenderGraph& g = *fg.graph;
     g.setScreenExtent(c.screen);
-    auto sharedOf = [&](size_t i) {
-        return i < lightShared.size() ? lightShared[i] : ls::Shared{};
-    };
     // A frame of several lights names each chain's resources and passes for its light.
     const bool several = c.lights.size() > 1;
     auto which = [&](size_t i) {
@@ -129,6 +127,7 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const std::vector<ls::Shared>& 
     bool anyTouches = false;
     for (size_t i = 0; i < c.lights.size(); ++i) {
         const LightGraphConfig& l = c.lights[i];
+        fg.lights[i].values = g.hostData<ls::LightFrame>("light values" + which(i));
         if (l.shadowMap.given())
             fg.lights[i].shadowMap =
                 g.importImage("engine shadow map" + which(i), importDescription(l.shadowMap));
@@ -143,14 +142,17 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const std::vector<ls::Shared>& 
     }
     // The camera and the medium are every light's: light 0's constants serve the composite.
     ls::FrameContext frame;
-    frame.shared = sharedOf(0);
-    frame.constants = ls::addUploadConstants(g, {frame.shared});
+    frame.shared = shared;
+    frame.spec = c.lights[0].chain.spec;
+    frame.values = fg.lights[0].values;
+    frame.constants = ls::addUploadConstants(g, {frame.values});
     frame.depth = fg.depth;
     frame.screen = c.screen;
     frame.depthStencil = c.depthStencil;
     frame.coordinateFormat = c.coordinates;
 
     rg::ImageRef color = fg.color, linOut = fg.inscatterOut;
+    rg::ImageRef noise;  // the noise as the chains read it (made first, when it is the plugin's)
     rg::BufferRef counts;
     size_t chains = 0;
     for (size_t i = 0; i < c.lights.size(); ++i) {
@@ -158,22 +160,29 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const std::vector<ls::Shared>& 
         if (!l.touchesView) continue;  // a light whose volume misses the view costs nothing
         g.setNameSuffix(which(i));
         ls::ChainInputs in;
-        in.shared = sharedOf(i);
-        in.constants = i == 0 ? frame.constants : ls::addUploadConstants(g, {in.shared});
+        in.shared = shared;
+        in.values = fg.lights[i].values;
+        in.constants = i == 0 ? frame.constants : ls::addUploadConstants(g, {in.values});
         in.depth = fg.depth;
         in.shadowMap = fg.lights[i].shadowMap;
         in.lightColor = fg.lights[i].lightColor;
-        if (l.table.given())
-            fg.lights[i].table = in.table =
-                g.importImage("point-light table", importDescription(l.table));
-        if (l.noise && !fg.noise.valid())
-            fg.noise = g.importImage(c.ownNoise ? "tiling noise" : "engine noise",
-                                     importDescription(c.noise));
-        if (l.noise) in.noise = fg.noise;
+        if (l.table.given()) {
+            fg.lights[i].table = g.importImage("point-light table", importDescription(l.table));
+            in.table = ls::addPointTable(
+                g, {shared, l.chain.spec, in.values, in.constants, fg.lights[i].table});
+        }
+        if (l.noise && !fg.noise.valid()) {
+            fg.noise = noise = g.importImage(c.ownNoise ? "tiling noise" : "engine noise",
+                                             importDescription(c.noise));
+            if (c.ownNoise) {
+                fg.makeNoise = g.hostData<ls::NoiseFrame>("tiling noise to make");
+                noise = ls::addTilingNoise(g, {shared, fg.makeNoise, fg.noise});
+            }
+        }
+        if (l.noise) in.noise = noise;
         in.screen = c.screen;
         in.depthStencil = c.depthStencil;
         in.coordinateFormat = c.coordinates;
-        in.data = i < lightData.size() ? lightData[i] : nullptr;
         if (c.countSteps && l.chain.shadowed && !counts.valid()) {
             // Imported and cleared once, before the first chain that marches.
             fg.stepCounts = g.importBuffer("ray-march step counts",
@@ -188,7 +197,8 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const std::vector<ls::Shared>& 
         ls::CompositeOutputs written = o.target;
         if (!o.composited) {
             ls::FrameContext composite = frame;
-            composite.shared = in.shared;
+            composite.spec = l.chain.spec;
+            composite.values = in.values;
             composite.constants = in.constants;
             written = chains == 0 ? ls::addComposite(g, {composite, color, o.lin, linOut})
                                   : ls::addInscatter(g, {composite, color, o.lin, linOut});

@@ -60,8 +60,11 @@ struct GraphConfig {
 struct FrameGraph {
     std::unique_ptr<rg::RenderGraph> graph;
     rg::ImageRef depth, color, inscatterOut, noise;
+    // The plugin's own noise, made in the frame the value says (invalid without ownNoise).
+    rg::HostDataRef<ls::NoiseFrame> makeNoise;
     struct LightImages {
         rg::ImageRef shadowMap, lightColor, table;
+        rg::HostDataRef<ls::LightFrame> values;  // the light's values, given to each record()
     };
     std::vector<LightImages> lights;  // each light's imports (GraphConfig::lights)
     std::string summary;              // which nodes were chosen, and why
@@ -75,9 +78,10 @@ rg::ImportedBuffer stepCountImport(VkBuffer buffer, uint32_t slices);
 
 rg::ImportedImage importDescription(const ImageInput& in);
 rg::ImportedImage importDescription(const ImportState& s);
-// An image the plugin owns across frames (the point-light table, the tiling noise): filled
-// outside the frame, sampled by fragment and compute shaders within it, left read-only.
-rg::ImportedImage persistentImport(const ImportState& s, VkImage image);
+// An image the plugin owns across frames (the point-light table, the tiling noise): filled by a
+// pass of the frame that needs it filled, sampled by fragment and compute shaders, left
+// read-only. `filled`: an earlier frame filled it (else its contents are undefined).
+rg::ImportedImage persistentImport(const ImportState& s, VkImage image, bool filled);
 // The plugin's own tiling noise and a light's point-light table, as the frame graph imports them.
 ImportState ownNoiseState();
 ImportState tableState();
@@ -91,10 +95,9 @@ VkFormat stencilFormat(const rg::DeviceCaps& caps);
 // device renders to it (2 / 65535 of NDC: 0.04 pixel at 2560 pixels across), else R32G32_SFLOAT.
 VkFormat coordinateFormat(const rg::DeviceCaps& caps);
 
-// `lightShared` and `lightData`: each light's constants and options, and its method's state
-// (prepare()), in the order of config.lights; empty for the budget.
-FrameGraph buildFrameGraph(const GraphConfig& config,
-                           const std::vector<ls::Shared>& lightShared = {},
-                           const std::vector<const ls::LightData*>& lightData = {});
+// `shared`: the device's samplers and pipelines; null for the budget, whose graph never records.
+// Nothing of a frame goes in: each record() gives the lights' values (FrameGraph::lights[i].values)
+// and the noise's (makeNoise), so the graph may be kept for later frames.
+FrameGraph buildFrameGraph(const GraphConfig& config, const ls::Shared& shared = nullptr);
 
 }  // namespace lightscatter::detail

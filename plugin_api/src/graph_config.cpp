@@ -40,6 +40,7 @@ GraphConfig graphConfig(const ValidatedFrame& frame, const ls::MethodUnit& metho
         l.chain.light = s.light.kind;
         l.chain.shadowed = s.shadowed;
         l.chain.shadowMapSize = s.light.shadowMapSize;
+        l.chain.spec = ls::scatterSpec(s);
         const bool sameMethod =
             previous && previous->method == &method && i < previous->lights.size();
         l.chain.options = method.options(s, i < data.size() ? data[i] : nullptr,

@@ -34,44 +34,99 @@ bool poisonFromEnvironment() {
     return v && *v && std::string(v) != "0";
 }
 
-// Refuses a context before anything is made from it.
-const VulkanContext& checked(const VulkanContext& c) {
+// Refuses a creation before anything is made from it.
+const PluginCreateInfo& checked(const PluginCreateInfo& info) {
+    const VulkanContext& c = info.context;
     auto null = [](const char* field) {
         throw InvalidInput(std::string("lightscatter: context.") + field + " is VK_NULL_HANDLE");
     };
+    if (info.framesInFlight < 1 || info.framesInFlight > kMaxFramesInFlight)
+        throw InvalidInput("lightscatter: framesInFlight is " +
+                           std::to_string(info.framesInFlight) + "; it must be 1 to " +
+                           std::to_string(kMaxFramesInFlight));
     if (!c.instance) null("instance");
     if (!c.physicalDevice) null("physicalDevice");
     if (!c.device) null("device");
     if (!c.queue) null("queue");
     detail::checkEnabledFeatures(c.enabledFeatures);
-    return c;
+    return info;
 }
+
+// A compiled frame graph, and the executor that runs it; kept while frames recorded with it may
+// still be reported on or running on the GPU (RecordedFrame and the retire list hold it).
+struct Running {
+    std::shared_ptr<FrameGraph> built;  // the graph its executor references
+    std::unique_ptr<rg::GraphExecutor> executor;
+    bool rehearsed = false;
+};
 
 // What a recorded frame's report needs besides its timestamps.
 struct RecordedFrame {
     uint64_t frame = 0;
-    uint64_t graph = 0;  // the frame graph it was recorded with
+    std::shared_ptr<Running> graph;  // the graph it was recorded with
     std::string method, reason, notice;
     std::vector<std::string> passNames;
-    bool tableRefilled = false;
-    bool noiseMade = false;
+    std::vector<std::string> setupPasses;
     std::vector<PassTime> cpuWork;
     bool countedSteps = false;  // its march added into stepBuffers[frame % kTimedFrames]
+    uint32_t stepSlices = 0;    // ... for this many slices
 };
+
+// A compiled graph the plugin keeps for the configuration it was built for, so that a light
+// leaving and coming back, auto switching methods back and forth or a setting toggled reuse it.
+struct CachedGraph {
+    GraphConfig config;
+    size_t hash = 0;
+    std::shared_ptr<FrameGraph> built;
+    rg::CompiledGraph compiled;        // to make the executor again when the heap grows
+    std::shared_ptr<Running> running;  // null until used after the heap grew
+    uint64_t lastUse = 0;              // the last frame recorded with it
+};
+
+// A prefilter for the cache: the configuration's frame-wide sizes and each light's kind. Equal
+// configurations have equal hashes; the cache compares configurations themselves after it.
+size_t configHash(const GraphConfig& c) {
+    size_t h = std::hash<const void*>()(c.method);
+    auto mix = [&h](uint64_t v) {
+        h ^= std::hash<uint64_t>()(v) + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
+    };
+    mix(c.screen.width);
+    mix(c.screen.height);
+    mix(c.color.format);
+    mix(c.depth.format);
+    mix(c.lights.size());
+    for (const detail::LightGraphConfig& l : c.lights) {
+        mix(static_cast<uint64_t>(l.chain.light));
+        mix(l.chain.shadowed);
+        mix(l.chain.shadowMapSize);
+        mix(l.touchesView);
+    }
+    return h;
+}
 
 }  // namespace
 
 struct Plugin::Impl {
-    explicit Impl(const VulkanContext& c)
-        : device(rg::ExternalDevice{checked(c).instance, c.physicalDevice, c.device, c.queue,
-                                    c.queueFamily}),
+    explicit Impl(const PluginCreateInfo& info)
+        : device(rg::ExternalDevice{checked(info).context.instance, info.context.physicalDevice,
+                                    info.context.device, info.context.queue,
+                                    info.context.queueFamily}),
           caps(device),
-          shared(std::make_shared<ls::SharedState>(device)) {
+          shared(std::make_shared<ls::SharedState>(device)),
+          framesInFlight(info.framesInFlight),
+          heap(device, "plugin transient heap") {
         depthStencil = detail::stencilFormat(caps);
         coordinates = detail::coordinateFormat(caps);
         if (depthStencil == VK_FORMAT_UNDEFINED)
             throw std::runtime_error(
                 "lightscatter: the device has no depth-stencil format with stencil");
+    }
+
+    // Everything a frame's graph and history still hold goes before the heap and the device.
+    ~Impl() {
+        frames.clear();
+        graphs.clear();
+        retired.collectAll();
     }
 
     // Everything that can refuse a frame, before anything is built: the checked frame and its
@@ -89,74 +144,105 @@ struct Plugin::Impl {
     // What prepare() refuses, found the same way, with nothing built or changed.
     static void check(const FrameDescription& frame) { choose(frame); }
 
-    static ls::ScatterSpec scatterSpec(const detail::FrameSetup& setup) {
-        ls::ScatterSpec spec;
-        spec.light = setup.light.kind;
-        spec.phase = setup.medium.phase;
-        spec.minMaxTrees = setup.epipolar.minMaxTrees;
-        spec.lightColor = setup.lightColor;
-        spec.bilinearShadow = setup.epipolar.bilinearShadow;
-        spec.simplifiedModel = setup.simplified;
-        spec.cubeShadow = setup.shadowed && setup.light.kind == ls::LightType::Point;
-        return spec;
-    }
-
-    // One light's constants and shader options.
-    static void fillShared(ls::SharedState& s, const detail::FrameSetup& setup) {
+    // One light's constants.
+    static ls::FrameConstants frameConstants(const detail::FrameSetup& setup) {
         const ls::TableLayout table =
             ls::tableLayoutFor(setup.medium, setup.light.radius, ls::kTableWidth, ls::kTableHeight);
-        s.spec = scatterSpec(setup);
-        s.constants = ls::makeFrameConstants(setup.camera, setup.light, setup.medium,
-                                             setup.epipolar, setup.screen, table);
+        ls::FrameConstants c = ls::makeFrameConstants(setup.camera, setup.light, setup.medium,
+                                                      setup.epipolar, setup.screen, table);
         // Seed 004's I / (a1 r^2 + a0) as (I / a1) / (r^2 + a0 / a1); the floor keeps a ray through
         // the light finite when a0 is 0, as the floor on r0 does for the full model; the ceilings
         // keep a denormal a1 from making them infinite.
         const float a1 = setup.settings.simplifiedA1;
-        s.constants.simplified = {std::clamp(setup.settings.simplifiedA0 / a1, 1e-12f, 1e30f),
-                                  std::min(1.0f / a1, 1e30f), 0.0f, 0.0f};
+        c.simplified = {std::clamp(setup.settings.simplifiedA0 / a1, 1e-12f, 1e30f),
+                        std::min(1.0f / a1, 1e30f), 0.0f, 0.0f};
         const float storage = detail::linStorageScale(setup);
-        s.constants.linStorage = {storage, 1.0f / storage, 0.0f, 0.0f};
+        c.linStorage = {storage, 1.0f / storage, 0.0f, 0.0f};
+        return c;
     }
 
-    // Builds the graph for `c` unless the current one was built for it.
-    void ensureGraph(const GraphConfig& c, const std::vector<const ls::LightData*>& data) {
-        if (config && *config == c) return;
-        // The old graph's memory goes first (the new one may need it); until the new one is
-        // complete there is none, so that a failure leaves nothing half-built behind.
-        executor.reset();
-        config.reset();
-        ++graphGeneration;
-        FrameGraph built = detail::buildFrameGraph(c, lightShared, data);
-        rg::CompileOptions options;
-        options.poisonTransients = c.poisonTransients;
-        rg::CompiledGraph compiled = rg::compile(*built.graph, caps, options);
-        fg = std::move(built);
-        executor = std::make_unique<rg::GraphExecutor>(device, *fg.graph, std::move(compiled));
-        rehearsed = false;
-        config = c;
-        // The old graph's frames are done (the executor waited for the device): their counters go.
-        for (auto& b : stepBuffers) b.reset();
+    // The frame N - framesInFlight and everything before it have completed (the engine's promise
+    // when it records frame N): what they alone used is destroyed.
+    void collect(uint64_t completed) {
+        retired.collect(completed);
+        for (const auto& g : graphs)
+            if (g->running) g->running->executor->releaseCompleted(completed);
+    }
+
+    // Retires a cached graph's executor: frames recorded with it may still run.
+    void retire(CachedGraph& g) {
+        if (!g.running) return;
+        retired.retire(lastFrame, [keep = std::move(g.running)] {});
+    }
+
+    // The cached graph for `c`, compiled the first time it is met; its executor made anew when the
+    // heap grew since. Nothing waits: what the cache or the heap lets go is retired.
+    CachedGraph& graphFor(const GraphConfig& c) {
+        const size_t hash = configHash(c);
+        auto found = std::find_if(graphs.begin(), graphs.end(),
+                                  [&](const auto& g) { return g->hash == hash && g->config == c; });
+        if (found == graphs.end()) {
+            auto g = std::make_unique<CachedGraph>();
+            g->config = c;
+            g->hash = hash;
+            g->built = std::make_shared<FrameGraph>(detail::buildFrameGraph(c, shared));
+            rg::CompileOptions options;
+            options.poisonTransients = c.poisonTransients;
+            g->compiled = rg::compile(*g->built->graph, caps, options);
+            ++graphsCompiled;
+            if (graphs.size() >= kCachedGraphs) {
+                // The least recently used goes.
+                auto oldest = std::min_element(
+                    graphs.begin(), graphs.end(),
+                    [](const auto& a, const auto& b) { return a->lastUse < b->lastUse; });
+                retire(**oldest);
+                graphs.erase(oldest);
+            }
+            graphs.push_back(std::move(g));
+            found = graphs.end() - 1;
+        }
+        CachedGraph& g = **found;
+        if (!heap.fits(g.compiled.blocks)) {
+            // Every executor placed in memory about to be replaced goes first.
+            const bool replaces =
+                std::any_of(g.compiled.blocks.begin(), g.compiled.blocks.end(), [&](const auto& b) {
+                    return heap.size(b.memoryType) != 0 && heap.size(b.memoryType) < b.size;
+                });
+            if (replaces)
+                for (auto& other : graphs) retire(*other);
+            heap.reserve(g.compiled.blocks, retired, lastFrame, "the plugin's transient textures");
+        }
+        if (!g.running) {
+            auto r = std::make_shared<Running>();
+            r->built = g.built;
+            r->executor =
+                std::make_unique<rg::GraphExecutor>(device, *g.built->graph, g.compiled, &heap);
+            g.running = std::move(r);
+        }
+        return g;
     }
 
     // The step counter of the frame about to be recorded: one buffer per frame that may be in
-    // flight, as with the timestamp queries, so that a frame's counts wait for its report.
-    void importStepCounter() {
+    // flight, as with the timestamp queries, so that a frame's counts wait for its report. A
+    // buffer too small for this frame's graph is replaced (the frame that used it last is done).
+    void importStepCounter(const FrameGraph& fg, uint32_t slices) {
         if (!fg.stepCounts.valid()) return;
-        auto& buffer = stepBuffers[(lastFrame + 1) % kTimedFrames];
-        const uint32_t slices = config->stepCountSlices;
-        if (!buffer) {
-            const rg::ImportedBuffer d = detail::stepCountImport(VK_NULL_HANDLE, slices);
+        const uint64_t frame = lastFrame + 1;
+        auto& buffer = stepBuffers[frame % kTimedFrames];
+        const rg::ImportedBuffer d = detail::stepCountImport(VK_NULL_HANDLE, slices);
+        if (buffer && buffer->size() < d.size)
+            retired.retire(lastFrame,
+                           [old = std::shared_ptr<rg::HostBuffer>(std::move(buffer))] {});
+        if (!buffer)
             buffer =
                 std::make_unique<rg::HostBuffer>(device, d.size, d.usage, "ray-march step counts");
-        }
         fg.graph->updateImport(fg.stepCounts, detail::stepCountImport(buffer->buffer(), slices));
     }
 
-    std::optional<StepCounts> readStepCounts(uint64_t frame) const {
+    std::optional<StepCounts> readStepCounts(uint64_t frame, uint32_t slices) const {
         const auto& buffer = stepBuffers[frame % kTimedFrames];
         if (!buffer) return std::nullopt;
-        const auto sum = ls::sumStepCounts(static_cast<const uint32_t*>(buffer->data()),
-                                           config->stepCountSlices);
+        const auto sum = ls::sumStepCounts(static_cast<const uint32_t*>(buffer->data()), slices);
         auto at = [&](ls::StepCount k) { return sum[static_cast<uint32_t>(k)]; };
         StepCounts s;
         s.samples = at(ls::StepCount::Samples);
@@ -168,52 +254,54 @@ struct Plugin::Impl {
         return s;
     }
 
-    void rehearseOnce() {
-        if (rehearsed) return;
-        // Passes build their pipelines on first use: do that on a command buffer of our own.
-        try {
-            executor->rehearse();
-        } catch (...) {
-            executor.reset();
-            config.reset();
-            throw;
-        }
-        rehearsed = true;
-    }
-
-    // One path for every frame: each light's constants, its method's CPU work and its table, the
-    // graph for the frame's configuration, and this frame's handles.
-    void prepare(const FrameDescription& frame) {
+    // One path for every frame: each light's values and its method's CPU work, the graph for the
+    // frame's configuration (cached), and this frame's handles and values. Nothing is submitted
+    // and nothing waits; a frame's values are its own (Prepared), so frames may be recorded ahead.
+    struct Prepared {
+        CachedGraph* graph = nullptr;
+        std::vector<ls::LightFrame> values;  // per light, in the frame's order
+        ls::NoiseFrame noise;
+        rg::FrameData data;
+        std::vector<std::string> setupPasses;
+        std::vector<PassTime> cpuWork;
+        detail::MethodChoice choice;
+    };
+    Prepared prepare(const FrameDescription& frame) {
         Chosen chosen = choose(frame);
         const detail::ValidatedFrame& v = chosen.frame;
         const ls::MethodUnit& method = chosen.choice.unit();
         const size_t n = v.lights.size();
-        lastChoice = chosen.choice;
-        while (lightShared.size() < n) lightShared.push_back(ls::SharedState::sibling(*shared));
+        Prepared p;
+        p.choice = chosen.choice;
+        p.values.resize(n);
         if (lightTables.size() < n) lightTables.resize(n);
         if (lightData.size() < n) {
             lightData.resize(n);
             dataMethod.resize(n, nullptr);
         }
-        cpuWork.clear();
-        tableRefilled = false;
         std::vector<const ls::LightData*> data(n, nullptr);
         for (size_t i = 0; i < n; ++i) {
             const detail::FrameSetup& s = v.lights[i];
-            fillShared(*lightShared[i], s);
+            p.values[i].constants = frameConstants(s);
             if (!v.touchesView[i]) continue;  // no chain: nothing to prepare
             if (dataMethod[i] != &method) {
                 lightData[i] = method.makeData();
                 dataMethod[i] = &method;
             }
-            for (ls::CpuWork& w : method.prepare(lightData[i].get(), *lightShared[i], s))
-                cpuWork.push_back({w.name, w.milliseconds, -1});
+            for (ls::CpuWork& w : method.prepare(lightData[i].get(), p.values[i], s))
+                p.cpuWork.push_back({w.name, w.milliseconds, -1});
             data[i] = lightData[i].get();
+            p.values[i].data = data[i];
             if (method.readsTable(s)) {
                 if (!lightTables[i])
                     lightTables[i] =
                         std::make_unique<ls::PointTable>(device, ls::kTableWidth, ls::kTableHeight);
-                tableRefilled = lightTables[i]->update(lightShared[i]) || tableRefilled;
+                p.values[i].fillTable =
+                    lightTables[i]->needsFill(p.values[i].constants, s.medium.phase);
+                if (p.values[i].fillTable)
+                    p.setupPasses.push_back(n == 1 ? "point-light table"
+                                                   : "point-light table (light " +
+                                                         std::to_string(i) + ")");
             }
         }
         detail::GraphOptions options;
@@ -222,13 +310,15 @@ struct Plugin::Impl {
         options.poisonTransients = frame.debug.poisonTransients || poisonFromEnvironment();
         options.countSteps = frame.debug.countSteps;
         const GraphConfig c = detail::graphConfig(v, method, detail::frameImports(frame), options,
-                                                  data, config ? &*config : nullptr);
-        noiseMade = false;
+                                                  data, lastConfig ? &*lastConfig : nullptr);
         if (c.ownNoise) {
             if (!tilingNoise) tilingNoise = std::make_unique<ls::TilingNoise>(device);
-            noiseMade = tilingNoise->ensure(lightShared[0]);
+            p.noise.make = !tilingNoise->made();
+            if (p.noise.make) p.setupPasses.push_back("tiling noise");
         }
-        ensureGraph(c, data);
+        p.graph = &graphFor(c);
+        lastConfig = c;
+        const FrameGraph& fg = *p.graph->built;
         // This frame's handles and stages; layouts are part of the configuration.
         fg.graph->updateImport(fg.depth, detail::importDescription(frame.depth));
         fg.graph->updateImport(fg.color, detail::importDescription(frame.color));
@@ -238,10 +328,13 @@ struct Plugin::Impl {
             fg.graph->updateImport(fg.noise, frame.noise
                                                  ? detail::importDescription(*frame.noise)
                                                  : detail::persistentImport(detail::ownNoiseState(),
-                                                                            tilingNoise->image()));
+                                                                            tilingNoise->image(),
+                                                                            tilingNoise->made()));
+        if (fg.makeNoise.valid()) p.data.set(fg.makeNoise, p.noise);
         const std::vector<LightInput> inputs = detail::lightInputs(frame);
         for (size_t i = 0; i < n; ++i) {
             const auto& images = fg.lights[i];
+            p.data.set(images.values, p.values[i]);
             if (images.shadowMap.valid())
                 fg.graph->updateImport(images.shadowMap,
                                        detail::importDescription(*inputs[i].shadowMap));
@@ -249,50 +342,91 @@ struct Plugin::Impl {
                 fg.graph->updateImport(images.lightColor,
                                        detail::importDescription(*inputs[i].lightColor));
             if (images.table.valid())
-                fg.graph->updateImport(
-                    images.table,
-                    detail::persistentImport(c.lights[i].table, lightTables[i]->image()));
+                fg.graph->updateImport(images.table, detail::persistentImport(
+                                                         c.lights[i].table, lightTables[i]->image(),
+                                                         lightTables[i]->filled()));
         }
-        importStepCounter();
-        rehearseOnce();
+        importStepCounter(fg, c.stepCountSlices);
+        Running& r = *p.graph->running;
+        if (!r.rehearsed) {
+            // Passes make their pipelines on first use: that happens here, on a command buffer of
+            // the executor's own that is never submitted, before the engine's is touched. A graph
+            // that fails it is made again by the next frame.
+            try {
+                r.executor->rehearse(p.data);
+            } catch (...) {
+                p.graph->running.reset();
+                throw;
+            }
+            r.rehearsed = true;
+        }
+        return p;
+    }
+
+    // The frame was recorded: what it fills is filled for the frames after it, and it is kept in
+    // the history for its report.
+    uint64_t recorded(const Prepared& p) {
+        const GraphConfig& c = p.graph->config;
+        for (size_t i = 0; i < p.values.size(); ++i)
+            if (p.values[i].fillTable)
+                lightTables[i]->recordedFill(p.values[i].constants, c.lights[i].chain.spec.phase);
+        if (p.noise.make) tilingNoise->recordedMake();
+        lastExecutor = p.graph->running->executor.get();
+        p.graph->lastUse = lastFrame;
+        RecordedFrame f;
+        f.frame = lastFrame;
+        f.graph = p.graph->running;
+        const FrameGraph& fg = *p.graph->built;
+        for (const auto& pass : f.graph->executor->compiled().passes)
+            f.passNames.push_back(fg.graph->passes()[pass.pass].name);
+        f.setupPasses = p.setupPasses;
+        f.countedSteps = fg.stepCounts.valid();
+        f.stepSlices = c.stepCountSlices;
+        f.cpuWork = p.cpuWork;
+        const bool anyChain =
+            std::any_of(c.lights.begin(), c.lights.end(),
+                        [](const detail::LightGraphConfig& l) { return l.touchesView; });
+        f.method = anyChain ? methodName(p.choice.method) : "none";
+        f.reason = (p.choice.reason.empty() ? fg.summary : p.choice.reason) + frameNotes(p);
+        f.notice = p.choice.notice;
+        frames.push_back(std::move(f));
+        while (frames.size() > kTimedFrames) frames.pop_front();
+        return lastFrame;
+    }
+
+    // Records the prepared frame into `cmd` as frame lastFrame + 1.
+    uint64_t record(VkCommandBuffer cmd, const Prepared& p) {
+        const uint64_t number = lastFrame + 1;
+        rg::GraphExecutor& e = *p.graph->running->executor;
+        e.record(cmd, number, p.data, before(e));
+        lastFrame = number;
+        return recorded(p);
+    }
+
+    // What a first use of the shared heap waits on: the uses of the graph recorded last, when it
+    // is another one.
+    const rg::TransientScope* before(const rg::GraphExecutor& e) const {
+        return lastExecutor && lastExecutor != &e ? &lastScope() : nullptr;
+    }
+    const rg::TransientScope& lastScope() const {
+        // lastExecutor is alive: it was recorded last, so nothing retired it yet, or its Running is
+        // still in the frame history.
+        return lastExecutor->transientScope();
     }
 
     // What changed this frame without a rebuild (epipolar's cube faces reaching the view), per
     // light that has a chain.
-    std::string frameNotes() const {
-        if (!config) return {};
+    std::string frameNotes(const Prepared& p) const {
+        const GraphConfig& c = p.graph->config;
         std::string notes;
-        for (size_t i = 0; i < config->lights.size(); ++i) {
-            if (!config->lights[i].touchesView) continue;
-            const std::string note =
-                config->method->frameNote(*lightShared[i], config->lights[i].chain);
+        for (size_t i = 0; i < c.lights.size(); ++i) {
+            if (!c.lights[i].touchesView) continue;
+            const std::string note = c.method->frameNote(p.values[i], c.lights[i].chain);
             if (note.empty()) continue;
-            notes += config->lights.size() == 1 ? "; " + note
-                                                : "; light " + std::to_string(i) + "'s " + note;
+            notes +=
+                c.lights.size() == 1 ? "; " + note : "; light " + std::to_string(i) + "'s " + note;
         }
         return notes;
-    }
-
-    // Numbers the frame just prepared and keeps what its report will need.
-    uint64_t nextFrame() {
-        RecordedFrame f;
-        f.frame = ++lastFrame;
-        f.graph = graphGeneration;
-        for (const auto& p : executor->compiled().passes)
-            f.passNames.push_back(fg.graph->passes()[p.pass].name);
-        f.tableRefilled = tableRefilled;
-        f.noiseMade = noiseMade;
-        f.countedSteps = fg.stepCounts.valid();
-        f.cpuWork = cpuWork;
-        const bool anyChain =
-            config && std::any_of(config->lights.begin(), config->lights.end(),
-                                  [](const detail::LightGraphConfig& l) { return l.touchesView; });
-        f.method = anyChain ? methodName(lastChoice.method) : "none";
-        f.reason = (lastChoice.reason.empty() ? fg.summary : lastChoice.reason) + frameNotes();
-        f.notice = lastChoice.notice;
-        frames.push_back(std::move(f));
-        while (frames.size() > kTimedFrames) frames.pop_front();
-        return lastFrame;
     }
 
     FrameReport report(uint64_t frame) const {
@@ -308,12 +442,7 @@ struct Plugin::Impl {
             throw InvalidInput("lightscatter: " + which + "the times of only the last " +
                                std::to_string(kTimedFrames) + " frames are kept (the last is " +
                                std::to_string(lastFrame) + ")");
-        if (f->graph != graphGeneration)
-            throw InvalidInput(
-                "lightscatter: " + which +
-                "the frame graph was rebuilt since (a new size, format, layout, method or "
-                "profile), and that frame's queries with it");
-        const rg::FrameTimings t = executor->readTimings(frame);
+        const rg::FrameTimings t = f->graph->executor->readTimings(frame);
         FrameReport r;
         r.frame = frame;
         r.timed = t.valid;
@@ -322,41 +451,48 @@ struct Plugin::Impl {
         if (t.valid) {
             for (const auto& p : t.passes) r.passes.push_back({p.name, p.milliseconds, p.samples});
             r.totalMilliseconds = t.totalMilliseconds;
-            if (f->countedSteps) r.steps = readStepCounts(frame);
+            if (f->countedSteps) r.steps = readStepCounts(frame, f->stepSlices);
         }
         r.passNames = f->passNames;
         r.method = f->method;
         r.reason = f->reason;
         r.notice = f->notice;
-        if (f->tableRefilled) r.setupPasses.push_back("point-light table");
-        if (f->noiseMade) r.setupPasses.push_back("tiling noise");
+        r.setupPasses = f->setupPasses;
         r.cpuWork = f->cpuWork;
         return r;
     }
 
+    // The graph of the last frame recorded, for tools.
+    const CachedGraph* lastGraph() const {
+        const CachedGraph* last = nullptr;
+        for (const auto& g : graphs)
+            if (g->running && (!last || g->lastUse > last->lastUse)) last = g.get();
+        return last;
+    }
+
+    static constexpr size_t kCachedGraphs = 8;
+
     rg::Device device;
     rg::VulkanDeviceCaps caps;
-    ls::Shared shared;  // the pipelines and samplers every light's state shares
+    ls::Shared shared;  // the samplers and pipelines every light's passes share
+    uint32_t framesInFlight = 2;
     VkFormat depthStencil = VK_FORMAT_UNDEFINED;
     VkFormat coordinates = VK_FORMAT_R32G32_SFLOAT;
-    // Per light, in the frame's order: its constants and options (over `shared`'s pipelines), its
-    // point-light table, and its method's state (made by dataMethod[i]).
-    std::vector<ls::Shared> lightShared;
+    // Per light, in the frame's order: its point-light table and its method's state (made by
+    // dataMethod[i]).
     std::vector<std::unique_ptr<ls::PointTable>> lightTables;
     std::vector<std::unique_ptr<ls::LightData>> lightData;
     std::vector<const ls::MethodUnit*> dataMethod;
-    bool tableRefilled = false;
     std::unique_ptr<ls::TilingNoise> tilingNoise;
-    bool noiseMade = false;
-    std::vector<PassTime> cpuWork;  // this frame's
-    std::optional<GraphConfig> config;
-    bool rehearsed = false;
-    detail::MethodChoice lastChoice;  // of the frame prepared last
-    FrameGraph fg;
-    std::unique_ptr<rg::GraphExecutor> executor;
+    // Declared before the graphs: they are placed in it, and go first.
+    rg::TransientHeap heap;
+    rg::RetireList retired;
+    std::vector<std::unique_ptr<CachedGraph>> graphs;
+    std::optional<GraphConfig> lastConfig;
+    const rg::GraphExecutor* lastExecutor = nullptr;  // recorded the last frame
+    uint64_t graphsCompiled = 0;
     // DebugOptions::countSteps: frame n's step counter is stepBuffers[n % kTimedFrames].
     std::array<std::unique_ptr<rg::HostBuffer>, kTimedFrames> stepBuffers;
-    uint64_t graphGeneration = 0;
     uint64_t lastFrame = 0;
     std::deque<RecordedFrame> frames;  // the last kTimedFrames
 };
@@ -375,12 +511,13 @@ auto translated(F&& f) -> decltype(f()) {
 
 }  // namespace
 
-Plugin::Plugin(const VulkanContext& context)
-    : impl_(translated([&] { return std::make_unique<Impl>(context); })) {}
+Plugin::Plugin(const PluginCreateInfo& info)
+    : impl_(translated([&] { return std::make_unique<Impl>(info); })) {}
 
-Plugin::~Plugin() {
-    if (impl_) impl_->executor.reset();
-}
+Plugin::Plugin(const VulkanContext& context) : Plugin(PluginCreateInfo{2, context}) {}
+
+// Waits for nothing (see the header): what the plugin made goes now.
+Plugin::~Plugin() = default;
 
 uint64_t Plugin::record(VkCommandBuffer cmd, const FrameDescription& frame) {
     if (!cmd)
@@ -388,19 +525,28 @@ uint64_t Plugin::record(VkCommandBuffer cmd, const FrameDescription& frame) {
             "lightscatter: record: cmd is VK_NULL_HANDLE: pass the engine's command "
             "buffer, in the recording state");
     return translated([&] {
-        impl_->prepare(frame);
-        const uint64_t number = impl_->nextFrame();
-        impl_->executor->record(cmd, number);
-        return number;
+        Impl& i = *impl_;
+        // Recording frame N promises that frame N - framesInFlight has completed.
+        const uint64_t number = i.lastFrame + 1;
+        if (number > i.framesInFlight) i.collect(number - i.framesInFlight);
+        const Impl::Prepared p = i.prepare(frame);
+        return i.record(cmd, p);
     });
 }
 
 FrameReport Plugin::render(const FrameDescription& frame) {
     return translated([&] {
-        impl_->prepare(frame);
-        const uint64_t number = impl_->nextFrame();
-        impl_->executor->run(number);
-        return impl_->report(number);
+        Impl& i = *impl_;
+        const uint64_t number = i.lastFrame + 1;
+        if (number > i.framesInFlight) i.collect(number - i.framesInFlight);
+        const Impl::Prepared p = i.prepare(frame);
+        rg::GraphExecutor& e = *p.graph->running->executor;
+        e.run(number, p.data, i.before(e));
+        i.lastFrame = number;
+        i.recorded(p);
+        // Frames run in the order they were recorded: this one done, so is every one before.
+        i.collect(number);
+        return i.report(number);
     });
 }
 
@@ -420,13 +566,15 @@ FrameReport Plugin::report() {
 }
 
 std::string Plugin::graphDot() const {
-    if (!impl_->executor) return {};
-    return rg::reportDot(*impl_->fg.graph, impl_->executor->compiled());
+    const CachedGraph* g = impl_->lastGraph();
+    if (!g) return {};
+    return rg::reportDot(*g->built->graph, g->running->executor->compiled());
 }
 
 std::string Plugin::graphJson() const {
-    if (!impl_->executor) return {};
-    return rg::reportJson(*impl_->fg.graph, impl_->executor->compiled()).dump(2);
+    const CachedGraph* g = impl_->lastGraph();
+    if (!g) return {};
+    return rg::reportJson(*g->built->graph, g->running->executor->compiled()).dump(2);
 }
 
 }  // namespace lightscatter

@@ -609,10 +609,30 @@ struct VulkanContext {
     const VkPhysicalDeviceFeatures2* enabledFeatures = nullptr;
 };
 
+// The most frames an engine may have in flight (PluginCreateInfo::framesInFlight).
+inline constexpr uint32_t kMaxFramesInFlight = 8;
+
+// How a Plugin is made. (The context comes second, so that a braced list of a VulkanContext's
+// handles still means a VulkanContext.)
+struct PluginCreateInfo {
+    // The engine's frames in flight, 1 to kMaxFramesInFlight: when it records frame N (record()'s
+    // N-th call), the frame it recorded framesInFlight calls before (N - framesInFlight) has
+    // completed on the GPU, as the usual fence per frame slot makes sure. The plugin destroys
+    // what only completed frames used then, and never waits for the GPU itself.
+    uint32_t framesInFlight = 2;
+    VulkanContext context;
+};
+
 class LIGHTSCATTER_API Plugin {
   public:
-    // Throws InvalidInput for a context that lacks a handle or a feature (see VulkanContext).
+    // Throws InvalidInput for a context that lacks a handle or a feature (see VulkanContext), or
+    // framesInFlight out of its range.
+    explicit Plugin(const PluginCreateInfo& info);
+    // PluginCreateInfo{2, context}: two frames in flight.
     explicit Plugin(const VulkanContext& context);
+    // Waits for nothing: destroy the plugin once every frame it recorded has completed on the GPU
+    // (after the engine's fences, or its vkDeviceWaitIdle at shutdown). render()'s frames have
+    // completed when it returns.
     ~Plugin();
     Plugin(const Plugin&) = delete;
     Plugin& operator=(const Plugin&) = delete;
@@ -636,9 +656,8 @@ class LIGHTSCATTER_API Plugin {
     void check(const FrameDescription& frame) const;
     // The GPU times of a frame, read without waiting: `timed` is false while the GPU has not
     // finished it (or it was never submitted). The plugin keeps the times of the last kTimedFrames
-    // frames of one frame graph; an older frame, or one recorded before the graph was rebuilt,
-    // throws InvalidInput. Each frame keeps its own queries, so frames may be recorded ahead of
-    // their submission (at most kTimedFrames in flight).
+    // frames, whatever graph each was recorded with; an older frame throws InvalidInput. Each
+    // frame keeps its own queries, so frames may be recorded ahead of their submission.
     static constexpr uint64_t kTimedFrames = 8;
     FrameReport report(uint64_t frame);
     // The last frame recorded (or rendered); frame 0 and nothing else before the first.

@@ -1,0 +1,41 @@
+#pragma once
+// What one light's passes read when they are recorded, for one frame: its constants, the method's
+// CPU work, and whether its point-light table is filled this frame. The plugin gives it to each
+// record() as host data (rg::HostDataRef<LightFrame>, declared by the frame graph), so a graph kept
+// across frames, or frames recorded ahead, never read values someone changed since.
+#include <array>
+
+#include "frame_constants.h"
+
+namespace ls {
+
+// A method's state of one light kept across frames (the slice placement, the beam tree), filled
+// by MethodUnit::prepare() before each frame is recorded; the chain's passes read it when they
+// record, through LightFrame::data of the frame being recorded (never a pointer captured when the
+// graph was built: a kept graph outlives the data of a method used in between).
+struct LightData {
+    virtual ~LightData() = default;
+};
+
+struct LightFrame {
+    FrameConstants constants{};
+    // A point light's cube shadow map under epipolar: the constants as seen through each face
+    // (+X, -X, +Y, -Y, +Z, -Z), lightViewProj the face's matrix and cubeFace.x its index, and
+    // cubeFace.y 1 where the face's frustum reaches the view: a face out of view keeps its passes
+    // in the graph (a face moving into view rebuilds nothing) and they record no work.
+    std::array<FrameConstants, 6> faces{};
+    const LightData* data = nullptr;  // the method's prepare() of this frame (null: none)
+    bool fillTable = false;           // the light's point-light table is (re)filled this frame
+
+    // face < 0: the light's own constants.
+    const FrameConstants& of(int face) const { return face < 0 ? constants : faces[face]; }
+    bool inView(int face) const { return face < 0 || faces[face].cubeFace.y > 0.5f; }
+};
+
+// The frame-wide value the plugin's tiling noise node reads: the noise is made in the first frame
+// that samples it.
+struct NoiseFrame {
+    bool make = false;
+};
+
+}  // namespace ls
