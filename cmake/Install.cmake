@@ -19,7 +19,7 @@ else()
   target_include_directories(lightscatter_package
                              INTERFACE $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
   target_compile_features(lightscatter_package INTERFACE cxx_std_17)
-  target_link_libraries(lightscatter_package INTERFACE Vulkan::Vulkan)
+  target_link_libraries(lightscatter_package INTERFACE Vulkan::Headers ${CMAKE_DL_LIBS})
   set(ls_installed lightscatter_package)
 endif()
 install(TARGETS ${ls_installed} EXPORT lightscatterTargets

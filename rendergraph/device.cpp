@@ -50,40 +50,40 @@ int typeRank(VkPhysicalDeviceType t) {
     }
 }
 
-bool hasExtension(VkPhysicalDevice pd, const char* name) {
+bool hasExtension(const VulkanFunctions& vk_, VkPhysicalDevice pd, const char* name) {
     uint32_t n = 0;
-    vkEnumerateDeviceExtensionProperties(pd, nullptr, &n, nullptr);
+    vk_.EnumerateDeviceExtensionProperties(pd, nullptr, &n, nullptr);
     std::vector<VkExtensionProperties> exts(n);
-    vkEnumerateDeviceExtensionProperties(pd, nullptr, &n, exts.data());
+    vk_.EnumerateDeviceExtensionProperties(pd, nullptr, &n, exts.data());
     return std::any_of(exts.begin(), exts.end(), [&](const VkExtensionProperties& e) {
         return !std::strcmp(e.extensionName, name);
     });
 }
 
-bool hasInstanceExtension(const char* name) {
+bool hasInstanceExtension(const VulkanFunctions& vk_, const char* name) {
     uint32_t n = 0;
-    vkEnumerateInstanceExtensionProperties(nullptr, &n, nullptr);
+    vk_.EnumerateInstanceExtensionProperties(nullptr, &n, nullptr);
     std::vector<VkExtensionProperties> exts(n);
-    vkEnumerateInstanceExtensionProperties(nullptr, &n, exts.data());
+    vk_.EnumerateInstanceExtensionProperties(nullptr, &n, exts.data());
     return std::any_of(exts.begin(), exts.end(), [&](const VkExtensionProperties& e) {
         return !std::strcmp(e.extensionName, name);
     });
 }
 
-bool hasLayer(const char* name) {
+bool hasLayer(const VulkanFunctions& vk_, const char* name) {
     uint32_t n = 0;
-    vkEnumerateInstanceLayerProperties(&n, nullptr);
+    vk_.EnumerateInstanceLayerProperties(&n, nullptr);
     std::vector<VkLayerProperties> layers(n);
-    vkEnumerateInstanceLayerProperties(&n, layers.data());
+    vk_.EnumerateInstanceLayerProperties(&n, layers.data());
     return std::any_of(layers.begin(), layers.end(),
                        [&](const VkLayerProperties& l) { return !std::strcmp(l.layerName, name); });
 }
 
-int graphicsComputeFamily(VkPhysicalDevice pd) {
+int graphicsComputeFamily(const VulkanFunctions& vk_, VkPhysicalDevice pd) {
     uint32_t n = 0;
-    vkGetPhysicalDeviceQueueFamilyProperties(pd, &n, nullptr);
+    vk_.GetPhysicalDeviceQueueFamilyProperties(pd, &n, nullptr);
     std::vector<VkQueueFamilyProperties> families(n);
-    vkGetPhysicalDeviceQueueFamilyProperties(pd, &n, families.data());
+    vk_.GetPhysicalDeviceQueueFamilyProperties(pd, &n, families.data());
     for (uint32_t i = 0; i < n; ++i) {
         const VkQueueFlags want = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
         if ((families[i].queueFlags & want) == want && families[i].timestampValidBits > 0)
@@ -93,26 +93,26 @@ int graphicsComputeFamily(VkPhysicalDevice pd) {
 }
 
 // Why a device cannot run the runtime, or empty when it can.
-std::string unsuitable(VkPhysicalDevice pd, bool swapchain) {
+std::string unsuitable(const VulkanFunctions& vk_, VkPhysicalDevice pd, bool swapchain) {
     VkPhysicalDeviceProperties props;
-    vkGetPhysicalDeviceProperties(pd, &props);
+    vk_.GetPhysicalDeviceProperties(pd, &props);
     if (props.apiVersion < VK_API_VERSION_1_3) return "Vulkan 1.3 not supported";
     VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
     VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
     f13.pNext = &f12;
     VkPhysicalDeviceFeatures2 f2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
     f2.pNext = &f13;
-    vkGetPhysicalDeviceFeatures2(pd, &f2);
+    vk_.GetPhysicalDeviceFeatures2(pd, &f2);
     if (!f13.synchronization2) return "no synchronization2";
     if (!f13.dynamicRendering) return "no dynamicRendering";
     if (!f13.maintenance4) return "no maintenance4";
     if (!f12.separateDepthStencilLayouts) return "no separateDepthStencilLayouts";
     if (!f12.hostQueryReset) return "no hostQueryReset";
-    if (!hasExtension(pd, VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME))
+    if (!hasExtension(vk_, pd, VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME))
         return "no VK_KHR_push_descriptor";
-    if (swapchain && !hasExtension(pd, VK_KHR_SWAPCHAIN_EXTENSION_NAME))
+    if (swapchain && !hasExtension(vk_, pd, VK_KHR_SWAPCHAIN_EXTENSION_NAME))
         return "no VK_KHR_swapchain";
-    if (graphicsComputeFamily(pd) < 0) return "no graphics+compute queue with timestamps";
+    if (graphicsComputeFamily(vk_, pd) < 0) return "no graphics+compute queue with timestamps";
     return {};
 }
 
@@ -148,6 +148,7 @@ VKAPI_ATTR VkBool32 VKAPI_CALL Device::onMessage(VkDebugUtilsMessageSeverityFlag
 
 Device::Device(const DeviceOptions& options) : echo_(options.echoMessages) {
     try {
+        vk_.loadGlobal(options.getInstanceProcAddr);
         createInstance(options);
         pickPhysicalDevice(options);
         createDevice(options);
@@ -167,11 +168,14 @@ Device::Device(const ExternalDevice& external) : echo_(false) {
     device_ = external.device;
     queue_ = external.queue;
     queueFamily_ = external.queueFamily;
+    allocator_ = external.allocator;
     try {
+        vk_.loadGlobal(external.getInstanceProcAddr);
+        vk_.loadInstance(instance_);
         loadProperties();
         if (properties_.apiVersion < VK_API_VERSION_1_3)
             throw VulkanError("the engine's device '" + name() + "' does not offer Vulkan 1.3");
-        loadFunctions();
+        vk_.loadDevice(device_);
     } catch (...) {
         destroy();
         throw;
@@ -184,26 +188,22 @@ Device::~Device() {
 
 void Device::destroy() {
     if (!owns_) {
-        if (device_ && oneShotPool_) vkDestroyCommandPool(device_, oneShotPool_, nullptr);
-        oneShotPool_ = VK_NULL_HANDLE;
         device_ = VK_NULL_HANDLE;
         instance_ = VK_NULL_HANDLE;
         return;
     }
     if (device_) {
-        vkDeviceWaitIdle(device_);
-        if (oneShotPool_) vkDestroyCommandPool(device_, oneShotPool_, nullptr);
-        vkDestroyDevice(device_, nullptr);
+        vk_.DeviceWaitIdle(device_);
+        if (oneShotPool_) vk_.DestroyCommandPool(device_, oneShotPool_, allocator_);
+        vk_.DestroyDevice(device_, allocator_);
         device_ = VK_NULL_HANDLE;
     }
     if (messenger_) {
-        auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
-            vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
-        if (destroy) destroy(instance_, messenger_, nullptr);
+        vk_.DestroyDebugUtilsMessengerEXT(instance_, messenger_, allocator_);
         messenger_ = VK_NULL_HANDLE;
     }
     if (instance_) {
-        vkDestroyInstance(instance_, nullptr);
+        vk_.DestroyInstance(instance_, allocator_);
         instance_ = VK_NULL_HANDLE;
     }
 }
@@ -211,14 +211,14 @@ void Device::destroy() {
 void Device::createInstance(const DeviceOptions& options) {
     validation_ = options.validation;
     const char* layerName = "VK_LAYER_KHRONOS_validation";
-    if (validation_ && !hasLayer(layerName))
+    if (validation_ && !hasLayer(vk_, layerName))
         throw VulkanError(
             "validation was requested but VK_LAYER_KHRONOS_validation is not installed (Debian "
             "package vulkan-validationlayers)");
 
     std::vector<const char*> extensions;
     for (const auto& e : options.instanceExtensions) extensions.push_back(e.c_str());
-    debugUtils_ = hasInstanceExtension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    debugUtils_ = hasInstanceExtension(vk_, VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
     if (debugUtils_) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
     if (validation_) extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
 
@@ -255,23 +255,28 @@ void Device::createInstance(const DeviceOptions& options) {
     } else if (debugUtils_) {
         info.pNext = &messenger;
     }
-    const VkResult r = vkCreateInstance(&info, nullptr, &instance_);
+    const VkResult r = vk_.CreateInstance(&info, allocator_, &instance_);
     if (r == VK_ERROR_INCOMPATIBLE_DRIVER)
         throw VulkanError("no Vulkan 1.3 driver found (install mesa-vulkan-drivers for lavapipe)");
     check(r, "vkCreateInstance");
-
-    if (debugUtils_) {
-        auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-            vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
-        if (create) RG_VK(create(instance_, &messenger, nullptr, &messenger_));
+    vk_.loadInstance(instance_);
+    if (!debugUtils_) {
+        // The loader may answer for an extension the instance did not enable.
+        vk_.CreateDebugUtilsMessengerEXT = nullptr;
+        vk_.DestroyDebugUtilsMessengerEXT = nullptr;
+        vk_.SetDebugUtilsObjectNameEXT = nullptr;
+        vk_.CmdBeginDebugUtilsLabelEXT = nullptr;
+        vk_.CmdEndDebugUtilsLabelEXT = nullptr;
     }
+    if (vk_.CreateDebugUtilsMessengerEXT)
+        RG_VK(vk_.CreateDebugUtilsMessengerEXT(instance_, &messenger, allocator_, &messenger_));
 }
 
 void Device::pickPhysicalDevice(const DeviceOptions& options) {
     uint32_t n = 0;
-    RG_VK(vkEnumeratePhysicalDevices(instance_, &n, nullptr));
+    RG_VK(vk_.EnumeratePhysicalDevices(instance_, &n, nullptr));
     std::vector<VkPhysicalDevice> all(n);
-    RG_VK(vkEnumeratePhysicalDevices(instance_, &n, all.data()));
+    RG_VK(vk_.EnumeratePhysicalDevices(instance_, &n, all.data()));
 
     std::string wanted = options.deviceName;
     if (wanted.empty())
@@ -282,8 +287,8 @@ void Device::pickPhysicalDevice(const DeviceOptions& options) {
     int bestRank = 1 << 30;
     for (VkPhysicalDevice pd : all) {
         VkPhysicalDeviceProperties p;
-        vkGetPhysicalDeviceProperties(pd, &p);
-        const std::string why = unsuitable(pd, options.swapchain);
+        vk_.GetPhysicalDeviceProperties(pd, &p);
+        const std::string why = unsuitable(vk_, pd, options.swapchain);
         listing += std::string(listing.empty() ? " '" : "; '") + p.deviceName + "' (" +
                    typeName(p.deviceType) + ")" + (why.empty() ? "" : ": unsuitable, " + why);
         if (!why.empty()) continue;
@@ -307,7 +312,7 @@ void Device::pickPhysicalDevice(const DeviceOptions& options) {
             (listing.empty() ? std::string(" none") : listing));
     }
     physical_ = best;
-    queueFamily_ = static_cast<uint32_t>(graphicsComputeFamily(physical_));
+    queueFamily_ = static_cast<uint32_t>(graphicsComputeFamily(vk_, physical_));
     loadProperties();
     if (options.announce)
         std::cerr << "lightscatter: using Vulkan device '" << properties_.deviceName << "' ("
@@ -316,59 +321,46 @@ void Device::pickPhysicalDevice(const DeviceOptions& options) {
 }
 
 void Device::loadProperties() {
-    vkGetPhysicalDeviceProperties(physical_, &properties_);
-    vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
+    vk_.GetPhysicalDeviceProperties(physical_, &properties_);
+    vk_.GetPhysicalDeviceMemoryProperties(physical_, &memory_);
     VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
     VkPhysicalDeviceMaintenance3Properties maintenance3{
         VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
     driver.pNext = &maintenance3;
     VkPhysicalDeviceProperties2 p2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
     p2.pNext = &driver;
-    vkGetPhysicalDeviceProperties2(physical_, &p2);
+    vk_.GetPhysicalDeviceProperties2(physical_, &p2);
     maxAllocation_ = maintenance3.maxMemoryAllocationSize;
     driverName_ = std::string(driver.driverName) + " " + driver.driverInfo;
     VkPhysicalDeviceFeatures supported;
-    vkGetPhysicalDeviceFeatures(physical_, &supported);
+    vk_.GetPhysicalDeviceFeatures(physical_, &supported);
     extendedFormats_ = supported.shaderStorageImageExtendedFormats;
     uint32_t n = 0;
-    vkGetPhysicalDeviceQueueFamilyProperties(physical_, &n, nullptr);
+    vk_.GetPhysicalDeviceQueueFamilyProperties(physical_, &n, nullptr);
     std::vector<VkQueueFamilyProperties> families(n);
-    vkGetPhysicalDeviceQueueFamilyProperties(physical_, &n, families.data());
+    vk_.GetPhysicalDeviceQueueFamilyProperties(physical_, &n, families.data());
     if (queueFamily_ >= n) throw VulkanError("queue family index out of range");
     timestampBits_ = families[queueFamily_].timestampValidBits;
 }
 
-// Debug-utils and device-level entry points, and the runtime's own command pool. An engine's
-// instance may or may not have enabled debug utils; its loader answers null when it has not.
-void Device::loadFunctions() {
-    if (!owns_ || debugUtils_) {
-        setObjectName_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
-            vkGetInstanceProcAddr(instance_, "vkSetDebugUtilsObjectNameEXT"));
-        cmdBeginLabel_ = reinterpret_cast<PFN_vkCmdBeginDebugUtilsLabelEXT>(
-            vkGetInstanceProcAddr(instance_, "vkCmdBeginDebugUtilsLabelEXT"));
-        cmdEndLabel_ = reinterpret_cast<PFN_vkCmdEndDebugUtilsLabelEXT>(
-            vkGetInstanceProcAddr(instance_, "vkCmdEndDebugUtilsLabelEXT"));
-    }
-    cmdPushDescriptorSet = reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(
-        vkGetDeviceProcAddr(device_, "vkCmdPushDescriptorSetKHR"));
-    if (!cmdPushDescriptorSet)
-        throw VulkanError("vkCmdPushDescriptorSetKHR is missing: enable VK_KHR_push_descriptor");
+// The pool of submitAndWait(record), for a device of the runtime's own (its host's uploads).
+void Device::createOneShotPool() {
     VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     pool.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
     pool.queueFamilyIndex = queueFamily_;
-    RG_VK(vkCreateCommandPool(device_, &pool, nullptr, &oneShotPool_));
+    RG_VK(vk_.CreateCommandPool(device_, &pool, allocator_, &oneShotPool_));
     setName(oneShotPool_, VK_OBJECT_TYPE_COMMAND_POOL, "one-shot command pool");
 }
 
 void Device::createDevice(const DeviceOptions& options) {
     VkPhysicalDeviceFeatures supported;
-    vkGetPhysicalDeviceFeatures(physical_, &supported);
+    vk_.GetPhysicalDeviceFeatures(physical_, &supported);
     VkPhysicalDeviceVulkan12Features have12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
     VkPhysicalDeviceVulkan11Features have11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES};
     have12.pNext = &have11;
     VkPhysicalDeviceFeatures2 have{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
     have.pNext = &have12;
-    vkGetPhysicalDeviceFeatures2(physical_, &have);
+    vk_.GetPhysicalDeviceFeatures2(physical_, &have);
 
     // Kept (enabledFeatures()): a plugin on this device is told what was enabled.
     VkPhysicalDeviceVulkan13Features& f13 = enabled_.v13;
@@ -411,10 +403,11 @@ void Device::createDevice(const DeviceOptions& options) {
     info.pQueueCreateInfos = &queue;
     info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
     info.ppEnabledExtensionNames = extensions.data();
-    RG_VK(vkCreateDevice(physical_, &info, nullptr, &device_));
-    vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
+    RG_VK(vk_.CreateDevice(physical_, &info, allocator_, &device_));
+    vk_.loadDevice(device_);
+    vk_.GetDeviceQueue(device_, queueFamily_, 0, &queue_);
     setName(queue_, VK_OBJECT_TYPE_QUEUE, "lightscatter queue");
-    loadFunctions();
+    createOneShotPool();
 }
 
 uint32_t Device::findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags props) const {
@@ -425,39 +418,41 @@ uint32_t Device::findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags props) 
 }
 
 void Device::setName(VkObjectType type, uint64_t handle, const std::string& name) const {
-    if (!setObjectName_ || !handle) return;
+    if (!vk_.SetDebugUtilsObjectNameEXT || !handle) return;
     VkDebugUtilsObjectNameInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_OBJECT_NAME_INFO_EXT};
     info.objectType = type;
     info.objectHandle = handle;
     info.pObjectName = name.c_str();
-    setObjectName_(device_, &info);
+    vk_.SetDebugUtilsObjectNameEXT(device_, &info);
 }
 
 void Device::beginLabel(VkCommandBuffer cmd, const std::string& name) const {
-    if (!cmdBeginLabel_) return;
+    if (!vk_.CmdBeginDebugUtilsLabelEXT) return;
     VkDebugUtilsLabelEXT label{VK_STRUCTURE_TYPE_DEBUG_UTILS_LABEL_EXT};
     label.pLabelName = name.c_str();
-    cmdBeginLabel_(cmd, &label);
+    vk_.CmdBeginDebugUtilsLabelEXT(cmd, &label);
 }
 
 void Device::endLabel(VkCommandBuffer cmd) const {
-    if (cmdEndLabel_) cmdEndLabel_(cmd);
+    if (vk_.CmdEndDebugUtilsLabelEXT) vk_.CmdEndDebugUtilsLabelEXT(cmd);
 }
 
 void Device::submitAndWait(const std::function<void(VkCommandBuffer)>& record) const {
+    if (!oneShotPool_)
+        throw VulkanError("submitAndWait(record) needs a device of the runtime's own");
     VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
     alloc.commandPool = oneShotPool_;
     alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
     alloc.commandBufferCount = 1;
     VkCommandBuffer cmd;
-    RG_VK_CREATE(vkAllocateCommandBuffers(device_, &alloc, &cmd));
+    RG_VK_CREATE(vk_.AllocateCommandBuffers(device_, &alloc, &cmd));
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    RG_VK(vkBeginCommandBuffer(cmd, &begin));
+    RG_VK(vk_.BeginCommandBuffer(cmd, &begin));
     record(cmd);
-    RG_VK(vkEndCommandBuffer(cmd));
+    RG_VK(vk_.EndCommandBuffer(cmd));
     submitAndWait(cmd);
-    vkFreeCommandBuffers(device_, oneShotPool_, 1, &cmd);
+    vk_.FreeCommandBuffers(device_, oneShotPool_, 1, &cmd);
 }
 
 void Device::submitAndWait(VkCommandBuffer cmd, VkFence fence) const {
@@ -466,13 +461,13 @@ void Device::submitAndWait(VkCommandBuffer cmd, VkFence fence) const {
     VkSubmitInfo2 submit{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
     submit.commandBufferInfoCount = 1;
     submit.pCommandBufferInfos = &cbInfo;
-    RG_VK(vkQueueSubmit2(queue_, 1, &submit, fence));
+    RG_VK(vk_.QueueSubmit2(queue_, 1, &submit, fence));
     if (!fence) {
-        RG_VK(vkQueueWaitIdle(queue_));
+        RG_VK(vk_.QueueWaitIdle(queue_));
         return;
     }
-    RG_VK(vkWaitForFences(device_, 1, &fence, VK_TRUE, UINT64_MAX));
-    RG_VK(vkResetFences(device_, 1, &fence));
+    RG_VK(vk_.WaitForFences(device_, 1, &fence, VK_TRUE, UINT64_MAX));
+    RG_VK(vk_.ResetFences(device_, 1, &fence));
 }
 
 std::vector<std::string> Device::takeMessages() {

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "vulkan_functions.h"
+
 namespace rg {
 
 struct DeviceOptions {
@@ -21,6 +23,8 @@ struct DeviceOptions {
     bool echoMessages = true;  // print validation messages to stderr as they arrive
     std::vector<std::string> instanceExtensions;  // e.g. the window system's surface extensions
     bool swapchain = false;                       // enable VK_KHR_swapchain on the device
+    // Where the runtime's Vulkan entry points come from; null: the Vulkan loader's.
+    PFN_vkGetInstanceProcAddr getInstanceProcAddr = nullptr;
 };
 
 // An engine's own Vulkan objects, wrapped without taking ownership (plugin integration).
@@ -30,6 +34,10 @@ struct ExternalDevice {
     VkDevice device = VK_NULL_HANDLE;
     VkQueue queue = VK_NULL_HANDLE;
     uint32_t queueFamily = 0;
+    // The engine's entry points (null: the Vulkan loader's) and host allocator (null: Vulkan's),
+    // used for every call and every object the runtime makes on this device.
+    PFN_vkGetInstanceProcAddr getInstanceProcAddr = nullptr;
+    const VkAllocationCallbacks* allocator = nullptr;
 };
 
 // Every validation message of every Device in this process so far. It outlives the devices, so a
@@ -47,6 +55,10 @@ class Device {
     Device(const Device&) = delete;
     Device& operator=(const Device&) = delete;
 
+    // The entry points every Vulkan call of the runtime goes through.
+    const VulkanFunctions& vk() const { return vk_; }
+    // The host allocator every object of the runtime is made and destroyed with (null: Vulkan's).
+    const VkAllocationCallbacks* allocator() const { return allocator_; }
     VkInstance instance() const { return instance_; }
     VkPhysicalDevice physical() const { return physical_; }
     VkDevice device() const { return device_; }
@@ -80,9 +92,6 @@ class Device {
     void beginLabel(VkCommandBuffer cmd, const std::string& name) const;
     void endLabel(VkCommandBuffer cmd) const;
 
-    // Push descriptors (VK_KHR_push_descriptor): passes bind resources without descriptor pools.
-    PFN_vkCmdPushDescriptorSetKHR cmdPushDescriptorSet = nullptr;
-
     // Submits a recorded command buffer and waits for it: on `fence` (left reset for reuse), or on
     // the queue when there is none.
     void submitAndWait(VkCommandBuffer cmd, VkFence fence = VK_NULL_HANDLE) const;
@@ -100,11 +109,13 @@ class Device {
               const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
     void destroy();
     void loadProperties();
-    void loadFunctions();
+    void createOneShotPool();
     void createInstance(const DeviceOptions& options);
     void pickPhysicalDevice(const DeviceOptions& options);
     void createDevice(const DeviceOptions& options);
 
+    VulkanFunctions vk_;
+    const VkAllocationCallbacks* allocator_ = nullptr;
     VkInstance instance_ = VK_NULL_HANDLE;
     VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
     VkPhysicalDevice physical_ = VK_NULL_HANDLE;
@@ -128,9 +139,6 @@ class Device {
     bool debugUtils_ = false;
     bool extendedFormats_ = false;
     bool echo_ = true;
-    PFN_vkSetDebugUtilsObjectNameEXT setObjectName_ = nullptr;
-    PFN_vkCmdBeginDebugUtilsLabelEXT cmdBeginLabel_ = nullptr;
-    PFN_vkCmdEndDebugUtilsLabelEXT cmdEndLabel_ = nullptr;
     mutable std::mutex messagesMutex_;
     std::vector<std::string> messages_;
 };

@@ -6,7 +6,7 @@ VkFormatFeatureFlags2 VulkanDeviceCaps::optimalFeatures(VkFormat format) const {
     VkFormatProperties3 props3{VK_STRUCTURE_TYPE_FORMAT_PROPERTIES_3};
     VkFormatProperties2 props{VK_STRUCTURE_TYPE_FORMAT_PROPERTIES_2};
     props.pNext = &props3;
-    vkGetPhysicalDeviceFormatProperties2(device_.physical(), format, &props);
+    device_.vk().GetPhysicalDeviceFormatProperties2(device_.physical(), format, &props);
     return props3.optimalTilingFeatures;
 }
 
@@ -14,7 +14,7 @@ MemoryRequirements VulkanDeviceCaps::imageRequirements(const VkImageCreateInfo& 
     VkDeviceImageMemoryRequirements query{VK_STRUCTURE_TYPE_DEVICE_IMAGE_MEMORY_REQUIREMENTS};
     query.pCreateInfo = &info;
     VkMemoryRequirements2 req{VK_STRUCTURE_TYPE_MEMORY_REQUIREMENTS_2};
-    vkGetDeviceImageMemoryRequirements(device_.device(), &query, &req);
+    device_.vk().GetDeviceImageMemoryRequirements(device_.device(), &query, &req);
     return {req.memoryRequirements.size, req.memoryRequirements.alignment,
             req.memoryRequirements.memoryTypeBits};
 }
@@ -23,7 +23,7 @@ MemoryRequirements VulkanDeviceCaps::bufferRequirements(const VkBufferCreateInfo
     VkDeviceBufferMemoryRequirements query{VK_STRUCTURE_TYPE_DEVICE_BUFFER_MEMORY_REQUIREMENTS};
     query.pCreateInfo = &info;
     VkMemoryRequirements2 req{VK_STRUCTURE_TYPE_MEMORY_REQUIREMENTS_2};
-    vkGetDeviceBufferMemoryRequirements(device_.device(), &query, &req);
+    device_.vk().GetDeviceBufferMemoryRequirements(device_.device(), &query, &req);
     return {req.memoryRequirements.size, req.memoryRequirements.alignment,
             req.memoryRequirements.memoryTypeBits};
 }

@@ -36,7 +36,7 @@ VkDeviceMemory allocateAndBind(const Device& device, const VkMemoryRequirements&
         device.setName(memory, VK_OBJECT_TYPE_DEVICE_MEMORY, name + " memory");
         checkBind(device, bind(memory), call, req.size, type, what);
     } catch (...) {
-        vkFreeMemory(device.device(), memory, nullptr);
+        device.vk().FreeMemory(device.device(), memory, device.allocator());
         throw;
     }
     return memory;
@@ -75,9 +75,10 @@ VkDeviceMemory allocateDeviceMemory(const Device& device, VkDeviceSize bytes, ui
     info.allocationSize = bytes;
     info.memoryTypeIndex = memoryType;
     VkDeviceMemory memory = VK_NULL_HANDLE;
-    const VkResult r = detail::creationFails()
-                           ? VK_ERROR_OUT_OF_DEVICE_MEMORY
-                           : vkAllocateMemory(device.device(), &info, nullptr, &memory);
+    const VkResult r =
+        detail::creationFails()
+            ? VK_ERROR_OUT_OF_DEVICE_MEMORY
+            : device.vk().AllocateMemory(device.device(), &info, device.allocator(), &memory);
     if (r == VK_ERROR_OUT_OF_DEVICE_MEMORY || r == VK_ERROR_OUT_OF_HOST_MEMORY)
         outOfMemory(device, bytes, memoryType, what,
                     std::string(resultName(r)) + " from vkAllocateMemory");
@@ -111,17 +112,18 @@ BoundBuffer createBoundBuffer(const Device& device, const VkBufferCreateInfo& in
                               VkMemoryPropertyFlags properties, const std::string& name,
                               const std::string& what) {
     BoundBuffer b;
-    RG_VK_CREATE(vkCreateBuffer(device.device(), &info, nullptr, &b.buffer));
+    RG_VK_CREATE(device.vk().CreateBuffer(device.device(), &info, device.allocator(), &b.buffer));
     try {
         device.setName(b.buffer, VK_OBJECT_TYPE_BUFFER, name);
         VkMemoryRequirements req;
-        vkGetBufferMemoryRequirements(device.device(), b.buffer, &req);
+        device.vk().GetBufferMemoryRequirements(device.device(), b.buffer, &req);
         b.memory = allocateAndBind(
-            device, req, properties, name, what, "vkBindBufferMemory",
-            [&](VkDeviceMemory m) { return vkBindBufferMemory(device.device(), b.buffer, m, 0); });
+            device, req, properties, name, what, "vkBindBufferMemory", [&](VkDeviceMemory m) {
+                return device.vk().BindBufferMemory(device.device(), b.buffer, m, 0);
+            });
         b.bytes = req.size;
     } catch (...) {
-        vkDestroyBuffer(device.device(), b.buffer, nullptr);
+        device.vk().DestroyBuffer(device.device(), b.buffer, device.allocator());
         throw;
     }
     return b;
@@ -131,17 +133,18 @@ BoundImage createBoundImage(const Device& device, const VkImageCreateInfo& info,
                             VkMemoryPropertyFlags properties, const std::string& name,
                             const std::string& what) {
     BoundImage b;
-    RG_VK_CREATE(vkCreateImage(device.device(), &info, nullptr, &b.image));
+    RG_VK_CREATE(device.vk().CreateImage(device.device(), &info, device.allocator(), &b.image));
     try {
         device.setName(b.image, VK_OBJECT_TYPE_IMAGE, name);
         VkMemoryRequirements req;
-        vkGetImageMemoryRequirements(device.device(), b.image, &req);
+        device.vk().GetImageMemoryRequirements(device.device(), b.image, &req);
         b.memory = allocateAndBind(
-            device, req, properties, name, what, "vkBindImageMemory",
-            [&](VkDeviceMemory m) { return vkBindImageMemory(device.device(), b.image, m, 0); });
+            device, req, properties, name, what, "vkBindImageMemory", [&](VkDeviceMemory m) {
+                return device.vk().BindImageMemory(device.device(), b.image, m, 0);
+            });
         b.bytes = req.size;
     } catch (...) {
-        vkDestroyImage(device.device(), b.image, nullptr);
+        device.vk().DestroyImage(device.device(), b.image, device.allocator());
         throw;
     }
     return b;

@@ -29,9 +29,9 @@ VkQueryPool createQueryPool(const Device& device, VkQueryType type, uint32_t cou
     info.queryType = type;
     info.queryCount = count;
     VkQueryPool pool = VK_NULL_HANDLE;
-    RG_VK_CREATE(vkCreateQueryPool(device.device(), &info, nullptr, &pool));
+    RG_VK_CREATE(device.vk().CreateQueryPool(device.device(), &info, device.allocator(), &pool));
     device.setName(pool, VK_OBJECT_TYPE_QUERY_POOL, name);
-    vkResetQueryPool(device.device(), pool, 0, count);
+    device.vk().ResetQueryPool(device.device(), pool, 0, count);
     return pool;
 }
 
@@ -86,16 +86,16 @@ GraphExecutor::GraphExecutor(const Device& device, RenderGraph& graph, CompiledG
         VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
         pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
         pool.queueFamilyIndex = device_.queueFamily();
-        RG_VK_CREATE(vkCreateCommandPool(dev, &pool, nullptr, &pool_));
+        RG_VK_CREATE(device_.vk().CreateCommandPool(dev, &pool, device_.allocator(), &pool_));
         device_.setName(pool_, VK_OBJECT_TYPE_COMMAND_POOL, "render graph command pool");
         VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
         alloc.commandPool = pool_;
         alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
         alloc.commandBufferCount = 1;
-        RG_VK_CREATE(vkAllocateCommandBuffers(dev, &alloc, &cmd_));
+        RG_VK_CREATE(device_.vk().AllocateCommandBuffers(dev, &alloc, &cmd_));
         device_.setName(cmd_, VK_OBJECT_TYPE_COMMAND_BUFFER, "render graph frame");
         VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-        RG_VK_CREATE(vkCreateFence(dev, &fence, nullptr, &fence_));
+        RG_VK_CREATE(device_.vk().CreateFence(dev, &fence, device_.allocator(), &fence_));
         device_.setName(fence_, VK_OBJECT_TYPE_FENCE, "render graph frame fence");
     } catch (...) {
         destroy();
@@ -109,7 +109,7 @@ GraphExecutor::~GraphExecutor() {
 
 void GraphExecutor::destroyViews(ImageObjects& o) {
     for (VkImageView v : {o.full, o.depth, o.stencil})
-        if (v) vkDestroyImageView(device_.device(), v, nullptr);
+        if (v) device_.vk().DestroyImageView(device_.device(), v, device_.allocator());
     o.full = o.depth = o.stencil = VK_NULL_HANDLE;
 }
 
@@ -120,7 +120,8 @@ void GraphExecutor::destroy() {
     for (uint32_t id = 0; id < images_.size(); ++id) {
         if (graph_.resource(id).imported) continue;
         destroyViews(images_[id]);
-        if (images_[id].image) vkDestroyImage(dev, images_[id].image, nullptr);
+        if (images_[id].image)
+            device_.vk().DestroyImage(dev, images_[id].image, device_.allocator());
         images_[id].image = VK_NULL_HANDLE;
     }
     for (auto& slot : importViews_) {
@@ -129,17 +130,17 @@ void GraphExecutor::destroy() {
     }
     for (uint32_t id = 0; id < buffers_.size(); ++id)
         if (buffers_[id] && !graph_.resource(id).imported)
-            vkDestroyBuffer(dev, buffers_[id], nullptr);
+            device_.vk().DestroyBuffer(dev, buffers_[id], device_.allocator());
     buffers_.clear();
     for (size_t b = 0; b < blocks_.size() && !heap_; ++b) {
         detail::uncountDeviceMemory(std::max<VkDeviceSize>(compiled_.blocks[b].size, 1));
-        vkFreeMemory(dev, blocks_[b], nullptr);
+        device_.vk().FreeMemory(dev, blocks_[b], device_.allocator());
     }
     blocks_.clear();
-    if (fence_) vkDestroyFence(dev, fence_, nullptr);
-    if (pool_) vkDestroyCommandPool(dev, pool_, nullptr);
-    if (queries_) vkDestroyQueryPool(dev, queries_, nullptr);
-    if (samples_) vkDestroyQueryPool(dev, samples_, nullptr);
+    if (fence_) device_.vk().DestroyFence(dev, fence_, device_.allocator());
+    if (pool_) device_.vk().DestroyCommandPool(dev, pool_, device_.allocator());
+    if (queries_) device_.vk().DestroyQueryPool(dev, queries_, device_.allocator());
+    if (samples_) device_.vk().DestroyQueryPool(dev, samples_, device_.allocator());
     fence_ = VK_NULL_HANDLE;
     pool_ = VK_NULL_HANDLE;
     queries_ = VK_NULL_HANDLE;
@@ -218,16 +219,16 @@ void GraphExecutor::createResource(uint32_t id) {
         info.size = r.bufferDesc.size;
         info.usage = plan.bufferUsage;
         info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-        RG_VK_CREATE(vkCreateBuffer(dev, &info, nullptr, &buffers_[id]));
+        RG_VK_CREATE(device_.vk().CreateBuffer(dev, &info, device_.allocator(), &buffers_[id]));
         device_.setName(buffers_[id], VK_OBJECT_TYPE_BUFFER, r.name);
-        vkGetBufferMemoryRequirements(dev, buffers_[id], &req);
+        device_.vk().GetBufferMemoryRequirements(dev, buffers_[id], &req);
     } else {
         const VkImageCreateInfo info = transientImageInfo(r, plan);
         checkImageLimits(device_, {info.extent.width, info.extent.height}, info.arrayLayers,
                          "render graph resource '" + r.name + "'");
-        RG_VK_CREATE(vkCreateImage(dev, &info, nullptr, &images_[id].image));
+        RG_VK_CREATE(device_.vk().CreateImage(dev, &info, device_.allocator(), &images_[id].image));
         device_.setName(images_[id].image, VK_OBJECT_TYPE_IMAGE, r.name);
-        vkGetImageMemoryRequirements(dev, images_[id].image, &req);
+        device_.vk().GetImageMemoryRequirements(dev, images_[id].image, &req);
     }
     // The plan used vkGetDevice*MemoryRequirements for the same create info; a driver that answers
     // differently for the real object would break the placement.
@@ -236,9 +237,10 @@ void GraphExecutor::createResource(uint32_t id) {
         throw VulkanError("the driver's memory requirements differ from the compiled plan");
     // The message, and the scan of the block it names, only for a bind that failed: this runs for
     // every resource of every graph built.
-    const VkResult bound =
-        r.buffer ? vkBindBufferMemory(dev, buffers_[id], blocks_[plan.block], plan.offset)
-                 : vkBindImageMemory(dev, images_[id].image, blocks_[plan.block], plan.offset);
+    const VkResult bound = r.buffer ? device_.vk().BindBufferMemory(
+                                          dev, buffers_[id], blocks_[plan.block], plan.offset)
+                                    : device_.vk().BindImageMemory(
+                                          dev, images_[id].image, blocks_[plan.block], plan.offset);
     if (bound != VK_SUCCESS)
         checkBind(device_, bound, r.buffer ? "vkBindBufferMemory" : "vkBindImageMemory",
                   compiled_.blocks[plan.block].size, plan.memoryType,
@@ -261,7 +263,8 @@ GraphExecutor::ImageObjects GraphExecutor::makeViews(uint32_t resource, VkImage 
     auto make = [&](VkImageAspectFlags aspect, const char* suffix) {
         info.subresourceRange.aspectMask = aspect;
         VkImageView v;
-        RG_VK_CREATE(vkCreateImageView(device_.device(), &info, nullptr, &v));
+        RG_VK_CREATE(
+            device_.vk().CreateImageView(device_.device(), &info, device_.allocator(), &v));
         device_.setName(v, VK_OBJECT_TYPE_IMAGE_VIEW, r.name + suffix);
         return v;
     };
@@ -273,7 +276,7 @@ GraphExecutor::ImageObjects GraphExecutor::makeViews(uint32_t resource, VkImage 
         }
     } catch (...) {
         for (VkImageView v : {o.full, o.depth, o.stencil})
-            if (v) vkDestroyImageView(device_.device(), v, nullptr);
+            if (v) device_.vk().DestroyImageView(device_.device(), v, device_.allocator());
         throw;
     }
     return o;
@@ -351,7 +354,7 @@ void GraphExecutor::recordBarriers(VkCommandBuffer cmd, const std::vector<Barrie
     dep.pImageMemoryBarriers = imageBarriers.data();
     dep.bufferMemoryBarrierCount = static_cast<uint32_t>(bufferBarriers.size());
     dep.pBufferMemoryBarriers = bufferBarriers.data();
-    vkCmdPipelineBarrier2(cmd, &dep);
+    device_.vk().CmdPipelineBarrier2(cmd, &dep);
 }
 
 // Fills the transients this pass uses first with a signalling pattern, after whatever last used
@@ -377,7 +380,7 @@ std::vector<BarrierPlan> GraphExecutor::poisonFirstUses(VkCommandBuffer cmd,
     constexpr uint32_t kNaN = 0x7fc00000u;
     for (const BarrierPlan& b : toFill) {
         if (b.buffer) {
-            vkCmdFillBuffer(cmd, buffers_[b.resource], 0, VK_WHOLE_SIZE, kNaN);
+            device_.vk().CmdFillBuffer(cmd, buffers_[b.resource], 0, VK_WHOLE_SIZE, kNaN);
             continue;
         }
         const ResourceDecl& r = graph_.resource(b.resource);
@@ -386,8 +389,9 @@ std::vector<BarrierPlan> GraphExecutor::poisonFirstUses(VkCommandBuffer cmd,
         if (isDepthStencil(r.image.format)) {
             // Depth must stay in [0, 1]; an odd depth and stencil stand in for NaN.
             const VkClearDepthStencilValue v{0.5f, 0xA5u};
-            vkCmdClearDepthStencilImage(cmd, images_[b.resource].image,
-                                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &v, 1, &range);
+            device_.vk().CmdClearDepthStencilImage(cmd, images_[b.resource].image,
+                                                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &v, 1,
+                                                   &range);
         } else {
             VkClearColorValue v;
             if (isIntegerFormat(r.image.format)) {
@@ -395,8 +399,8 @@ std::vector<BarrierPlan> GraphExecutor::poisonFirstUses(VkCommandBuffer cmd,
             } else {
                 for (float& c : v.float32) c = std::bit_cast<float>(kNaN);
             }
-            vkCmdClearColorImage(cmd, images_[b.resource].image,
-                                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &v, 1, &range);
+            device_.vk().CmdClearColorImage(cmd, images_[b.resource].image,
+                                            VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &v, 1, &range);
         }
     }
     return patched;
@@ -407,8 +411,8 @@ void GraphExecutor::recordPass(VkCommandBuffer cmd, uint32_t position,
     const PassPlan& plan = compiled_.passes[position];
     PassDecl& pass = graph_.passes()[plan.pass];
     device_.beginLabel(cmd, pass.name);
-    vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, queries_,
-                         firstQuery_ + 2 * position);
+    device_.vk().CmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, queries_,
+                                    firstQuery_ + 2 * position);
     std::vector<BarrierPlan> barriers = plan.barriers;
     // Another graph used this memory in the frame before: a first use waits on all it did.
     if (before)
@@ -451,9 +455,9 @@ void GraphExecutor::recordPass(VkCommandBuffer cmd, uint32_t position,
         }
         const int32_t counted = countIndex_[position];
         if (counted >= 0)
-            vkCmdBeginQuery(cmd, samples_,
-                            slot_ * countedPerFrame_ + static_cast<uint32_t>(counted), 0);
-        vkCmdBeginRendering(cmd, &info);
+            device_.vk().CmdBeginQuery(
+                cmd, samples_, slot_ * countedPerFrame_ + static_cast<uint32_t>(counted), 0);
+        device_.vk().CmdBeginRendering(cmd, &info);
         VkViewport viewport{0.0f,
                             0.0f,
                             static_cast<float>(plan.renderExtent.width),
@@ -461,17 +465,18 @@ void GraphExecutor::recordPass(VkCommandBuffer cmd, uint32_t position,
                             0.0f,
                             1.0f};
         VkRect2D scissor{{0, 0}, plan.renderExtent};
-        vkCmdSetViewport(cmd, 0, 1, &viewport);
-        vkCmdSetScissor(cmd, 0, 1, &scissor);
+        device_.vk().CmdSetViewport(cmd, 0, 1, &viewport);
+        device_.vk().CmdSetScissor(cmd, 0, 1, &scissor);
         if (pass.execute) pass.execute(ctx);
-        vkCmdEndRendering(cmd);
+        device_.vk().CmdEndRendering(cmd);
         if (counted >= 0)
-            vkCmdEndQuery(cmd, samples_, slot_ * countedPerFrame_ + static_cast<uint32_t>(counted));
+            device_.vk().CmdEndQuery(cmd, samples_,
+                                     slot_ * countedPerFrame_ + static_cast<uint32_t>(counted));
     } else if (pass.execute) {
         pass.execute(ctx);
     }
-    vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, queries_,
-                         firstQuery_ + 2 * position + 1);
+    device_.vk().CmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, queries_,
+                                    firstQuery_ + 2 * position + 1);
     device_.endLabel(cmd);
 }
 
@@ -487,14 +492,15 @@ uint64_t GraphExecutor::record(VkCommandBuffer cmd, uint64_t frame, const FrameD
     slot_ = slot;
     // Reset on the host, so the slot reads as not finished until this frame has run; and in the
     // command buffer too, so that it may be submitted again.
-    vkResetQueryPool(device_.device(), queries_, firstQuery_, queriesPerFrame_);
+    device_.vk().ResetQueryPool(device_.device(), queries_, firstQuery_, queriesPerFrame_);
     slotFrames_[slot] = frame;
     lastFrame_ = frame;
     const uint32_t queryCount = 2 * static_cast<uint32_t>(compiled_.passes.size());
-    if (queryCount) vkCmdResetQueryPool(cmd, queries_, firstQuery_, queryCount);
+    if (queryCount) device_.vk().CmdResetQueryPool(cmd, queries_, firstQuery_, queryCount);
     if (countedPerFrame_) {
-        vkResetQueryPool(device_.device(), samples_, slot * countedPerFrame_, countedPerFrame_);
-        vkCmdResetQueryPool(cmd, samples_, slot * countedPerFrame_, countedPerFrame_);
+        device_.vk().ResetQueryPool(device_.device(), samples_, slot * countedPerFrame_,
+                                    countedPerFrame_);
+        device_.vk().CmdResetQueryPool(cmd, samples_, slot * countedPerFrame_, countedPerFrame_);
     }
     device_.beginLabel(cmd, "render graph");
     // Import stages and access may change per frame (layouts may not), so the barriers that
@@ -548,30 +554,31 @@ void GraphExecutor::rehearse(const FrameData& data) {
         lastFrame_ = lastFrame;
         slotFrames_ = slotFrames;
     };
-    RG_VK(vkResetCommandBuffer(cmd_, 0));
+    RG_VK(device_.vk().ResetCommandBuffer(cmd_, 0));
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    RG_VK(vkBeginCommandBuffer(cmd_, &begin));
+    RG_VK(device_.vk().BeginCommandBuffer(cmd_, &begin));
     try {
         record(cmd_, 0, data);
     } catch (...) {
-        vkResetCommandBuffer(cmd_, 0);  // possibly inside a rendering scope: not ended, dropped
+        device_.vk().ResetCommandBuffer(
+            cmd_, 0);  // possibly inside a rendering scope: not ended, dropped
         restore();
         throw;
     }
-    RG_VK(vkEndCommandBuffer(cmd_));
-    RG_VK(vkResetCommandBuffer(cmd_, 0));
+    RG_VK(device_.vk().EndCommandBuffer(cmd_));
+    RG_VK(device_.vk().ResetCommandBuffer(cmd_, 0));
     restore();
 }
 
 FrameTimings GraphExecutor::run(uint64_t frame, const FrameData& data,
                                 const TransientScope* before) {
-    RG_VK(vkResetCommandBuffer(cmd_, 0));
+    RG_VK(device_.vk().ResetCommandBuffer(cmd_, 0));
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    RG_VK(vkBeginCommandBuffer(cmd_, &begin));
+    RG_VK(device_.vk().BeginCommandBuffer(cmd_, &begin));
     frame = record(cmd_, frame, data, before);
-    RG_VK(vkEndCommandBuffer(cmd_));
+    RG_VK(device_.vk().EndCommandBuffer(cmd_));
     device_.submitAndWait(cmd_, fence_);
     return readTimings(frame);
 }
@@ -589,7 +596,7 @@ FrameTimings GraphExecutor::readTimings(uint64_t frame) {
     // Value and availability per query; never waits (a frame recorded but not submitted would
     // never become available).
     std::vector<uint64_t> results(4 * n);
-    const VkResult r = vkGetQueryPoolResults(
+    const VkResult r = device_.vk().GetQueryPoolResults(
         device_.device(), queries_, slot * queriesPerFrame_, 2 * n,
         results.size() * sizeof(uint64_t), results.data(), 2 * sizeof(uint64_t),
         VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WITH_AVAILABILITY_BIT);
@@ -605,7 +612,7 @@ FrameTimings GraphExecutor::readTimings(uint64_t frame) {
     const double toMs = device_.timestampPeriodNs() * 1e-6;
     std::vector<uint64_t> counts(2 * countedPerFrame_);
     if (countedPerFrame_) {
-        const VkResult c = vkGetQueryPoolResults(
+        const VkResult c = device_.vk().GetQueryPoolResults(
             device_.device(), samples_, slot * countedPerFrame_, countedPerFrame_,
             counts.size() * sizeof(uint64_t), counts.data(), 2 * sizeof(uint64_t),
             VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WITH_AVAILABILITY_BIT);

@@ -8,7 +8,7 @@ namespace rg {
 
 HostBuffer::HostBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFlags usage,
                        const std::string& name)
-    : device_(device.device()), size_(size), usage_(usage) {
+    : device_(device), size_(size), usage_(usage) {
     VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
     info.size = size;
     info.usage = usage;
@@ -21,19 +21,19 @@ HostBuffer::HostBuffer(const Device& device, VkDeviceSize size, VkBufferUsageFla
     memoryBytes_ = bound.bytes;
     detail::countDeviceMemory(memoryBytes_);
     try {
-        RG_VK(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
+        RG_VK(device_.vk().MapMemory(device_.device(), memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
     } catch (...) {
         detail::uncountDeviceMemory(memoryBytes_);
-        vkFreeMemory(device_, memory_, nullptr);
-        vkDestroyBuffer(device_, buffer_, nullptr);
+        device_.vk().FreeMemory(device_.device(), memory_, device_.allocator());
+        device_.vk().DestroyBuffer(device_.device(), buffer_, device_.allocator());
         throw;
     }
 }
 
 HostBuffer::~HostBuffer() {
     detail::uncountDeviceMemory(memoryBytes_);
-    if (memory_) vkFreeMemory(device_, memory_, nullptr);
-    if (buffer_) vkDestroyBuffer(device_, buffer_, nullptr);
+    if (memory_) device_.vk().FreeMemory(device_.device(), memory_, device_.allocator());
+    if (buffer_) device_.vk().DestroyBuffer(device_.device(), buffer_, device_.allocator());
 }
 
 ImportedBuffer HostBuffer::asReadback() const {

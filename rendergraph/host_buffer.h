@@ -26,7 +26,7 @@ class HostBuffer {
     ImportedBuffer asReadback() const;
 
   private:
-    VkDevice device_;
+    const Device& device_;
     VkBuffer buffer_ = VK_NULL_HANDLE;
     VkDeviceMemory memory_ = VK_NULL_HANDLE;
     VkDeviceSize memoryBytes_ = 0;  // counted by deviceMemoryInUse()

@@ -2,12 +2,13 @@
 
 namespace rg {
 
-void recordReadback(VkCommandBuffer cmd, VkImage image, VkImageLayout layout, VkExtent2D extent,
-                    VkBuffer buffer, VkImageAspectFlags aspect, uint32_t layers) {
+void recordReadback(const Device& device, VkCommandBuffer cmd, VkImage image, VkImageLayout layout,
+                    VkExtent2D extent, VkBuffer buffer, VkImageAspectFlags aspect,
+                    uint32_t layers) {
     VkBufferImageCopy region{};
     region.imageSubresource = {aspect, 0, 0, layers};
     region.imageExtent = {extent.width, extent.height, 1};
-    vkCmdCopyImageToBuffer(cmd, image, layout, buffer, 1, &region);
+    device.vk().CmdCopyImageToBuffer(cmd, image, layout, buffer, 1, &region);
     VkMemoryBarrier2 toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
     toHost.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
     toHost.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
@@ -16,7 +17,7 @@ void recordReadback(VkCommandBuffer cmd, VkImage image, VkImageLayout layout, Vk
     VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
     dep.memoryBarrierCount = 1;
     dep.pMemoryBarriers = &toHost;
-    vkCmdPipelineBarrier2(cmd, &dep);
+    device.vk().CmdPipelineBarrier2(cmd, &dep);
 }
 
 }  // namespace rg

@@ -3,14 +3,16 @@
 // a host-visible buffer and the barrier that makes it visible to the host.
 #include <vulkan/vulkan.h>
 
+#include "device.h"
+
 namespace rg {
 
 // Records the copy of mip 0, layers 0 .. `layers` - 1 of `aspect`, of `image` (in `layout`, which
 // allows transfer reads) into `buffer` from offset 0, tightly packed, and then the barrier that
 // makes the copy visible to host reads: once the command buffer's submission has finished, the
 // host reads the texels.
-void recordReadback(VkCommandBuffer cmd, VkImage image, VkImageLayout layout, VkExtent2D extent,
-                    VkBuffer buffer, VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT,
-                    uint32_t layers = 1);
+void recordReadback(const Device& device, VkCommandBuffer cmd, VkImage image, VkImageLayout layout,
+                    VkExtent2D extent, VkBuffer buffer,
+                    VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT, uint32_t layers = 1);
 
 }  // namespace rg

@@ -33,9 +33,9 @@ OwnedImage::OwnedImage(const rg::Device& device, VkFormat format, VkExtent2D ext
 }
 
 OwnedImage::~OwnedImage() {
-    vkDestroyImage(device_.device(), image_, nullptr);
+    device_.vk().DestroyImage(device_.device(), image_, device_.allocator());
     detail::uncountDeviceMemory(memoryBytes_);
-    vkFreeMemory(device_.device(), memory_, nullptr);
+    device_.vk().FreeMemory(device_.device(), memory_, device_.allocator());
 }
 
 }  // namespace rg

@@ -28,6 +28,8 @@ class PassContext {
 
     VkCommandBuffer cmd() const { return cmd_; }
     const Device& device() const;
+    // The entry points a pass records with (the device's).
+    const VulkanFunctions& vk() const { return device().vk(); }
     const std::string& passName() const;
 
     VkImage image(ImageRef ref) const;

@@ -9,12 +9,12 @@
 namespace rg {
 namespace {
 
-VkShaderModule makeModule(VkDevice dev, ShaderCode code) {
+VkShaderModule makeModule(const Device& device, ShaderCode code) {
     VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
     info.codeSize = code.bytes;
     info.pCode = code.words;
     VkShaderModule m;
-    RG_VK_CREATE(vkCreateShaderModule(dev, &info, nullptr, &m));
+    RG_VK_CREATE(device.vk().CreateShaderModule(device.device(), &info, device.allocator(), &m));
     return m;
 }
 
@@ -45,7 +45,8 @@ void makeLayout(const Device& device, const std::string& name, const std::vector
     set.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
     set.bindingCount = static_cast<uint32_t>(b.size());
     set.pBindings = b.data();
-    RG_VK_CREATE(vkCreateDescriptorSetLayout(device.device(), &set, nullptr, &setLayout));
+    RG_VK_CREATE(device.vk().CreateDescriptorSetLayout(device.device(), &set, device.allocator(),
+                                                       &setLayout));
     device.setName(setLayout, VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT, name + " set layout");
     VkPushConstantRange range{pushStages, 0, pushBytes};
     VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
@@ -53,7 +54,8 @@ void makeLayout(const Device& device, const std::string& name, const std::vector
     info.pSetLayouts = &setLayout;
     info.pushConstantRangeCount = pushBytes ? 1 : 0;
     info.pPushConstantRanges = &range;
-    RG_VK_CREATE(vkCreatePipelineLayout(device.device(), &info, nullptr, &layout));
+    RG_VK_CREATE(
+        device.vk().CreatePipelineLayout(device.device(), &info, device.allocator(), &layout));
     device.setName(layout, VK_OBJECT_TYPE_PIPELINE_LAYOUT, name + " layout");
 }
 
@@ -76,7 +78,7 @@ Pipeline::Pipeline(Pipeline&& o) noexcept {
 Pipeline& Pipeline::operator=(Pipeline&& o) noexcept {
     if (this != &o) {
         reset();
-        device_ = std::exchange(o.device_, VK_NULL_HANDLE);
+        device_ = std::exchange(o.device_, nullptr);
         pipeline_ = std::exchange(o.pipeline_, VK_NULL_HANDLE);
         layout_ = std::exchange(o.layout_, VK_NULL_HANDLE);
         setLayout_ = std::exchange(o.setLayout_, VK_NULL_HANDLE);
@@ -88,13 +90,17 @@ Pipeline& Pipeline::operator=(Pipeline&& o) noexcept {
 
 void Pipeline::reset() {
     if (!device_) return;
-    if (pipeline_) vkDestroyPipeline(device_, pipeline_, nullptr);
-    if (layout_) vkDestroyPipelineLayout(device_, layout_, nullptr);
-    if (setLayout_) vkDestroyDescriptorSetLayout(device_, setLayout_, nullptr);
+    if (pipeline_)
+        device_->vk().DestroyPipeline(device_->device(), pipeline_, device_->allocator());
+    if (layout_)
+        device_->vk().DestroyPipelineLayout(device_->device(), layout_, device_->allocator());
+    if (setLayout_)
+        device_->vk().DestroyDescriptorSetLayout(device_->device(), setLayout_,
+                                                 device_->allocator());
     pipeline_ = VK_NULL_HANDLE;
     layout_ = VK_NULL_HANDLE;
     setLayout_ = VK_NULL_HANDLE;
-    device_ = VK_NULL_HANDLE;
+    device_ = nullptr;
 }
 
 Pipeline Pipeline::compute(const Device& device, const std::string& name, ShaderCode code,
@@ -120,11 +126,11 @@ Pipeline Pipeline::makeCompute(const Device& device, const std::string& name, Sh
                                const std::vector<Binding>& bindings, uint32_t pushConstantBytes,
                                const Specialization& specialization) {
     Pipeline p;
-    p.device_ = device.device();
+    p.device_ = &device;
     p.bindPoint_ = VK_PIPELINE_BIND_POINT_COMPUTE;
     p.pushStages_ = VK_SHADER_STAGE_COMPUTE_BIT;
     makeLayout(device, name, bindings, pushConstantBytes, p.pushStages_, p.setLayout_, p.layout_);
-    VkShaderModule module = makeModule(device.device(), code);
+    VkShaderModule module = makeModule(device, code);
     SpecData spec(specialization);
     VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
@@ -133,11 +139,11 @@ Pipeline Pipeline::makeCompute(const Device& device, const std::string& name, Sh
     info.stage.pName = "main";
     info.stage.pSpecializationInfo = spec.get();
     info.layout = p.layout_;
-    const VkResult r = detail::creationFails()
-                           ? VK_ERROR_OUT_OF_DEVICE_MEMORY
-                           : vkCreateComputePipelines(device.device(), VK_NULL_HANDLE, 1, &info,
-                                                      nullptr, &p.pipeline_);
-    vkDestroyShaderModule(device.device(), module, nullptr);
+    const VkResult r = detail::creationFails() ? VK_ERROR_OUT_OF_DEVICE_MEMORY
+                                               : device.vk().CreateComputePipelines(
+                                                     device.device(), VK_NULL_HANDLE, 1, &info,
+                                                     device.allocator(), &p.pipeline_);
+    device.vk().DestroyShaderModule(device.device(), module, device.allocator());
     check(r, "vkCreateComputePipelines");
     device.setName(p.pipeline_, VK_OBJECT_TYPE_PIPELINE, name);
     return p;
@@ -146,17 +152,17 @@ Pipeline Pipeline::makeCompute(const Device& device, const std::string& name, Sh
 Pipeline Pipeline::makeGraphics(const Device& device, const std::string& name,
                                 const GraphicsPipelineDesc& d) {
     Pipeline p;
-    p.device_ = device.device();
+    p.device_ = &device;
     p.bindPoint_ = VK_PIPELINE_BIND_POINT_GRAPHICS;
     p.pushStages_ = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
     makeLayout(device, name, d.bindings, d.pushConstantBytes, p.pushStages_, p.setLayout_,
                p.layout_);
-    VkShaderModule vs = makeModule(device.device(), d.vertex);
+    VkShaderModule vs = makeModule(device, d.vertex);
     VkShaderModule fs = VK_NULL_HANDLE;
     try {
-        fs = makeModule(device.device(), d.fragment);
+        fs = makeModule(device, d.fragment);
     } catch (...) {
-        vkDestroyShaderModule(device.device(), vs, nullptr);
+        device.vk().DestroyShaderModule(device.device(), vs, device.allocator());
         throw;
     }
     SpecData spec(d.specialization);
@@ -250,12 +256,12 @@ Pipeline Pipeline::makeGraphics(const Device& device, const std::string& name,
     info.pColorBlendState = &blend;
     info.pDynamicState = &dyn;
     info.layout = p.layout_;
-    const VkResult r = detail::creationFails()
-                           ? VK_ERROR_OUT_OF_DEVICE_MEMORY
-                           : vkCreateGraphicsPipelines(device.device(), VK_NULL_HANDLE, 1, &info,
-                                                       nullptr, &p.pipeline_);
-    vkDestroyShaderModule(device.device(), vs, nullptr);
-    vkDestroyShaderModule(device.device(), fs, nullptr);
+    const VkResult r = detail::creationFails() ? VK_ERROR_OUT_OF_DEVICE_MEMORY
+                                               : device.vk().CreateGraphicsPipelines(
+                                                     device.device(), VK_NULL_HANDLE, 1, &info,
+                                                     device.allocator(), &p.pipeline_);
+    device.vk().DestroyShaderModule(device.device(), vs, device.allocator());
+    device.vk().DestroyShaderModule(device.device(), fs, device.allocator());
     check(r, "vkCreateGraphicsPipelines");
     device.setName(p.pipeline_, VK_OBJECT_TYPE_PIPELINE, name);
     return p;
@@ -303,35 +309,38 @@ void DescriptorPush::push(const Device& device, VkCommandBuffer cmd, const Pipel
             w.pImageInfo = &e.image;
         writes.push_back(w);
     }
-    device.cmdPushDescriptorSet(cmd, pipeline.bindPoint(), pipeline.layout(), 0,
-                                static_cast<uint32_t>(writes.size()), writes.data());
+    device.vk().CmdPushDescriptorSetKHR(cmd, pipeline.bindPoint(), pipeline.layout(), 0,
+                                        static_cast<uint32_t>(writes.size()), writes.data());
     entries_.clear();
 }
 
-Samplers::Samplers(const Device& device) : device_(device.device()) {
+Samplers::Samplers(const Device& device) : device_(&device) {
     VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
     info.addressModeU = info.addressModeV = info.addressModeW =
         VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     info.maxLod = VK_LOD_CLAMP_NONE;
     info.magFilter = info.minFilter = VK_FILTER_NEAREST;
     info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-    RG_VK_CREATE(vkCreateSampler(device_, &info, nullptr, &nearest_));
+    RG_VK_CREATE(
+        device_->vk().CreateSampler(device_->device(), &info, device_->allocator(), &nearest_));
     device.setName(nearest_, VK_OBJECT_TYPE_SAMPLER, "nearest clamp sampler");
     info.magFilter = info.minFilter = VK_FILTER_LINEAR;
     info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
     try {
-        RG_VK_CREATE(vkCreateSampler(device_, &info, nullptr, &linear_));
+        RG_VK_CREATE(
+            device_->vk().CreateSampler(device_->device(), &info, device_->allocator(), &linear_));
     } catch (...) {
-        vkDestroySampler(device_, nearest_, nullptr);
+        device_->vk().DestroySampler(device_->device(), nearest_, device_->allocator());
         throw;
     }
     device.setName(linear_, VK_OBJECT_TYPE_SAMPLER, "linear clamp sampler");
     info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
     try {
-        RG_VK_CREATE(vkCreateSampler(device_, &info, nullptr, &linearRepeat_));
+        RG_VK_CREATE(device_->vk().CreateSampler(device_->device(), &info, device_->allocator(),
+                                                 &linearRepeat_));
     } catch (...) {
-        vkDestroySampler(device_, nearest_, nullptr);
-        vkDestroySampler(device_, linear_, nullptr);
+        device_->vk().DestroySampler(device_->device(), nearest_, device_->allocator());
+        device_->vk().DestroySampler(device_->device(), linear_, device_->allocator());
         throw;
     }
     device.setName(linearRepeat_, VK_OBJECT_TYPE_SAMPLER, "linear repeat sampler");
@@ -339,9 +348,9 @@ Samplers::Samplers(const Device& device) : device_(device.device()) {
 
 Samplers::~Samplers() {
     if (!device_) return;
-    vkDestroySampler(device_, nearest_, nullptr);
-    vkDestroySampler(device_, linear_, nullptr);
-    vkDestroySampler(device_, linearRepeat_, nullptr);
+    device_->vk().DestroySampler(device_->device(), nearest_, device_->allocator());
+    device_->vk().DestroySampler(device_->device(), linear_, device_->allocator());
+    device_->vk().DestroySampler(device_->device(), linearRepeat_, device_->allocator());
 }
 
 }  // namespace rg

@@ -88,10 +88,12 @@ class Pipeline {
     VkPipelineBindPoint bindPoint() const { return bindPoint_; }
     VkShaderStageFlags pushStages() const { return pushStages_; }
 
-    void bind(VkCommandBuffer cmd) const { vkCmdBindPipeline(cmd, bindPoint_, pipeline_); }
+    void bind(VkCommandBuffer cmd) const {
+        device_->vk().CmdBindPipeline(cmd, bindPoint_, pipeline_);
+    }
     template <typename T>
     void push(VkCommandBuffer cmd, const T& constants) const {
-        vkCmdPushConstants(cmd, layout_, pushStages_, 0, sizeof(T), &constants);
+        device_->vk().CmdPushConstants(cmd, layout_, pushStages_, 0, sizeof(T), &constants);
     }
 
   private:
@@ -101,7 +103,7 @@ class Pipeline {
     static Pipeline makeGraphics(const Device& device, const std::string& name,
                                  const GraphicsPipelineDesc& desc);
     void reset();
-    VkDevice device_ = VK_NULL_HANDLE;
+    const Device* device_ = nullptr;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
@@ -147,7 +149,7 @@ class Samplers {
     VkSampler linearRepeat() const { return linearRepeat_; }
 
   private:
-    VkDevice device_ = VK_NULL_HANDLE;
+    const Device* device_ = nullptr;
     VkSampler nearest_ = VK_NULL_HANDLE;
     VkSampler linear_ = VK_NULL_HANDLE;
     VkSampler linearRepeat_ = VK_NULL_HANDLE;

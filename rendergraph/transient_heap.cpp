@@ -13,7 +13,7 @@ TransientHeap::TransientHeap(const Device& device, std::string name)
 TransientHeap::~TransientHeap() {
     for (const Block& b : blocks_) {
         detail::uncountDeviceMemory(b.size);
-        vkFreeMemory(device_.device(), b.memory, nullptr);
+        device_.vk().FreeMemory(device_.device(), b.memory, device_.allocator());
     }
 }
 
@@ -41,7 +41,7 @@ void TransientHeap::reserve(const std::vector<MemoryBlockPlan>& plans, RetireLis
     } catch (...) {
         for (const Block& b : grown) {
             detail::uncountDeviceMemory(b.size);
-            vkFreeMemory(device_.device(), b.memory, nullptr);
+            device_.vk().FreeMemory(device_.device(), b.memory, device_.allocator());
         }
         throw;
     }
@@ -53,10 +53,9 @@ void TransientHeap::reserve(const std::vector<MemoryBlockPlan>& plans, RetireLis
             blocks_.push_back(b);
             continue;
         }
-        const VkDevice device = device_.device();
-        retired.retire(lastUse, [device, old = *old] {
+        retired.retire(lastUse, [&device = device_, old = *old] {
             detail::uncountDeviceMemory(old.size);
-            vkFreeMemory(device, old.memory, nullptr);
+            device.vk().FreeMemory(device.device(), old.memory, device.allocator());
         });
         *old = b;
         replaced = true;

@@ -557,10 +557,10 @@ FrameOutput EngineRenderer::render(const RenderOptions& options) {
         d.pImageMemoryBarriers = b;
         vkCmdPipelineBarrier2(cmd_, &d);
     };
-    rg::recordReadback(cmd_, color_->image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, size_,
+    rg::recordReadback(device_, cmd_, color_->image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, size_,
                        colorBuffer.buffer());
-    rg::recordReadback(cmd_, inscatter_->image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, size_,
-                       linBuffer.buffer());
+    rg::recordReadback(device_, cmd_, inscatter_->image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                       size_, linBuffer.buffer());
     transition(VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
                VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
                VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT);

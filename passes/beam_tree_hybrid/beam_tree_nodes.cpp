@@ -31,7 +31,7 @@ constexpr VkPipelineStageFlags2 kVertexAndFragment =
 // vkCmdUpdateBuffer takes at most 64 KiB a call. The plugin sizes the buffer from the frame's
 // points before it builds the graph (plugin_api/src/plugin.cpp); a frame that does not fit is a bug
 // there, and is refused rather than drawn with triangles missing.
-void upload(VkCommandBuffer cmd, VkBuffer buffer, const std::vector<glm::vec4>& points,
+void upload(const rg::PassContext& ctx, VkBuffer buffer, const std::vector<glm::vec4>& points,
             size_t capacity) {
     if (points.size() > capacity)
         throw std::logic_error("beam-tree triangles: the frame has " +
@@ -40,8 +40,8 @@ void upload(VkCommandBuffer cmd, VkBuffer buffer, const std::vector<glm::vec4>& 
     const size_t bytes = points.size() * sizeof(glm::vec4);
     constexpr size_t kChunk = 65536;
     for (size_t offset = 0; offset < bytes; offset += kChunk)
-        vkCmdUpdateBuffer(cmd, buffer, offset, std::min(kChunk, bytes - offset),
-                          reinterpret_cast<const char*>(points.data()) + offset);
+        ctx.vk().CmdUpdateBuffer(ctx.cmd(), buffer, offset, std::min(kChunk, bytes - offset),
+                                 reinterpret_cast<const char*>(points.data()) + offset);
 }
 
 rg::BufferRef addTriangleUpload(rg::RenderGraph& graph, rg::HostDataRef<LightFrame> values,
@@ -52,7 +52,7 @@ rg::BufferRef addTriangleUpload(rg::RenderGraph& graph, rg::HostDataRef<LightFra
     triangles = pass.transferDst(triangles);
     const size_t capacity = capacityPoints;
     pass.execute([values, triangles, capacity](rg::PassContext& ctx) {
-        upload(ctx.cmd(), ctx.buffer(triangles), beamTreeOf(ctx.data(values)).points, capacity);
+        upload(ctx, ctx.buffer(triangles), beamTreeOf(ctx.data(values)).points, capacity);
     });
     return triangles;
 }
@@ -85,7 +85,7 @@ void drawPlaneParts(rg::PassContext& ctx, const Shared& shared, const ScatterSpe
     p.bind(ctx.cmd());
     table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
     p.push(ctx.cmd(), frame.slicePush);
-    vkCmdDraw(ctx.cmd(), draw.count, 1, draw.first, 0);
+    ctx.vk().CmdDraw(ctx.cmd(), draw.count, 1, draw.first, 0);
 }
 
 // The plane pass's declarations: the frame's constants, the triangles, the engine's depth as a
@@ -139,7 +139,7 @@ rg::ImageRef addBeamTreeHybrid(rg::RenderGraph& graph, const BeamTreeInputs& in,
             const auto& p = shared->pipelines.graphics("lit pyramids", desc);
             p.bind(ctx.cmd());
             table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
-            vkCmdDraw(ctx.cmd(), count, 1, 0, 0);
+            ctx.vk().CmdDraw(ctx.cmd(), count, 1, 0, 0);
         });
     }
     {

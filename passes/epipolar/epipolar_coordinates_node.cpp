@@ -38,9 +38,9 @@ EpipolarCoordinates addEpipolarCoordinates(rg::RenderGraph& g, const EpipolarCoo
                         1};
         const auto& p = shared->pipelines.graphics("coordinates and epipolar z", desc);
         p.bind(ctx.cmd());
-        vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 1);
+        ctx.vk().CmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 1);
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
-        vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
+        ctx.vk().CmdDraw(ctx.cmd(), 3, 1, 0, 0);
     });
     return out;
 }

@@ -29,9 +29,9 @@ rg::ImageRef addInterpolate(rg::RenderGraph& g, const InterpolateInputs& in,
                         1};
         const auto& p = shared->pipelines.graphics("interpolate in-scattering", desc);
         p.bind(ctx.cmd());
-        vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 1);
+        ctx.vk().CmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 1);
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
-        vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
+        ctx.vk().CmdDraw(ctx.cmd(), 3, 1, 0, 0);
     });
     return interpolated;
 }

@@ -50,7 +50,7 @@ rg::ImageRef addMinMaxTrees(rg::RenderGraph& g, const MinMaxTreesInputs& in,
                 minMaxFirstLevelShader(cube), table.layout(), 0, {});
             p.bind(ctx.cmd());
             table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
-            vkCmdDispatch(ctx.cmd(), groupCount(n / 2, 64), s.slices, 1);
+            ctx.vk().CmdDispatch(ctx.cmd(), groupCount(n / 2, 64), s.slices, 1);
         });
     }
     for (uint32_t level = 2; level <= levels; ++level) {
@@ -67,7 +67,7 @@ rg::ImageRef addMinMaxTrees(rg::RenderGraph& g, const MinMaxTreesInputs& in,
             p.bind(ctx.cmd());
             table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
             p.push(ctx.cmd(), TreeLevelPush{static_cast<int32_t>(level), static_cast<int32_t>(n)});
-            vkCmdDispatch(ctx.cmd(), groupCount(n >> level, 64), s.slices, 1);
+            ctx.vk().CmdDispatch(ctx.cmd(), groupCount(n >> level, 64), s.slices, 1);
         });
     }
     return tree;

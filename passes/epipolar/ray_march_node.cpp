@@ -70,9 +70,9 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const EpipolarRayMarchI
                 (counts.valid() ? ", counting" : ""),
             desc);
         p.bind(ctx.cmd());
-        vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 2);
+        ctx.vk().CmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 2);
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
-        vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
+        ctx.vk().CmdDraw(ctx.cmd(), 3, 1, 0, 0);
     });
     return {marched, counts};
 }

@@ -27,9 +27,9 @@ RefinedSamples addRefineOnInscattering(rg::RenderGraph& g, const RefineOnInscatt
                         0};
         const auto& p = shared->pipelines.graphics("refine on in-scattering differences", desc);
         p.bind(ctx.cmd());
-        vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 0);
+        ctx.vk().CmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 0);
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
-        vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
+        ctx.vk().CmdDraw(ctx.cmd(), 3, 1, 0, 0);
     });
     return out;
 }

@@ -27,7 +27,7 @@ rg::ImageRef addRefineSamples(rg::RenderGraph& g, const RefineSamplesInputs& in,
                                                       table.layout(), 0, spec);
             p.bind(ctx.cmd());
             table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
-            vkCmdDispatch(ctx.cmd(), groupCount(s.samples, 128), s.slices, 1);
+            ctx.vk().CmdDispatch(ctx.cmd(), groupCount(s.samples, 128), s.slices, 1);
         });
     return sources;
 }

@@ -16,7 +16,7 @@ rg::ImageRef addSliceEndPoints(rg::RenderGraph& g, const SliceEndPointsInputs& i
             "slice end points", rg::spirv(ls_spirv::slice_end_points_comp), table.layout(), 0, {});
         p.bind(ctx.cmd());
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
-        vkCmdDispatch(ctx.cmd(), groupCount(s.slices, 64), 1, 1);
+        ctx.vk().CmdDispatch(ctx.cmd(), groupCount(s.slices, 64), 1, 1);
     });
     return out;
 }

@@ -23,7 +23,7 @@ rg::ImageRef addSliceUvFrame(rg::RenderGraph& g, const SliceUvFrameInputs& in,
                                                   table.layout(), 0, {});
         p.bind(ctx.cmd());
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
-        vkCmdDispatch(ctx.cmd(), groupCount(s.slices, 64), 1, 1);
+        ctx.vk().CmdDispatch(ctx.cmd(), groupCount(s.slices, 64), 1, 1);
     });
     return uvFrame;
 }

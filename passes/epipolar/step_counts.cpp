@@ -15,7 +15,7 @@ rg::BufferRef addClearStepCounts(rg::RenderGraph& g, const ClearStepCountsInputs
     auto pass = g.addPass("clear step counts", rg::PassType::Transfer);
     const rg::BufferRef cleared = pass.transferDst(in.counts);
     pass.execute([cleared](rg::PassContext& ctx) {
-        vkCmdFillBuffer(ctx.cmd(), ctx.buffer(cleared), 0, VK_WHOLE_SIZE, 0u);
+        ctx.vk().CmdFillBuffer(ctx.cmd(), ctx.buffer(cleared), 0, VK_WHOLE_SIZE, 0u);
     });
     return cleared;
 }

@@ -66,10 +66,11 @@ UnwarpOutputs addUnwarp(rg::RenderGraph& g, const UnwarpInputs& in, const Unwarp
         }
         const auto& p = shared->pipelines.graphics("unwarp", desc);
         p.bind(ctx.cmd());
-        if (markForFixup) vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 1);
+        if (markForFixup)
+            ctx.vk().CmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 1);
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         p.push(ctx.cmd(), UnwarpPush{markForFixup ? 1 : 0, addOnly ? 1 : 0});
-        vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
+        ctx.vk().CmdDraw(ctx.cmd(), 3, 1, 0, 0);
     });
     return out;
 }

@@ -33,7 +33,7 @@ CompositeOutputs addCompositePass(rg::RenderGraph& graph, const FrameContext& fr
             p.bind(ctx.cmd());
             table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
             const VkExtent2D e = ctx.extent(written.color);
-            vkCmdDispatch(ctx.cmd(), groupCount(e.width, 8), groupCount(e.height, 8), 1);
+            ctx.vk().CmdDispatch(ctx.cmd(), groupCount(e.width, 8), groupCount(e.height, 8), 1);
         });
     return written;
 }

@@ -80,14 +80,14 @@ void drawPixelMarch(rg::PassContext& ctx, const Shared& shared, const ScatterSpe
     const auto& p = shared->pipelines.graphics(draw.pipeline, desc);
     p.bind(ctx.cmd());
     if (draw.whereStencilIsZero)
-        vkCmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 0);
+        ctx.vk().CmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 0);
     table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
     if (draw.composite) {
         p.push(ctx.cmd(), FixupPush{draw.maxSteps, draw.addOnly ? 1u : 0u});
     } else {
         p.push(ctx.cmd(), PixelMarchPush{draw.maxSteps});
     }
-    vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
+    ctx.vk().CmdDraw(ctx.cmd(), 3, 1, 0, 0);
 }
 
 }  // namespace ls

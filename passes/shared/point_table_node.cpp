@@ -16,7 +16,7 @@ rg::ImageRef addPointTable(rg::RenderGraph& graph, const PointTableInputs& in) {
                                       rows.layout(), 0, spec.constants());
         p.bind(ctx.cmd());
         rows.writes(ctx).push(ctx.device(), ctx.cmd(), p);
-        vkCmdDispatch(ctx.cmd(), groupCount(ctx.extent(table).height, 64), 1, 1);
+        ctx.vk().CmdDispatch(ctx.cmd(), groupCount(ctx.extent(table).height, 64), 1, 1);
     });
     return table;
 }

@@ -21,7 +21,7 @@ rg::ImageRef addScreenLinNode(rg::RenderGraph& graph, const Shared& shared, cons
         const auto& p = shared->pipelines.graphics(node.name, desc);
         p.bind(ctx.cmd());
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
-        vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
+        ctx.vk().CmdDraw(ctx.cmd(), 3, 1, 0, 0);
     });
     return lin;
 }

@@ -7,8 +7,8 @@ rg::BufferRef addUploadConstants(rg::RenderGraph& graph, const UploadConstantsIn
     auto pass = graph.addPass("upload frame constants", rg::PassType::Transfer);
     buffer = pass.transferDst(buffer);
     pass.execute([values = in.values, face = in.face, buffer](rg::PassContext& ctx) {
-        vkCmdUpdateBuffer(ctx.cmd(), ctx.buffer(buffer), 0, sizeof(FrameConstants),
-                          &ctx.data(values).of(face));
+        ctx.vk().CmdUpdateBuffer(ctx.cmd(), ctx.buffer(buffer), 0, sizeof(FrameConstants),
+                                 &ctx.data(values).of(face));
     });
     return buffer;
 }

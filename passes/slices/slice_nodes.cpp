@@ -83,7 +83,7 @@ rg::ImageRef addSlicePlanes(rg::RenderGraph& graph, const SlicePlanesInputs& in,
             p.bind(ctx.cmd());
             table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
             p.push(ctx.cmd(), placement.push);
-            vkCmdDraw(ctx.cmd(), 6, placement.planes, 0, 0);
+            ctx.vk().CmdDraw(ctx.cmd(), 6, placement.planes, 0, 0);
         });
     return sum;
 }
@@ -122,7 +122,7 @@ rg::ImageRef addSliceResolve(rg::RenderGraph& graph, const SliceResolveInputs& i
         SliceResolvePush push = placement.resolve;
         if (placement.planes == 0) push.slab = {1e30f, 1e30f, 0.0f, 0.0f};  // all in closed form
         p.push(ctx.cmd(), push);
-        vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
+        ctx.vk().CmdDraw(ctx.cmd(), 3, 1, 0, 0);
     });
     return lin;
 }
@@ -138,7 +138,7 @@ rg::ImageRef addTilingNoise(rg::RenderGraph& graph, const TilingNoiseInputs& in)
         p.bind(ctx.cmd());
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         const VkExtent2D e = ctx.extent(noise);
-        vkCmdDispatch(ctx.cmd(), groupCount(e.width, 8), groupCount(e.height, 8), 1);
+        ctx.vk().CmdDispatch(ctx.cmd(), groupCount(e.width, 8), groupCount(e.height, 8), 1);
     });
     return noise;
 }

@@ -110,7 +110,8 @@ struct Plugin::Impl {
     explicit Impl(const PluginCreateInfo& info)
         : device(rg::ExternalDevice{checked(info).context.instance, info.context.physicalDevice,
                                     info.context.device, info.context.queue,
-                                    info.context.queueFamily}),
+                                    info.context.queueFamily, info.getInstanceProcAddr,
+                                    info.allocator}),
           caps(device),
           shared(std::make_shared<ls::SharedState>(device)),
           framesInFlight(info.framesInFlight),

@@ -93,8 +93,8 @@ std::vector<float> TestImage::download() {
     rg::HostBuffer staging(device_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, "test download");
     device_.submitAndWait([&](VkCommandBuffer cmd) {
         transition(cmd, resting_, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
-        rg::recordReadback(cmd, image_.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, extent_,
-                           staging.buffer(),
+        rg::recordReadback(device_, cmd, image_.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           extent_, staging.buffer(),
                            rg::hasDepth(format_) ? VkImageAspectFlags{VK_IMAGE_ASPECT_DEPTH_BIT}
                                                  : VkImageAspectFlags{VK_IMAGE_ASPECT_COLOR_BIT});
         transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, resting_);

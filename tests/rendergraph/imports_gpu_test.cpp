@@ -49,7 +49,8 @@ rg::ImportedImage engineColor(VkImage image, VkExtent2D size) {
 // CPU.
 void copyToHost(const rg::Device& dev, VkImage image, VkExtent2D size, rg::HostBuffer& host) {
     dev.submitAndWait([&](VkCommandBuffer cmd) {
-        rg::recordReadback(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, size, host.buffer());
+        rg::recordReadback(dev, cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, size,
+                           host.buffer());
     });
 }
 
@@ -298,8 +299,8 @@ TEST_F(ImportsGpu, SixLayerDepthImageIsTransitionedWhole) {
 
             // The engine's next use, after the graph's last barrier: a copy of every layer.
             dev().submitAndWait([&](VkCommandBuffer cmd) {
-                rg::recordReadback(cmd, depth.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, size,
-                                   copied.buffer(), VK_IMAGE_ASPECT_DEPTH_BIT, kLayers);
+                rg::recordReadback(dev(), cmd, depth.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                   size, copied.buffer(), VK_IMAGE_ASPECT_DEPTH_BIT, kLayers);
             });
             const auto* texels = static_cast<const float*>(copied.data());
             for (uint32_t layer = 0; layer < kLayers; ++layer)

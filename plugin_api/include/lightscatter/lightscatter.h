@@ -621,6 +621,14 @@ struct PluginCreateInfo {
     // what only completed frames used then, and never waits for the GPU itself.
     uint32_t framesInFlight = 2;
     VulkanContext context;
+    // Where the plugin's Vulkan entry points come from: the engine's vkGetInstanceProcAddr (volk's,
+    // a layer's, one that counts or traces calls), through which the plugin asks
+    // vkGetDeviceProcAddr for the device's own. Null: the Vulkan loader's, from libvulkan.so.1
+    // opened at run time. The library binds no vk* symbol either way.
+    PFN_vkGetInstanceProcAddr getInstanceProcAddr = nullptr;
+    // The host allocator every Vulkan object of the plugin is created and destroyed with (null:
+    // the driver's). Device memory is Vulkan's to allocate as always.
+    const VkAllocationCallbacks* allocator = nullptr;
 };
 
 class LIGHTSCATTER_API Plugin {

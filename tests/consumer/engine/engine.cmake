@@ -11,7 +11,10 @@ set(CMAKE_CXX_EXTENSIONS OFF)
 # be position-independent for this to link).
 add_library(engine_effects SHARED ${ls_consumer_tests}/plugin/readme_example.cpp)
 target_include_directories(engine_effects PUBLIC ${ls_consumer_tests}/plugin)
-target_link_libraries(engine_effects PUBLIC lightscatter::plugin)
+# The engine's own Vulkan calls go through the loader it links; the plugin binds no vk* symbol and
+# needs none (it loads its entry points at run time).
+find_package(Vulkan 1.3 REQUIRED)
+target_link_libraries(engine_effects PUBLIC lightscatter::plugin Vulkan::Vulkan)
 target_compile_options(engine_effects PRIVATE -Wall -Wextra -Wpedantic -Wconversion -Werror)
 target_link_options(engine_effects PRIVATE -Wl,--no-undefined)
 
