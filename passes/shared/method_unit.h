@@ -36,7 +36,7 @@ struct ChainConfig {
     bool operator==(const ChainConfig&) const = default;
 };
 
-// A method's state of one light kept across frames (the slice placement, the beam tree), filled
+// A method's state of one light kept across frames (the planes' placement, the beam tree), filled
 // by prepare() before each frame is recorded; the chain's passes read it when they record.
 struct LightData {
     virtual ~LightData() = default;

@@ -3,9 +3,9 @@
 #include <algorithm>
 
 #include "epipolar/step_counts.h"
+#include "planes/tiling_noise.h"
 #include "shared/point_table.h"
 #include "shared/shared_nodes.h"
-#include "slices/tiling_noise.h"
 
 namespace lightscatter::detail {
 

@@ -1,9 +1,9 @@
 #include "tiling_noise.h"
 
+#include "plane_nodes.h"
 #include "rendergraph/compile.h"
 #include "rendergraph/device_caps_vulkan.h"
 #include "rendergraph/executor.h"
-#include "slice_nodes.h"
 
 namespace ls {
 

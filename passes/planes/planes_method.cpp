@@ -1,65 +1,65 @@
-#include "slices_method.h"
+#include "planes_method.h"
 
+#include "plane_nodes.h"
 #include "shared/chain_inputs.h"
 #include "shared/refusals.h"
-#include "slice_nodes.h"
 
 namespace ls {
 
-MethodCaps SlicesMethod::caps() const {
+MethodCaps PlanesMethod::caps() const {
     MethodCaps c;
     c.budgeted = true;
     return c;
 }
 
-std::string SlicesMethod::refusal(const LightSetup& s) const {
+std::string PlanesMethod::refusal(const LightSetup& s) const {
     return firstRefusal(
         {refuseCubeShadow(s, name()),
-         refuseNoDepthAttachment(s, "method slices (seed 002) depth-tests its planes"),
+         refuseNoDepthAttachment(s, "method planes (seed 002) depth-tests its planes"),
          refuseSimplified(s, name())});
 }
 
-std::vector<CpuWork> SlicesMethod::prepare(LightData* data, SharedState&,
+std::vector<CpuWork> PlanesMethod::prepare(LightData* data, SharedState&,
                                            const LightSetup& s) const {
     *static_cast<Data*>(data)->placement =
-        placeSlices(s.camera, s.light, s.medium, s.planes, s.timeSeconds);
+        placePlanes(s.camera, s.light, s.medium, s.planes, s.timeSeconds);
     return {};
 }
 
-ChainOptions SlicesMethod::options(const LightSetup& s, const LightData*,
+ChainOptions PlanesMethod::options(const LightSetup& s, const LightData*,
                                    const ChainOptions*) const {
-    return ChainOptions(Options{s.sliceTarget, s.sliceBlur, s.sliceDither, s.noise,
+    return ChainOptions(Options{s.planeTarget, s.planeBlur, s.planeDither, s.noise,
                                 s.shadowSampling, s.camera.reversedZ});
 }
 
-ChainOutputs SlicesMethod::addChain(rg::RenderGraph& g, const ChainInputs& in, const ChainConfig& c,
+ChainOutputs PlanesMethod::addChain(rg::RenderGraph& g, const ChainInputs& in, const ChainConfig& c,
                                     const CompositeTarget&) const {
     const Options& o = *c.options.get<Options>();
-    const SlicePlacementRef placement =
+    const PlanePlacementRef placement =
         in.data ? static_cast<const Data*>(in.data)->placement : nullptr;
     const FrameContext frame = frameContext(in);
-    SlicePlanesInputs planes{frame, {}, {}, placement};
+    PlanesInputs planes{frame, {}, {}, placement};
     if (c.shadowed && o.shadowSampling) planes.light.shadowMap = in.shadowMap;
     if (c.shadowed) planes.light.lightColor = in.lightColor;
     planes.light.shadowMapSize = c.shadowMapSize;
     if (o.noise) planes.noise = in.noise;
-    SlicePlanesOptions planeOptions;
+    PlanesOptions planeOptions;
     planeOptions.target = o.target;
     planeOptions.dither = o.dither;
     planeOptions.reversedZ = o.reversedZ;
-    const rg::ImageRef sum = addSlicePlanes(g, planes, planeOptions);
-    const SliceResolveOptions resolve{o.target, o.blur, c.light == LightType::Directional};
+    const rg::ImageRef sum = addPlanes(g, planes, planeOptions);
+    const PlaneResolveOptions resolve{o.target, o.blur, c.light == LightType::Directional};
     ChainOutputs out;
     out.lin =
-        sliceResolveNeeded(resolve) ? addSliceResolve(g, {frame, sum, placement}, resolve) : sum;
+        planeResolveNeeded(resolve) ? addPlaneResolve(g, {frame, sum, placement}, resolve) : sum;
     return out;
 }
 
-std::string SlicesMethod::summary(const ChainConfig& c) const {
+std::string PlanesMethod::summary(const ChainConfig& c) const {
     const Options& o = *c.options.get<Options>();
-    return std::string("seed 002's view-aligned slice planes") +
-           (o.target == SliceTarget::Rgba8Channels ? " into 8-bit channels"
-            : o.target == SliceTarget::Float32     ? " into a float32 target"
+    return std::string("seed 002's view-aligned planes") +
+           (o.target == PlaneTarget::Rgba8Channels ? " into 8-bit channels"
+            : o.target == PlaneTarget::Float32     ? " into a float32 target"
                                                    : "") +
            (c.shadowed && !o.shadowSampling ? ", no shadow-map sampling" : "") +
            (o.noise ? ", scrolling noise" : "") + (o.blur ? ", blurred" : "");
