@@ -8,14 +8,16 @@
 #                                          # time, most of it the references, which build/bench-report-error
 #                                          # /references keeps); then bench/trees.json and
 #                                          # bench/seed_size.json (about 10 minutes, timings), the hard
-#                                          # cases; and about 20 more for bench/slices.json at 1920x1080;
-#                                          # LS_REPORT_SLICES=0 skips it; bench/occluders.json, the beam
+#                                          # cases; and about 20 more for bench/planes.json at 1920x1080;
+#                                          # LS_REPORT_PLANES=0 skips it; bench/occluders.json, the beam
 #                                          # tree against 1 to 1000 boxes at 1920x1080, is about 10 more:
 #                                          # LS_REPORT_OCCLUDERS=0 skips it; both then reuse
 #                                          # an earlier run's results where build/ has them)
-#   scripts/make-report.sh --slices-only   # bench/slices.json alone (seed 002 against epipolar and
+#   scripts/make-report.sh --planes-only   # bench/planes.json alone (seed 002 against epipolar and
 #                                          # brute force at 1920x1080; timings: a quiet machine), its
 #                                          # plot and strips, its section spliced into the page
+#                                          # (--slices-only and LS_REPORT_SLICES, the former names,
+#                                          # still work)
 #   scripts/make-report.sh --occluders-only  # that benchmark alone, its plot, and its section spliced
 #                                          # into the existing docs/performance.md
 #   scripts/make-report.sh --lights-only   # the same for "Several lights": bench/lights.json (time and
@@ -77,21 +79,33 @@ if [[ "$config" == --flicker-only ]]; then
   echo "docs/performance.md: section 'Temporal stability' replaced"
   exit 0
 fi
-slices_plots() {
-  /usr/bin/python3 scripts/plot_slices.py build/bench-slices "$out"
-  rm -f "$out"/strip_slices_*.png
-  for s in build/bench-slices/strips/window_room_slices_256_rgba8*.png; do
-    # A third of the size: a 1920x1080 strip of noise is megabytes otherwise.
-    [[ -f "$s" ]] && /usr/bin/python3 -c 'import sys, matplotlib.image as m; m.imsave(sys.argv[2], m.imread(sys.argv[1])[::3, ::3])' \
-      "$s" "$out/strip_slices_$(basename "$s" | sed 's/^window_room_//')"
+# The planes method was "slices" until the word came to mean only an epipolar line: the former
+# option and variable still work, and an earlier run's results under the former folder are read.
+if [[ "$config" == --slices-only ]]; then config=--planes-only; fi
+report_planes="${LS_REPORT_PLANES:-${LS_REPORT_SLICES:-1}}"
+planes_dir=build/bench-planes
+if [[ ! -f "$planes_dir/bench.json" && -f build/bench-slices/bench.json && "$config" != --planes-only &&
+      "$report_planes" == 0 ]]; then
+  planes_dir=build/bench-slices
+fi
+planes_plots() {
+  /usr/bin/python3 scripts/plot_planes.py "$planes_dir" "$out"
+  rm -f "$out"/strip_planes_*.png "$out"/strip_slices_*.png "$out"/slices_1920x1080.png
+  for s in "$planes_dir"/strips/window_room_{planes,slices}_256_rgba8*.png; do
+    # A third of the size: a 1920x1080 strip of noise is megabytes otherwise. (An "if": a pattern
+    # that matches nothing must not end the function with a failure under set -e.)
+    if [[ -f "$s" ]]; then
+      /usr/bin/python3 -c 'import sys, matplotlib.image as m; m.imsave(sys.argv[2], m.imread(sys.argv[1])[::3, ::3])' \
+        "$s" "$out/strip_planes_$(basename "$s" | sed 's/^window_room_//')"
+    fi
   done
 }
-if [[ "$config" == --slices-only ]]; then
-  # Timings: run it on a quiet machine. The 1920x1080 references stay in build/bench-slices.
-  ./build/host_example/lightscatter bench --config bench/slices.json --out build/bench-slices
-  slices_plots
-  /usr/bin/python3 scripts/write_report.py --slices-section build/bench-slices docs/performance.md
-  echo "docs/performance.md: section 'Seed 002: slice planes' replaced"
+if [[ "$config" == --planes-only ]]; then
+  # Timings: run it on a quiet machine. The 1920x1080 references stay in build/bench-planes.
+  ./build/host_example/lightscatter bench --config bench/planes.json --out "$planes_dir"
+  planes_plots
+  /usr/bin/python3 scripts/write_report.py --planes-section "$planes_dir" docs/performance.md
+  echo "docs/performance.md: section 'Seed 002: view-aligned planes' replaced"
   exit 0
 fi
 if [[ "$config" == --occluders-only ]]; then
@@ -119,8 +133,8 @@ timed bench/trees.json build/bench-trees
 timed bench/seed_size.json build/bench-seed-size
 ./build/host_example/lightscatter bench --config build/bench-report-error/config.json --out build/bench-report-error
 ./build/host_example/lightscatter bench --config bench/hard.json --out build/bench-hard
-if [[ "${LS_REPORT_SLICES:-1}" != 0 ]]; then
-  ./build/host_example/lightscatter bench --config bench/slices.json --out build/bench-slices
+if [[ "$report_planes" != 0 ]]; then
+  ./build/host_example/lightscatter bench --config bench/planes.json --out "$planes_dir"
 fi
 ./build/host_example/lightscatter budget --json > build/bench-report/budget.json
 /usr/bin/python3 - <<'PY'
@@ -133,21 +147,21 @@ json.dump({"runs": runs}, open("build/bench-report/merged.json", "w"))
 PY
 mkdir -p build/bench-report/merged && cp build/bench-report/merged.json build/bench-report/merged/bench.json
 /usr/bin/python3 scripts/plot_bench.py build/bench-report/merged "$out"
-for f in "$out"/strip_*.png; do  # the report's own strips; the lights' and slices' are their sections'
-  case "$(basename "$f")" in strip_lights_* | strip_slices_*) ;; *) rm -f "$f" ;; esac
+for f in "$out"/strip_*.png; do  # the report's own strips; the lights' and planes' are their sections'
+  case "$(basename "$f")" in strip_lights_* | strip_planes_* | strip_slices_*) ;; *) rm -f "$f" ;; esac
 done
 for s in build/bench-report-error/strips/*_epipolar_balanced.png build/bench-report-error/strips/*_brute-force.png; do
   cp "$s" "$out/strip_$(basename "$s")"
 done
-if [[ -f build/bench-slices/bench.json ]]; then
-  slices_plots
+if [[ -f "$planes_dir/bench.json" ]]; then
+  planes_plots
 fi
 occluders_dir=""
 if [[ "${LS_REPORT_OCCLUDERS:-1}" != 0 ]]; then
   occluders
   occluders_dir=build/bench-occluders
 elif [[ -f build/bench-occluders/bench.json ]]; then
-  occluders_dir=build/bench-occluders  # an earlier run's, as for the slices benchmark
+  occluders_dir=build/bench-occluders  # an earlier run's, as for the planes benchmark
 fi
 lights_dirs=("" "")
 if [[ "${LS_REPORT_LIGHTS:-1}" != 0 ]]; then
@@ -165,7 +179,7 @@ elif [[ -f build/bench-flicker/bench.json ]]; then
 fi
 # Written beside the page, then moved over it: a section whose results this run lacks (the flicker's,
 # say) is copied from the page as it was.
-/usr/bin/python3 scripts/write_report.py build/bench-report build/bench-hard "$config" build/bench-slices \
+/usr/bin/python3 scripts/write_report.py build/bench-report build/bench-hard "$config" "$planes_dir" \
   "$occluders_dir" "${lights_dirs[@]}" "$flicker_dir" build/bench-report-error build/bench-trees \
   build/bench-seed-size > build/performance.md.new
 mv build/performance.md.new docs/performance.md

@@ -43,6 +43,8 @@ fi
 
 # The scenes render from a copy, so that nothing is written beside the repository's own files.
 cp -r "$root/scenes" "$work/scenes"
+# "slices" is the planes method's former name, which both builds accept: base renders made before
+# the rename carry it in their file names.
 methods="auto epipolar brute-force analytic cone-march slices beam-tree-analytic beam-tree-sampling"
 profiles="balanced high-quality low-high-performance"
 render() {  # BINARY OUTDIR SCENE METHOD PROFILE

@@ -7,6 +7,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+#include <utility>
 
 #include "cli_args.h"
 #include "scene/input_file.h"
@@ -22,6 +23,18 @@ constexpr uint64_t kConfigFileCap = 1 * kMiB;
 // the square of the file (1000 scenes and 1000 sweep values are 30 KB and a million runs, each
 // checked with the plugin's budget). The largest shipped one, bench/full.json, has 420.
 constexpr size_t kMaxRuns = 10000;
+
+// The planes method's sweeps were named after "slice" until the word came to mean only an
+// epipolar line; configurations written with those names still read.
+constexpr std::pair<const char*, const char*> kFormerSweepKeys[] = {
+    {"slicePlanes", "planeCount"}, {"sliceTargets", "planeTargets"}};
+
+// The sweep a key of `sweeps` names: itself, or the sweep of its former name.
+std::string currentSweepKey(const std::string& key) {
+    for (const auto& [former, current] : kFormerSweepKeys)
+        if (key == former) return current;
+    return key;
+}
 
 // Reads one configuration; every failure names the file and the field. Every run it expands to
 // is checked here, before the benchmark renders anything, so a bad sweep value at the end of a
@@ -119,17 +132,21 @@ class ConfigReader {
         }
         const json sweeps = j.contains("sweeps") ? j["sweeps"] : json::object();
         if (!sweeps.is_object()) fail("sweeps must be an object");
-        for (const auto& [key, value] : sweeps.items())
-            if (key != "slices" && key != "samples" && key != "initialStep" &&
-                key != "shadowMapSize" && key != "size" && key != "minMaxTrees" &&
-                key != "coneSamples" && key != "coneModes" && key != "slicePlanes" &&
-                key != "sliceTargets" && key != "lightModel" && key != "refinementThreshold" &&
-                key != "inscatterRefinementThreshold")
+        for (const auto& [key, value] : sweeps.items()) {
+            const std::string k = currentSweepKey(key);
+            if (k != "slices" && k != "samples" && k != "initialStep" && k != "shadowMapSize" &&
+                k != "size" && k != "minMaxTrees" && k != "coneSamples" && k != "coneModes" &&
+                k != "planeCount" && k != "planeTargets" && k != "lightModel" &&
+                k != "refinementThreshold" && k != "inscatterRefinementThreshold")
                 fail("sweeps: unknown key '" + echoText(key) +
                      "' (known: slices, samples, initialStep, refinementThreshold, "
                      "inscatterRefinementThreshold, shadowMapSize, "
-                     "size, minMaxTrees, coneSamples, coneModes, slicePlanes, sliceTargets, "
+                     "size, minMaxTrees, coneSamples, coneModes, planeCount, planeTargets, "
                      "lightModel)");
+            if (k != key && sweeps.contains(k))
+                fail("sweeps." + key + " and sweeps." + k + " are one sweep (" + key +
+                     " is its former name): give it once");
+        }
         for (size_t k = 0; k < c.scenes.size(); ++k)
             expand(c, c.scenes[k], sceneMethods[k], profiles, sweepProfile, sweeps);
         return c;
@@ -310,9 +327,16 @@ class ConfigReader {
             }
         }
         constexpr uint32_t kMax = std::numeric_limits<uint32_t>::max();
+        // The key the file gave a sweep under: its name, or its former one.
+        auto written = [&](const char* key) {
+            for (const auto& [former, current] : kFormerSweepKeys)
+                if (current == std::string(key) && sweeps.contains(former)) return former;
+            return key;
+        };
+        auto named = [&](const char* key) { return std::string("sweeps.") + written(key); };
         auto values = [&](const char* key) {
-            return sweeps.contains(key) ? list(sweeps[key], std::string("sweeps.") + key)
-                                        : json::array();
+            return sweeps.contains(written(key)) ? list(sweeps[written(key)], named(key))
+                                                 : json::array();
         };
         // One-parameter sweeps from one profile (balanced unless sweepProfile says otherwise):
         // `read` checks each value of sweeps.<key> and calls emit(label, change) for each run it
@@ -326,7 +350,7 @@ class ConfigReader {
                     r.custom = true;
                     r.settings = lightscatter::profileSettings(sweepProfile);
                     change(r);
-                    if (checked) checkSettings(r, std::string("sweeps.") + key);
+                    if (checked) checkSettings(r, named(key));
                     add(c, r);
                 });
         };
@@ -389,25 +413,25 @@ class ConfigReader {
                 });
             }
         });
-        // Seed 002: the slices method with each plane count and accumulation target.
-        const json planes = values("slicePlanes"), targets = values("sliceTargets");
+        // Seed 002: the planes method with each plane count and accumulation target.
+        const json planes = values("planeCount"), targets = values("planeTargets");
         if (!targets.empty() && planes.empty())
-            fail("sweeps.sliceTargets needs sweeps.slicePlanes");
-        sweep("slicePlanes", "planes", false, [&](const json& n, auto emit) {
-            const uint32_t count = whole(n, "sweeps.slicePlanes[]", 2, 4096);
+            fail(named("planeTargets") + " needs sweeps.planeCount");
+        sweep("planeCount", "planes", false, [&](const json& n, auto emit) {
+            const uint32_t count = whole(n, named("planeCount") + "[]", 2, 4096);
             for (const json& target : targets.empty() ? json::array({"float16"}) : targets) {
                 const std::string t = target.is_string() ? target.get<std::string>() : echo(target);
                 if (t != "float16" && t != "float32" && t != "rgba8" && t != "rgba8-dither")
-                    fail("sweeps.sliceTargets[] = " + echo(target) +
+                    fail(named("planeTargets") + "[] = " + echo(target) +
                          ": must be float16, float32, rgba8 (the seed's rounding) or rgba8-dither");
-                emit("slices " + std::to_string(count) + " " + t, [&](BenchRun& r) {
-                    r.method = lightscatter::Method::Slices;
-                    r.settings.slicePlanes = count;
-                    r.settings.sliceTarget = t == "float16" ? lightscatter::SliceTarget::Float16
+                emit("planes " + std::to_string(count) + " " + t, [&](BenchRun& r) {
+                    r.method = lightscatter::Method::Planes;
+                    r.settings.planeCount = count;
+                    r.settings.planeTarget = t == "float16" ? lightscatter::PlaneTarget::Float16
                                              : t == "float32"
-                                                 ? lightscatter::SliceTarget::Float32
-                                                 : lightscatter::SliceTarget::Rgba8Channels;
-                    r.settings.sliceDither = t == "rgba8-dither";
+                                                 ? lightscatter::PlaneTarget::Float32
+                                                 : lightscatter::PlaneTarget::Rgba8Channels;
+                    r.settings.planeDither = t == "rgba8-dither";
                 });
             }
         });

@@ -1,4 +1,4 @@
-// lightscatter budget [--method epipolar|slices|beam-tree-analytic|beam-tree-sampling] [--profile
+// lightscatter budget [--method epipolar|planes|beam-tree-analytic|beam-tree-sampling] [--profile
 // NAME|all] [--settings FILE.json]
 //   [--size WxH] [--shadow-map N] [--lights sun,spot,point] [--json]
 #include <cstdio>
@@ -23,16 +23,16 @@ double mib(uint64_t bytes) {
 // The methods whose textures depend on the profile, the ones lightscatter::budget knows.
 lightscatter::Method budgetMethod(const std::string& name) {
     const auto m = lightscatter::parseMethod(name);
-    if (m == lightscatter::Method::Epipolar || m == lightscatter::Method::Slices ||
+    if (m == lightscatter::Method::Epipolar || m == lightscatter::Method::Planes ||
         m == lightscatter::Method::BeamTreeAnalytic || m == lightscatter::Method::BeamTreeSampling)
         return *m;
     if (!m)
         throw std::runtime_error(
             "unknown method '" + name +
-            "' (budget knows: epipolar, slices, beam-tree-analytic, beam-tree-sampling)");
+            "' (budget knows: epipolar, planes, beam-tree-analytic, beam-tree-sampling)");
     throw std::runtime_error(
         "--method " + name +
-        ": budget knows epipolar, slices, beam-tree-analytic and beam-tree-sampling only, the "
+        ": budget knows epipolar, planes, beam-tree-analytic and beam-tree-sampling only, the "
         "methods whose textures depend on the profile");
 }
 
@@ -72,8 +72,8 @@ std::string lightsName(const std::vector<lightscatter::LightType>& lights) {
 
 int runBudget(Args& args) {
     const lightscatter::Method method = budgetMethod(args.take("--method", "epipolar"));
-    const bool slices =
-        method != lightscatter::Method::Epipolar;  // planes: slices, beam-tree-analytic
+    const bool planes =
+        method != lightscatter::Method::Epipolar;  // planes and the beam trees sample with planes
     const std::string settingsPath = args.take("--settings", "");
     const std::string profileName =
         args.take("--profile", settingsPath.empty() ? "all" : "balanced");
@@ -115,10 +115,10 @@ int runBudget(Args& args) {
             j["method"] = lightscatter::methodName(method);
             j["profile"] = lightscatter::profileName(p);
             j["screen"] = {size.width, size.height};
-            if (slices) {
-                j["slicePlanes"] = s.slicePlanes;
-                j["sliceTarget"] = sliceTargetName(s.sliceTarget);
-                j["sliceBlur"] = s.sliceBlur;
+            if (planes) {
+                j["planeCount"] = s.planeCount;
+                j["planeTarget"] = planeTargetName(s.planeTarget);
+                j["planeBlur"] = s.planeBlur;
             } else {
                 j["slices"] = s.slices;
                 j["samplesPerSlice"] = s.samplesPerSlice;
@@ -148,13 +148,13 @@ int runBudget(Args& args) {
         }
         const std::string what =
             method == lightscatter::Method::BeamTreeAnalytic
-                ? std::to_string(s.slicePlanes) + " sampling planes where uncertain, float32 target"
+                ? std::to_string(s.planeCount) + " sampling planes where uncertain, float32 target"
             : method == lightscatter::Method::BeamTreeSampling
-                ? std::to_string(s.slicePlanes) +
+                ? std::to_string(s.planeCount) +
                       " sampling planes where lit or uncertain, float32 target"
-            : slices
-                ? std::to_string(s.slicePlanes) + " planes into " + sliceTargetName(s.sliceTarget) +
-                      (s.sliceBlur ? ", blur " + std::to_string(s.sliceBlur) : "")
+            : planes
+                ? std::to_string(s.planeCount) + " planes into " + planeTargetName(s.planeTarget) +
+                      (s.planeBlur ? ", blur " + std::to_string(s.planeBlur) : "")
                 : std::to_string(s.slices) + " slices x " + std::to_string(s.samplesPerSlice) +
                       " samples";
         std::printf("%s, %s: %s, %u^2 shadow map, %ux%u screen, light%s %s (sizes %s)\n",

@@ -24,7 +24,7 @@ std::string shortNumber(float x) {
 }  // namespace
 
 bool honoursNoise(lightscatter::Method method) {
-    return method == lightscatter::Method::Slices || method == lightscatter::Method::Auto;
+    return method == lightscatter::Method::Planes || method == lightscatter::Method::Auto;
 }
 
 bool honoursLightModel(lightscatter::Method method) {
@@ -63,14 +63,14 @@ SceneOptions takeSceneOptions(Args& args, const char* defaultSize) {
     o.settingsPath = args.take("--settings", "");
     o.render = profileOptions(profile, o.settingsPath);
     o.render.method = *m;
-    // Known before any device exists: seed 002's noise is a density only the slice planes sample
+    // Known before any device exists: seed 002's noise is a density only seed 002's planes sample
     // (auto picks them when it is on); the plugin would refuse every other method's frame.
     const float noise = o.render.custom.noiseAmplitude;
     if (noise > 0.0f && !honoursNoise(*m))
         throw std::runtime_error(
             o.settingsPath + ": noiseAmplitude = " + shortNumber(noise) +
-            ": seed 002's scrolling noise is honoured by method slices only; --method " + method +
-            " integrates the model's homogeneous medium (use --method slices or auto, or "
+            ": seed 002's scrolling noise is honoured by method planes only; --method " + method +
+            " integrates the model's homogeneous medium (use --method planes or auto, or "
             "noiseAmplitude 0)");
     if (o.render.custom.lightModel == lightscatter::LightModel::Simplified &&
         !honoursLightModel(*m))

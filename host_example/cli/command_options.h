@@ -26,7 +26,7 @@ VkExtent2D sceneSize(const SceneOptions& o, VkExtent2D fallback);
 // `settingsPath` is "" when --settings was not given.
 RenderOptions profileOptions(const std::string& profile, const std::string& settingsPath);
 
-// Whether `method` samples Settings::noiseAmplitude (slices, and auto, which then picks slices);
+// Whether `method` samples Settings::noiseAmplitude (planes, and auto, which then picks planes);
 // the plugin refuses a non-zero amplitude with any other method.
 bool honoursNoise(lightscatter::Method method);
 

@@ -3,7 +3,7 @@
 //   [--animate-light] [--resizes N] [--memory-log FILE.csv]   (the soak test's options)
 // A GLFW window: WASD/QE move the camera, left-drag looks around, arrow keys move the selected
 // light (L selects the next of a scene's "lights"), M
-// cycles the methods, P cycles profiles, T toggles the min/max trees, N steps the slices method's
+// cycles the methods, P cycles profiles, T toggles the min/max trees, N steps the planes method's
 // scrolling noise (0, 0.25, 0.5, 1), Esc quits. The title shows the method, profile and noise, and
 // the plugin's GPU time per pass. Resizing rebuilds the graphs. Every frame carries the seconds
 // since the window opened, which scroll the noise.
@@ -249,7 +249,7 @@ std::string noiseTitle(float amplitude, lightscatter::Method method) {
     if (amplitude <= 0.0f) return "";
     char buf[64];
     std::snprintf(buf, sizeof buf, " / noise %g%s", static_cast<double>(amplitude),
-                  honoursNoise(method) ? "" : " (slices and auto only: off)");
+                  honoursNoise(method) ? "" : " (planes and auto only: off)");
     return buf;
 }
 
@@ -391,7 +391,7 @@ int runView(Args& args) {
             std::vector<lightscatter::Method> methods{
                 lightscatter::Method::Auto, lightscatter::Method::Epipolar,
                 lightscatter::Method::BruteForce, lightscatter::Method::ConeMarch,
-                lightscatter::Method::Slices};
+                lightscatter::Method::Planes};
             const LightDesc& l = renderer.scene().light;
             if (l.type == lightscatter::LightType::Point ||
                 (l.type == lightscatter::LightType::Spot && l.shadowMapSize == 0))
@@ -414,7 +414,7 @@ int runView(Args& args) {
             const auto next = std::upper_bound(kNoiseSteps.begin(), kNoiseSteps.end(), noise);
             noise = next == kNoiseSteps.end() ? kNoiseSteps[0] : *next;
         }
-        // Only slices samples the noise (auto picks slices for it); the other methods run without.
+        // Only the planes method samples the noise (auto then picks it); the others run without.
         options.custom.noiseAmplitude = honoursNoise(options.method) ? noise : 0.0f;
         // Likewise seed 004's simplified light model: the methods that do not honour it run the
         // full one.

@@ -8,8 +8,8 @@ namespace {
 
 const char* kCommon =
     "common options: --device NAME (or LS_DEVICE), --validation, --help (-h)\n"
-    "methods: auto (default), epipolar, brute-force, analytic, cone-march, slices,\n"
-    "beam-tree-analytic, beam-tree-sampling; profiles:\n"
+    "methods: auto (default), epipolar, brute-force, analytic, cone-march, planes (or its\n"
+    "former name slices), beam-tree-analytic, beam-tree-sampling; profiles:\n"
     "high-quality, balanced (default), high-performance, low-high-quality, low-balanced,\n"
     "low-high-performance, custom (with --settings)\n";
 
@@ -19,9 +19,12 @@ const char* kSettings =
     "                        inscatterRefinementThreshold, bilateralThreshold, minMaxTrees,\n"
     "                        shadowFilter, fixup, fixupMaxSteps,\n"
     "                        shadowDepthBias, interpolation, shadowMapSize; cone-march's\n"
-    "                        coneSamples, coneLimited, coneJitter, shadowSampling; slices'\n"
-    "                        slicePlanes, sliceTarget (float16, float32, rgba8),\n"
-    "                        slicePlaneScaling, sliceRange, sliceDither, sliceBlur, sliceAmbient,\n"
+    "                        coneSamples, coneLimited, coneJitter, shadowSampling; planes'\n"
+    "                        planeCount, planeTarget (float16, float32, rgba8),\n"
+    "                        planeScaling, planeRange, planeDither, planeBlur, planeAmbient\n"
+    "                        (read under their former names too: slicePlanes, sliceTarget,\n"
+    "                        slicePlaneScaling, sliceRange, sliceDither, sliceBlur,\n"
+    "                        sliceAmbient),\n"
     "                        noiseAmplitude, noiseScale, noiseVelocity [4 numbers]; seed 004's\n"
     "                        lightModel (full, simplified), simplifiedA0, simplifiedA1); fields\n"
     "                        it leaves out keep the values of --profile, and the frame runs as\n"
@@ -50,13 +53,13 @@ const std::array kCommands{
         "Outputs are written all or nothing: each must be its own file and none may be an "
         "input.\n"},
     Command{"budget",
-            "budget [--method epipolar|slices|beam-tree-analytic|beam-tree-sampling]\n"
+            "budget [--method epipolar|planes|beam-tree-analytic|beam-tree-sampling]\n"
             "                    [--profile NAME|all]\n"
             "                    [--settings FILE.json]\n"
             "                    [--size WxH] [--shadow-map N] [--lights sun,spot,point]\n"
             "                    [--json]\n",
             "Prints a method's GPU memory per profile without a GPU.\n"
-            "  --method NAME       epipolar (default), slices, beam-tree-analytic or\n"
+            "  --method NAME       epipolar (default), planes, beam-tree-analytic or\n"
             "                      beam-tree-sampling, the methods whose textures depend on the\n"
             "                      profile\n"
             "  --profile NAME|all  one profile, or all of them (default)\n"
@@ -81,7 +84,7 @@ const std::array kCommands{
         "Opens a window (needs a display; xvfb-run -a gives one). WASD/QE move, left-drag\n"
         "looks, arrow keys move the selected light (L selects the next of several), M cycles\n"
         "the methods, P cycles profiles, T toggles the min/max trees, N steps the scrolling\n"
-        "noise's amplitude (0, 0.25, 0.5, 1; slices and auto only), Esc quits.\n"
+        "noise's amplitude (0, 0.25, 0.5, 1; planes and auto only), Esc quits.\n"
         "  --size WxH          1 to 16384 each (default 960x540)\n"
         "  --frames N          close after N frames (1 to 100000)\n"
         "  --screenshot FILE   the last frame as a PNG (needs --frames)\n"

@@ -21,7 +21,7 @@ struct RenderOptions {
     lightscatter::Method method = lightscatter::Method::Epipolar;
     lightscatter::Profile profile = lightscatter::Profile::Balanced;
     lightscatter::Settings custom;
-    double timeSeconds = 0.0;  // FrameDescription::timeSeconds: scrolls the slices method's noise
+    double timeSeconds = 0.0;  // FrameDescription::timeSeconds: scrolls the planes method's noise
     bool countSteps = false;   // DebugOptions::countSteps: epipolar's ray-march steps in the report
 };
 

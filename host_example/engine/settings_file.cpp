@@ -6,6 +6,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+#include <utility>
 
 #include "scene/input_file.h"
 #include "scene/json_input.h"
@@ -34,19 +35,34 @@ constexpr const char* kFields[] = {"slices",
                                    "coneLimited",
                                    "coneJitter",
                                    "shadowSampling",
-                                   "slicePlanes",
-                                   "sliceTarget",
-                                   "slicePlaneScaling",
-                                   "sliceRange",
-                                   "sliceDither",
-                                   "sliceBlur",
-                                   "sliceAmbient",
+                                   "planeCount",
+                                   "planeTarget",
+                                   "planeScaling",
+                                   "planeRange",
+                                   "planeDither",
+                                   "planeBlur",
+                                   "planeAmbient",
                                    "noiseAmplitude",
                                    "noiseScale",
                                    "noiseVelocity",
                                    "lightModel",
                                    "simplifiedA0",
                                    "simplifiedA1"};
+
+// The planes method's fields were named after "slice" until the word came to mean only an
+// epipolar line; files written with those names still read.
+constexpr std::pair<const char*, const char*> kFormerNames[] = {
+    {"slicePlanes", "planeCount"},         {"sliceTarget", "planeTarget"},
+    {"slicePlaneScaling", "planeScaling"}, {"sliceRange", "planeRange"},
+    {"sliceDither", "planeDither"},        {"sliceBlur", "planeBlur"},
+    {"sliceAmbient", "planeAmbient"}};
+
+// The field a key names: itself, or the field of its former name.
+std::string currentName(const std::string& key) {
+    for (const auto& [former, current] : kFormerNames)
+        if (key == former) return current;
+    return key;
+}
 
 std::string knownFields() {
     std::string s;
@@ -62,85 +78,89 @@ class SettingsReader {
         const json root = parse();
         if (!root.is_object()) fail("the top level must be a JSON object of settings");
         for (const auto& item : root.items()) {
-            const std::string& key = item.key();
+            const std::string& key = item.key();  // as written, for the messages
+            const std::string field = currentName(key);
+            if (field != key && root.contains(field))
+                fail(key + " and " + field + " are one field (" + key +
+                     " is its former name): give it once");
             const json& v = item.value();
-            if (key == "slices")
+            if (field == "slices")
                 s.slices = whole(v, key);
-            else if (key == "samplesPerSlice")
+            else if (field == "samplesPerSlice")
                 s.samplesPerSlice = whole(v, key);
-            else if (key == "initialSampleStep")
+            else if (field == "initialSampleStep")
                 s.initialSampleStep = whole(v, key);
-            else if (key == "refinementThreshold")
+            else if (field == "refinementThreshold")
                 s.refinementThreshold = number(v, key);
-            else if (key == "inscatterRefinementThreshold")
+            else if (field == "inscatterRefinementThreshold")
                 s.inscatterRefinementThreshold = number(v, key);
-            else if (key == "bilateralThreshold")
+            else if (field == "bilateralThreshold")
                 s.bilateralThreshold = number(v, key);
-            else if (key == "minMaxTrees")
+            else if (field == "minMaxTrees")
                 s.minMaxTrees = boolean(v, key);
-            else if (key == "shadowFilter")
+            else if (field == "shadowFilter")
                 s.shadowFilter = oneOf<lightscatter::ShadowFilter>(
                     v, key,
                     {{"bilinear", lightscatter::ShadowFilter::Bilinear},
                      {"nearest", lightscatter::ShadowFilter::Nearest}});
-            else if (key == "fixup")
+            else if (field == "fixup")
                 s.fixup = boolean(v, key);
-            else if (key == "fixupMaxSteps")
+            else if (field == "fixupMaxSteps")
                 s.fixupMaxSteps = whole(v, key);
-            else if (key == "shadowDepthBias")
+            else if (field == "shadowDepthBias")
                 s.shadowDepthBias = number(v, key);
-            else if (key == "interpolation")
+            else if (field == "interpolation")
                 s.interpolation = oneOf<lightscatter::Interpolation>(
                     v, key,
                     {{"shadowed-fraction", lightscatter::Interpolation::ShadowedFraction},
                      {"inscattering", lightscatter::Interpolation::Inscattering}});
-            else if (key == "coneSamples")
+            else if (field == "coneSamples")
                 s.coneSamples = whole(v, key);
-            else if (key == "coneLimited")
+            else if (field == "coneLimited")
                 s.coneLimited = boolean(v, key);
-            else if (key == "coneJitter")
+            else if (field == "coneJitter")
                 s.coneJitter = boolean(v, key);
-            else if (key == "shadowSampling")
+            else if (field == "shadowSampling")
                 s.shadowSampling = boolean(v, key);
-            else if (key == "slicePlanes")
-                s.slicePlanes = whole(v, key);
-            else if (key == "sliceTarget")
-                s.sliceTarget = oneOf<lightscatter::SliceTarget>(
+            else if (field == "planeCount")
+                s.planeCount = whole(v, key);
+            else if (field == "planeTarget")
+                s.planeTarget = oneOf<lightscatter::PlaneTarget>(
                     v, key,
-                    {{sliceTargetName(lightscatter::SliceTarget::Float16),
-                      lightscatter::SliceTarget::Float16},
-                     {sliceTargetName(lightscatter::SliceTarget::Float32),
-                      lightscatter::SliceTarget::Float32},
-                     {sliceTargetName(lightscatter::SliceTarget::Rgba8Channels),
-                      lightscatter::SliceTarget::Rgba8Channels}});
-            else if (key == "slicePlaneScaling")
-                s.slicePlaneScaling = boolean(v, key);
-            else if (key == "sliceRange")
-                s.sliceRange = number(v, key);
-            else if (key == "sliceDither")
-                s.sliceDither = boolean(v, key);
-            else if (key == "sliceBlur")
-                s.sliceBlur = whole(v, key);
-            else if (key == "sliceAmbient")
-                s.sliceAmbient = number(v, key);
-            else if (key == "noiseAmplitude")
+                    {{planeTargetName(lightscatter::PlaneTarget::Float16),
+                      lightscatter::PlaneTarget::Float16},
+                     {planeTargetName(lightscatter::PlaneTarget::Float32),
+                      lightscatter::PlaneTarget::Float32},
+                     {planeTargetName(lightscatter::PlaneTarget::Rgba8Channels),
+                      lightscatter::PlaneTarget::Rgba8Channels}});
+            else if (field == "planeScaling")
+                s.planeScaling = boolean(v, key);
+            else if (field == "planeRange")
+                s.planeRange = number(v, key);
+            else if (field == "planeDither")
+                s.planeDither = boolean(v, key);
+            else if (field == "planeBlur")
+                s.planeBlur = whole(v, key);
+            else if (field == "planeAmbient")
+                s.planeAmbient = number(v, key);
+            else if (field == "noiseAmplitude")
                 s.noiseAmplitude = number(v, key);
-            else if (key == "noiseScale")
+            else if (field == "noiseScale")
                 s.noiseScale = number(v, key);
-            else if (key == "noiseVelocity")
+            else if (field == "noiseVelocity")
                 s.noiseVelocity = numbers<4>(v, key);
-            else if (key == "lightModel")
+            else if (field == "lightModel")
                 s.lightModel = oneOf<lightscatter::LightModel>(
                     v, key,
                     {{lightModelName(lightscatter::LightModel::Full),
                       lightscatter::LightModel::Full},
                      {lightModelName(lightscatter::LightModel::Simplified),
                       lightscatter::LightModel::Simplified}});
-            else if (key == "simplifiedA0")
+            else if (field == "simplifiedA0")
                 s.simplifiedA0 = number(v, key);
-            else if (key == "simplifiedA1")
+            else if (field == "simplifiedA1")
                 s.simplifiedA1 = number(v, key);
-            else if (key == "shadowMapSize") {
+            else if (field == "shadowMapSize") {
                 s.shadowMapSize = whole(v, key);
                 if (s.shadowMapSize < 1 || s.shadowMapSize > 16384)
                     fail(key + " = " + echo(v) + ": must be from 1 to 16384");
@@ -148,7 +168,7 @@ class SettingsReader {
                 fail("unknown key '" + echoText(key) + "' (known keys: " + knownFields() + ")");
             }
         }
-        checkWithThePlugin(s);
+        checkWithThePlugin(s, root);
         return s;
     }
 
@@ -208,8 +228,8 @@ class SettingsReader {
     }
 
     // The plugin's own rules (multiples, powers of two, ranges), applied without a GPU through
-    // its budget, and reported in this file's terms.
-    void checkWithThePlugin(const lightscatter::Settings& s) const {
+    // its budget, and reported in this file's terms: under the name `root` gave the field.
+    void checkWithThePlugin(const lightscatter::Settings& s, const json& root) const {
         try {
             (void)lightscatter::budget(lightscatter::Profile::Custom, 64, 64, 64,
                                        lightscatter::LightType::Spot, &s);
@@ -217,6 +237,9 @@ class SettingsReader {
             std::string why = e.what();
             for (const char* prefix : {"lightscatter: ", "custom."})
                 if (why.rfind(prefix, 0) == 0) why.erase(0, std::char_traits<char>::length(prefix));
+            for (const auto& [former, current] : kFormerNames)
+                if (root.contains(former) && why.rfind(std::string(current) + " ", 0) == 0)
+                    why.replace(0, std::char_traits<char>::length(current), former);
             fail(why);
         }
     }
@@ -234,13 +257,13 @@ const char* lightModelName(lightscatter::LightModel model) {
     return model == lightscatter::LightModel::Simplified ? "simplified" : "full";
 }
 
-const char* sliceTargetName(lightscatter::SliceTarget target) {
+const char* planeTargetName(lightscatter::PlaneTarget target) {
     switch (target) {
-        case lightscatter::SliceTarget::Float16:
+        case lightscatter::PlaneTarget::Float16:
             return "float16";
-        case lightscatter::SliceTarget::Float32:
+        case lightscatter::PlaneTarget::Float32:
             return "float32";
-        case lightscatter::SliceTarget::Rgba8Channels:
+        case lightscatter::PlaneTarget::Rgba8Channels:
             return "rgba8";
     }
     return "unknown";

@@ -28,7 +28,7 @@ std::vector<beam::Polygon> cubeFaces(const glm::dvec3& c, double r) {
 BeamTreeFrame buildBeamTreeFrame(const CameraParams& camera, const LightParams& light,
                                  const MediumParams& medium,
                                  const std::vector<beam::Occluder>& occluders,
-                                 const SliceSettings& planes, LitSpace lit) {
+                                 const PlaneSettings& planes, LitSpace lit) {
     const auto start = std::chrono::steady_clock::now();
     BeamTreeFrame out;
     const glm::dvec3 L(light.position);
@@ -55,8 +55,8 @@ BeamTreeFrame buildBeamTreeFrame(const CameraParams& camera, const LightParams& 
 
     // Seed 002's planes across the light's volume, cut to its uncertain (and lit) parts.
     std::vector<glm::vec4> uncertain;
-    const SlicePlacement placement = placeSlices(camera, light, medium, planes, 0.0);
-    out.slicePush = placement.push;
+    const PlanePlacement placement = placePlanes(camera, light, medium, planes, 0.0);
+    out.planePush = placement.push;
     const glm::mat4 toWorld = placement.push.viewToWorld;
     for (uint32_t i = 0; i < placement.planes; ++i) {
         const float z =

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "beam_tree/occluders.h"
+#include "planes/plane_geometry.h"
 #include "shared/scattering_params.h"
-#include "slices/slice_geometry.h"
 
 namespace ls {
 
@@ -18,7 +18,7 @@ struct BeamTreeFrame {
     std::vector<glm::vec4> points;
     uint32_t litPoints = 0, uncertainPoints = 0;
     bool litAsPlanes = false;      // the lit triangles are plane parts (5.3), not pyramids (5.4)
-    SlicePush slicePush;           // the sampling planes' placement (spacing) for their shading
+    PlanePush planePush;           // the sampling planes' placement (spacing) for their shading
     double buildMilliseconds = 0;  // CPU: tree, pyramids and plane partition
     size_t treeNodes = 0, visiblePolygons = 0;
 };
@@ -29,6 +29,6 @@ enum class LitSpace { ClosedForm, Planes };
 BeamTreeFrame buildBeamTreeFrame(const CameraParams& camera, const LightParams& light,
                                  const MediumParams& medium,
                                  const std::vector<beam::Occluder>& occluders,
-                                 const SliceSettings& planes, LitSpace lit = LitSpace::ClosedForm);
+                                 const PlaneSettings& planes, LitSpace lit = LitSpace::ClosedForm);
 
 }  // namespace ls

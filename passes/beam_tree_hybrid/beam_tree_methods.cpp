@@ -28,7 +28,7 @@ std::string BeamTreeMethod::refusal(const LightSetup& s) const {
     if (!pointLike(s))
         return "method " + n +
                " (seed 004) builds its beam tree from a point or spot light; this frame's light is "
-               "directional (use auto, epipolar, slices or cone-march)";
+               "directional (use auto, epipolar, planes or cone-march)";
     return firstRefusal(
         {refuseNoise(s, n), refuseNoDepthAttachment(
                                 s, "method " + n + " (seed 004) depth-tests its sampling planes")});
@@ -49,8 +49,8 @@ std::unique_ptr<LightData> BeamTreeMethod::makeData() const {
 
 std::vector<CpuWork> BeamTreeMethod::prepare(LightData* data, LightFrame&,
                                              const LightSetup& s) const {
-    SliceSettings planes;
-    planes.planes = s.planes.planes;  // only the count: the planes' other settings are slices'
+    PlaneSettings planes;
+    planes.planes = s.planes.planes;  // only the count: the other settings are the planes method's
     BeamTreeFrame& frame = static_cast<BeamTreeData*>(data)->frame;
     frame = buildBeamTreeFrame(s.camera, s.light, s.medium, s.beamOccluders, planes, litSpace());
     return {{"beam tree (CPU, seed 004)", frame.buildMilliseconds}};
@@ -96,7 +96,8 @@ ChainOutputs BeamTreeSamplingMethod::addChain(rg::RenderGraph& g, const ChainInp
 
 std::string BeamTreeSamplingMethod::summary(const ChainConfig& c) const {
     return std::string(
-               "seed 004's beam tree clipping slices' planes: lit parts without shadow look-ups") +
+               "seed 004's beam tree clipping seed 002's planes: lit parts without shadow "
+               "look-ups") +
            (c.shadowed ? ", uncertain parts with the shadow map"
                        : ", uncertain parts as lit (no shadow map)");
 }

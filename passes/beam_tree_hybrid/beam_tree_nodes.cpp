@@ -6,16 +6,16 @@
 
 #include "beam_tree_shaders.h"
 #include "lit_volume_table_frag.h"
+#include "planes_frag_variants.h"
 #include "shared/pass_helpers.h"
 #include "shared/shader_variant.h"
-#include "slice_planes_frag_variants.h"
 #include "triangles_vert.h"
 
 namespace ls {
 
 // Bindings only some frames have are build-time variants of the planes' shader.
 rg::ShaderCode beamTreePlanesShader(bool shadowMap, bool cookie) {
-    return pickShader(ls_spirv::slice_planes_frag_variants,
+    return pickShader(ls_spirv::planes_frag_variants,
                       {{"LS_SHADOW_MAP", shadowMap}, {"LS_LIGHT_COLOR", cookie}, {"LS_NOISE", 0}});
 }
 
@@ -76,7 +76,7 @@ void drawPlaneParts(rg::PassContext& ctx, const Shared& shared, const ScatterSpe
     desc.fragment = beamTreePlanesShader(draw.shadow, cookie);
     desc.formats = ctx.renderingFormats();
     desc.bindings = table.layout();
-    desc.pushConstantBytes = sizeof(SlicePush);
+    desc.pushConstantBytes = sizeof(PlanePush);
     desc.specialization = spec.constants();
     desc.depthTest = true;
     desc.depthCompare = reversedZ ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_LESS;
@@ -84,7 +84,7 @@ void drawPlaneParts(rg::PassContext& ctx, const Shared& shared, const ScatterSpe
     const auto& p = shared->pipelines.graphics("beam-tree planes", desc);
     p.bind(ctx.cmd());
     table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
-    p.push(ctx.cmd(), frame.slicePush);
+    p.push(ctx.cmd(), frame.planePush);
     ctx.vk().CmdDraw(ctx.cmd(), draw.count, 1, draw.first, 0);
 }
 

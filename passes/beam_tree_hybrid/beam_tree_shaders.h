@@ -1,5 +1,5 @@
 #pragma once
-// The build of slices' planes shader the beam tree's sampling planes ask for (the builds:
+// The build of seed 002's planes shader the beam tree's sampling planes ask for (the builds:
 // shaders/CMakeLists.txt).
 #include "rendergraph/pipeline.h"
 

@@ -5,7 +5,7 @@
 #include "brute_force/brute_force_method.h"
 #include "cone_march/cone_march_method.h"
 #include "epipolar/epipolar_method.h"
-#include "slices/slices_method.h"
+#include "planes/planes_method.h"
 
 namespace ls {
 
@@ -14,12 +14,12 @@ const std::vector<const MethodUnit*>& methodRegistry() {
     static const BruteForceMethod bruteForce;
     static const AnalyticMethod analytic;
     static const ConeMarchMethod coneMarch;
-    static const SlicesMethod slices;
+    static const PlanesMethod planes;
     static const BeamTreeAnalyticMethod beamTreeAnalytic;
     static const BeamTreeSamplingMethod beamTreeSampling;
     static const std::vector<const MethodUnit*> all{
         &epipolar, &bruteForce,       &analytic,        &coneMarch,
-        &slices,   &beamTreeAnalytic, &beamTreeSampling};
+        &planes,   &beamTreeAnalytic, &beamTreeSampling};
     return all;
 }
 

@@ -17,10 +17,10 @@ struct LightSetup {
     LightParams light;
     MediumParams medium;
     EpipolarSettings epipolar;
-    SliceSettings planes;  // slices' and the beam trees' sampling planes
-    SliceTarget sliceTarget = SliceTarget::Float16;
-    uint32_t sliceBlur = 0;
-    bool sliceDither = false;
+    PlaneSettings planes;  // the planes method's and the beam trees' sampling planes
+    PlaneTarget planeTarget = PlaneTarget::Float16;
+    uint32_t planeBlur = 0;
+    bool planeDither = false;
     ConeMarchOptions cone;
     bool shadowSampling = true;  // false: seed 003's low-end mode
     VkExtent2D screen{0, 0};

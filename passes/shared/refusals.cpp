@@ -14,9 +14,9 @@ std::string refuseCubeShadow(const LightSetup& s, const std::string& method) {
 std::string refuseNoise(const LightSetup& s, const std::string& method) {
     if (!s.noise) return {};
     return s.settingsPath +
-           ".noiseAmplitude > 0 (seed 002's scrolling noise) is honoured by slices only; method " +
+           ".noiseAmplitude > 0 (seed 002's scrolling noise) is honoured by planes only; method " +
            method +
-           " integrates the model's homogeneous medium (use slices or auto, or amplitude 0)";
+           " integrates the model's homogeneous medium (use planes or auto, or amplitude 0)";
 }
 
 std::string refuseSimplified(const LightSetup& s, const std::string& method) {

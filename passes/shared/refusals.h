@@ -9,7 +9,7 @@ namespace ls {
 
 // A point light's cube shadow map: only epipolar (face by face) and brute force sample it.
 std::string refuseCubeShadow(const LightSetup& s, const std::string& method);
-// Seed 002's noise is a density the model does not have; only the slice planes sample it.
+// Seed 002's noise is a density the model does not have; only seed 002's planes sample it.
 std::string refuseNoise(const LightSetup& s, const std::string& method);
 // Seed 004's simplified light model is another integrand; only the closed forms take it.
 std::string refuseSimplified(const LightSetup& s, const std::string& method);

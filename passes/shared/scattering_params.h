@@ -15,7 +15,7 @@ namespace ls {
 // The vocabulary's words (lightscatter/vocabulary.h), as the API and the shaders name them.
 using lightscatter::LightType;
 using lightscatter::MiePhase;
-using lightscatter::SliceTarget;
+using lightscatter::PlaneTarget;
 
 struct CameraParams {
     glm::mat4 view{1.0f};
@@ -65,9 +65,9 @@ struct EpipolarSettings {
     bool interpolateFraction = true;  // samples carry Lin / unshadowed Lin instead of Lin
 };
 
-// Seed 002's view-aligned planes (slices; the beam trees sample with them too).
-struct SliceSettings {
-    bool operator==(const SliceSettings&) const = default;
+// Seed 002's view-aligned planes (the planes method; the beam trees sample with them too).
+struct PlaneSettings {
+    bool operator==(const PlaneSettings&) const = default;
     uint32_t planes = 128;
     bool planeScaling = false;    // seed 002: fewer planes as the light's volume recedes
     bool eightBitTarget = false;  // the range below only matters to the 8-bit channel target

@@ -7,11 +7,11 @@
 #include <lightscatter/lightscatter.h>
 #include "graph_config.h"
 #include "method_units.h"
+#include "planes/tiling_noise.h"
 #include "registry/method_registry.h"
 #include "rendergraph/compile.h"
 #include "rendergraph/format_info.h"
 #include "shared/point_table.h"
-#include "slices/tiling_noise.h"
 
 namespace lightscatter {
 namespace {
@@ -46,7 +46,7 @@ void describeEngineImages(detail::FrameImports& f, VkExtent2D screen) {
                VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL};
 }
 
-// The methods whose caps say `which`, by name ("epipolar, slices and beam-tree-analytic").
+// The methods whose caps say `which`, by name ("epipolar, planes and beam-tree-analytic").
 template <typename F>
 std::string methodsWhere(F which) {
     std::vector<std::string> names;

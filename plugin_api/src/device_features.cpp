@@ -63,7 +63,7 @@ const Need kNeeds[] = {
     {"shaderClipDistance", VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2,
      kCoreOffset + offsetof(VkPhysicalDeviceFeatures, shaderClipDistance),
      "VkPhysicalDeviceFeatures2::features", VK_STRUCTURE_TYPE_MAX_ENUM, 0, nullptr,
-     "the slices method clips its planes to a spot's pyramid with clip distances"},
+     "the planes method clips its planes to a spot's pyramid with clip distances"},
     {"fragmentStoresAndAtomics", VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2,
      kCoreOffset + offsetof(VkPhysicalDeviceFeatures, fragmentStoresAndAtomics),
      "VkPhysicalDeviceFeatures2::features", VK_STRUCTURE_TYPE_MAX_ENUM, 0, nullptr,

@@ -3,10 +3,11 @@
 #include <algorithm>
 
 #include "epipolar/step_counts.h"
+#include "planes/tiling_noise.h"
 #include "shared/point_table.h"
 #include "shared/shared_nodes.h"
-#include "slices/slice_nodes.h"
-#include "slices/tiling_noise.h"
+#include "planes/plane_nodes.h"
+#include "planes/tiling_noise.h"
 
 namespace lightscatter::detail {
 

@@ -583,17 +583,17 @@ void checkSettings(const Settings& s, const std::string& at) {
             "the depth range: beyond it every ray is lit, or shadowed, all the same");
     if (s.coneSamples < 1 || s.coneSamples > 4096)
         fail(c + "coneSamples = " + std::to_string(s.coneSamples) + ": must be between 1 and 4096");
-    if (s.slicePlanes < 2 || s.slicePlanes > 4096)
-        fail(c + "slicePlanes = " + std::to_string(s.slicePlanes) + ": must be between 2 and 4096");
-    if (s.sliceTarget != SliceTarget::Float16 && s.sliceTarget != SliceTarget::Float32 &&
-        s.sliceTarget != SliceTarget::Rgba8Channels)
-        fail(c + "sliceTarget is not a SliceTarget value");
-    if (s.sliceRange != 0.0f)
-        inRange(s.sliceRange, c + "sliceRange", 1e-30, 1e30,
-                "or 0: automatic; the 8-bit target is scaled by 4 / sliceRange");
-    if (s.sliceBlur > 8)
-        fail(c + "sliceBlur = " + std::to_string(s.sliceBlur) + ": at most 8 pixels");
-    inRange(s.sliceAmbient, c + "sliceAmbient", 0.0, limits::kMaxAmbient,
+    if (s.planeCount < 2 || s.planeCount > 4096)
+        fail(c + "planeCount = " + std::to_string(s.planeCount) + ": must be between 2 and 4096");
+    if (s.planeTarget != PlaneTarget::Float16 && s.planeTarget != PlaneTarget::Float32 &&
+        s.planeTarget != PlaneTarget::Rgba8Channels)
+        fail(c + "planeTarget is not a PlaneTarget value");
+    if (s.planeRange != 0.0f)
+        inRange(s.planeRange, c + "planeRange", 1e-30, 1e30,
+                "or 0: automatic; the 8-bit target is scaled by 4 / planeRange");
+    if (s.planeBlur > 8)
+        fail(c + "planeBlur = " + std::to_string(s.planeBlur) + ": at most 8 pixels");
+    inRange(s.planeAmbient, c + "planeAmbient", 0.0, limits::kMaxAmbient,
             "1/m^2, beside the inverse square; lightscatter.h, limits::kMaxAmbient");
     if (!(s.noiseAmplitude >= 0.0f && s.noiseAmplitude <= 1.0f))
         fail(c + "noiseAmplitude = " + num(s.noiseAmplitude) + ": must be in [0, 1]");
@@ -822,18 +822,18 @@ void applySettings(ls::LightSetup& s, const Settings& st, uint32_t shadowMapSize
     s.epipolar.fixupMaxSteps = st.fixupMaxSteps;
     s.epipolar.shadowDepthBias = st.shadowDepthBias;
     s.epipolar.interpolateFraction = st.interpolation == Interpolation::ShadowedFraction;
-    s.planes.planes = st.slicePlanes;
-    s.planes.planeScaling = st.slicePlaneScaling;
-    s.planes.eightBitTarget = st.sliceTarget == SliceTarget::Rgba8Channels;
-    s.planes.range = st.sliceRange;
-    s.planes.ambient = st.sliceAmbient;
+    s.planes.planes = st.planeCount;
+    s.planes.planeScaling = st.planeScaling;
+    s.planes.eightBitTarget = st.planeTarget == PlaneTarget::Rgba8Channels;
+    s.planes.range = st.planeRange;
+    s.planes.ambient = st.planeAmbient;
     s.planes.noiseAmplitude = st.noiseAmplitude;
     s.planes.noiseScale = st.noiseScale;
     s.planes.noiseVelocity = {st.noiseVelocity[0], st.noiseVelocity[1], st.noiseVelocity[2],
                               st.noiseVelocity[3]};
-    s.sliceTarget = st.sliceTarget;
-    s.sliceBlur = st.sliceBlur;
-    s.sliceDither = st.sliceDither;
+    s.planeTarget = st.planeTarget;
+    s.planeBlur = st.planeBlur;
+    s.planeDither = st.planeDither;
     s.cone = {st.coneSamples, st.coneLimited, st.coneJitter};
     s.shadowSampling = st.shadowSampling;
     s.noise = st.noiseAmplitude > 0.0f;

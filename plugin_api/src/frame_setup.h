@@ -66,8 +66,8 @@ void setupLight(FrameSetup& setup, const LightInput& light, const LightPaths& pa
 // The settings a frame runs with: `custom`, with the profile's sizes where the profile is not
 // Custom (Settings' comments say which fields those are).
 Settings mergedSettings(Profile profile, const Settings& custom);
-// `s` with the profile's sizes (its slices, samplesPerSlice, shadowMapSize, slicePlanes and
-// sliceTarget); Custom leaves it as it is.
+// `s` with the profile's sizes (its slices, samplesPerSlice, shadowMapSize, planeCount and
+// planeTarget); Custom leaves it as it is.
 Settings withProfileSizes(Settings s, Profile profile);
 void checkSettings(const Settings& s, const std::string& at = "custom");
 void checkOccluders(const std::vector<Occluder>& occluders);

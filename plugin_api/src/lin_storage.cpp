@@ -46,7 +46,7 @@ float linStorageScale(const FrameSetup& s) {
             lin = I * scatter / betaT;
         } else {
             const double r0 = std::max(double(s.light.radius), 1e-6);
-            lin = I * scatter * (kPi / r0 + double(s.settings.sliceAmbient) / betaT);
+            lin = I * scatter * (kPi / r0 + double(s.settings.planeAmbient) / betaT);
         }
         if (!s.simplified) lin *= std::exp(-betaT * apart);
         bound = std::max(bound, lin);

@@ -11,8 +11,8 @@ namespace lightscatter::detail {
 // denominator), betaS = betaR + betaM and betaT the extinction:
 //   directional    E (betaR pR + betaM pM) / betaT  (the transmittance integrates to 1 / betaT)
 //   point, spot    I (betaR pR + betaM pM) (pi / r0 + ambient / betaT)
-//                  (1 / (r^2 + r0^2) integrates to at most pi / r0 along any line; slices'
-//                  ambient term is constant)
+//                  (1 / (r^2 + r0^2) integrates to at most pi / r0 along any line; the
+//                  planes' ambient term is constant)
 //   simplified     I betaS pi / (4 pi a1 w), w = sqrt(max(a0 / a1, 1e-12)) (its arctangent)
 // times exp(-betaT d) for a point or spot light d away from the camera (its light has crossed at
 // least that much medium), and returns 1 while the bound is at most 16384 (a frame of ordinary

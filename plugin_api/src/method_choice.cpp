@@ -66,7 +66,7 @@ MethodChoice autoChoice(const FrameSetup& s, bool lightReachesView) {
                    "this frame's light is directional (use lightModel full)");
         if (s.noise)
             refuse(set + ".lightModel = simplified and " + set +
-                   ".noiseAmplitude > 0: no method honours both (the noise is slices', the "
+                   ".noiseAmplitude > 0: no method honours both (the noise is planes', the "
                    "simplified model beam-tree-analytic's and analytic's)");
         if (skipShadows)
             refuse(set + ".lightModel = simplified and " + set +
@@ -89,10 +89,10 @@ MethodChoice autoChoice(const FrameSetup& s, bool lightReachesView) {
     if (s.noise) {
         if (!s.depthAttachment)
             refuse(set +
-                   ".noiseAmplitude > 0 needs method slices, which depth-tests against the "
+                   ".noiseAmplitude > 0 needs method planes, which depth-tests against the "
                    "engine's depth: depth.usage needs DEPTH_STENCIL_ATTACHMENT beside SAMPLED");
-        return pick(Method::Slices, "scrolling noise (" + set +
-                                        ".noiseAmplitude > 0): seed 002's slice planes, the only "
+        return pick(Method::Planes, "scrolling noise (" + set +
+                                        ".noiseAmplitude > 0): seed 002's planes, the only "
                                         "method that samples it");
     }
     if (skipShadows)

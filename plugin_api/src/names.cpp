@@ -9,19 +9,28 @@ namespace {
 
 constexpr const char* kAutoName = "auto";
 
+// Names a method had before, still parsed so that command lines and files written with them keep
+// working; methodName() and methodNames() give only the current ones. "slices" was the planes
+// method's name until "slice" came to mean only an epipolar line.
+struct FormerName {
+    const char* name;
+    Method method;
+};
+constexpr FormerName kFormerNames[] = {{"slices", Method::Planes}};
+
 struct ProfileRow {
     Profile profile;
     const char* name;
     uint32_t slices, samples, shadowMap;
-    uint32_t planes;  // the slices method (seed 002)
-    SliceTarget sliceTarget;
+    uint32_t planes;  // the planes method (seed 002)
+    PlaneTarget planeTarget;
 };
 
 // Seed 000, "Performance": 2560x1600 on a GeForce GTX 680 and the smaller set used on a Quadro
 // 1000M and Intel HD Graphics. The plane counts are ours (docs/methods.md); high-performance is
 // seed 002's own configuration, 100 planes into the four channels of an 8-bit target.
-constexpr SliceTarget kF16 = SliceTarget::Float16, kF32 = SliceTarget::Float32,
-                      kRgba8 = SliceTarget::Rgba8Channels;
+constexpr PlaneTarget kF16 = PlaneTarget::Float16, kF32 = PlaneTarget::Float32,
+                      kRgba8 = PlaneTarget::Rgba8Channels;
 constexpr ProfileRow kProfiles[] = {
     {Profile::HighQuality, "high-quality", 2048, 1024, 4096, 256, kF32},
     {Profile::Balanced, "balanced", 1024, 1024, 2048, 128, kF16},
@@ -60,6 +69,8 @@ std::optional<Method> parseMethod(const std::string& name) {
     const auto& all = ls::methodRegistry();
     for (size_t i = 0; i < all.size(); ++i)
         if (name == all[i]->name()) return static_cast<Method>(i);
+    for (const auto& former : kFormerNames)
+        if (name == former.name) return former.method;
     return std::nullopt;
 }
 
@@ -93,8 +104,8 @@ Settings detail::withProfileSizes(Settings s, Profile profile) {
         s.slices = row.slices;
         s.samplesPerSlice = row.samples;
         s.shadowMapSize = row.shadowMap;
-        s.slicePlanes = row.planes;
-        s.sliceTarget = row.sliceTarget;
+        s.planeCount = row.planes;
+        s.planeTarget = row.planeTarget;
     }
     return s;
 }

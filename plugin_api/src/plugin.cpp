@@ -12,6 +12,7 @@
 #include "graph_config.h"
 #include "lin_storage.h"
 #include "method_choice.h"
+#include "planes/tiling_noise.h"
 #include "rendergraph/compile.h"
 #include "rendergraph/device_caps_vulkan.h"
 #include "rendergraph/executor.h"
@@ -20,7 +21,6 @@
 #include "rendergraph/report.h"
 #include "rendergraph/vk_error.h"
 #include "shared/point_table.h"
-#include "slices/tiling_noise.h"
 
 namespace lightscatter {
 

@@ -1,11 +1,11 @@
 """The command line of scripts/write_report.py:
 
-    write_report.py BENCH HARD CONFIG [SLICES OCCLUDERS LIGHTS_SCALING LIGHTS FLICKER ERRORS TREES SEED]
+    write_report.py BENCH HARD CONFIG [PLANES OCCLUDERS LIGHTS_SCALING LIGHTS FLICKER ERRORS TREES SEED]
         the whole page, on stdout (scripts/make-report.sh runs it; an empty folder argument leaves
         its section out)
     write_report.py --NAME-section DIR... [PAGE.md]
         one section alone, on stdout, or spliced into PAGE.md in place (the rest of the page is
-        left as it is)"""
+        left as it is); --slices-section is --planes-section's former name"""
 import argparse
 from pathlib import Path
 
@@ -15,7 +15,7 @@ from .gpu import GPU_HEADING, gpu_section
 from .lights import LIGHTS_HEADING, lights_section
 from .occluders import OCCLUDERS_HEADING, occluders_section
 from .page import page_lines
-from .slices import slices_section
+from .planes import FORMER_HEADING, PLANES_HEADING, planes_section
 
 
 def flicker_lines(dirs, page):
@@ -24,12 +24,15 @@ def flicker_lines(dirs, page):
     return flicker.flicker_section(dirs[0], image_dir), flicker.FLICKER_HEADING
 
 
-def slices_lines(dirs, page):
-    lines = slices_section(dirs[0])
-    return lines, lines[0].rstrip("\n")
+def planes_lines(dirs, page):
+    lines = planes_section(dirs[0])
+    heading = lines[0].rstrip("\n")
+    # A page written before the rename has the section under its former heading.
+    return lines, (heading, heading.replace(PLANES_HEADING, FORMER_HEADING))
 
 
-# --NAME-section: (its result folders, what they are, the section's lines and heading).
+# --NAME-section: (its result folders, what they are, the section's lines and heading, or its
+# headings: common.splice_section).
 SECTIONS = {
     "gpu": (("GPU_DIR",), "scripts/gpu-bench.sh run's OUT",
             lambda dirs, page: (gpu_section(dirs[0]), GPU_HEADING)),
@@ -38,11 +41,15 @@ SECTIONS = {
                   lambda dirs, page: (occluders_section(dirs[0]), OCCLUDERS_HEADING)),
     "lights": (("SCALING_DIR", "LIGHTS_DIR"), "bench runs of bench/lights_scaling.json and bench/lights.json",
                lambda dirs, page: (lights_section(dirs[0], dirs[1]), LIGHTS_HEADING)),
-    "slices": (("SLICES_DIR",), "a bench run of bench/slices.json", slices_lines),
+    "planes": (("PLANES_DIR",), "a bench run of bench/planes.json", planes_lines),
 }
 
+# Options under the names they had before: the planes section was "slices" until the word came to
+# mean only an epipolar line.
+FORMER_OPTIONS = {"planes": ("--slices-section",)}
+
 # The whole page's optional result folders, in their order on the command line.
-PAGE_FOLDERS = (("slices", "bench/slices.json"), ("occluders", "bench/occluders.json"),
+PAGE_FOLDERS = (("planes", "bench/planes.json"), ("occluders", "bench/occluders.json"),
                 ("lights_scaling", "bench/lights_scaling.json"), ("lights", "bench/lights.json"),
                 ("flicker", "bench/flicker.json"),
                 ("errors", "the main configuration's error run (one frame each), merged into BENCH's rows"),
@@ -54,7 +61,7 @@ def parser():
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     one = p.add_mutually_exclusive_group()
     for name, (folders, what, _) in SECTIONS.items():
-        one.add_argument(f"--{name}-section", nargs="+", metavar="DIR",
+        one.add_argument(f"--{name}-section", *FORMER_OPTIONS.get(name, ()), nargs="+", metavar="DIR",
                          help=f"{' '.join(folders)} [PAGE.md]: {what}")
     p.add_argument("bench", nargs="?", metavar="BENCH",
                    help="the main bench run (bench.json and budget.json; scripts/make-report.sh)")

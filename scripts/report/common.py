@@ -43,10 +43,12 @@ def load_note(bench_dir):
 
 def splice_section(page, heading, lines, before="## Scaling"):
     """`page` (Markdown) with the section starting at `heading` replaced by `lines`, up to the next
-    '## ' heading; inserted before the `before` heading if the page has none yet."""
+    '## ' heading; inserted before the `before` heading if the page has none yet. `heading` may be a
+    tuple: the section's heading, then the ones it had on pages written before it was renamed."""
     text = page.split("\n")
     section = "\n".join(lines).rstrip("\n").split("\n") + [""]
-    if heading in text:
+    heading = next((h for h in ((heading,) if isinstance(heading, str) else heading) if h in text), None)
+    if heading:
         start = text.index(heading)
         end = next((i for i in range(start + 1, len(text)) if text[i].startswith("## ")), len(text))
         return "\n".join(text[:start] + section + text[end:])

@@ -26,7 +26,7 @@ def hard_section(hard):
         return ({n: float(v) for n, v in re.findall(r'\{"(\w+)", ([\d.]+)\}', block)},
                 float(re.search(end + r" = ([\d.]+)", test).group(1)))
     # The methods beside epipolar and brute force, each with its bounds in the test.
-    others = [("slices", *named_bounds("kSlicesBounds", "kSlicesDefault")),
+    others = [("planes", *named_bounds("kPlanesBounds", "kPlanesDefault")),
               ("beam-tree-analytic", *named_bounds("kBeamTreeBounds", "kBeamTreeDefault")),
               ("beam-tree-sampling", *named_bounds("kBeamTreeSamplingBounds", "kBeamTreeSamplingDefault"))]
     header = "| case | epipolar error | bound | brute-force error | bound |"
@@ -42,12 +42,14 @@ def hard_section(hard):
         line = (f"| {scene.replace('_', ' ')} | {fmt(epi['error']['meanRelative'])} | {b[0]} | "
                 f"{fmt(bf['error']['meanRelative'])} | {b[1]} |")
         for name, table, fallback in others:
-            r = next((r for r in hard if r["scene"] == scene and r["method"] == name), None)
+            # "slices": the planes method's name in runs made before it was renamed.
+            names = ("planes", "slices") if name == "planes" else (name,)
+            r = next((r for r in hard if r["scene"] == scene and r["method"] in names), None)
             if r:
                 nonfinite += r['nonFinite']
                 line += f" {fmt(r['error']['meanRelative'])} | {table.get(scene, fallback)} |"
             else:
-                line += " - | - |"  # not run: a directional light (beam tree), a cube map (slices, beam tree)
+                line += " - | - |"  # not run: a directional light (beam tree), a cube map (planes, beam tree)
         p(line + f" {nonfinite} |")
     p("\nThe beam-tree methods run on the point and spot cases only (\"-\": a directional light). The host "
       "gives them one box per connected part of the scene's glTF primitives. A point light's cube shadow map "

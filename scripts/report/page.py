@@ -15,11 +15,11 @@ from .profiles import profiles_section
 from .scaling import scaling_section
 from .scenes import scene_sections
 from .seed import seed_section
-from .slices import slices_section
+from .planes import planes_section
 from .summary import summary_lines
 
 
-def page_lines(bench_dir, hard_dir, config, slices_dir=None, occluders_dir=None, lights_scaling_dir=None,
+def page_lines(bench_dir, hard_dir, config, planes_dir=None, occluders_dir=None, lights_scaling_dir=None,
                lights_dir=None, flicker_dir=None, errors_dir=None, trees_dir=None, seed_dir=None):
     """The page's lines from the main run (bench_dir, with budget.json), the hard-case suite's run and
     the configuration's name; every other folder may be None, and its section is then left out (the
@@ -61,8 +61,8 @@ def page_lines(bench_dir, hard_dir, config, slices_dir=None, occluders_dir=None,
     scenes = sorted({r["scene"] for r in runs})
     out += scene_sections(runs, scenes)
     out += cone_section(runs, scenes)
-    if slices_dir and (slices_dir / "bench.json").exists():
-        out += slices_section(slices_dir)
+    if planes_dir and (planes_dir / "bench.json").exists():
+        out += planes_section(planes_dir)
     if occluders_dir and (occluders_dir / "bench.json").exists():
         out += occluders_section(occluders_dir)
     if lights_scaling_dir or lights_dir:

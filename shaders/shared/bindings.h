@@ -13,7 +13,7 @@
 #define LS_BINDING_SHADOW_MAP 6     // the light's shadow map (a 2D array for a point light's cube)
 #define LS_BINDING_POINT_TABLE 7    // the point-light table (point_table.comp)
 #define LS_BINDING_LIGHT_COLOR 8    // the light-space color texture
-#define LS_BINDING_NOISE 9          // slices' tiling noise (repeating)
+#define LS_BINDING_NOISE 9          // the planes' tiling noise (repeating)
 #define LS_BINDING_ENGINE_COLOR 10  // composite_into.glsl: the engine's color, read-modify-written
 #define LS_BINDING_LIN_OUT 11       // composite_into.glsl: the Lin output image
 
@@ -21,7 +21,7 @@
 #define LS_BINDING_POINT_TABLE_OUT 1       // point_table.comp
 #define LS_BINDING_COMPOSITE_LIN 3         // composite.comp: Lin as a method left it
 #define LS_BINDING_NOISE_OUT 0             // tiling_noise.comp
-#define LS_BINDING_PLANE_SUM 2             // slice_resolve.frag
+#define LS_BINDING_PLANE_SUM 2             // plane_resolve.frag
 #define LS_BINDING_BEAM_TRIANGLES 3        // triangles.vert
 #define LS_BINDING_SLICE_END_POINTS_OUT 1  // slice_end_points.comp
 // epipolar_coordinates.frag
@@ -70,9 +70,9 @@
 #define LS_SPEC_CONE_SAMPLES 10  // cone_march.frag
 #define LS_SPEC_CONE_LIMITED 11
 #define LS_SPEC_CONE_JITTER 12
-#define LS_SPEC_PLANES_CHANNELS 10  // slice_planes.frag
+#define LS_SPEC_PLANES_CHANNELS 10  // planes.frag
 #define LS_SPEC_PLANES_DITHER 11
-#define LS_SPEC_RESOLVE_CHANNELS 10  // slice_resolve.frag
+#define LS_SPEC_RESOLVE_CHANNELS 10  // plane_resolve.frag
 #define LS_SPEC_RESOLVE_BLUR_RADIUS 11
 #define LS_SPEC_RESOLVE_CLOSED_FORM_OUTSIDE_SLAB 12
 #define LS_SPEC_UNCLIPPED_DEPTH 20  // triangles.vert

@@ -1,7 +1,7 @@
 // What reaches one point of a camera ray from the light: the irradiance of docs/model.md (with the
 // light's extinction on the way, the spot's cone and range), times shadow-map visibility and the
 // light color when the including shader has them, and the cosine of the scattering angle. Used by
-// the methods that sample the integrand at points (cone-march, slices, the beam-tree methods'
+// the methods that sample the integrand at points (cone-march, planes, the beam-tree methods'
 // sampling planes). With kSimplifiedModel (seed 004's light model, simplified.glsl) the irradiance
 // is I / (a1 r^2 + a0) without extinction, and towardCamera() drops the transmittance to the camera
 // and the phase function's shape: a shader that samples the integrand as

@@ -401,4 +401,56 @@ TEST(BenchConfigInput, RepeatedKeysAndLongValues) {
     EXPECT_LE(method.size(), 400u) << method;  // the known methods follow
 }
 
+// "slices", the planes method's former name, in the method lists, and its sweeps' former keys
+// (sweeps.slicePlanes, sweeps.sliceTargets) expand to the runs the current names do, which say
+// "planes"; one sweep under both names is refused, naming both.
+TEST(BenchConfigInput, FormerNamesOfThePlanesMethodAndItsSweeps) {
+    const auto dir = std::filesystem::temp_directory_path() /
+                     ("ls_bench_motion_test_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    const auto file = dir / "planes.json";
+    auto runs = [&](const std::string& text) {
+        std::ofstream(file) << text;
+        std::vector<std::string> out;
+        for (const auto& r : host::bench::loadBenchConfig(file.string(), LS_SOURCE_DIR).runs)
+            out.push_back(r.label + " / " + r.family + " / " + lightscatter::methodName(r.method) +
+                          " / " + std::to_string(r.settings.planeCount) + " " +
+                          (r.settings.planeTarget == lightscatter::PlaneTarget::Rgba8Channels
+                               ? (r.settings.planeDither ? "rgba8-dither" : "rgba8")
+                               : "float"));
+        return out;
+    };
+    // A scene's own method list, and the configuration's.
+    const auto former = runs(R"({"scenes": ["scenes/atrium.json", {"scene":
+        "scenes/window_room.json", "methods": ["slices"]}], "methods": ["epipolar", "slices"],
+        "sweeps": {"slicePlanes": [64], "sliceTargets": ["rgba8", "rgba8-dither"]}})");
+    const auto current = runs(R"({"scenes": ["scenes/atrium.json", {"scene":
+        "scenes/window_room.json", "methods": ["planes"]}], "methods": ["epipolar", "planes"],
+        "sweeps": {"planeCount": [64], "planeTargets": ["rgba8", "rgba8-dither"]}})");
+    EXPECT_EQ(former, current);
+    const std::vector<std::string> planes{"planes / profiles / planes / 128 float",
+                                          "planes 64 rgba8 / planes / planes / 64 rgba8",
+                                          "planes 64 rgba8-dither / planes / planes / 64 "
+                                          "rgba8-dither"};
+    std::vector<std::string> expected{"epipolar balanced / profiles / epipolar / 128 float"};
+    expected.insert(expected.end(), planes.begin(), planes.end());  // atrium
+    expected.insert(expected.end(), planes.begin(), planes.end());  // window_room
+    EXPECT_EQ(former, expected);
+    EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"],
+                              "sweeps": {"planeCount": [64], "slicePlanes": [128]}})"),
+              "sweeps.slicePlanes and sweeps.planeCount are one sweep (slicePlanes is its former "
+              "name): give it once");
+    EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"], "sweeps": {"planeCount": [64],
+                              "planeTargets": ["rgba8"], "sliceTargets": ["float32"]}})"),
+              "sweeps.sliceTargets and sweeps.planeTargets are one sweep (sliceTargets is its "
+              "former name): give it once");
+    // The messages name the key as the file gave it.
+    EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"], "sweeps": {"slicePlanes": [1]}})"),
+              "sweeps.slicePlanes[] = 1: must be a whole number from 2 to 4096");
+    EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"], "sweeps": {"slicePlanes": [64],
+                              "sliceTargets": ["rgba16"]}})"),
+              "sweeps.sliceTargets[] = \"rgba16\": must be float16, float32, rgba8 (the seed's "
+              "rounding) or rgba8-dither");
+}
+
 }  // namespace

@@ -341,11 +341,11 @@ std::vector<Row> rows() {
          false},
 
         // 10: every finite number renders finite values or is refused, naming the field and range.
-        {"AnAmbientTheSlicesCannotCarry",
-         {{"amb.json", R"({"sliceAmbient": 1e37})"}},
-         "render {scene:window_room} --method slices --settings amb.json --size 16x16",
+        {"AnAmbientThePlanesCannotCarry",
+         {{"amb.json", R"({"planeAmbient": 1e37})"}},
+         "render {scene:window_room} --method planes --settings amb.json --size 16x16",
          1,
-         "amb.json: sliceAmbient = 1e+37: must be in [0, 1e+06]"},
+         "amb.json: planeAmbient = 1e+37: must be in [0, 1e+06]"},
         {"ACoefficientTheShadersCannotCarry",
          {{"fog.json", R"({"medium": {"betaM": [3.4e38, 3.4e38, 3.4e38]}})"}},
          "render fog.json --method cone-march --size 16x16",

@@ -1,7 +1,7 @@
 // Numbers single precision cannot carry (issue #22): refused by the command line before any
 // device exists, naming the scene's field, or rendered as they should be. A near plane of 1e-8 m
 // used to leave 2,286 of 2,304 pixels black with every depth convention, a field of view of 1e-20
-// degrees a black image, and sliceAmbient 1e37 an all-NaN Lin; each exited 0.
+// degrees a black image, and planeAmbient 1e37 an all-NaN Lin; each exited 0.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -89,9 +89,9 @@ TEST(CliNumbers, AFieldOfViewSinglePrecisionCannotResolveIsRefused) {
 }
 
 TEST(CliNumbers, AnAmbientTermThatOverflowsIsRefused) {
-    writeFile("ambient.json", R"({"sliceAmbient": 1e37})");
+    writeFile("ambient.json", R"({"planeAmbient": 1e37})");
     const auto r = run("render " + sceneWithCamera("a.json", R"("near": 0.1)") +
-                       " --method slices --settings ambient.json");
-    expectFailure(r, "ambient.json: sliceAmbient = 1e+37: must be in [0, 1e+06]");
+                       " --method planes --settings ambient.json");
+    expectFailure(r, "ambient.json: planeAmbient = 1e+37: must be in [0, 1e+06]");
     EXPECT_EQ(r.out.find("using Vulkan device"), std::string::npos) << r.out;
 }

@@ -53,12 +53,12 @@ const std::map<std::string, Bound> kBounds = {
 };
 constexpr Bound kDefault{0.02, 0.01, 0.015, 1.0};
 
-// slices (seed 002, balanced: 128 planes into a float16 target) samples each ray at the planes'
+// planes (seed 002, balanced: 128 planes into a float16 target) samples each ray at the planes'
 // midpoints from the near plane on: it misses the head of a ray that starts at a light (measured
 // 0.855 point_at_camera, 0.787 spot_at_camera), and the peak of 1/r^2 between two planes beside a
 // light (0.26 light_on_edge, 0.16 light_corner, 0.14 light_center, 0.135 dense_medium, 0.109
 // ray_through_point_light), at most 0.076 elsewhere (docs/methods.md).
-const std::map<std::string, double> kSlicesBounds = {
+const std::map<std::string, double> kPlanesBounds = {
     {"point_at_camera", 1.0},
     {"spot_at_camera", 0.95},
     {"light_on_edge", 0.32},
@@ -69,11 +69,11 @@ const std::map<std::string, double> kSlicesBounds = {
     {"thin_medium_km", 0.002},
     {"low_sun_city", 0.05},  // measured 0.025: 128 planes across 20 km
 };
-constexpr double kSlicesDefault = 0.1;
+constexpr double kPlanesDefault = 0.1;
 
 // beam-tree-analytic (seed 004, a box per connected part of the glTF's primitives as occluders)
 // integrates the lit space in closed form, which on these cases is nearly all the light's volume in
-// view; the uncertain space behind the boxes is sampled by slices' planes. Measured 0.0296
+// view; the uncertain space behind the boxes is sampled by seed 002's planes. Measured 0.0296
 // point_at_camera, 0.0273 spot_at_camera (planes near the light, behind a box), 0.009 light_center,
 // at most 0.0016 elsewhere.
 const std::map<std::string, double> kBeamTreeBounds = {
@@ -83,10 +83,10 @@ const std::map<std::string, double> kBeamTreeBounds = {
 };
 constexpr double kBeamTreeDefault = 0.005;
 
-// beam-tree-sampling (seed 004 5.3) draws slices' planes where the tree says lit or uncertain
-// (float32 target), so it has slices' errors: measured 0.854 point_at_camera, 0.784 spot_at_camera,
-// 0.263 light_on_edge, 0.161 light_corner, 0.142 light_center, 0.134 dense_medium, 0.102
-// ray_through_point_light, at most 0.076 elsewhere.
+// beam-tree-sampling (seed 004 5.3) draws seed 002's planes where the tree says lit or uncertain
+// (float32 target), so it has the planes method's errors: measured 0.854 point_at_camera, 0.784
+// spot_at_camera, 0.263 light_on_edge, 0.161 light_corner, 0.142 light_center, 0.134
+// dense_medium, 0.102 ray_through_point_light, at most 0.076 elsewhere.
 const std::map<std::string, double> kBeamTreeSamplingBounds = {
     {"point_at_camera", 1.0},
     {"spot_at_camera", 0.95},
@@ -119,7 +119,7 @@ TEST_F(HardSuite, EveryCaseIsFiniteAndWithinItsBound) {
         for (lightscatter::Method method :
              {lightscatter::Method::Epipolar, lightscatter::Method::BruteForce,
               lightscatter::Method::ConeMarch, lightscatter::Method::Analytic,
-              lightscatter::Method::Slices, lightscatter::Method::BeamTreeAnalytic,
+              lightscatter::Method::Planes, lightscatter::Method::BeamTreeAnalytic,
               lightscatter::Method::BeamTreeSampling}) {
             // Seed 001's closed form only takes unshadowed point and spot lights (refusals: Cli
             // tests).
@@ -158,8 +158,8 @@ TEST_F(HardSuite, EveryCaseIsFiniteAndWithinItsBound) {
                 : method == lightscatter::Method::BeamTreeSampling
                     ? (kBeamTreeSamplingBounds.count(name) ? kBeamTreeSamplingBounds.at(name)
                                                            : kBeamTreeSamplingDefault)
-                : kSlicesBounds.count(name) ? kSlicesBounds.at(name)
-                                            : kSlicesDefault;
+                : kPlanesBounds.count(name) ? kPlanesBounds.at(name)
+                                            : kPlanesDefault;
             EXPECT_LE(e.meanRelative, limit)
                 << name << " (" << lightscatter::methodName(method) << ")";
             if (method != lightscatter::Method::Epipolar) continue;

@@ -186,7 +186,7 @@ TEST_F(PointCageGpu, OnlyEpipolarAndBruteForceSampleTheCubeMap) {
     options.profile = lightscatter::Profile::Balanced;
     for (lightscatter::Method m :
          {lightscatter::Method::Analytic, lightscatter::Method::ConeMarch,
-          lightscatter::Method::Slices, lightscatter::Method::BeamTreeAnalytic,
+          lightscatter::Method::Planes, lightscatter::Method::BeamTreeAnalytic,
           lightscatter::Method::BeamTreeSampling}) {
         options.method = m;
         try {

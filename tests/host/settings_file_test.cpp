@@ -72,17 +72,17 @@ TEST_F(HostSettingsFile, EveryFieldByName) {
     EXPECT_TRUE(c.coneJitter);
     EXPECT_FALSE(c.shadowSampling);
 
-    const lightscatter::Settings p = load(R"({"slicePlanes": 200, "sliceTarget": "rgba8",
-        "slicePlaneScaling": true, "sliceRange": 0.5, "sliceDither": false, "sliceBlur": 3,
-        "sliceAmbient": 0.02, "noiseAmplitude": 0.75, "noiseScale": 2.5,
+    const lightscatter::Settings p = load(R"({"planeCount": 200, "planeTarget": "rgba8",
+        "planeScaling": true, "planeRange": 0.5, "planeDither": false, "planeBlur": 3,
+        "planeAmbient": 0.02, "noiseAmplitude": 0.75, "noiseScale": 2.5,
         "noiseVelocity": [0.1, -0.2, 0.3, -0.4]})");
-    EXPECT_EQ(p.slicePlanes, 200u);
-    EXPECT_EQ(p.sliceTarget, lightscatter::SliceTarget::Rgba8Channels);
-    EXPECT_TRUE(p.slicePlaneScaling);
-    EXPECT_FLOAT_EQ(p.sliceRange, 0.5f);
-    EXPECT_FALSE(p.sliceDither);
-    EXPECT_EQ(p.sliceBlur, 3u);
-    EXPECT_FLOAT_EQ(p.sliceAmbient, 0.02f);
+    EXPECT_EQ(p.planeCount, 200u);
+    EXPECT_EQ(p.planeTarget, lightscatter::PlaneTarget::Rgba8Channels);
+    EXPECT_TRUE(p.planeScaling);
+    EXPECT_FLOAT_EQ(p.planeRange, 0.5f);
+    EXPECT_FALSE(p.planeDither);
+    EXPECT_EQ(p.planeBlur, 3u);
+    EXPECT_FLOAT_EQ(p.planeAmbient, 0.02f);
     EXPECT_FLOAT_EQ(p.noiseAmplitude, 0.75f);
     EXPECT_FLOAT_EQ(p.noiseScale, 2.5f);
     EXPECT_EQ(p.noiseVelocity, (std::array<float, 4>{0.1f, -0.2f, 0.3f, -0.4f}));
@@ -92,10 +92,50 @@ TEST_F(HostSettingsFile, EveryFieldByName) {
     EXPECT_FLOAT_EQ(m.simplifiedA0, 0.04f);
     EXPECT_FLOAT_EQ(m.simplifiedA1, 0.5f);
     EXPECT_EQ(load(R"({"lightModel": "full"})").lightModel, lightscatter::LightModel::Full);
-    EXPECT_EQ(load(R"({"sliceTarget": "float16"})").sliceTarget,
-              lightscatter::SliceTarget::Float16);
-    EXPECT_EQ(load(R"({"sliceTarget": "float32"})").sliceTarget,
-              lightscatter::SliceTarget::Float32);
+    EXPECT_EQ(load(R"({"planeTarget": "float16"})").planeTarget,
+              lightscatter::PlaneTarget::Float16);
+    EXPECT_EQ(load(R"({"planeTarget": "float32"})").planeTarget,
+              lightscatter::PlaneTarget::Float32);
+}
+
+// The planes method's fields under their former names (named after "slice" until the word came
+// to mean only an epipolar line) read as the fields; a file that gives one field under both names
+// is refused, naming both, and the plugin's rules name the field as the file gave it.
+TEST_F(HostSettingsFile, FormerNamesOfThePlaneFieldsStillRead) {
+    const lightscatter::Settings p = load(R"({"slicePlanes": 200, "sliceTarget": "rgba8",
+        "slicePlaneScaling": true, "sliceRange": 0.5, "sliceDither": false, "sliceBlur": 3,
+        "sliceAmbient": 0.02})");
+    EXPECT_EQ(p.planeCount, 200u);
+    EXPECT_EQ(p.planeTarget, lightscatter::PlaneTarget::Rgba8Channels);
+    EXPECT_TRUE(p.planeScaling);
+    EXPECT_FLOAT_EQ(p.planeRange, 0.5f);
+    EXPECT_FALSE(p.planeDither);
+    EXPECT_EQ(p.planeBlur, 3u);
+    EXPECT_FLOAT_EQ(p.planeAmbient, 0.02f);
+    // Old and new names mix, one name per field.
+    const lightscatter::Settings mixed = load(R"({"slicePlanes": 64, "planeTarget": "float32"})");
+    EXPECT_EQ(mixed.planeCount, 64u);
+    EXPECT_EQ(mixed.planeTarget, lightscatter::PlaneTarget::Float32);
+
+    struct Names {
+        const char *former, *current, *value;
+    };
+    for (const Names& n :
+         {Names{"slicePlanes", "planeCount", "64"},
+          Names{"sliceTarget", "planeTarget", "\"float32\""},
+          Names{"slicePlaneScaling", "planeScaling", "true"},
+          Names{"sliceRange", "planeRange", "0.5"}, Names{"sliceDither", "planeDither", "false"},
+          Names{"sliceBlur", "planeBlur", "2"}, Names{"sliceAmbient", "planeAmbient", "0.01"}}) {
+        const std::string former = n.former, current = n.current, value = n.value;
+        EXPECT_EQ(
+            errorFor("{\"" + current + "\": " + value + ", \"" + former + "\": " + value + "}"),
+            former + " and " + current + " are one field (" + former +
+                " is its former name): give it once");
+    }
+    EXPECT_EQ(errorFor(R"({"sliceTarget": "rgba16"})"),
+              "sliceTarget = \"rgba16\": must be one of float16, float32, rgba8");
+    EXPECT_EQ(errorFor(R"({"slicePlanes": 1})"), "slicePlanes = 1: must be between 2 and 4096");
+    EXPECT_EQ(errorFor(R"({"sliceBlur": 9})"), "sliceBlur = 9: at most 8 pixels");
 }
 
 TEST_F(HostSettingsFile, FieldsLeftOutKeepTheProfilesValues) {
@@ -132,21 +172,21 @@ TEST_F(HostSettingsFile, BadFieldsAreNamed) {
     EXPECT_EQ(errorFor(R"({"interpolation": 2})"),
               "interpolation = 2: must be one of shadowed-fraction, inscattering");
     EXPECT_EQ(errorFor(R"({"shadowMapSize": 0})"), "shadowMapSize = 0: must be from 1 to 16384");
-    EXPECT_EQ(errorFor(R"({"sliceTarget": "rgba16"})"),
-              "sliceTarget = \"rgba16\": must be one of float16, float32, rgba8");
+    EXPECT_EQ(errorFor(R"({"planeTarget": "rgba16"})"),
+              "planeTarget = \"rgba16\": must be one of float16, float32, rgba8");
     EXPECT_EQ(errorFor(R"({"noiseAmplitude": 2})"), "noiseAmplitude = 2: must be in [0, 1]");
     EXPECT_EQ(errorFor(R"({"noiseAmplitude": "loud"})"),
               "noiseAmplitude = \"loud\": must be a number");
-    EXPECT_EQ(errorFor(R"({"slicePlanes": 1})"), "slicePlanes = 1: must be between 2 and 4096");
-    EXPECT_EQ(errorFor(R"({"sliceBlur": 9})"), "sliceBlur = 9: at most 8 pixels");
-    EXPECT_EQ(errorFor(R"({"sliceDither": "yes"})"),
-              "sliceDither = \"yes\": must be true or false");
+    EXPECT_EQ(errorFor(R"({"planeCount": 1})"), "planeCount = 1: must be between 2 and 4096");
+    EXPECT_EQ(errorFor(R"({"planeBlur": 9})"), "planeBlur = 9: at most 8 pixels");
+    EXPECT_EQ(errorFor(R"({"planeDither": "yes"})"),
+              "planeDither = \"yes\": must be true or false");
     EXPECT_EQ(errorFor(R"({"noiseScale": 0})"),
               "noiseScale = 0: must be in [1e-06, 1e+08] (a tile's size; lightscatter.h, "
               "limits::kMinNoiseScale)");
-    // Rendered an all-NaN Lin with slices and exit 0 (issue #22): now refused before any device.
-    EXPECT_EQ(errorFor(R"({"sliceAmbient": 1e37})"),
-              "sliceAmbient = 1e+37: must be in [0, 1e+06] (1/m^2, beside the inverse square; "
+    // Rendered an all-NaN Lin with planes and exit 0 (issue #22): now refused before any device.
+    EXPECT_EQ(errorFor(R"({"planeAmbient": 1e37})"),
+              "planeAmbient = 1e+37: must be in [0, 1e+06] (1/m^2, beside the inverse square; "
               "lightscatter.h, limits::kMaxAmbient)");
     EXPECT_EQ(errorFor(R"({"noiseVelocity": [1, 2, 3]})"),
               "noiseVelocity = [1,2,3]: must be an array of 4 numbers");

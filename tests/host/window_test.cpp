@@ -72,15 +72,15 @@ TEST(Window, VeryBrightPixelsStayWhite) {
     EXPECT_EQ(white, w * h);
 }
 
-// Seed 002's slice planes in the window, with the scrolling noise on: each frame carries the time
+// Seed 002's planes in the window, with the scrolling noise on: each frame carries the time
 // since the window opened (FrameDescription::timeSeconds).
-TEST(Window, SlicesWithScrollingNoise) {
+TEST(Window, PlanesWithScrollingNoise) {
     ASSERT_EQ(std::system("command -v xvfb-run > /dev/null"), 0)
         << "xvfb-run is missing (Debian package xvfb)";
     const auto dir = std::filesystem::path(cli_test::scratch());
-    std::ofstream(dir / "noise.json") << R"({"noiseAmplitude": 0.5, "slicePlanes": 24})";
+    std::ofstream(dir / "noise.json") << R"({"noiseAmplitude": 0.5, "planeCount": 24})";
     const auto r = cli_test::run("view " + cli_test::scene("window_room") +
-                                     " --method slices --settings noise.json --size 64x36"
+                                     " --method planes --settings noise.json --size 64x36"
                                      " --frames 3 --screenshot noise.png --validation",
                                  "xvfb-run -a -s '-screen 0 640x480x24'");
     ASSERT_EQ(r.exitCode, 0) << r.out;

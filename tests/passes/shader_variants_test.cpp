@@ -13,10 +13,10 @@
 #include "epipolar/epipolar_shaders.h"
 #include "min_max_first_level_comp_variants.h"
 #include "pixel_march_frag_variants.h"
+#include "planes/plane_shaders.h"
+#include "planes_frag_variants.h"
 #include "ray_march_frag_variants.h"
 #include "shared/shared_shaders.h"
-#include "slice_planes_frag_variants.h"
-#include "slices/slice_shaders.h"
 #include "unshadowed_frag_variants.h"
 #include "unwarp_frag_variants.h"
 
@@ -87,12 +87,12 @@ TEST(ShaderVariants, ScreenLinNodesAskForBuiltVariants) {
         for (bool color : {false, true}) {
             reach(coneMarch, coneMarchShader(shadow, color));
             reach(planes, beamTreePlanesShader(shadow, color));
-            for (bool noise : {false, true}) reach(planes, slicePlanesShader(shadow, color, noise));
+            for (bool noise : {false, true}) reach(planes, planesShader(shadow, color, noise));
         }
     expectAllReached(ls_spirv::composite_comp_variants, composite);
     expectAllReached(ls_spirv::unshadowed_frag_variants, unshadowed);
     expectAllReached(ls_spirv::cone_march_frag_variants, coneMarch);
-    expectAllReached(ls_spirv::slice_planes_frag_variants, planes);
+    expectAllReached(ls_spirv::planes_frag_variants, planes);
 }
 
 TEST(ShaderVariants, CountingStepsIsAnotherBuild) {
@@ -112,9 +112,9 @@ std::string pickError(const ls_spirv::ShaderVariants& shader,
 
 TEST(ShaderVariants, BuildNotMadeIsOneClearError) {
     // The planes' shader is not built with a cookie and noise but no shadow map.
-    EXPECT_EQ(pickError(ls_spirv::slice_planes_frag_variants,
+    EXPECT_EQ(pickError(ls_spirv::planes_frag_variants,
                         {{"LS_SHADOW_MAP", 0}, {"LS_LIGHT_COLOR", 1}, {"LS_NOISE", 1}}),
-              "shader slice_planes.frag with [LS_SHADOW_MAP=0,LS_LIGHT_COLOR=1,LS_NOISE=1]: no "
+              "shader planes.frag with [LS_SHADOW_MAP=0,LS_LIGHT_COLOR=1,LS_NOISE=1]: no "
               "build has these defines (add it to shaders/CMakeLists.txt)");
     EXPECT_EQ(pickError(ls_spirv::cone_march_frag_variants, {{"LS_SHADOW_MAP", 1}}),
               "shader cone_march.frag with [LS_SHADOW_MAP=1]: the define LS_LIGHT_COLOR is not "

@@ -2,7 +2,7 @@
 // whole light volume and the closed form must match the unshadowed model (with the camera inside
 // the cone looking at the light too, and for a point light whose backplate lies past the far
 // plane); with occluders both methods converge to brute force, and beam-tree-sampling gives what
-// slices gives with the same planes; the simplified light model matches its closed form.
+// the planes method gives with the same planes; the simplified light model matches its closed form.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -171,8 +171,8 @@ FrameSpec shadowedGrille() {
 
 lightscatter::Settings planeSettings(uint32_t planes) {
     lightscatter::Settings s = smallSettings();
-    s.slicePlanes = planes;
-    s.sliceTarget = lightscatter::SliceTarget::Float32;
+    s.planeCount = planes;
+    s.planeTarget = lightscatter::PlaneTarget::Float32;
     return s;
 }
 
@@ -224,32 +224,33 @@ FrameSpec pointInView() {
 }  // namespace
 
 // Seed 004 5.3: clipping the planes to the tree's lit and uncertain space, and skipping the shadow
-// map in lit space, adds no error to slices' planes: the same planes give the same image.
-TEST_F(BeamTreeGpu, SamplingWithClippingIsSlicesWithTheSamePlanes) {
+// map in lit space, adds no error to the planes method's: the same planes give the same image.
+TEST_F(BeamTreeGpu, SamplingWithClippingIsThePlanesMethodWithTheSamePlanes) {
     TestFrame frame(dev(), shadowedGrille());
     for (uint32_t planes : {48u, 256u}) {
         std::string chosen;
         const std::vector<float> clipped =
             render(plugin(), frame, Method::BeamTreeSampling, planeSettings(planes), &chosen);
         EXPECT_EQ(chosen, "beam-tree-sampling");
-        const std::vector<float> slices =
-            render(plugin(), frame, Method::Slices, planeSettings(planes));
-        const ErrorStats e = compare(clipped, slices);
+        const std::vector<float> unclipped =
+            render(plugin(), frame, Method::Planes, planeSettings(planes));
+        const ErrorStats e = compare(clipped, unclipped);
         std::printf(
-            "%u planes: beam-tree-sampling against slices: mean %.2e, max %.2e of the peak\n",
+            "%u planes: beam-tree-sampling against planes: mean %.2e, max %.2e of the peak\n",
             planes, e.meanRelative, e.maxRelative);
         EXPECT_EQ(e.nonFinite, 0u);
         // Measured: mean 5e-6 and 1e-6, max 8e-3 and 2e-3 (a pixel where the box's edge and the
         // shadow map's texels disagree).
         EXPECT_LT(e.meanRelative, 2e-5);
         EXPECT_LT(e.maxRelative, 2e-2);
-        // Drawing no planes, or slices' planes unshadowed (the lit draw's shader for all), fails.
-        EXPECT_GT(compare(std::vector<float>(slices.size(), 0.0f), slices).meanRelative,
+        // Drawing no planes, or the planes unshadowed (the lit draw's shader for all), fails.
+        EXPECT_GT(compare(std::vector<float>(unclipped.size(), 0.0f), unclipped).meanRelative,
                   100 * 2e-5);
         lightscatter::Settings unshadowed = planeSettings(planes);
         unshadowed.shadowSampling = false;
-        EXPECT_GT(compare(render(plugin(), frame, Method::Slices, unshadowed), slices).meanRelative,
-                  10 * 2e-5);
+        EXPECT_GT(
+            compare(render(plugin(), frame, Method::Planes, unshadowed), unclipped).meanRelative,
+            10 * 2e-5);
     }
 }
 
@@ -340,8 +341,8 @@ TEST_F(BeamTreeGpu, SimplifiedModelMatchesSeed004sClosedFormPerPixel) {
     }
 }
 
-// An outer box around the light makes its whole volume uncertain, so the sampling planes (slices'
-// planes shader, through light_at.glsl) integrate all of it: with the simplified model they
+// An outer box around the light makes its whole volume uncertain, so the sampling planes (seed
+// 002's planes shader, through light_at.glsl) integrate all of it: with the simplified model they
 // converge to its closed form as the full model's converge to the float64 model.
 TEST_F(BeamTreeGpu, SimplifiedModelInTheSamplingPlanes) {
     TestFrame frame(dev(), flatSpot());
@@ -358,9 +359,9 @@ TEST_F(BeamTreeGpu, SimplifiedModelInTheSamplingPlanes) {
         return frame.inscatter();
     };
     auto simplified = simplifiedSettings(frame.spec().screen);
-    simplified.slicePlanes = 256;
+    simplified.planeCount = 256;
     auto full = smallSettings(frame.spec().screen);
-    full.slicePlanes = 256;
+    full.planeCount = 256;
     const std::vector<float> want = float64Simplified(frame, kA0, kA1);
     const ErrorStats s = compare(render(simplified), want);
     const ErrorStats f = compare(render(full), float64Unshadowed(frame));
@@ -379,7 +380,7 @@ TEST_F(BeamTreeGpu, SimplifiedModelInTheSamplingPlanes) {
 TEST_F(BeamTreeGpu, MethodsThatDoNotHonourTheSimplifiedModelRefuseIt) {
     TestFrame frame(dev(), flatSpot());
     const auto settings = simplifiedSettings(frame.spec().screen);
-    for (Method m : {Method::Epipolar, Method::BruteForce, Method::ConeMarch, Method::Slices}) {
+    for (Method m : {Method::Epipolar, Method::BruteForce, Method::ConeMarch, Method::Planes}) {
         try {
             run(frame, m, settings);
             ADD_FAILURE() << lightscatter::methodName(m) << " accepted the simplified light model";

@@ -2,8 +2,10 @@
 // figures.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <set>
+#include <type_traits>
 #include <vector>
 
 #include <lightscatter/lightscatter.h>
@@ -143,7 +145,7 @@ TEST(Budget, LightsAliasEachOther) {
                  lightscatter::InvalidInput);
     EXPECT_THROW(lightscatter::budget(Profile::Balanced, 256, 256, 256,
                                       std::vector<LightType>{LightType::Spot, LightType::Spot},
-                                      nullptr, lightscatter::Method::Slices),
+                                      nullptr, lightscatter::Method::Planes),
                  lightscatter::InvalidInput);
 }
 
@@ -217,6 +219,23 @@ TEST(Names, MethodsAndProfilesRoundTrip) {
     EXPECT_EQ(lightscatter::profileSettings(Profile::HighPerformance).samplesPerSlice, 512u);
 }
 
+// The planes method was "slices" until the word came to mean only an epipolar line: the former name
+// still parses, the current one is what is printed, and engines' source written against the former
+// C++ names compiles (with a deprecation warning, silenced here).
+TEST(Names, TheFormerNamesOfThePlanesMethodStillWork) {
+    EXPECT_EQ(lightscatter::parseMethod("slices"), lightscatter::Method::Planes);
+    EXPECT_EQ(lightscatter::parseMethod("planes"), lightscatter::Method::Planes);
+    EXPECT_STREQ(lightscatter::methodName(lightscatter::Method::Planes), "planes");
+    const auto names = lightscatter::methodNames();
+    EXPECT_EQ(std::count(names.begin(), names.end(), "slices"), 0);
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+    static_assert(std::is_same_v<lightscatter::SliceTarget, lightscatter::PlaneTarget>);
+    static_assert(lightscatter::Method::Slices == lightscatter::Method::Planes);
+    EXPECT_STREQ(lightscatter::methodName(lightscatter::Method::Slices), "planes");
+#pragma GCC diagnostic pop
+}
+
 // A shadow map of 1-3 texels has no two-level tree: the budget (like the frame) leaves the trees
 // out instead of failing inside the graph. 0 and oversized maps are refused naming the size.
 TEST(Budget, TinyShadowMapsHaveNoTrees) {
@@ -238,27 +257,26 @@ TEST(Budget, TinyShadowMapsHaveNoTrees) {
     }
 }
 
-// The slices method's memory per profile: its accumulation target in the profile's format, and the
+// The planes method's memory per profile: its accumulation target in the profile's format, and the
 // resolved Lin where the target is not Lin already; nothing of epipolar's.
-TEST(Budget, SlicesListsItsTargetPerProfile) {
+TEST(Budget, PlanesListsItsTargetPerProfile) {
     struct Row {
         Profile profile;
         const char* target;
         bool resolved;
     };
     for (const Row& row :
-         {Row{Profile::HighQuality, "slice planes' sum R32G32B32A32_SFLOAT", false},
-          Row{Profile::Balanced, "slice planes' sum R16G16B16A16_SFLOAT", false},
-          Row{Profile::HighPerformance, "slice planes' sum (8-bit channels) R8G8B8A8_UNORM",
-              true}}) {
+         {Row{Profile::HighQuality, "planes' sum R32G32B32A32_SFLOAT", false},
+          Row{Profile::Balanced, "planes' sum R16G16B16A16_SFLOAT", false},
+          Row{Profile::HighPerformance, "planes' sum (8-bit channels) R8G8B8A8_UNORM", true}}) {
         const auto b =
             lightscatter::budget(row.profile, 1920, 1080, 2048, lightscatter::LightType::Spot,
-                                 nullptr, lightscatter::Method::Slices);
+                                 nullptr, lightscatter::Method::Planes);
         std::set<std::string> seen;
         for (const auto& e : b.entries) seen.insert(e.name + " " + e.format);
         std::string all;
         for (const auto& s : seen) all += s + "; ";
-        std::printf("slices %-17s peak %6.1f MiB: %s\n", lightscatter::profileName(row.profile),
+        std::printf("planes %-17s peak %6.1f MiB: %s\n", lightscatter::profileName(row.profile),
                     static_cast<double>(b.peakBytes) / 1048576.0, all.c_str());
         EXPECT_TRUE(seen.count(row.target)) << all;
         EXPECT_EQ(seen.count("in-scattering (screen) R16G16B16A16_SFLOAT"), row.resolved ? 1u : 0u)
@@ -270,10 +288,10 @@ TEST(Budget, SlicesListsItsTargetPerProfile) {
     noisy.noiseAmplitude = 0.5f;
     const auto withNoise =
         lightscatter::budget(Profile::Balanced, 1920, 1080, 2048, lightscatter::LightType::Spot,
-                             &noisy, lightscatter::Method::Slices);
+                             &noisy, lightscatter::Method::Planes);
     const auto without =
         lightscatter::budget(Profile::Balanced, 1920, 1080, 2048, lightscatter::LightType::Spot,
-                             nullptr, lightscatter::Method::Slices);
+                             nullptr, lightscatter::Method::Planes);
     EXPECT_EQ(withNoise.peakBytes - without.peakBytes, 256u * 256u * 2u);
     try {
         (void)lightscatter::budget(Profile::Balanced, 1920, 1080, 2048,

@@ -193,10 +193,10 @@ TEST_F(LightsGpu, RefusalsNameTheFields) {
     const std::string o = refusal(ownBad);
     EXPECT_NE(o.find("lights[1].settings.slices"), std::string::npos) << o;
     // A method without chains for several lights refuses them, naming itself.
-    auto slices = withLights(da, {input(da), input(da)});
-    slices.method = Method::Slices;
-    const std::string s = refusal(slices);
-    EXPECT_NE(s.find("method slices"), std::string::npos) << s;
+    auto planes = withLights(da, {input(da), input(da)});
+    planes.method = Method::Planes;
+    const std::string s = refusal(planes);
+    EXPECT_NE(s.find("method planes"), std::string::npos) << s;
     // One light in the list is the single light, whatever the method.
     auto single = withLights(da, {input(da)});
     single.method = Method::ConeMarch;

@@ -26,10 +26,10 @@ std::vector<Case> cases() {
     std::vector<Case> c{
         {"sun",
          sceneWith(sunThroughGrille(), kScreen),
-         {Method::Epipolar, Method::BruteForce, Method::ConeMarch, Method::Slices}},
+         {Method::Epipolar, Method::BruteForce, Method::ConeMarch, Method::Planes}},
         {"spot",
          sceneWith(spotOverGrille(), kScreen),
-         {Method::Epipolar, Method::BruteForce, Method::ConeMarch, Method::Slices,
+         {Method::Epipolar, Method::BruteForce, Method::ConeMarch, Method::Planes,
           Method::BeamTreeAnalytic, Method::BeamTreeSampling}},
         {"unshadowed spot",
          sceneWith(spotOverGrille(), kScreen),
@@ -37,7 +37,7 @@ std::vector<Case> cases() {
         {"point",
          sceneWith(point, kScreen),
          {Method::Epipolar, Method::BruteForce, Method::Analytic, Method::ConeMarch,
-          Method::Slices}},
+          Method::Planes}},
     };
     c[2].spec.shadowed = false;
     c[3].spec.shadowed = false;
@@ -58,7 +58,7 @@ TEST_F(LinStorageGpu, ABrightLightsLinIsScaledNotClamped) {
         for (Method method : k.methods) {
             lightscatter::Settings s = smallSettings(kScreen);
             s.shadowMapSize = 64;
-            s.slicePlanes = 32;
+            s.planeCount = 32;
             auto d = frame.description(method, lightscatter::Profile::Custom, s);
             plugin().render(d);
             const std::vector<float> unit = frame.inscatter();
@@ -72,7 +72,7 @@ TEST_F(LinStorageGpu, ABrightLightsLinIsScaledNotClamped) {
             for (size_t i = 0; i < unit.size(); ++i)
                 if (i % 4 != 3) worst = std::max(worst, std::fabs(bright[i] / kBright - unit[i]));
             EXPECT_GT(peak, 0.0f) << k.name << ", " << lightscatter::methodName(method);
-            // float16 keeps 11 bits, and slices' planes add up in it: 1% of the peak (a clamped
+            // float16 keeps 11 bits, and the planes add up in it: 1% of the peak (a clamped
             // Lin is off by orders of magnitude).
             EXPECT_LE(worst, 1e-2f * peak)
                 << k.name << ", " << lightscatter::methodName(method)

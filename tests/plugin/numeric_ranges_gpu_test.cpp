@@ -45,15 +45,15 @@ const char* baseName(Base b) {
 std::vector<Method> methodsOf(Base b) {
     switch (b) {
         case Base::Sun:
-            return {Method::Epipolar, Method::BruteForce, Method::ConeMarch, Method::Slices};
+            return {Method::Epipolar, Method::BruteForce, Method::ConeMarch, Method::Planes};
         case Base::Spot:
             return {Method::Epipolar, Method::BruteForce,       Method::ConeMarch,
-                    Method::Slices,   Method::BeamTreeAnalytic, Method::BeamTreeSampling};
+                    Method::Planes,   Method::BeamTreeAnalytic, Method::BeamTreeSampling};
         case Base::UnshadowedSpot:
             return {Method::Analytic, Method::BeamTreeAnalytic};
         case Base::Point:
             return {Method::Epipolar, Method::BruteForce, Method::Analytic, Method::ConeMarch,
-                    Method::Slices};
+                    Method::Planes};
     }
     return {};
 }
@@ -75,7 +75,7 @@ FrameSpec baseSpec(Base b) {
 lightscatter::Settings testSettings() {
     lightscatter::Settings s = smallSettings(kScreen);
     s.shadowMapSize = 64;
-    s.slicePlanes = 32;
+    s.planeCount = 32;
     s.coneSamples = 16;
     return s;
 }
@@ -197,8 +197,8 @@ std::vector<Field> fields() {
         "medium.sigmaA", {C}, [](double v) { return v > 1.0; },
         [](auto& m, double v) { set3(m.sigmaA, v); });
     medium("medium.g", {-0.999999, 0.999999}, never, [](auto& m, double v) { m.g = f32(v); });
-    // Surfaces are never cut at the sky distance (docs/model.md), but slices' planes (and
-    // beam-tree-sampling's) stop there: with a sky nearer than the scene, they leave it dark.
+    // Surfaces are never cut at the sky distance (docs/model.md), but the planes method's planes
+    // (and beam-tree-sampling's) stop there: with a sky nearer than the scene, they leave it dark.
     medium(
         "medium.maxDistance", {L}, [](double v) { return v < 10.0; },
         [](auto& m, double v) { m.maxDistance = f32(v); });
@@ -212,34 +212,34 @@ std::vector<Field> fields() {
     // A bias of half the depth range and more puts every point in shadow.
     f.push_back({"custom.shadowDepthBias",
                  spot,
-                 {Method::Epipolar, Method::BruteForce, Method::ConeMarch, Method::Slices},
+                 {Method::Epipolar, Method::BruteForce, Method::ConeMarch, Method::Planes},
                  {-1.0, 1.0},
                  [](double v) { return v >= 0.5; },
                  {},
                  [](FrameDescription& d, double v) { d.custom.shadowDepthBias = f32(v); }});
     // A range far from Lin's (about 0.1 here) saturates the 8-bit target or rounds every share to
     // 0.
-    f.push_back({"custom.sliceRange",
+    f.push_back({"custom.planeRange",
                  spot,
-                 {Method::Slices},
+                 {Method::Planes},
                  {1e-30},
                  [](double v) { return v < 1e-3 || v > 1e3; },
                  {},
                  [](FrameDescription& d, double v) {
-                     d.custom.sliceTarget = lightscatter::SliceTarget::Rgba8Channels;
-                     d.custom.sliceRange = f32(v);
+                     d.custom.planeTarget = lightscatter::PlaneTarget::Rgba8Channels;
+                     d.custom.planeRange = f32(v);
                  }});
-    custom("custom.sliceAmbient", {Base::Spot, Base::Point},
-           {Method::Slices, Method::BeamTreeSampling}, {limits::kMaxAmbient},
-           [](auto& s, double v) { s.sliceAmbient = f32(v); });
-    custom("custom.noiseAmplitude", spot, {Method::Slices}, {1.0},
+    custom("custom.planeAmbient", {Base::Spot, Base::Point},
+           {Method::Planes, Method::BeamTreeSampling}, {limits::kMaxAmbient},
+           [](auto& s, double v) { s.planeAmbient = f32(v); });
+    custom("custom.noiseAmplitude", spot, {Method::Planes}, {1.0},
            [](auto& s, double v) { s.noiseAmplitude = f32(v); });
-    custom("custom.noiseScale", spot, {Method::Slices},
+    custom("custom.noiseScale", spot, {Method::Planes},
            {limits::kMinNoiseScale, limits::kMaxNoiseScale}, [](auto& s, double v) {
                s.noiseAmplitude = 0.5f;
                s.noiseScale = f32(v);
            });
-    custom("custom.noiseVelocity", spot, {Method::Slices}, {}, [](auto& s, double v) {
+    custom("custom.noiseVelocity", spot, {Method::Planes}, {}, [](auto& s, double v) {
         s.noiseAmplitude = 0.5f;
         s.noiseVelocity = {f32(v), f32(v), f32(v), f32(v)};
     });
@@ -262,7 +262,7 @@ std::vector<Field> fields() {
            });
     // Whole numbers: what is not refused renders.
     const std::vector<double> counts{0.0, 1.0, 2.0, 3.0, 4294967295.0};
-    // Two slice planes may both lie behind every surface.
+    // Two planes may both lie behind every surface.
     auto whole = [&](const char* name, std::vector<Method> only,
                      std::function<void(lightscatter::Settings&, uint32_t)> g) {
         f.push_back({name,
@@ -283,8 +283,8 @@ std::vector<Field> fields() {
           [](auto& s, uint32_t v) { s.fixupMaxSteps = v; });
     whole("custom.coneSamples", {Method::ConeMarch},
           [](auto& s, uint32_t v) { s.coneSamples = v; });
-    whole("custom.slicePlanes", {Method::Slices}, [](auto& s, uint32_t v) { s.slicePlanes = v; });
-    whole("custom.sliceBlur", {Method::Slices}, [](auto& s, uint32_t v) { s.sliceBlur = v; });
+    whole("custom.planeCount", {Method::Planes}, [](auto& s, uint32_t v) { s.planeCount = v; });
+    whole("custom.planeBlur", {Method::Planes}, [](auto& s, uint32_t v) { s.planeBlur = v; });
     // The camera's optional planes must agree with the projection (0: taken from it).
     f.push_back({"camera.nearPlane",
                  spot,
@@ -302,7 +302,7 @@ std::vector<Field> fields() {
                  [](FrameDescription& d, double v) { d.camera.farPlane = f32(v); }});
     f.push_back({"timeSeconds",
                  spot,
-                 {Method::Slices},
+                 {Method::Planes},
                  {1e300, -1e300},
                  never,
                  {},
@@ -458,8 +458,8 @@ TEST_F(NumericRangesGpu, TheBrightestFrameTheRangesAllowIsFinite) {
                 s.lightModel = model;
                 s.simplifiedA0 = 0.0f;
                 s.simplifiedA1 = limits::kMinSimplifiedA1;
-                if (method == Method::Slices || method == Method::BeamTreeSampling)
-                    s.sliceAmbient = limits::kMaxAmbient;
+                if (method == Method::Planes || method == Method::BeamTreeSampling)
+                    s.planeAmbient = limits::kMaxAmbient;
                 const auto d = frame.description(method, lightscatter::Profile::Custom, s);
                 judge(frame, d, "",
                       std::string(baseName(base)) + ", " + lightscatter::methodName(method) +

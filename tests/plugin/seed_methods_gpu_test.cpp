@@ -270,7 +270,7 @@ TEST_F(SeedMethodsGpu, ALightThatReachesNoViewRayBuildsNoChain) {
     clear.betaM = {0.0f, 0.0f, 0.0f};
     clear.sigmaA = {0.01f, 0.01f, 0.01f};  // absorbs, scatters nothing
     for (Method m :
-         {Method::Epipolar, Method::BruteForce, Method::ConeMarch, Method::Slices, Method::Auto}) {
+         {Method::Epipolar, Method::BruteForce, Method::ConeMarch, Method::Planes, Method::Auto}) {
         for (const auto& names : {passesFor(away, fog(), m), passesFor(dark, fog(), m),
                                   passesFor(sunThroughGrille(), clear, m)}) {
             std::string all;

@@ -19,8 +19,8 @@ void copyProfileSizes(Settings& to, const Settings& from) {
     to.slices = from.slices;
     to.samplesPerSlice = from.samplesPerSlice;
     to.shadowMapSize = from.shadowMapSize;
-    to.slicePlanes = from.slicePlanes;
-    to.sliceTarget = from.sliceTarget;
+    to.planeCount = from.planeCount;
+    to.planeTarget = from.planeTarget;
 }
 
 }  // namespace
@@ -37,8 +37,8 @@ TEST(SettingsMerge, EveryFieldButTheProfileSizesIsTheEngines) {
         EXPECT_EQ(merged.slices, profile.slices) << lightscatter::profileName(p);
         EXPECT_EQ(merged.samplesPerSlice, profile.samplesPerSlice);
         EXPECT_EQ(merged.shadowMapSize, profile.shadowMapSize);
-        EXPECT_EQ(merged.slicePlanes, profile.slicePlanes);
-        EXPECT_EQ(merged.sliceTarget, profile.sliceTarget);
+        EXPECT_EQ(merged.planeCount, profile.planeCount);
+        EXPECT_EQ(merged.planeTarget, profile.planeTarget);
         copyProfileSizes(merged, custom);
         EXPECT_EQ(std::memcmp(static_cast<const void*>(&merged), static_cast<const void*>(&custom),
                               sizeof custom),

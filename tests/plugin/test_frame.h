@@ -23,7 +23,7 @@ struct FrameSpec {
     std::vector<float> depthOverride;  // replaces the ray-cast depth when not empty
     bool coloredLight = false;         // stained glass: light-space color texture
     bool depthAttachment = true;       // the depth image allows a depth attachment
-    std::vector<float> noise;          // 16x16 RGBA noise texels for slices; empty: none
+    std::vector<float> noise;          // 16x16 RGBA noise texels for planes; empty: none
 };
 
 class TestFrame {

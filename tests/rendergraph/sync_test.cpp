@@ -172,7 +172,7 @@ ImportedImage engineDepth(VkImageUsageFlags usage) {
 }  // namespace
 
 // The engine's depth buffer sampled by one pass and then a read-only depth attachment of the next
-// (the slices method's planes): one read-only layout after the engine's writes, loaded and never
+// (the planes method's planes): one read-only layout after the engine's writes, loaded and never
 // stored, and handed back to the engine in its own layout.
 TEST(Sync, ImportedDepthSampledThenTestedReadOnly) {
     RenderGraph g;

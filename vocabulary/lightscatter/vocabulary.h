@@ -30,13 +30,16 @@ enum class MiePhase : int {
     Hazy = LIGHTSCATTER_MIE_HAZY,
 };
 
-// Where the slices method adds up its planes. Float16: an R16G16B16A16_SFLOAT target, Lin per
+// Where the planes method adds up its planes. Float16: an R16G16B16A16_SFLOAT target, Lin per
 // channel; its 11-bit mantissa stops the error falling beyond about 128 planes (docs/methods.md).
 // Float32: R32G32B32A32_SFLOAT, twice the memory, converges. Rgba8Channels: seed 002's trick for
 // 8-bit blending, monochrome: plane i goes into channel i mod 4 of an R8G8B8A8_UNORM target, the
 // four are summed at the end and tinted by the light's and medium's color; each channel holds a
-// quarter of Settings::sliceRange, and each blend rounds to 1/255 of that.
-enum class SliceTarget { Float16, Float32, Rgba8Channels };
+// quarter of Settings::planeRange, and each blend rounds to 1/255 of that.
+enum class PlaneTarget { Float16, Float32, Rgba8Channels };
+// Its former name, kept so that engines written against it compile; "slice" now means only an
+// epipolar line.
+using SliceTarget [[deprecated("use PlaneTarget")]] = PlaneTarget;
 
 }  // namespace lightscatter
 #endif

@@ -28,7 +28,7 @@
 #include <string>
 #include <vector>
 
-#include "lightscatter/vocabulary.h"  // LightType, MiePhase, SliceTarget
+#include "lightscatter/vocabulary.h"  // LightType, MiePhase, PlaneTarget
 
 // What the library exports: everything declared with LIGHTSCATTER_API (a shared build exports
 // nothing else).
@@ -56,7 +56,7 @@ using Mat4 = std::array<float, 16>;  // column-major (GLM's layout), maps column
 // overflows: the largest product one forms is Lin's integrand times the length of ray it stands
 // for,
 //       intensity     1e9 W/sr or W/m^2           kMaxIntensity
-//     x irradiance    2e6 1/m^2                   1 / r0^2 with r0 >= kMinRadius, plus slices'
+//     x irradiance    2e6 1/m^2                   1 / r0^2 with r0 >= kMinRadius, plus planes'
 //                                                 ambient term, at most kMaxAmbient
 //     x coefficient   1e3 1/m                     kMaxCoefficient
 //     x phase         2e5 1/sr                    Cornette-Shanks' peak, 0.16 / (1 - g)^2 under
@@ -84,7 +84,7 @@ inline constexpr float kMaxIntensity = 1e9f;
 inline constexpr float kMaxCoefficient = 1e3f;
 // Light::radius r0 (m): keeps 1 / (r^2 + r0^2) at most 1e6 /m^2.
 inline constexpr float kMinRadius = 1e-3f;
-// Settings::sliceAmbient (1/m^2): no more than the inverse square at kMinRadius.
+// Settings::planeAmbient (1/m^2): no more than the inverse square at kMinRadius.
 inline constexpr float kMaxAmbient = 1e6f;
 // Light::halfAngleDegrees: the cone test compares cosines, whose float32 step near 1 (6e-8) moves
 // the edge of a 0.1-degree cone by 2% of its angle and swallows cones under 0.02 degree whole.
@@ -99,15 +99,15 @@ inline constexpr float kMinNoiseScale = 1e-6f, kMaxNoiseScale = 1e8f;
 // The camera's field of view, on each axis (from camera.projection: 2 atan(1 / |P[0][0]|) and
 // 2 atan(1 / |P[1][1]|)). Measured against the float64 model on 32x18 and 256x4 screens under an
 // unshadowed sun (mean relative error of Lin): brute-force, epipolar and cone-march within 0.05%,
-// slices within 2.4% (its planes' sampling), from 1e-6 degrees to 177 across; below 1e-7 degrees
-// slices' planes degenerate (0.87 off), and at 178.9 degrees across every method is 9% off. 1e-4
+// planes within 2.4% (its planes' sampling), from 1e-6 degrees to 177 across; below 1e-7 degrees
+// the planes degenerate (0.87 off), and at 178.9 degrees across every method is 9% off. 1e-4
 // degrees keeps a margin of 100, and spans 29 float32 steps of a unit vector's component.
 // tests/plugin/camera_limits_gpu_test.cpp holds the ends.
 inline constexpr float kMinFovDegrees = 1e-4f, kMaxFovDegrees = 177.0f;
 // The near plane (m). A reversed float32 depth buffer stores near / distance, a normal float out
 // to kMaxLength for a near plane down to 1e-29 m. Measured on a 32x18 spot against the float64
 // model: with reversed depth, finite or infinite, every method's error at near 1e-30 m is its
-// error at 1e-4 m (brute-force 0.0003, slices 0.064).
+// error at 1e-4 m (brute-force 0.0003, planes 0.064).
 inline constexpr float kMinNearPlane = 1e-29f;
 // Standard depth (near plane at 0) and 16- or 24-bit depth formats either way round step by 2^-b
 // (b = 24 bits for D24 and, near 1, for D32_SFLOAT; 16 for D16): at distance z the step is z^2 /
@@ -120,10 +120,10 @@ inline constexpr float kDepthStepsPerDistance = 16.0f;
 
 // The methods (docs/methods.md): epipolar sampling (seed 000), brute-force per-pixel marching (the
 // GPU reference), seed 001's arctangent closed form (unshadowed point and spot lights), seed 003's
-// cone-limited fixed-count march, seed 002's view-aligned slice planes, seed 004's two methods (a
+// cone-limited fixed-count march, seed 002's view-aligned planes, seed 004's two methods (a
 // beam tree of FrameDescription::occluders, built on the CPU each frame, splits a point or spot
 // light's volume into lit, uncertain and dark space; dark space is never drawn. BeamTreeAnalytic
-// integrates lit space in closed form and samples uncertain space with slices' planes and the
+// integrates lit space in closed form and samples uncertain space with seed 002's planes and the
 // shadow map; BeamTreeSampling samples both with the planes, skipping the shadow map in lit
 // space), and Auto, which picks one per frame from what the frame holds and says which and why in
 // the FrameReport.
@@ -132,10 +132,13 @@ enum class Method {
     BruteForce,
     Analytic,
     ConeMarch,
-    Slices,
+    Planes,
     BeamTreeAnalytic,
     BeamTreeSampling,
     Auto,
+    // The planes method's former name ("slices" too is still parsed), kept so that engines
+    // written against it compile; "slice" now means only an epipolar line.
+    Slices [[deprecated("use Method::Planes")]] = Planes,
 };
 enum class Profile {
     HighQuality,         // 2048 slices x 1024 samples, 4096^2 shadow map (seed 000)
@@ -159,6 +162,7 @@ enum class LightModel { Full, Simplified };
 
 LIGHTSCATTER_API const char* methodName(Method m);    // "epipolar", "brute-force", "analytic", ...
 LIGHTSCATTER_API const char* profileName(Profile p);  // "high-quality", "balanced", ... "custom"
+// A method's name, or a former one: "slices" is Method::Planes.
 LIGHTSCATTER_API std::optional<Method> parseMethod(const std::string& name);
 LIGHTSCATTER_API std::optional<Profile> parseProfile(const std::string& name);
 LIGHTSCATTER_API std::vector<std::string> methodNames();
@@ -198,29 +202,29 @@ struct Settings {
     // false: seed 003's low-end mode, no shadow-map look-ups (shafts without shadows). Only
     // cone-march honours it; the other methods refuse it (Auto picks cone-march).
     bool shadowSampling = true;
-    // slices (seed 002). The plane count and target follow the profile (docs/methods.md); the rest
+    // planes (seed 002). The plane count and target follow the profile (docs/methods.md); the rest
     // is taken from `custom` with every profile.
-    uint32_t slicePlanes = 128;  // view-aligned planes across the light's volume, 2 to 4096
-    SliceTarget sliceTarget = SliceTarget::Float16;
+    uint32_t planeCount = 128;  // view-aligned planes across the light's volume, 2 to 4096
+    PlaneTarget planeTarget = PlaneTarget::Float16;
     // The seed's scaling of the count: fewer planes, down to an eighth, as the light's volume
     // shrinks on screen (its depth extent over its distance from the camera).
-    bool slicePlaneScaling = false;
+    bool planeScaling = false;
     // Rgba8Channels only: the luminance of Lin, in Lin's units, that fills the four channels.
     // 0: from the light and medium (docs/methods.md). Above it the target saturates. 0, or in
-    // [1e-30, 1e30]: the shader scales by 4 / sliceRange, which must stay finite and non-zero.
-    float sliceRange = 0.0f;
+    // [1e-30, 1e30]: the shader scales by 4 / planeRange, which must stay finite and non-zero.
+    float planeRange = 0.0f;
     // Rgba8Channels: round each plane's share up or down at random in proportion (stochastic
     // rounding, after the seed's suggestion of interleaved sampling), so that shares under half an
     // 8-bit step still add up; false is the seed's plain rounding, which loses them (banding).
-    bool sliceDither = true;
-    uint32_t sliceBlur = 0;  // seed 002's blur at composite: radius in pixels, 0 off
+    bool planeDither = true;
+    uint32_t planeBlur = 0;  // seed 002's blur at composite: radius in pixels, 0 off
     // The seed's ambient term beside the inverse square (point and spot lights, 1/m^2): art
     // direction outside docs/model.md, 0 by default. In [0, limits::kMaxAmbient].
-    float sliceAmbient = 0.0f;
+    float planeAmbient = 0.0f;
     // Scrolling noise (seed 002): a density multiplier 1 + a (4 n1 n2 - 1), mean 1, from two
     // samples of a tiling noise texture projected from the light (FrameDescription::noise, or the
     // plugin's own). Art direction the model does not have; amplitude 0 turns it off. Honoured by
-    // slices only; the other methods refuse a non-zero amplitude.
+    // planes only; the other methods refuse a non-zero amplitude.
     float noiseAmplitude = 0.0f;  // a in [0, 1]
     float noiseScale = 1.0f;      // a tile's size: metres (directional) or, for point and
                                   // spot lights, the tangent of the angle it spans; in
@@ -447,7 +451,7 @@ struct FrameDescription {
     Method method = Method::Epipolar;
     Profile profile = Profile::Balanced;
     // The engine's settings. With Profile::Custom all of them; with any other profile all but the
-    // profile's sizes (slices, samplesPerSlice, shadowMapSize, slicePlanes, sliceTarget), which the
+    // profile's sizes (slices, samplesPerSlice, shadowMapSize, planeCount, planeTarget), which the
     // profile decides. A light's own LightInput::settings replace them for its chain.
     Settings custom;
     DebugOptions debug;
@@ -538,10 +542,10 @@ struct Budget {
     std::optional<SeedFigure> seed;  // the seed's published figure for this profile
 };
 
-// A method's memory for a profile, screen and shadow-map size; needs no GPU. Epipolar, slices and
+// A method's memory for a profile, screen and shadow-map size; needs no GPU. Epipolar, planes and
 // beam-tree-analytic (its triangle buffer at its first size, 12288 points). `custom` gives the
 // settings of the Custom profile, and with every profile the ones read from `custom` (epipolar:
-// inscatterRefinementThreshold above 0 adds the refinement's passes; slices: a noise amplitude
+// inscatterRefinementThreshold above 0 adds the refinement's passes; planes: a noise amplitude
 // above 0 adds the plugin's tiling noise). Epipolar budgets a point light with a cube shadow map of
 // six shadowMapSize faces (its per-face lines and trees alias each other), the other methods
 // without.

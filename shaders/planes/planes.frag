@@ -10,7 +10,7 @@
 // target's range, goes to channel (plane mod 4) only (seed 002's precision trick).
 #include "camera.glsl"
 #include "math.glsl"
-#include "slice_push.glsl"
+#include "plane_push.glsl"
 #if LS_SHADOW_MAP
 layout(binding = LS_BINDING_SHADOW_MAP) uniform sampler2D shadowMap;
 #include "shadow.glsl"
@@ -53,10 +53,10 @@ vec2 noiseCoordinates(vec3 P) {
 
 // Mean 1 for independent layers of mean 1/2; amplitude 0 gives exactly 1.
 float densityNoise(vec3 P) {
-    vec2 q = noiseCoordinates(P) * slice.params.z;
-    float n1 = texture(noiseMap, q + slice.noise.xy).r;
-    float n2 = texture(noiseMap, q * 1.37 + vec2(0.31, 0.73) + slice.noise.zw).g;
-    return max(1.0 + slice.params.y * (4.0 * n1 * n2 - 1.0), 0.0);
+    vec2 q = noiseCoordinates(P) * placement.params.z;
+    float n1 = texture(noiseMap, q + placement.noise.xy).r;
+    float n2 = texture(noiseMap, q * 1.37 + vec2(0.31, 0.73) + placement.noise.zw).g;
+    return max(1.0 + placement.params.y * (4.0 * n1 * n2 - 1.0), 0.0);
 }
 #endif
 
@@ -75,19 +75,19 @@ void main() {
     vec3 C = frame.cameraPos.xyz;
     vec3 d = worldPos - C;
     float s = length(d);
-    if (s > slice.params.w) discard;  // past the sky distance
+    if (s > placement.params.w) discard;  // past the sky distance
     vec3 v = d / s;
     float cosTheta;
-    vec3 irr = lightAt(worldPos, v, slice.params.x, cosTheta);
+    vec3 irr = lightAt(worldPos, v, placement.params.x, cosTheta);
     if (all(equal(irr, vec3(0.0)))) discard;
-    float ds = slice.boxMin.w / max(dot(v, frame.cameraForward.xyz), 1e-4);
+    float ds = placement.boxMin.w / max(dot(v, frame.cameraForward.xyz), 1e-4);
     vec3 share = towardCamera(s, cosTheta) * irr * ds;
 #if LS_NOISE
     share *= densityNoise(worldPos);
 #endif
     if (kChannels) {
         vec4 mask = vec4(equal(ivec4(plane & 3), ivec4(0, 1, 2, 3)));
-        float value = dot(share, kLuminance) * slice.boxMax.w;
+        float value = dot(share, kLuminance) * placement.boxMax.w;
         if (kDither) value = floor(value * 255.0 + planeHash(uvec2(gl_FragCoord.xy), uint(plane))) / 255.0;
         outShare = mask * value;
     } else {

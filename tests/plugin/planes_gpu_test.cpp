@@ -1,4 +1,4 @@
-// Seed 002's slice planes (`slices`) on the GPU: convergence to the float64 model with the plane
+// The planes method (seed 002) on the GPU: convergence to the float64 model with the plane
 // count, the 8-bit channel target against the float target within its quantisation, the cookie's
 // stripes where brute force puts them, the noise's paths, and its refusals.
 #include <cmath>
@@ -6,19 +6,19 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 #include "model_conversion.h"
+#include "planes/plane_geometry.h"
 #include "plugin_fixture.h"
-#include "slices/slice_geometry.h"
 
 using namespace plugin_test;
 using lightscatter::Method;
-using lightscatter::SliceTarget;
+using lightscatter::PlaneTarget;
 
 namespace {
 
-lightscatter::Settings sliceSettings(uint32_t planes, SliceTarget target) {
+lightscatter::Settings planeSettings(uint32_t planes, PlaneTarget target) {
     lightscatter::Settings s = smallSettings();
-    s.slicePlanes = planes;
-    s.sliceTarget = target;
+    s.planeCount = planes;
+    s.planeTarget = target;
     return s;
 }
 
@@ -28,24 +28,24 @@ double luminance(const float* p) {
 
 }  // namespace
 
-class SlicesGpu : public PluginGpuTest {};
+class PlanesGpu : public PluginGpuTest {};
 
 // More planes, closer to the model: the midpoint rule's error falls like 1/planes with a float32
 // target. A float16 target stops falling where its 11-bit mantissa rounds each plane's share.
-TEST_F(SlicesGpu, ConvergesToTheFloat64ModelAsPlanesGrow) {
+TEST_F(PlanesGpu, ConvergesToTheFloat64ModelAsPlanesGrow) {
     TestFrame frame(dev(), flatSpot());
     const std::vector<float> want = float64Unshadowed(frame);
     double previous = 1e30;
     for (uint32_t planes : {32u, 64u, 128u, 256u}) {
         frame.resetColor();
-        const auto report = run(frame, Method::Slices, sliceSettings(planes, SliceTarget::Float32));
-        EXPECT_EQ(report.method, "slices");
+        const auto report = run(frame, Method::Planes, planeSettings(planes, PlaneTarget::Float32));
+        EXPECT_EQ(report.method, "planes");
         const ErrorStats e = compare(frame.inscatter(), want);
         frame.resetColor();
-        run(frame, Method::Slices, sliceSettings(planes, SliceTarget::Float16));
+        run(frame, Method::Planes, planeSettings(planes, PlaneTarget::Float16));
         const ErrorStats half = compare(frame.inscatter(), want);
         std::printf(
-            "slices, %3u planes: mean error (of the peak) %.5f float32, %.5f float16; max %.4f\n",
+            "planes, %3u planes: mean error (of the peak) %.5f float32, %.5f float16; max %.4f\n",
             planes, e.meanRelative, half.meanRelative, e.maxRelative);
         EXPECT_EQ(e.nonFinite, 0u);
         EXPECT_LT(e.meanRelative, 0.8 * previous) << planes << " planes";
@@ -57,7 +57,7 @@ TEST_F(SlicesGpu, ConvergesToTheFloat64ModelAsPlanesGrow) {
     FrameSpec moved = flatSpot();
     moved.light.position[0] += 1.0f;
     TestFrame shifted(dev(), moved);
-    run(shifted, Method::Slices, sliceSettings(256, SliceTarget::Float32));
+    run(shifted, Method::Planes, planeSettings(256, PlaneTarget::Float32));
     EXPECT_GT(compare(shifted.inscatter(), want).meanRelative, 5 * previous);
 }
 
@@ -66,25 +66,25 @@ TEST_F(SlicesGpu, ConvergesToTheFloat64ModelAsPlanesGrow) {
 // luminance carries everything): every pixel within half a step per plane, plus float error. The
 // range lets one channel hold the brightest pixel whole: a ray past the apex gets most of its light
 // from one or two planes, which a range of the peak itself would saturate.
-TEST_F(SlicesGpu, EightBitChannelsHoldTheFloatTargetWithinTheirQuantisation) {
+TEST_F(PlanesGpu, EightBitChannelsHoldTheFloatTargetWithinTheirQuantisation) {
     FrameSpec spec = flatSpot();
     spec.light.intensity = {40.0f, 40.0f, 40.0f};
     spec.medium.betaR = {0.0f, 0.0f, 0.0f};
     spec.medium.betaM = {0.03f, 0.03f, 0.03f};
     TestFrame frame(dev(), spec);
     const uint32_t planes = 64;
-    run(frame, Method::Slices, sliceSettings(planes, SliceTarget::Float32));
+    run(frame, Method::Planes, planeSettings(planes, PlaneTarget::Float32));
     const std::vector<float> full = frame.inscatter();
     double peak = 0;
     for (size_t i = 0; i < full.size(); i += 4) peak = std::max(peak, luminance(&full[i]));
     for (bool dither : {false, true}) {
-        auto s = sliceSettings(planes, SliceTarget::Rgba8Channels);
-        s.sliceRange = static_cast<float>(4.4 * peak);
-        s.sliceDither = dither;
+        auto s = planeSettings(planes, PlaneTarget::Rgba8Channels);
+        s.planeRange = static_cast<float>(4.4 * peak);
+        s.planeDither = dither;
         frame.resetColor();
-        run(frame, Method::Slices, s);
+        run(frame, Method::Planes, s);
         const std::vector<float> eight = frame.inscatter();
-        const double step = s.sliceRange / 4.0 / 255.0;
+        const double step = s.planeRange / 4.0 / 255.0;
         // Rounding to nearest loses at most half a step per plane; stochastic rounding at most one.
         const double bound = planes * step * (dither ? 1.0 : 0.5) + 1e-3 * peak;
         double worst = 0, sumDiff = 0;
@@ -108,7 +108,7 @@ TEST_F(SlicesGpu, EightBitChannelsHoldTheFloatTargetWithinTheirQuantisation) {
 
 // The cookie (the light-color image, stripes of red, green and blue glass): each lit pixel's
 // dominant color is the one brute force gives it, so the stripes are where the light puts them.
-TEST_F(SlicesGpu, TheCookiesStripesLandWhereBruteForcePutsThem) {
+TEST_F(PlanesGpu, TheCookiesStripesLandWhereBruteForcePutsThem) {
     FrameSpec spec = flatSpot();
     spec.shadowed = true;
     spec.coloredLight = true;
@@ -118,8 +118,8 @@ TEST_F(SlicesGpu, TheCookiesStripesLandWhereBruteForcePutsThem) {
     run(frame, Method::BruteForce);
     const std::vector<float> brute = frame.inscatter();
     frame.resetColor();
-    run(frame, Method::Slices, sliceSettings(256, SliceTarget::Float32));
-    const std::vector<float> slices = frame.inscatter();
+    run(frame, Method::Planes, planeSettings(256, PlaneTarget::Float32));
+    const std::vector<float> planes = frame.inscatter();
     double peak = 0;
     for (size_t i = 0; i < brute.size(); i += 4) peak = std::max(peak, luminance(&brute[i]));
     auto dominant = [](const float* p) {
@@ -131,7 +131,7 @@ TEST_F(SlicesGpu, TheCookiesStripesLandWhereBruteForcePutsThem) {
         if (luminance(&brute[i]) < 0.02 * peak) continue;
         ++lit;
         ++bands[static_cast<size_t>(dominant(&brute[i]))];
-        same += dominant(&brute[i]) == dominant(&slices[i]);
+        same += dominant(&brute[i]) == dominant(&planes[i]);
     }
     std::printf(
         "cookie: %zu lit pixels (%zu red, %zu green, %zu blue), %zu with brute force's color\n",
@@ -143,10 +143,10 @@ TEST_F(SlicesGpu, TheCookiesStripesLandWhereBruteForcePutsThem) {
 
 // Noise: amplitude 0 is exactly no noise; an engine noise of 1/2 in both layers is a density of
 // exactly 1; the plugin's own noise changes the image and keeps its mean.
-TEST_F(SlicesGpu, NoiseAmplitudeZeroIsTheModelAndNoiseKeepsTheMean) {
-    const auto settings = sliceSettings(64, SliceTarget::Float32);
+TEST_F(PlanesGpu, NoiseAmplitudeZeroIsTheModelAndNoiseKeepsTheMean) {
+    const auto settings = planeSettings(64, PlaneTarget::Float32);
     TestFrame frame(dev(), flatSpot());
-    run(frame, Method::Slices, settings);
+    run(frame, Method::Planes, settings);
     const std::vector<float> plain = frame.inscatter();
 
     FrameSpec halfSpec = flatSpot();
@@ -154,14 +154,14 @@ TEST_F(SlicesGpu, NoiseAmplitudeZeroIsTheModelAndNoiseKeepsTheMean) {
     TestFrame half(dev(), halfSpec);
     auto noisy = settings;
     noisy.noiseAmplitude = 1.0f;
-    const auto report = run(half, Method::Slices, noisy);
+    const auto report = run(half, Method::Planes, noisy);
     EXPECT_NE(report.reason.find("noise"), std::string::npos) << report.reason;
     EXPECT_LT(compare(half.inscatter(), plain).maxRelative, 1e-5);
 
     frame.resetColor();
     noisy.noiseAmplitude = 0.8f;
     noisy.noiseScale = 0.3f;
-    const auto own = run(frame, Method::Slices, noisy);
+    const auto own = run(frame, Method::Planes, noisy);
     const std::vector<float> textured = frame.inscatter();
     double sumPlain = 0, sumNoisy = 0, peak = 0;
     for (size_t i = 0; i < plain.size(); i += 4) {
@@ -181,9 +181,9 @@ TEST_F(SlicesGpu, NoiseAmplitudeZeroIsTheModelAndNoiseKeepsTheMean) {
     EXPECT_GT(changed, lit / 5);                  // the noise is there
     EXPECT_NEAR(sumNoisy / sumPlain, 1.0, 0.25);  // and keeps the density's mean
 
-    // Auto picks slices for a frame with noise; the methods that cannot sample it refuse it.
+    // Auto picks planes for a frame with noise; the methods that cannot sample it refuse it.
     frame.resetColor();
-    EXPECT_EQ(run(frame, Method::Auto, noisy).method, "slices");
+    EXPECT_EQ(run(frame, Method::Auto, noisy).method, "planes");
     for (Method m : {Method::Epipolar, Method::BruteForce, Method::ConeMarch, Method::Analytic}) {
         try {
             run(frame, m, noisy);
@@ -197,13 +197,13 @@ TEST_F(SlicesGpu, NoiseAmplitudeZeroIsTheModelAndNoiseKeepsTheMean) {
 }
 
 // A depth image the planes cannot test against is refused in one line naming the field.
-TEST_F(SlicesGpu, ADepthWithoutAttachmentUsageIsRefused) {
+TEST_F(PlanesGpu, ADepthWithoutAttachmentUsageIsRefused) {
     FrameSpec spec = flatSpot();
     spec.depthAttachment = false;
     TestFrame frame(dev(), spec);
     try {
-        run(frame, Method::Slices, sliceSettings(32, SliceTarget::Float16));
-        ADD_FAILURE() << "slices accepted a depth image without DEPTH_STENCIL_ATTACHMENT";
+        run(frame, Method::Planes, planeSettings(32, PlaneTarget::Float16));
+        ADD_FAILURE() << "planes accepted a depth image without DEPTH_STENCIL_ATTACHMENT";
     } catch (const lightscatter::InvalidInput& e) {
         EXPECT_NE(std::string(e.what()).find("depth.usage"), std::string::npos) << e.what();
     }
@@ -212,7 +212,7 @@ TEST_F(SlicesGpu, ADepthWithoutAttachmentUsageIsRefused) {
 
 // Blur and the directional light's closed form outside the slab: finite, and a directional
 // light's Lin converges like the spot's.
-TEST_F(SlicesGpu, DirectionalLightAndBlurStayCloseToBruteForce) {
+TEST_F(PlanesGpu, DirectionalLightAndBlurStayCloseToBruteForce) {
     FrameSpec spec = flatSpot();
     spec.light = sunThroughGrille();
     spec.shadowed = true;
@@ -220,10 +220,10 @@ TEST_F(SlicesGpu, DirectionalLightAndBlurStayCloseToBruteForce) {
     run(frame, Method::BruteForce);
     const std::vector<float> brute = frame.inscatter();
     for (uint32_t blur : {0u, 2u}) {
-        auto s = sliceSettings(256, SliceTarget::Float32);
-        s.sliceBlur = blur;
+        auto s = planeSettings(256, PlaneTarget::Float32);
+        s.planeBlur = blur;
         frame.resetColor();
-        run(frame, Method::Slices, s);
+        run(frame, Method::Planes, s);
         const ErrorStats e = compare(frame.inscatter(), brute);
         std::printf("directional, 256 planes, blur %u: mean error %.4f of the peak, max %.3f\n",
                     blur, e.meanRelative, e.maxRelative);
@@ -235,7 +235,7 @@ TEST_F(SlicesGpu, DirectionalLightAndBlurStayCloseToBruteForce) {
 // Where the planes go (no GPU): a camera inside the spot's volume starts them at its near plane,
 // and the seed's scaling of the count leaves a near volume all its planes and a far one fewer,
 // never under an eighth.
-TEST(SlicePlacement, FillsTheViewFromInsideAndScalesTheCountWithDistance) {
+TEST(PlanePlacement, FillsTheViewFromInsideAndScalesTheCountWithDistance) {
     ls::CameraParams camera;
     camera.view = glm::lookAt(glm::vec3(0, 1, 0), glm::vec3(0, 1, -1), glm::vec3(0, 1, 0));
     camera.projection = glm::perspective(glm::radians(60.0f), 1.5f, 0.1f, 500.0f);
@@ -249,21 +249,21 @@ TEST(SlicePlacement, FillsTheViewFromInsideAndScalesTheCountWithDistance) {
     spot.range = 20.0f;
     ls::MediumParams medium;
     medium.betaM = glm::vec3(0.02f);
-    ls::SliceSettings settings;
+    ls::PlaneSettings settings;
     settings.planes = 128;
     settings.planeScaling = true;
-    const ls::SlicePlacement inside = ls::placeSlices(camera, spot, medium, settings, 0.0);
+    const ls::PlanePlacement inside = ls::placePlanes(camera, spot, medium, settings, 0.0);
     EXPECT_EQ(inside.planes, 128u);
     EXPECT_FLOAT_EQ(inside.push.boxMin.z, 0.1f);  // from the near plane
     EXPECT_NEAR(inside.push.boxMin.z + 128 * inside.push.boxMin.w, 19.0f,
                 0.01f);  // to the range (z = 1 - 20)
     spot.position = {0, 1, -200};
-    const ls::SlicePlacement far = ls::placeSlices(camera, spot, medium, settings, 0.0);
+    const ls::PlanePlacement far = ls::placePlanes(camera, spot, medium, settings, 0.0);
     EXPECT_LT(far.planes, 128u);
     EXPECT_GE(far.planes, 16u);
     settings.planeScaling = false;
-    EXPECT_EQ(ls::placeSlices(camera, spot, medium, settings, 0.0).planes, 128u);
+    EXPECT_EQ(ls::placePlanes(camera, spot, medium, settings, 0.0).planes, 128u);
     spot.direction = {0, 0, 1};  // pointing away, the volume all behind the camera
     spot.position = {0, 1, 2};
-    EXPECT_EQ(ls::placeSlices(camera, spot, medium, settings, 0.0).planes, 0u);
+    EXPECT_EQ(ls::placePlanes(camera, spot, medium, settings, 0.0).planes, 0u);
 }

@@ -1,4 +1,4 @@
-#include "slice_geometry.h"
+#include "plane_geometry.h"
 
 #include <algorithm>
 #include <array>
@@ -74,7 +74,7 @@ glm::vec3 phaseSum(const MediumParams& m, float c) {
 
 }  // namespace
 
-float estimatedSliceRange(const CameraParams& camera, const LightParams& light,
+float estimatedPlaneRange(const CameraParams& camera, const LightParams& light,
                           const MediumParams& medium, float front, float back) {
     const glm::mat4 toWorld = glm::inverse(camera.view);
     const glm::vec3 C = glm::vec3(toWorld[3]);
@@ -116,9 +116,9 @@ float estimatedSliceRange(const CameraParams& camera, const LightParams& light,
     return std::max(1.25f * peak, 1e-30f);
 }
 
-SlicePlacement placeSlices(const CameraParams& camera, const LightParams& light,
-                           const MediumParams& medium, const SliceSettings& settings, double time) {
-    SlicePlacement out;
+PlanePlacement placePlanes(const CameraParams& camera, const LightParams& light,
+                           const MediumParams& medium, const PlaneSettings& settings, double time) {
+    PlanePlacement out;
     const float zNear = camera.nearPlane;
     const float zFar = std::max(farthestViewDepth(camera, medium), zNear * 1.001f);
     const glm::vec2 tangents = frustumTangents(camera);
@@ -166,9 +166,9 @@ SlicePlacement placeSlices(const CameraParams& camera, const LightParams& light,
     const float range = !settings.eightBitTarget ? 1.0f
                         : settings.range > 0.0f
                             ? settings.range
-                            : estimatedSliceRange(camera, light, medium, boxFront, boxBack);
+                            : estimatedPlaneRange(camera, light, medium, boxFront, boxBack);
 
-    SlicePush& p = out.push;
+    PlanePush& p = out.push;
     p.viewToWorld = glm::inverse(camera.view);
     p.boxMin = {lo.x, lo.y, boxFront, spacing};
     p.boxMax = {hi.x, hi.y, static_cast<float>(planes), 4.0f / range};  // a channel holds range / 4

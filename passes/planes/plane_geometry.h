@@ -3,7 +3,7 @@
 // view-space box of the light's volume (a spot's pyramid within its range, a shadowed directional
 // light's box, otherwise the view frustum) cut to the camera's near plane and to the farthest a
 // ray reaches, the number of planes and their spacing, and the per-frame values the shaders take
-// as push constants (shaders/slices/slice_push.glsl).
+// as push constants (shaders/planes/plane_push.glsl).
 #include <glm/glm.hpp>
 
 #include <cstdint>
@@ -12,40 +12,40 @@
 
 namespace ls {
 
-// The push blocks of shaders/slices/slice_push.glsl and slice_resolve.frag, their fields written
-// once (shaders/slices/*_push_fields.h). Only mat4 and vec4 members: laid out as the blocks are.
+// The push blocks of shaders/planes/plane_push.glsl and plane_resolve.frag, their fields written
+// once (shaders/planes/*_push_fields.h). Only mat4 and vec4 members: laid out as the blocks are.
 #define LS_MAT4 glm::mat4
 #define LS_VEC4 glm::vec4
 #define LS_INIT(x) \
     { x }
-struct SlicePush {
-#include "shaders/slices/slice_push_fields.h"
+struct PlanePush {
+#include "shaders/planes/plane_push_fields.h"
 };
-struct SliceResolvePush {
-#include "shaders/slices/slice_resolve_push_fields.h"
+struct PlaneResolvePush {
+#include "shaders/planes/plane_resolve_push_fields.h"
 };
 #undef LS_MAT4
 #undef LS_VEC4
 #undef LS_INIT
-static_assert(sizeof(SlicePush) == 128);  // the push-constant size every device has
-static_assert(sizeof(SliceResolvePush) == 32);
+static_assert(sizeof(PlanePush) == 128);  // the push-constant size every device has
+static_assert(sizeof(PlaneResolvePush) == 32);
 
-struct SlicePlacement {
-    SlicePush push;
-    SliceResolvePush resolve;
+struct PlanePlacement {
+    PlanePush push;
+    PlaneResolvePush resolve;
     uint32_t planes = 0;  // 0: the light's volume misses the view, nothing to draw
 };
 
-SlicePlacement placeSlices(const CameraParams& camera, const LightParams& light,
-                           const MediumParams& medium, const SliceSettings& settings, double time);
+PlanePlacement placePlanes(const CameraParams& camera, const LightParams& light,
+                           const MediumParams& medium, const PlaneSettings& settings, double time);
 
 // The Lin luminance the four 8-bit channels hold at full scale when the engine gives none: 1.25
 // times the largest luminance of the unshadowed Lin between view depths `front` and `back` (the
 // planes' span) over 81 rays on a grid across the screen, each marched with 256 midpoint samples
 // on the CPU. Unshadowed and to the end of the span, it bounds what those rays receive; a peak
 // between them (beside a point light) can saturate, and where shadows darken most of the view the
-// channels' steps are coarse: such scenes set Settings::sliceRange.
-float estimatedSliceRange(const CameraParams& camera, const LightParams& light,
+// channels' steps are coarse: such scenes set Settings::planeRange.
+float estimatedPlaneRange(const CameraParams& camera, const LightParams& light,
                           const MediumParams& medium, float front, float back);
 
 }  // namespace ls

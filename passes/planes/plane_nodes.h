@@ -4,19 +4,19 @@
 // depth, then resolved into Lin. And the plugin's own tiling noise, made once.
 #include <memory>
 
+#include "plane_geometry.h"
 #include "shared/frame_context.h"
-#include "slice_geometry.h"
 
 namespace ls {
 
 // Where this frame's planes go (the method's LightData), placed on the CPU before each frame is
 // recorded; the nodes read it from the frame's LightFrame when they record.
-struct SliceData final : LightData {
-    SlicePlacement placement;
+struct PlaneData final : LightData {
+    PlanePlacement placement;
 };
-const SlicePlacement& placementOf(const LightFrame& frame);
+const PlanePlacement& placementOf(const LightFrame& frame);
 
-struct SlicePlanesInputs {
+struct PlanesInputs {
     FrameContext frame;  // its constants, and the depth: a read-only depth attachment
     // light.shadowMap invalid: no shadow-map sampling; light.lightColor: the cookie, in the shadow
     // map's space, invalid without one. The table is not read.
@@ -24,35 +24,35 @@ struct SlicePlanesInputs {
     rg::ImageRef noise;  // tiling noise (red, green layers); invalid: no noise
 };
 
-struct SlicePlanesOptions {
-    SliceTarget target = SliceTarget::Float16;
+struct PlanesOptions {
+    PlaneTarget target = PlaneTarget::Float16;
     bool dither = false;     // Rgba8Channels: stochastic rounding of each plane's share
     bool reversedZ = false;  // the engine's depth convention, for the depth test's direction
 };
 
 // Returns the planes' sum: R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT (Lin, rgb), or R8G8B8A8_UNORM
 // (luminance, one quarter of the planes per channel), screen-sized.
-rg::ImageRef addSlicePlanes(rg::RenderGraph& graph, const SlicePlanesInputs& in,
-                            const SlicePlanesOptions& options);
+rg::ImageRef addPlanes(rg::RenderGraph& graph, const PlanesInputs& in,
+                       const PlanesOptions& options);
 
-struct SliceResolveInputs {
+struct PlaneResolveInputs {
     FrameContext frame;     // its constants, and the depth: where each pixel's ray ends
-    rg::ImageRef planeSum;  // addSlicePlanes' result
+    rg::ImageRef planeSum;  // addPlanes' result
 };
 
-struct SliceResolveOptions {
-    SliceTarget target = SliceTarget::Float16;
+struct PlaneResolveOptions {
+    PlaneTarget target = PlaneTarget::Float16;
     uint32_t blurRadius = 0;  // pixels; 0: no blur
     bool closedFormOutsideSlab =
         false;  // directional lights: add the rays' parts outside the planes
 };
 
 // Whether the planes' sum needs resolving, or already is Lin.
-bool sliceResolveNeeded(const SliceResolveOptions& options);
+bool planeResolveNeeded(const PlaneResolveOptions& options);
 
 // Returns Lin (R16G16B16A16_SFLOAT, screen).
-rg::ImageRef addSliceResolve(rg::RenderGraph& graph, const SliceResolveInputs& in,
-                             const SliceResolveOptions& options);
+rg::ImageRef addPlaneResolve(rg::RenderGraph& graph, const PlaneResolveInputs& in,
+                             const PlaneResolveOptions& options);
 
 // Fills `noise` (R8G8_UNORM, storage) with two layers of tiling value noise, in the frames whose
 // NoiseFrame says so (the first that samples the plugin's own noise); the others record nothing.

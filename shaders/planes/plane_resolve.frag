@@ -16,7 +16,7 @@ layout(constant_id = LS_SPEC_RESOLVE_CLOSED_FORM_OUTSIDE_SLAB) const bool kClose
 #define LS_VEC4 vec4
 #define LS_INIT(x)
 layout(push_constant) uniform ResolvePush {
-#include "slice_resolve_push_fields.h"
+#include "plane_resolve_push_fields.h"
 } resolve;
 #undef LS_VEC4
 #undef LS_INIT

@@ -1,37 +1,36 @@
-#include "slice_nodes.h"
+#include "plane_nodes.h"
 
+#include "plane_resolve_closed_form_frag.h"
+#include "plane_shaders.h"
+#include "planes_frag_variants.h"
+#include "planes_vert.h"
 #include "shared/pass_helpers.h"
 #include "shared/shader_variant.h"
-#include "slice_planes_frag_variants.h"
-#include "slice_planes_vert.h"
-#include "slice_resolve_closed_form_frag.h"
-#include "slice_shaders.h"
 #include "tiling_noise_comp.h"
 
 namespace ls {
 
 // Bindings only some frames have are build-time variants (a pipeline never declares a descriptor
 // it is not given); the cookie is looked up in the shadow map's space, so it comes with one.
-rg::ShaderCode slicePlanesShader(bool shadowMap, bool cookie, bool noise) {
-    return pickShader(ls_spirv::slice_planes_frag_variants,
-                      {{"LS_SHADOW_MAP", shadowMap},
-                       {"LS_LIGHT_COLOR", shadowMap && cookie},
-                       {"LS_NOISE", noise}});
+rg::ShaderCode planesShader(bool shadowMap, bool cookie, bool noise) {
+    return pickShader(ls_spirv::planes_frag_variants, {{"LS_SHADOW_MAP", shadowMap},
+                                                       {"LS_LIGHT_COLOR", shadowMap && cookie},
+                                                       {"LS_NOISE", noise}});
 }
 
-const SlicePlacement& placementOf(const LightFrame& frame) {
-    return static_cast<const SliceData*>(frame.data)->placement;
+const PlanePlacement& placementOf(const LightFrame& frame) {
+    return static_cast<const PlaneData*>(frame.data)->placement;
 }
 
 namespace {
 
-VkFormat accumulationFormat(SliceTarget target) {
+VkFormat accumulationFormat(PlaneTarget target) {
     switch (target) {
-        case SliceTarget::Float32:
+        case PlaneTarget::Float32:
             return VK_FORMAT_R32G32B32A32_SFLOAT;
-        case SliceTarget::Rgba8Channels:
+        case PlaneTarget::Rgba8Channels:
             return VK_FORMAT_R8G8B8A8_UNORM;
-        case SliceTarget::Float16:
+        case PlaneTarget::Float16:
             break;
     }
     return VK_FORMAT_R16G16B16A16_SFLOAT;
@@ -39,14 +38,13 @@ VkFormat accumulationFormat(SliceTarget target) {
 
 }  // namespace
 
-rg::ImageRef addSlicePlanes(rg::RenderGraph& graph, const SlicePlanesInputs& in,
-                            const SlicePlanesOptions& options) {
+rg::ImageRef addPlanes(rg::RenderGraph& graph, const PlanesInputs& in,
+                       const PlanesOptions& options) {
     const Shared& shared = in.frame.shared;
-    const bool channels = options.target == SliceTarget::Rgba8Channels;
-    rg::ImageRef sum =
-        graph.createImage(channels ? "slice planes' sum (8-bit channels)" : "slice planes' sum",
-                          rg::ImageDesc::screen(accumulationFormat(options.target)));
-    auto pass = graph.addPass("slice planes (seed 002)", rg::PassType::Graphics);
+    const bool channels = options.target == PlaneTarget::Rgba8Channels;
+    rg::ImageRef sum = graph.createImage(channels ? "planes' sum (8-bit channels)" : "planes' sum",
+                                         rg::ImageDesc::screen(accumulationFormat(options.target)));
+    auto pass = graph.addPass("planes (seed 002)", rg::PassType::Graphics);
     const auto& s = samplersOf(shared);
     rg::BindingTable table(pass);
     table
@@ -60,16 +58,16 @@ rg::ImageRef addSlicePlanes(rg::RenderGraph& graph, const SlicePlanesInputs& in,
     sum = pass.colorAttachment(sum, rg::LoadOp::Clear);
     pass.execute(
         [shared, spec = in.frame.spec, table, in, options, channels](rg::PassContext& ctx) {
-            const SlicePlacement& placement = placementOf(ctx.data(in.frame.values));
+            const PlanePlacement& placement = placementOf(ctx.data(in.frame.values));
             if (placement.planes == 0) return;  // cleared: the light's volume misses the view
             const bool shadow = in.light.shadowMap.valid(), cookie = in.light.lightColor.valid(),
                        noise = in.noise.valid();
             rg::GraphicsPipelineDesc desc;
-            desc.vertex = rg::spirv(ls_spirv::slice_planes_vert);
-            desc.fragment = slicePlanesShader(shadow, cookie, noise);
+            desc.vertex = rg::spirv(ls_spirv::planes_vert);
+            desc.fragment = planesShader(shadow, cookie, noise);
             desc.formats = ctx.renderingFormats();
             desc.bindings = table.layout();
-            desc.pushConstantBytes = sizeof(SlicePush);
+            desc.pushConstantBytes = sizeof(PlanePush);
             desc.specialization = spec.constants();
             const bool dither = channels && options.dither;
             desc.specialization.set(LS_SPEC_PLANES_CHANNELS, channels)
@@ -79,7 +77,7 @@ rg::ImageRef addSlicePlanes(rg::RenderGraph& graph, const SlicePlanesInputs& in,
             // A plane counts where it is in front of the surface.
             desc.depthCompare = options.reversedZ ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_LESS;
             desc.blend = rg::BlendMode::Additive;
-            const auto& p = shared->pipelines.graphics("slice planes", desc);
+            const auto& p = shared->pipelines.graphics("planes", desc);
             p.bind(ctx.cmd());
             table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
             p.push(ctx.cmd(), placement.push);
@@ -88,17 +86,17 @@ rg::ImageRef addSlicePlanes(rg::RenderGraph& graph, const SlicePlanesInputs& in,
     return sum;
 }
 
-bool sliceResolveNeeded(const SliceResolveOptions& options) {
-    return options.target == SliceTarget::Rgba8Channels || options.blurRadius > 0 ||
+bool planeResolveNeeded(const PlaneResolveOptions& options) {
+    return options.target == PlaneTarget::Rgba8Channels || options.blurRadius > 0 ||
            options.closedFormOutsideSlab;
 }
 
-rg::ImageRef addSliceResolve(rg::RenderGraph& graph, const SliceResolveInputs& in,
-                             const SliceResolveOptions& options) {
+rg::ImageRef addPlaneResolve(rg::RenderGraph& graph, const PlaneResolveInputs& in,
+                             const PlaneResolveOptions& options) {
     const Shared& shared = in.frame.shared;
     rg::ImageRef lin = graph.createImage("in-scattering (screen)",
                                          rg::ImageDesc::screen(VK_FORMAT_R16G16B16A16_SFLOAT));
-    auto pass = graph.addPass("resolve slice planes", rg::PassType::Graphics);
+    auto pass = graph.addPass("resolve planes", rg::PassType::Graphics);
     rg::BindingTable table = frameTable(pass, in.frame.constants);
     table
         .sampled(LS_BINDING_DEPTH, in.frame.depth, samplersOf(shared).nearest(),
@@ -107,19 +105,19 @@ rg::ImageRef addSliceResolve(rg::RenderGraph& graph, const SliceResolveInputs& i
     lin = pass.colorAttachment(lin, rg::LoadOp::DontCare);
     pass.execute([shared, spec = in.frame.spec, values = in.frame.values, table,
                   options](rg::PassContext& ctx) {
-        auto desc = fullscreenPipeline(rg::spirv(ls_spirv::slice_resolve_closed_form_frag), ctx,
+        auto desc = fullscreenPipeline(rg::spirv(ls_spirv::plane_resolve_closed_form_frag), ctx,
                                        table.layout());
-        desc.pushConstantBytes = sizeof(SliceResolvePush);
+        desc.pushConstantBytes = sizeof(PlaneResolvePush);
         desc.specialization = spec.constants();
-        const bool channels = options.target == SliceTarget::Rgba8Channels;
+        const bool channels = options.target == PlaneTarget::Rgba8Channels;
         desc.specialization.set(LS_SPEC_RESOLVE_CHANNELS, channels)
             .set(LS_SPEC_RESOLVE_BLUR_RADIUS, static_cast<int32_t>(options.blurRadius))
             .set(LS_SPEC_RESOLVE_CLOSED_FORM_OUTSIDE_SLAB, options.closedFormOutsideSlab);
-        const auto& p = shared->pipelines.graphics("resolve slice planes", desc);
+        const auto& p = shared->pipelines.graphics("resolve planes", desc);
         p.bind(ctx.cmd());
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
-        const SlicePlacement& placement = placementOf(ctx.data(values));
-        SliceResolvePush push = placement.resolve;
+        const PlanePlacement& placement = placementOf(ctx.data(values));
+        PlaneResolvePush push = placement.resolve;
         if (placement.planes == 0) push.slab = {1e30f, 1e30f, 0.0f, 0.0f};  // all in closed form
         p.push(ctx.cmd(), push);
         ctx.vk().CmdDraw(ctx.cmd(), 3, 1, 0, 0);

@@ -1,5 +1,5 @@
-// The fields of the slice planes' push block, written once for both languages: slice_push.glsl
-// declares the block with them, passes/slices/slice_geometry.h the C++ struct SlicePush, each
+// The fields of the planes' push block, written once for both languages: plane_push.glsl
+// declares the block with them, passes/planes/plane_geometry.h the C++ struct PlanePush, each
 // defining LS_MAT4, LS_VEC4 and LS_INIT (a C++ default member value; nothing in GLSL) before
 // including this. Only mat4 and vec4 members: the push block's layout is C++'s.
 LS_MAT4 viewToWorld LS_INIT(1.0f);

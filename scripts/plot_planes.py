@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""Time against error of seed 002's slice planes beside epipolar and brute force, one panel per scene,
-from a `lightscatter bench` run of bench/slices.json. Points are told apart by marker and colour in a
+"""Time against error of seed 002's planes beside epipolar and brute force, one panel per scene,
+from a `lightscatter bench` run of bench/planes.json. Points are told apart by marker and colour in a
 legend (no labels on the plot). Uses Debian's python3-matplotlib."""
 import json
 import sys
@@ -13,13 +13,16 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 STYLE = {"float16": ("tab:green", "o"), "float32": ("tab:olive", "s"), "rgba8": ("tab:purple", "v"),
          "rgba8-dither": ("tab:pink", "^")}
+# The method's names in bench results: "slices" in runs made before it was renamed (the word now
+# means only an epipolar line).
+PLANES = ("planes", "slices")
 
 
 def key(r):
-    if r["method"] != "slices":
+    if r["method"] not in PLANES:
         return r["label"], ("tab:red" if r["method"] == "brute-force" else "tab:blue", "D")
     if r["family"] == "profiles":
-        return "slices balanced (128 planes, float16)", ("tab:green", "*")
+        return "planes balanced (128 planes, float16)", ("tab:green", "*")
     target = r["label"].split()[-1]
     return r["label"], STYLE.get(target, ("black", "x"))
 
@@ -33,8 +36,8 @@ def main():
     for ax, scene in zip(axes[0], scenes):
         for r in (r for r in runs if r["scene"] == scene and "error" in r):
             label, (color, marker) = key(r)
-            size = 70 if r["method"] != "slices" or r["family"] == "profiles" else 40
-            alpha = 1.0 if "256" in label or r["method"] != "slices" or r["family"] == "profiles" else 0.55
+            size = 70 if r["method"] not in PLANES or r["family"] == "profiles" else 40
+            alpha = 1.0 if "256" in label or r["method"] not in PLANES or r["family"] == "profiles" else 0.55
             h = ax.scatter(r["time"]["median"], max(r["error"]["meanRelative"], 1e-5), color=color, marker=marker,
                            s=size, alpha=alpha, zorder=3)
             handles.setdefault(label, h)
@@ -50,7 +53,7 @@ def main():
                  fontsize=9)
     fig.legend(handles.values(), handles.keys(), loc="lower center", ncol=4, fontsize=8, frameon=False)
     fig.tight_layout(rect=(0, 0.16, 1, 0.95))
-    path = out / "slices_1920x1080.png"
+    path = out / "planes_1920x1080.png"
     fig.savefig(path, dpi=110)
     print(path)
 

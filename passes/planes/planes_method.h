@@ -1,17 +1,17 @@
 #pragma once
-// Seed 002's view-aligned slice planes as a method of the frame graph (method_unit.h): the planes
+// Seed 002's view-aligned planes as a method of the frame graph (method_unit.h): the planes
 // placed on the CPU each frame, blended into an accumulation target, resolved into Lin.
 #include <memory>
 
+#include "plane_geometry.h"
 #include "shared/method_unit.h"
-#include "slice_geometry.h"
 
 namespace ls {
 
-class SlicesMethod final : public MethodUnit {
+class PlanesMethod final : public MethodUnit {
   public:
     struct Options {
-        SliceTarget target = SliceTarget::Float16;
+        PlaneTarget target = PlaneTarget::Float16;
         uint32_t blur = 0;
         bool dither = false;
         bool noise = false;
@@ -19,7 +19,7 @@ class SlicesMethod final : public MethodUnit {
         bool reversedZ = false;  // the camera's depth convention (the planes depth-test)
         bool operator==(const Options&) const = default;
     };
-    const char* name() const override { return "slices"; }
+    const char* name() const override { return "planes"; }
     MethodCaps caps() const override;
     std::string refusal(const LightSetup& light) const override;
     bool readsNoise(const LightSetup& light) const override { return light.noise; }

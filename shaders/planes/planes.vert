@@ -5,7 +5,7 @@
 // trilinear placement of the seed's vertex shader). Five clip distances cut it to a spot's
 // pyramid (the seed's user clip planes), so fragments outside it are never shaded.
 #include "frame.glsl"
-#include "slice_push.glsl"
+#include "plane_push.glsl"
 
 layout(location = 0) out vec3 worldPos;
 layout(location = 1) flat out int plane;
@@ -35,9 +35,9 @@ void main() {
     const vec2 corners[6] = vec2[6](vec2(0, 0), vec2(1, 0), vec2(0, 1), vec2(1, 0), vec2(1, 1), vec2(0, 1));
     vec2 c = corners[gl_VertexIndex];
     plane = gl_InstanceIndex;
-    float z = slice.boxMin.z + (float(gl_InstanceIndex) + 0.5) * slice.boxMin.w;
-    vec3 viewPos = vec3(mix(slice.boxMin.xy, slice.boxMax.xy, c), -z);
-    worldPos = (slice.viewToWorld * vec4(viewPos, 1.0)).xyz;
+    float z = placement.boxMin.z + (float(gl_InstanceIndex) + 0.5) * placement.boxMin.w;
+    vec3 viewPos = vec3(mix(placement.boxMin.xy, placement.boxMax.xy, c), -z);
+    worldPos = (placement.viewToWorld * vec4(viewPos, 1.0)).xyz;
     gl_Position = frame.viewProj * vec4(worldPos, 1.0);
     if (kLightType == LIGHT_SPOT) {
         spotClipDistances(worldPos);

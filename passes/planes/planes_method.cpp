@@ -1,0 +1,69 @@
+#include "planes_method.h"
+
+#include "plane_nodes.h"
+#include "shared/chain_inputs.h"
+#include "shared/refusals.h"
+
+namespace ls {
+
+MethodCaps PlanesMethod::caps() const {
+    MethodCaps c;
+    c.budgeted = true;
+    return c;
+}
+
+std::string PlanesMethod::refusal(const LightSetup& s) const {
+    return firstRefusal(
+        {refuseCubeShadow(s, name()),
+         refuseNoDepthAttachment(s, "method planes (seed 002) depth-tests its planes"),
+         refuseSimplified(s, name())});
+}
+
+std::unique_ptr<LightData> PlanesMethod::makeData() const {
+    return std::make_unique<PlaneData>();
+}
+
+std::vector<CpuWork> PlanesMethod::prepare(LightData* data, LightFrame&,
+                                           const LightSetup& s) const {
+    static_cast<PlaneData*>(data)->placement =
+        placePlanes(s.camera, s.light, s.medium, s.planes, s.timeSeconds);
+    return {};
+}
+
+ChainOptions PlanesMethod::options(const LightSetup& s, const LightData*,
+                                   const ChainOptions*) const {
+    return ChainOptions(Options{s.planeTarget, s.planeBlur, s.planeDither, s.noise,
+                                s.shadowSampling, s.camera.reversedZ});
+}
+
+ChainOutputs PlanesMethod::addChain(rg::RenderGraph& g, const ChainInputs& in, const ChainConfig& c,
+                                    const CompositeTarget&) const {
+    const Options& o = *c.options.get<Options>();
+    const FrameContext frame = frameContext(in, c);
+    PlanesInputs planes{frame, {}, {}};
+    if (c.shadowed && o.shadowSampling) planes.light.shadowMap = in.shadowMap;
+    if (c.shadowed) planes.light.lightColor = in.lightColor;
+    planes.light.shadowMapSize = c.shadowMapSize;
+    if (o.noise) planes.noise = in.noise;
+    PlanesOptions planeOptions;
+    planeOptions.target = o.target;
+    planeOptions.dither = o.dither;
+    planeOptions.reversedZ = o.reversedZ;
+    const rg::ImageRef sum = addPlanes(g, planes, planeOptions);
+    const PlaneResolveOptions resolve{o.target, o.blur, c.light == LightType::Directional};
+    ChainOutputs out;
+    out.lin = planeResolveNeeded(resolve) ? addPlaneResolve(g, {frame, sum}, resolve) : sum;
+    return out;
+}
+
+std::string PlanesMethod::summary(const ChainConfig& c) const {
+    const Options& o = *c.options.get<Options>();
+    return std::string("seed 002's view-aligned planes") +
+           (o.target == PlaneTarget::Rgba8Channels ? " into 8-bit channels"
+            : o.target == PlaneTarget::Float32     ? " into a float32 target"
+                                                   : "") +
+           (c.shadowed && !o.shadowSampling ? ", no shadow-map sampling" : "") +
+           (o.noise ? ", scrolling noise" : "") + (o.blur ? ", blurred" : "");
+}
+
+}  // namespace ls
