@@ -3,11 +3,10 @@
 #include <algorithm>
 
 #include "epipolar/step_counts.h"
+#include "planes/plane_nodes.h"
 #include "planes/tiling_noise.h"
 #include "shared/point_table.h"
 #include "shared/shared_nodes.h"
-#include "planes/plane_nodes.h"
-#include "planes/tiling_noise.h"
 
 namespace lightscatter::detail {
 
