@@ -70,6 +70,7 @@ struct RecordedFrame {
     std::vector<PassTime> cpuWork;
     bool countedSteps = false;  // its march added into stepBuffers[frame % kTimedFrames]
     uint32_t stepSlices = 0;    // ... for this many slices
+    bool graphCompiled = false;
 };
 
 // A compiled graph the plugin keeps for the configuration it was built for, so that a light
@@ -266,6 +267,7 @@ struct Plugin::Impl {
         std::vector<std::string> setupPasses;
         std::vector<PassTime> cpuWork;
         detail::MethodChoice choice;
+        bool graphCompiled = false;
     };
     Prepared prepare(const FrameDescription& frame) {
         Chosen chosen = choose(frame);
@@ -317,7 +319,9 @@ struct Plugin::Impl {
             p.noise.make = !tilingNoise->made();
             if (p.noise.make) p.setupPasses.push_back("tiling noise");
         }
+        const uint64_t compiledBefore = graphsCompiled;
         p.graph = &graphFor(c);
+        p.graphCompiled = graphsCompiled != compiledBefore;
         lastConfig = c;
         const FrameGraph& fg = *p.graph->built;
         // This frame's handles and stages; layouts are part of the configuration.
@@ -381,6 +385,7 @@ struct Plugin::Impl {
         for (const auto& pass : f.graph->executor->compiled().passes)
             f.passNames.push_back(fg.graph->passes()[pass.pass].name);
         f.setupPasses = p.setupPasses;
+        f.graphCompiled = p.graphCompiled;
         f.countedSteps = fg.stepCounts.valid();
         f.stepSlices = c.stepCountSlices;
         f.cpuWork = p.cpuWork;
@@ -459,6 +464,7 @@ struct Plugin::Impl {
         r.reason = f->reason;
         r.notice = f->notice;
         r.setupPasses = f->setupPasses;
+        r.graphCompiled = f->graphCompiled;
         r.cpuWork = f->cpuWork;
         return r;
     }

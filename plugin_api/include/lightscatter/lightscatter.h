@@ -506,9 +506,15 @@ struct FrameReport {
     std::vector<PassTime> cpuWork;  // CPU time the plugin spent preparing the frame (the beam tree)
     double totalMilliseconds = 0;
     std::string device;
-    std::vector<std::string> passNames;    // the nodes this frame was built from
-    std::vector<std::string> setupPasses;  // run before the frame this time (the point-light table)
-    std::string depthStencilFormat;        // what was chosen for the stencil textures
+    std::vector<std::string> passNames;  // the nodes this frame was built from
+    // Passes of the frame that fill what the plugin keeps across frames, this time (the point-light
+    // table: its first frame, or a new medium; the tiling noise: its first frame).
+    std::vector<std::string> setupPasses;
+    // This frame compiled a frame graph: its configuration (sizes, formats, layouts, the method,
+    // the lights' kinds and settings) was met for the first time, or not among the graphs kept
+    // (the plugin keeps the last 8 it used). Other frames reuse a compiled graph.
+    bool graphCompiled = false;
+    std::string depthStencilFormat;  // what was chosen for the stencil textures
     // With DebugOptions::countSteps on an epipolar frame, once `timed` (the frame is done): what
     // its ray march did. Empty otherwise.
     std::optional<StepCounts> steps;
