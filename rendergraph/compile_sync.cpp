@@ -277,6 +277,11 @@ void deriveSync(const RenderGraph& graph, CompiledGraph& out) {
         }
     }
 
+    const VkExtent2D screen = graph.screenExtent();
+    for (auto& plan : out.passes)
+        plan.screenSized = screen.width != 0 && plan.renderExtent.width == screen.width &&
+                           plan.renderExtent.height == screen.height;
+
     // First uses wait for whatever last touched the same memory: the resource itself in the
     // previous frame, and every resource it shares memory with (earlier in this frame, or later in
     // the previous one). A barrier's first scope covers all earlier submissions on the queue, so

@@ -52,6 +52,9 @@ struct PassPlan {
     std::optional<AttachmentPlan> depth;
     std::optional<AttachmentPlan> stencil;
     VkExtent2D renderExtent{0, 0};
+    // It renders over the whole screen (its extent is the graph's screen): a frame recorded at a
+    // smaller screen (GraphExecutor::record's `screen`) renders over that instead.
+    bool screenSized = false;
 };
 
 struct ResourcePlan {

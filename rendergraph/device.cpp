@@ -147,6 +147,7 @@ VKAPI_ATTR VkBool32 VKAPI_CALL Device::onMessage(VkDebugUtilsMessageSeverityFlag
 }
 
 Device::Device(const DeviceOptions& options) : echo_(options.echoMessages) {
+    allocator_ = options.allocator;
     try {
         vk_.loadGlobal(options.getInstanceProcAddr);
         createInstance(options);
@@ -242,6 +243,12 @@ void Device::createInstance(const DeviceOptions& options) {
     VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
     features.enabledValidationFeatureCount = options.syncValidation ? 1 : 0;
     features.pEnabledValidationFeatures = &syncFeature;
+    // Without its own handles the layer passes the driver's on, as an engine sees them: a handle
+    // the driver reuses for a new object comes back as it is.
+    const VkValidationFeatureDisableEXT uniqueHandles =
+        VK_VALIDATION_FEATURE_DISABLE_UNIQUE_HANDLES_EXT;
+    features.disabledValidationFeatureCount = options.uniqueHandles ? 0 : 1;
+    features.pDisabledValidationFeatures = &uniqueHandles;
 
     VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
     info.pApplicationInfo = &app;

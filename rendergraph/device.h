@@ -25,6 +25,11 @@ struct DeviceOptions {
     bool swapchain = false;                       // enable VK_KHR_swapchain on the device
     // Where the runtime's Vulkan entry points come from; null: the Vulkan loader's.
     PFN_vkGetInstanceProcAddr getInstanceProcAddr = nullptr;
+    // The host allocator of every object made on the device, the instance and device included.
+    const VkAllocationCallbacks* allocator = nullptr;
+    // With validation: the layer's own unique handles (its default). Off, it passes the driver's
+    // handles through, as engines ship.
+    bool uniqueHandles = true;
 };
 
 // An engine's own Vulkan objects, wrapped without taking ownership (plugin integration).

@@ -441,7 +441,8 @@ void GraphExecutor::recordPass(VkCommandBuffer cmd, uint32_t position,
         for (const auto& c : plan.colors) colors.push_back(attachment(c, images_[c.resource].full));
         VkRenderingAttachmentInfo depth{}, stencil{};
         VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
-        info.renderArea = {{0, 0}, plan.renderExtent};
+        const VkExtent2D extent = renderExtent(position);
+        info.renderArea = {{0, 0}, extent};
         info.layerCount = 1;
         info.colorAttachmentCount = static_cast<uint32_t>(colors.size());
         info.pColorAttachments = colors.data();
@@ -458,13 +459,10 @@ void GraphExecutor::recordPass(VkCommandBuffer cmd, uint32_t position,
             device_.vk().CmdBeginQuery(
                 cmd, samples_, slot_ * countedPerFrame_ + static_cast<uint32_t>(counted), 0);
         device_.vk().CmdBeginRendering(cmd, &info);
-        VkViewport viewport{0.0f,
-                            0.0f,
-                            static_cast<float>(plan.renderExtent.width),
-                            static_cast<float>(plan.renderExtent.height),
-                            0.0f,
-                            1.0f};
-        VkRect2D scissor{{0, 0}, plan.renderExtent};
+        VkViewport viewport{
+            0.0f, 0.0f, static_cast<float>(extent.width), static_cast<float>(extent.height),
+            0.0f, 1.0f};
+        VkRect2D scissor{{0, 0}, extent};
         device_.vk().CmdSetViewport(cmd, 0, 1, &viewport);
         device_.vk().CmdSetScissor(cmd, 0, 1, &scissor);
         if (pass.execute) pass.execute(ctx);
@@ -480,8 +478,20 @@ void GraphExecutor::recordPass(VkCommandBuffer cmd, uint32_t position,
     device_.endLabel(cmd);
 }
 
+VkExtent2D GraphExecutor::renderExtent(uint32_t position) const {
+    const PassPlan& plan = compiled_.passes[position];
+    return plan.screenSized ? frameScreen_ : plan.renderExtent;
+}
+
 uint64_t GraphExecutor::record(VkCommandBuffer cmd, uint64_t frame, const FrameData& data,
-                               const TransientScope* before) {
+                               const TransientScope* before, VkExtent2D screen) {
+    const VkExtent2D full = graph_.screenExtent();
+    if (screen.width == 0 || screen.height == 0) screen = full;
+    if (screen.width > full.width || screen.height > full.height)
+        throw VulkanError("a frame of " + std::to_string(screen.width) + "x" +
+                          std::to_string(screen.height) + " on a graph built for " +
+                          std::to_string(full.width) + "x" + std::to_string(full.height));
+    frameScreen_ = screen;
     if (heap_ && heap_->generation() != heapGeneration_)
         throw VulkanError("the transient heap was replaced since this graph was placed in it");
     if (frame == 0) frame = lastFrame_ + 1;
@@ -546,7 +556,7 @@ uint64_t GraphExecutor::record(VkCommandBuffer cmd, uint64_t frame, const FrameD
     return frame;
 }
 
-void GraphExecutor::rehearse(const FrameData& data) {
+void GraphExecutor::rehearse(const FrameData& data, VkExtent2D screen) {
     // Nothing of it is submitted: the frame number and the timing slot it took are given back.
     const uint64_t lastFrame = lastFrame_;
     const std::vector<uint64_t> slotFrames = slotFrames_;
@@ -559,7 +569,7 @@ void GraphExecutor::rehearse(const FrameData& data) {
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     RG_VK(device_.vk().BeginCommandBuffer(cmd_, &begin));
     try {
-        record(cmd_, 0, data);
+        record(cmd_, 0, data, nullptr, screen);
     } catch (...) {
         device_.vk().ResetCommandBuffer(
             cmd_, 0);  // possibly inside a rendering scope: not ended, dropped
@@ -571,13 +581,13 @@ void GraphExecutor::rehearse(const FrameData& data) {
     restore();
 }
 
-FrameTimings GraphExecutor::run(uint64_t frame, const FrameData& data,
-                                const TransientScope* before) {
+FrameTimings GraphExecutor::run(uint64_t frame, const FrameData& data, const TransientScope* before,
+                                VkExtent2D screen) {
     RG_VK(device_.vk().ResetCommandBuffer(cmd_, 0));
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     RG_VK(device_.vk().BeginCommandBuffer(cmd_, &begin));
-    frame = record(cmd_, frame, data, before);
+    frame = record(cmd_, frame, data, before, screen);
     RG_VK(device_.vk().EndCommandBuffer(cmd_));
     device_.submitAndWait(cmd_, fence_);
     return readTimings(frame);
@@ -695,7 +705,9 @@ VkImageLayout PassContext::layout(ImageRef ref) const {
 }
 
 VkExtent2D PassContext::extent(ImageRef ref) const {
-    return executor_.compiled_.resources.at(ref.id).extent;
+    const ResourceDecl& r = executor_.graph_.resource(ref.id);
+    if (r.imported) return r.importedImage.extent;  // this frame's
+    return executor_.graph_.imageExtent(ref.id, executor_.frameScreen_);
 }
 
 VkFormat PassContext::format(ImageRef ref) const {
@@ -711,7 +723,7 @@ VkDeviceSize PassContext::size(BufferRef ref) const {
 }
 
 VkExtent2D PassContext::renderExtent() const {
-    return executor_.compiled_.passes[position_].renderExtent;
+    return executor_.renderExtent(position_);
 }
 
 const RenderingFormats& PassContext::renderingFormats() const {

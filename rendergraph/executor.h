@@ -60,7 +60,7 @@ class GraphExecutor {
     // Records the frame into the executor's own command buffer, submits, waits, and returns the
     // timings of this frame (numbered as record() numbers it).
     FrameTimings run(uint64_t frame = 0, const FrameData& data = {},
-                     const TransientScope* before = nullptr);
+                     const TransientScope* before = nullptr, VkExtent2D screen = {0, 0});
 
     // For engines that own submission: records the frame into `cmd` and returns its number, `frame`
     // when the caller numbers its frames (increasing), else the executor's next. Each of the last
@@ -73,9 +73,13 @@ class GraphExecutor {
     // Views of imported images are made for each frame and destroyed kTimingSlots frames later
     // (or by releaseCompleted()), never looked up by handle: an engine that destroys an image and
     // gets the same handle back for a new one gets views of the new one.
+    //
+    // `screen`: the frame's screen, at most the graph's (zero: the graph's). The passes that render
+    // over the screen render over it, and PassContext::extent() of screen-sized images is it: the
+    // graph's transients are sized for its largest screen (dynamic resolution).
     static constexpr uint32_t kTimingSlots = 8;
     uint64_t record(VkCommandBuffer cmd, uint64_t frame = 0, const FrameData& data = {},
-                    const TransientScope* before = nullptr);
+                    const TransientScope* before = nullptr, VkExtent2D screen = {0, 0});
     // Destroys the views of imported images made for frames up to `completed`, which the GPU
     // has finished.
     void releaseCompleted(uint64_t completed);
@@ -89,7 +93,7 @@ class GraphExecutor {
     // Records a frame into the executor's own command buffer and throws it away (no frame number
     // or timing slot is used), so that what passes create on first use (pipelines) exists, or has
     // failed, before an engine's command buffer is touched.
-    void rehearse(const FrameData& data = {});
+    void rehearse(const FrameData& data = {}, VkExtent2D screen = {0, 0});
     FrameTimings readTimings();
 
     const CompiledGraph& compiled() const { return compiled_; }
@@ -133,7 +137,9 @@ class GraphExecutor {
     // Views of imported images, made for the frame of each timing slot.
     std::vector<std::vector<ImageObjects>> importViews_;
     TransientScope transientScope_;
-    const FrameData* frameData_ = nullptr;   // while record() runs
+    const FrameData* frameData_ = nullptr;  // while record() runs
+    VkExtent2D frameScreen_{0, 0};          // the screen of the frame being recorded
+    VkExtent2D renderExtent(uint32_t position) const;
     std::vector<RenderingFormats> formats_;  // by pass position
     VkQueryPool queries_ = VK_NULL_HANDLE;
     VkQueryPool samples_ = VK_NULL_HANDLE;  // occlusion queries of the passes that count samples

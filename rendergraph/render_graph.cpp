@@ -40,12 +40,15 @@ BufferRef RenderGraph::createBuffer(std::string name, const BufferDesc& desc) {
     return BufferRef{id_, static_cast<uint32_t>(resources_.size() - 1), 0};
 }
 
-ImageRef RenderGraph::importImage(std::string name, const ImportedImage& image) {
+ImageRef RenderGraph::importImage(std::string name, const ImportedImage& image,
+                                  bool extentVaries) {
     ResourceDecl r;
     r.name = std::move(name) + nameSuffix_;
     r.imported = true;
     r.importedImage = image;
     r.declaredLayout = image.initialLayout;
+    r.declaredExtent = image.extent;
+    r.extentVaries = extentVaries;
     r.image = ImageDesc::absolute(image.format, image.extent.width, image.extent.height);
     r.image.mipLevels = image.mipLevels;
     r.image.arrayLayers = image.arrayLayers;
@@ -86,8 +89,12 @@ void RenderGraph::updateImport(ImageRef image, const ImportedImage& desc) {
         throw GraphError(Rule::UnknownResource, "updateImport: handle is not an imported image");
     auto& r = resources_[image.id];
     const auto& old = r.importedImage;
-    if (old.format != desc.format || old.extent.width != desc.extent.width ||
-        old.extent.height != desc.extent.height || old.usage != desc.usage ||
+    const bool extentFits =
+        r.extentVaries ? desc.extent.width <= r.declaredExtent.width &&
+                             desc.extent.height <= r.declaredExtent.height
+                       : desc.extent.width == r.declaredExtent.width &&
+                             desc.extent.height == r.declaredExtent.height;
+    if (old.format != desc.format || !extentFits || old.usage != desc.usage ||
         old.mipLevels != desc.mipLevels || old.arrayLayers != desc.arrayLayers ||
         (desc.initialLayout != r.declaredLayout &&
          desc.initialLayout != VK_IMAGE_LAYOUT_UNDEFINED) ||
@@ -111,9 +118,13 @@ void RenderGraph::updateImport(BufferRef buffer, const ImportedBuffer& desc) {
 }
 
 VkExtent2D RenderGraph::imageExtent(uint32_t resource) const {
+    return imageExtent(resource, screen_);
+}
+
+VkExtent2D RenderGraph::imageExtent(uint32_t resource, VkExtent2D screen) const {
     const auto& r = resources_.at(resource);
     if (r.image.sizeMode == SizeMode::ScreenRelative)
-        return scaled(screen_, r.image.scaleX, r.image.scaleY);
+        return scaled(screen, r.image.scaleX, r.image.scaleY);
     return {r.image.width, r.image.height};
 }
 

@@ -23,6 +23,8 @@ struct ResourceDecl {
     ImportedImage importedImage;
     VkImageLayout declaredLayout = VK_IMAGE_LAYOUT_UNDEFINED;  // the import's initial layout
                                                                // when the graph was compiled
+    VkExtent2D declaredExtent{0, 0};  // the import's extent when the graph was compiled
+    bool extentVaries = false;        // a frame's image may be smaller (RenderGraph::importImage)
     ImportedBuffer importedBuffer;
     bool output = false;  // marked as a result: its producers are never culled
     uint32_t versionCount = 1;
@@ -81,7 +83,10 @@ class RenderGraph {
 
     ImageRef createImage(std::string name, const ImageDesc& desc);
     BufferRef createBuffer(std::string name, const BufferDesc& desc);
-    ImageRef importImage(std::string name, const ImportedImage& image);
+    // `extentVaries`: a frame's image may be any size up to this one (dynamic resolution); the
+    // passes that render over the screen then render over the frame's screen (GraphExecutor::
+    // record's `screen`).
+    ImageRef importImage(std::string name, const ImportedImage& image, bool extentVaries = false);
     BufferRef importBuffer(std::string name, const ImportedBuffer& buffer);
     PassBuilder addPass(std::string name, PassType type);
     // Host data the passes read when they are recorded; its value is given to each record()
@@ -106,7 +111,8 @@ class RenderGraph {
     VkExtent2D screenExtent() const { return screen_; }
 
     // Per-frame change of an import's handle or states. The format, extent, usage and layouts must
-    // stay what the graph was compiled with, but that an image's initial layout may be UNDEFINED
+    // stay what the graph was compiled with, but that an import declared with extentVaries may be
+    // smaller, and that an image's initial layout may be UNDEFINED
     // for a frame (its contents discarded: an image not yet filled), where the graph transitions
     // it at its first use (the executor refuses the frame otherwise). Anything else needs a new
     // graph.
@@ -119,8 +125,9 @@ class RenderGraph {
     std::vector<PassDecl>& passes() { return passes_; }
     const ResourceDecl& resource(uint32_t id) const { return resources_.at(id); }
 
-    // The extent an image resolves to at the current screen size.
+    // The extent an image resolves to at the current screen size, or at `screen`.
     VkExtent2D imageExtent(uint32_t resource) const;
+    VkExtent2D imageExtent(uint32_t resource, VkExtent2D screen) const;
 
   private:
     friend class PassBuilder;

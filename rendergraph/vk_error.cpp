@@ -2,6 +2,15 @@
 
 namespace rg {
 
+std::string callText(const char* call) {
+    const std::string text = call;
+    const size_t open = text.find('(');
+    const size_t dot = text.rfind('.', open);
+    if (open == std::string::npos || dot == std::string::npos) return text;
+    // What precedes the entry point's name is how the runtime reached it, not what was called.
+    return "vk" + text.substr(dot + 1);
+}
+
 const char* resultName(VkResult result) {
     switch (result) {
         case VK_SUCCESS:

@@ -20,10 +20,14 @@ class OutOfDeviceMemory : public VulkanError {
 
 const char* resultName(VkResult result);
 
+// The call as a message names it: "vkWaitForFences(device, ...)" for the runtime's
+// "device_.vk().WaitForFences(device, ...)" (every call goes through loaded entry points).
+std::string callText(const char* call);
+
 // Throws VulkanError naming the call that failed and its result code.
 inline void check(VkResult result, const char* call) {
     if (result != VK_SUCCESS)
-        throw VulkanError(std::string(call) + " failed: " + resultName(result));
+        throw VulkanError(callText(call) + " failed: " + resultName(result));
 }
 
 }  // namespace rg

@@ -32,6 +32,7 @@ struct LightSetup {
     bool simplified = false;       // seed 004's light model
     bool depthAttachment = false;  // the engine's depth may be a depth attachment
     double timeSeconds = 0.0;
+    float preExposure = 1.0f;  // the factor the composite scales Lin by in the engine's color
     size_t occluders = 0;  // the frame's occluders, counted
     // The occluders in double, checked: filled only when the frame's method reads them.
     std::vector<beam::Occluder> beamOccluders;

@@ -117,10 +117,11 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
         return several ? " (light " + std::to_string(i) + ")" : std::string();
     };
 
-    fg.depth = g.importImage("engine depth", importDescription(c.depth));
-    fg.color = g.importImage("engine color", importDescription(c.color));
+    fg.depth = g.importImage("engine depth", importDescription(c.depth), c.dynamicScreen);
+    fg.color = g.importImage("engine color", importDescription(c.color), c.dynamicScreen);
     if (c.inscatterOut.given())
-        fg.inscatterOut = g.importImage("in-scattering output", importDescription(c.inscatterOut));
+        fg.inscatterOut = g.importImage("in-scattering output", importDescription(c.inscatterOut),
+                                        c.dynamicScreen);
     // A light's shadow map and color are imported whenever given, so that they are left in the
     // layouts the engine asked for even where no node reads them.
     fg.lights.resize(c.lights.size());

@@ -41,6 +41,9 @@ struct LightGraphConfig {
 struct GraphConfig {
     const ls::MethodUnit* method = nullptr;
     VkExtent2D screen{0, 0};
+    // The screen above is the plugin's maxRenderSize: each frame's engine images (depth, color,
+    // inscatterOut) may be smaller, and the passes over the screen render over theirs.
+    bool dynamicScreen = false;
     VkFormat depthStencil = VK_FORMAT_UNDEFINED;
     VkFormat coordinates =
         VK_FORMAT_R32G32_SFLOAT;  // epipolar's coordinate texture (coordinateFormat)

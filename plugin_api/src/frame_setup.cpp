@@ -636,6 +636,10 @@ FrameSetup setupFrameWide(const FrameDescription& f, bool withImages) {
     if (!std::isfinite(f.timeSeconds))
         fail("timeSeconds = " + num(f.timeSeconds) + ": must be finite");
     s.timeSeconds = f.timeSeconds;
+    if (!(f.preExposure >= 0.0f && f.preExposure <= limits::kMaxPreExposure))
+        fail("preExposure = " + num(f.preExposure) + ": must be in [0, " +
+             num(limits::kMaxPreExposure) + "] (lightscatter.h, limits::kMaxPreExposure)");
+    s.preExposure = f.preExposure;
 
     // Camera.
     const Camera& c = f.camera;

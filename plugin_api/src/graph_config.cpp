@@ -30,6 +30,13 @@ GraphConfig graphConfig(const ValidatedFrame& frame, const ls::MethodUnit& metho
     c.depth = images.depth;
     c.color = images.color;
     c.inscatterOut = images.inscatterOut;
+    if (options.maxScreen.width != 0) {
+        // Dynamic resolution: the graph is the maximum's, whatever this frame's size.
+        c.screen = options.maxScreen;
+        c.dynamicScreen = true;
+        for (ImportState* s : {&c.depth, &c.color, &c.inscatterOut})
+            if (s->given()) s->extent = options.maxScreen;
+    }
     c.extinction = glm::any(glm::greaterThan(first.medium.betaT(), glm::vec3(0.0f)));
     c.poisonTransients = options.poisonTransients;
     bool noise = false;

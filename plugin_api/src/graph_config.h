@@ -21,6 +21,9 @@ struct GraphOptions {
     VkFormat coordinates = VK_FORMAT_R32G32_SFLOAT;
     bool poisonTransients = false;
     bool countSteps = false;  // DebugOptions::countSteps: where the method counts (epipolar)
+    // PluginCreateInfo::maxRenderSize (zero: none): the graph is built for it, and a frame's screen
+    // may be any size within it.
+    VkExtent2D maxScreen{0, 0};
 };
 
 // `data`: each light's method state after prepare() (empty for the budget); `previous`: the last

@@ -1,5 +1,8 @@
 #include <algorithm>
 #include <array>
+#include <map>
+#include <mutex>
+#include <tuple>
 #include <cstdlib>
 #include <deque>
 #include <optional>
@@ -50,6 +53,37 @@ const PluginCreateInfo& checked(const PluginCreateInfo& info) {
     if (!c.queue) null("queue");
     detail::checkEnabledFeatures(c.enabledFeatures);
     return info;
+}
+
+// The pipelines and samplers of one device, shared by every plugin on it (views of one engine, or
+// plugins on several threads): a wrapper of the device of its own, so that it outlives any one
+// plugin. Plugins that load Vulkan differently, or allocate differently, keep theirs apart.
+struct DeviceShared {
+    explicit DeviceShared(const rg::ExternalDevice& d) : device(d), state(device) {}
+    rg::Device device;
+    ls::SharedState state;
+};
+
+ls::Shared sharedFor(const rg::ExternalDevice& d) {
+    using Key = std::tuple<VkDevice, PFN_vkGetInstanceProcAddr, const VkAllocationCallbacks*>;
+    static std::mutex mutex;
+    static std::map<Key, std::weak_ptr<DeviceShared>> devices;
+    std::lock_guard lock(mutex);
+    const Key key{d.device, d.getInstanceProcAddr, d.allocator};
+    std::shared_ptr<DeviceShared> found = devices[key].lock();
+    if (!found) {
+        found = std::make_shared<DeviceShared>(d);
+        devices[key] = found;
+        // Devices of plugins all gone are forgotten (a handle may be reused for a new device).
+        std::erase_if(devices, [](const auto& entry) { return entry.second.expired(); });
+    }
+    return ls::Shared(found, &found->state);
+}
+
+rg::ExternalDevice externalDevice(const PluginCreateInfo& info) {
+    const VulkanContext& c = checked(info).context;
+    return {c.instance, c.physicalDevice,         c.device,      c.queue,
+            c.queueFamily, info.getInstanceProcAddr, info.allocator};
 }
 
 // A compiled frame graph, and the executor that runs it; kept while frames recorded with it may
@@ -109,13 +143,11 @@ size_t configHash(const GraphConfig& c) {
 
 struct Plugin::Impl {
     explicit Impl(const PluginCreateInfo& info)
-        : device(rg::ExternalDevice{checked(info).context.instance, info.context.physicalDevice,
-                                    info.context.device, info.context.queue,
-                                    info.context.queueFamily, info.getInstanceProcAddr,
-                                    info.allocator}),
+        : device(externalDevice(info)),
           caps(device),
-          shared(std::make_shared<ls::SharedState>(device)),
+          shared(sharedFor(externalDevice(info))),
           framesInFlight(info.framesInFlight),
+          maxRenderSize(info.maxRenderSize),
           heap(device, "plugin transient heap") {
         depthStencil = detail::stencilFormat(caps);
         coordinates = detail::coordinateFormat(caps);
@@ -147,7 +179,7 @@ struct Plugin::Impl {
     static void check(const FrameDescription& frame) { choose(frame); }
 
     // One light's constants.
-    static ls::FrameConstants frameConstants(const detail::FrameSetup& setup) {
+    ls::FrameConstants frameConstants(const detail::FrameSetup& setup) const {
         const ls::TableLayout table =
             ls::tableLayoutFor(setup.medium, setup.light.radius, ls::kTableWidth, ls::kTableHeight);
         ls::FrameConstants c = ls::makeFrameConstants(setup.camera, setup.light, setup.medium,
@@ -158,8 +190,14 @@ struct Plugin::Impl {
         const float a1 = setup.settings.simplifiedA1;
         c.simplified = {std::clamp(setup.settings.simplifiedA0 / a1, 1e-12f, 1e30f),
                         std::min(1.0f / a1, 1e30f), 0.0f, 0.0f};
+        // Screen-sized textures are maxRenderSize's, when there is one.
+        const VkExtent2D texels = maxRenderSize.width != 0 ? maxRenderSize : setup.screen;
+        c.screenTexels = {static_cast<float>(texels.width), static_cast<float>(texels.height),
+                          static_cast<float>(setup.screen.width) / static_cast<float>(texels.width),
+                          static_cast<float>(setup.screen.height) /
+                              static_cast<float>(texels.height)};
         const float storage = detail::linStorageScale(setup);
-        c.linStorage = {storage, 1.0f / storage, 0.0f, 0.0f};
+        c.linStorage = {storage, 1.0f / storage, setup.preExposure, 0.0f};
         return c;
     }
 
@@ -268,14 +306,23 @@ struct Plugin::Impl {
         std::vector<PassTime> cpuWork;
         detail::MethodChoice choice;
         bool graphCompiled = false;
+        VkExtent2D screen{0, 0};  // the frame's (within the graph's, with maxRenderSize)
     };
     Prepared prepare(const FrameDescription& frame) {
         Chosen chosen = choose(frame);
         const detail::ValidatedFrame& v = chosen.frame;
+        const VkExtent2D screen = v.lights[0].screen;
+        if (maxRenderSize.width != 0 &&
+            (screen.width > maxRenderSize.width || screen.height > maxRenderSize.height))
+            throw InvalidInput("lightscatter: depth.extent " + std::to_string(screen.width) + "x" +
+                               std::to_string(screen.height) + " is larger than maxRenderSize " +
+                               std::to_string(maxRenderSize.width) + "x" +
+                               std::to_string(maxRenderSize.height) + " (PluginCreateInfo)");
         const ls::MethodUnit& method = chosen.choice.unit();
         const size_t n = v.lights.size();
         Prepared p;
         p.choice = chosen.choice;
+        p.screen = screen;
         p.values.resize(n);
         if (lightTables.size() < n) lightTables.resize(n);
         if (lightData.size() < n) {
@@ -312,6 +359,7 @@ struct Plugin::Impl {
         options.coordinates = coordinates;
         options.poisonTransients = frame.debug.poisonTransients || poisonFromEnvironment();
         options.countSteps = frame.debug.countSteps;
+        options.maxScreen = maxRenderSize;
         const GraphConfig c = detail::graphConfig(v, method, detail::frameImports(frame), options,
                                                   data, lastConfig ? &*lastConfig : nullptr);
         if (c.ownNoise) {
@@ -358,7 +406,7 @@ struct Plugin::Impl {
             // the executor's own that is never submitted, before the engine's is touched. A graph
             // that fails it is made again by the next frame.
             try {
-                r.executor->rehearse(p.data);
+                r.executor->rehearse(p.data, p.screen);
             } catch (...) {
                 p.graph->running.reset();
                 throw;
@@ -404,7 +452,7 @@ struct Plugin::Impl {
     uint64_t record(VkCommandBuffer cmd, const Prepared& p) {
         const uint64_t number = lastFrame + 1;
         rg::GraphExecutor& e = *p.graph->running->executor;
-        e.record(cmd, number, p.data, before(e));
+        e.record(cmd, number, p.data, before(e), p.screen);
         lastFrame = number;
         return recorded(p);
     }
@@ -483,6 +531,7 @@ struct Plugin::Impl {
     rg::VulkanDeviceCaps caps;
     ls::Shared shared;  // the samplers and pipelines every light's passes share
     uint32_t framesInFlight = 2;
+    VkExtent2D maxRenderSize{0, 0};
     VkFormat depthStencil = VK_FORMAT_UNDEFINED;
     VkFormat coordinates = VK_FORMAT_R32G32_SFLOAT;
     // Per light, in the frame's order: its point-light table and its method's state (made by
@@ -518,7 +567,7 @@ auto translated(F&& f) -> decltype(f()) {
 
 }  // namespace
 
-Plugin::Plugin(const PluginCreateInfo& info)
+Plugin::Plugin(const PluginCreateInfo& info, HeaderVersion)
     : impl_(translated([&] { return std::make_unique<Impl>(info); })) {}
 
 Plugin::Plugin(const VulkanContext& context) : Plugin(PluginCreateInfo{2, context}) {}
@@ -548,7 +597,7 @@ FrameReport Plugin::render(const FrameDescription& frame) {
         if (number > i.framesInFlight) i.collect(number - i.framesInFlight);
         const Impl::Prepared p = i.prepare(frame);
         rg::GraphExecutor& e = *p.graph->running->executor;
-        e.run(number, p.data, i.before(e));
+        e.run(number, p.data, i.before(e), p.screen);
         i.lastFrame = number;
         i.recorded(p);
         // Frames run in the order they were recorded: this one done, so is every one before.

@@ -23,16 +23,23 @@ layout(push_constant) uniform ResolvePush {
 
 layout(location = 0) out vec4 outInscatter;
 
+// The planes' sum is as large as the screen-sized textures (the plugin's maxRenderSize): the
+// screen's coordinates scale by its share of them (exactly 1 without a maximum), and the taps stay
+// on the screen's texels, as the sampler's clamp to the edge keeps them without one.
 vec4 planeSumAt(vec2 pixelCenter) {
     vec2 uv = pixelCenter * frame.screenSize.zw;
     if (kBlurRadius == 0) return texelFetch(planeSum, ivec2(pixelCenter), 0);
     vec4 sum = vec4(0.0);
     float weights = 0.0;
     float step = float(kBlurRadius) * 0.5;
+    bool part = frame.screenTexels.z < 1.0 || frame.screenTexels.w < 1.0;
+    vec2 lo = 0.5 / frame.screenTexels.xy, hi = frame.screenTexels.zw - lo;
     for (int y = -2; y <= 2; ++y)
         for (int x = -2; x <= 2; ++x) {
             float w = float(3 - abs(x)) * float(3 - abs(y));
-            sum += w * textureLod(planeSum, uv + vec2(x, y) * step * frame.screenSize.zw, 0.0);
+            vec2 tap = (uv + vec2(x, y) * step * frame.screenSize.zw) * frame.screenTexels.zw;
+            if (part) tap = clamp(tap, lo, hi);
+            sum += w * textureLod(planeSum, tap, 0.0);
             weights += w;
         }
     return sum / weights;

@@ -1,5 +1,6 @@
-// The composite, done where Lin is made: color = color * exp(-betaT S) + Lin in the engine's
-// image, and Lin alone into the output image when the frame asked for one. A frame's later lights
+// The composite, done where Lin is made: color = color * exp(-betaT S) + k Lin in the engine's
+// image (k the engine's pre-exposure, 1 by default), and Lin alone, unexposed, into the output
+// image when the frame asked for one. A frame's later lights
 // (addOnly) add their Lin to both: the first light's composite applied the extinction. Each
 // invocation touches its own pixel only. The engine color's format and the output image are
 // build-time variants (LS_COLOR_RGBA32F, LS_WITH_OUTPUT): a storage image read needs its format.
@@ -18,7 +19,8 @@ layout(binding = LS_BINDING_LIN_OUT, rgba32f) uniform image2D inscatterOut;
 
 void compositeInto(ivec2 p, vec3 lin, float S, bool addOnly) {
     vec4 c = imageLoad(engineColor, p);
-    c.rgb = addOnly ? c.rgb + lin : c.rgb * exp(-frame.betaT.rgb * S) + lin;
+    const vec3 exposed = lin * frame.linStorage.z;
+    c.rgb = addOnly ? c.rgb + exposed : c.rgb * exp(-frame.betaT.rgb * S) + exposed;
     imageStore(engineColor, p, c);
 #if LS_WITH_OUTPUT
     vec3 earlier = addOnly ? imageLoad(inscatterOut, p).rgb : vec3(0.0);

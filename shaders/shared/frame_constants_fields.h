@@ -33,8 +33,11 @@ LS_VEC4 cubeFace;     // x: the cube face (layer) an epipolar per-face pass marc
                       // face's frustum reaches the view (always 1 outside per-face passes)
 LS_VEC4 epipolar3;    // x: in-scattering refinement threshold (0: off), yzw: -
 // x: the power of two Lin is stored with between a method's passes and the composite (float16
-// targets hold at most 65504), y: 1 / x
-LS_VEC4 linStorage LS_DEFAULT(1.0f, 1.0f, 0.0f, 0.0f);
+// targets hold at most 65504), y: 1 / x, z: the engine's pre-exposure (the composite adds z Lin)
+LS_VEC4 linStorage LS_DEFAULT(1.0f, 1.0f, 1.0f, 0.0f);
+// xy: the size of the screen-sized textures (the plugin's maxRenderSize, or the screen), zw: the
+// screen's share of them (screenSize.xy / xy; 1 without a maximum)
+LS_VEC4 screenTexels LS_DEFAULT(1.0f, 1.0f, 1.0f, 1.0f);
 // A point light's cube shadow map (LS_CUBE_SHADOW): world -> clip of each face, in Vulkan's
 // face order +X, -X, +Y, -Y, +Z, -Z (the layers of the shadow map).
 LS_MAT4 cubeFaceViewProj[6];

@@ -62,6 +62,15 @@ TestFrame::TestFrame(const rg::Device& device, FrameSpec spec)
     }
 }
 
+VkImage TestFrame::recreateColor() {
+    color_.reset();
+    color_ = std::make_unique<TestImage>(device_, VK_FORMAT_R32G32B32A32_SFLOAT, spec_.screen,
+                                         VK_IMAGE_USAGE_STORAGE_BIT, VK_IMAGE_LAYOUT_GENERAL,
+                                         "test color");
+    resetColor();
+    return color_->image();
+}
+
 void TestFrame::resetColor() {
     std::vector<float> c(size_t{spec_.screen.width} * spec_.screen.height * 4, spec_.background);
     color_->upload(c);

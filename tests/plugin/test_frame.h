@@ -35,6 +35,10 @@ class TestFrame {
     std::vector<float> inscatter() { return out_->download(); }  // RGBA per pixel
     std::vector<float> color() { return color_->download(); }
     void resetColor();
+    // Destroys the engine's color image and makes it again, the same (an engine's resize back to
+    // the same size); returns the new handle.
+    VkImage recreateColor();
+    VkImage colorImage() const { return color_->image(); }
     const FrameSpec& spec() const { return spec_; }
     const lightscatter::Light& light() const { return light_; }
 

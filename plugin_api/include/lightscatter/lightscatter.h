@@ -5,9 +5,10 @@
 // (optionally) shadow-map images, describes the camera, the light and the medium in the units of
 // docs/model.md (metres, W/m^2, W/sr, 1/m), picks a method and a quality profile, and gets its
 // color image back composited:
-//     color = color * exp(-betaT * S) + Lin
-// with S the distance along each pixel's ray to the surface (or to the sky distance) and Lin the
-// single-scattered in-scattering. Nothing else is done to the color: no tone mapping, no exposure.
+//     color = color * exp(-betaT * S) + k * Lin
+// with S the distance along each pixel's ray to the surface (or to the sky distance), Lin the
+// single-scattered in-scattering and k the engine's pre-exposure (FrameDescription::preExposure,
+// 1 by default). Nothing else is done to the color: no tone mapping.
 //
 // Requirements on the engine's VkDevice: Vulkan 1.3, the extensions requiredDeviceExtensions()
 // lists (VK_KHR_push_descriptor) and the features requiredDeviceFeatures() turns on
@@ -30,6 +31,14 @@
 
 #include "lightscatter/vocabulary.h"  // LightType, MiePhase, PlaneTarget
 
+// The library's version. 0.x: a minor version may change the API, so an engine compiles against the
+// header of the library it links. lightscatter::version() returns the library's at run time; a
+// header and a library of different major.minor versions do not link (Plugin's constructor takes
+// a tag named for the header's version, which only the library of that version defines).
+#define LIGHTSCATTER_VERSION_MAJOR 0
+#define LIGHTSCATTER_VERSION_MINOR 2
+#define LIGHTSCATTER_VERSION_PATCH 0
+
 // What the library exports: everything declared with LIGHTSCATTER_API (a shared build exports
 // nothing else).
 #if defined(_WIN32)
@@ -45,6 +54,12 @@
 #endif
 
 namespace lightscatter {
+
+struct Version {
+    uint32_t major = 0, minor = 0, patch = 0;
+};
+// The library's version (the header's is LIGHTSCATTER_VERSION_*).
+LIGHTSCATTER_API Version version();
 
 using Vec3 = std::array<float, 3>;
 using Mat4 = std::array<float, 16>;  // column-major (GLM's layout), maps column vectors
@@ -116,6 +131,9 @@ inline constexpr float kMinNearPlane = 1e-29f;
 // far part of the view collapses onto depth 1 and reads as sky. Reversed depth in D32_SFLOAT has
 // no such limit.
 inline constexpr float kDepthStepsPerDistance = 16.0f;
+// FrameDescription::preExposure: the bound above leaves Lin a factor of 1e5 below FLT_MAX; an
+// exposure of up to 1e4 keeps a factor of 10.
+inline constexpr float kMaxPreExposure = 1e4f;
 }  // namespace limits
 
 // The methods (docs/methods.md): epipolar sampling (seed 000), brute-force per-pixel marching (the
@@ -432,6 +450,10 @@ struct FrameDescription {
     // independent layers with values in [0, 1] and mean 0.5). Without it the plugin makes its own.
     std::optional<ImageInput> noise;
     double timeSeconds = 0.0;  // scrolls the noise; any finite value
+    // For an engine that keeps its HDR color pre-exposed (multiplied by an exposure factor k, as
+    // Unreal's and Filament's pre-exposure do): the composite becomes color * exp(-betaT S) + k Lin.
+    // inscatterOut receives Lin unexposed. In [0, limits::kMaxPreExposure].
+    float preExposure = 1.0f;
     // Optional: the scene's occluders for seed 004's methods (at most kMaxOccluders; each checked:
     // finite, orthonormal axes, positive extents, the inner box inside the outer one). Checked
     // only when the frame's method reads them (beam-tree-*, or auto when it picks one); the other
@@ -639,26 +661,78 @@ struct PluginCreateInfo {
     // The host allocator every Vulkan object of the plugin is created and destroyed with (null:
     // the driver's). Device memory is Vulkan's to allocate as always.
     const VkAllocationCallbacks* allocator = nullptr;
+    // Dynamic resolution (as FidelityFX's maxRenderSize): zero, none. Otherwise the plugin builds
+    // its graphs for this size, and each frame's engine images (depth, color, inscatterOut) may be
+    // any size within it, changing every frame without building anything; a frame larger than it
+    // is refused (InvalidInput naming depth.extent). The textures are this size's whatever the
+    // frame's. Without it, a frame of a new size builds (once) a graph for that size, while the
+    // old size's graph stays kept for when the size comes back.
+    VkExtent2D maxRenderSize{0, 0};
 };
 
+// The header's version as a type (Plugin's constructor): a library of another version lacks the
+// constructor that takes it, and the engine fails to link rather than to run.
+#define LIGHTSCATTER_VERSION_TAG_NAME(major, minor) HeaderVersion_##major##_##minor
+#define LIGHTSCATTER_VERSION_TAG(major, minor) LIGHTSCATTER_VERSION_TAG_NAME(major, minor)
+struct LIGHTSCATTER_VERSION_TAG(LIGHTSCATTER_VERSION_MAJOR, LIGHTSCATTER_VERSION_MINOR){};
+
+// The plugin in an engine's frame loop: what it promises, and what it asks of the engine.
+//
+// Threads. One Plugin is used by one thread at a time (its calls are not synchronised). Plugins
+// may be used on several threads at once, on one VkDevice or several: they share their device's
+// pipelines and samplers, which are synchronised. record() touches no VkQueue. render() submits
+// to VulkanContext::queue and waits on a fence of its own: no other thread may use that queue
+// meanwhile (Vulkan's rule). The free functions (budget(), the names, requiredDevice*()) are safe
+// from any thread.
+//
+// Frames in flight and recording ahead. record() never waits for the GPU and never submits:
+// everything a frame needs is recorded into the engine's command buffer, and what the plugin
+// creates (pipelines, memory, views) is created on the host. The engine submits the command
+// buffers it recorded into, each one, in the order it recorded them, on one queue (or queues it
+// orders that way): a frame may fill what later frames read (the point-light table) and shares
+// memory with the frames around it. It may record any number of frames ahead of their
+// submission, up to framesInFlight: recording frame N promises that frame N - framesInFlight has
+// completed. Each frame renders with its own description (medium, lights, matrices, time), however
+// far ahead it was recorded. Configurations met before (a size, a method, a light leaving and
+// coming back) reuse the graph compiled for them: the plugin keeps the last 8.
+//
+// Images. The engine's images are read or written only by the commands record() put in its
+// command buffer; the plugin keeps no handle of them after record() returns (it makes views of
+// them for each frame and destroys those after the frame has completed), so an image may be
+// destroyed once the frames that used it have completed, and a new image that gets the old one's
+// handle is a new image to the plugin. Each image is left in the layout, stages and access its
+// ImageInput's final* fields ask for.
+//
+// The command buffer after record(): still recording, primary (secondary command buffers are not
+// supported), outside any render pass or dynamic rendering scope, as it was given. What record()
+// bound or set is left as it set it: pipelines, push constants and push descriptors of both
+// bind points, viewport, scissor and stencil reference. The engine binds its own state again.
+//
+// Destruction. ~Plugin waits for nothing: destroy the plugin after every frame it recorded has
+// completed on the GPU (the engine's fences, or vkDeviceWaitIdle at shutdown), and before the
+// VkDevice. render()'s frames have completed when it returns.
+//
+// A lost device. A Vulkan call that reports VK_ERROR_DEVICE_LOST (render()'s fence, report()'s
+// queries) throws DeviceError naming the call. The plugin is then good only for destruction, which
+// calls nothing that can fail: destroy it, then the device, and make both again.
 class LIGHTSCATTER_API Plugin {
   public:
+    using HeaderVersion =
+        LIGHTSCATTER_VERSION_TAG(LIGHTSCATTER_VERSION_MAJOR, LIGHTSCATTER_VERSION_MINOR);
     // Throws InvalidInput for a context that lacks a handle or a feature (see VulkanContext), or
     // framesInFlight out of its range.
-    explicit Plugin(const PluginCreateInfo& info);
+    explicit Plugin(const PluginCreateInfo& info) : Plugin(info, HeaderVersion{}) {}
     // PluginCreateInfo{2, context}: two frames in flight.
     explicit Plugin(const VulkanContext& context);
-    // Waits for nothing: destroy the plugin once every frame it recorded has completed on the GPU
-    // (after the engine's fences, or its vkDeviceWaitIdle at shutdown). render()'s frames have
-    // completed when it returns.
+    // Waits for nothing (see "Destruction" above).
     ~Plugin();
     Plugin(const Plugin&) = delete;
     Plugin& operator=(const Plugin&) = delete;
 
     // Validates the description (throws InvalidInput, nothing recorded), builds or reuses the
-    // frame's graph, and records it into `cmd`, which must be in the recording state. Returns the
-    // frame's number (1, 2, ...), which report() takes once the engine's fence says the frame is
-    // done.
+    // frame's graph, and records it into `cmd`, which must be a primary command buffer in the
+    // recording state, outside any render pass. Returns the frame's number (1, 2, ...), which
+    // report() takes once the engine's fence says the frame is done. Never waits, never submits.
     //
     // Exception guarantee (record and render): if anything is thrown (InvalidInput, DeviceError,
     // std::bad_alloc), nothing has been recorded into `cmd`, the engine's images are untouched, no
@@ -686,6 +760,7 @@ class LIGHTSCATTER_API Plugin {
     std::string graphJson() const;
 
   private:
+    Plugin(const PluginCreateInfo& info, HeaderVersion);
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };
