@@ -1,9 +1,10 @@
 # CTest driver for the consumer projects (cmake -P). Builds and runs an engine against lightscatter:
 #   -DMODE=package       installs BUILD_DIR into WORK_DIR/prefix (cmake --install), checks what was
-#                        installed, builds tests/consumer/package against it and runs it
+#                        installed, builds tests/consumer/package against it and runs it, and the
+#                        volk-style engine, after checking with READELF that it needs no libvulkan
 #   -DMODE=subdirectory  builds tests/consumer/subdirectory (add_subdirectory of SOURCE_DIR, shared
 #                        library), checks that the library exports only lightscatter::, runs it
-# Other variables: SOURCE_DIR, BUILD_DIR, WORK_DIR, JOBS, NM.
+# Other variables: SOURCE_DIR, BUILD_DIR, WORK_DIR, JOBS, NM, READELF.
 foreach(var MODE SOURCE_DIR WORK_DIR)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "run_consumer.cmake needs -D${var}=...")
@@ -101,3 +102,23 @@ endif()
 
 run(${consumer_build}/headless_engine)
 message(STATUS "headless_engine:\n${last_output}")
+
+if(MODE STREQUAL "package")
+  # The plugin in an engine that links no loader: the libraries the executable needs, as the
+  # dynamic loader reads them, name none of Vulkan's.
+  if(NOT READELF)
+    set(READELF readelf)
+  endif()
+  run(${READELF} -d ${consumer_build}/volk_style_engine)
+  string(REGEX MATCHALL "\\(NEEDED\\)[^\n]*" needed "${last_output}")
+  if(NOT needed)
+    message(FATAL_ERROR "readelf -d volk_style_engine listed no NEEDED entry:\n${last_output}")
+  endif()
+  if(needed MATCHES "libvulkan")
+    message(FATAL_ERROR "volk_style_engine needs the Vulkan loader:\n${last_output}")
+  endif()
+  string(REPLACE ";" "\n  " needed "${needed}")
+  message(STATUS "volk_style_engine needs:\n  ${needed}")
+  run(${consumer_build}/volk_style_engine)
+  message(STATUS "volk_style_engine:\n${last_output}")
+endif()
