@@ -40,8 +40,7 @@ BufferRef RenderGraph::createBuffer(std::string name, const BufferDesc& desc) {
     return BufferRef{id_, static_cast<uint32_t>(resources_.size() - 1), 0};
 }
 
-ImageRef RenderGraph::importImage(std::string name, const ImportedImage& image,
-                                  bool extentVaries) {
+ImageRef RenderGraph::importImage(std::string name, const ImportedImage& image, bool extentVaries) {
     ResourceDecl r;
     r.name = std::move(name) + nameSuffix_;
     r.imported = true;
@@ -89,11 +88,10 @@ void RenderGraph::updateImport(ImageRef image, const ImportedImage& desc) {
         throw GraphError(Rule::UnknownResource, "updateImport: handle is not an imported image");
     auto& r = resources_[image.id];
     const auto& old = r.importedImage;
-    const bool extentFits =
-        r.extentVaries ? desc.extent.width <= r.declaredExtent.width &&
-                             desc.extent.height <= r.declaredExtent.height
-                       : desc.extent.width == r.declaredExtent.width &&
-                             desc.extent.height == r.declaredExtent.height;
+    const bool extentFits = r.extentVaries ? desc.extent.width <= r.declaredExtent.width &&
+                                                 desc.extent.height <= r.declaredExtent.height
+                                           : desc.extent.width == r.declaredExtent.width &&
+                                                 desc.extent.height == r.declaredExtent.height;
     if (old.format != desc.format || !extentFits || old.usage != desc.usage ||
         old.mipLevels != desc.mipLevels || old.arrayLayers != desc.arrayLayers ||
         (desc.initialLayout != r.declaredLayout &&

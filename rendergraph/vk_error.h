@@ -26,8 +26,7 @@ std::string callText(const char* call);
 
 // Throws VulkanError naming the call that failed and its result code.
 inline void check(VkResult result, const char* call) {
-    if (result != VK_SUCCESS)
-        throw VulkanError(callText(call) + " failed: " + resultName(result));
+    if (result != VK_SUCCESS) throw VulkanError(callText(call) + " failed: " + resultName(result));
 }
 
 }  // namespace rg

@@ -33,7 +33,7 @@ struct LightSetup {
     bool depthAttachment = false;  // the engine's depth may be a depth attachment
     double timeSeconds = 0.0;
     float preExposure = 1.0f;  // the factor the composite scales Lin by in the engine's color
-    size_t occluders = 0;  // the frame's occluders, counted
+    size_t occluders = 0;      // the frame's occluders, counted
     // The occluders in double, checked: filled only when the frame's method reads them.
     std::vector<beam::Occluder> beamOccluders;
     // How the engine named this light's fields and settings ("light" and "custom", or

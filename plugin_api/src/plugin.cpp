@@ -1,12 +1,12 @@
 #include <algorithm>
 #include <array>
-#include <map>
-#include <mutex>
-#include <tuple>
 #include <cstdlib>
 #include <deque>
+#include <map>
+#include <mutex>
 #include <optional>
 #include <string>
+#include <tuple>
 
 #include <lightscatter/lightscatter.h>
 #include "epipolar/step_counts.h"
@@ -82,7 +82,7 @@ ls::Shared sharedFor(const rg::ExternalDevice& d) {
 
 rg::ExternalDevice externalDevice(const PluginCreateInfo& info) {
     const VulkanContext& c = checked(info).context;
-    return {c.instance, c.physicalDevice,         c.device,      c.queue,
+    return {c.instance,    c.physicalDevice,         c.device,      c.queue,
             c.queueFamily, info.getInstanceProcAddr, info.allocator};
 }
 
@@ -192,10 +192,10 @@ struct Plugin::Impl {
                         std::min(1.0f / a1, 1e30f), 0.0f, 0.0f};
         // Screen-sized textures are maxRenderSize's, when there is one.
         const VkExtent2D texels = maxRenderSize.width != 0 ? maxRenderSize : setup.screen;
-        c.screenTexels = {static_cast<float>(texels.width), static_cast<float>(texels.height),
-                          static_cast<float>(setup.screen.width) / static_cast<float>(texels.width),
-                          static_cast<float>(setup.screen.height) /
-                              static_cast<float>(texels.height)};
+        c.screenTexels = {
+            static_cast<float>(texels.width), static_cast<float>(texels.height),
+            static_cast<float>(setup.screen.width) / static_cast<float>(texels.width),
+            static_cast<float>(setup.screen.height) / static_cast<float>(texels.height)};
         const float storage = detail::linStorageScale(setup);
         c.linStorage = {storage, 1.0f / storage, setup.preExposure, 0.0f};
         return c;

@@ -18,8 +18,8 @@ using lightscatter::Method;
 using lightscatter::Profile;
 
 lightscatter::VulkanContext contextOf(const rg::Device& d) {
-    return {d.instance(), d.physical(), d.device(), d.queue(), d.queueFamily(),
-            &d.enabledFeatures()};
+    return {d.instance(), d.physical(),    d.device(),
+            d.queue(),    d.queueFamily(), &d.enabledFeatures()};
 }
 
 bool contains(const std::string& text, const std::string& part) {
@@ -180,8 +180,8 @@ TEST(FrameLoop, TheLibraryIsTheHeadersVersion) {
     EXPECT_EQ(v.major, uint32_t{LIGHTSCATTER_VERSION_MAJOR});
     EXPECT_EQ(v.minor, uint32_t{LIGHTSCATTER_VERSION_MINOR});
     EXPECT_EQ(v.patch, uint32_t{LIGHTSCATTER_VERSION_PATCH});
-    static_assert(std::is_same_v<lightscatter::Plugin::HeaderVersion,
-                                 lightscatter::HeaderVersion_0_2>);
+    static_assert(
+        std::is_same_v<lightscatter::Plugin::HeaderVersion, lightscatter::HeaderVersion_0_2>);
 }
 
 }  // namespace

@@ -36,7 +36,9 @@ class PooledAllocator {
                                         VkSystemAllocationScope) {
             return static_cast<PooledAllocator*>(self)->reallocate(old, size, alignment);
         };
-        callbacks_.pfnFree = [](void* self, void* p) { static_cast<PooledAllocator*>(self)->free(p); };
+        callbacks_.pfnFree = [](void* self, void* p) {
+            static_cast<PooledAllocator*>(self)->free(p);
+        };
     }
     ~PooledAllocator() {
         for (auto& [key, blocks] : free_)
@@ -105,8 +107,8 @@ TEST(RecycledHandleGpu, AnImageMadeAgainWithTheSameHandleIsANewImage) {
     rg::Device device(options);
     {
         lightscatter::PluginCreateInfo info;
-        info.context = {device.instance(), device.physical(), device.device(), device.queue(),
-                        device.queueFamily(), &device.enabledFeatures()};
+        info.context = {device.instance(), device.physical(),    device.device(),
+                        device.queue(),    device.queueFamily(), &device.enabledFeatures()};
         info.allocator = pool.callbacks();
         lightscatter::Plugin engines(info);
         TestFrame frame(device, sceneWith(spotOverGrille(), {48, 32}));

@@ -369,10 +369,11 @@ struct Medium {
 //   plugin's last barrier makes
 //                 its work visible to them. The defaults make it visible to everything.
 // Stages and the VkImage handle may change from frame to frame at no cost. A different format,
-// extent (a resize), usage or layout rebuilds the frame graph on the next record(): the plugin
-// waits for the device to be idle, frees its transient images and allocates new ones. Command
-// buffers it recorded before a rebuild must have been submitted (and not be submitted again) by
-// then.
+// extent (a resize), usage or layout selects another frame graph on the next record(): one
+// compiled the first time that configuration is met and kept after (the last 8), its textures in
+// the plugin's one transient heap, which grows to the largest graph's; nothing waits for the GPU,
+// and what the old graph used is destroyed once the frames that used it have completed. With
+// PluginCreateInfo::maxRenderSize, a size within it selects nothing new at all.
 struct ImageInput {
     VkImage image = VK_NULL_HANDLE;
     VkFormat format = VK_FORMAT_UNDEFINED;
@@ -451,8 +452,8 @@ struct FrameDescription {
     std::optional<ImageInput> noise;
     double timeSeconds = 0.0;  // scrolls the noise; any finite value
     // For an engine that keeps its HDR color pre-exposed (multiplied by an exposure factor k, as
-    // Unreal's and Filament's pre-exposure do): the composite becomes color * exp(-betaT S) + k Lin.
-    // inscatterOut receives Lin unexposed. In [0, limits::kMaxPreExposure].
+    // Unreal's and Filament's pre-exposure do): the composite becomes color * exp(-betaT S) + k
+    // Lin. inscatterOut receives Lin unexposed. In [0, limits::kMaxPreExposure].
     float preExposure = 1.0f;
     // Optional: the scene's occluders for seed 004's methods (at most kMaxOccluders; each checked:
     // finite, orthonormal axes, positive extents, the inner box inside the outer one). Checked
@@ -674,7 +675,7 @@ struct PluginCreateInfo {
 // constructor that takes it, and the engine fails to link rather than to run.
 #define LIGHTSCATTER_VERSION_TAG_NAME(major, minor) HeaderVersion_##major##_##minor
 #define LIGHTSCATTER_VERSION_TAG(major, minor) LIGHTSCATTER_VERSION_TAG_NAME(major, minor)
-struct LIGHTSCATTER_VERSION_TAG(LIGHTSCATTER_VERSION_MAJOR, LIGHTSCATTER_VERSION_MINOR){};
+struct LIGHTSCATTER_VERSION_TAG(LIGHTSCATTER_VERSION_MAJOR, LIGHTSCATTER_VERSION_MINOR) {};
 
 // The plugin in an engine's frame loop: what it promises, and what it asks of the engine.
 //
@@ -717,8 +718,8 @@ struct LIGHTSCATTER_VERSION_TAG(LIGHTSCATTER_VERSION_MAJOR, LIGHTSCATTER_VERSION
 // calls nothing that can fail: destroy it, then the device, and make both again.
 class LIGHTSCATTER_API Plugin {
   public:
-    using HeaderVersion =
-        LIGHTSCATTER_VERSION_TAG(LIGHTSCATTER_VERSION_MAJOR, LIGHTSCATTER_VERSION_MINOR);
+    using HeaderVersion = LIGHTSCATTER_VERSION_TAG(LIGHTSCATTER_VERSION_MAJOR,
+                                                   LIGHTSCATTER_VERSION_MINOR);
     // Throws InvalidInput for a context that lacks a handle or a feature (see VulkanContext), or
     // framesInFlight out of its range.
     explicit Plugin(const PluginCreateInfo& info) : Plugin(info, HeaderVersion{}) {}
