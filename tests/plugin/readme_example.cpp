@@ -8,9 +8,14 @@
 uint64_t recordLightShafts(Engine& engine) {
     // [readme-example]
     // Once: the plugin works on the engine's own device and queue (the engine resets it before
-    // destroying them).
-    if (!engine.lightShafts)
-        engine.lightShafts = std::make_unique<lightscatter::Plugin>(engine.context);
+    // destroying them). The engine keeps two frames in flight: when it records a frame, the one
+    // two frames back has completed (its fence). The plugin never waits for the GPU.
+    if (!engine.lightShafts) {
+        lightscatter::PluginCreateInfo info;
+        info.context = engine.context;
+        info.framesInFlight = 2;
+        engine.lightShafts = std::make_unique<lightscatter::Plugin>(info);
+    }
 
     // Every frame: the engine's images, where they stand and where to leave them.
     lightscatter::FrameDescription frame;

@@ -45,6 +45,9 @@ std::mutex gLogMutex;
 int gMessages = 0;
 int gFailures = 0;
 std::string gPhase = "setup";  // where the loop is, for the messages
+// --driver-handles: the layer's unique handles off, so that the plugin sees the driver's handles
+// as engines ship (a destroyed image's handle may come back); two frames in flight only.
+bool gDriverHandles = false;
 
 void setPhase(std::string phase) {
     std::lock_guard lock(gLogMutex);
@@ -148,6 +151,10 @@ void createGpu(Gpu& g) {
     VkValidationFeaturesEXT validation{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
     validation.enabledValidationFeatureCount = 1;
     validation.pEnabledValidationFeatures = &sync;
+    const VkValidationFeatureDisableEXT uniqueHandles =
+        VK_VALIDATION_FEATURE_DISABLE_UNIQUE_HANDLES_EXT;
+    validation.disabledValidationFeatureCount = gDriverHandles ? 1 : 0;
+    validation.pDisabledValidationFeatures = &uniqueHandles;
     validation.pNext = &messengerInfo;
     VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
     app.pApplicationName = "lightscatter frame loop";
@@ -1226,7 +1233,8 @@ int run() {
     views[1].profile = lightscatter::Profile::LowHighPerformance;
     views[1].shadowedMethod = "epipolar";
 
-    for (uint32_t framesInFlight = 1; framesInFlight <= 3; ++framesInFlight) {
+    for (uint32_t framesInFlight = gDriverHandles ? 2 : 1;
+         framesInFlight <= (gDriverHandles ? 2 : 3); ++framesInFlight) {
         for (View& v : views) e.makeViewImages(v, kSmall);
         const RunResult r = runFrameLoop(e, views, framesInFlight);
         setPhase("F=" + std::to_string(framesInFlight) + ", after the loop");
@@ -1276,7 +1284,15 @@ int run() {
 
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+    for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--driver-handles") == 0) {
+            gDriverHandles = true;
+        } else {
+            std::fprintf(stderr, "consumer_frame_loop: unknown option %s\n", argv[i]);
+            return 2;
+        }
+    }
     try {
         return run();
     } catch (const lightscatter::InvalidInput& e) {
