@@ -44,7 +44,8 @@ class Fnv {
 
 void light(Fnv& f, const LightDesc& l) {
     // Not the shadow map's size: the reference traces exact visibility.
-    f.values(l.type, l.position, l.direction, l.intensity, l.halfAngleDegrees, l.range, l.radius);
+    f.values(l.type, l.position, l.direction, l.intensity, l.innerConeAngleDegrees,
+             l.outerConeAngleDegrees, l.range, l.rangeFalloff, l.radius);
 }
 
 }  // namespace

@@ -138,7 +138,7 @@ glm::mat4 shadowViewProjection(const LightDesc& light, const Bounds& scene,
         const float farP = std::max(std::min(light.range, farthest), 0.1f);
         const float nearP = std::clamp(farP * 1e-3f, 1e-3f, 0.05f);
         // A little wider than the cone so its edge lies inside the map.
-        const float fov = 2.0f * glm::radians(std::min(light.halfAngleDegrees + 2.0f, 89.5f));
+        const float fov = 2.0f * glm::radians(std::min(light.outerConeAngleDegrees + 2.0f, 89.5f));
         return vulkanPerspective(fov, 1.0f, nearP, farP, false, false) * view;
     }
     const glm::mat4 view =

@@ -479,7 +479,7 @@ void EngineRenderer::record(VkCommandBuffer cmd, const RenderOptions& options,
                                                : glm::mat4(1.0f);
         l.lightPos = glm::vec4(light.position, 0.0f);
         l.lightDir = glm::vec4(glm::normalize(light.direction),
-                               std::cos(glm::radians(light.halfAngleDegrees)));
+                               std::cos(glm::radians(light.outerConeAngleDegrees)));
         l.lightIntensity = glm::vec4(light.intensity, light.range);
         l.betaT = glm::vec4(betaT, light.radius);
         l.ambient = glm::vec4(i == 0 ? scene_.ambient : glm::vec3(0.0f), 0.0f);  // added once

@@ -50,8 +50,10 @@ lightscatter::Light toPluginLight(const LightDesc& l, const glm::mat4& shadowVie
     out.position = v3(l.position);
     out.direction = v3(l.direction);
     out.intensity = v3(l.intensity);
-    out.halfAngleDegrees = l.halfAngleDegrees;
+    out.innerConeAngleDegrees = l.innerConeAngleDegrees;
+    out.outerConeAngleDegrees = l.outerConeAngleDegrees;
     out.range = l.range;
+    out.rangeFalloff = l.rangeFalloff;
     out.radius = l.radius;
     if (shadowed) {
         out.shadowViewProjection = toPluginMatrix(shadowViewProj);

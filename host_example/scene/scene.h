@@ -89,8 +89,11 @@ struct LightDesc {
     glm::vec3 position{0.0f};
     glm::vec3 direction{0.0f, -1.0f, 0.0f};  // unit; the way light travels (directional), spot axis
     glm::vec3 intensity{1.0f};               // W/m^2 (directional) or W/sr
-    float halfAngleDegrees = 30.0f;
-    float range = 1e30f;
+    // A spot's cone (lightscatter::Light's): inner = outer, a hard edge.
+    float innerConeAngleDegrees = 30.0f;
+    float outerConeAngleDegrees = 30.0f;
+    float range = 1e30f;  // point and spot
+    lightscatter::RangeFalloff rangeFalloff = lightscatter::RangeFalloff::Cut;
     float radius = 0.05f;
     uint32_t shadowMapSize = 2048;  // 0: no shadow map; point lights: 0 unless given (a
                                     // cube map of six faces this size)

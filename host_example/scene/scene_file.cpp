@@ -375,8 +375,9 @@ class SceneReader {
 
     void readLight(const json& v, LightDesc& light, const std::string& name) const {
         checkKeys(v, name,
-                  {"type", "position", "direction", "intensity", "halfAngleDegrees", "range",
-                   "radius", "shadowMapSize"});
+                  {"type", "position", "direction", "intensity", "innerConeAngleDegrees",
+                   "outerConeAngleDegrees", "halfAngleDegrees", "range", "rangeFalloff", "radius",
+                   "shadowMapSize"});
         if (const json* x = member(v, "type")) {
             light.type = oneOf<lightscatter::LightType>(
                 *x, name + ".type",
@@ -397,11 +398,36 @@ class SceneReader {
         if (const json* x = member(v, "intensity")) {
             light.intensity = vec3InRange(*x, name + ".intensity", 0.0f, limits::kMaxIntensity);
         }
-        if (const json* x = member(v, "halfAngleDegrees")) {
-            light.halfAngleDegrees =
-                inClosedRange(*x, name + ".halfAngleDegrees", limits::kMinHalfAngleDegrees, 89.0f);
-        }
+        // A spot's cone: KHR_lights_punctual's inner and outer angles, or halfAngleDegrees alone,
+        // the former key, a hard cone (inner = outer).
+        auto angle = [&](const json& x, const std::string& key) {
+            return inClosedRange(x, name + "." + key, limits::kMinConeAngleDegrees, 89.0f);
+        };
+        const json* half = member(v, "halfAngleDegrees");
+        const json* outer = member(v, "outerConeAngleDegrees");
+        const json* inner = member(v, "innerConeAngleDegrees");
+        if (half && (outer || inner))
+            fail(name +
+                 ": halfAngleDegrees is a hard cone, inner = outer: give it or "
+                 "innerConeAngleDegrees and outerConeAngleDegrees, not both");
+        if (half)
+            light.innerConeAngleDegrees = light.outerConeAngleDegrees =
+                angle(*half, "halfAngleDegrees");
+        if (outer) light.outerConeAngleDegrees = angle(*outer, "outerConeAngleDegrees");
+        // Without its inner angle, a cone is hard.
+        if (outer && !inner) light.innerConeAngleDegrees = light.outerConeAngleDegrees;
+        if (inner) light.innerConeAngleDegrees = angle(*inner, "innerConeAngleDegrees");
+        if (light.innerConeAngleDegrees > light.outerConeAngleDegrees)
+            fail(name + ".innerConeAngleDegrees = " + echo(*inner) +
+                 ": must be at most outerConeAngleDegrees (" +
+                 (outer ? echo(*outer) : echo(json(light.outerConeAngleDegrees))) + ")");
         if (const json* x = member(v, "range")) light.range = positive(*x, name + ".range");
+        if (const json* x = member(v, "rangeFalloff")) {
+            light.rangeFalloff =
+                oneOf<lightscatter::RangeFalloff>(*x, name + ".rangeFalloff",
+                                                  {{"cut", lightscatter::RangeFalloff::Cut},
+                                                   {"window", lightscatter::RangeFalloff::Window}});
+        }
         if (const json* x = member(v, "radius")) {
             light.radius =
                 inClosedRange(*x, name + ".radius", limits::kMinRadius, limits::kMaxLength);

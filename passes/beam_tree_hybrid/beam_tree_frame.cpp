@@ -41,7 +41,7 @@ BeamTreeFrame buildBeamTreeFrame(const CameraParams& camera, const LightParams& 
     beam::LightFrustum frustum;
     if (light.kind == LightType::Spot) {
         const double halfAngle =
-            std::acos(std::clamp(static_cast<double>(light.cosHalfAngle), -1.0, 1.0));
+            std::acos(std::clamp(static_cast<double>(light.cosOuter), -1.0, 1.0));
         frustum = beam::spotFrustum(L, glm::dvec3(light.direction), halfAngle,
                                     std::min(static_cast<double>(light.range), reach));
     } else {

@@ -39,7 +39,7 @@ std::vector<glm::vec3> lightVolumeCorners(const LightParams& light, float reach)
         const glm::vec3 a = light.direction;
         const glm::vec3 helper = std::fabs(a.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
         const glm::vec3 r = glm::normalize(glm::cross(a, helper)), u = glm::cross(r, a);
-        const float cosA = light.cosHalfAngle;
+        const float cosA = light.cosOuter;
         const float tanA = std::sqrt(std::max(1.0f - cosA * cosA, 0.0f)) / cosA;
         const float depth = std::min(light.range, reach);
         c.push_back(light.position);
@@ -80,7 +80,7 @@ float estimatedPlaneRange(const CameraParams& camera, const LightParams& light,
     const glm::vec3 C = glm::vec3(toWorld[3]);
     const glm::vec2 t = frustumTangents(camera);
     const glm::vec3 betaT = medium.betaT();
-    const float cosCone = light.cosHalfAngle;
+    const float cosCone = light.cosOuter;
     // Rays on a grid over the screen (not the one through a point light: unshadowed, its peak is
     // 1/r0^2, which no shadowed scene shows, and the range would swallow everything else).
     std::vector<glm::vec3> rays;  // view space

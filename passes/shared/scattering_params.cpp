@@ -97,8 +97,14 @@ FrameConstants makeFrameConstants(const CameraParams& camera, const LightParams&
                     1.0f / static_cast<float>(screen.width),
                     1.0f / static_cast<float>(screen.height)};
     f.lightPos = glm::vec4(light.position, 0.0f);
-    f.lightDir = glm::vec4(glm::normalize(light.direction), light.cosHalfAngle);
+    f.lightDir = glm::vec4(glm::normalize(light.direction), light.cosOuter);
     f.lightIntensity = glm::vec4(light.intensity, light.range);
+    // 1 / (cos inner - cos outer), 0 for a hard edge (no division: a step).
+    const float penumbra = light.cosInner - light.cosOuter;
+    f.lightFalloff = {light.cosInner, penumbra > 0.0f ? 1.0f / penumbra : 0.0f,
+                      light.windowedRange ? 1.0f : 0.0f,
+                      std::acos(std::clamp(light.cosOuter, -1.0f, 1.0f)) -
+                          std::acos(std::clamp(light.cosInner, -1.0f, 1.0f))};
     const LightOnScreen ls = projectLight(camera, light);
     f.lightScreen = {ls.ndc.x, ls.ndc.y, ls.wSign, ls.onScreen ? 1.0f : 0.0f};
     f.betaR = glm::vec4(medium.betaR, medium.g);

@@ -16,6 +16,7 @@ namespace ls {
 using lightscatter::LightType;
 using lightscatter::MiePhase;
 using lightscatter::PlaneTarget;
+using lightscatter::RangeFalloff;
 
 struct CameraParams {
     glm::mat4 view{1.0f};
@@ -31,8 +32,12 @@ struct LightParams {
     glm::vec3 position{0.0f};
     glm::vec3 direction{0.0f, -1.0f, 0.0f};  // unit
     glm::vec3 intensity{1.0f};
-    float cosHalfAngle = 0.5f;
-    float range = 1e30f;
+    // A spot's cone (KHR_lights_punctual): cos of the outer angle, where the light ends, and of the
+    // inner one, where its falloff begins (equal: a hard edge).
+    float cosOuter = 0.5f;
+    float cosInner = 0.5f;
+    float range = 1e30f;         // point and spot
+    bool windowedRange = false;  // RangeFalloff::Window: KHR's smooth window to 0 at range
     float radius = 0.05f;
     glm::mat4 shadowViewProj{1.0f};
     glm::mat4 cubeFaceViewProj[6]{};  // point light with a shadow map: world -> clip per face

@@ -27,7 +27,7 @@ bool lightTouchesView(const CameraParams& camera, const LightParams& light,
     glm::vec4 planes[6] = {m[3] + m[0], m[3] - m[0], m[3] + m[1], m[3] - m[1], m[2], m[3] - m[2]};
     const int count = camera.infiniteFar ? 5 : 6;
     const glm::vec3 axis = glm::normalize(light.direction);
-    const float alpha = std::acos(std::clamp(light.cosHalfAngle, -1.0f, 1.0f));
+    const float alpha = std::acos(std::clamp(light.cosOuter, -1.0f, 1.0f));
     for (int i = 0; i < count; ++i) {
         const glm::vec3 n(planes[i]);
         const float len = glm::length(n);

@@ -734,15 +734,28 @@ void setupLight(FrameSetup& s, const LightInput& light, const LightPaths& at, bo
                             : glm::vec3(glm::normalize(dirD / dirScale));
     s.light.intensity = vecInRange(l.intensity, at.light + ".intensity", 0.0, limits::kMaxIntensity,
                                    "W/m^2 or W/sr; lightscatter.h, limits::kMaxIntensity");
-    if (l.type == LightType::Spot)
-        inRange(l.halfAngleDegrees, at.light + ".halfAngleDegrees", limits::kMinHalfAngleDegrees,
-                89.0,
-                "degrees; below it single precision cannot resolve the cone, lightscatter.h, "
-                "limits::kMinHalfAngleDegrees");
-    s.light.cosHalfAngle = std::cos(l.halfAngleDegrees * 3.14159265f / 180.0f);
+    if (l.type == LightType::Spot) {
+        const char* why =
+            "degrees; below it single precision cannot resolve the cone, at 90 the cone is no "
+            "longer convex; lightscatter.h, limits::kMinConeAngleDegrees";
+        inRange(l.outerConeAngleDegrees, at.light + ".outerConeAngleDegrees",
+                limits::kMinConeAngleDegrees, 89.0, why);
+        inRange(l.innerConeAngleDegrees, at.light + ".innerConeAngleDegrees",
+                limits::kMinConeAngleDegrees, 89.0, why);
+        if (l.innerConeAngleDegrees > l.outerConeAngleDegrees)
+            fail(at.light + ".innerConeAngleDegrees = " + num(l.innerConeAngleDegrees) +
+                 ": must be at most outerConeAngleDegrees (" + num(l.outerConeAngleDegrees) + ")");
+    }
+    s.light.cosOuter = std::cos(l.outerConeAngleDegrees * 3.14159265f / 180.0f);
+    s.light.cosInner = l.innerConeAngleDegrees == l.outerConeAngleDegrees
+                           ? s.light.cosOuter
+                           : std::cos(l.innerConeAngleDegrees * 3.14159265f / 180.0f);
     if (!(l.range > 0.0f) || !finite(l.range))
         fail(at.light + ".range = " + num(l.range) + ": must be > 0 and finite (1e30: no range)");
     s.light.range = l.range;
+    if (l.rangeFalloff != RangeFalloff::Cut && l.rangeFalloff != RangeFalloff::Window)
+        fail(at.light + ".rangeFalloff is not a RangeFalloff value");
+    s.light.windowedRange = l.rangeFalloff == RangeFalloff::Window;
     inRange(l.radius, at.light + ".radius", limits::kMinRadius, limits::kMaxLength,
             "metres; it keeps rays through the light finite, lightscatter.h, limits::kMinRadius");
     s.light.radius = l.radius;
@@ -849,8 +862,9 @@ namespace {
 bool defaultLight(const Light& l) {
     const Light d;
     return l.type == d.type && l.position == d.position && l.direction == d.direction &&
-           l.intensity == d.intensity && l.halfAngleDegrees == d.halfAngleDegrees &&
-           l.range == d.range && l.radius == d.radius &&
+           l.intensity == d.intensity && l.innerConeAngleDegrees == d.innerConeAngleDegrees &&
+           l.outerConeAngleDegrees == d.outerConeAngleDegrees && l.range == d.range &&
+           l.rangeFalloff == d.rangeFalloff && l.radius == d.radius &&
            l.shadowViewProjection == d.shadowViewProjection &&
            l.cubeFaceViewProjections == d.cubeFaceViewProjections &&
            l.shadowMapSize == d.shadowMapSize && l.shadowReversedZ == d.shadowReversedZ;

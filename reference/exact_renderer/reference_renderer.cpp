@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <exception>
+#include <limits>
 #include <mutex>
 #include <thread>
 
@@ -23,8 +24,11 @@ ls::ref::Light toReferenceLight(const LightDesc& l) {
     out.position = glm::dvec3(l.position);
     out.direction = glm::normalize(glm::dvec3(l.direction));
     out.intensity = glm::dvec3(l.intensity);
-    out.halfAngle = glm::radians(static_cast<double>(l.halfAngleDegrees));
-    out.range = l.range;
+    out.outerAngle = glm::radians(static_cast<double>(l.outerConeAngleDegrees));
+    out.innerAngle = glm::radians(static_cast<double>(l.innerConeAngleDegrees));
+    // The host's "no range" (1e30) is the model's infinite one.
+    out.range = l.range >= 1e29f ? std::numeric_limits<double>::infinity() : l.range;
+    out.windowedRange = l.rangeFalloff == lightscatter::RangeFalloff::Window;
     out.r0 = l.radius;
     return out;
 }

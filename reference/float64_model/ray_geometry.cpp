@@ -74,9 +74,12 @@ std::vector<double> rayConeCrossings(const Ray& ray, const glm::dvec3& apex, con
 
 std::vector<Interval> spotLitIntervals(const Light& light, const Ray& ray) {
     const Interval whole{0.0, ray.length};
-    if (light.type != Light::Spot) return normalizeIntervals({&whole, 1}, ray.length);
-    std::vector<double> cuts =
-        rayConeCrossings(ray, light.position, light.direction, light.halfAngle);
+    if (light.type == Light::Directional ||
+        (light.type == Light::Point && !std::isfinite(light.range)))
+        return normalizeIntervals({&whole, 1}, ray.length);
+    std::vector<double> cuts;
+    if (light.type == Light::Spot)
+        cuts = rayConeCrossings(ray, light.position, light.direction, light.outerAngle);
     if (std::isfinite(light.range)) {
         const std::vector<double> sphere = raySphereCrossings(ray, light.position, light.range);
         cuts.insert(cuts.end(), sphere.begin(), sphere.end());
@@ -102,13 +105,16 @@ std::vector<double> lightFeatureDistances(const Light& light, const Ray& ray) {
     appendGeometricMesh(points, closest, width, 1.0, 0.0, ray.length);
     appendGeometricMesh(points, closest, width, -1.0, 0.0, ray.length);
     if (light.type == Light::Spot) {
-        const std::vector<double> cone =
-            rayConeCrossings(ray, light.position, light.direction, light.halfAngle);
-        points.insert(points.end(), cone.begin(), cone.end());
-        if (std::isfinite(light.range)) {
-            const std::vector<double> sphere = raySphereCrossings(ray, light.position, light.range);
-            points.insert(points.end(), sphere.begin(), sphere.end());
+        // Both cones: the falloff's derivative jumps at the inner one.
+        for (const double angle : {light.outerAngle, light.innerAngle}) {
+            const std::vector<double> cone =
+                rayConeCrossings(ray, light.position, light.direction, angle);
+            points.insert(points.end(), cone.begin(), cone.end());
         }
+    }
+    if (std::isfinite(light.range)) {
+        const std::vector<double> sphere = raySphereCrossings(ray, light.position, light.range);
+        points.insert(points.end(), sphere.begin(), sphere.end());
     }
     return points;
 }

@@ -31,7 +31,8 @@ void main() {
         float r0 = frame.betaT.w;
         float w = sqrt(dot(h, h) + r0 * r0);
         vec3 betaS = frame.betaR.rgb + frame.betaM.rgb;
-        lin = frame.lightIntensity.rgb * betaS * (arctanIntegral(t0, t1, b, w) / (4.0 * PI));
+        float integral = falloffArctanIntegral(C, v, t0, t1, b, w, length(h));
+        lin = frame.lightIntensity.rgb * betaS * (integral / (4.0 * PI));
     }
     outInscatter = vec4(storedLin(lin), 1.0);
 }

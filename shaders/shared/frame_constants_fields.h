@@ -15,7 +15,10 @@ LS_VEC4 cameraForward;   // xyz: unit view axis; w: far (ignored when infinite)
 LS_VEC4 screenSize;      // w, h, 1/w, 1/h
 LS_VEC4 lightPos;        // xyz (point, spot)
 LS_VEC4 lightDir;        // xyz: direction light travels / spot axis; w: cos(half angle)
-LS_VEC4 lightIntensity;  // rgb: E (directional) or I; w: spot range
+LS_VEC4 lightIntensity;  // rgb: E (directional) or I; w: range (point, spot)
+// x: cos of a spot's inner cone angle; y: 1 / (cos inner - cos outer), 0 for a hard edge; z: 1 when
+// the range ends in KHR's window (else it cuts); w: the penumbra's angle, outer - inner (radians)
+LS_VEC4 lightFalloff;
 LS_VEC4 lightScreen;  // xy: NDC of the light (or of the point the shafts converge to); z: sign of
                       // its clip w (+1 in front of the camera, -1 behind); w: 1 when on screen
 LS_VEC4 betaR;        // rgb; w: g

@@ -3,6 +3,7 @@
 // expm1 (docs/model.md). Visibility may be colored (stained glass).
 #ifndef LS_INTEGRATE_GLSL
 #define LS_INTEGRATE_GLSL
+#include "light_falloff.glsl"
 #include "math.glsl"
 #if LS_NEEDS_TABLE
 #include "lut.glsl"
@@ -14,6 +15,10 @@ struct Inscatter {
     float d;     // where the last segment ended, metres from the camera
     float h;     // point/spot: the light's distance from the ray's line
     float sC;    // point/spot: the camera's coordinate along the ray, from the light's projection
+    // A light with a smooth falloff (light_falloff.glsl): segments go in pieces of at most this
+    // length, each weighted by the falloff at its middle, on the ray from C along v; 0: none.
+    float piece;
+    vec3 C, v;
 };
 
 vec3 carryAt(Inscatter a, float d) {
@@ -30,10 +35,14 @@ Inscatter beginInscatter(vec3 C, vec3 v, float d0) {
     a.d = d0;
     a.h = 0.0;
     a.sC = 0.0;
+    a.piece = 0.0;
+    a.C = C;
+    a.v = v;
     if (kLightType != LIGHT_DIRECTIONAL) {
         vec3 q = C - frame.lightPos.xyz;
         a.h = length(cross(v, q));  // never sqrt(|q|^2 - b^2): that cancels
         a.sC = dot(v, q);
+        a.piece = falloffPiece(a.h);
     }
     a.carry = carryAt(a, d0);
     return a;
@@ -47,6 +56,16 @@ void advance(inout Inscatter a, float d, vec3 V) {
         vec3 part = a.carry * w;
         a.sum += part * V;
         a.carry -= part * frame.betaT.rgb;
+    } else if (a.piece > 0.0) {
+        int n = falloffPieces(d - a.d, a.piece);
+        float step = (d - a.d) / float(n);
+        for (int k = 0; k < n; ++k) {
+            float e = k == n - 1 ? d : a.d + step;
+            vec3 next = carryAt(a, e);
+            a.sum += (a.carry - next) * V * lightFalloff(a.C + (0.5 * (a.d + e)) * a.v);
+            a.carry = next;
+            a.d = e;
+        }
     } else {
         vec3 next = carryAt(a, d);
         a.sum += (a.carry - next) * V;

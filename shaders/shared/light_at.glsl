@@ -11,6 +11,7 @@
 #ifndef LS_LIGHT_AT_GLSL
 #define LS_LIGHT_AT_GLSL
 #include "frame.glsl"
+#include "light_falloff.glsl"
 #include "math.glsl"
 #include "simplified.glsl"
 
@@ -31,9 +32,10 @@ vec3 lightAt(vec3 P, vec3 v, float ambient, out float cosTheta) {
             float r0 = frame.betaT.w;
             irr = frame.lightIntensity.rgb * exp(-frame.betaT.rgb * r) * (1.0 / (r * r + r0 * r0) + ambient);
         }
-        if (kLightType == LIGHT_SPOT && (dot(-l, frame.lightDir.xyz) < frame.lightDir.w ||
-                                         r > frame.lightIntensity.w))
-            return vec3(0.0);  // outside the cone or the range
+        if (kLightType == LIGHT_SPOT && dot(-l, frame.lightDir.xyz) < frame.lightDir.w)
+            return vec3(0.0);                              // outside the cone
+        if (r > frame.lightIntensity.w) return vec3(0.0);  // beyond the range
+        if (smoothFalloff()) irr *= lightFalloff(P);
     }
 #if LS_SHADOW_MAP || LS_LIGHT_COLOR
     vec4 X = frame.lightViewProj * vec4(P, 1.0);

@@ -67,15 +67,18 @@ void clipCone(vec3 co, vec3 v, vec3 a, float cosA, inout float t0, inout float t
     }
 }
 
-// The part of [0, S] that the light can reach: all of it for directional and point lights, the
-// cone within the range for a spot.
+// The part of [0, S] that the light can reach: all of it for a directional light, the sphere of
+// its range for a point light (all of it without one), the cone within the range for a spot.
 void lightInterval(vec3 C, vec3 v, float S, out float t0, out float t1) {
     t0 = 0.0;
     t1 = S;
-    if (kLightType != LIGHT_SPOT) return;
+    if (kLightType == LIGHT_DIRECTIONAL) return;
+    // A point light without a range (1e30) clips nothing (its square would overflow).
+    if (kLightType == LIGHT_POINT && frame.lightIntensity.w >= 1e18) return;
     vec3 co = C - frame.lightPos.xyz;
     clipSphere(co, v, frame.lightIntensity.w, t0, t1);
-    if (t0 < t1) clipCone(co, v, frame.lightDir.xyz, frame.lightDir.w, t0, t1);
+    if (kLightType == LIGHT_SPOT && t0 < t1)
+        clipCone(co, v, frame.lightDir.xyz, frame.lightDir.w, t0, t1);
 }
 
 // The part of [t0, t1] inside the shadow map's frustum (-w <= x, y <= w, 0 <= z <= w, w > 0): each

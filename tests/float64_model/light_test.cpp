@@ -54,7 +54,7 @@ TEST(Light, SpotSingleConeAndRange) {
     l.type = Light::Spot;
     l.position = {0.0, 10.0, 0.0};
     l.direction = {0.0, -1.0, 0.0};
-    l.halfAngle = kPi / 6.0;
+    l.outerAngle = l.innerAngle = kPi / 6.0;
     l.range = 20.0;
     Medium m;
     const double edge = 10.0 * std::tan(kPi / 6.0);  // cone radius at y = 0

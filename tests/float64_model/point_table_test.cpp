@@ -109,7 +109,7 @@ TEST(PointTable, SpotShapedSegmentsMatchDirectIntegral) {
     spot.type = Light::Spot;
     spot.position = {0.0, 10.0, -30.0};
     spot.direction = {0.2, -1.0, 0.1};
-    spot.halfAngle = 0.45;
+    spot.outerAngle = spot.innerAngle = 0.45;
     spot.range = 13.0;
     const Ray ray{{-1.0, 0.0, 0.0}, glm::normalize(glm::dvec3(0.05, 0.0, -1.0)), 80.0};
     ASSERT_EQ(spotLitIntervals(spot, ray).size(), 1u);  // the ray does cross the lit volume

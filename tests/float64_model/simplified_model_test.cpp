@@ -29,7 +29,7 @@ Light spot() {
     l.position = {0.0, 4.0, 0.0};
     l.direction = {0.0, -1.0, 0.0};
     l.intensity = {30.0, 25.0, 20.0};
-    l.halfAngle = 0.5;
+    l.outerAngle = l.innerAngle = 0.5;
     l.range = 9.0;
     return l;
 }

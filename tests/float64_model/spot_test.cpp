@@ -24,7 +24,7 @@ Light spot(double range = std::numeric_limits<double>::infinity()) {
     l.type = Light::Spot;
     l.position = {0.0, 10.0, 0.0};
     l.direction = {0.0, -1.0, 0.0};
-    l.halfAngle = kPi / 6.0;
+    l.outerAngle = l.innerAngle = kPi / 6.0;
     l.range = range;
     l.intensity = {7.0, 5.0, 3.0};
     return l;
@@ -121,7 +121,7 @@ TEST(Spot, CameraExactlyOnTheConeSurface) {
 // 60 degrees of the backward axis stay dark.
 TEST(Spot, WideConeKeepsItsBackDark) {
     Light wide = spot();
-    wide.halfAngle = 2.0 * kPi / 3.0;
+    wide.outerAngle = wide.innerAngle = 2.0 * kPi / 3.0;
     const Ray ray{{-50.0, 20.0, 0.0}, {1.0, 0.0, 0.0}, 100.0};  // 10 m above the apex
     const double dark = 10.0 * std::tan(kPi / 3.0);             // radius of the dark disc there
     const std::vector<Interval> lit = spotLitIntervals(wide, ray);
@@ -140,7 +140,7 @@ TEST(Spot, NarrowBeamCrossedFarFromTheLight) {
     Light beam = spot();
     beam.position = {0.0, 1000.0, 0.0};
     beam.direction = glm::normalize(glm::dvec3(0.3, -1.0, 0.0));
-    beam.halfAngle = 1e-3;
+    beam.outerAngle = beam.innerAngle = 1e-3;
     const Ray ray{{-5000.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, 1e4};
     auto inside = [&](double s) { return insideSpot(beam, ray.origin + s * ray.direction); };
     auto edge = [&](double in, double out) {
@@ -156,6 +156,59 @@ TEST(Spot, NarrowBeamCrossedFarFromTheLight) {
     // Where the edge lies is ill-conditioned for a narrow cone: rounding of about 1e-16 |L - P| in
     // the inside test moves it by that over sin(alpha), ~1e-10 m here, for the bisection too.
     expectSpotIsClippedPoint(beam, ray, expected, 1e-8);
+}
+
+// KHR_lights_punctual's falloffs (docs/model.md, "The lights"), at points of known angle and
+// distance.
+TEST(SoftLights, TheFalloffsAreKhrsFormulas) {
+    Light s = spot();
+    s.innerAngle = kPi / 9.0;  // 20 degrees
+    const double cosInner = std::cos(kPi / 9.0), cosOuter = std::cos(kPi / 6.0);
+    auto at = [&](double angle, double distance) {
+        return s.position + distance * glm::dvec3(std::sin(angle), -std::cos(angle), 0.0);
+    };
+    EXPECT_EQ(falloff(s, at(0.0, 5.0)), 1.0);
+    EXPECT_EQ(falloff(s, at(kPi / 10.0, 5.0)), 1.0);  // inside the inner cone
+    const double mid = 0.5 * (kPi / 9.0 + kPi / 6.0);
+    const double a = (std::cos(mid) - cosOuter) / (cosInner - cosOuter);
+    EXPECT_NEAR(falloff(s, at(mid, 5.0)), a * a, 1e-13);
+    EXPECT_EQ(glm::length(irradiance(s, hazy(), at(kPi / 5.0, 5.0))), 0.0);  // beyond the outer
+    // A hard edge is a step: full intensity up to the cone.
+    EXPECT_EQ(falloff(spot(), at(kPi / 6.0 - 1e-9, 5.0)), 1.0);
+
+    Light p = pointAt(spot(8.0));
+    p.windowedRange = true;
+    EXPECT_NEAR(falloff(p, at(0.3, 4.0)), 1.0 - 1.0 / 16.0, 1e-15);
+    EXPECT_EQ(falloff(p, at(0.3, 8.0)), 0.0);
+    EXPECT_EQ(glm::length(irradiance(p, hazy(), at(0.3, 8.5))), 0.0);
+    p.windowedRange = false;  // cut: 1 to the range, nothing beyond
+    EXPECT_EQ(falloff(p, at(0.3, 7.9)), 1.0);
+    EXPECT_EQ(glm::length(irradiance(p, hazy(), at(0.3, 8.1))), 0.0);
+}
+
+// The adaptive quadrature with the falloffs under it (breakpoints at both cones and the range)
+// against a plain midpoint sum of the integrand with a million steps.
+TEST(SoftLights, TheIntegralAgreesWithDirectQuadrature) {
+    auto midpoint = [](const Medium& m, const Light& l, const Ray& r) {
+        constexpr int kSteps = 1000000;
+        const double ds = r.length / kSteps;
+        glm::dvec3 sum(0.0);
+        for (int k = 0; k < kSteps; ++k) sum += inscatterIntegrand(m, l, r, (k + 0.5) * ds);
+        return sum * ds;
+    };
+    Light soft = spot(14.0);
+    soft.innerAngle = kPi / 9.0;
+    Light windowed = pointAt(spot(9.0));
+    windowed.windowedRange = true;
+    // Across the penumbra below the spot, and past the point light inside its range.
+    const Ray across{{-12.0, 2.0, 1.0}, glm::normalize(glm::dvec3(1.0, 0.05, 0.0)), 24.0};
+    for (const Light& l : {soft, windowed}) {
+        const QuadResult q = integrateInscatter(hazy(), l, across);
+        ASSERT_TRUE(q.converged);
+        const glm::dvec3 want = midpoint(hazy(), l, across);
+        ASSERT_GT(want.x, 0.0);
+        EXPECT_TRUE(near3(q.value, want, 1e-6)) << q.value.x << " vs " << want.x;
+    }
 }
 
 }  // namespace

@@ -142,12 +142,13 @@ TEST(ReferenceRenderer, ConvertsTheScenesLightAndMedium) {
     l.position = {1, 2, 3};
     l.direction = {0, -2, 0};
     l.intensity = {4, 5, 6};
-    l.halfAngleDegrees = 30.0f;
+    l.innerConeAngleDegrees = l.outerConeAngleDegrees = 30.0f;
     l.range = 7.0f;
     l.radius = 0.25f;
     const ls::ref::Light light = host::reference::toReferenceLight(l);
     EXPECT_EQ(light.type, ls::ref::Light::Spot);
-    EXPECT_NEAR(light.halfAngle, ls::ref::kPi / 6.0, 1e-15);
+    EXPECT_NEAR(light.outerAngle, ls::ref::kPi / 6.0, 1e-15);
+    EXPECT_NEAR(light.innerAngle, ls::ref::kPi / 6.0, 1e-15);
     EXPECT_EQ(light.direction, glm::dvec3(0, -1, 0));
     EXPECT_EQ(light.position, glm::dvec3(1, 2, 3));
     EXPECT_EQ(light.intensity, glm::dvec3(4, 5, 6));
@@ -337,7 +338,7 @@ ShadowCase pyramidCase(lightscatter::LightType kind) {
     c.scene.light.position = {0.0f, 4.0f, 0.0f};
     c.scene.light.direction = {0.0f, -1.0f, 0.0f};
     c.scene.light.intensity = {30.0f, 20.0f, 10.0f};
-    c.scene.light.halfAngleDegrees = 35.0f;
+    c.scene.light.innerConeAngleDegrees = c.scene.light.outerConeAngleDegrees = 35.0f;
     c.scene.light.range = 6.0f;
     c.scene.light.radius = 0.05f;
     c.mesh = MeshBuilder()
@@ -374,7 +375,7 @@ TEST(ReferenceRenderer, HandComputedRayThroughSpotConeAndShadow) {
     const ReferenceScene pointScene(point.scene, point.mesh, 4, 4);
     EXPECT_TRUE(sameIntervals(pointScene.litIntervals(ray), {{0.0, 4.25}, {5.75, 10.0}}, 1e-8));
     // The range alone cuts the spot when the cone is wide: |x| <= sqrt(4^2 - 3^2).
-    spot.scene.light.halfAngleDegrees = 80.0f;
+    spot.scene.light.innerConeAngleDegrees = spot.scene.light.outerConeAngleDegrees = 80.0f;
     spot.scene.light.range = 4.0f;
     const ReferenceScene wide(spot.scene, spot.mesh, 4, 4);
     EXPECT_TRUE(sameIntervals(wide.litIntervals(ray),

@@ -191,7 +191,7 @@ TEST_F(LightsReferenceGpu, ACagedPointLightBesideASpotMatchesTheReference) {
     spot.position = {2.5f, 5.0f, 3.5f};
     spot.direction = {-0.3f, -1.0f, -0.4f};
     spot.intensity = {40.0f, 70.0f, 120.0f};
-    spot.halfAngleDegrees = 22.0f;
+    spot.innerConeAngleDegrees = spot.outerConeAngleDegrees = 22.0f;
     spot.range = 20.0f;
     spot.shadowMapSize = 1024;
     scene.moreLights = {spot};

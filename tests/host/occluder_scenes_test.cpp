@@ -108,7 +108,7 @@ TEST(OccluderScenes, TheThousandBoxTreeOutgrowsTheFirstTriangleBuffer) {
     const auto start = std::chrono::steady_clock::now();
     const auto frustum = ls::beam::spotFrustum(
         glm::dvec3(scene.light.position), glm::dvec3(scene.light.direction),
-        glm::radians(static_cast<double>(scene.light.halfAngleDegrees)), scene.light.range);
+        glm::radians(static_cast<double>(scene.light.outerConeAngleDegrees)), scene.light.range);
     const ls::beam::LightVolume volume = ls::beam::buildLightVolume(frustum, occluders);
     std::vector<glm::vec4> points;
     ls::beam::appendLitPyramids(volume.tree, points);

@@ -5,9 +5,10 @@
 #include "scene_to_plugin.h"
 
 TEST(HostPluginRefusal, SceneFieldsInTheScenesNames) {
-    EXPECT_EQ(host::pluginRefusalInSceneTerms(
-                  "lightscatter: light.halfAngleDegrees = 0: must be in (0, 89]", "a/s.json"),
-              "a/s.json: light.halfAngleDegrees = 0: must be in (0, 89] (refused by the plugin)");
+    EXPECT_EQ(
+        host::pluginRefusalInSceneTerms(
+            "lightscatter: light.innerConeAngleDegrees = 0: must be in (0, 89]", "a/s.json"),
+        "a/s.json: light.innerConeAngleDegrees = 0: must be in (0, 89] (refused by the plugin)");
     EXPECT_EQ(host::pluginRefusalInSceneTerms("lightscatter: camera.nearPlane = 0: must be > 0",
                                               "s.json"),
               "s.json: camera.near = 0: must be > 0 (refused by the plugin)");
@@ -59,7 +60,8 @@ TEST(HostPluginRefusal, ALightOfTheListIsNamedAsTheSceneNamesIt) {
         "clip matrix (refused by the plugin)");
     EXPECT_EQ(
         host::pluginRefusalInSceneTerms(
-            "lightscatter: lights[2]: lights[2].light.halfAngleDegrees = 0: must be in (0, 89]",
+            "lightscatter: lights[2]: lights[2].light.innerConeAngleDegrees = 0: must be in (0, "
+            "89]",
             "s.json"),
-        "s.json: lights[2].halfAngleDegrees = 0: must be in (0, 89] (refused by the plugin)");
+        "s.json: lights[2].innerConeAngleDegrees = 0: must be in (0, 89] (refused by the plugin)");
 }

@@ -99,7 +99,8 @@ TEST_F(SceneFileTest, AFullFileSetsEveryField) {
     expectVec3(s.light.position, {0, 10, 0});
     expectVec3(s.light.direction, {0, -0.6f, 0.8f});  // (0, -3, 4) / 5
     expectVec3(s.light.intensity, {100, 90, 80});
-    EXPECT_FLOAT_EQ(s.light.halfAngleDegrees, 89.0f);
+    EXPECT_FLOAT_EQ(s.light.innerConeAngleDegrees, 89.0f);
+    EXPECT_FLOAT_EQ(s.light.outerConeAngleDegrees, 89.0f);
     EXPECT_FLOAT_EQ(s.light.range, 40.0f);
     EXPECT_FLOAT_EQ(s.light.radius, 0.2f);
     EXPECT_EQ(s.light.shadowMapSize, 0u);
@@ -131,7 +132,8 @@ TEST_F(SceneFileTest, MissingFieldsKeepTheDefaults) {
     EXPECT_EQ(s.light.type, d.light.type);
     EXPECT_EQ(s.light.direction, d.light.direction);
     EXPECT_EQ(s.light.intensity, d.light.intensity);
-    EXPECT_EQ(s.light.halfAngleDegrees, d.light.halfAngleDegrees);
+    EXPECT_EQ(s.light.innerConeAngleDegrees, d.light.innerConeAngleDegrees);
+    EXPECT_EQ(s.light.outerConeAngleDegrees, d.light.outerConeAngleDegrees);
     EXPECT_EQ(s.light.range, d.light.range);
     EXPECT_EQ(s.light.radius, d.light.radius);
     EXPECT_EQ(s.light.shadowMapSize, d.light.shadowMapSize);
@@ -357,7 +359,8 @@ TEST_F(SceneFileTest, UnknownKeysAreRefusedWithTheKnownOnes) {
         "reversedZ, infiniteFar)");
     EXPECT_EQ(errorFor(R"({"light": {"kind": "spot"}})"),
               "light: unknown key 'kind' (known keys: type, position, direction, intensity, "
-              "halfAngleDegrees, range, radius, shadowMapSize)");
+              "innerConeAngleDegrees, outerConeAngleDegrees, halfAngleDegrees, range, "
+              "rangeFalloff, radius, shadowMapSize)");
     EXPECT_EQ(
         errorFor(R"({"medium": {"beta": 1}})"),
         "medium: unknown key 'beta' (known keys: betaR, betaM, g, sigmaA, phase, maxDistance)");
@@ -479,9 +482,36 @@ TEST_F(SceneFileTest, ALightListGivesEveryLight) {
     EXPECT_EQ(s.light.type, lightscatter::LightType::Directional);
     EXPECT_EQ(s.lightAt(1).type, lightscatter::LightType::Spot);
     EXPECT_EQ(s.lightAt(1).shadowMapSize, 256u);
-    EXPECT_FLOAT_EQ(s.lightAt(1).halfAngleDegrees, 20.0f);
+    EXPECT_FLOAT_EQ(s.lightAt(1).outerConeAngleDegrees, 20.0f);
     EXPECT_EQ(s.lightAt(2).type, lightscatter::LightType::Point);
     EXPECT_EQ(s.lightAt(2).shadowMapSize, 0u);
+}
+
+// A spot's cone as KHR_lights_punctual gives it, the former halfAngleDegrees as a hard cone, and a
+// range's falloff (issue #25).
+TEST_F(SceneFileTest, ConesAndRangesAsEnginesDefineThem) {
+    const std::string file = write("cones.json", R"({"lights": [
+        {"type": "spot", "innerConeAngleDegrees": 20, "outerConeAngleDegrees": 30},
+        {"type": "spot", "halfAngleDegrees": 25},
+        {"type": "spot", "outerConeAngleDegrees": 35},
+        {"type": "point", "range": 12, "rangeFalloff": "window"}]})");
+    const host::SceneDesc s = host::loadSceneFile(file);
+    EXPECT_FLOAT_EQ(s.lightAt(0).innerConeAngleDegrees, 20.0f);
+    EXPECT_FLOAT_EQ(s.lightAt(0).outerConeAngleDegrees, 30.0f);
+    EXPECT_FLOAT_EQ(s.lightAt(1).innerConeAngleDegrees, 25.0f);
+    EXPECT_FLOAT_EQ(s.lightAt(1).outerConeAngleDegrees, 25.0f);
+    EXPECT_FLOAT_EQ(s.lightAt(2).innerConeAngleDegrees, 35.0f);  // without an inner: hard
+    EXPECT_EQ(s.lightAt(2).rangeFalloff, lightscatter::RangeFalloff::Cut);
+    EXPECT_FLOAT_EQ(s.lightAt(3).range, 12.0f);
+    EXPECT_EQ(s.lightAt(3).rangeFalloff, lightscatter::RangeFalloff::Window);
+
+    EXPECT_EQ(errorFor(R"({"light": {"halfAngleDegrees": 20, "outerConeAngleDegrees": 30}})"),
+              "light: halfAngleDegrees is a hard cone, inner = outer: give it or "
+              "innerConeAngleDegrees and outerConeAngleDegrees, not both");
+    EXPECT_EQ(errorFor(R"({"light": {"innerConeAngleDegrees": 40, "outerConeAngleDegrees": 30}})"),
+              "light.innerConeAngleDegrees = 40: must be at most outerConeAngleDegrees (30)");
+    EXPECT_EQ(errorFor(R"({"light": {"rangeFalloff": "smooth"}})"),
+              "light.rangeFalloff 'smooth' is not one of cut, window");
 }
 
 TEST_F(SceneFileTest, ALightListHasItsOwnRules) {

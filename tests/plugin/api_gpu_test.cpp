@@ -282,7 +282,14 @@ TEST_F(PluginApiGpu, PointLightShadowMapsAreCheckedAsCubes) {
 TEST_F(PluginApiGpu, MediumAndLightRangesAreChecked) {
     expectRefused([](auto& d) { d.medium.g = 1.0f; }, "medium.g");
     expectRefused([](auto& d) { d.medium.betaM[1] = -1.0f; }, "medium.betaM");
-    expectRefused([](auto& d) { d.light.halfAngleDegrees = 95.0f; }, "light.halfAngleDegrees");
+    expectRefused([](auto& d) { d.light.outerConeAngleDegrees = 95.0f; },
+                  "light.outerConeAngleDegrees");
+    expectRefused(
+        [](auto& d) {
+            d.light.innerConeAngleDegrees = 40.0f;
+            d.light.outerConeAngleDegrees = 30.0f;
+        },
+        "light.innerConeAngleDegrees = 40: must be at most outerConeAngleDegrees");
     expectRefused([](auto& d) { d.light.radius = 0.0f; }, "light.radius");
 }
 

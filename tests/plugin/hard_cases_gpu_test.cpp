@@ -45,7 +45,7 @@ lightscatter::Light spotAt(glm::vec3 position, glm::vec3 direction, float halfAn
     lightscatter::Light l = spotOverGrille();
     l.position = v3(position);
     l.direction = v3(direction);
-    l.halfAngleDegrees = halfAngle;
+    l.innerConeAngleDegrees = l.outerConeAngleDegrees = halfAngle;
     return l;
 }
 

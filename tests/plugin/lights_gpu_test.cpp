@@ -18,7 +18,7 @@ lightscatter::Light secondSpot() {
     l.position = {-1.5f, 5.0f, 0.8f};
     l.direction = {0.25f, -1.0f, -0.1f};
     l.intensity = {15.0f, 25.0f, 40.0f};
-    l.halfAngleDegrees = 22.0f;
+    l.innerConeAngleDegrees = l.outerConeAngleDegrees = 22.0f;
     return l;
 }
 
@@ -179,9 +179,9 @@ TEST_F(LightsGpu, RefusalsNameTheFields) {
     EXPECT_NE(b.find("never both"), std::string::npos) << b;
     // A broken light names its index and field.
     auto bad = withLights(da, {input(da), input(da)});
-    bad.lights[1].light.halfAngleDegrees = 95.0f;
+    bad.lights[1].light.innerConeAngleDegrees = bad.lights[1].light.outerConeAngleDegrees = 95.0f;
     const std::string h = refusal(bad);
-    EXPECT_NE(h.find("lights[1].light.halfAngleDegrees"), std::string::npos) << h;
+    EXPECT_NE(h.find("lights[1].light.outerConeAngleDegrees"), std::string::npos) << h;
     auto missing = withLights(da, {input(da), input(da)});
     missing.lights[1].shadowMap.reset();
     const std::string m = refusal(missing);

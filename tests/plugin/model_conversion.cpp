@@ -3,6 +3,8 @@
 #include "float64_model/closed_forms.h"
 #include "float64_model/inscatter_integral.h"
 
+#include <limits>
+
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -29,8 +31,10 @@ ls::ref::Light refLight(const lightscatter::Light& l) {
     r.position = {l.position[0], l.position[1], l.position[2]};
     r.direction = glm::normalize(glm::dvec3(l.direction[0], l.direction[1], l.direction[2]));
     r.intensity = {l.intensity[0], l.intensity[1], l.intensity[2]};
-    r.halfAngle = glm::radians(static_cast<double>(l.halfAngleDegrees));
-    r.range = l.range;
+    r.outerAngle = glm::radians(static_cast<double>(l.outerConeAngleDegrees));
+    r.innerAngle = glm::radians(static_cast<double>(l.innerConeAngleDegrees));
+    r.range = l.range >= 1e29f ? std::numeric_limits<double>::infinity() : l.range;
+    r.windowedRange = l.rangeFalloff == lightscatter::RangeFalloff::Window;
     r.r0 = l.radius;
     return r;
 }

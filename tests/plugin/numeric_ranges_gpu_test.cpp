@@ -160,12 +160,26 @@ std::vector<Field> fields() {
                  [](FrameDescription& d, double v) {
                      d.light.direction = {f32(v), f32(-v), f32(0.5 * v)};
                  }});
-    f.push_back({"light.halfAngleDegrees",
+    f.push_back({"light.outerConeAngleDegrees",
                  {Base::Spot, Base::UnshadowedSpot},
                  {},
-                 {limits::kMinHalfAngleDegrees, 89.0},
+                 {limits::kMinConeAngleDegrees, 89.0},
                  [](double v) { return v < 1.0; },
-                 [](FrameSpec& s, double v) { s.light.halfAngleDegrees = f32(v); },
+                 [](FrameSpec& s, double v) {
+                     s.light.outerConeAngleDegrees = f32(v);
+                     s.light.innerConeAngleDegrees =
+                         std::min(s.light.innerConeAngleDegrees, f32(v));
+                 },
+                 {}});
+    f.push_back({"light.innerConeAngleDegrees",
+                 {Base::Spot, Base::UnshadowedSpot},
+                 {},
+                 {limits::kMinConeAngleDegrees, 89.0},
+                 [](double v) { return v < 1.0; },
+                 [](FrameSpec& s, double v) {
+                     s.light.innerConeAngleDegrees = f32(v);
+                     s.light.outerConeAngleDegrees = 89.0f;
+                 },
                  {}});
     // The light stands 6 m over the ground, the camera 9 m away.
     f.push_back({"light.range",

@@ -245,7 +245,7 @@ TEST(PlanePlacement, FillsTheViewFromInsideAndScalesTheCountWithDistance) {
     spot.kind = ls::LightType::Spot;
     spot.position = {0, 1, 1};
     spot.direction = {0, 0, -1};
-    spot.cosHalfAngle = std::cos(0.5f);
+    spot.cosOuter = spot.cosInner = std::cos(0.5f);
     spot.range = 20.0f;
     ls::MediumParams medium;
     medium.betaM = glm::vec3(0.02f);

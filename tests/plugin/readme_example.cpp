@@ -37,7 +37,8 @@ uint64_t recordLightShafts(Engine& engine) {
     spot.light.position = {0.0f, 6.0f, 0.0f};
     spot.light.direction = {0.0f, -1.0f, 0.0f};
     spot.light.intensity = {40.0f, 38.0f, 35.0f};  // W/sr
-    spot.light.halfAngleDegrees = 30.0f;
+    spot.light.innerConeAngleDegrees = 25.0f;      // full intensity within 25 degrees of its axis,
+    spot.light.outerConeAngleDegrees = 30.0f;      // none beyond 30 (KHR_lights_punctual's falloff)
     spot.light.shadowViewProjection = engine.lightViewProjection;
     spot.light.shadowMapSize = 1024;
     const VkExtent2D mapExtent{spot.light.shadowMapSize, spot.light.shadowMapSize};

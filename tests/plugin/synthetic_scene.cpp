@@ -154,7 +154,7 @@ glm::mat4 spotShadowMatrix(const lightscatter::Light& light, float nearP, float 
     if (std::fabs(glm::dot(dir, up)) > 0.999f) up = glm::vec3(0, 0, -1);
     const glm::mat4 view = glm::lookAtRH(pos, pos + dir, up);
     // A little wider than the cone, so the cone's edge falls inside the map.
-    const float fov = 2.0f * glm::radians(std::min(light.halfAngleDegrees + 2.0f, 89.0f));
+    const float fov = 2.0f * glm::radians(std::min(light.outerConeAngleDegrees + 2.0f, 89.0f));
     return testing_support::vulkanPerspective(fov, 1.0f, nearP, farP, light.shadowReversedZ,
                                               false) *
            view;

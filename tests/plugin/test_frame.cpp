@@ -116,7 +116,7 @@ lightscatter::Light spotOverGrille() {
     l.position = {0.3f, 6.0f, 0.2f};
     l.direction = {0.0f, -1.0f, 0.0f};
     l.intensity = {40.0f, 38.0f, 35.0f};
-    l.halfAngleDegrees = 30.0f;
+    l.innerConeAngleDegrees = l.outerConeAngleDegrees = 30.0f;
     l.range = 20.0f;
     l.shadowMapSize = 128;
     return l;

@@ -22,6 +22,11 @@ enum class LightType : int {
     Point = LIGHTSCATTER_LIGHT_POINT,
 };
 
+// How a point or spot light's irradiance ends at Light::range. Cut: a hard bound, nothing beyond
+// it. Window: KHR_lights_punctual's smooth window, the irradiance times
+// clamp(1 - (d / range)^4, 0, 1) at distance d.
+enum class RangeFalloff { Cut, Window };
+
 // The Mie lobe: Cornette-Shanks with Medium::g, isotropic, or seed 004's hazy atmosphere
 // (1 + 9 cos^16(alpha / 2)) / (8 pi), normalised over the sphere (docs/model.md), which ignores g.
 enum class MiePhase : int {

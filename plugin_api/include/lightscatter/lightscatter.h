@@ -101,9 +101,11 @@ inline constexpr float kMaxCoefficient = 1e3f;
 inline constexpr float kMinRadius = 1e-3f;
 // Settings::planeAmbient (1/m^2): no more than the inverse square at kMinRadius.
 inline constexpr float kMaxAmbient = 1e6f;
-// Light::halfAngleDegrees: the cone test compares cosines, whose float32 step near 1 (6e-8) moves
-// the edge of a 0.1-degree cone by 2% of its angle and swallows cones under 0.02 degree whole.
-inline constexpr float kMinHalfAngleDegrees = 0.1f;
+// Light::innerConeAngleDegrees and outerConeAngleDegrees: the cone test compares cosines, whose
+// float32 step near 1 (6e-8) moves the edge of a 0.1-degree cone by 2% of its angle and swallows
+// cones under 0.02 degree whole.
+inline constexpr float kMinConeAngleDegrees = 0.1f;
+[[deprecated("use kMinConeAngleDegrees")]] inline constexpr float kMinHalfAngleDegrees = 0.1f;
 // Settings::simplifiedA1 (a1 of I / (a1 r^2 + a0)): seed 004's a1 is 1; 1e-3 to 1e3 keeps its
 // falloff within the budget above. simplifiedA0 (m^2) up to kMaxLength^2.
 inline constexpr float kMinSimplifiedA1 = 1e-3f, kMaxSimplifiedA1 = 1e3f;
@@ -300,9 +302,20 @@ struct Light {
     Vec3 direction{0, -1, 0};
     // E (W/m^2) for directional, I (W/sr) for point and spot; each in [0, limits::kMaxIntensity].
     Vec3 intensity{1, 1, 1};
-    float halfAngleDegrees = 30;  // spot, in [limits::kMinHalfAngleDegrees, 89]
-    float range = 1e30f;          // spot: no light beyond it; > 0 and finite (only compared)
-    float radius = 0.05f;         // r0 of docs/model.md, in [limits::kMinRadius, kMaxLength]
+    // A spot's cone, as KHR_lights_punctual (and Unreal, Godot, Bevy, Filament) define it: full
+    // intensity within innerConeAngleDegrees of the axis, then the angular falloff
+    // a = clamp((cos t - cos outer) / (cos inner - cos outer), 0, 1)^2 (t the angle from the axis)
+    // to 0 at outerConeAngleDegrees; inner = outer is a hard edge (a step). 89 degrees at most,
+    // not KHR's 90: the methods clip a ray to the cone's lit nappe, which is convex only below 90
+    // degrees, and at 90 its quadric degenerates to a plane. Each in
+    // [limits::kMinConeAngleDegrees, 89], inner <= outer.
+    float innerConeAngleDegrees = 30;
+    float outerConeAngleDegrees = 30;
+    // Point and spot: how far the light reaches (metres; 1e30: no range), ended as rangeFalloff
+    // says. > 0 and finite (only compared).
+    float range = 1e30f;
+    RangeFalloff rangeFalloff = RangeFalloff::Cut;
+    float radius = 0.05f;  // r0 of docs/model.md, in [limits::kMinRadius, kMaxLength]
     // The shadow map's projection (world -> light clip, Vulkan conventions) and size. Required with
     // a directional or spot light's shadow map (a singular matrix, such as the all-zero default, is
     // refused); for a spot its frustum must contain the cone. Ignored for a point light.

@@ -475,7 +475,7 @@ lightscatter::FrameDescription describe(const View& v, const Scene& s, VkImage s
         l.range = 5.0f;
     }
     l.intensity = {40.0f, 38.0f, 35.0f};
-    l.halfAngleDegrees = 30.0f;
+    l.innerConeAngleDegrees = l.outerConeAngleDegrees = 30.0f;
     l.shadowViewProjection = lightViewProjection();
     if (s.shadow) {
         l.shadowMapSize = kShadowMapSize;
