@@ -83,6 +83,10 @@ std::string pluginRefusalInSceneTerms(const std::string& message, const std::str
             }
         }
         replaceAll(named, " the light ", " " + light + " ");
+        // A refusal naming no field of the light (its method's) still says which light it is.
+        const std::string lead = scenePath + ": the plugin refused the frame: ";
+        if (named.find(light) == std::string::npos && named.rfind(lead, 0) == 0)
+            named.insert(lead.size(), light + ": ");
         return named;
     }
     // Longest first: a phrase, then the fields whose SCENE.json names differ. The matrices are

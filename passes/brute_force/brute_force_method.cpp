@@ -10,7 +10,6 @@ namespace ls {
 MethodCaps BruteForceMethod::caps() const {
     MethodCaps c;
     c.cubeShadow = true;
-    c.severalLights = true;
     return c;
 }
 

@@ -11,7 +11,6 @@ namespace ls {
 MethodCaps EpipolarMethod::caps() const {
     MethodCaps c;
     c.cubeShadow = true;
-    c.severalLights = true;
     c.countsSteps = true;
     c.budgeted = true;
     return c;

@@ -20,7 +20,6 @@ namespace ls {
 struct MethodCaps {
     bool directional = true, spot = true, point = true;
     bool cubeShadow = false;      // samples a point light's six-face shadow map
-    bool severalLights = false;   // builds a chain per light in a frame of several
     bool readsOccluders = false;  // FrameDescription::occluders (the beam trees)
     bool countsSteps = false;     // DebugOptions::countSteps: a counting variant of its march
     // Its textures depend on the profile's sizes: budget() reports it.

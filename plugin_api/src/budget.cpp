@@ -6,6 +6,7 @@
 
 #include <lightscatter/lightscatter.h>
 #include "graph_config.h"
+#include "method_choice.h"
 #include "method_units.h"
 #include "planes/tiling_noise.h"
 #include "registry/method_registry.h"
@@ -66,6 +67,20 @@ uint64_t persistentBytes(const rg::OfflineDeviceCaps& caps, VkFormat format, VkE
     return caps.imageRequirements(info).size;
 }
 
+Budget setBudget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
+                 uint32_t shadowMapSize, const std::vector<BudgetLight>& lights,
+                 const Settings* custom, bool refusals);
+
+// Auto for a light of a budgeted set, which has no geometry or medium: as a frame's Auto for a
+// light that covers the screen in a medium that needs the point-light table.
+Method budgetAuto(const detail::FrameSetup& l) {
+    if (!l.shadowed) return Method::Epipolar;  // its closed form per pixel
+    const uint64_t pixels = uint64_t{l.screen.width} * l.screen.height;
+    const uint64_t samples = uint64_t{l.epipolar.slices} * l.epipolar.samples;
+    return pixels * detail::kEpipolarSamplesPerPixel >= samples ? Method::Epipolar
+                                                                : Method::BruteForce;
+}
+
 }  // namespace
 
 Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint32_t shadowMapSize,
@@ -82,22 +97,35 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
                            ": only " +
                            methodsWhere([](const ls::MethodCaps& c) { return c.budgeted; }) +
                            " have textures that depend on the profile");
+    const ls::MethodCaps caps = unit->caps();
+    std::vector<BudgetLight> set;
+    for (LightType light : lights) {
+        if (light == LightType::Directional && !caps.directional)
+            throw InvalidInput(std::string("lightscatter: budget method ") + methodName(method) +
+                               ": needs a point or spot light");
+        // A point light is budgeted with its cube map where the method samples one.
+        set.push_back({light, light != LightType::Point || caps.cubeShadow, method});
+    }
+    // One method for every light, as before a light had its own: a setting the method does not
+    // honour (noise for epipolar) is budgeted as if it did, not refused.
+    return setBudget(profile, screenWidth, screenHeight, shadowMapSize, set, custom, false);
+}
+
+Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint32_t shadowMapSize,
+              const std::vector<BudgetLight>& lights, const Settings* custom) {
+    return setBudget(profile, screenWidth, screenHeight, shadowMapSize, lights, custom, true);
+}
+
+namespace {
+
+Budget setBudget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
+                 uint32_t shadowMapSize, const std::vector<BudgetLight>& lights,
+                 const Settings* custom, bool refusals) {
     if (lights.empty()) throw InvalidInput("lightscatter: budget lights: the list is empty");
     if (lights.size() > kMaxLights)
         throw InvalidInput("lightscatter: budget lights: " + std::to_string(lights.size()) +
                            " lights: at most " + std::to_string(kMaxLights) +
                            " (kMaxLights, as FrameDescription::lights)");
-    const ls::MethodCaps caps = unit->caps();
-    if (lights.size() > 1 && !caps.severalLights)
-        throw InvalidInput(
-            std::string("lightscatter: budget method ") + methodName(method) +
-            ": several lights are budgeted for " +
-            methodsWhere([](const ls::MethodCaps& c) { return c.budgeted && c.severalLights; }) +
-            " only");
-    for (LightType light : lights)
-        if (light == LightType::Directional && !caps.directional)
-            throw InvalidInput(std::string("lightscatter: budget method ") + methodName(method) +
-                               ": needs a point or spot light");
     if (screenWidth == 0 || screenHeight == 0 || screenWidth > 16384 || screenHeight > 16384)
         throw InvalidInput("lightscatter: budget screen " + std::to_string(screenWidth) + "x" +
                            std::to_string(screenHeight) + ": each side must be in [1, 16384]");
@@ -116,17 +144,27 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
     detail::ValidatedFrame frame;
     detail::FrameImports images;
     describeEngineImages(images, screen);
-    for (LightType type : lights) {
+    std::vector<const ls::MethodUnit*> methods;
+    for (size_t i = 0; i < lights.size(); ++i) {
+        const LightType type = lights[i].type;
         detail::FrameSetup l;
         l.light.kind = type;
-        l.shadowed = type != LightType::Point || caps.cubeShadow;
-        l.light.shadowMapSize = shadowMapSize;
-        detail::applySettings(l, s, shadowMapSize);
+        l.shadowed = lights[i].shadowed;
+        l.light.shadowMapSize = l.shadowed ? shadowMapSize : 0;
+        detail::applySettings(l, s, l.light.shadowMapSize);
         // Read from custom with every profile, as a frame does: it adds the plugin's tiling noise.
         l.noise = custom && custom->noiseAmplitude > 0.0f;
         l.screen = screen;
         l.depthAttachment = true;
         l.settings = s;
+        const Method method = lights[i].method == Method::Auto ? budgetAuto(l) : lights[i].method;
+        const ls::MethodUnit* unit = detail::methodUnit(method);
+        if (!unit)
+            throw InvalidInput("lightscatter: budget lights[" + std::to_string(i) +
+                               "].method is not a Method value");
+        if (const std::string r = refusals ? unit->refusal(l) : ""; !r.empty())
+            throw InvalidInput("lightscatter: budget lights[" + std::to_string(i) + "]: " + r);
+        methods.push_back(unit);
         frame.lights.push_back(l);
         frame.touchesView.push_back(true);
         const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
@@ -144,7 +182,7 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
     detail::GraphOptions options;
     options.depthStencil = detail::stencilFormat(device);
     options.coordinates = detail::coordinateFormat(device);
-    const detail::GraphConfig c = detail::graphConfig(frame, *unit, images, options);
+    const detail::GraphConfig c = detail::graphConfig(frame, methods, images, options);
     const detail::FrameGraph fg = detail::buildFrameGraph(c);
     const rg::CompiledGraph compiled = rg::compile(*fg.graph, device);
 
@@ -157,6 +195,7 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
     b.estimated = !compiled.exactSizes;
     b.depthStencilFormat = rg::formatName(c.depthStencil);
     if (lights.size() == 1) b.seed = seedFigure(profile);  // seed 000's figures are for one light
+    for (const ls::MethodUnit* m : methods) b.lightMethods.push_back(m->name());
     for (uint32_t id = 0; id < fg.graph->resources().size(); ++id) {
         const auto& r = fg.graph->resource(id);
         const auto& p = compiled.resources[id];
@@ -183,5 +222,7 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
                        VK_FORMAT_R32G32B32A32_SFLOAT, {ls::kTableWidth, ls::kTableHeight});
     return b;
 }
+
+}  // namespace
 
 }  // namespace lightscatter

@@ -88,13 +88,14 @@ namespace {
 std::string frameSummary(const GraphConfig& c, size_t chains) {
     if (c.lights.size() == 1)
         return c.lights[0].touchesView
-                   ? c.method->summary(c.lights[0].chain)
+                   ? c.lights[0].method->summary(c.lights[0].chain)
                    : "the light reaches no view ray (or nothing scatters): extinction only";
     std::string s = std::to_string(c.lights.size()) + " lights, " + std::to_string(chains) +
                     " reaching the view";
     for (size_t i = 0; i < c.lights.size(); ++i)
         if (c.lights[i].touchesView)
-            s += "; light " + std::to_string(i) + ": " + c.method->summary(c.lights[i].chain);
+            s += "; light " + std::to_string(i) + " (" + c.lights[i].method->name() +
+                 "): " + c.lights[i].method->summary(c.lights[i].chain);
     return s +
            "; the first composite applies the extinction, each light's Lin is added to the "
            "color as its chain ends";
@@ -193,7 +194,7 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
         in.stepCounts = counts;
         // The first chain's composite applies the extinction; the others add their Lin.
         const ls::CompositeTarget target{color, linOut, chains != 0};
-        const ls::ChainOutputs o = c.method->addChain(g, in, l.chain, target);
+        const ls::ChainOutputs o = l.method->addChain(g, in, l.chain, target);
         if (o.stepCounts.valid()) counts = o.stepCounts;
         ls::CompositeOutputs written = o.target;
         if (!o.composited) {

@@ -31,6 +31,7 @@ ImportState importState(const ImageInput& in);
 
 // One light of the frame.
 struct LightGraphConfig {
+    const ls::MethodUnit* method = nullptr;  // the light's method (the registry's)
     ls::ChainConfig chain;
     bool touchesView = true;  // false: no chain (its images are still imported)
     bool noise = false;       // its chain samples the frame's tiling noise
@@ -39,7 +40,6 @@ struct LightGraphConfig {
 };
 
 struct GraphConfig {
-    const ls::MethodUnit* method = nullptr;
     VkExtent2D screen{0, 0};
     // The screen above is the plugin's maxRenderSize: each frame's engine images (depth, color,
     // inscatterOut) may be smaller, and the passes over the screen render over theirs.

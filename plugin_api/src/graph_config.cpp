@@ -17,13 +17,13 @@ FrameImports frameImports(const FrameDescription& frame) {
     return f;
 }
 
-GraphConfig graphConfig(const ValidatedFrame& frame, const ls::MethodUnit& method,
+GraphConfig graphConfig(const ValidatedFrame& frame,
+                        const std::vector<const ls::MethodUnit*>& methods,
                         const FrameImports& images, const GraphOptions& options,
                         const std::vector<const ls::LightData*>& data,
                         const GraphConfig* previous) {
     const FrameSetup& first = frame.lights[0];
     GraphConfig c;
-    c.method = &method;
     c.screen = first.screen;
     c.depthStencil = options.depthStencil;
     c.coordinates = options.coordinates;
@@ -43,13 +43,15 @@ GraphConfig graphConfig(const ValidatedFrame& frame, const ls::MethodUnit& metho
     for (size_t i = 0; i < frame.lights.size(); ++i) {
         const FrameSetup& s = frame.lights[i];
         const bool touches = frame.touchesView[i];
+        const ls::MethodUnit& method = *methods[i];
         LightGraphConfig l;
+        l.method = &method;
         l.chain.light = s.light.kind;
         l.chain.shadowed = s.shadowed;
         l.chain.shadowMapSize = s.light.shadowMapSize;
         l.chain.spec = ls::scatterSpec(s);
         const bool sameMethod =
-            previous && previous->method == &method && i < previous->lights.size();
+            previous && i < previous->lights.size() && previous->lights[i].method == &method;
         l.chain.options = method.options(s, i < data.size() ? data[i] : nullptr,
                                          sameMethod ? &previous->lights[i].chain.options : nullptr);
         l.touchesView = touches;

@@ -26,9 +26,11 @@ struct GraphOptions {
     VkExtent2D maxScreen{0, 0};
 };
 
-// `data`: each light's method state after prepare() (empty for the budget); `previous`: the last
-// graph's configuration, whose options a method may grow from (the beam tree's buffer).
-GraphConfig graphConfig(const ValidatedFrame& frame, const ls::MethodUnit& method,
+// `methods`: each light's; `data`: each light's method state after prepare() (empty for the
+// budget); `previous`: the last graph's configuration, whose options a method may grow from (the
+// beam tree's buffer).
+GraphConfig graphConfig(const ValidatedFrame& frame,
+                        const std::vector<const ls::MethodUnit*>& methods,
                         const FrameImports& images, const GraphOptions& options,
                         const std::vector<const ls::LightData*>& data = {},
                         const GraphConfig* previous = nullptr);

@@ -137,38 +137,33 @@ MethodChoice chooseMethod(Method requested, const FrameSetup& s, bool lightReach
     return c;
 }
 
-MethodChoice chooseFrameMethod(Method requested, ValidatedFrame& v, const FrameDescription& frame) {
+std::vector<MethodChoice> chooseLightMethods(Method frameMethod, ValidatedFrame& v,
+                                             const FrameDescription& frame) {
     const size_t n = v.lights.size();
-    MethodChoice c;
-    if (n == 1) {
+    const std::vector<LightInput> inputs = lightInputs(frame);
+    std::vector<MethodChoice> choices(n);
+    bool occluders = false;
+    for (size_t i = 0; i < n; ++i) {
+        // A light's own method overrides the frame's; its Auto follows the frame's.
+        const Method requested =
+            v.list && inputs[i].method != Method::Auto ? inputs[i].method : frameMethod;
         try {
-            c = chooseMethod(requested, v.lights[0], v.touchesView[0]);
+            choices[i] = chooseMethod(requested, v.lights[i], v.touchesView[i]);
         } catch (const InvalidInput& e) {
             if (!v.list) throw;
-            throw aboutLight(e, 0);
+            throw aboutLight(e, i);
         }
-    } else {
-        const bool automatic = requested == Method::Auto;
-        c = automatic ? sampled(std::to_string(n) + " lights: epipolar sampling per shadowed light")
-                      : pick(requested, {});
-        const ls::MethodUnit* unit = methodUnit(c.method);
-        if (!unit) refuse("method is not a Method value");
-        if (!automatic && !unit->caps().severalLights)
-            refuse(std::string("method ") + unit->name() +
-                   " renders one light per frame so far; lights holds " + std::to_string(n) +
-                   " (use epipolar, brute-force or auto, or one light)");
-        for (size_t i = 0; i < n; ++i)
-            if (const std::string r = unit->refusal(v.lights[i]); !r.empty())
-                throw aboutLight(InvalidInput(r), i);
+        occluders = occluders || (v.touchesView[i] && choices[i].unit().caps().readsOccluders);
     }
-    // Checked, and converted, only for the methods that read them: the others ignore them, as
+    // Checked, and converted, only when a light's method reads them: the others ignore them, as
     // the header says, and a scene of 100,000 parts must not stop them.
-    if (c.unit().caps().readsOccluders) {
-        const std::vector<ls::beam::Occluder> occluders = beamOccluders(frame.occluders);
+    if (occluders) {
+        const std::vector<ls::beam::Occluder> converted = beamOccluders(frame.occluders);
         for (size_t i = 0; i < n; ++i)
-            if (v.touchesView[i]) v.lights[i].beamOccluders = occluders;
+            if (v.touchesView[i] && choices[i].unit().caps().readsOccluders)
+                v.lights[i].beamOccluders = converted;
     }
-    return c;
+    return choices;
 }
 
 }  // namespace lightscatter::detail

@@ -30,10 +30,10 @@ struct MethodChoice {
 
 // Throws InvalidInput naming the method and the rule when it cannot honour the frame.
 MethodChoice chooseMethod(Method requested, const FrameSetup& setup, bool lightReachesView);
-// The frame's method: one light's as above; with several lights the same method for every light
-// (Auto: epipolar), refused when the method builds one chain only or refuses a light (naming
-// lights[i]). Converts the occluders into every light's setup when the method reads them.
-MethodChoice chooseFrameMethod(Method requested, ValidatedFrame& frame,
-                               const FrameDescription& description);
+// Each light's method: LightInput::method where it is not Auto, else the frame's `frameMethod`
+// (Auto choosing for each light on its own). A refusal names lights[i] in a list. Converts the
+// occluders into the setup of each light whose method reads them.
+std::vector<MethodChoice> chooseLightMethods(Method frameMethod, ValidatedFrame& frame,
+                                             const FrameDescription& description);
 
 }  // namespace lightscatter::detail

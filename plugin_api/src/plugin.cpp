@@ -99,6 +99,7 @@ struct RecordedFrame {
     uint64_t frame = 0;
     std::shared_ptr<Running> graph;  // the graph it was recorded with
     std::string method, reason, notice;
+    std::vector<FrameReport::Light> lights;
     std::vector<std::string> passNames;
     std::vector<std::string> setupPasses;
     std::vector<PassTime> cpuWork;
@@ -121,7 +122,7 @@ struct CachedGraph {
 // A prefilter for the cache: the configuration's frame-wide sizes and each light's kind. Equal
 // configurations have equal hashes; the cache compares configurations themselves after it.
 size_t configHash(const GraphConfig& c) {
-    size_t h = std::hash<const void*>()(c.method);
+    size_t h = 0;
     auto mix = [&h](uint64_t v) {
         h ^= std::hash<uint64_t>()(v) + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
     };
@@ -131,6 +132,7 @@ size_t configHash(const GraphConfig& c) {
     mix(c.depth.format);
     mix(c.lights.size());
     for (const detail::LightGraphConfig& l : c.lights) {
+        mix(reinterpret_cast<uintptr_t>(l.method));
         mix(static_cast<uint64_t>(l.chain.light));
         mix(l.chain.shadowed);
         mix(l.chain.shadowMapSize);
@@ -163,15 +165,15 @@ struct Plugin::Impl {
         retired.collectAll();
     }
 
-    // Everything that can refuse a frame, before anything is built: the checked frame and its
-    // method.
+    // Everything that can refuse a frame, before anything is built: the checked frame and each
+    // light's method.
     struct Chosen {
         detail::ValidatedFrame frame;
-        detail::MethodChoice choice;
+        std::vector<detail::MethodChoice> choices;  // per light
     };
     static Chosen choose(const FrameDescription& frame) {
         Chosen c{detail::validateFrame(frame)};
-        c.choice = detail::chooseFrameMethod(frame.method, c.frame, frame);
+        c.choices = detail::chooseLightMethods(frame.method, c.frame, frame);
         return c;
     }
 
@@ -304,7 +306,7 @@ struct Plugin::Impl {
         rg::FrameData data;
         std::vector<std::string> setupPasses;
         std::vector<PassTime> cpuWork;
-        detail::MethodChoice choice;
+        std::vector<detail::MethodChoice> choices;  // per light
         bool graphCompiled = false;
         VkExtent2D screen{0, 0};  // the frame's (within the graph's, with maxRenderSize)
     };
@@ -318,10 +320,11 @@ struct Plugin::Impl {
                                std::to_string(screen.height) + " is larger than maxRenderSize " +
                                std::to_string(maxRenderSize.width) + "x" +
                                std::to_string(maxRenderSize.height) + " (PluginCreateInfo)");
-        const ls::MethodUnit& method = chosen.choice.unit();
         const size_t n = v.lights.size();
         Prepared p;
-        p.choice = chosen.choice;
+        p.choices = chosen.choices;
+        std::vector<const ls::MethodUnit*> methods(n);
+        for (size_t i = 0; i < n; ++i) methods[i] = &chosen.choices[i].unit();
         p.screen = screen;
         p.values.resize(n);
         if (lightTables.size() < n) lightTables.resize(n);
@@ -332,6 +335,7 @@ struct Plugin::Impl {
         std::vector<const ls::LightData*> data(n, nullptr);
         for (size_t i = 0; i < n; ++i) {
             const detail::FrameSetup& s = v.lights[i];
+            const ls::MethodUnit& method = *methods[i];
             p.values[i].constants = frameConstants(s);
             if (!v.touchesView[i]) continue;  // no chain: nothing to prepare
             if (dataMethod[i] != &method) {
@@ -360,7 +364,7 @@ struct Plugin::Impl {
         options.poisonTransients = frame.debug.poisonTransients || poisonFromEnvironment();
         options.countSteps = frame.debug.countSteps;
         options.maxScreen = maxRenderSize;
-        const GraphConfig c = detail::graphConfig(v, method, detail::frameImports(frame), options,
+        const GraphConfig c = detail::graphConfig(v, methods, detail::frameImports(frame), options,
                                                   data, lastConfig ? &*lastConfig : nullptr);
         if (c.ownNoise) {
             if (!tilingNoise) tilingNoise = std::make_unique<ls::TilingNoise>(device);
@@ -437,12 +441,7 @@ struct Plugin::Impl {
         f.countedSteps = fg.stepCounts.valid();
         f.stepSlices = c.stepCountSlices;
         f.cpuWork = p.cpuWork;
-        const bool anyChain =
-            std::any_of(c.lights.begin(), c.lights.end(),
-                        [](const detail::LightGraphConfig& l) { return l.touchesView; });
-        f.method = anyChain ? methodName(p.choice.method) : "none";
-        f.reason = (p.choice.reason.empty() ? fg.summary : p.choice.reason) + frameNotes(p);
-        f.notice = p.choice.notice;
+        describeMethods(f, p);
         frames.push_back(std::move(f));
         while (frames.size() > kTimedFrames) frames.pop_front();
         return lastFrame;
@@ -468,6 +467,48 @@ struct Plugin::Impl {
         return lastExecutor->transientScope();
     }
 
+    // The report's methods: each light's (FrameReport::lights), and the frame's: the method of
+    // every light with a chain, each named once in the lights' order ("none" without one). With one
+    // method for every light, the reason is Auto's for the first light that has a chain, or the
+    // frame's summary; with several, the summary, which names each light's method.
+    void describeMethods(RecordedFrame& f, const Prepared& p) const {
+        const GraphConfig& c = p.graph->config;
+        const FrameGraph& fg = *p.graph->built;
+        std::vector<std::string> names;
+        const detail::MethodChoice* first = nullptr;
+        for (size_t i = 0; i < c.lights.size(); ++i) {
+            const detail::MethodChoice& choice = p.choices[i];
+            FrameReport::Light l;
+            l.method = c.lights[i].touchesView ? methodName(choice.method) : "none";
+            l.reason = choice.reason.empty() ? (c.lights[i].touchesView
+                                                    ? c.lights[i].method->summary(c.lights[i].chain)
+                                                    : "the light reaches no view ray (or nothing "
+                                                      "scatters): no chain")
+                                             : choice.reason;
+            l.notice = choice.notice;
+            f.lights.push_back(l);
+            if (!c.lights[i].touchesView) continue;
+            if (!first) first = &choice;
+            if (std::find(names.begin(), names.end(), l.method) == names.end())
+                names.push_back(l.method);
+        }
+        if (names.empty()) {
+            f.method = "none";
+            f.reason = p.choices[0].reason.empty() ? fg.summary : p.choices[0].reason;
+            f.notice = p.choices[0].notice;
+        } else {
+            for (size_t k = 0; k < names.size(); ++k) f.method += (k ? "+" : "") + names[k];
+            f.reason = names.size() == 1 && c.lights.size() == 1 && !first->reason.empty()
+                           ? first->reason
+                           : fg.summary;
+            // The notices of the lights' methods, each once.
+            for (const FrameReport::Light& l : f.lights)
+                if (!l.notice.empty() && f.notice.find(l.notice) == std::string::npos)
+                    f.notice += (f.notice.empty() ? "" : "; ") + l.notice;
+        }
+        f.reason += frameNotes(p);
+    }
+
     // What changed this frame without a rebuild (epipolar's cube faces reaching the view), per
     // light that has a chain.
     std::string frameNotes(const Prepared& p) const {
@@ -475,7 +516,7 @@ struct Plugin::Impl {
         std::string notes;
         for (size_t i = 0; i < c.lights.size(); ++i) {
             if (!c.lights[i].touchesView) continue;
-            const std::string note = c.method->frameNote(p.values[i], c.lights[i].chain);
+            const std::string note = c.lights[i].method->frameNote(p.values[i], c.lights[i].chain);
             if (note.empty()) continue;
             notes +=
                 c.lights.size() == 1 ? "; " + note : "; light " + std::to_string(i) + "'s " + note;
@@ -511,6 +552,7 @@ struct Plugin::Impl {
         r.method = f->method;
         r.reason = f->reason;
         r.notice = f->notice;
+        r.lights = f->lights;
         r.setupPasses = f->setupPasses;
         r.graphCompiled = f->graphCompiled;
         r.cpuWork = f->cpuWork;

@@ -143,10 +143,18 @@ TEST(Budget, LightsAliasEachOther) {
               one.peakBytes);
     EXPECT_THROW(lightscatter::budget(Profile::Balanced, 256, 256, 256, std::vector<LightType>{}),
                  lightscatter::InvalidInput);
-    EXPECT_THROW(lightscatter::budget(Profile::Balanced, 256, 256, 256,
-                                      std::vector<LightType>{LightType::Spot, LightType::Spot},
-                                      nullptr, lightscatter::Method::Planes),
-                 lightscatter::InvalidInput);
+    // A light its method refuses is refused, naming it.
+    try {
+        lightscatter::budget(
+            Profile::Balanced, 256, 256, 256,
+            {lightscatter::BudgetLight{LightType::Spot, true},
+             {LightType::Directional, true, lightscatter::Method::BeamTreeAnalytic}});
+        ADD_FAILURE() << "beam-tree-analytic budgeted a directional light";
+    } catch (const lightscatter::InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("budget lights[1]: method beam-tree-analytic"),
+                  std::string::npos)
+            << e.what();
+    }
 }
 
 // A point light's cube map: epipolar marches it face by face over one set of samples, and each

@@ -63,10 +63,13 @@ class LightsGpu : public PluginGpuTest {
         return frame.inscatter();
     }
 
-    // Two spots' summed Lin against the sum of their single-light renders.
-    void checkSum(Method method) {
-        TestFrame a(dev(), sceneWith(spotOverGrille()));
-        TestFrame b(dev(), sceneWith(secondSpot()));
+    // Two spots' summed Lin against the sum of their single-light renders (unshadowed for a method
+    // that casts no shadows).
+    void checkSum(Method method, bool shadowed = true) {
+        FrameSpec specA = sceneWith(spotOverGrille()), specB = sceneWith(secondSpot());
+        specA.shadowed = specB.shadowed = shadowed;
+        TestFrame a(dev(), specA);
+        TestFrame b(dev(), specB);
         const auto settings = smallSettings(a.spec().screen);
         const auto da = a.description(method, lightscatter::Profile::Custom, settings);
         const auto db = b.description(method, lightscatter::Profile::Custom, settings);
@@ -97,6 +100,58 @@ TEST_F(LightsGpu, EpipolarTwoSpotsSumToTheSingleRenders) {
 }
 TEST_F(LightsGpu, BruteForceTwoSpotsSumToTheSingleRenders) {
     checkSum(Method::BruteForce);
+}
+// Every method takes a list of lights, one chain per light (issue #25).
+TEST_F(LightsGpu, ConeMarchTwoSpotsSumToTheSingleRenders) {
+    checkSum(Method::ConeMarch);
+}
+TEST_F(LightsGpu, PlanesTwoSpotsSumToTheSingleRenders) {
+    checkSum(Method::Planes);
+}
+TEST_F(LightsGpu, BeamTreeAnalyticTwoSpotsSumToTheSingleRenders) {
+    checkSum(Method::BeamTreeAnalytic);
+}
+TEST_F(LightsGpu, BeamTreeSamplingTwoSpotsSumToTheSingleRenders) {
+    checkSum(Method::BeamTreeSampling);
+}
+TEST_F(LightsGpu, AnalyticTwoUnshadowedSpotsSumToTheSingleRenders) {
+    checkSum(Method::Analytic, false);
+}
+
+// A light's own method overrides the frame's: the first spot by epipolar, the second by brute
+// force in one frame equals the sum of each rendered alone with its method, and the report names
+// both, per light and for the frame.
+TEST_F(LightsGpu, EachLightTakesItsOwnMethod) {
+    TestFrame a(dev(), sceneWith(spotOverGrille()));
+    TestFrame b(dev(), sceneWith(secondSpot()));
+    const auto settings = smallSettings(a.spec().screen);
+    const auto da = a.description(Method::Epipolar, lightscatter::Profile::Custom, settings);
+    const auto db = b.description(Method::BruteForce, lightscatter::Profile::Custom, settings);
+    const auto linA = linOf(a, da);
+    const auto linB = linOf(b, db);
+    auto second = input(db);
+    second.method = Method::BruteForce;
+    a.resetColor();
+    const auto report = plugin().render(withLights(da, {input(da), second}));
+    const auto sum = a.inscatter();
+    ASSERT_EQ(report.lights.size(), 2u);
+    EXPECT_EQ(report.lights[0].method, "epipolar");
+    EXPECT_EQ(report.lights[1].method, "brute-force");
+    EXPECT_EQ(report.method, "epipolar+brute-force");
+    double worst = 0;
+    for (size_t i = 0; i < sum.size(); ++i)
+        if (i % 4 != 3)
+            worst = std::max(worst, std::fabs(static_cast<double>(sum[i]) - linA[i] - linB[i]));
+    const double peak = peakOf(linA) + peakOf(linB);
+    std::printf("epipolar + brute-force: max |diff| %.3g (peak %.3g)\n", worst, peak);
+    EXPECT_LE(worst, 1e-6 * peak);
+    // A wrong method for the second light (epipolar's Lin in its place) is told apart.
+    a.resetColor();
+    const auto both = linOf(a, withLights(da, {input(da), input(db)}));
+    double apart = 0;
+    for (size_t i = 0; i < sum.size(); ++i)
+        if (i % 4 != 3) apart = std::max(apart, std::fabs(static_cast<double>(both[i]) - sum[i]));
+    EXPECT_GT(apart, 1e-4 * peak);
 }
 
 // Each light's chain runs on its own settings: the second spot's coarse sampling (fewer slices and
@@ -192,11 +247,16 @@ TEST_F(LightsGpu, RefusalsNameTheFields) {
     ownBad.lights[1].settings->slices = 6;
     const std::string o = refusal(ownBad);
     EXPECT_NE(o.find("lights[1].settings.slices"), std::string::npos) << o;
-    // A method without chains for several lights refuses them, naming itself.
-    auto planes = withLights(da, {input(da), input(da)});
-    planes.method = Method::Planes;
-    const std::string s = refusal(planes);
-    EXPECT_NE(s.find("method planes"), std::string::npos) << s;
+    // A method that cannot honour a light of the list refuses it, naming the light and itself.
+    auto analytic = withLights(da, {input(da), input(da)});
+    analytic.method = Method::Analytic;
+    const std::string s = refusal(analytic);
+    EXPECT_NE(s.find("lights[0]: method analytic"), std::string::npos) << s;
+    // ... and so does a light's own method, overriding the frame's.
+    auto own = withLights(da, {input(da), input(da)});
+    own.lights[1].method = Method::Analytic;
+    const std::string o1 = refusal(own);
+    EXPECT_NE(o1.find("lights[1]: method analytic"), std::string::npos) << o1;
     // One light in the list is the single light, whatever the method.
     auto single = withLights(da, {input(da)});
     single.method = Method::ConeMarch;

@@ -449,9 +449,13 @@ struct LightInput {
     // This light's own settings (for instance profileSettings(Profile::HighPerformance) for a small
     // spot beside a high-quality sun): its chain uses them as if the frame's profile were Custom
     // with these, checked by the same rules (errors name lights[i].settings.field). Without them
-    // the light takes the frame's profile and custom. The method stays the frame's, and budget()
-    // assumes one profile for every light.
+    // the light takes the frame's profile and custom. budget() assumes one profile for every light.
     std::optional<Settings> settings;
+    // This light's method. Auto follows FrameDescription::method: a frame's Auto chooses for each
+    // light on its own (FrameReport::lights says what and why); any other value overrides the
+    // frame's method for this light alone, and is refused, naming lights[i], where it cannot honour
+    // the light.
+    Method method = Method::Auto;
 };
 
 struct FrameDescription {
@@ -554,6 +558,14 @@ struct FrameReport {
     // With DebugOptions::countSteps on an epipolar frame, once `timed` (the frame is done): what
     // its ray march did. Empty otherwise.
     std::optional<StepCounts> steps;
+    // One entry per light, in the frame's order: the method its chain ran ("none" for a light that
+    // reaches no view ray), why (with Auto, why that method), and the notice of its method.
+    struct Light {
+        std::string method;
+        std::string reason;
+        std::string notice;
+    };
+    std::vector<Light> lights;
 };
 
 // Memory of one resource of the method, as the budget reports it.
@@ -581,7 +593,8 @@ struct Budget {
     uint64_t peakBytes = 0;   // with transient aliasing (plus persistent resources)
     bool estimated = true;    // sizes estimated without a device
     std::string depthStencilFormat;
-    std::optional<SeedFigure> seed;  // the seed's published figure for this profile
+    std::optional<SeedFigure> seed;         // the seed's published figure for this profile
+    std::vector<std::string> lightMethods;  // the method of each light, in the list's order
 };
 
 // A method's memory for a profile, screen and shadow-map size; needs no GPU. Epipolar, planes and
@@ -603,6 +616,22 @@ LIGHTSCATTER_API Budget budget(Profile profile, uint32_t screenWidth, uint32_t s
 LIGHTSCATTER_API Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
                                uint32_t shadowMapSize, const std::vector<LightType>& lights,
                                const Settings* custom = nullptr, Method method = Method::Epipolar);
+
+// One light of a budgeted set: its type, whether it has a shadow map (shadowMapSize; a point
+// light's a cube of six faces), and its method. Auto picks as a frame's Auto does for a light that
+// covers the screen in a medium that needs the point-light table: epipolar for a shadowed light
+// (brute force on a screen too small for it), the closed form per pixel without a shadow map.
+struct BudgetLight {
+    LightType type = LightType::Spot;
+    bool shadowed = true;
+    Method method = Method::Auto;
+};
+
+// The memory of a frame of these lights, each with its own method (any method; a light its method
+// refuses is refused naming lights[i]). Budget::lightMethods says the method each light got.
+LIGHTSCATTER_API Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
+                               uint32_t shadowMapSize, const std::vector<BudgetLight>& lights,
+                               const Settings* custom = nullptr);
 
 // The device extensions the plugin needs; add them to VkDeviceCreateInfo::ppEnabledExtensionNames.
 LIGHTSCATTER_API std::vector<const char*> requiredDeviceExtensions();
