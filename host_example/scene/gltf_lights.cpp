@@ -5,11 +5,13 @@
 // before it runs: node references, cycles, transforms, and each light's fields.
 #include "scene/gltf_lights.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <initializer_list>
 #include <nlohmann/json.hpp>
 #include <numbers>
 
