@@ -1,5 +1,6 @@
 // SCENE.json: read with nlohmann-json and checked field by field, so that a typo or an out-of-range
 // value stops the program with the field's JSON path instead of rendering something else.
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -10,6 +11,7 @@
 
 #include <lightscatter/lightscatter.h>
 #include "activity.h"
+#include "scene/gltf_lights.h"
 #include "scene/input_file.h"
 #include "scene/json_input.h"
 #include "scene/scene.h"
@@ -50,8 +52,8 @@ class SceneReader {
         const json root = parse();
         if (!root.is_object()) fail("the top level must be a JSON object");
         checkKeys(root, "",
-                  {"gltf", "models", "camera", "light", "lights", "medium", "sky", "ambient",
-                   "exposure"});
+                  {"gltf", "models", "camera", "light", "lights", "lightsFromGltf",
+                   "gltfLightScale", "gltfLightShadows", "medium", "sky", "ambient", "exposure"});
         if (member(root, "light") && member(root, "lights"))
             fail(
                 "\"light\" and \"lights\" are both given: a scene has one light (\"light\") or a "
@@ -62,6 +64,7 @@ class SceneReader {
         if (const json* v = member(root, "camera")) readCamera(*v, scene.camera);
         if (const json* v = member(root, "light")) readLight(*v, scene.light, "light");
         if (const json* v = member(root, "lights")) readLights(*v, scene);
+        readGltfLightKeys(root, scene);
         if (const json* v = member(root, "medium")) readMedium(*v, scene.medium);
         if (const json* v = member(root, "sky")) {
             checkKeys(*v, "sky", {"color"});
@@ -370,6 +373,80 @@ class SceneReader {
                 scene.light = light;
             else
                 scene.moreLights.push_back(light);
+        }
+    }
+
+    // "lightsFromGltf": the lights of the "gltf" file's KHR_lights_punctual nodes instead of
+    // "light" or "lights"; "gltfLightScale" and "gltfLightShadows" only with it.
+    void readGltfLightKeys(const json& root, SceneDesc& scene) const {
+        const json* from = member(root, "lightsFromGltf");
+        const bool fromGltf = from && boolean(*from, "lightsFromGltf");
+        if (!fromGltf) {
+            for (const char* key : {"gltfLightScale", "gltfLightShadows"})
+                if (member(root, key))
+                    fail(std::string(key) +
+                         " is read only with \"lightsFromGltf\": true (the scene's lights come "
+                         "from SCENE.json)");
+            return;
+        }
+        for (const char* key : {"light", "lights"})
+            if (member(root, key))
+                fail(std::string("\"lightsFromGltf\" and \"") + key +
+                     "\" are both given: a scene's lights come from its glTF file or from "
+                     "SCENE.json, never both");
+        const json* gltf = member(root, "gltf");
+        if (!gltf)
+            fail(
+                "lightsFromGltf needs \"gltf\", the file whose KHR_lights_punctual lights it "
+                "reads");
+        double scale = 1.0;
+        if (const json* v = member(root, "gltfLightScale")) scale = positive(*v, "gltfLightScale");
+        std::vector<GltfLight> lights;
+        try {
+            lights = readGltfLights(scene.models.front().path, scale);
+        } catch (const SceneError& e) {
+            fail(std::string("lightsFromGltf: ") + e.what());
+        }
+        if (const json* v = member(root, "gltfLightShadows"))
+            readGltfShadows(*v, echoText(string(*gltf, "gltf"), kMaxPathChars), lights);
+        scene.lightList = true;
+        scene.light = lights.front().desc;
+        for (size_t i = 1; i < lights.size(); ++i) scene.moreLights.push_back(lights[i].desc);
+    }
+
+    // Shadow-map sizes by a light's KHR name or its node's name; a name that matches no light
+    // is refused (a misspelt one would silently leave the default), and so is a light that two
+    // entries match.
+    void readGltfShadows(const json& v, const std::string& gltf,
+                         std::vector<GltfLight>& lights) const {
+        if (!v.is_object())
+            fail("gltfLightShadows must be an object of shadow-map sizes by light or node name");
+        std::vector<std::string> matchedBy(lights.size());
+        for (const auto& item : v.items()) {
+            const std::string name = "gltfLightShadows." + echoText(item.key());
+            const uint32_t size = shadowMapSize(item.value(), name);
+            bool found = false;
+            for (size_t i = 0; i < lights.size(); ++i) {
+                GltfLight& light = lights[i];
+                if (light.lightName != item.key() && light.nodeName != item.key()) continue;
+                if (!matchedBy[i].empty())
+                    fail(name + ": " + light.label() + " is also gltfLightShadows." +
+                         echoText(matchedBy[i]) + ": give one size per light");
+                matchedBy[i] = item.key();
+                light.desc.shadowMapSize = size;
+                found = true;
+            }
+            if (!found) {
+                // A few, so that a file of many lights with long names stays a short line.
+                constexpr size_t kListed = 8;
+                std::string names;
+                for (size_t i = 0; i < std::min(lights.size(), kListed); ++i)
+                    names += (names.empty() ? "" : "; ") + lights[i].label();
+                if (lights.size() > kListed)
+                    names += "; and " + std::to_string(lights.size() - kListed) + " more";
+                fail(name + ": no KHR_lights_punctual light or node of " + gltf + " is named '" +
+                     echoText(item.key()) + "' (its lights: " + names + ")");
+            }
         }
     }
 

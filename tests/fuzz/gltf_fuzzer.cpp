@@ -3,8 +3,10 @@
 // then the loader's own checks and flattening run over what it parsed. URIs resolve against a
 // folder that links the shipped scenes' files, so the seeds' buffers and images load. An input is
 // loaded or refused with one SceneError line, and every warning is one line; any other outcome is a
-// finding (see scene_fuzzer.cpp).
+// finding (see scene_fuzzer.cpp). The same bytes then go through the KHR_lights_punctual reader of
+// "lightsFromGltf" (a file of its own: it reads the glTF's JSON by path).
 #include "fuzz_input.h"
+#include "scene/gltf_lights.h"
 #include "scene/scene.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -17,5 +19,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         fuzz::checkRefusal(e.what(), path);
     }
     for (const std::string& warning : mesh.warnings) fuzz::checkRefusal(warning, path);
+    const std::string& lights = fuzz::writeInput(data, size, "lights.gltf");
+    try {
+        (void)host::readGltfLights(lights, 1.0);
+    } catch (const host::SceneError& e) {
+        fuzz::checkRefusal(e.what(), lights);
+    }
     return 0;
 }

@@ -1,7 +1,8 @@
 // libFuzzer target: the scene reader (SCENE.json) on any bytes. An input is read or refused with
 // one SceneError line; a crash, a sanitizer report, another exception, a hang (-timeout) or a huge
 // allocation (-rss_limit_mb, -malloc_limit_mb) is a finding. The glTF files a scene names are not
-// loaded here (gltf_fuzzer does that).
+// loaded here (gltf_fuzzer does that), except for their KHR_lights_punctual lights with
+// "lightsFromGltf".
 #include "fuzz_input.h"
 #include "scene/scene.h"
 

@@ -350,8 +350,8 @@ TEST_F(SceneFileTest, ANearPlaneTheDepthBufferCannotResolveIsRefused) {
 
 TEST_F(SceneFileTest, UnknownKeysAreRefusedWithTheKnownOnes) {
     EXPECT_EQ(errorFor(R"({"camra": {}})"),
-              "unknown key 'camra' (known keys: gltf, models, camera, light, lights, medium, sky, "
-              "ambient, "
+              "unknown key 'camra' (known keys: gltf, models, camera, light, lights, "
+              "lightsFromGltf, gltfLightScale, gltfLightShadows, medium, sky, ambient, "
               "exposure)");
     EXPECT_EQ(
         errorFor(R"({"camera": {"fov": 60}})"),

@@ -1,8 +1,8 @@
 """What the scene generators share: one unit cube in a glTF buffer, instanced by nodes (a floor and
 the scene's boxes or bars), and the files of a scene (SCENE.json, .gltf, .bin) written the same way.
 
-make_occluder_scenes.py, make_point_cage.py and make_lights_scenes.py beside it import it;
-standard library only.
+make_occluder_scenes.py, make_point_cage.py, make_lights_scenes.py and make_gltf_lights_scene.py
+beside it import it; standard library only.
 """
 import json
 import os
