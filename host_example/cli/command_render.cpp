@@ -47,6 +47,11 @@ nlohmann::json timingsJson(const rg::Device& device, const SceneOptions& o, VkEx
     j["methodRan"] = f.plugin.method;  // with auto, the method it picked
     j["reason"] = f.plugin.reason;
     j["notice"] = f.plugin.notice;
+    // Each light's method and why (FrameReport::lights).
+    nlohmann::json lights = nlohmann::json::array();
+    for (const auto& l : f.plugin.lights)
+        lights.push_back({{"method", l.method}, {"reason", l.reason}, {"notice", l.notice}});
+    j["lights"] = lights;
     j["profile"] = lightscatter::profileName(o.render.profile);
     j["size"] = {size.width, size.height};
     j["frames"] = frames;
@@ -141,6 +146,15 @@ int runRender(Args& args) {
                 frame.plugin.passNames.empty() ? "-" : "rendered", device.name().c_str(),
                 device.isCpu() ? " (CPU timings)" : "", frame.plugin.totalMilliseconds,
                 frame.engine.totalMilliseconds);
+    // A frame of several lights: each light's method, and with auto why.
+    if (frame.plugin.lights.size() > 1)
+        for (size_t i = 0; i < frame.plugin.lights.size(); ++i) {
+            const auto& l = frame.plugin.lights[i];
+            std::printf(
+                "  lights[%zu]: %s%s%s\n", i, l.method.c_str(),
+                o.render.method == lightscatter::Method::Auto ? " (" : "",
+                o.render.method == lightscatter::Method::Auto ? (l.reason + ")").c_str() : "");
+        }
     if (countSteps) {
         if (frame.plugin.steps) {
             const nlohmann::json j = stepsJson(*frame.plugin.steps);

@@ -11,6 +11,7 @@ rg::ImageRef addAnalytic(rg::RenderGraph& graph, const AnalyticInputs& in) {
         {.name = "analytic in-scattering (seed 001)",
          .constants = in.frame.constants,
          .depth = in.frame.depth,
+         .values = in.frame.values,
          .rows = {},
          .shader = [](const ScatterSpec&) { return rg::spirv(ls_spirv::analytic_frag); },
          .specialize = {}});

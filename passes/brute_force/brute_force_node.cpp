@@ -9,8 +9,14 @@ rg::ImageRef addBruteForce(rg::RenderGraph& graph, const BruteForceInputs& in) {
                                          rg::ImageDesc::screen(VK_FORMAT_R16G16B16A16_SFLOAT));
     auto pass = graph.addPass("brute-force ray march", rg::PassType::Graphics);
     const rg::BindingTable table = declarePixelMarch(pass, in.frame, in.light);
-    lin = pass.colorAttachment(lin, rg::LoadOp::DontCare);
-    pass.execute([shared = in.frame.shared, spec = in.frame.spec, table](rg::PassContext& ctx) {
+    // Cleared, and marched only within the light's screen rectangle: a small spot costs its
+    // pixels, not the screen's.
+    lin = pass.colorAttachment(lin, rg::LoadOp::Clear);
+    pass.execute([shared = in.frame.shared, spec = in.frame.spec, values = in.frame.values,
+                  table](rg::PassContext& ctx) {
+        const VkRect2D rect = ctx.data(values).screenRect;
+        if (rect.extent.width == 0 || rect.extent.height == 0) return;
+        ctx.vk().CmdSetScissor(ctx.cmd(), 0, 1, &rect);
         drawPixelMarch(ctx, shared, spec, table, {.pipeline = "brute-force ray march"});
     });
     return lin;

@@ -24,6 +24,7 @@ rg::ImageRef addConeMarch(rg::RenderGraph& graph, const ConeMarchInputs& in,
                                      : "naive ray march (seed 003's baseline)",
          .constants = in.frame.constants,
          .depth = in.frame.depth,
+         .values = in.frame.values,
          .rows =
              [light = in.light, shared](rg::BindingTable& table) {
                  const auto& s = samplersOf(shared);

@@ -3,6 +3,8 @@
 // CPU work, and whether its point-light table is filled this frame. The plugin gives it to each
 // record() as host data (rg::HostDataRef<LightFrame>, declared by the frame graph), so a graph kept
 // across frames, or frames recorded ahead, never read values someone changed since.
+#include <vulkan/vulkan.h>
+
 #include <array>
 
 #include "frame_constants.h"
@@ -25,7 +27,10 @@ struct LightFrame {
     // in the graph (a face moving into view rebuilds nothing) and they record no work.
     std::array<FrameConstants, 6> faces{};
     const LightData* data = nullptr;  // the method's prepare() of this frame (null: none)
-    bool fillTable = false;           // the light's point-light table is (re)filled this frame
+    // The pixels whose rays may cross the light's volume this frame (lightScreenRect): the
+    // per-pixel marches draw only there.
+    VkRect2D screenRect{{0, 0}, {0, 0}};
+    bool fillTable = false;  // the light's point-light table is (re)filled this frame
 
     // face < 0: the light's own constants.
     const FrameConstants& of(int face) const { return face < 0 ? constants : faces[face]; }

@@ -24,6 +24,9 @@ struct LightSetup {
     ConeMarchOptions cone;
     bool shadowSampling = true;  // false: seed 003's low-end mode
     VkExtent2D screen{0, 0};
+    // The pixels whose rays may cross the light's volume (lightScreenRect); the whole screen
+    // where it is not known (the budget).
+    VkRect2D screenRect{{0, 0}, {0, 0}};
     bool shadowed = false;
     bool lightColor = false;
     bool inscatterOut = false;

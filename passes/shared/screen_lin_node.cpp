@@ -13,8 +13,13 @@ rg::ImageRef addScreenLinNode(rg::RenderGraph& graph, const Shared& shared, cons
     table.sampled(LS_BINDING_DEPTH, node.depth, samplersOf(shared).nearest(),
                   VK_IMAGE_ASPECT_DEPTH_BIT);
     if (node.rows) node.rows(table);
-    lin = pass.colorAttachment(lin, rg::LoadOp::DontCare);
+    // Cleared, and drawn only within the light's screen rectangle: a light covering a corner of
+    // the screen costs that corner.
+    lin = pass.colorAttachment(lin, rg::LoadOp::Clear);
     pass.execute([shared, spec, table, node = std::move(node)](rg::PassContext& ctx) {
+        const VkRect2D rect = ctx.data(node.values).screenRect;
+        if (rect.extent.width == 0 || rect.extent.height == 0) return;
+        ctx.vk().CmdSetScissor(ctx.cmd(), 0, 1, &rect);
         auto desc = fullscreenPipeline(node.shader(spec), ctx, table.layout());
         desc.specialization = spec.constants();
         if (node.specialize) node.specialize(desc.specialization);

@@ -5,6 +5,7 @@
 #include <functional>
 #include <string>
 
+#include "light_frame.h"
 #include "pass_helpers.h"
 #include "shared_state.h"
 
@@ -14,6 +15,8 @@ struct ScreenLinNode {
     std::string name;  // the pass's and its pipeline's
     rg::BufferRef constants;
     rg::ImageRef depth;
+    // The light's values: the node draws only within their screenRect (the rest cleared to 0).
+    rg::HostDataRef<LightFrame> values;
     // The node's rows after the frame constants and the depth (the light's images).
     std::function<void(rg::BindingTable&)> rows;
     // The shader variant, chosen when the pass is recorded from the light's spec.

@@ -17,6 +17,7 @@ rg::ImageRef addUnshadowed(rg::RenderGraph& graph, const UnshadowedInputs& in) {
         {.name = "unshadowed in-scattering",
          .constants = in.frame.constants,
          .depth = in.frame.depth,
+         .values = in.frame.values,
          // The table; an unshadowed frame has nothing else.
          .rows =
              [in](rg::BindingTable& table) { addMarchInputs(table, in.frame.shared, in.light); },

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -101,6 +102,71 @@ bool cubeFaceTouchesView(const CameraParams& camera, const LightParams& light,
         if (allOutside) return false;
     }
     return true;
+}
+
+VkRect2D lightScreenRect(const CameraParams& camera, const LightParams& light,
+                         const MediumParams& medium, VkExtent2D screen) {
+    const VkRect2D whole{{0, 0}, screen};
+    if (light.kind == LightType::Directional) return whole;
+    // How far from the light a point can lie and still be on a view ray: its range, and the
+    // view's reach (as lightTouchesView bounds it) beyond the light's distance from the camera.
+    const glm::vec3 cameraPos = glm::vec3(glm::inverse(camera.view)[3]);
+    const float tanX = 1.0f / std::fabs(camera.projection[0][0]);
+    const float tanY = 1.0f / std::fabs(camera.projection[1][1]);
+    const float farthest = (camera.infiniteFar ? medium.maxDistance : camera.farPlane) *
+                           std::sqrt(1.0f + tanX * tanX + tanY * tanY);
+    const float extent = std::min(light.range, glm::length(light.position - cameraPos) + farthest);
+    if (!(extent < 1e6f)) return whole;
+    // Corners of a convex solid holding the volume: a point light's cube around its sphere; for
+    // a spot, its apex and an octagon around the cone's circle at `extent` along the axis (every
+    // point of the cone within `extent` of the apex lies inside that truncated pyramid).
+    std::vector<glm::vec3> corners;
+    if (light.kind == LightType::Point) {
+        for (int k = 0; k < 8; ++k)
+            corners.push_back(light.position +
+                              extent * glm::vec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1));
+    } else {
+        const glm::vec3 axis = glm::normalize(light.direction);
+        const float cosA = std::clamp(light.cosOuter, 1e-6f, 1.0f);
+        const float radius = extent * std::sqrt(std::max(0.0f, 1.0f - cosA * cosA)) / cosA /
+                             std::cos(3.14159265f / 8.0f);
+        if (!(radius < 1e6f)) return whole;
+        const glm::vec3 helper =
+            std::fabs(axis.y) < 0.9f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(1.0f, 0.0f, 0.0f);
+        const glm::vec3 u = glm::normalize(glm::cross(axis, helper));
+        const glm::vec3 w = glm::cross(axis, u);
+        corners.push_back(light.position);
+        for (int k = 0; k < 8; ++k) {
+            const float a = 3.14159265f / 4.0f * static_cast<float>(k);
+            corners.push_back(light.position + extent * axis +
+                              radius * (std::cos(a) * u + std::sin(a) * w));
+        }
+    }
+    // Projected, the solid's corners bound its pixels, if all lie in front of the camera's near
+    // plane (a corner behind it: the solid wraps around the camera, or beside it; unsure).
+    const glm::mat4 viewProj = camera.projection * camera.view;
+    float x0 = 1e30f, y0 = 1e30f, x1 = -1e30f, y1 = -1e30f;
+    for (const glm::vec3& p : corners) {
+        const glm::vec4 clip = viewProj * glm::vec4(p, 1.0f);
+        if (!(clip.w > 0.5f * camera.nearPlane)) return whole;
+        const float x = (clip.x / clip.w * 0.5f + 0.5f) * static_cast<float>(screen.width);
+        const float y = (clip.y / clip.w * 0.5f + 0.5f) * static_cast<float>(screen.height);
+        x0 = std::min(x0, x);
+        x1 = std::max(x1, x);
+        y0 = std::min(y0, y);
+        y1 = std::max(y1, y);
+    }
+    // A pixel on the border, and float rounding: one more pixel each side.
+    auto clampTo = [](float v, uint32_t size) {
+        return static_cast<int32_t>(std::clamp(v, 0.0f, static_cast<float>(size)));
+    };
+    const int32_t left = clampTo(std::floor(x0) - 1.0f, screen.width);
+    const int32_t right = clampTo(std::ceil(x1) + 1.0f, screen.width);
+    const int32_t top = clampTo(std::floor(y0) - 1.0f, screen.height);
+    const int32_t bottom = clampTo(std::ceil(y1) + 1.0f, screen.height);
+    return {{left, top},
+            {static_cast<uint32_t>(std::max(0, right - left)),
+             static_cast<uint32_t>(std::max(0, bottom - top))}};
 }
 
 }  // namespace ls

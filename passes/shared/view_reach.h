@@ -1,6 +1,8 @@
 #pragma once
 // Whether a light, or one face of a point light's cube, can reach a view ray: the tests that keep
 // a light whose volume misses the view from adding any node.
+#include <vulkan/vulkan.h>
+
 #include "scattering_params.h"
 
 namespace ls {
@@ -15,5 +17,11 @@ bool lightTouchesView(const CameraParams& camera, const LightParams& light,
 // true when unsure).
 bool cubeFaceTouchesView(const CameraParams& camera, const LightParams& light,
                          const MediumParams& medium, int face);
+
+// The pixels of a `screen` whose view rays may cross the light's volume (a point light's range, a
+// spot's cone within its range, each within the view's reach): conservative, the whole screen
+// when unsure (a directional light, an unbounded volume, the camera in or beside the volume).
+VkRect2D lightScreenRect(const CameraParams& camera, const LightParams& light,
+                         const MediumParams& medium, VkExtent2D screen);
 
 }  // namespace ls

@@ -931,8 +931,10 @@ ValidatedFrame validateFrame(const FrameDescription& frame, bool withImages) {
     } else {
         v.lights.push_back(setupFrame(frame, withImages));
     }
-    for (const FrameSetup& s : v.lights)
+    for (FrameSetup& s : v.lights) {
         v.touchesView.push_back(ls::lightTouchesView(s.camera, s.light, s.medium));
+        s.screenRect = ls::lightScreenRect(s.camera, s.light, s.medium, s.screen);
+    }
     return v;
 }
 

@@ -337,6 +337,7 @@ struct Plugin::Impl {
             const detail::FrameSetup& s = v.lights[i];
             const ls::MethodUnit& method = *methods[i];
             p.values[i].constants = frameConstants(s);
+            p.values[i].screenRect = s.screenRect;
             if (!v.touchesView[i]) continue;  // no chain: nothing to prepare
             if (dataMethod[i] != &method) {
                 lightData[i] = method.makeData();

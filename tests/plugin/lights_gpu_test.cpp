@@ -206,6 +206,60 @@ TEST_F(LightsGpu, SunAndTwoSpotsInOneFrame) {
     for (float v : lin) ASSERT_TRUE(std::isfinite(v));
 }
 
+// Issue #25's frame: a shadowed sun, two shadowed spots (one small) and four unshadowed point
+// lights, auto choosing per light. The frame's Lin equals the sum of the seven single-light Lins,
+// each rendered alone with the method auto picked for that light.
+TEST_F(LightsGpu, AutoPicksPerLightAndTheFrameIsTheSumOfItsLights) {
+    TestFrame a(dev(), sceneWith(spotOverGrille()));
+    lightscatter::Light narrow = secondSpot();
+    narrow.innerConeAngleDegrees = 6.0f;
+    narrow.outerConeAngleDegrees = 9.0f;
+    narrow.range = 5.0f;
+    TestFrame b(dev(), sceneWith(narrow));
+    TestFrame sun(dev(), sceneWith(sunThroughGrille()));
+    const auto settings = smallSettings(a.spec().screen);
+    const auto da = a.description(Method::Auto, lightscatter::Profile::Custom, settings);
+    std::vector<lightscatter::LightInput> lights = {
+        input(sun.description(Method::Auto, lightscatter::Profile::Custom, settings)), input(da),
+        input(b.description(Method::Auto, lightscatter::Profile::Custom, settings))};
+    const glm::vec3 points[] = {
+        {-1.5f, 1.0f, 0.5f}, {1.5f, 1.5f, -0.5f}, {0.0f, 2.5f, 1.0f}, {2.0f, 0.8f, 1.5f}};
+    for (size_t k = 0; k < 4; ++k) {
+        lightscatter::LightInput p;
+        p.light.type = lightscatter::LightType::Point;
+        p.light.position = {points[k].x, points[k].y, points[k].z};
+        p.light.intensity = {2.0f + static_cast<float>(k), 3.0f, 4.0f - static_cast<float>(k)};
+        p.light.range = k % 2 == 0 ? 2.5f : 1e30f;
+        p.light.rangeFalloff = lightscatter::RangeFalloff::Window;
+        lights.push_back(p);
+    }
+    a.resetColor();
+    const auto report = plugin().render(withLights(da, lights));
+    const auto frame = a.inscatter();
+    ASSERT_EQ(report.lights.size(), lights.size());
+    std::vector<double> sum(frame.size(), 0.0);
+    double peak = 0;
+    for (size_t i = 0; i < lights.size(); ++i) {
+        const std::string method = report.lights[i].method;
+        std::printf("lights[%zu]: %s (%s)\n", i, method.c_str(), report.lights[i].reason.c_str());
+        ASSERT_NE(method, "none");
+        lightscatter::FrameDescription d = withLights(da, {lights[i]});
+        d.method = lightscatter::parseMethod(method).value();
+        const auto lin = linOf(a, d);
+        peak += peakOf(lin);
+        for (size_t v = 0; v < lin.size(); ++v) sum[v] += lin[v];
+    }
+    double worst = 0;
+    for (size_t v = 0; v < frame.size(); ++v)
+        if (v % 4 != 3) worst = std::max(worst, std::fabs(static_cast<double>(frame[v]) - sum[v]));
+    std::printf(
+        "7 lights, auto per light (%s): max |diff| %.3g against the sum of single renders "
+        "(peak %.3g)\n",
+        report.method.c_str(), worst, peak);
+    EXPECT_LE(worst, 1e-6 * peak);
+    EXPECT_NE(report.method.find('+'), std::string::npos) << "one method for every light";
+}
+
 TEST_F(LightsGpu, ALightThatMissesTheViewAddsNoNode) {
     TestFrame a(dev(), sceneWith(spotOverGrille()));
     const auto settings = smallSettings(a.spec().screen);
