@@ -1,6 +1,6 @@
 // lightscatter budget [--method epipolar|planes|beam-tree-analytic|beam-tree-sampling] [--profile
 // NAME|all] [--settings FILE.json]
-//   [--size WxH] [--shadow-map N] [--lights sun,spot,point] [--json]
+//   [--size WxH] [--shadow-map N] [--lights sun,spot:unshadowed,point:brute-force,...] [--json]
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -36,42 +36,82 @@ lightscatter::Method budgetMethod(const std::string& name) {
         "methods whose textures depend on the profile");
 }
 
-// --lights: a comma-separated list of sun (or directional), spot and point.
-std::vector<lightscatter::LightType> parseLights(const std::string& list) {
-    std::vector<lightscatter::LightType> lights;
+// --lights: a comma-separated list of lights, each TYPE[:shadowed|:unshadowed][:METHOD], TYPE one
+// of sun (or directional), spot and point.
+struct LightList {
+    std::vector<lightscatter::BudgetLight> lights;
+    bool perLight = false;  // some light says whether it is shadowed, or its method
+};
+
+LightList parseLights(const std::string& list) {
+    LightList out;
     size_t start = 0;
     while (true) {
         const size_t comma = list.find(',', start);
-        const std::string name =
+        const std::string entry =
             list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        std::vector<std::string> parts;
+        for (size_t at = 0;;) {
+            const size_t colon = entry.find(':', at);
+            parts.push_back(entry.substr(at, colon == std::string::npos ? colon : colon - at));
+            if (colon == std::string::npos) break;
+            at = colon + 1;
+        }
+        lightscatter::BudgetLight l;
+        const std::string& name = parts[0];
         if (name == "sun" || name == "directional")
-            lights.push_back(lightscatter::LightType::Directional);
+            l.type = lightscatter::LightType::Directional;
         else if (name == "spot")
-            lights.push_back(lightscatter::LightType::Spot);
+            l.type = lightscatter::LightType::Spot;
         else if (name == "point")
-            lights.push_back(lightscatter::LightType::Point);
+            l.type = lightscatter::LightType::Point;
         else
             throw std::runtime_error(
                 "--lights " + list + ": unknown light '" + name +
-                "' (a comma-separated list of sun, directional, spot and point)");
-        if (comma == std::string::npos) return lights;
+                "' (a comma-separated list of sun, directional, spot and "
+                "point, each optionally :shadowed or :unshadowed and :METHOD)");
+        bool shadowGiven = false, methodGiven = false;
+        for (size_t k = 1; k < parts.size(); ++k) {
+            const std::string& m = parts[k];
+            if ((m == "shadowed" || m == "unshadowed") && !shadowGiven) {
+                l.shadowed = m == "shadowed";
+                shadowGiven = true;
+            } else if (const auto method = lightscatter::parseMethod(m); method && !methodGiven) {
+                l.method = *method;
+                methodGiven = true;
+            } else {
+                throw std::runtime_error("--lights " + list + ": '" + entry + "': '" + m +
+                                         "' is not shadowed, unshadowed or a method name (each "
+                                         "at most once)");
+            }
+        }
+        out.perLight = out.perLight || parts.size() > 1;
+        out.lights.push_back(l);
+        if (comma == std::string::npos) return out;
         start = comma + 1;
     }
 }
 
-std::string lightsName(const std::vector<lightscatter::LightType>& lights) {
+std::string lightsName(const std::vector<lightscatter::BudgetLight>& lights,
+                       const std::vector<std::string>& methods, bool perLight) {
     std::string s;
-    for (auto l : lights)
+    for (size_t i = 0; i < lights.size(); ++i) {
+        const auto l = lights[i].type;
         s += std::string(s.empty() ? "" : ",") + (l == lightscatter::LightType::Directional ? "sun"
                                                   : l == lightscatter::LightType::Spot      ? "spot"
                                                                                        : "point");
+        if (perLight)
+            s += std::string(lights[i].shadowed ? ":shadowed:" : ":unshadowed:") +
+                 (i < methods.size() ? methods[i] : "auto");
+    }
     return s;
 }
 
 }  // namespace
 
 int runBudget(Args& args) {
-    const lightscatter::Method method = budgetMethod(args.take("--method", "epipolar"));
+    const std::string methodName = args.take("--method", "");
+    const lightscatter::Method method = budgetMethod(methodName.empty() ? "epipolar" : methodName);
     const bool planes =
         method != lightscatter::Method::Epipolar;  // planes and the beam trees sample with planes
     const std::string settingsPath = args.take("--settings", "");
@@ -79,7 +119,15 @@ int runBudget(Args& args) {
         args.take("--profile", settingsPath.empty() ? "all" : "balanced");
     const VkExtent2D size = parseSize(args.take("--size", "2560x1600"), "--size");
     const std::string sm = args.take("--shadow-map", "");
-    const std::vector<lightscatter::LightType> lights = parseLights(args.take("--lights", "spot"));
+    const LightList lightList = parseLights(args.take("--lights", "spot"));
+    // A light that says whether it is shadowed or its method budgets the set light by light:
+    // each light's method its own, else --method where given, else auto.
+    std::vector<lightscatter::BudgetLight> set = lightList.lights;
+    std::vector<lightscatter::LightType> lights;
+    for (auto& l : set) {
+        lights.push_back(l.type);
+        if (l.method == lightscatter::Method::Auto && !methodName.empty()) l.method = method;
+    }
     const bool json = args.flag("--json");
     args.finish();
     std::vector<lightscatter::Profile> profiles;
@@ -109,7 +157,10 @@ int runBudget(Args& args) {
             p == lightscatter::Profile::Custom ? custom : lightscatter::profileSettings(p);
         const uint32_t shadow = shadowOverride ? shadowOverride : s.shadowMapSize;
         const lightscatter::Budget b =
-            lightscatter::budget(p, size.width, size.height, shadow, lights, &s, method);
+            lightList.perLight
+                ? lightscatter::budget(p, size.width, size.height, shadow, set, &s)
+                : lightscatter::budget(p, size.width, size.height, shadow, lights, &s, method);
+        const std::string lightsText = lightsName(set, b.lightMethods, lightList.perLight);
         if (json) {
             nlohmann::json j;
             j["method"] = lightscatter::methodName(method);
@@ -124,7 +175,8 @@ int runBudget(Args& args) {
                 j["samplesPerSlice"] = s.samplesPerSlice;
             }
             j["shadowMapSize"] = shadow;
-            j["lights"] = lightsName(lights);
+            j["lights"] = lightsText;
+            j["lightMethods"] = b.lightMethods;
             j["estimated"] = b.estimated;
             j["depthStencilFormat"] = b.depthStencilFormat;
             nlohmann::json entries = nlohmann::json::array();
@@ -158,9 +210,9 @@ int runBudget(Args& args) {
                 : std::to_string(s.slices) + " slices x " + std::to_string(s.samplesPerSlice) +
                       " samples";
         std::printf("%s, %s: %s, %u^2 shadow map, %ux%u screen, light%s %s (sizes %s)\n",
-                    lightscatter::methodName(method), lightscatter::profileName(p), what.c_str(),
-                    shadow, size.width, size.height, lights.size() > 1 ? "s" : "",
-                    lightsName(lights).c_str(),
+                    lightList.perLight ? "a method per light" : lightscatter::methodName(method),
+                    lightscatter::profileName(p), what.c_str(), shadow, size.width, size.height,
+                    lights.size() > 1 ? "s" : "", lightsText.c_str(),
                     b.estimated ? "estimated without a device" : "from the device");
         for (const auto& e : b.entries)
             std::printf("  %-40s %-22s %5u x %-5u %10.2f MiB%s\n", e.name.c_str(), e.format.c_str(),

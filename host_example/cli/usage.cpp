@@ -56,7 +56,7 @@ const std::array kCommands{
             "budget [--method epipolar|planes|beam-tree-analytic|beam-tree-sampling]\n"
             "                    [--profile NAME|all]\n"
             "                    [--settings FILE.json]\n"
-            "                    [--size WxH] [--shadow-map N] [--lights sun,spot,point]\n"
+            "                    [--size WxH] [--shadow-map N] [--lights LIST]\n"
             "                    [--json]\n",
             "Prints a method's GPU memory per profile without a GPU.\n"
             "  --method NAME       epipolar (default), planes, beam-tree-analytic or\n"
@@ -68,7 +68,10 @@ const std::array kCommands{
             "  --lights LIST       the frame's lights, comma-separated: sun, spot, point\n"
             "                      (default spot); sun and spot have a shadow map, point\n"
             "                      a cube map of six (epipolar; none with the other\n"
-            "                      methods); several lights: epipolar only\n"
+            "                      methods). Each may add :shadowed or :unshadowed and\n"
+            "                      :METHOD (any method, auto by default, or --method\n"
+            "                      where given): the set is then budgeted light by light,\n"
+            "                      e.g. sun,spot:brute-force,point:unshadowed\n"
             "  --json              JSON instead of text\n"},
     Command{
         "graph",

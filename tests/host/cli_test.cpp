@@ -317,6 +317,33 @@ TEST(Cli, BudgetOfPlanesPrintsTheirTextures) {
     expectFailure(run("budget --method raytrace"), "unknown method 'raytrace'");
 }
 
+// --lights with each light's shadow and method (issue #25): the set budgeted light by light, auto
+// where a light gives no method, and each light's method in the JSON.
+TEST(Cli, BudgetOfLightsEachWithItsMethod) {
+    const auto j =
+        run("budget --profile balanced --size 1920x1080 --json --lights "
+            "sun,spot:brute-force,spot:unshadowed:cone-march,point:unshadowed");
+    ASSERT_EQ(j.exitCode, 0) << j.out;
+    const auto parsed = nlohmann::json::parse(j.out);
+    ASSERT_EQ(parsed.size(), 1u);
+    EXPECT_EQ(parsed[0]["lightMethods"],
+              nlohmann::json({"epipolar", "brute-force", "cone-march", "epipolar"}));
+    EXPECT_EQ(parsed[0]["lights"],
+              "sun:shadowed:epipolar,spot:shadowed:brute-force,spot:unshadowed:cone-march,"
+              "point:unshadowed:epipolar");
+    // Only the first light samples epipolarly: its textures are listed, the others' are not.
+    std::string names;
+    for (const auto& e : parsed[0]["resources"]) names += e["name"].get<std::string>() + "\n";
+    EXPECT_NE(names.find("1D min/max trees (light 0)"), std::string::npos) << names;
+    EXPECT_EQ(names.find("1D min/max trees (light 1)"), std::string::npos) << names;
+    // A light its method refuses, and a word that is neither a shadow nor a method.
+    expectFailure(run("budget --lights sun:beam-tree-analytic"),
+                  "budget lights[0]: method beam-tree-analytic");
+    expectFailure(run("budget --lights spot:dim"),
+                  "--lights spot:dim: 'spot:dim': 'dim' is not shadowed, unshadowed or a method "
+                  "name");
+}
+
 TEST(Cli, BudgetPrintsEveryProfileBesideTheSeed) {
     const auto r = run("budget");
     ASSERT_EQ(r.exitCode, 0) << r.out;

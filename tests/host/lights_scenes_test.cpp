@@ -46,6 +46,9 @@ TEST(LightsScenes, TheGeneratorWritesTheShippedFiles) {
             << name
             << " differs from what tools/make_scenes/make_lights_scenes.py writes: regenerate it";
     }
+    EXPECT_EQ(readAll(dir / "atrium_sun_small_spots.json"),
+              readAll(fs::path(LS_SOURCE_DIR) / "scenes" / "atrium_sun_small_spots.json"))
+        << "atrium_sun_small_spots.json differs from what the generator writes: regenerate it";
     fs::remove_all(dir);
 }
 

@@ -483,11 +483,12 @@ struct FrameDescription {
     // must then be left at their defaults; a frame giving both is refused naming the fields).
     // Each light gets its own chain of nodes writing its own Lin; the Lins are summed and
     // composited once: color = color * exp(-betaT S) + sum of Lin (inscatterOut receives the sum).
-    // A light whose volume misses the view adds no node. Errors name lights[i].field. With two
-    // lights or more only epipolar and brute-force (and auto, which picks one of them for the
-    // whole frame) build chains so far; the other methods refuse the frame. At most kMaxLights.
+    // A light whose volume misses the view adds no node. Errors name lights[i].field. Every
+    // method takes a list; a method that cannot honour one of its lights refuses the frame naming
+    // lights[i]. At most kMaxLights.
     std::vector<LightInput> lights;
     Medium medium;
+    // The method of every light whose LightInput::method is Auto; Auto chooses for each light.
     Method method = Method::Epipolar;
     Profile profile = Profile::Balanced;
     // The engine's settings. With Profile::Custom all of them; with any other profile all but the
@@ -609,8 +610,8 @@ LIGHTSCATTER_API Budget budget(Profile profile, uint32_t screenWidth, uint32_t s
                                const Settings* custom = nullptr, Method method = Method::Epipolar);
 
 // The budget of a frame of several lights, one entry of `lights` per light (a directional or spot
-// light with a shadow map of shadowMapSize, a point light with a cube map of six such faces):
-// epipolar only so far.
+// light with a shadow map of shadowMapSize, a point light with a cube map of six such faces where
+// the method samples one), all with `method` (one of the methods above).
 // Transients of the lights' chains alias each other (the chains run one after the other); each
 // point or spot light adds its own point-light table.
 LIGHTSCATTER_API Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
