@@ -190,6 +190,20 @@ def spot(position, direction, half=30.0, intensity=(400.0, 380.0, 350.0)):
             "halfAngleDegrees": half, "range": 30.0, "radius": 0.05, "shadowMapSize": 512}
 
 
+def soft_spot(position, direction, inner, outer):
+    """A spot as KHR_lights_punctual gives it: full intensity within `inner` degrees of its axis,
+    falling smoothly to nothing at `outer`."""
+    s = spot(position, direction)
+    del s["halfAngleDegrees"]
+    s.update({"innerConeAngleDegrees": inner, "outerConeAngleDegrees": outer})
+    return s
+
+
+def windowed_point(position, light_range):
+    """A point light whose range ends in KHR's smooth window."""
+    return dict(point(position), range=light_range, rangeFalloff="window")
+
+
 def sun(direction):
     return {"type": "directional", "direction": list(direction), "intensity": [3.0, 3.0, 2.8], "shadowMapSize": 512}
 
@@ -263,6 +277,10 @@ def cases():
                                          medium={"betaR": [0, 0.004, 0.008], "betaM": [0, 0.03, 0.03]}),
         "shadow_map_not_pow2": scene(dict(spot((0.3, 6, 0.2), (0, -1, 0)), shadowMapSize=100)),
         "low_sun_city": low_sun_city(),
+        # Issue #25's light shapes: a soft-edged spot in view whose penumbra spans most of its cone,
+        # and a windowed point light on a pixel's ray whose range ends a few metres from the camera.
+        "soft_spot_center": scene(soft_spot(through_ndc(0, 0, 5), (0, -1, -0.3), 10.0, 35.0)),
+        "windowed_point_on_ray": scene(windowed_point(through_ndc(px[0], px[1], 4), 3.0)),
         # A cube-shadowed point light on screen inside a small cage, the camera a few metres outside.
         "point_in_cage": dict(scene(dict(point(CAGE_LIGHT), shadowMapSize=512), gltf="hard_cage.gltf",
                                     camera=cage_camera(),
