@@ -18,13 +18,13 @@ MethodCaps BeamTreeMethod::caps() const {
     MethodCaps c;
     c.directional = false;
     c.readsOccluders = true;
+    c.cubeShadow = true;  // the sampling planes look up the face each point lies in
     c.budgeted = true;
     return c;
 }
 
 std::string BeamTreeMethod::refusal(const LightSetup& s) const {
     const std::string n = name();
-    if (std::string r = refuseCubeShadow(s, n); !r.empty()) return r;
     if (!pointLike(s))
         return "method " + n +
                " (seed 004) builds its beam tree from a point or spot light; this frame's light is "

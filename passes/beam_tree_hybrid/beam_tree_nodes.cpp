@@ -14,9 +14,11 @@
 namespace ls {
 
 // Bindings only some frames have are build-time variants of the planes' shader.
-rg::ShaderCode beamTreePlanesShader(bool shadowMap, bool cookie) {
-    return pickShader(ls_spirv::planes_frag_variants,
-                      {{"LS_SHADOW_MAP", shadowMap}, {"LS_LIGHT_COLOR", cookie}, {"LS_NOISE", 0}});
+rg::ShaderCode beamTreePlanesShader(bool shadowMap, bool cookie, bool cube) {
+    return pickShader(ls_spirv::planes_frag_variants, {{"LS_SHADOW_MAP", shadowMap},
+                                                       {"LS_CUBE_SHADOW", shadowMap && cube},
+                                                       {"LS_LIGHT_COLOR", cookie && !cube},
+                                                       {"LS_NOISE", 0}});
 }
 
 const BeamTreeFrame& beamTreeOf(const LightFrame& frame) {
@@ -73,7 +75,7 @@ void drawPlaneParts(rg::PassContext& ctx, const Shared& shared, const ScatterSpe
         draw.shadow ? passTable : passTable.without(LS_BINDING_SHADOW_MAP);
     rg::GraphicsPipelineDesc desc;
     desc.vertex = rg::spirv(ls_spirv::triangles_vert);
-    desc.fragment = beamTreePlanesShader(draw.shadow, cookie);
+    desc.fragment = beamTreePlanesShader(draw.shadow, cookie, spec.cubeShadow);
     desc.formats = ctx.renderingFormats();
     desc.bindings = table.layout();
     desc.pushConstantBytes = sizeof(PlanePush);

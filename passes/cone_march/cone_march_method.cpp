@@ -7,8 +7,7 @@
 namespace ls {
 
 std::string ConeMarchMethod::refusal(const LightSetup& s) const {
-    return firstRefusal(
-        {refuseCubeShadow(s, name()), refuseNoise(s, name()), refuseSimplified(s, name())});
+    return firstRefusal({refuseNoise(s, name()), refuseSimplified(s, name())});
 }
 
 ChainOptions ConeMarchMethod::options(const LightSetup& s, const LightData*,

@@ -13,7 +13,11 @@ class ConeMarchMethod final : public MethodUnit {
         bool operator==(const Options&) const = default;
     };
     const char* name() const override { return "cone-march"; }
-    MethodCaps caps() const override { return {}; }
+    MethodCaps caps() const override {
+        MethodCaps c;
+        c.cubeShadow = true;  // each sample looks up the face it lies in
+        return c;
+    }
     std::string refusal(const LightSetup& light) const override;
     ChainOptions options(const LightSetup& light, const LightData*,
                          const ChainOptions*) const override;

@@ -9,37 +9,43 @@ namespace ls {
 
 // Bindings that only some frames have are build-time variants, so a pipeline never declares a
 // descriptor it is not given.
-rg::ShaderCode coneMarchShader(bool shadowMap, bool lightColor) {
+// A point light's cube map (`cube`, with a shadow map) comes without light color (refused with it).
+rg::ShaderCode coneMarchShader(bool shadowMap, bool lightColor, bool cube) {
     return pickShader(ls_spirv::cone_march_frag_variants,
-                      {{"LS_SHADOW_MAP", shadowMap}, {"LS_LIGHT_COLOR", lightColor}});
+                      {{"LS_SHADOW_MAP", shadowMap},
+                       {"LS_CUBE_SHADOW", shadowMap && cube},
+                       {"LS_LIGHT_COLOR", lightColor && !(shadowMap && cube)}});
 }
 
 rg::ImageRef addConeMarch(rg::RenderGraph& graph, const ConeMarchInputs& in,
                           const ConeMarchOptions& options) {
     const bool shadow = in.light.shadowMap.valid(), color = in.light.lightColor.valid();
     const Shared& shared = in.frame.shared;
-    return addScreenLinNode(
-        graph, shared, in.frame.spec,
-        {.name = options.coneLimited ? "cone-limited ray march (seed 003)"
-                                     : "naive ray march (seed 003's baseline)",
-         .constants = in.frame.constants,
-         .depth = in.frame.depth,
-         .values = in.frame.values,
-         .rows =
-             [light = in.light, shared](rg::BindingTable& table) {
-                 const auto& s = samplersOf(shared);
-                 table
-                     .sampledIfValid(LS_BINDING_SHADOW_MAP, light.shadowMap, s.nearest(),
-                                     VK_IMAGE_ASPECT_DEPTH_BIT)
-                     .sampledIfValid(LS_BINDING_LIGHT_COLOR, light.lightColor, s.linear());
-             },
-         .shader = [shadow, color](const ScatterSpec&) { return coneMarchShader(shadow, color); },
-         .specialize =
-             [options](rg::Specialization& s) {
-                 s.set(LS_SPEC_CONE_SAMPLES, options.samples)
-                     .set(LS_SPEC_CONE_LIMITED, options.coneLimited)
-                     .set(LS_SPEC_CONE_JITTER, options.jitter);
-             }});
+    return addScreenLinNode(graph, shared, in.frame.spec,
+                            {.name = options.coneLimited ? "cone-limited ray march (seed 003)"
+                                                         : "naive ray march (seed 003's baseline)",
+                             .constants = in.frame.constants,
+                             .depth = in.frame.depth,
+                             .values = in.frame.values,
+                             .rows =
+                                 [light = in.light, shared](rg::BindingTable& table) {
+                                     const auto& s = samplersOf(shared);
+                                     table
+                                         .sampledIfValid(LS_BINDING_SHADOW_MAP, light.shadowMap,
+                                                         s.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
+                                         .sampledIfValid(LS_BINDING_LIGHT_COLOR, light.lightColor,
+                                                         s.linear());
+                                 },
+                             .shader =
+                                 [shadow, color](const ScatterSpec& spec) {
+                                     return coneMarchShader(shadow, color, spec.cubeShadow);
+                                 },
+                             .specialize =
+                                 [options](rg::Specialization& s) {
+                                     s.set(LS_SPEC_CONE_SAMPLES, options.samples)
+                                         .set(LS_SPEC_CONE_LIMITED, options.coneLimited)
+                                         .set(LS_SPEC_CONE_JITTER, options.jitter);
+                                 }});
 }
 
 }  // namespace ls

@@ -4,6 +4,6 @@
 
 namespace ls {
 
-rg::ShaderCode coneMarchShader(bool shadowMap, bool lightColor);
+rg::ShaderCode coneMarchShader(bool shadowMap, bool lightColor, bool cube);
 
 }  // namespace ls

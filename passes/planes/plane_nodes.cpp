@@ -12,10 +12,13 @@ namespace ls {
 
 // Bindings only some frames have are build-time variants (a pipeline never declares a descriptor
 // it is not given); the cookie is looked up in the shadow map's space, so it comes with one.
-rg::ShaderCode planesShader(bool shadowMap, bool cookie, bool noise) {
-    return pickShader(ls_spirv::planes_frag_variants, {{"LS_SHADOW_MAP", shadowMap},
-                                                       {"LS_LIGHT_COLOR", shadowMap && cookie},
-                                                       {"LS_NOISE", noise}});
+// A point light's cube map (`cube`, with a shadow map) comes without light color (refused with it).
+rg::ShaderCode planesShader(bool shadowMap, bool cookie, bool noise, bool cube) {
+    return pickShader(ls_spirv::planes_frag_variants,
+                      {{"LS_SHADOW_MAP", shadowMap},
+                       {"LS_CUBE_SHADOW", shadowMap && cube},
+                       {"LS_LIGHT_COLOR", shadowMap && cookie && !cube},
+                       {"LS_NOISE", noise}});
 }
 
 const PlanePlacement& placementOf(const LightFrame& frame) {
@@ -64,7 +67,7 @@ rg::ImageRef addPlanes(rg::RenderGraph& graph, const PlanesInputs& in,
                        noise = in.noise.valid();
             rg::GraphicsPipelineDesc desc;
             desc.vertex = rg::spirv(ls_spirv::planes_vert);
-            desc.fragment = planesShader(shadow, cookie, noise);
+            desc.fragment = planesShader(shadow, cookie, noise, spec.cubeShadow);
             desc.formats = ctx.renderingFormats();
             desc.bindings = table.layout();
             desc.pushConstantBytes = sizeof(PlanePush);

@@ -4,6 +4,6 @@
 
 namespace ls {
 
-rg::ShaderCode planesShader(bool shadowMap, bool cookie, bool noise);
+rg::ShaderCode planesShader(bool shadowMap, bool cookie, bool noise, bool cube);
 
 }  // namespace ls

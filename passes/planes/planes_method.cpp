@@ -8,14 +8,14 @@ namespace ls {
 
 MethodCaps PlanesMethod::caps() const {
     MethodCaps c;
+    c.cubeShadow = true;  // each plane's point looks up the face it lies in
     c.budgeted = true;
     return c;
 }
 
 std::string PlanesMethod::refusal(const LightSetup& s) const {
     return firstRefusal(
-        {refuseCubeShadow(s, name()),
-         refuseNoDepthAttachment(s, "method planes (seed 002) depth-tests its planes"),
+        {refuseNoDepthAttachment(s, "method planes (seed 002) depth-tests its planes"),
          refuseSimplified(s, name())});
 }
 

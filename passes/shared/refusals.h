@@ -7,7 +7,7 @@
 
 namespace ls {
 
-// A point light's cube shadow map: only epipolar (face by face) and brute force sample it.
+// A point light's cube shadow map: every method that casts shadows samples it but analytic.
 std::string refuseCubeShadow(const LightSetup& s, const std::string& method);
 // Seed 002's noise is a density the model does not have; only seed 002's planes sample it.
 std::string refuseNoise(const LightSetup& s, const std::string& method);

@@ -61,19 +61,11 @@ MethodChoice autoChoice(const FrameSetup& s, bool lightReachesView) {
     const std::string& set = s.settingsPath;  // "custom", or the light's own settings
     if (!lightReachesView)
         return sampled("the light reaches no view ray (or nothing scatters): extinction only");
-    if (ls::cubeShadowed(s)) {
-        if (s.simplified || s.noise || skipShadows)
-            refuse(
-                "a point light's cube shadow map is sampled by epipolar and brute-force only, "
-                "which do not honour " +
-                set +
-                (s.simplified ? ".lightModel = simplified"
-                 : s.noise    ? ".noiseAmplitude > 0"
-                              : ".shadowSampling = false") +
-                " (remove the shadow map or that setting)");
+    // A point light's cube map, with none of the settings below (which pick the method that
+    // honours them; each samples the cube map too).
+    if (ls::cubeShadowed(s) && !s.simplified && !s.noise && !skipShadows)
         return epipolarOrBruteForce(
             s, "shadowed point light (a cube shadow map, marched face by face)");
-    }
     if (s.simplified) {
         // Seed 004's light model: only its closed forms integrate it.
         if (!pointLike)

@@ -11,7 +11,11 @@
 #include "math.glsl"
 layout(binding = LS_BINDING_DEPTH) uniform sampler2D depthBuffer;  // the engine's depth
 #if LS_SHADOW_MAP
+#if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
+layout(binding = LS_BINDING_SHADOW_MAP) uniform sampler2DArray shadowMap;  // six faces
+#else
 layout(binding = LS_BINDING_SHADOW_MAP) uniform sampler2D shadowMap;
+#endif
 #include "shadow.glsl"
 #endif
 #if LS_LIGHT_COLOR

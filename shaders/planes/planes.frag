@@ -12,7 +12,11 @@
 #include "math.glsl"
 #include "plane_push.glsl"
 #if LS_SHADOW_MAP
+#if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
+layout(binding = LS_BINDING_SHADOW_MAP) uniform sampler2DArray shadowMap;  // six faces
+#else
 layout(binding = LS_BINDING_SHADOW_MAP) uniform sampler2D shadowMap;
+#endif
 #include "shadow.glsl"
 #endif
 #if LS_LIGHT_COLOR

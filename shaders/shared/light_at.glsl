@@ -38,7 +38,17 @@ vec3 lightAt(vec3 P, vec3 v, float ambient, out float cosTheta) {
         if (smoothFalloff()) irr *= lightFalloff(P);
     }
 #if LS_SHADOW_MAP || LS_LIGHT_COLOR
+#if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
+    // A point light's cube map: the face of P - L's major axis (+X, -X, +Y, -Y, +Z, -Z), whose
+    // layer the look-up reads (a point on a seam takes either face: both maps see it).
+    vec3 fromLight = P - frame.lightPos.xyz, m = abs(fromLight);
+    shadowFace = m.x >= m.y && m.x >= m.z ? (fromLight.x >= 0.0 ? 0 : 1)
+               : m.y >= m.z               ? (fromLight.y >= 0.0 ? 2 : 3)
+                                          : (fromLight.z >= 0.0 ? 4 : 5);
+    vec4 X = frame.cubeFaceViewProj[shadowFace] * vec4(P, 1.0);
+#else
     vec4 X = frame.lightViewProj * vec4(P, 1.0);
+#endif
     if (X.w > 0.0) {
         vec2 uv = X.xy / X.w * 0.5 + 0.5;
 #if LS_SHADOW_MAP

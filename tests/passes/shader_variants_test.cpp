@@ -84,11 +84,13 @@ TEST(ShaderVariants, ScreenLinNodesAskForBuiltVariants) {
                     reach(composite, compositeShader(addOnly, lin, color, out));
     forEachSpec([&](const ScatterSpec& spec) { reach(unshadowed, unshadowedShader(spec)); });
     for (bool shadow : {false, true})
-        for (bool color : {false, true}) {
-            reach(coneMarch, coneMarchShader(shadow, color));
-            reach(planes, beamTreePlanesShader(shadow, color));
-            for (bool noise : {false, true}) reach(planes, planesShader(shadow, color, noise));
-        }
+        for (bool color : {false, true})
+            for (bool cube : {false, true}) {
+                reach(coneMarch, coneMarchShader(shadow, color, cube));
+                reach(planes, beamTreePlanesShader(shadow, color, cube));
+                for (bool noise : {false, true})
+                    reach(planes, planesShader(shadow, color, noise, cube));
+            }
     expectAllReached(ls_spirv::composite_comp_variants, composite);
     expectAllReached(ls_spirv::unshadowed_frag_variants, unshadowed);
     expectAllReached(ls_spirv::cone_march_frag_variants, coneMarch);
@@ -112,10 +114,12 @@ std::string pickError(const ls_spirv::ShaderVariants& shader,
 
 TEST(ShaderVariants, BuildNotMadeIsOneClearError) {
     // The planes' shader is not built with a cookie and noise but no shadow map.
-    EXPECT_EQ(pickError(ls_spirv::planes_frag_variants,
-                        {{"LS_SHADOW_MAP", 0}, {"LS_LIGHT_COLOR", 1}, {"LS_NOISE", 1}}),
-              "shader planes.frag with [LS_SHADOW_MAP=0,LS_LIGHT_COLOR=1,LS_NOISE=1]: no "
-              "build has these defines (add it to shaders/CMakeLists.txt)");
+    EXPECT_EQ(
+        pickError(
+            ls_spirv::planes_frag_variants,
+            {{"LS_SHADOW_MAP", 0}, {"LS_CUBE_SHADOW", 0}, {"LS_LIGHT_COLOR", 1}, {"LS_NOISE", 1}}),
+        "shader planes.frag with [LS_SHADOW_MAP=0,LS_CUBE_SHADOW=0,LS_LIGHT_COLOR=1,LS_NOISE=1]: "
+        "no build has these defines (add it to shaders/CMakeLists.txt)");
     EXPECT_EQ(pickError(ls_spirv::cone_march_frag_variants, {{"LS_SHADOW_MAP", 1}}),
               "shader cone_march.frag with [LS_SHADOW_MAP=1]: the define LS_LIGHT_COLOR is not "
               "given");
@@ -124,7 +128,7 @@ TEST(ShaderVariants, BuildNotMadeIsOneClearError) {
               "shader cone_march.frag with [LS_SHADOW_MAP=1,LS_LIGHT_COLOR=0,LS_NOISE=0]: no build "
               "of it has the define LS_NOISE");
     EXPECT_EQ(pickError(ls_spirv::cone_march_frag_variants,
-                        {{"LS_SHADOW_MAP", 1}, {"LS_LIGHT_COLOR", 1}}),
+                        {{"LS_SHADOW_MAP", 1}, {"LS_CUBE_SHADOW", 0}, {"LS_LIGHT_COLOR", 1}}),
               "");
 }
 

@@ -336,8 +336,8 @@ struct Light {
     // spot's map; near and far planes are the engine's. Every face is checked (to 1e-3 in clip
     // x/w, y/w): a singular matrix, a frustum that is not centred on its axis at the light, a
     // field of view other than 90 degrees, a mirrored face or depth against shadowReversedZ is
-    // refused naming light.cubeFaceViewProjections[i]. Epipolar (face by face) and brute-force
-    // sample a cube shadow map; the other methods refuse it.
+    // refused naming light.cubeFaceViewProjections[i]. Every method that casts shadows samples
+    // a cube shadow map (epipolar face by face, the others per point); analytic refuses it.
     std::array<Mat4, 6> cubeFaceViewProjections{};
     uint32_t shadowMapSize = 0;  // 0: no shadow map
     bool shadowReversedZ = false;
