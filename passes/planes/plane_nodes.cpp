@@ -11,11 +11,11 @@
 namespace ls {
 
 // Bindings only some frames have are build-time variants (a pipeline never declares a descriptor
-// it is not given); the cookie is looked up in the shadow map's space, so it comes with one.
+// it is not given); the cookie is looked up in the light's projection, with a shadow map or not.
 rg::ShaderCode planesShader(bool shadowMap, bool cookie, bool noise) {
-    return pickShader(ls_spirv::planes_frag_variants, {{"LS_SHADOW_MAP", shadowMap},
-                                                       {"LS_LIGHT_COLOR", shadowMap && cookie},
-                                                       {"LS_NOISE", noise}});
+    return pickShader(
+        ls_spirv::planes_frag_variants,
+        {{"LS_SHADOW_MAP", shadowMap}, {"LS_LIGHT_COLOR", cookie}, {"LS_NOISE", noise}});
 }
 
 const PlanePlacement& placementOf(const LightFrame& frame) {
