@@ -298,6 +298,9 @@ int runView(Args& args) {
     outputs.addInput("the scene file", scenePath);
     if (!o.settingsPath.empty()) outputs.addInput("the settings file", o.settingsPath);
     for (const auto& f : mesh.files) outputs.addInput("a file the scene reads", f);
+    for (size_t i = 0; i < scene.lightCount(); ++i)
+        if (scene.lightAt(i).cookie)
+            outputs.addInput("a file the scene reads", scene.lightAt(i).cookie->name);
     if (!screenshotPath.empty()) outputs.add("--screenshot", screenshotPath);
     if (!memoryLogPath.empty()) outputs.add("--memory-log", memoryLogPath);
     std::string memoryLog = "frame,rss_kib,device_bytes\n";
