@@ -46,6 +46,11 @@ void light(Fnv& f, const LightDesc& l) {
     // Not the shadow map's size: the reference traces exact visibility.
     f.values(l.type, l.position, l.direction, l.intensity, l.innerConeAngleDegrees,
              l.outerConeAngleDegrees, l.range, l.rangeFalloff, l.radius);
+    // The cookie's pixels, not its path: the reference colours the light with them.
+    if (l.cookie) {
+        f.values(l.cookie->width, l.cookie->height);
+        f.bytes(l.cookie->rgba.data(), l.cookie->rgba.size());
+    }
 }
 
 }  // namespace

@@ -97,6 +97,9 @@ int runRender(Args& args) {
     outputs.addInput("the scene file", scenePath);
     if (!o.settingsPath.empty()) outputs.addInput("the settings file", o.settingsPath);
     for (const auto& f : mesh.files) outputs.addInput("a file the scene reads", f);
+    for (size_t i = 0; i < scene.lightCount(); ++i)
+        if (scene.lightAt(i).cookie)
+            outputs.addInput("a file the scene reads", scene.lightAt(i).cookie->name);
     outputs.add("--out", out);
     if (!inscatter.empty()) outputs.add("--inscatter", inscatter);
     if (!timings.empty()) outputs.add("--timings", timings);

@@ -298,6 +298,9 @@ int runView(Args& args) {
     outputs.addInput("the scene file", scenePath);
     if (!o.settingsPath.empty()) outputs.addInput("the settings file", o.settingsPath);
     for (const auto& f : mesh.files) outputs.addInput("a file the scene reads", f);
+    for (size_t i = 0; i < scene.lightCount(); ++i)
+        if (scene.lightAt(i).cookie)
+            outputs.addInput("a file the scene reads", scene.lightAt(i).cookie->name);
     if (!screenshotPath.empty()) outputs.add("--screenshot", screenshotPath);
     if (!memoryLogPath.empty()) outputs.add("--memory-log", memoryLogPath);
     std::string memoryLog = "frame,rss_kib,device_bytes\n";
@@ -387,17 +390,18 @@ int runView(Args& args) {
         if (pressed(GLFW_KEY_L, keyL))
             selectedLight = (selectedLight + 1) % renderer.scene().lightCount();
         if (pressed(GLFW_KEY_M, keyM)) {
-            // analytic only where seed 001 applies (an unshadowed point or spot light).
+            // analytic only where seed 001 applies (an unshadowed point or spot light), and
+            // neither it nor beam-tree-analytic with a cookie (their closed forms refuse it).
             std::vector<lightscatter::Method> methods{
                 lightscatter::Method::Auto, lightscatter::Method::Epipolar,
                 lightscatter::Method::BruteForce, lightscatter::Method::ConeMarch,
                 lightscatter::Method::Planes};
             const LightDesc& l = renderer.scene().light;
-            if (l.type == lightscatter::LightType::Point ||
-                (l.type == lightscatter::LightType::Spot && l.shadowMapSize == 0))
+            if (!l.cookie && (l.type == lightscatter::LightType::Point ||
+                              (l.type == lightscatter::LightType::Spot && l.shadowMapSize == 0)))
                 methods.push_back(lightscatter::Method::Analytic);
             if (l.type != lightscatter::LightType::Directional) {
-                methods.push_back(lightscatter::Method::BeamTreeAnalytic);
+                if (!l.cookie) methods.push_back(lightscatter::Method::BeamTreeAnalytic);
                 methods.push_back(lightscatter::Method::BeamTreeSampling);
             }
             auto it = std::find(methods.begin(), methods.end(), options.method);

@@ -174,9 +174,24 @@ void EngineRenderer::createTargets() {
     lights_.resize(scene_.lightCount());
     for (size_t i = 0; i < lights_.size(); ++i) {
         const LightDesc& l = scene_.lightAt(i);
+        const std::string which = i == 0 ? "" : " (light " + std::to_string(i) + ")";
+        if (l.cookie) {
+            const std::string field =
+                scene_.path + ": " +
+                (scene_.lightList ? "lights[" + std::to_string(i) + "]" : std::string("light")) +
+                ".cookie";
+            because(field, [&] {
+                // sRGB: the file stores colors as images do, and the plugin samples the linear
+                // transmittance of the glass (Vulkan decodes before it filters).
+                lights_[i].cookie = std::make_unique<GpuImage>(
+                    device_, VK_FORMAT_R8G8B8A8_SRGB, VkExtent2D{l.cookie->width, l.cookie->height},
+                    VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                    "host cookie" + which);
+                uploadCookie(*l.cookie, *lights_[i].cookie);
+            });
+        }
         const uint32_t sm = l.shadowMapSize;
         if (sm == 0) continue;
-        const std::string which = i == 0 ? "" : " (light " + std::to_string(i) + ")";
         const std::string field =
             scene_.path + ": " +
             (scene_.lightList ? "lights[" + std::to_string(i) + "]" : std::string("light")) +
@@ -193,6 +208,39 @@ void EngineRenderer::createTargets() {
         });
     }
     layOutTargets();
+}
+
+// Once, when the targets are made: the copy is waited for, and the image stays in
+// SHADER_READ_ONLY_OPTIMAL for every frame after (the plugin only samples it).
+void EngineRenderer::uploadCookie(const Texture& texture, GpuImage& image) const {
+    const VkDeviceSize bytes = texture.rgba.size();
+    rg::HostBuffer staging(device_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, "cookie upload");
+    std::memcpy(staging.data(), texture.rgba.data(), bytes);
+    device_.submitAndWait([&](VkCommandBuffer cmd) {
+        VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+        b.dstStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
+        b.dstAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+        b.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+        b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        b.image = image.image();
+        b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+        VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+        dep.imageMemoryBarrierCount = 1;
+        dep.pImageMemoryBarriers = &b;
+        vkCmdPipelineBarrier2(cmd, &dep);
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageExtent = {texture.width, texture.height, 1};
+        vkCmdCopyBufferToImage(cmd, staging.buffer(), image.image(),
+                               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        b.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
+        b.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+        b.dstStageMask = VK_PIPELINE_STAGE_2_NONE;
+        b.dstAccessMask = VK_ACCESS_2_NONE;
+        b.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+        b.newLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+        vkCmdPipelineBarrier2(cmd, &dep);
+    });
 }
 
 void EngineRenderer::createScreenTargets() {
@@ -423,6 +471,17 @@ lightscatter::LightInput EngineRenderer::pluginLight(size_t i, float aspect) con
         in.shadowMap->finalAccess = VK_ACCESS_2_NONE;
     } else {
         in.light = toPluginLight(l, glm::mat4(1.0f), false);
+        // A cookie without a shadow map is cast with the matrix the map would have had.
+        if (t.cookie)
+            in.light.shadowViewProjection = toPluginMatrix(
+                shadowViewProjection(l, bounds_, partBounds_, scene_.camera, aspect));
+    }
+    if (t.cookie) {
+        // Uploaded and waited for before the first frame: the engine neither wrote it since nor
+        // uses it after, so there is nothing to wait for or to hand it back to.
+        in.lightColor = imageInput(*t.cookie, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+        in.lightColor->stages = in.lightColor->finalStages = VK_PIPELINE_STAGE_2_NONE;
+        in.lightColor->access = in.lightColor->finalAccess = VK_ACCESS_2_NONE;
     }
     return in;
 }
@@ -448,6 +507,7 @@ lightscatter::FrameDescription EngineRenderer::describe(const RenderOptions& opt
         lightscatter::LightInput only = pluginLight(0, aspect);
         f.light = only.light;
         f.shadowMap = only.shadowMap;
+        f.lightColor = only.lightColor;
     } else {
         for (size_t i = 0; i < lights_.size(); ++i) f.lights.push_back(pluginLight(i, aspect));
     }

@@ -74,7 +74,9 @@ class EngineRenderer {
     struct LightTargets {
         std::unique_ptr<GpuImage> shadowMap;
         std::unique_ptr<CubeShadowMap> cubeShadow;
+        std::unique_ptr<GpuImage> cookie;  // the light's color image (R8G8B8A8_SRGB), if it has one
     };
+    void uploadCookie(const Texture& texture, GpuImage& image) const;
     void createTargets();
     void createScreenTargets();  // depth, color, Lin and their readbacks, at size_
     void layOutTargets();        // the first layouts of the targets just made

@@ -1009,6 +1009,19 @@ class GltfFlattener {
 
 }  // namespace
 
+std::string decodeImageFile(const std::vector<unsigned char>& bytes, int maxSide,
+                            Texture& texture) {
+    if (bytes.size() > size_t(std::numeric_limits<int>::max()))
+        return "larger than the " + std::to_string(std::numeric_limits<int>::max()) +
+               " bytes stb_image reads";
+    int width = 0, height = 0, channels = 0;
+    if (stbi_info_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels) &&
+        (width > maxSide || height > maxSide))
+        return std::to_string(width) + "x" + std::to_string(height) + " pixels: at most " +
+               std::to_string(maxSide) + " a side";
+    return decodeImage(bytes.data(), int(bytes.size()), 0, 0, texture);
+}
+
 void appendGltf(MeshData& mesh, const std::string& path, const glm::mat4& transform) {
     appendGltfBytes(mesh, path, readFile(path), transform);
 }

@@ -4,6 +4,7 @@
 // plugin.
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -73,6 +74,10 @@ void appendGltf(MeshData& mesh, const std::string& path,
 void appendGltfBytes(MeshData& mesh, const std::string& path, std::vector<unsigned char> bytes,
                      const glm::mat4& transform = glm::mat4(1.0f));
 
+// Decodes an image file's bytes (whatever stb_image reads: PNG, JPEG, ...) to RGBA8 in `texture`,
+// at most `maxSide` pixels a side; returns why not, or "".
+std::string decodeImageFile(const std::vector<unsigned char>& bytes, int maxSide, Texture& texture);
+
 struct CameraDesc {
     glm::vec3 position{0.0f, 1.7f, 5.0f};
     glm::vec3 target{0.0f, 1.0f, 0.0f};
@@ -97,6 +102,10 @@ struct LightDesc {
     float radius = 0.05f;
     uint32_t shadowMapSize = 2048;  // 0: no shadow map; point lights: 0 unless given (a
                                     // cube map of six faces this size)
+    // "cookie": the light's color image (a spot's or a directional light's, projected with its
+    // shadow map's matrix, with a shadow map or without), decoded to RGBA8 as stored (sRGB); null:
+    // none. Shared: a light is copied by value, its image is not.
+    std::shared_ptr<const Texture> cookie;
 };
 
 struct MediumDesc {

@@ -22,6 +22,8 @@ namespace {
 using nlohmann::json;
 
 constexpr uint64_t kSceneFileCap = 16 * kMiB;
+constexpr uint64_t kCookieFileCap = 64 * kMiB;
+constexpr int kMaxCookieSide = 4096;
 // The plugin's ranges (lightscatter.h, lightscatter::limits), so that a scene the plugin would
 // refuse is refused here, before any device exists, naming the scene's own field.
 namespace limits = lightscatter::limits;
@@ -454,7 +456,7 @@ class SceneReader {
         checkKeys(v, name,
                   {"type", "position", "direction", "intensity", "innerConeAngleDegrees",
                    "outerConeAngleDegrees", "halfAngleDegrees", "range", "rangeFalloff", "radius",
-                   "shadowMapSize"});
+                   "shadowMapSize", "cookie"});
         if (const json* x = member(v, "type")) {
             light.type = oneOf<lightscatter::LightType>(
                 *x, name + ".type",
@@ -512,6 +514,37 @@ class SceneReader {
         if (const json* x = member(v, "shadowMapSize")) {
             light.shadowMapSize = shadowMapSize(*x, name + ".shadowMapSize");
         }
+        if (const json* x = member(v, "cookie")) {
+            // The plugin projects a light color with the light's one shadow matrix: a point light
+            // has none, and the host fits a sun's to the view, which would slide its cookie with
+            // the camera.
+            if (light.type != lightscatter::LightType::Spot)
+                fail(name + ".cookie needs a spot light (its cone's projection casts the image; " +
+                     "a point light has no single projection, and the host fits a sun's shadow " +
+                     "map to the view, which would slide a cookie with the camera)");
+            light.cookie = cookie(*x, name + ".cookie");
+        }
+    }
+
+    // A light's cookie: an image file, relative to the scene's folder, decoded now so that a
+    // missing, unreadable or undecodable file is one error naming the field. At most
+    // kMaxCookieSide a side: the marching methods cut each ray at every row and column of its
+    // texels.
+    std::shared_ptr<const Texture> cookie(const json& v, const std::string& name) const {
+        const std::string file = modelPath(v, name);
+        Texture texture;
+        std::string why;
+        try {
+            why = decodeImageFile(readInputBytes(file, "cookie image", kCookieFileCap),
+                                  kMaxCookieSide, texture);
+        } catch (const InputFileError& e) {
+            why = e.what();
+        }
+        if (!why.empty())
+            fail(name + " '" + echoText(v.get<std::string>(), kMaxPathChars) +
+                 "' is not an image the host reads: " + why);
+        texture.name = file;
+        return std::make_shared<const Texture>(std::move(texture));
     }
 
     uint32_t shadowMapSize(const json& v, const std::string& name) const {

@@ -105,6 +105,17 @@ void addSceneFiles(const fs::path& scene, std::vector<ReferencedFile>& out) {
         out.push_back({p.string(), scene.lexically_normal().string()});
         addGltfFiles(p, out);
     }
+    // A light's cookie image ("light" or each of "lights").
+    std::vector<const json*> lights;
+    if (const auto l = j->find("light"); l != j->end()) lights.push_back(&*l);
+    if (const auto l = j->find("lights"); l != j->end() && l->is_array())
+        for (const json& light : *l) lights.push_back(&light);
+    for (const json* light : lights)
+        if (light->is_object())
+            if (const auto c = light->find("cookie"); c != light->end() && c->is_string())
+                out.push_back(
+                    {(scene.parent_path() / c->get<std::string>()).lexically_normal().string(),
+                     scene.lexically_normal().string()});
 }
 
 }  // namespace

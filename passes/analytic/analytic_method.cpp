@@ -21,7 +21,10 @@ std::string AnalyticMethod::refusal(const LightSetup& s) const {
     if (s.shadowed)
         return "method analytic (seed 001) cannot cast shadows; this frame has a shadow map (use "
                "auto, epipolar, brute-force or cone-march)";
-    return refuseNoise(s, name());
+    return firstRefusal(
+        {refuseNoise(s, name()),
+         refuseUnshadowedLightColor(s, name(),
+                                    "(seed 001) integrates an unshadowed light in closed form")});
 }
 
 std::string AnalyticMethod::notice(const LightSetup& s) const {

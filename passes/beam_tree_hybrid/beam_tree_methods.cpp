@@ -29,6 +29,14 @@ std::string BeamTreeMethod::refusal(const LightSetup& s) const {
         return "method " + n +
                " (seed 004) builds its beam tree from a point or spot light; this frame's light is "
                "directional (use auto, epipolar, planes or cone-march)";
+    // The lit pyramids integrate the light in closed form, shadowed or not: a color that varies
+    // along the ray cannot enter them. beam-tree-sampling's planes look the color up.
+    if (litSpace() == LitSpace::ClosedForm && s.lightColor)
+        return "method " + n +
+               " (seed 004) integrates its lit space in closed form and cannot vary the light's "
+               "color along the ray: " +
+               s.lightPath +
+               "Color needs epipolar, brute-force, cone-march, planes, beam-tree-sampling or auto";
     return firstRefusal(
         {refuseNoise(s, n), refuseNoDepthAttachment(
                                 s, "method " + n + " (seed 004) depth-tests its sampling planes")});

@@ -11,13 +11,13 @@
 namespace ls {
 
 // Bindings only some frames have are build-time variants (a pipeline never declares a descriptor
-// it is not given); the cookie is looked up in the shadow map's space, so it comes with one.
+// it is not given); the cookie is looked up in the light's projection, with a shadow map or not.
 // A point light's cube map (`cube`, with a shadow map) comes without light color (refused with it).
 rg::ShaderCode planesShader(bool shadowMap, bool cookie, bool noise, bool cube) {
     return pickShader(ls_spirv::planes_frag_variants,
                       {{"LS_SHADOW_MAP", shadowMap},
                        {"LS_CUBE_SHADOW", shadowMap && cube},
-                       {"LS_LIGHT_COLOR", shadowMap && cookie && !cube},
+                       {"LS_LIGHT_COLOR", cookie && !(shadowMap && cube)},
                        {"LS_NOISE", noise}});
 }
 

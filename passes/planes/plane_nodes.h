@@ -18,8 +18,9 @@ const PlanePlacement& placementOf(const LightFrame& frame);
 
 struct PlanesInputs {
     FrameContext frame;  // its constants, and the depth: a read-only depth attachment
-    // light.shadowMap invalid: no shadow-map sampling; light.lightColor: the cookie, in the shadow
-    // map's space, invalid without one. The table is not read.
+    // light.shadowMap invalid: no shadow-map sampling; light.lightColor: the cookie, projected with
+    // the light's shadowViewProjection (with a shadow map or without), invalid without one. The
+    // table is not read.
     LightImages light;
     rg::ImageRef noise;  // tiling noise (red, green layers); invalid: no noise
 };

@@ -42,7 +42,7 @@ ChainOutputs PlanesMethod::addChain(rg::RenderGraph& g, const ChainInputs& in, c
     const FrameContext frame = frameContext(in, c);
     PlanesInputs planes{frame, {}, {}};
     if (c.shadowed && o.shadowSampling) planes.light.shadowMap = in.shadowMap;
-    if (c.shadowed) planes.light.lightColor = in.lightColor;
+    planes.light.lightColor = in.lightColor;  // projected like the shadow map, with one or not
     planes.light.shadowMapSize = c.shadowMapSize;
     if (o.noise) planes.noise = in.noise;
     PlanesOptions planeOptions;

@@ -1,6 +1,6 @@
 #pragma once
 // A light's chain inputs as the nodes take them: the frame's part, and the light's images (its
-// shadow map and light color only where it is shadowed).
+// shadow map where it is shadowed, its light color wherever it is given).
 #include "frame_context.h"
 #include "method_unit.h"
 
@@ -14,10 +14,9 @@ inline FrameContext frameContext(const ChainInputs& in, const ChainConfig& c) {
 inline LightImages lightImages(const ChainInputs& in, const ChainConfig& c) {
     LightImages l;
     l.table = in.table;
-    if (c.shadowed) {
-        l.shadowMap = in.shadowMap;
-        l.lightColor = in.lightColor;
-    }
+    if (c.shadowed) l.shadowMap = in.shadowMap;
+    // Without a shadow map too: an unshadowed light with a color is marched (addUnshadowed).
+    l.lightColor = in.lightColor;
     l.shadowMapSize = c.shadowMapSize;
     return l;
 }
@@ -25,6 +24,9 @@ inline LightImages lightImages(const ChainInputs& in, const ChainConfig& c) {
 // An unshadowed light's Lin for the methods that march a shadow map (epipolar, brute force): the
 // point-light table, or the directional closed form, per pixel.
 inline std::string unshadowedSummary(const ChainConfig& c) {
+    if (c.spec.lightColor)
+        return "unshadowed light with a light color: marched per pixel, a piece per row or column "
+               "of the color's texels crossed";
     return c.light == LightType::Directional
                ? "unshadowed directional light: closed form per pixel"
                : "unshadowed light: the point-light table in closed form per pixel";

@@ -26,12 +26,14 @@ struct FixupPush {
 
 }  // namespace
 
-// A point light's cube map comes without light color (refused with it).
-rg::ShaderCode pixelMarchShader(const ScatterSpec& spec) {
+// A point light's cube map comes without light color (refused with it). Without a shadow map the
+// march is an unshadowed light's with a color (addUnshadowed), its only reason to march.
+rg::ShaderCode pixelMarchShader(const ScatterSpec& spec, bool shadowMap) {
     return pickShader(ls_spirv::pixel_march_frag_variants,
                       {{"LS_NEEDS_TABLE", spec.light != LightType::Directional},
                        {"LS_LIGHT_COLOR", spec.lightColor && !spec.cubeShadow},
                        {"LS_CUBE_SHADOW", spec.cubeShadow},
+                       {"LS_NO_SHADOW_MAP", !shadowMap},
                        {"LS_COMPOSITE", 0},
                        {"LS_COLOR_RGBA32F", 0},
                        {"LS_WITH_OUTPUT", 0}});
@@ -42,6 +44,7 @@ rg::ShaderCode fixupShader(const ScatterSpec& spec, VkFormat color, bool withOut
                                {{"LS_NEEDS_TABLE", spec.light != LightType::Directional},
                                 {"LS_LIGHT_COLOR", spec.lightColor && !spec.cubeShadow},
                                 {"LS_CUBE_SHADOW", spec.cubeShadow},
+                                {"LS_NO_SHADOW_MAP", 0},
                                 {"LS_COMPOSITE", 1}},
                                color, withOutput);
 }
@@ -60,11 +63,11 @@ void drawPixelMarch(rg::PassContext& ctx, const Shared& shared, const ScatterSpe
     // The variant follows from the light's images declared in the table, not from the spec's flag.
     ScatterSpec spec = lightSpec;
     spec.lightColor = table.has(LS_BINDING_LIGHT_COLOR);
-    auto desc =
-        fullscreenPipeline(draw.composite ? fixupShader(spec, ctx.format(draw.composite->color),
-                                                        draw.composite->inscatterOut.valid())
-                                          : pixelMarchShader(spec),
-                           ctx, table.layout());
+    auto desc = fullscreenPipeline(draw.composite
+                                       ? fixupShader(spec, ctx.format(draw.composite->color),
+                                                     draw.composite->inscatterOut.valid())
+                                       : pixelMarchShader(spec, table.has(LS_BINDING_SHADOW_MAP)),
+                                   ctx, table.layout());
     desc.pushConstantBytes = draw.composite ? sizeof(FixupPush) : sizeof(PixelMarchPush);
     desc.specialization = spec.constants();
     if (draw.whereStencilIsZero) {

@@ -44,6 +44,16 @@ std::string refuseNoDepthAttachment(const LightSetup& s, const std::string& what
            " against the engine's depth: depth.usage needs DEPTH_STENCIL_ATTACHMENT beside SAMPLED";
 }
 
+std::string refuseUnshadowedLightColor(const LightSetup& s, const std::string& method,
+                                       const std::string& how) {
+    if (!s.lightColor || s.shadowed) return {};
+    // lightPath is "light" or "lights[i].light": the color is its sibling field.
+    return "method " + method + " " + how +
+           " and cannot vary its color along the ray: " + s.lightPath +
+           "Color without a shadow map needs epipolar, brute-force, cone-march, " +
+           "planes or auto";
+}
+
 std::string firstRefusal(std::initializer_list<std::string> refusals) {
     for (const std::string& r : refusals)
         if (!r.empty()) return r;

@@ -17,6 +17,11 @@ std::string refuseSimplified(const LightSetup& s, const std::string& method);
 std::string refuseSkippedShadows(const LightSetup& s, const std::string& method);
 // The methods that depth-test planes against the engine's depth need it as an attachment.
 std::string refuseNoDepthAttachment(const LightSetup& s, const std::string& what);
+// A light color (cookie) on a light without a shadow map varies the light along each ray, which a
+// closed form over the whole ray cannot carry. `how` says what the method integrates in closed
+// form.
+std::string refuseUnshadowedLightColor(const LightSetup& s, const std::string& method,
+                                       const std::string& how);
 // The first of the refusals given that is not empty.
 std::string firstRefusal(std::initializer_list<std::string> refusals);
 

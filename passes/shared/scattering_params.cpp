@@ -112,7 +112,8 @@ FrameConstants makeFrameConstants(const CameraParams& camera, const LightParams&
     f.betaT = glm::vec4(medium.betaT(), std::max(light.radius, 1e-6f));
     f.depthInfo = {camera.reversedZ ? 1.0f : 0.0f, camera.infiniteFar ? 1.0f : 0.0f,
                    camera.nearPlane, camera.farPlane};
-    const float size = static_cast<float>(std::max(light.shadowMapSize, 1u));
+    const float size = static_cast<float>(
+        std::max(light.shadowMapSize > 0 ? light.shadowMapSize : light.lightColorSize, 1u));
     f.shadowInfo = {size, 1.0f / size, light.shadowReversedZ ? 1.0f : 0.0f,
                     settings.shadowDepthBias};
     f.epipolar = {static_cast<float>(settings.slices), static_cast<float>(settings.samples),

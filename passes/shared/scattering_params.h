@@ -42,6 +42,9 @@ struct LightParams {
     glm::mat4 shadowViewProj{1.0f};
     glm::mat4 cubeFaceViewProj[6]{};  // point light with a shadow map: world -> clip per face
     uint32_t shadowMapSize = 0;       // 0: unshadowed
+    // The light color's larger side (0: none): an unshadowed light's march takes one step per
+    // texel of it, as a shadowed one takes one per shadow-map texel.
+    uint32_t lightColorSize = 0;
     bool shadowReversedZ = false;
 };
 

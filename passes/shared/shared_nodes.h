@@ -14,7 +14,8 @@ struct UploadConstantsInputs {
 rg::BufferRef addUploadConstants(rg::RenderGraph& graph, const UploadConstantsInputs& in);
 
 // Closed-form Lin for a light without a shadow map (R16G16B16A16_SFLOAT, screen); reads
-// light.table (an unshadowed light has no other image).
+// light.table. With light.lightColor, a per-pixel march through the color instead (the color
+// varies along the ray, which the closed form cannot carry).
 struct UnshadowedInputs {
     FrameContext frame;
     LightImages light;

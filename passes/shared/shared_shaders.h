@@ -7,7 +7,8 @@
 
 namespace ls {
 
-rg::ShaderCode pixelMarchShader(const ScatterSpec& spec);
+// shadowMap false: an unshadowed light marched for its light color (spec.lightColor).
+rg::ShaderCode pixelMarchShader(const ScatterSpec& spec, bool shadowMap = true);
 // The march compositing into the engine's color (epipolar's fix-up).
 rg::ShaderCode fixupShader(const ScatterSpec& spec, VkFormat color, bool withOutput);
 // withLin: a Lin image is read (else only the extinction is applied); addOnly: a frame's later

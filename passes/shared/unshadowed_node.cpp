@@ -1,3 +1,4 @@
+#include "pixel_march.h"
 #include "screen_lin_node.h"
 #include "shader_variant.h"
 #include "shared_nodes.h"
@@ -11,7 +12,29 @@ rg::ShaderCode unshadowedShader(const ScatterSpec& spec) {
                       {{"LS_NEEDS_TABLE", spec.light != LightType::Directional}});
 }
 
+namespace {
+
+// An unshadowed light with a light color: the color varies along each ray, which no closed form
+// over the ray carries, so each pixel marches it as brute force marches a shadow map (one step per
+// texel of the color, the visibility 1), the steps integrated in closed form between them.
+rg::ImageRef addColoredUnshadowed(rg::RenderGraph& graph, const UnshadowedInputs& in) {
+    rg::ImageRef lin = graph.createImage("in-scattering (screen)",
+                                         rg::ImageDesc::screen(VK_FORMAT_R16G16B16A16_SFLOAT));
+    auto pass = graph.addPass("unshadowed light-color march", rg::PassType::Graphics);
+    LightImages light = in.light;
+    light.shadowMap = {};
+    const rg::BindingTable table = declarePixelMarch(pass, in.frame, light);
+    lin = pass.colorAttachment(lin, rg::LoadOp::DontCare);
+    pass.execute([shared = in.frame.shared, spec = in.frame.spec, table](rg::PassContext& ctx) {
+        drawPixelMarch(ctx, shared, spec, table, {.pipeline = "unshadowed light-color march"});
+    });
+    return lin;
+}
+
+}  // namespace
+
 rg::ImageRef addUnshadowed(rg::RenderGraph& graph, const UnshadowedInputs& in) {
+    if (in.light.lightColor.valid()) return addColoredUnshadowed(graph, in);
     return addScreenLinNode(
         graph, in.frame.shared, in.frame.spec,
         {.name = "unshadowed in-scattering",

@@ -765,15 +765,20 @@ void setupLight(FrameSetup& s, const LightInput& light, const LightPaths& at, bo
         for (size_t i = 0; i < 6; ++i)
             s.light.cubeFaceViewProj[i] = checkCubeFace(
                 l.cubeFaceViewProjections[i], i, s.light.position, l.shadowReversedZ, at.light);
-    } else if (l.shadowMapSize > 0) {
+    } else if (l.shadowMapSize > 0 || (light.lightColor && l.type != LightType::Point)) {
+        // A light color without a shadow map is projected with the same matrix (the host computes
+        // it for such a spot or directional light too), so it is checked the same way.
         s.light.shadowViewProj = matrix(l.shadowViewProjection, at.light + ".shadowViewProjection");
         // An all-zero (default) or otherwise singular matrix puts every point at one texel and
         // depth: the light would silently vanish or light everything.
         if (conditioning(s.light.shadowViewProj) < 1e-9)
-            fail(at.light +
-                 ".shadowViewProjection is singular (all zero?): with light.shadowMapSize " +
-                 std::to_string(l.shadowMapSize) +
-                 " it must be the shadow map's world -> light clip matrix");
+            fail(at.light + ".shadowViewProjection is singular (all zero?): " +
+                 (l.shadowMapSize > 0
+                      ? "with light.shadowMapSize " + std::to_string(l.shadowMapSize) +
+                            " it must be the shadow map's world -> light clip matrix"
+                      : "with " + at.lightColor +
+                            " it must be the world -> light clip matrix the color is projected "
+                            "with"));
         checkMatrixScale(s.light.shadowViewProj, at.light + ".shadowViewProjection");
     }
 
@@ -808,13 +813,15 @@ void setupLight(FrameSetup& s, const LightInput& light, const LightPaths& at, bo
         if (light.lightColor)
             checkImage(*light.lightColor, at.lightColor, VK_IMAGE_USAGE_SAMPLED_BIT, "SAMPLED");
     }
-    if (s.lightColor && !s.shadowed)
-        fail(at.lightColor +
-             " needs a shadow-mapped light: the color is looked up in the shadow map's space");
+    // Without a shadow map the color is marched at its own resolution (a piece per texel row or
+    // column crossed).
+    if (light.lightColor)
+        s.light.lightColorSize =
+            std::max(light.lightColor->extent.width, light.lightColor->extent.height);
     if (s.lightColor && l.type == LightType::Point)
         fail(at.lightColor +
              " is not supported with a point light: a light-space color texture needs a "
-             "spot or directional light's single shadow-map frustum");
+             "spot or directional light's single projection (light.shadowViewProjection)");
 
     applySettings(s, s.settings, l.shadowMapSize);
 }

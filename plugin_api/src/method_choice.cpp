@@ -80,6 +80,10 @@ MethodChoice autoChoice(const FrameSetup& s, bool lightReachesView) {
             refuse(set + ".lightModel = simplified and " + set +
                    ".shadowSampling = false: no method honours both (use shadowSampling true, or "
                    "no shadow map, which analytic then integrates)");
+        if (s.lightColor)
+            refuse(set + ".lightModel = simplified and " + s.lightPath +
+                   "Color: no method honours both (the simplified model's closed forms cannot "
+                   "vary the light's color along a ray)");
         if (!s.shadowed)
             return closedForm(
                 "unshadowed point light, seed 004's simplified light model: its closed form (2.17) "
@@ -106,6 +110,12 @@ MethodChoice autoChoice(const FrameSetup& s, bool lightReachesView) {
     if (skipShadows)
         return pick(Method::ConeMarch,
                     "shadow sampling is off: seed 003's low-end mode, which only cone-march has");
+    // A light color without a shadow map varies the light along each ray: no closed form carries
+    // it, so the light is marched per pixel through the color (epipolar's unshadowed form).
+    if (!s.shadowed && s.lightColor)
+        return sampled(
+            "unshadowed light with a light color: marched per pixel through the color (the closed "
+            "forms cannot vary it along a ray)");
     if (!s.shadowed && pointLike) {
         const float tau = ls::opticalDepthToLight(s);
         if (ls::isotropicMedium(s) && tau < kAnalyticMaxOpticalDepth)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <exception>
 #include <limits>
 #include <mutex>
@@ -10,8 +11,10 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "camera_math.h"
 #include "float64_model/closed_forms.h"
 #include "float64_model/inscatter_integral.h"
+#include "float64_model/ray_geometry.h"
 #include "visibility.h"
 
 namespace host::reference {
@@ -52,8 +55,46 @@ ReferenceScene::ReferenceScene(const SceneDesc& scene, const MeshData& mesh, uin
       bvh_(Bvh::fromMesh(mesh)),
       medium_(toReferenceMedium(scene.medium)),
       options_(options) {
-    for (std::size_t i = 0; i < scene.lightCount(); ++i)
-        lights_.push_back(toReferenceLight(scene.lightAt(i)));
+    const double aspect = static_cast<double>(width) / static_cast<double>(height);
+    for (std::size_t i = 0; i < scene.lightCount(); ++i) {
+        const LightDesc& l = scene.lightAt(i);
+        lights_.push_back(toReferenceLight(l));
+        Cookie c;
+        if (l.cookie) {
+            // The matrix the host hands the plugin (a spot's does not depend on the parts).
+            c.projection = glm::dmat4(
+                shadowViewProjection(l, mesh.bounds, {}, scene.camera, static_cast<float>(aspect)));
+            c.width = l.cookie->width;
+            c.height = l.cookie->height;
+            c.linear.reserve(std::size_t{c.width} * c.height);
+            auto decode = [](uint8_t v) {  // the sRGB transfer function, as Vulkan decodes it
+                const double x = v / 255.0;
+                return x <= 0.04045 ? x / 12.92 : std::pow((x + 0.055) / 1.055, 2.4);
+            };
+            for (std::size_t t = 0; t < std::size_t{c.width} * c.height; ++t)
+                c.linear.emplace_back(decode(l.cookie->rgba[4 * t]),
+                                      decode(l.cookie->rgba[4 * t + 1]),
+                                      decode(l.cookie->rgba[4 * t + 2]));
+        }
+        cookies_.push_back(std::move(c));
+    }
+}
+
+glm::dvec3 ReferenceScene::Cookie::at(const glm::dvec3& p) const {
+    const glm::dvec4 X = projection * glm::dvec4(p, 1.0);
+    if (!(X.w > 0.0)) return glm::dvec3(1.0);
+    const double u = X.x / X.w * 0.5 + 0.5, v = X.y / X.w * 0.5 + 0.5;
+    if (u < 0.0 || u > 1.0 || v < 0.0 || v > 1.0) return glm::dvec3(1.0);
+    const double px = u * width - 0.5, py = v * height - 0.5;
+    const double fx = std::floor(px), fy = std::floor(py);
+    auto texel = [&](double x, double y) {
+        const auto cx = static_cast<std::size_t>(std::clamp(x, 0.0, width - 1.0));
+        const auto cy = static_cast<std::size_t>(std::clamp(y, 0.0, height - 1.0));
+        return linear[cy * width + cx];
+    };
+    const double ax = px - fx, ay = py - fy;
+    return glm::mix(glm::mix(texel(fx, fy), texel(fx + 1, fy), ax),
+                    glm::mix(texel(fx, fy + 1), texel(fx + 1, fy + 1), ax), ay);
 }
 
 ls::ref::Ray ReferenceScene::pixelRay(uint32_t x, uint32_t y) const {
@@ -82,7 +123,37 @@ glm::dvec3 ReferenceScene::inscatter(const ls::ref::Ray& ray, std::size_t light)
     }
     ls::ref::QuadOptions quad;
     quad.relTol = options_.relTol;
-    return ls::ref::integrateInscatter(medium_, l, ray, lit, quad).value;
+    const Cookie& cookie = cookies_.at(light);
+    if (cookie.width == 0) return ls::ref::integrateInscatter(medium_, l, ray, lit, quad).value;
+    // The cookie's factor under the model's integrand, with the pieces integrateInscatter takes and
+    // cuts where the factor jumps (the image's edges) or has no value (the plane through the
+    // light); its texels' kinks are left to the adaptive rule.
+    const std::vector<ls::ref::Interval> lit01 = ls::ref::normalizeIntervals(lit, ray.length);
+    if (lit01.empty()) return glm::dvec3(0.0);
+    std::vector<double> cuts = ls::ref::lightFeatureDistances(l, ray);
+    const glm::dvec3 beta = medium_.betaT();
+    if (const double betaMax = std::max({beta.x, beta.y, beta.z}); betaMax > 0.0)
+        for (const ls::ref::Interval& in : lit01)
+            ls::ref::appendGeometricMesh(cuts, in.begin, 1.0 / (16.0 * betaMax), 1.0, in.begin,
+                                         in.end);
+    const glm::dvec4 a = cookie.projection * glm::dvec4(ray.origin, 1.0);
+    const glm::dvec4 b = cookie.projection * glm::dvec4(ray.direction, 0.0);
+    auto crossing = [&](double c0, double c1) {  // where c0 + s c1 = 0
+        if (c1 != 0.0) cuts.push_back(-c0 / c1);
+    };
+    crossing(a.w, b.w);
+    for (double ndc : {-1.0, 1.0}) {
+        crossing(a.x - ndc * a.w, b.x - ndc * b.w);
+        crossing(a.y - ndc * a.w, b.y - ndc * b.w);
+    }
+    const std::vector<ls::ref::Interval> pieces = ls::ref::splitAt(lit01, std::move(cuts));
+    return ls::ref::integrateAdaptive(
+               [&](double s) {
+                   return ls::ref::inscatterIntegrand(medium_, l, ray, s) *
+                          cookie.at(ray.origin + s * ray.direction);
+               },
+               pieces, quad)
+        .value;
 }
 
 glm::dvec3 ReferenceScene::inscatter(const ls::ref::Ray& ray) const {

@@ -10,11 +10,17 @@
 // whether or not the GPU is given a cube shadow map. A comparison of an unshadowed GPU point light
 // against it therefore counts the missing shadows as error, which is the model's intended judging;
 // pass `shadows = false` for the unshadowed image instead.
+//
+// A spot's cookie (SceneDesc's light.cookie) multiplies its irradiance as docs/model.md says: the
+// image's linear value (sRGB decoded, then bilinear, clamped to the edge texels, as the GPU samples
+// the host's R8G8B8A8_SRGB image) where the host's shadowViewProjection projects the point, 1
+// outside the image or behind the light.
 #include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <vector>
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include "bvh.h"
@@ -77,10 +83,19 @@ class ReferenceScene {
     [[nodiscard]] const ls::ref::Medium& medium() const { return medium_; }
     [[nodiscard]] const ReferenceOptions& options() const { return options_; }
 
+    // A light's cookie: linear RGB texels and the host's projection; width 0: none.
+    struct Cookie {
+        uint32_t width = 0, height = 0;
+        std::vector<glm::dvec3> linear;  // row 0 at the top (v = 0)
+        glm::dmat4 projection{1.0};
+        [[nodiscard]] glm::dvec3 at(const glm::dvec3& p) const;
+    };
+
   private:
     PixelCamera camera_;
     Bvh bvh_;
     std::vector<ls::ref::Light> lights_;
+    std::vector<Cookie> cookies_;  // one per light
     ls::ref::Medium medium_;
     ReferenceOptions options_;
 };

@@ -96,6 +96,69 @@ void marchFrustumSegment(inout Inscatter acc, vec3 C, vec3 v, float f0, float f1
     marchFrustumSegmentOf(frame.lightViewProj, acc, C, v, f0, f1, maxSteps, splitAtDepth);
 }
 
+#if defined(LS_NO_SHADOW_MAP) && LS_NO_SHADOW_MAP
+// Without a shadow map only the light color varies along the ray, and it is projected as the
+// methods that sample points project it (light_at.glsl: in front of the light, within the
+// frustum's sides; it has no near or far plane): the ray is clipped to those planes alone, and its
+// pieces stay within [0, 1] in the color's image.
+void clipToColorProjection(vec3 C, vec3 v, inout float t0, inout float t1) {
+    vec4 a = frame.lightViewProj * vec4(C, 1.0);
+    vec4 b = frame.lightViewProj * vec4(v, 0.0);
+    clipHalfLine(a.w + a.x, b.w + b.x, t0, t1);
+    clipHalfLine(a.w - a.x, b.w - b.x, t0, t1);
+    clipHalfLine(a.w + a.y, b.w + b.y, t0, t1);
+    clipHalfLine(a.w - a.y, b.w - b.y, t0, t1);
+    clipHalfLine(a.w - 1e-6 * abs(a.w), b.w, t0, t1);
+}
+#endif
+
+#if defined(LS_NO_SHADOW_MAP) && LS_NO_SHADOW_MAP
+// Adds [f0, f1] (inside the color's projection) to acc through the light color alone. The color is
+// bilinear between texel centres, so the ray is cut where it crosses a row or a column of them:
+// within each piece the color is smooth, and its value at the piece's middle is right to second
+// order (at a step's end, a one-texel lead of a stained-glass window would be hit or missed whole).
+// That is at most two pieces per texel crossed, each integrated in closed form.
+void marchColorSegment(inout Inscatter acc, vec3 C, vec3 v, float f0, float f1) {
+    vec4 X0 = frame.lightViewProj * vec4(C + f0 * v, 1.0);
+    vec4 X1 = frame.lightViewProj * vec4(C + f1 * v, 1.0);
+    vec2 uv0 = X0.xy / X0.w * 0.5 + 0.5, uv1 = X1.xy / X1.w * 0.5 + 0.5;
+    float iw0 = 1.0 / X0.w, iw1 = 1.0 / X1.w;
+    // In texel-centre units the rows and columns of centres are the integers.
+    vec2 p0 = uv0 * frame.shadowInfo.x - 0.5, dp = (uv1 - uv0) * frame.shadowInfo.x;
+    vec2 next = vec2(2.0), inc = vec2(2.0);  // a of the next crossing per axis, a between two
+    for (int k = 0; k < 2; ++k) {
+        if (abs(dp[k]) < 1e-12) continue;
+        float line = dp[k] > 0.0 ? floor(p0[k]) + 1.0 : ceil(p0[k]) - 1.0;
+        next[k] = (line - p0[k]) / dp[k];
+        inc[k] = 1.0 / abs(dp[k]);
+    }
+    // The closed form weighs a piece by the light reaching the camera from it, which extinction
+    // tilts towards the piece's near end: a piece more than kColorPieceDepth optical depth long is
+    // cut further (at most 8 parts), so that its color is not taken at the wrong middle (on a sun's
+    // long sky rays through a coarse cookie that was most of the error).
+    const float kColorPieceDepth = 0.05;
+    float betaMax = max(frame.betaT.r, max(frame.betaT.g, frame.betaT.b));
+    float a = 0.0, da = f0;
+    int guard = 2 * int(frame.shadowInfo.x) + 4;
+    while (a < 1.0 && guard-- > 0) {
+        float b = min(min(next.x, next.y), 1.0);
+        float db = b >= 1.0 ? f1 : mix(f0 * iw0, f1 * iw1, b) / mix(iw0, iw1, b);
+        int m = int(clamp(ceil((db - da) * betaMax / kColorPieceDepth), 1.0, 8.0));
+        for (int j = 1; j <= m; ++j) {
+            float e = mix(a, b, float(j) / float(m));
+            float de = j == m ? db : mix(f0 * iw0, f1 * iw1, e) / mix(iw0, iw1, e);
+            LS_COUNT_LOOKUP();
+            advance(acc, de, lightColorAt(mix(uv0, uv1, mix(a, b, (float(j) - 0.5) / float(m)))));
+        }
+        if (next.x <= b) next.x += inc.x;
+        if (next.y <= b) next.y += inc.y;
+        a = b;
+        da = db;
+    }
+    advance(acc, f1, lightColorAt(uv1));  // what the guard left, if anything
+}
+#endif
+
 // Lin along C + d v, d in [0, S]; maxSteps 0 means one step per texel.
 vec3 marchRay(vec3 C, vec3 v, float S, uint maxSteps) {
     float t0, t1;
@@ -103,11 +166,19 @@ vec3 marchRay(vec3 C, vec3 v, float S, uint maxSteps) {
     if (!(t0 < t1)) return vec3(0.0);
     Inscatter acc = beginInscatter(C, v, t0);
     float f0 = t0, f1 = t1;
+#if defined(LS_NO_SHADOW_MAP) && LS_NO_SHADOW_MAP
+    clipToColorProjection(C, v, f0, f1);
+    if (f0 < f1) {
+        advance(acc, f0, vec3(1.0));
+        marchColorSegment(acc, C, v, f0, f1);
+    }
+#else
     clipToShadowFrustum(C, v, f0, f1);
     if (f0 < f1) {
         advance(acc, f0, vec3(1.0));
         marchFrustumSegment(acc, C, v, f0, f1, maxSteps, false);
     }
+#endif
     advance(acc, t1, vec3(1.0));
     return finishInscatter(acc, v);
 }

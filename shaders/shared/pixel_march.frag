@@ -3,11 +3,14 @@
 // Seed 000's starting point: a pixel marches its own ray through every shadow-map texel it
 // crosses. Brute force runs it on every pixel (the on-GPU reference the other methods are compared
 // with); the epipolar fix-up on the pixels its unwarp could not serve, with an optional step cap,
-// compositing what it marches into the engine's color (LS_COMPOSITE) as the unwarp does.
+// compositing what it marches into the engine's color (LS_COMPOSITE) as the unwarp does. With
+// LS_NO_SHADOW_MAP (and LS_LIGHT_COLOR) it marches an unshadowed light whose color varies along
+// the ray, a piece per row or column of the color's texels crossed.
 #include "camera.glsl"
 layout(binding = LS_BINDING_DEPTH) uniform sampler2D depthBuffer;  // the engine's depth
 #if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
 layout(binding = LS_BINDING_SHADOW_MAP) uniform sampler2DArray shadowMap;  // a point light's six cube faces
+#elif defined(LS_NO_SHADOW_MAP) && LS_NO_SHADOW_MAP
 #else
 layout(binding = LS_BINDING_SHADOW_MAP) uniform sampler2D shadowMap;
 #endif

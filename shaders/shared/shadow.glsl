@@ -13,6 +13,10 @@ float toStandardDepth(float z) { return frame.shadowInfo.z > 0.5 ? 1.0 - z : z; 
 #if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
 int shadowFace = 0;  // the cube face (layer) the look-ups below read
 float shadowFetch(ivec2 p) { return texelFetch(shadowMap, ivec3(p, shadowFace), 0).r; }
+#elif defined(LS_NO_SHADOW_MAP) && LS_NO_SHADOW_MAP
+// A march without a shadow map (an unshadowed light whose color varies along the ray): there is
+// no map to read, and shadowFootprint() puts every point outside it, so every point is lit.
+float shadowFetch(ivec2 p) { return 1.0; }
 #else
 float shadowFetch(ivec2 p) { return texelFetch(shadowMap, p, 0).r; }
 #endif
@@ -38,7 +42,11 @@ struct ShadowFootprint {
 
 ShadowFootprint shadowFootprint(vec2 uv) {
     ShadowFootprint s;
+#if defined(LS_NO_SHADOW_MAP) && LS_NO_SHADOW_MAP
+    s.inside = false;
+#else
     s.inside = !outsideShadowMap(uv);
+#endif
     s.depth = vec4(1.0);
     s.f = vec2(0.0);
     if (!s.inside) return s;

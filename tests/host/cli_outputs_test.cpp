@@ -73,6 +73,22 @@ TEST(CliOutputs, AnInputIsNeverOverwritten) {
     EXPECT_EQ(read("settings.json"), "{}");
 }
 
+// A light's cookie is an input too: the scene's own (render's inputs), and another scene's in the
+// output's folder (the folder's scan).
+TEST(CliOutputs, ACookieIsNeverOverwritten) {
+    const std::string png = std::string(LS_SOURCE_DIR) + "/scenes/stained_glass_cookie.png";
+    fs::copy_file(png, path("glass.png"), fs::copy_options::overwrite_existing);
+    writeFile("glass.json", R"({"light": {"type": "spot", "shadowMapSize": 0,
+        "cookie": "glass.png"}})");
+    const auto size = fs::file_size(path("glass.png"));
+    expectFailure(run("render glass.json --size 8x8 --out glass.png"),
+                  "--out glass.png: is a file the scene reads (" + path("glass.png") +
+                      "); an output must not overwrite an input");
+    expectFailure(run("render " + scene("point_fog") + " --size 8x8 --out glass.png"),
+                  "--out glass.png: is a file that glass.json reads");
+    EXPECT_EQ(fs::file_size(path("glass.png")), size);
+}
+
 TEST(CliOutputs, AnUnwritableOutputFailsBeforeAnythingIsWritten) {
     writeFile("old.png", "the previous image");
     const auto r =

@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -514,6 +516,55 @@ TEST(ReferenceRenderer, SeveralLightsAreTheSumOfTheirSingleRenders) {
     ASSERT_EQ(pointLit.size(), 1u);
     EXPECT_NEAR(pointLit[0].begin, 1.999 - 1.5, 1e-8);
     EXPECT_NEAR(pointLit[0].end, 1.999, 1e-8);
+}
+
+// A spot's cookie: a uniform one scales the image by its sRGB-decoded value per channel, and one
+// black on half of its image takes part of the light away and adds none.
+TEST(ReferenceRenderer, ACookieColoursTheSpotByItsDecodedValue) {
+    ShadowCase c = pyramidCase(lightscatter::LightType::Spot);
+    c.options.relTol = 1e-8;
+    const uint32_t w = 20, h = 11;
+    const ReferenceImage plain = renderReference(c.scene, c.mesh, w, h, c.options);
+    auto cookie = std::make_shared<host::Texture>();
+    cookie->width = cookie->height = 8;
+    cookie->rgba.assign(8 * 8 * 4, 255);
+    for (std::size_t t = 0; t < 64; ++t) {
+        cookie->rgba[4 * t] = 188;  // 0.5 once decoded (0.50289)
+        cookie->rgba[4 * t + 1] = 255;
+        cookie->rgba[4 * t + 2] = 64;  // 0.0513
+    }
+    host::SceneDesc coloured = c.scene;
+    coloured.light.cookie = cookie;
+    const ReferenceImage tinted = renderReference(coloured, c.mesh, w, h, c.options);
+    const double red = std::pow((188.0 / 255.0 + 0.055) / 1.055, 2.4),
+                 blue = std::pow((64.0 / 255.0 + 0.055) / 1.055, 2.4);
+    double lit = 0;
+    for (std::size_t k = 0; k < plain.rgb.size(); k += 3) {
+        EXPECT_NEAR(tinted.rgb[k], red * plain.rgb[k], 1e-6 * plain.rgb[k] + 1e-15) << k;
+        EXPECT_NEAR(tinted.rgb[k + 1], plain.rgb[k + 1], 1e-6 * plain.rgb[k + 1] + 1e-15) << k;
+        EXPECT_NEAR(tinted.rgb[k + 2], blue * plain.rgb[k + 2], 1e-6 * plain.rgb[k + 2] + 1e-15)
+            << k;
+        lit += plain.rgb[k + 1];
+    }
+    EXPECT_GT(lit, 0.0);
+
+    // Half black: darker than the plain image, brighter than nothing, nowhere brighter.
+    auto half = std::make_shared<host::Texture>(*cookie);
+    for (uint32_t y = 0; y < 8; ++y)
+        for (uint32_t x = 0; x < 8; ++x)
+            for (int k = 0; k < 3; ++k)
+                half->rgba[(y * 8 + x) * 4 + static_cast<uint32_t>(k)] = x < 4 ? 0 : 255;
+    coloured.light.cookie = half;
+    const ReferenceImage halved = renderReference(coloured, c.mesh, w, h, c.options);
+    double sumHalf = 0, sumPlain = 0;
+    for (std::size_t k = 0; k < plain.rgb.size(); ++k) {
+        EXPECT_LE(halved.rgb[k], plain.rgb[k] * (1.0 + 1e-6) + 1e-15) << k;
+        sumHalf += halved.rgb[k];
+        sumPlain += plain.rgb[k];
+    }
+    std::printf("half-black cookie: %.3f of the plain spot's light\n", sumHalf / sumPlain);
+    EXPECT_GT(sumHalf, 0.2 * sumPlain);
+    EXPECT_LT(sumHalf, 0.8 * sumPlain);
 }
 
 // Both images within rel of each other per value (absolute floor: 1e-12 of the largest).

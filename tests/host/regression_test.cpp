@@ -2,6 +2,8 @@
 // tests/host/references (made by scripts/update-references.sh on lavapipe).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 
 #include "cli_runner.h"
@@ -59,4 +61,51 @@ TEST(Regression, TheCheckCatchesABrokenPass) {
     auto dim = want.rgba;
     for (float& v : dim) v *= 0.9f;
     EXPECT_FALSE(compareImages(dim, want.rgba).pass());
+}
+
+// A spot's cookie end to end (issue #25): the host decodes scenes/stained_glass_cookie.png, uploads
+// it and hands it to the plugin as the light's color, with the shadow map and without, under
+// validation. The shafts then take the glass's colors: the ratio of red to blue varies across the
+// image, where window_room's uncoloured spot keeps its own ratio everywhere; and the light through
+// the glass is dimmer than window_room's (no pane passes more than clear glass).
+TEST(Regression, ACookieColoursTheShafts) {
+    auto lin = [](const std::string& name, const std::string& method) {
+        const auto r = cli_test::run("render " + cli_test::scene(name) + " --method " + method +
+                                     " --size 96x54 --out " + name + ".png --inscatter " + name +
+                                     "_cookie_lin.exr --validation");
+        EXPECT_EQ(r.exitCode, 0) << name << ": " << r.out;
+        return host::readExr(
+                   (std::filesystem::path(cli_test::scratch()) / (name + "_cookie_lin.exr"))
+                       .string())
+            .rgba;
+    };
+    // The spread of red / blue over the pixels that carry light, and the total light.
+    auto measure = [](const std::vector<float>& rgba, double& spread, double& total) {
+        double lo = 1e30, hi = 0, peak = 0;
+        total = 0;
+        for (size_t i = 0; i < rgba.size(); i += 4) peak = std::max(peak, double(rgba[i + 1]));
+        for (size_t i = 0; i < rgba.size(); i += 4) {
+            total += rgba[i] + rgba[i + 1] + rgba[i + 2];
+            if (rgba[i + 1] < 0.05 * peak || rgba[i + 2] <= 0.0f) continue;
+            const double ratio = rgba[i] / rgba[i + 2];
+            lo = std::min(lo, ratio);
+            hi = std::max(hi, ratio);
+        }
+        spread = hi / lo;
+    };
+    double plainSpread = 0, plainTotal = 0;
+    measure(lin("window_room", "epipolar"), plainSpread, plainTotal);
+    for (const char* name : {"stained_glass", "stained_glass_unshadowed"}) {
+        for (const char* method : {"epipolar", "cone-march"}) {
+            SCOPED_TRACE(std::string(name) + ", " + method);
+            double spread = 0, total = 0;
+            measure(lin(name, method), spread, total);
+            std::printf("%s, %s: red/blue spread %.2f (window_room %.2f), light %.3g (%.3g)\n",
+                        name, method, spread, plainSpread, total, plainTotal);
+            EXPECT_GT(spread, 2.0 * plainSpread);
+            if (std::string(name) == "stained_glass") {
+                EXPECT_LT(total, plainTotal);
+            }
+        }
+    }
 }

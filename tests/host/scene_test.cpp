@@ -360,7 +360,7 @@ TEST_F(SceneFileTest, UnknownKeysAreRefusedWithTheKnownOnes) {
     EXPECT_EQ(errorFor(R"({"light": {"kind": "spot"}})"),
               "light: unknown key 'kind' (known keys: type, position, direction, intensity, "
               "innerConeAngleDegrees, outerConeAngleDegrees, halfAngleDegrees, range, "
-              "rangeFalloff, radius, shadowMapSize)");
+              "rangeFalloff, radius, shadowMapSize, cookie)");
     EXPECT_EQ(
         errorFor(R"({"medium": {"beta": 1}})"),
         "medium: unknown key 'beta' (known keys: betaR, betaM, g, sigmaA, phase, maxDistance)");
@@ -471,6 +471,39 @@ TEST_F(SceneFileTest, Directions) {
 }  // namespace
 
 // "lights": an array of light objects beside the single "light", one of the two.
+// A spot's cookie: an image next to the scene (or at a path relative to it), decoded to RGBA8 as
+// stored; every way it can be wrong is one line naming the field and the file.
+TEST_F(SceneFileTest, ASpotsCookieIsAnImageRelativeToTheScene) {
+    const fs::path png = fs::path(LS_SOURCE_DIR) / "scenes" / "stained_glass_cookie.png";
+    fs::create_directories(dir_ / "glass");
+    fs::copy_file(png, dir_ / "glass" / "pane.png");
+    const std::string file = write("cookie.json", R"({"light": {"type": "spot", "shadowMapSize": 0,
+        "cookie": "glass/pane.png"}})");
+    const host::SceneDesc s = host::loadSceneFile(file);
+    ASSERT_TRUE(s.light.cookie);
+    EXPECT_EQ(s.light.cookie->width, 256u);
+    EXPECT_EQ(s.light.cookie->height, 256u);
+    EXPECT_EQ(s.light.cookie->rgba.size(), 256u * 256u * 4u);
+    EXPECT_EQ(s.light.cookie->rgba[3], 255);  // RGB file: opaque
+    EXPECT_EQ(s.light.cookie->name, (dir_ / "glass" / "pane.png").string());
+    EXPECT_FALSE(
+        host::loadSceneFile(write("none.json", R"({"light": {"type": "spot"}})")).light.cookie);
+
+    EXPECT_EQ(errorFor(R"({"light": {"type": "spot", "cookie": "missing.png"}})"),
+              "light.cookie 'missing.png' does not exist (looked for " +
+                  (dir_ / "missing.png").string() + ")");
+    write("text.png", "not a PNG at all");
+    EXPECT_EQ(errorFor(R"({"light": {"type": "spot", "cookie": "text.png"}})"),
+              "light.cookie 'text.png' is not an image the host reads: not an image stb_image "
+              "reads: unknown image type");
+    EXPECT_EQ(errorFor(R"({"light": {"type": "spot", "cookie": 3}})"),
+              "light.cookie must be a string");
+    EXPECT_EQ(errorFor(R"({"lights": [{"type": "spot"}, {"type": "point", "cookie": "x.png"}]})"),
+              "lights[1].cookie needs a spot light (its cone's projection casts the image; a "
+              "point light has no single projection, and the host fits a sun's shadow map to "
+              "the view, which would slide a cookie with the camera)");
+}
+
 TEST_F(SceneFileTest, ALightListGivesEveryLight) {
     const std::string file = write("lights.json", R"({"lights": [
         {"type": "directional", "direction": [0, -1, 0], "shadowMapSize": 512},

@@ -62,6 +62,8 @@ TEST(ShaderVariants, EpipolarNodesAskForBuiltVariants) {
     forEachSpec([&](const ScatterSpec& spec) {
         for (bool count : {false, true}) reach(rayMarch, rayMarchShader(spec, count));
         reach(pixelMarch, pixelMarchShader(spec));
+        // An unshadowed light marched for its light color (no cube map: it has no shadow map).
+        if (spec.lightColor && !spec.cubeShadow) reach(pixelMarch, pixelMarchShader(spec, false));
         for (VkFormat color : kColors)
             for (bool out : {false, true}) reach(pixelMarch, fixupShader(spec, color, out));
     });
@@ -113,13 +115,19 @@ std::string pickError(const ls_spirv::ShaderVariants& shader,
 }
 
 TEST(ShaderVariants, BuildNotMadeIsOneClearError) {
-    // The planes' shader is not built with a cookie and noise but no shadow map.
+    // The per-pixel march is not built without a shadow map and without a light color (an
+    // unshadowed light without one takes the closed form).
     EXPECT_EQ(
-        pickError(
-            ls_spirv::planes_frag_variants,
-            {{"LS_SHADOW_MAP", 0}, {"LS_CUBE_SHADOW", 0}, {"LS_LIGHT_COLOR", 1}, {"LS_NOISE", 1}}),
-        "shader planes.frag with [LS_SHADOW_MAP=0,LS_CUBE_SHADOW=0,LS_LIGHT_COLOR=1,LS_NOISE=1]: "
-        "no build has these defines (add it to shaders/CMakeLists.txt)");
+        pickError(ls_spirv::pixel_march_frag_variants, {{"LS_NEEDS_TABLE", 1},
+                                                        {"LS_LIGHT_COLOR", 0},
+                                                        {"LS_CUBE_SHADOW", 0},
+                                                        {"LS_NO_SHADOW_MAP", 1},
+                                                        {"LS_COMPOSITE", 0},
+                                                        {"LS_COLOR_RGBA32F", 0},
+                                                        {"LS_WITH_OUTPUT", 0}}),
+        "shader pixel_march.frag with [LS_NEEDS_TABLE=1,LS_LIGHT_COLOR=0,LS_CUBE_SHADOW=0,"
+        "LS_NO_SHADOW_MAP=1,LS_COMPOSITE=0,LS_COLOR_RGBA32F=0,LS_WITH_OUTPUT=0]: no build has "
+        "these defines (add it to shaders/CMakeLists.txt)");
     EXPECT_EQ(pickError(ls_spirv::cone_march_frag_variants, {{"LS_SHADOW_MAP", 1}}),
               "shader cone_march.frag with [LS_SHADOW_MAP=1]: the define LS_LIGHT_COLOR is not "
               "given");

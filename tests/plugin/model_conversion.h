@@ -17,6 +17,11 @@ ls::ref::Light refLight(const lightscatter::Light& l);
 // frames whose light nothing shadows.
 std::vector<float> float64Unshadowed(const TestFrame& frame);
 
+// The float64 model's unshadowed Lin with the frame's cookie (FrameSpec::cookie): the irradiance
+// times the cookie's value where the light's shadowViewProjection puts the point, filtered as the
+// GPU's linear clamp-to-edge sampler filters it, 1 outside the image or behind the light.
+std::vector<float> float64WithCookie(const TestFrame& frame);
+
 // The same for seed 004's simplified light model (ls::ref::simplifiedClosedForm) with a0, a1.
 std::vector<float> float64Simplified(const TestFrame& frame, double a0, double a1);
 

@@ -29,20 +29,31 @@ TestFrame::TestFrame(const rg::Device& device, FrameSpec spec)
     out_ = std::make_unique<TestImage>(device, VK_FORMAT_R32G32B32A32_SFLOAT, s,
                                        VK_IMAGE_USAGE_STORAGE_BIT, VK_IMAGE_LAYOUT_GENERAL,
                                        "test in-scattering");
+    const bool projected =
+        light_.type != lightscatter::LightType::Point && (spec_.shadowed || !spec_.cookie.empty());
+    const glm::mat4 m = !projected ? glm::mat4(1.0f)
+                        : light_.type == lightscatter::LightType::Spot
+                            ? spotShadowMatrix(light_, spec_.shadowNear, spec_.shadowFar)
+                            : directionalShadowMatrix(
+                                  {light_.direction[0], light_.direction[1], light_.direction[2]},
+                                  spec_.sceneCenter, spec_.sceneRadius);
+    if (projected) light_.shadowViewProjection = toMat4(m);
+    if (!spec_.cookie.empty()) {
+        const auto c = static_cast<uint32_t>(
+            std::lround(std::sqrt(static_cast<double>(spec_.cookie.size()) / 4.0)));
+        lightColor_ = std::make_unique<TestImage>(
+            device, VK_FORMAT_R32G32B32A32_SFLOAT, VkExtent2D{c, c}, VK_IMAGE_USAGE_SAMPLED_BIT,
+            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, "test cookie");
+        lightColor_->upload(spec_.cookie);
+    }
     if (spec_.shadowed && light_.type != lightscatter::LightType::Point) {
         if (light_.shadowMapSize == 0) light_.shadowMapSize = 128;
-        const glm::mat4 m = light_.type == lightscatter::LightType::Spot
-                                ? spotShadowMatrix(light_, spec_.shadowNear, spec_.shadowFar)
-                                : directionalShadowMatrix({light_.direction[0], light_.direction[1],
-                                                           light_.direction[2]},
-                                                          spec_.sceneCenter, spec_.sceneRadius);
-        light_.shadowViewProjection = toMat4(m);
         const uint32_t n = light_.shadowMapSize;
         shadow_ = std::make_unique<TestImage>(
             device, VK_FORMAT_D32_SFLOAT, VkExtent2D{n, n}, VK_IMAGE_USAGE_SAMPLED_BIT,
             VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, "test shadow map");
         shadow_->upload(renderShadowMap(spec_.scene, m, n, light_.shadowReversedZ));
-        if (spec_.coloredLight) {
+        if (spec_.coloredLight && spec_.cookie.empty()) {
             // Stripes of red, green and blue glass across the light's view.
             const uint32_t c = 32;
             lightColor_ = std::make_unique<TestImage>(

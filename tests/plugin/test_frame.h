@@ -22,8 +22,12 @@ struct FrameSpec {
     bool shadowed = true;
     std::vector<float> depthOverride;  // replaces the ray-cast depth when not empty
     bool coloredLight = false;         // stained glass: light-space color texture
-    bool depthAttachment = true;       // the depth image allows a depth attachment
-    std::vector<float> noise;          // 16x16 RGBA noise texels for planes; empty: none
+    // A square light-color image (cookie) of RGBA float texels, row 0 at the top of the light's
+    // view, projected with the light's shadowViewProjection, which is then set for a spot or
+    // directional light without a shadow map too. Empty: none (or coloredLight's stripes).
+    std::vector<float> cookie;
+    bool depthAttachment = true;  // the depth image allows a depth attachment
+    std::vector<float> noise;     // 16x16 RGBA noise texels for planes; empty: none
 };
 
 class TestFrame {

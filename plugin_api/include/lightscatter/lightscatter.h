@@ -318,7 +318,9 @@ struct Light {
     float radius = 0.05f;  // r0 of docs/model.md, in [limits::kMinRadius, kMaxLength]
     // The shadow map's projection (world -> light clip, Vulkan conventions) and size. Required with
     // a directional or spot light's shadow map (a singular matrix, such as the all-zero default, is
-    // refused); for a spot its frustum must contain the cone. Ignored for a point light.
+    // refused); for a spot its frustum must contain the cone. Also required with a light color
+    // and no shadow map: the color is projected with it (its sides; no near or far plane). Ignored
+    // for a point light.
     Mat4 shadowViewProjection{};
     // A point light's cube shadow map (FrameDescription::shadowMap with 6 array layers, each
     // shadowMapSize x shadowMapSize): the world -> clip matrix of each face, in Vulkan's cube
@@ -462,7 +464,12 @@ struct FrameDescription {
     ImageInput depth;  // D16/D24/D32 (sampled); the camera's depth
     ImageInput color;  // linear HDR color (storage, R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT)
     std::optional<ImageInput> shadowMap;  // the light's depth (sampled); 6 layers for a point light
-    std::optional<ImageInput> lightColor;    // optional light-space color (stained glass), sampled
+    // Optional light-space color (a cookie, stained glass; sampled, linear values in [0, 1], e.g.
+    // an R8G8B8A8_SRGB image): multiplies a spot's or directional light's irradiance where
+    // light.shadowViewProjection projects each point, with a shadow map or without one (then
+    // epipolar and brute-force march it per pixel, a piece per texel crossed; analytic and
+    // beam-tree-analytic refuse it; docs/methods.md, "Cookies"). Refused with a point light.
+    std::optional<ImageInput> lightColor;
     std::optional<ImageInput> inscatterOut;  // optional: Lin alone, R32G32B32A32_SFLOAT storage
     // Optional tiling noise for Settings::noiseAmplitude (sampled, repeating; red and green are two
     // independent layers with values in [0, 1] and mean 0.5). Without it the plugin makes its own.
