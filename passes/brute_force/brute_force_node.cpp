@@ -1,5 +1,6 @@
 #include "brute_force_node.h"
 
+#include "shared/pass_helpers.h"
 #include "shared/pixel_march.h"
 
 namespace ls {
@@ -14,9 +15,7 @@ rg::ImageRef addBruteForce(rg::RenderGraph& graph, const BruteForceInputs& in) {
     lin = pass.colorAttachment(lin, rg::LoadOp::Clear);
     pass.execute([shared = in.frame.shared, spec = in.frame.spec, values = in.frame.values,
                   table](rg::PassContext& ctx) {
-        const VkRect2D rect = ctx.data(values).screenRect;
-        if (rect.extent.width == 0 || rect.extent.height == 0) return;
-        ctx.vk().CmdSetScissor(ctx.cmd(), 0, 1, &rect);
+        if (!scissorToLight(ctx, values)) return;
         drawPixelMarch(ctx, shared, spec, table, {.pipeline = "brute-force ray march"});
     });
     return lin;

@@ -33,4 +33,11 @@ void addMarchInputs(rg::BindingTable& table, const Shared& shared, const LightIm
         .sampledIfValid(LS_BINDING_LIGHT_COLOR, light.lightColor, s.linear());
 }
 
+bool scissorToLight(rg::PassContext& ctx, rg::HostDataRef<LightFrame> values) {
+    const VkRect2D rect = ctx.data(values).screenRect;
+    if (rect.extent.width == 0 || rect.extent.height == 0) return false;
+    ctx.vk().CmdSetScissor(ctx.cmd(), 0, 1, &rect);
+    return true;
+}
+
 }  // namespace ls

@@ -21,6 +21,11 @@ inline uint32_t groupCount(uint32_t n, uint32_t size) {
 // A binding table whose first row is the frame-constants uniform buffer (LS_BINDING_FRAME).
 rg::BindingTable frameTable(rg::PassBuilder& pass, rg::BufferRef constants);
 
+// Limits the pass's draws to the light's screen rectangle this frame (LightFrame::screenRect), so
+// that a per-pixel pass over a small light costs its pixels; false when the rectangle is empty and
+// nothing is to be drawn. The pass's target is cleared, so the rest of it holds 0.
+bool scissorToLight(rg::PassContext& ctx, rg::HostDataRef<LightFrame> values);
+
 // A full-screen triangle pipeline for the pass's render targets.
 rg::GraphicsPipelineDesc fullscreenPipeline(rg::ShaderCode fragment, const rg::PassContext& ctx,
                                             std::vector<rg::Binding> bindings);

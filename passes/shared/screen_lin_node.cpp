@@ -17,9 +17,7 @@ rg::ImageRef addScreenLinNode(rg::RenderGraph& graph, const Shared& shared, cons
     // the screen costs that corner.
     lin = pass.colorAttachment(lin, rg::LoadOp::Clear);
     pass.execute([shared, spec, table, node = std::move(node)](rg::PassContext& ctx) {
-        const VkRect2D rect = ctx.data(node.values).screenRect;
-        if (rect.extent.width == 0 || rect.extent.height == 0) return;
-        ctx.vk().CmdSetScissor(ctx.cmd(), 0, 1, &rect);
+        if (!scissorToLight(ctx, node.values)) return;
         auto desc = fullscreenPipeline(node.shader(spec), ctx, table.layout());
         desc.specialization = spec.constants();
         if (node.specialize) node.specialize(desc.specialization);

@@ -24,8 +24,11 @@ rg::ImageRef addColoredUnshadowed(rg::RenderGraph& graph, const UnshadowedInputs
     LightImages light = in.light;
     light.shadowMap = {};
     const rg::BindingTable table = declarePixelMarch(pass, in.frame, light);
-    lin = pass.colorAttachment(lin, rg::LoadOp::DontCare);
-    pass.execute([shared = in.frame.shared, spec = in.frame.spec, table](rg::PassContext& ctx) {
+    // Cleared, and marched only within the light's screen rectangle.
+    lin = pass.colorAttachment(lin, rg::LoadOp::Clear);
+    pass.execute([shared = in.frame.shared, spec = in.frame.spec, values = in.frame.values,
+                  table](rg::PassContext& ctx) {
+        if (!scissorToLight(ctx, values)) return;
         drawPixelMarch(ctx, shared, spec, table, {.pipeline = "unshadowed light-color march"});
     });
     return lin;
