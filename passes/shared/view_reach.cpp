@@ -7,6 +7,22 @@
 #include <glm/glm.hpp>
 
 namespace ls {
+namespace {
+
+// How far from a point or spot light a point can lie and still be on a view ray: its range, and
+// the view's reach (view rays end within the far plane's corners, or the sky distance with an
+// infinite far plane) beyond the light's distance from the camera.
+float reachFromLight(const CameraParams& camera, const LightParams& light,
+                     const MediumParams& medium) {
+    const glm::vec3 cameraPos = glm::vec3(glm::inverse(camera.view)[3]);
+    const float tanX = 1.0f / std::fabs(camera.projection[0][0]);
+    const float tanY = 1.0f / std::fabs(camera.projection[1][1]);
+    const float farthest = (camera.infiniteFar ? medium.maxDistance : camera.farPlane) *
+                           std::sqrt(1.0f + tanX * tanX + tanY * tanY);
+    return std::min(light.range, glm::length(light.position - cameraPos) + farthest);
+}
+
+}  // namespace
 
 bool lightTouchesView(const CameraParams& camera, const LightParams& light,
                       const MediumParams& medium) {
@@ -17,12 +33,7 @@ bool lightTouchesView(const CameraParams& camera, const LightParams& light,
     // View rays end within the far plane's corners (or the sky distance with an infinite far
     // plane), so only the part of the cone within that reach of the camera can matter: an
     // unbounded spot is bounded by it.
-    const glm::vec3 cameraPos = glm::vec3(glm::inverse(camera.view)[3]);
-    const float tanX = 1.0f / std::fabs(camera.projection[0][0]);
-    const float tanY = 1.0f / std::fabs(camera.projection[1][1]);
-    const float farthest = (camera.infiniteFar ? medium.maxDistance : camera.farPlane) *
-                           std::sqrt(1.0f + tanX * tanX + tanY * tanY);
-    const float range = std::min(light.range, glm::length(light.position - cameraPos) + farthest);
+    const float range = reachFromLight(camera, light, medium);
     if (!(range < 1e29f)) return true;
     const glm::mat4 m = glm::transpose(camera.projection * camera.view);  // rows as columns
     glm::vec4 planes[6] = {m[3] + m[0], m[3] - m[0], m[3] + m[1], m[3] - m[1], m[2], m[3] - m[2]};
@@ -110,12 +121,7 @@ VkRect2D lightScreenRect(const CameraParams& camera, const LightParams& light,
     if (light.kind == LightType::Directional) return whole;
     // How far from the light a point can lie and still be on a view ray: its range, and the
     // view's reach (as lightTouchesView bounds it) beyond the light's distance from the camera.
-    const glm::vec3 cameraPos = glm::vec3(glm::inverse(camera.view)[3]);
-    const float tanX = 1.0f / std::fabs(camera.projection[0][0]);
-    const float tanY = 1.0f / std::fabs(camera.projection[1][1]);
-    const float farthest = (camera.infiniteFar ? medium.maxDistance : camera.farPlane) *
-                           std::sqrt(1.0f + tanX * tanX + tanY * tanY);
-    const float extent = std::min(light.range, glm::length(light.position - cameraPos) + farthest);
+    const float extent = reachFromLight(camera, light, medium);
     if (!(extent < 1e6f)) return whole;
     // Corners of a convex solid holding the volume: a point light's cube around its sphere; for
     // a spot, its apex and an octagon around the cone's circle at `extent` along the axis (every
