@@ -8,9 +8,9 @@ namespace {
 
 VkImageCreateInfo imageInfo(const ResourceDecl& r, const ResourcePlan& plan) {
     VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-    info.imageType = VK_IMAGE_TYPE_2D;
+    info.imageType = r.image.depth > 1 ? VK_IMAGE_TYPE_3D : VK_IMAGE_TYPE_2D;
     info.format = r.image.format;
-    info.extent = {plan.extent.width, plan.extent.height, 1};
+    info.extent = {plan.extent.width, plan.extent.height, r.image.depth};
     info.mipLevels = r.image.mipLevels;
     info.arrayLayers = r.image.arrayLayers;
     info.samples = VK_SAMPLE_COUNT_1_BIT;

@@ -109,9 +109,14 @@ void checkDescriptions(const RenderGraph& graph) {
         if (e.width == 0 || e.height == 0)
             throw GraphError(Rule::BadDescription,
                              "image " + name + " has an empty extent " + extentText(e));
-        if (r.image.mipLevels == 0 || r.image.arrayLayers == 0)
+        if (r.image.mipLevels == 0 || r.image.arrayLayers == 0 || r.image.depth == 0)
             throw GraphError(Rule::BadDescription,
-                             "image " + name + " needs at least one mip level and one layer");
+                             "image " + name + " needs at least one mip level, layer and slice");
+        if (r.image.depth > 1 && (r.image.arrayLayers > 1 || r.image.mipLevels > 1 ||
+                                  r.image.sizeMode != SizeMode::Absolute))
+            throw GraphError(
+                Rule::BadDescription,
+                "image " + name + " is 3D: it takes one layer, one mip level and an absolute size");
         if (r.imported && r.importedImage.finalLayout == VK_IMAGE_LAYOUT_UNDEFINED)
             throw GraphError(Rule::ImportWithoutFinalLayout,
                              "imported image " + name +

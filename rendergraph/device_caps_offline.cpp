@@ -77,7 +77,7 @@ MemoryRequirements OfflineDeviceCaps::imageRequirements(const VkImageCreateInfo&
     VkDeviceSize total = 0;
     uint32_t w = info.extent.width, h = info.extent.height;
     for (uint32_t level = 0; level < info.mipLevels; ++level) {
-        total += alignUp(texel * w * h, 256);
+        total += alignUp(texel * w * h * std::max(info.extent.depth, 1u), 256);
         w = std::max(1u, w / 2);
         h = std::max(1u, h / 2);
     }

@@ -108,6 +108,20 @@ void checkImageLimits(const Device& device, VkExtent2D extent, uint32_t layers,
                           std::to_string(l.maxImageArrayLayers) + " (maxImageArrayLayers)");
 }
 
+void checkImageLimits(const Device& device, const VkImageCreateInfo& info,
+                      const std::string& what) {
+    if (info.imageType != VK_IMAGE_TYPE_3D) {
+        checkImageLimits(device, {info.extent.width, info.extent.height}, info.arrayLayers, what);
+        return;
+    }
+    const uint32_t most = device.properties().limits.maxImageDimension3D;
+    const VkExtent3D e = info.extent;
+    if (e.width > most || e.height > most || e.depth > most)
+        throw VulkanError(what + " is " + std::to_string(e.width) + "x" + std::to_string(e.height) +
+                          "x" + std::to_string(e.depth) + ": the device takes at most " +
+                          std::to_string(most) + " per side of a 3D image (maxImageDimension3D)");
+}
+
 BoundBuffer createBoundBuffer(const Device& device, const VkBufferCreateInfo& info,
                               VkMemoryPropertyFlags properties, const std::string& name,
                               const std::string& what) {

@@ -18,8 +18,9 @@ constexpr VkImageUsageFlags kViewUsages =
     VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
     VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT;
 
-VkImageViewType viewType(uint32_t layers) {
-    return layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
+VkImageViewType viewType(const ImageDesc& d) {
+    if (d.depth > 1) return VK_IMAGE_VIEW_TYPE_3D;
+    return d.arrayLayers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
 }
 
 // A named pool, every query reset from the host so that the first frame may read any slot.
@@ -224,8 +225,7 @@ void GraphExecutor::createResource(uint32_t id) {
         device_.vk().GetBufferMemoryRequirements(dev, buffers_[id], &req);
     } else {
         const VkImageCreateInfo info = transientImageInfo(r, plan);
-        checkImageLimits(device_, {info.extent.width, info.extent.height}, info.arrayLayers,
-                         "render graph resource '" + r.name + "'");
+        checkImageLimits(device_, info, "render graph resource '" + r.name + "'");
         RG_VK_CREATE(device_.vk().CreateImage(dev, &info, device_.allocator(), &images_[id].image));
         device_.setName(images_[id].image, VK_OBJECT_TYPE_IMAGE, r.name);
         device_.vk().GetImageMemoryRequirements(dev, images_[id].image, &req);
@@ -256,7 +256,7 @@ GraphExecutor::ImageObjects GraphExecutor::makeViews(uint32_t resource, VkImage 
     o.image = image;
     VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
     info.image = image;
-    info.viewType = viewType(r.image.arrayLayers);
+    info.viewType = viewType(r.image);
     info.format = r.image.format;
     info.subresourceRange = {fullAspect(r.image.format), 0, r.image.mipLevels, 0,
                              r.image.arrayLayers};

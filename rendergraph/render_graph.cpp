@@ -51,6 +51,7 @@ ImageRef RenderGraph::importImage(std::string name, const ImportedImage& image, 
     r.image = ImageDesc::absolute(image.format, image.extent.width, image.extent.height);
     r.image.mipLevels = image.mipLevels;
     r.image.arrayLayers = image.arrayLayers;
+    r.image.depth = image.depth;
     resources_.push_back(std::move(r));
     return ImageRef{id_, static_cast<uint32_t>(resources_.size() - 1), 0};
 }
@@ -94,6 +95,7 @@ void RenderGraph::updateImport(ImageRef image, const ImportedImage& desc) {
                                                  desc.extent.height == r.declaredExtent.height;
     if (old.format != desc.format || !extentFits || old.usage != desc.usage ||
         old.mipLevels != desc.mipLevels || old.arrayLayers != desc.arrayLayers ||
+        old.depth != desc.depth ||
         (desc.initialLayout != r.declaredLayout &&
          desc.initialLayout != VK_IMAGE_LAYOUT_UNDEFINED) ||
         old.finalLayout != desc.finalLayout)

@@ -96,6 +96,7 @@ nlohmann::json reportJson(const RenderGraph& graph, const CompiledGraph& compile
             x["extent"] = {p.extent.width, p.extent.height};
             x["mipLevels"] = r.image.mipLevels;
             x["arrayLayers"] = r.image.arrayLayers;
+            if (r.image.depth > 1) x["depth"] = r.image.depth;
         }
         if (p.used) x["lifetime"] = {p.firstPass, p.lastPass};
         if (!r.imported && p.used) {

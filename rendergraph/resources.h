@@ -39,6 +39,9 @@ struct ImageDesc {
     float scaleY = 1.0f;
     uint32_t mipLevels = 1;
     uint32_t arrayLayers = 1;
+    // Above 1: a 3D image of this many slices (one layer, one level; never an attachment), its
+    // view VK_IMAGE_VIEW_TYPE_3D. Absolute size only.
+    uint32_t depth = 1;
 
     static ImageDesc absolute(VkFormat f, uint32_t w, uint32_t h) {
         ImageDesc d;
@@ -46,6 +49,11 @@ struct ImageDesc {
         d.width = w;
         d.height = h;
         return d;
+    }
+    static ImageDesc volume(VkFormat f, uint32_t w, uint32_t h, uint32_t d) {
+        ImageDesc v = absolute(f, w, h);
+        v.depth = d;
+        return v;
     }
     static ImageDesc screen(VkFormat f, float sx = 1.0f, float sy = 1.0f) {
         ImageDesc d;
@@ -69,6 +77,7 @@ struct ImportedImage {
     VkExtent2D extent{};
     uint32_t mipLevels = 1;
     uint32_t arrayLayers = 1;
+    uint32_t depth = 1;           // above 1: a 3D image (ImageDesc::depth)
     VkImageUsageFlags usage = 0;  // what the engine created it with; checked against the uses
     VkImageLayout initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
     VkPipelineStageFlags2 initialStages = VK_PIPELINE_STAGE_2_NONE;

@@ -9,7 +9,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Release -DLS_WERROR=ON -DLS_SANITIZE=ON
 cmake --build build-asan -j"$(nproc)" --target test_rendergraph_compile test_float64_model test_plugin_budget \
-    test_host_scene test_host_camera test_host_bench test_rendergraph_gpu test_plugin_gpu
+    test_host_scene test_host_camera test_host_bench test_rendergraph_gpu test_plugin_gpu_sanitized
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 cd build-asan
 for suite in tests/test_rendergraph_compile tests/float64_model/test_float64_model tests/plugin/test_plugin_budget \
@@ -19,7 +19,7 @@ for suite in tests/test_rendergraph_compile tests/float64_model/test_float64_mod
 done
 echo "sanitizers: tests/test_rendergraph_gpu"
 ASAN_OPTIONS=detect_leaks=0 ./tests/test_rendergraph_gpu --gtest_brief=1
-echo "sanitizers: tests/plugin/test_plugin_gpu (a few)"
-ASAN_OPTIONS=detect_leaks=0 ./tests/plugin/test_plugin_gpu --gtest_brief=1 \
+echo "sanitizers: tests/plugin/test_plugin_gpu_sanitized (a few of test_plugin_gpu's tests)"
+ASAN_OPTIONS=detect_leaks=0 ./tests/plugin/test_plugin_gpu_sanitized --gtest_brief=1 \
     --gtest_filter='EpipolarGpu.SpotLightMatchesBruteForce:EpipolarGpu.TinyShadowMapsAreMarchedWithoutTrees:PoisonedTransientsGpu.*:OutOfMemoryGpu.AFailedConstructionLeavesNothingBehind:ReadmeExampleGpu.*'
 echo "sanitizers: clean"

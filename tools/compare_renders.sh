@@ -45,7 +45,7 @@ fi
 cp -r "$root/scenes" "$work/scenes"
 # "slices" is the planes method's former name, which both builds accept: base renders made before
 # the rename carry it in their file names.
-methods="auto epipolar brute-force analytic cone-march slices beam-tree-analytic beam-tree-sampling"
+methods="auto epipolar brute-force analytic cone-march slices beam-tree-analytic beam-tree-sampling froxels"
 profiles="balanced high-quality low-high-performance"
 render() {  # BINARY OUTDIR SCENE METHOD PROFILE
   local stem

@@ -16,7 +16,21 @@
 namespace host::bench {
 namespace {
 
+// A method as a configuration names it: a froxel preset is froxels with its grid in `settings`.
+struct MethodName {
+    lightscatter::Method method;
+    std::string name;
+    lightscatter::Settings settings;
+};
+
 using nlohmann::json;
+
+// A sweep's run of a method: its enum value and a preset's froxel grid over the sweep's settings.
+void useMethod(BenchRun& r, const MethodName& m) {
+    r.method = m.method;
+    r.settings.froxelTile = m.settings.froxelTile;
+    r.settings.froxelSlices = m.settings.froxelSlices;
+}
 
 constexpr uint64_t kConfigFileCap = 1 * kMiB;
 // A configuration's runs are its scenes times its methods, profiles and sweep values: they grow as
@@ -84,13 +98,13 @@ class ConfigReader {
         }
         if (profiles.empty())
             fail("profiles is empty: list at least one profile, or leave the key out for balanced");
-        const std::vector<lightscatter::Method> methods = methodList(
+        const std::vector<MethodName> methods = methodList(
             j.contains("methods") ? j["methods"] : json::array({"epipolar", "brute-force"}),
             "methods");
         // A scene is its file's path, or {"scene": path, "methods": [...]} with methods of its
         // own: those that take its lights (a cube shadow map or several lights are not every
         // method's).
-        std::vector<std::vector<lightscatter::Method>> sceneMethods;
+        std::vector<std::vector<MethodName>> sceneMethods;
         const json scenes = list(j["scenes"], "scenes");
         for (size_t k = 0; k < scenes.size(); ++k) {
             const json& s = scenes[k];
@@ -170,18 +184,25 @@ class ConfigReader {
         return v.get<std::string>();
     }
 
-    std::vector<lightscatter::Method> methodList(const json& v, const std::string& name) const {
-        std::vector<lightscatter::Method> methods;
+    std::vector<MethodName> methodList(const json& v, const std::string& name) const {
+        std::vector<MethodName> methods;
         for (const json& m : list(v, name)) {
             const std::string method = text(m, name + "[]");
+            MethodName n{lightscatter::Method::Froxels, method, {}};
+            if (lightscatter::applyFroxelPreset(method, n.settings)) {
+                methods.push_back(n);
+                continue;
+            }
             const auto parsed = lightscatter::parseMethod(method);
             if (!parsed) {
                 std::string known;
-                for (const auto& n : lightscatter::methodNames())
-                    known += (known.empty() ? "" : ", ") + n;
+                for (const auto& k : lightscatter::methodNames())
+                    known += (known.empty() ? "" : ", ") + k;
+                for (const auto& p : lightscatter::froxelPresets())
+                    known += std::string(", ") + p.name;
                 fail(name + ": unknown method '" + echoText(method) + "' (known: " + known + ")");
             }
-            methods.push_back(*parsed);
+            methods.push_back({*parsed, lightscatter::methodName(*parsed), {}});
         }
         if (methods.empty())
             fail(name +
@@ -299,21 +320,23 @@ class ConfigReader {
         }
     }
 
-    void expand(BenchConfig& c, const std::string& scene,
-                const std::vector<lightscatter::Method>& methods,
+    void expand(BenchConfig& c, const std::string& scene, const std::vector<MethodName>& methods,
                 const std::vector<lightscatter::Profile>& profiles,
                 lightscatter::Profile sweepProfile, const json& sweeps) const {
         BenchRun base;
         base.scene = scene;
         base.size = c.size;
         base.measureError = c.measureError;
-        for (lightscatter::Method m : methods) {
-            // Only epipolar has the seed's profiles; the other methods run once, balanced.
+        for (const MethodName& named : methods) {
+            const lightscatter::Method m = named.method;
+            // Only epipolar has the seed's profiles; the other methods run once, balanced (a
+            // froxel preset with its grid).
             if (m != lightscatter::Method::Epipolar) {
                 BenchRun r = base;
                 r.method = m;
                 r.family = "profiles";
-                r.label = lightscatter::methodName(m);
+                r.label = named.name;
+                r.settings = named.settings;
                 add(c, r);
                 continue;
             }
@@ -387,12 +410,11 @@ class ConfigReader {
         });
         sweep("shadowMapSize", "shadowMapSize", false, [&](const json& v, auto emit) {
             const uint32_t n = whole(v, "sweeps.shadowMapSize[]", 1, 16384);
-            for (lightscatter::Method m : methods)
-                emit(std::string(lightscatter::methodName(m)) + " shadowMap=" + std::to_string(n),
-                     [&](BenchRun& r) {
-                         r.method = m;
-                         r.shadowMapSize = n;
-                     });
+            for (const MethodName& m : methods)
+                emit(m.name + " shadowMap=" + std::to_string(n), [&](BenchRun& r) {
+                    useMethod(r, m);
+                    r.shadowMapSize = n;
+                });
         });
         // Seed 003's comparison: cone-march with each sample count and mode (the cone-limited
         // march, the naive full-ray march, the cone-limited march without shadow-map sampling).
@@ -443,32 +465,30 @@ class ConfigReader {
             if (name != "full" && name != "simplified")
                 fail("sweeps.lightModel[] = " + echo(v) + ": must be full or simplified");
             bool any = false;
-            for (lightscatter::Method m : methods) {
-                if (m != lightscatter::Method::BeamTreeAnalytic &&
-                    m != lightscatter::Method::Analytic)
+            for (const MethodName& m : methods) {
+                if (m.method != lightscatter::Method::BeamTreeAnalytic &&
+                    m.method != lightscatter::Method::Analytic)
                     continue;
                 any = true;
-                emit(std::string(lightscatter::methodName(m)) + " lightModel=" + name,
-                     [&](BenchRun& r) {
-                         r.method = m;
-                         r.settings.lightModel = name == "simplified"
-                                                     ? lightscatter::LightModel::Simplified
-                                                     : lightscatter::LightModel::Full;
-                     });
+                emit(m.name + " lightModel=" + name, [&](BenchRun& r) {
+                    useMethod(r, m);
+                    r.settings.lightModel = name == "simplified"
+                                                ? lightscatter::LightModel::Simplified
+                                                : lightscatter::LightModel::Full;
+                });
             }
             if (!any)
                 fail("sweeps.lightModel needs method beam-tree-analytic or analytic in methods");
         });
         sweep("size", "size", false, [&](const json& v, auto emit) {
             const VkExtent2D s = size(v, "sweeps.size[]");
-            for (lightscatter::Method m : methods)
-                emit(std::string(lightscatter::methodName(m)) + " size=" + v.get<std::string>(),
-                     [&](BenchRun& r) {
-                         r.method = m;
-                         r.size = s;
-                         r.measureError = c.measureError && r.size.width == c.size.width &&
-                                          r.size.height == c.size.height;
-                     });
+            for (const MethodName& m : methods)
+                emit(m.name + " size=" + v.get<std::string>(), [&](BenchRun& r) {
+                    useMethod(r, m);
+                    r.size = s;
+                    r.measureError = c.measureError && r.size.width == c.size.width &&
+                                     r.size.height == c.size.height;
+                });
         });
     }
 

@@ -18,7 +18,8 @@ struct BenchRun {
                          // "trees", "cone" (cone-march's sample counts and modes)
     lightscatter::Method method = lightscatter::Method::Epipolar;
     lightscatter::Profile profile = lightscatter::Profile::Balanced;
-    lightscatter::Settings settings;  // used as Custom when custom is true
+    // Used as Custom when custom is true; its froxel grid (a preset's) with every profile.
+    lightscatter::Settings settings;
     bool custom = false;
     VkExtent2D size{0, 0};
     uint32_t shadowMapSize = 0;  // 0: the scene's

@@ -130,6 +130,10 @@ RenderOptions runOptions(const bench::BenchRun& run) {
     options.method = run.method;
     options.profile = run.custom ? lightscatter::Profile::Custom : run.profile;
     if (run.custom) options.custom = run.settings;
+    // The froxel grid is read from custom with every profile (a preset's, or the default).
+    options.custom.froxelTile = run.settings.froxelTile;
+    options.custom.froxelSlices = run.settings.froxelSlices;
+    options.custom.froxelFarDistance = run.settings.froxelFarDistance;
     return options;
 }
 

@@ -1,5 +1,5 @@
-// lightscatter budget [--method epipolar|planes|beam-tree-analytic|beam-tree-sampling] [--profile
-// NAME|all] [--settings FILE.json]
+// lightscatter budget [--method epipolar|planes|beam-tree-analytic|beam-tree-sampling|froxels]
+// [--profile NAME|all] [--settings FILE.json]
 //   [--size WxH] [--shadow-map N] [--lights sun,spot:unshadowed,point:brute-force,...] [--json]
 #include <cstdio>
 #include <iostream>
@@ -20,20 +20,21 @@ double mib(uint64_t bytes) {
     return static_cast<double>(bytes) / (1024.0 * 1024.0);
 }
 
-// The methods whose textures depend on the profile, the ones lightscatter::budget knows.
-lightscatter::Method budgetMethod(const std::string& name) {
+// The methods whose textures depend on the profile or the grid, the ones lightscatter::budget
+// knows; a froxel preset sets its grid in `settings`.
+lightscatter::Method budgetMethod(const std::string& name, lightscatter::Settings& settings) {
+    if (lightscatter::applyFroxelPreset(name, settings)) return lightscatter::Method::Froxels;
     const auto m = lightscatter::parseMethod(name);
     if (m == lightscatter::Method::Epipolar || m == lightscatter::Method::Planes ||
-        m == lightscatter::Method::BeamTreeAnalytic || m == lightscatter::Method::BeamTreeSampling)
+        m == lightscatter::Method::BeamTreeAnalytic ||
+        m == lightscatter::Method::BeamTreeSampling || m == lightscatter::Method::Froxels)
         return *m;
-    if (!m)
-        throw std::runtime_error(
-            "unknown method '" + name +
-            "' (budget knows: epipolar, planes, beam-tree-analytic, beam-tree-sampling)");
-    throw std::runtime_error(
-        "--method " + name +
-        ": budget knows epipolar, planes, beam-tree-analytic and beam-tree-sampling only, the "
-        "methods whose textures depend on the profile");
+    const char* known =
+        "epipolar, planes, beam-tree-analytic, beam-tree-sampling, froxels (froxels-hdrp, "
+        "froxels-unreal)";
+    if (!m) throw std::runtime_error("unknown method '" + name + "' (budget knows: " + known + ")");
+    throw std::runtime_error("--method " + name + ": budget knows " + known +
+                             " only, the methods whose textures depend on the profile or grid");
 }
 
 // --lights: a comma-separated list of lights, each TYPE[:shadowed|:unshadowed][:METHOD], TYPE one
@@ -111,9 +112,13 @@ std::string lightsName(const std::vector<lightscatter::BudgetLight>& lights,
 
 int runBudget(Args& args) {
     const std::string methodName = args.take("--method", "");
-    const lightscatter::Method method = budgetMethod(methodName.empty() ? "epipolar" : methodName);
-    const bool planes =
-        method != lightscatter::Method::Epipolar;  // planes and the beam trees sample with planes
+    lightscatter::Settings preset;  // a froxel preset's grid
+    const bool froxelPreset = lightscatter::applyFroxelPreset(methodName, preset);
+    const lightscatter::Method method =
+        budgetMethod(methodName.empty() ? "epipolar" : methodName, preset);
+    const bool froxels = method == lightscatter::Method::Froxels;
+    // planes and the beam trees sample with planes
+    const bool planes = method != lightscatter::Method::Epipolar && !froxels;
     const std::string settingsPath = args.take("--settings", "");
     const std::string profileName =
         args.take("--profile", settingsPath.empty() ? "all" : "balanced");
@@ -153,8 +158,15 @@ int runBudget(Args& args) {
 
     nlohmann::json all = nlohmann::json::array();
     for (lightscatter::Profile p : profiles) {
-        const auto s =
-            p == lightscatter::Profile::Custom ? custom : lightscatter::profileSettings(p);
+        auto s = p == lightscatter::Profile::Custom ? custom : lightscatter::profileSettings(p);
+        if (froxelPreset) {
+            s.froxelTile = preset.froxelTile;
+            s.froxelSlices = preset.froxelSlices;
+        } else if (p != lightscatter::Profile::Custom) {
+            s.froxelTile = custom.froxelTile;  // the grid is read from --settings with any profile
+            s.froxelSlices = custom.froxelSlices;
+            s.froxelFarDistance = custom.froxelFarDistance;
+        }
         const uint32_t shadow = shadowOverride ? shadowOverride : s.shadowMapSize;
         const lightscatter::Budget b =
             lightList.perLight
@@ -166,7 +178,10 @@ int runBudget(Args& args) {
             j["method"] = lightscatter::methodName(method);
             j["profile"] = lightscatter::profileName(p);
             j["screen"] = {size.width, size.height};
-            if (planes) {
+            if (froxels) {
+                j["froxelTile"] = s.froxelTile;
+                j["froxelSlices"] = s.froxelSlices;
+            } else if (planes) {
                 j["planeCount"] = s.planeCount;
                 j["planeTarget"] = planeTargetName(s.planeTarget);
                 j["planeBlur"] = s.planeBlur;
@@ -185,6 +200,7 @@ int runBudget(Args& args) {
                                    {"format", e.format},
                                    {"width", e.width},
                                    {"height", e.height},
+                                   {"depth", e.depth},
                                    {"bytes", e.bytes},
                                    {"transient", e.transient}});
             j["resources"] = entries;
@@ -199,7 +215,10 @@ int runBudget(Args& args) {
             continue;
         }
         const std::string what =
-            method == lightscatter::Method::BeamTreeAnalytic
+            froxels ? "froxel columns of " + std::to_string(s.froxelTile) + "x" +
+                          std::to_string(s.froxelTile) + " pixels, " +
+                          std::to_string(s.froxelSlices) + " depth slices"
+            : method == lightscatter::Method::BeamTreeAnalytic
                 ? std::to_string(s.planeCount) + " sampling planes where uncertain, float32 target"
             : method == lightscatter::Method::BeamTreeSampling
                 ? std::to_string(s.planeCount) +
@@ -215,8 +234,9 @@ int runBudget(Args& args) {
                     lights.size() > 1 ? "s" : "", lightsText.c_str(),
                     b.estimated ? "estimated without a device" : "from the device");
         for (const auto& e : b.entries)
-            std::printf("  %-40s %-22s %5u x %-5u %10.2f MiB%s\n", e.name.c_str(), e.format.c_str(),
-                        e.width, e.height, mib(e.bytes),
+            std::printf("  %-40s %-22s %5u x %-5u%s %10.2f MiB%s\n", e.name.c_str(),
+                        e.format.c_str(), e.width, e.height,
+                        e.depth > 1 ? (" x " + std::to_string(e.depth)).c_str() : "", mib(e.bytes),
                         e.transient ? "" : "  (kept across frames)");
         std::printf("  total without aliasing %.1f MiB, peak with aliasing %.1f MiB",
                     mib(b.totalBytes), mib(b.peakBytes));

@@ -55,14 +55,23 @@ RenderOptions profileOptions(const std::string& profile, const std::string& sett
 SceneOptions takeSceneOptions(Args& args, const char* defaultSize) {
     SceneOptions o;
     const std::string method = args.take("--method", "auto");
-    const auto m = lightscatter::parseMethod(method);
-    if (!m)
-        throw std::runtime_error("unknown method '" + method +
-                                 "' (known: " + joined(lightscatter::methodNames()) + ")");
+    // A froxel preset ("froxels-hdrp", "froxels-unreal") is froxels with the preset's grid.
+    lightscatter::Settings preset;
+    const bool froxelPreset = lightscatter::applyFroxelPreset(method, preset);
+    const auto m = froxelPreset ? lightscatter::Method::Froxels : lightscatter::parseMethod(method);
+    if (!m) {
+        std::vector<std::string> known = lightscatter::methodNames();
+        for (const auto& p : lightscatter::froxelPresets()) known.emplace_back(p.name);
+        throw std::runtime_error("unknown method '" + method + "' (known: " + joined(known) + ")");
+    }
     const std::string profile = args.take("--profile", "balanced");
     o.settingsPath = args.take("--settings", "");
     o.render = profileOptions(profile, o.settingsPath);
     o.render.method = *m;
+    if (froxelPreset) {
+        o.render.custom.froxelTile = preset.froxelTile;
+        o.render.custom.froxelSlices = preset.froxelSlices;
+    }
     // Known before any device exists: seed 002's noise is a density only seed 002's planes sample
     // (auto picks them when it is on); the plugin would refuse every other method's frame.
     const float noise = o.render.custom.noiseAmplitude;

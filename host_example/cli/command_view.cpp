@@ -404,6 +404,7 @@ int runView(Args& args) {
                 if (!l.cookie) methods.push_back(lightscatter::Method::BeamTreeAnalytic);
                 methods.push_back(lightscatter::Method::BeamTreeSampling);
             }
+            methods.push_back(lightscatter::Method::Froxels);  // what engines ship, to compare
             auto it = std::find(methods.begin(), methods.end(), options.method);
             options.method =
                 it == methods.end() || it + 1 == methods.end() ? methods[0] : *(it + 1);

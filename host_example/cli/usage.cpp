@@ -9,7 +9,8 @@ namespace {
 const char* kCommon =
     "common options: --device NAME (or LS_DEVICE), --validation, --help (-h)\n"
     "methods: auto (default), epipolar, brute-force, analytic, cone-march, planes (or its\n"
-    "former name slices), beam-tree-analytic, beam-tree-sampling; profiles:\n"
+    "former name slices), beam-tree-analytic, beam-tree-sampling, froxels (or a grid\n"
+    "preset: froxels-hdrp, the default, froxels-unreal); profiles:\n"
     "high-quality, balanced (default), high-performance, low-high-quality, low-balanced,\n"
     "low-high-performance, custom (with --settings)\n";
 
@@ -26,7 +27,8 @@ const char* kSettings =
     "                        slicePlaneScaling, sliceRange, sliceDither, sliceBlur,\n"
     "                        sliceAmbient),\n"
     "                        noiseAmplitude, noiseScale, noiseVelocity [4 numbers]; seed 004's\n"
-    "                        lightModel (full, simplified), simplifiedA0, simplifiedA1); fields\n"
+    "                        lightModel (full, simplified), simplifiedA0, simplifiedA1;\n"
+    "                        froxels' froxelTile, froxelSlices, froxelFarDistance); fields\n"
     "                        it leaves out keep the values of --profile, and the frame runs as\n"
     "                        the custom profile\n";
 
@@ -53,15 +55,16 @@ const std::array kCommands{
         "Outputs are written all or nothing: each must be its own file and none may be an "
         "input.\n"},
     Command{"budget",
-            "budget [--method epipolar|planes|beam-tree-analytic|beam-tree-sampling]\n"
+            "budget [--method epipolar|planes|beam-tree-analytic|beam-tree-sampling|froxels]\n"
             "                    [--profile NAME|all]\n"
             "                    [--settings FILE.json]\n"
             "                    [--size WxH] [--shadow-map N] [--lights LIST]\n"
             "                    [--json]\n",
             "Prints a method's GPU memory per profile without a GPU.\n"
-            "  --method NAME       epipolar (default), planes, beam-tree-analytic or\n"
-            "                      beam-tree-sampling, the methods whose textures depend on the\n"
-            "                      profile\n"
+            "  --method NAME       epipolar (default), planes, beam-tree-analytic,\n"
+            "                      beam-tree-sampling or froxels (froxels-hdrp,\n"
+            "                      froxels-unreal), the methods whose textures depend on the\n"
+            "                      profile or the grid\n"
             "  --profile NAME|all  one profile, or all of them (default)\n"
             "  --size WxH          the screen, 1 to 16384 each (default 2560x1600)\n"
             "  --shadow-map N      the shadow map's size, 1 to 16384 (default: the profile's)\n"

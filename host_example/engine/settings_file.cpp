@@ -47,7 +47,10 @@ constexpr const char* kFields[] = {"slices",
                                    "noiseVelocity",
                                    "lightModel",
                                    "simplifiedA0",
-                                   "simplifiedA1"};
+                                   "simplifiedA1",
+                                   "froxelTile",
+                                   "froxelSlices",
+                                   "froxelFarDistance"};
 
 // The planes method's fields were named after "slice" until the word came to mean only an
 // epipolar line; files written with those names still read.
@@ -160,6 +163,12 @@ class SettingsReader {
                 s.simplifiedA0 = number(v, key);
             else if (field == "simplifiedA1")
                 s.simplifiedA1 = number(v, key);
+            else if (field == "froxelTile")
+                s.froxelTile = whole(v, key);
+            else if (field == "froxelSlices")
+                s.froxelSlices = whole(v, key);
+            else if (field == "froxelFarDistance")
+                s.froxelFarDistance = number(v, key);
             else if (field == "shadowMapSize") {
                 s.shadowMapSize = whole(v, key);
                 if (s.shadowMapSize < 1 || s.shadowMapSize > 16384)

@@ -5,6 +5,7 @@
 #include "brute_force/brute_force_method.h"
 #include "cone_march/cone_march_method.h"
 #include "epipolar/epipolar_method.h"
+#include "froxels/froxels_method.h"
 #include "planes/planes_method.h"
 
 namespace ls {
@@ -17,9 +18,10 @@ const std::vector<const MethodUnit*>& methodRegistry() {
     static const PlanesMethod planes;
     static const BeamTreeAnalyticMethod beamTreeAnalytic;
     static const BeamTreeSamplingMethod beamTreeSampling;
+    static const FroxelsMethod froxels;
     static const std::vector<const MethodUnit*> all{
-        &epipolar, &bruteForce,       &analytic,        &coneMarch,
-        &planes,   &beamTreeAnalytic, &beamTreeSampling};
+        &epipolar, &bruteForce,       &analytic,         &coneMarch,
+        &planes,   &beamTreeAnalytic, &beamTreeSampling, &froxels};
     return all;
 }
 

@@ -22,6 +22,7 @@ struct LightSetup {
     uint32_t planeBlur = 0;
     bool planeDither = false;
     ConeMarchOptions cone;
+    FroxelSettings froxels;
     bool shadowSampling = true;  // false: seed 003's low-end mode
     VkExtent2D screen{0, 0};
     // The pixels whose rays may cross the light's volume (lightScreenRect); the whole screen

@@ -24,6 +24,8 @@ struct MethodCaps {
     bool countsSteps = false;     // DebugOptions::countSteps: a counting variant of its march
     // Its textures depend on the profile's sizes: budget() reports it.
     bool budgeted = false;
+    // Every light of the frame goes through one chain (addFrameChain): the froxel grid.
+    bool frameWide = false;
 };
 
 // One light's chain in the frame graph's configuration: what decides its nodes, their textures
@@ -101,6 +103,12 @@ class MethodUnit {
     virtual ChainOutputs addChain(rg::RenderGraph& graph, const ChainInputs& in,
                                   const ChainConfig& config,
                                   const CompositeTarget& target) const = 0;
+    // A frame-wide method's chain (caps().frameWide), in place of one addChain per light: every
+    // light reaching the view, in the frame's order (the inputs and configurations of each).
+    // `target` is never add-only: the chain is the frame's only one.
+    virtual ChainOutputs addFrameChain(rg::RenderGraph& graph, const std::vector<ChainInputs>& in,
+                                       const std::vector<ChainConfig>& configs,
+                                       const CompositeTarget& target) const;
     // Which nodes the chain was built from, and why, in one line.
     virtual std::string summary(const ChainConfig& config) const = 0;
     // What changed this frame without a rebuild, appended to the report's reason (the cube faces

@@ -94,6 +94,14 @@ struct ConeMarchOptions {
     bool jitter = false;      // a per-pixel offset of the samples instead of the midpoints
 };
 
+// The froxel grid (the method froxels): its size, and how far its slices reach.
+struct FroxelSettings {
+    bool operator==(const FroxelSettings&) const = default;
+    uint32_t tile = 8;         // pixels per froxel on x and y
+    uint32_t slices = 64;      // depth slices
+    float farDistance = 0.0f;  // metres; 0: the medium's maxDistance (and the camera's far plane)
+};
+
 // The look-up table's shape and scale (shaders/shared/lut.glsl).
 // Rows are uniform in log(hEff / r0) from 0 (a ray through the light) to logRange, where
 // extinction has made the table negligible (or, without extinction, far beyond where it changes).

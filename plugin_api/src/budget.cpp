@@ -136,6 +136,12 @@ Budget setBudget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
         profile == Profile::Custom ? (custom ? *custom : Settings{}) : profileSettings(profile);
     // Read from custom with every profile, as a frame does: it adds the refinement's passes.
     if (custom) s.inscatterRefinementThreshold = custom->inscatterRefinementThreshold;
+    // So is the froxel grid (its presets are settings, not profiles).
+    if (custom) {
+        s.froxelTile = custom->froxelTile;
+        s.froxelSlices = custom->froxelSlices;
+        s.froxelFarDistance = custom->froxelFarDistance;
+    }
     detail::checkSettings(s);
 
     // The frame budget() describes: each light reaching the view, with a shadow map of
@@ -178,6 +184,13 @@ Budget setBudget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
                                         : detail::ImportState{});
         images.lightColors.push_back({});
     }
+    // A frame-wide method (froxels) takes every light, as in a frame.
+    for (size_t i = 0; i < methods.size(); ++i)
+        if (methods[i]->caps().frameWide && methods != std::vector(methods.size(), methods[i]))
+            throw InvalidInput("lightscatter: budget lights[" + std::to_string(i) +
+                               "].method = " + methods[i]->name() +
+                               " takes every light of the frame into one grid: give it to every "
+                               "light, or to none");
     const rg::OfflineDeviceCaps device;
     detail::GraphOptions options;
     options.depthStencil = detail::stencilFormat(device);
@@ -201,7 +214,8 @@ Budget setBudget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
         const auto& p = compiled.resources[id];
         if (r.imported || !p.used) continue;
         b.entries.push_back({r.name, r.buffer ? "buffer" : rg::formatName(r.image.format),
-                             p.extent.width, p.extent.height, p.memory.size, true});
+                             p.extent.width, p.extent.height, p.memory.size, true,
+                             r.buffer ? 1u : r.image.depth});
     }
     b.totalBytes = compiled.unaliasedBytes;
     b.peakBytes = compiled.aliasedBytes;

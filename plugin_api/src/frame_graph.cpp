@@ -92,6 +92,9 @@ std::string frameSummary(const GraphConfig& c, size_t chains) {
                    : "the light reaches no view ray (or nothing scatters): extinction only";
     std::string s = std::to_string(c.lights.size()) + " lights, " + std::to_string(chains) +
                     " reaching the view";
+    if (c.lights[0].method->caps().frameWide)
+        return s + ", in one chain (" + c.lights[0].method->name() +
+               "): " + c.lights[0].method->summary(c.lights[0].chain);
     for (size_t i = 0; i < c.lights.size(); ++i)
         if (c.lights[i].touchesView)
             s += "; light " + std::to_string(i) + " (" + c.lights[i].method->name() +
@@ -157,6 +160,8 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
     rg::ImageRef noise;  // the noise as the chains read it (made first, when it is the plugin's)
     rg::BufferRef counts;
     size_t chains = 0;
+    std::vector<ls::ChainInputs> frameWide;  // the lights of a frame-wide method
+    std::vector<ls::ChainConfig> frameWideConfigs;
     for (size_t i = 0; i < c.lights.size(); ++i) {
         const LightGraphConfig& l = c.lights[i];
         if (!l.touchesView) continue;  // a light whose volume misses the view costs nothing
@@ -192,6 +197,12 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
             counts = ls::addClearStepCounts(g, {fg.stepCounts});
         }
         in.stepCounts = counts;
+        if (l.method->caps().frameWide) {
+            // Its lights go into one chain, added once they are all known.
+            frameWide.push_back(in);
+            frameWideConfigs.push_back(l.chain);
+            continue;
+        }
         // The first chain's composite applies the extinction; the others add their Lin.
         const ls::CompositeTarget target{color, linOut, chains != 0};
         const ls::ChainOutputs o = l.method->addChain(g, in, l.chain, target);
@@ -210,6 +221,14 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
         ++chains;
     }
     g.setNameSuffix({});
+    if (!frameWide.empty()) {
+        // A frame-wide method takes every light (the method choice mixes it with no other).
+        const ls::ChainOutputs o = c.lights[0].method->addFrameChain(g, frameWide, frameWideConfigs,
+                                                                     {color, linOut, false});
+        color = o.target.color;
+        linOut = o.target.inscatterOut;
+        chains = frameWide.size();
+    }
     if (chains == 0) ls::addComposite(g, {frame, color, {}, linOut});  // extinction only
     if (counts.valid()) g.markOutput(counts);
     fg.summary = frameSummary(c, chains);

@@ -583,6 +583,15 @@ void checkSettings(const Settings& s, const std::string& at) {
             "the depth range: beyond it every ray is lit, or shadowed, all the same");
     if (s.coneSamples < 1 || s.coneSamples > 4096)
         fail(c + "coneSamples = " + std::to_string(s.coneSamples) + ": must be between 1 and 4096");
+    if (s.froxelTile < 2 || s.froxelTile > 64)
+        fail(c + "froxelTile = " + std::to_string(s.froxelTile) +
+             ": must be between 2 and 64 pixels");
+    if (s.froxelSlices < 4 || s.froxelSlices > 512)
+        fail(c + "froxelSlices = " + std::to_string(s.froxelSlices) +
+             ": must be between 4 and 512");
+    if (s.froxelFarDistance != 0.0f)
+        inRange(s.froxelFarDistance, c + "froxelFarDistance", 1e-6, limits::kMaxLength,
+                "or 0: the medium's maxDistance");
     if (s.planeCount < 2 || s.planeCount > 4096)
         fail(c + "planeCount = " + std::to_string(s.planeCount) + ": must be between 2 and 4096");
     if (s.planeTarget != PlaneTarget::Float16 && s.planeTarget != PlaneTarget::Float32 &&
@@ -859,6 +868,7 @@ void applySettings(ls::LightSetup& s, const Settings& st, uint32_t shadowMapSize
     s.planeBlur = st.planeBlur;
     s.planeDither = st.planeDither;
     s.cone = {st.coneSamples, st.coneLimited, st.coneJitter};
+    s.froxels = {st.froxelTile, st.froxelSlices, st.froxelFarDistance};
     s.shadowSampling = st.shadowSampling;
     s.noise = st.noiseAmplitude > 0.0f;
     s.simplified = st.lightModel == LightModel::Simplified;

@@ -171,8 +171,37 @@ std::vector<MethodChoice> chooseLightMethods(Method frameMethod, ValidatedFrame&
             if (!v.list) throw;
             throw aboutLight(e, i);
         }
-        occluders = occluders || (v.touchesView[i] && choices[i].unit().caps().readsOccluders);
     }
+    // A frame-wide method (froxels) takes every light into one chain: once one light resolves to
+    // it, the lights that follow the frame's method go with it, and one that names another
+    // method is refused.
+    for (size_t i = 0; i < n; ++i) {
+        if (!choices[i].unit().caps().frameWide) continue;
+        const Method wide = choices[i].method;
+        for (size_t j = 0; j < n; ++j) {
+            if (choices[j].method == wide) continue;
+            const bool own = v.list && inputs[j].method != Method::Auto;
+            if (own)
+                refuse("lights[" + std::to_string(j) +
+                       "].method = " + methodName(inputs[j].method) + ": " + methodName(wide) +
+                       " (lights[" + std::to_string(i) +
+                       "]'s) takes every light of the frame into one grid and mixes with no "
+                       "other method; leave lights[" +
+                       std::to_string(j) + "].method auto, or choose no " + methodName(wide));
+            try {
+                choices[j] = chooseMethod(wide, v.lights[j], v.touchesView[j]);
+                choices[j].reason = methodName(wide) +
+                                    std::string(" takes every light of the frame (lights[") +
+                                    std::to_string(i) + "] resolved to it)";
+            } catch (const InvalidInput& e) {
+                if (!v.list) throw;
+                throw aboutLight(e, j);
+            }
+        }
+        break;
+    }
+    for (size_t i = 0; i < n; ++i)
+        occluders = occluders || (v.touchesView[i] && choices[i].unit().caps().readsOccluders);
     // Checked, and converted, only when a light's method reads them: the others ignore them, as
     // the header says, and a scene of 100,000 parts must not stop them.
     if (occluders) {

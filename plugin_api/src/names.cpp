@@ -110,6 +110,20 @@ Settings detail::withProfileSizes(Settings s, Profile profile) {
     return s;
 }
 
+std::vector<FroxelPreset> froxelPresets() {
+    return {{"froxels-hdrp", 8, 64}, {"froxels-unreal", 16, 64}};
+}
+
+bool applyFroxelPreset(const std::string& name, Settings& s) {
+    for (const FroxelPreset& p : froxelPresets())
+        if (name == p.name) {
+            s.froxelTile = p.tile;
+            s.froxelSlices = p.slices;
+            return true;
+        }
+    return false;
+}
+
 std::vector<const char*> requiredDeviceExtensions() {
     return {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
 }

@@ -55,6 +55,9 @@
 #define LS_BINDING_UNWARP_EPIPOLAR_Z 2
 #define LS_BINDING_UNWARP_INSCATTER 3
 #define LS_BINDING_UNWARP_DEPTH 4
+// froxels (shaders/froxels/)
+#define LS_BINDING_FROXEL_SCATTERING 2  // inject.comp, integrate.comp: in-scattering per froxel
+#define LS_BINDING_FROXEL_INTEGRATED 3  // integrate.comp, apply.comp: Lin and T to each froxel
 
 // The light types' and Mie phases' values (LIGHTSCATTER_LIGHT_*, LIGHTSCATTER_MIE_*) are the
 // vocabulary's, which C++ names lightscatter::LightType and lightscatter::MiePhase.
@@ -75,6 +78,7 @@
 #define LS_SPEC_RESOLVE_CHANNELS 10  // plane_resolve.frag
 #define LS_SPEC_RESOLVE_BLUR_RADIUS 11
 #define LS_SPEC_RESOLVE_CLOSED_FORM_OUTSIDE_SLAB 12
-#define LS_SPEC_UNCLIPPED_DEPTH 20  // triangles.vert
+#define LS_SPEC_UNCLIPPED_DEPTH 20     // triangles.vert
+#define LS_SPEC_FROXEL_FIRST_LIGHT 10  // inject.comp
 
 #endif

@@ -17,15 +17,20 @@ layout(binding = LS_BINDING_ENGINE_COLOR, rgba16f) uniform image2D engineColor;
 layout(binding = LS_BINDING_LIN_OUT, rgba32f) uniform image2D inscatterOut;
 #endif
 
-void compositeInto(ivec2 p, vec3 lin, float S, bool addOnly) {
+// With the transmittance given: color = color * transmittance + k Lin (froxels' grid holds it).
+void compositeWith(ivec2 p, vec3 lin, vec3 transmittance, bool addOnly) {
     vec4 c = imageLoad(engineColor, p);
     const vec3 exposed = lin * frame.linStorage.z;
-    c.rgb = addOnly ? c.rgb + exposed : c.rgb * exp(-frame.betaT.rgb * S) + exposed;
+    c.rgb = addOnly ? c.rgb + exposed : c.rgb * transmittance + exposed;
     imageStore(engineColor, p, c);
 #if LS_WITH_OUTPUT
     vec3 earlier = addOnly ? imageLoad(inscatterOut, p).rgb : vec3(0.0);
     imageStore(inscatterOut, p, vec4(earlier + lin, 1.0));
 #endif
+}
+
+void compositeInto(ivec2 p, vec3 lin, float S, bool addOnly) {
+    compositeWith(p, lin, addOnly ? vec3(1.0) : exp(-frame.betaT.rgb * S), addOnly);
 }
 
 #endif

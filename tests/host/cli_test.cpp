@@ -7,7 +7,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <tuple>
 
 #include "cli_runner.h"
 #include "image_io.h"
@@ -113,7 +115,8 @@ TEST(Cli, RenderCountsTheRayMarchSteps) {
 
 TEST(Cli, RenderEachSceneWithEachMethod) {
     for (const char* name : {"atrium", "window_room", "engine_spot", "point_fog"})
-        for (const char* method : {"epipolar", "brute-force", "cone-march", "planes", "auto"}) {
+        for (const char* method : {"epipolar", "brute-force", "cone-march", "planes", "froxels",
+                                   "froxels-unreal", "auto"}) {
             const auto r = run(std::string("render ") + scene(name) + " --size 48x27 --method " +
                                method + " --out " + name + ".exr --validation");
             EXPECT_EQ(r.exitCode, 0) << name << " " << method << ": " << r.out;
@@ -312,9 +315,43 @@ TEST(Cli, BudgetOfPlanesPrintsTheirTextures) {
     EXPECT_EQ(nlohmann::json::parse(e.out)[0]["method"], "epipolar");
 
     expectFailure(run("budget --method cone-march"),
-                  "--method cone-march: budget knows epipolar, planes, beam-tree-analytic and "
-                  "beam-tree-sampling only");
+                  "--method cone-march: budget knows epipolar, planes, beam-tree-analytic, "
+                  "beam-tree-sampling, froxels (froxels-hdrp, froxels-unreal) only");
     expectFailure(run("budget --method raytrace"), "unknown method 'raytrace'");
+}
+
+// The froxel grid's two textures at each preset: HDRP's 240x135x64 at 1920x1080 (float32
+// in-scattering, 32 MiB with the offline estimate's rounding; float16 integrated, 16 MiB), and
+// Unreal's 120x68x64, a quarter of it.
+TEST(Cli, BudgetOfFroxelsFollowsThePreset) {
+    auto grid = [](const std::string& preset) {
+        const auto r = run("budget --method " + preset + " --profile balanced --size 1920x1080 " +
+                           "--lights sun,spot --json");
+        EXPECT_EQ(r.exitCode, 0) << r.out;
+        const auto j = nlohmann::json::parse(r.out).at(0);
+        EXPECT_EQ(j["method"], "froxels");
+        EXPECT_EQ(j["lightMethods"], nlohmann::json({"froxels", "froxels"}));
+        std::map<std::string, nlohmann::json> byName;
+        for (const auto& e : j["resources"]) byName[e["name"]] = e;
+        return byName;
+    };
+    for (const auto& [preset, columns, rows] : {std::tuple{"froxels", 240, 135},
+                                                {"froxels-hdrp", 240, 135},
+                                                {"froxels-unreal", 120, 68}}) {
+        auto g = grid(preset);
+        for (const char* name : {"froxel in-scattering", "froxel integrated in-scattering"}) {
+            ASSERT_TRUE(g.count(name)) << preset << ": " << name;
+            EXPECT_EQ(g[name]["width"], columns) << preset;
+            EXPECT_EQ(g[name]["height"], rows) << preset;
+            EXPECT_EQ(g[name]["depth"], 64) << preset;
+        }
+        EXPECT_EQ(g["froxel in-scattering"]["format"], "R32G32B32A32_SFLOAT");
+        EXPECT_EQ(g["froxel integrated in-scattering"]["format"], "R16G16B16A16_SFLOAT");
+        EXPECT_GE(g["froxel in-scattering"]["bytes"].get<uint64_t>(),
+                  uint64_t(columns) * rows * 64 * 16);
+    }
+    expectFailure(run("budget --method froxels --lights sun,spot:epipolar"),
+                  "froxels takes every light of the frame into one grid");
 }
 
 // --lights with each light's shadow and method (issue #25): the set budgeted light by light, auto

@@ -6,11 +6,14 @@
 #include <stdexcept>
 #include <string>
 
+#include "apply_comp_variants.h"
 #include "beam_tree_hybrid/beam_tree_shaders.h"
 #include "composite_comp_variants.h"
 #include "cone_march/cone_march_shader.h"
 #include "cone_march_frag_variants.h"
 #include "epipolar/epipolar_shaders.h"
+#include "froxels/froxel_shaders.h"
+#include "inject_comp_variants.h"
 #include "min_max_first_level_comp_variants.h"
 #include "pixel_march_frag_variants.h"
 #include "planes/plane_shaders.h"
@@ -97,6 +100,17 @@ TEST(ShaderVariants, ScreenLinNodesAskForBuiltVariants) {
     expectAllReached(ls_spirv::unshadowed_frag_variants, unshadowed);
     expectAllReached(ls_spirv::cone_march_frag_variants, coneMarch);
     expectAllReached(ls_spirv::planes_frag_variants, planes);
+}
+
+TEST(ShaderVariants, FroxelNodesAskForBuiltVariants) {
+    Reached inject, apply;
+    for (bool shadow : {false, true})
+        for (bool color : {false, true})
+            for (bool cube : {false, true}) reach(inject, froxelInjectShader(shadow, color, cube));
+    for (VkFormat color : kColors)
+        for (bool out : {false, true}) reach(apply, froxelApplyShader(color, out));
+    expectAllReached(ls_spirv::inject_comp_variants, inject);
+    expectAllReached(ls_spirv::apply_comp_variants, apply);
 }
 
 TEST(ShaderVariants, CountingStepsIsAnotherBuild) {

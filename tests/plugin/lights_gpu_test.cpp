@@ -65,7 +65,8 @@ class LightsGpu : public PluginGpuTest {
 
     // Two spots' summed Lin against the sum of their single-light renders (unshadowed for a method
     // that casts no shadows).
-    void checkSum(Method method, bool shadowed = true) {
+    // `tolerance`: of the peak (froxels keep the integrated grid in float16).
+    void checkSum(Method method, bool shadowed = true, double tolerance = 1e-6) {
         FrameSpec specA = sceneWith(spotOverGrille()), specB = sceneWith(secondSpot());
         specA.shadowed = specB.shadowed = shadowed;
         TestFrame a(dev(), specA);
@@ -91,7 +92,7 @@ class LightsGpu : public PluginGpuTest {
         std::printf(
             "%s: two spots' summed Lin vs the sum of single renders: max |diff| %.3g, peak %.3g\n",
             lightscatter::methodName(method), worst, peak);
-        EXPECT_LE(worst, 1e-6 * peak);
+        EXPECT_LE(worst, tolerance * peak);
     }
 };
 
@@ -116,6 +117,35 @@ TEST_F(LightsGpu, BeamTreeSamplingTwoSpotsSumToTheSingleRenders) {
 }
 TEST_F(LightsGpu, AnalyticTwoUnshadowedSpotsSumToTheSingleRenders) {
     checkSum(Method::Analytic, false);
+}
+// Froxels inject both spots into one grid: its integration is linear in the in-scattering.
+TEST_F(LightsGpu, FroxelsTwoSpotsSumToTheSingleRenders) {
+    checkSum(Method::Froxels, true, 2e-3);
+}
+
+// Froxels take every light into one grid: a frame whose method is froxels refuses a light that
+// names another method, and a light that names froxels in an auto frame takes the others along.
+TEST_F(LightsGpu, FroxelsMixWithNoOtherMethod) {
+    TestFrame a(dev(), sceneWith(spotOverGrille()));
+    TestFrame b(dev(), sceneWith(secondSpot()));
+    const auto settings = smallSettings(a.spec().screen);
+    const auto da = a.description(Method::Froxels, lightscatter::Profile::Custom, settings);
+    const auto db = b.description(Method::Froxels, lightscatter::Profile::Custom, settings);
+    auto second = input(db);
+    second.method = Method::BruteForce;
+    EXPECT_EQ(refusal(withLights(da, {input(da), second})),
+              "lightscatter: lights[1].method = brute-force: froxels (lights[0]'s) takes every "
+              "light of the frame into one grid and mixes with no other method; leave "
+              "lights[1].method auto, or choose no froxels");
+    auto automatic = withLights(da, {input(da), input(db)});
+    automatic.method = Method::Auto;
+    automatic.lights[1].method = Method::Froxels;
+    const auto report = plugin().render(automatic);
+    ASSERT_EQ(report.lights.size(), 2u);
+    EXPECT_EQ(report.lights[0].method, "froxels");
+    EXPECT_EQ(report.lights[1].method, "froxels");
+    EXPECT_NE(report.lights[0].reason.find("froxels takes every light"), std::string::npos)
+        << report.lights[0].reason;
 }
 
 // A light's own method overrides the frame's: the first spot by epipolar, the second by brute

@@ -155,6 +155,11 @@ enum class Method {
     Planes,
     BeamTreeAnalytic,
     BeamTreeSampling,
+    // The froxel volumetric fog engines ship (Unreal, Frostbite, HDRP, Godot), for comparison on
+    // the same frame: every light of the frame injected into one view-frustum grid
+    // (Settings::froxel*), integrated front to back, applied at each pixel's depth. Frame-wide:
+    // when a frame's lights resolve to it, every light goes through the grid.
+    Froxels,
     Auto,
     // The planes method's former name ("slices" too is still parsed), kept so that engines
     // written against it compile; "slice" now means only an epipolar line.
@@ -266,7 +271,26 @@ struct Settings {
     // a0 in [0, limits::kMaxSimplifiedA0] (m^2): the default light radius 0.05 m, squared.
     float simplifiedA0 = 0.0025f;
     float simplifiedA1 = 1.0f;  // a1 in [limits::kMinSimplifiedA1, limits::kMaxSimplifiedA1]
+    // froxels, taken from `custom` with every profile: the grid's columns are froxelTile x
+    // froxelTile pixels (2 to 64; 8 is froxelPresets()'s "froxels-hdrp", 240x135 columns at
+    // 1920x1080, 16 its "froxels-unreal"), cut into froxelSlices depth slices (4 to 512) whose
+    // camera-space z grows geometrically from the near plane to froxelFarDistance (metres; 0: the
+    // medium's maxDistance, or the far plane where it is nearer; else above the near plane and at
+    // most maxDistance). Beyond it the grid's last slice holds: in-scattering further away is lost.
+    uint32_t froxelTile = 8;
+    uint32_t froxelSlices = 64;
+    float froxelFarDistance = 0.0f;
 };
+
+// The froxel grid's named presets as engines ship them: "froxels-hdrp" (Unity HDRP: the screen / 8
+// on x and y, 64 slices; the default) and "froxels-unreal" (Unreal's volumetric fog: the screen /
+// 16, 64 slices). `apply` sets a preset's fields in `s`; false for an unknown name.
+struct FroxelPreset {
+    const char* name;
+    uint32_t tile, slices;
+};
+LIGHTSCATTER_API std::vector<FroxelPreset> froxelPresets();
+LIGHTSCATTER_API bool applyFroxelPreset(const std::string& name, Settings& s);
 
 // The settings of a profile (Custom returns the defaults).
 LIGHTSCATTER_API Settings profileSettings(Profile profile);
@@ -583,6 +607,7 @@ struct BudgetEntry {
     uint32_t width = 0, height = 0;
     uint64_t bytes = 0;
     bool transient = true;  // false: owned by the plugin across frames (look-up table)
+    uint32_t depth = 1;     // a 3D texture's slices (froxels' grids)
 };
 
 // A figure seed 000 publishes for a profile: its screen, memory (MB) and time (ms) on its GPU.

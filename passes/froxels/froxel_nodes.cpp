@@ -1,0 +1,169 @@
+#include "froxel_nodes.h"
+
+#include "froxel_shaders.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/glm.hpp>
+
+#include "apply_comp_variants.h"
+#include "inject_comp_variants.h"
+#include "integrate_comp.h"
+#include "shared/pass_helpers.h"
+#include "shared/shader_variant.h"
+
+namespace ls {
+namespace {
+
+// The froxel passes' push block (its fields written once, in froxel_push_fields.h).
+struct FroxelPush {
+#define LS_VEC4 glm::vec4
+#include "shaders/froxels/froxel_push_fields.h"
+#undef LS_VEC4
+};
+
+// The push block of a frame: the slices from the near plane to the far distance, capped by the
+// medium's maxDistance and a finite far plane (no ray goes further); Lin stored at `storage`.
+FroxelPush froxelPush(const FrameConstants& c, const FroxelGrid& g, float storage) {
+    const float nearZ = c.depthInfo.z;
+    float farZ = c.betaM.w;  // maxDistance
+    if (g.farDistance > 0.0f) farZ = std::min(farZ, g.farDistance);
+    if (c.depthInfo.y < 0.5f) farZ = std::min(farZ, c.depthInfo.w);
+    farZ = std::max(farZ, nearZ * 1.001f);
+    FroxelPush p{};
+    p.grid = {float(g.columns), float(g.rows), float(g.slices), float(g.tile)};
+    p.slices = {nearZ, farZ, std::log(farZ / nearZ), storage};
+    p.jitter = glm::vec4(0.5f);
+    p.columns = {0.0f, 0.0f, float(g.columns), float(g.rows)};
+    return p;
+}
+
+// The smallest Lin scale of the frame's lights: the integrated grid holds all of them.
+float gridStorage(const rg::PassContext& ctx,
+                  const std::vector<rg::HostDataRef<LightFrame>>& lights) {
+    float s = 1.0f;
+    for (const auto& l : lights) s = std::min(s, ctx.data(l).constants.linStorage.x);
+    return s;
+}
+
+}  // namespace
+
+// A point light's cube map (`cube`, with a shadow map) comes without light color, as cone-march's.
+rg::ShaderCode froxelInjectShader(bool shadowMap, bool lightColor, bool cube) {
+    return pickShader(ls_spirv::inject_comp_variants,
+                      {{"LS_SHADOW_MAP", shadowMap},
+                       {"LS_CUBE_SHADOW", shadowMap && cube},
+                       {"LS_LIGHT_COLOR", lightColor && !(shadowMap && cube)}});
+}
+
+rg::ShaderCode froxelApplyShader(VkFormat color, bool withOutput) {
+    return pickCompositeShader(ls_spirv::apply_comp_variants, {}, color, withOutput);
+}
+
+FroxelGrid froxelGrid(VkExtent2D screen, const FroxelSettings& s) {
+    FroxelGrid g;
+    g.tile = std::max(s.tile, 1u);
+    g.columns = (screen.width + g.tile - 1) / g.tile;
+    g.rows = (screen.height + g.tile - 1) / g.tile;
+    g.slices = s.slices;
+    g.farDistance = s.farDistance;
+    return g;
+}
+
+rg::ImageRef froxelScatteringImage(rg::RenderGraph& graph, const FroxelGrid& grid) {
+    return graph.createImage(
+        "froxel in-scattering",
+        rg::ImageDesc::volume(kFroxelScatteringFormat, grid.columns, grid.rows, grid.slices));
+}
+
+rg::ImageRef addFroxelInjection(rg::RenderGraph& graph, const FroxelInjectInputs& in,
+                                const FroxelGrid& grid) {
+    const bool first = in.first;
+    auto pass = graph.addPass("froxel light injection", rg::PassType::Compute);
+    const auto& s = samplersOf(in.frame.shared);
+    rg::BindingTable table = frameTable(pass, in.frame.constants);
+    table
+        .sampledIfValid(LS_BINDING_SHADOW_MAP, in.light.shadowMap, s.nearest(),
+                        VK_IMAGE_ASPECT_DEPTH_BIT)
+        .sampledIfValid(LS_BINDING_LIGHT_COLOR, in.light.lightColor, s.linear());
+    const rg::ImageRef scattering =
+        first ? table.storageWrite(LS_BINDING_FROXEL_SCATTERING, in.scattering)
+              : table.storageReadWrite(LS_BINDING_FROXEL_SCATTERING, in.scattering);
+    const bool shadow = in.light.shadowMap.valid(), color = in.light.lightColor.valid();
+    pass.execute([frame = in.frame, table, grid, first, shadow, color](rg::PassContext& ctx) {
+        const LightFrame& values = ctx.data(frame.values);
+        FroxelPush push = froxelPush(values.constants, grid, 1.0f);
+        // The columns the light's volume may reach (its screen rectangle, in froxels).
+        const VkRect2D r = values.screenRect;
+        const uint32_t x0 = uint32_t(r.offset.x) / grid.tile, y0 = uint32_t(r.offset.y) / grid.tile;
+        const uint32_t x1 = std::min(
+            grid.columns, (uint32_t(r.offset.x) + r.extent.width + grid.tile - 1) / grid.tile);
+        const uint32_t y1 = std::min(
+            grid.rows, (uint32_t(r.offset.y) + r.extent.height + grid.tile - 1) / grid.tile);
+        push.columns = {float(x0), float(y0), float(std::max(x0, x1)), float(std::max(y0, y1))};
+        if (!first && (x1 <= x0 || y1 <= y0)) return;  // a later light that reaches no column
+        rg::Specialization spec = frame.spec.constants();
+        spec.set(LS_SPEC_FROXEL_FIRST_LIGHT, first);
+        const auto& p = frame.shared->pipelines.compute(
+            "froxel light injection", froxelInjectShader(shadow, color, frame.spec.cubeShadow),
+            table.layout(), sizeof(FroxelPush), spec);
+        p.bind(ctx.cmd());
+        table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
+        p.push(ctx.cmd(), push);
+        const uint32_t w = first ? grid.columns : x1 - x0, h = first ? grid.rows : y1 - y0;
+        ctx.vk().CmdDispatch(ctx.cmd(), groupCount(w, 4), groupCount(h, 4),
+                             groupCount(grid.slices, 4));
+    });
+    return scattering;
+}
+
+rg::ImageRef addFroxelIntegration(rg::RenderGraph& graph, const FroxelIntegrateInputs& in,
+                                  const FroxelGrid& grid) {
+    auto pass = graph.addPass("froxel integration", rg::PassType::Compute);
+    rg::BindingTable table = frameTable(pass, in.frame.constants);
+    table.storageRead(LS_BINDING_FROXEL_SCATTERING, in.scattering);
+    const rg::ImageRef integrated = table.storageWrite(
+        LS_BINDING_FROXEL_INTEGRATED,
+        graph.createImage(
+            "froxel integrated in-scattering",
+            rg::ImageDesc::volume(kFroxelIntegratedFormat, grid.columns, grid.rows, grid.slices)));
+    pass.execute([frame = in.frame, lights = in.lights, table, grid](rg::PassContext& ctx) {
+        const FroxelPush push =
+            froxelPush(ctx.data(frame.values).constants, grid, gridStorage(ctx, lights));
+        const auto& p = frame.shared->pipelines.compute(
+            "froxel integration", rg::spirv(ls_spirv::integrate_comp), table.layout(),
+            sizeof(FroxelPush), frame.spec.constants());
+        p.bind(ctx.cmd());
+        table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
+        p.push(ctx.cmd(), push);
+        ctx.vk().CmdDispatch(ctx.cmd(), groupCount(grid.columns, 8), groupCount(grid.rows, 8), 1);
+    });
+    return integrated;
+}
+
+CompositeOutputs addFroxelApply(rg::RenderGraph& graph, const FroxelApplyInputs& in,
+                                const FroxelGrid& grid) {
+    auto pass = graph.addPass("froxel apply", rg::PassType::Compute);
+    const auto& s = samplersOf(in.frame.shared);
+    rg::BindingTable table = frameTable(pass, in.frame.constants);
+    table.sampled(LS_BINDING_DEPTH, in.frame.depth, s.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
+        .sampled(LS_BINDING_FROXEL_INTEGRATED, in.integrated, s.linear());
+    const CompositeOutputs written = addCompositeTarget(table, in.target);
+    pass.execute(
+        [frame = in.frame, lights = in.lights, table, grid, written](rg::PassContext& ctx) {
+            const FroxelPush push =
+                froxelPush(ctx.data(frame.values).constants, grid, gridStorage(ctx, lights));
+            const rg::ShaderCode shader =
+                froxelApplyShader(ctx.format(written.color), written.inscatterOut.valid());
+            const auto& p = frame.shared->pipelines.compute("froxel apply", shader, table.layout(),
+                                                            sizeof(FroxelPush), {});
+            p.bind(ctx.cmd());
+            table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
+            p.push(ctx.cmd(), push);
+            const VkExtent2D e = ctx.extent(written.color);
+            ctx.vk().CmdDispatch(ctx.cmd(), groupCount(e.width, 8), groupCount(e.height, 8), 1);
+        });
+    return written;
+}
+
+}  // namespace ls

@@ -1,0 +1,64 @@
+#pragma once
+// The froxel volumetric fog engines ship (Wronski 2014, Hillaire 2015), as nodes: each light's
+// in-scattering injected into a view-frustum grid, one front-to-back integration along the grid's
+// columns, and one pass that fetches the integrated grid at each pixel's depth and composites.
+#include <vector>
+
+#include "shared/composite_target.h"
+#include "shared/frame_context.h"
+#include "shared/scattering_params.h"
+
+namespace ls {
+
+// The grid's size on a screen: columns of `tile` x `tile` pixels (rounded up), `slices` deep.
+struct FroxelGrid {
+    bool operator==(const FroxelGrid&) const = default;
+    uint32_t columns = 0, rows = 0, slices = 0, tile = 0;
+    float farDistance = 0.0f;  // FroxelSettings::farDistance
+};
+FroxelGrid froxelGrid(VkExtent2D screen, const FroxelSettings& settings);
+
+// The in-scattering grid's and the integrated grid's formats: float32 for the in-scattering, whose
+// per-metre values of a faint light fall under float16's normal range; float16 for the integrated
+// Lin (stored at a scale, as the screen Lin is) and transmittance.
+inline constexpr VkFormat kFroxelScatteringFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+inline constexpr VkFormat kFroxelIntegratedFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+
+struct FroxelInjectInputs {
+    FrameContext frame;  // the light's constants and values
+    LightImages light;   // its shadow map and light color, where it has them
+    // The grid the frame's earlier lights wrote, or for the first light (`first`), which writes
+    // every froxel, the new grid (froxelScatteringImage()).
+    rg::ImageRef scattering;
+    bool first = false;
+};
+// The in-scattering grid, declared (kFroxelScatteringFormat, the grid's size) for the first
+// light's injection.
+rg::ImageRef froxelScatteringImage(rg::RenderGraph& graph, const FroxelGrid& grid);
+// In-scattering per froxel (kFroxelScatteringFormat, the grid's size): the light's added to the
+// earlier lights'.
+rg::ImageRef addFroxelInjection(rg::RenderGraph& graph, const FroxelInjectInputs& in,
+                                const FroxelGrid& grid);
+
+struct FroxelIntegrateInputs {
+    FrameContext frame;  // the first light's: the camera and the medium
+    rg::ImageRef scattering;
+    // Every light's values: the integrated grid is stored at the smallest of their Lin scales.
+    std::vector<rg::HostDataRef<LightFrame>> lights;
+};
+// Lin and the mean transmittance from the camera to each froxel's far end
+// (kFroxelIntegratedFormat, the grid's size).
+rg::ImageRef addFroxelIntegration(rg::RenderGraph& graph, const FroxelIntegrateInputs& in,
+                                  const FroxelGrid& grid);
+
+struct FroxelApplyInputs {
+    FrameContext frame;  // the first light's
+    rg::ImageRef integrated;
+    std::vector<rg::HostDataRef<LightFrame>> lights;  // as the integration's
+    CompositeTarget target;
+};
+// The engine's color (and Lin output) with the grid applied at each pixel's depth.
+CompositeOutputs addFroxelApply(rg::RenderGraph& graph, const FroxelApplyInputs& in,
+                                const FroxelGrid& grid);
+
+}  // namespace ls

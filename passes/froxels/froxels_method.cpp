@@ -1,0 +1,83 @@
+#include "froxels_method.h"
+
+#include "shared/chain_inputs.h"
+#include "shared/refusals.h"
+
+namespace ls {
+
+MethodCaps FroxelsMethod::caps() const {
+    MethodCaps c;
+    c.cubeShadow = true;
+    c.budgeted = true;
+    c.frameWide = true;
+    return c;
+}
+
+namespace {
+
+// The slices run from the near plane to the far distance, within the medium's reach.
+std::string refuseFarDistance(const LightSetup& s) {
+    const float far = s.froxels.farDistance;
+    if (far == 0.0f) return {};
+    const std::string field = s.settingsPath + ".froxelFarDistance = " + twoDigits(far);
+    if (far > s.medium.maxDistance)
+        return field + ": must be at most medium.maxDistance (" + twoDigits(s.medium.maxDistance) +
+               "), where every ray ends";
+    if (far <= s.camera.nearPlane)
+        return field + ": must be beyond the camera's near plane (" +
+               twoDigits(s.camera.nearPlane) + "), where the first slice starts";
+    return {};
+}
+
+}  // namespace
+
+std::string FroxelsMethod::refusal(const LightSetup& s) const {
+    return firstRefusal({refuseSkippedShadows(s, name()), refuseNoise(s, name()),
+                         refuseSimplified(s, name()), refuseFarDistance(s)});
+}
+
+ChainOptions FroxelsMethod::options(const LightSetup& s, const LightData*,
+                                    const ChainOptions*) const {
+    return ChainOptions(Options{s.froxels});
+}
+
+ChainOutputs FroxelsMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,
+                                     const ChainConfig& c, const CompositeTarget& target) const {
+    return addFrameChain(g, {in}, {c}, target);
+}
+
+// One injection per light, in the frame's order, into one grid; then one integration and one
+// apply, with the first light's constants (the camera and the medium are every light's).
+ChainOutputs FroxelsMethod::addFrameChain(rg::RenderGraph& g, const std::vector<ChainInputs>& in,
+                                          const std::vector<ChainConfig>& configs,
+                                          const CompositeTarget& target) const {
+    const FroxelGrid grid = froxelGrid(in.at(0).screen, configs.at(0).options.get<Options>()->grid);
+    rg::ImageRef scattering = froxelScatteringImage(g, grid);
+    std::vector<rg::HostDataRef<LightFrame>> lights;
+    for (size_t i = 0; i < in.size(); ++i) {
+        if (in.size() > 1) g.setNameSuffix(" (light " + std::to_string(i) + ")");
+        scattering = addFroxelInjection(
+            g,
+            {frameContext(in[i], configs[i]), lightImages(in[i], configs[i]), scattering, i == 0},
+            grid);
+        lights.push_back(in[i].values);
+    }
+    g.setNameSuffix({});
+    const FrameContext frame = frameContext(in[0], configs[0]);
+    const rg::ImageRef integrated = addFroxelIntegration(g, {frame, scattering, lights}, grid);
+    ChainOutputs out;
+    out.composited = true;
+    out.target = addFroxelApply(
+        g, {frame, integrated, lights, {target.color, target.inscatterOut, false}}, grid);
+    return out;
+}
+
+std::string FroxelsMethod::summary(const ChainConfig& c) const {
+    const FroxelSettings& s = c.options.get<Options>()->grid;
+    return "froxel grid of " + std::to_string(s.tile) + "x" + std::to_string(s.tile) +
+           "-pixel columns and " + std::to_string(s.slices) +
+           " exponential depth slices: each light injected at the froxels' centres, integrated "
+           "front to back, applied at each pixel's depth";
+}
+
+}  // namespace ls

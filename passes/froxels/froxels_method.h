@@ -1,0 +1,29 @@
+#pragma once
+// Froxels as a method of the frame graph (method_unit.h): the froxel volumetric fog engines ship,
+// for comparison with the seeds' methods on the same frame. Frame-wide: every light of the frame
+// is injected into one grid, integrated once and applied once.
+#include "froxel_nodes.h"
+#include "shared/method_unit.h"
+
+namespace ls {
+
+class FroxelsMethod final : public MethodUnit {
+  public:
+    struct Options {
+        bool operator==(const Options&) const = default;
+        FroxelSettings grid;
+    };
+    const char* name() const override { return "froxels"; }
+    MethodCaps caps() const override;
+    std::string refusal(const LightSetup& light) const override;
+    ChainOptions options(const LightSetup& light, const LightData*,
+                         const ChainOptions*) const override;
+    ChainOutputs addChain(rg::RenderGraph& graph, const ChainInputs& in, const ChainConfig& config,
+                          const CompositeTarget& target) const override;
+    ChainOutputs addFrameChain(rg::RenderGraph& graph, const std::vector<ChainInputs>& in,
+                               const std::vector<ChainConfig>& configs,
+                               const CompositeTarget& target) const override;
+    std::string summary(const ChainConfig& config) const override;
+};
+
+}  // namespace ls
