@@ -12,9 +12,10 @@ namespace rg {
 class OwnedImage {
   public:
     // One mip level, `layers` array layers (created with `flags`, e.g. CUBE_COMPATIBLE for six),
-    // optimal tiling, device-local memory.
+    // optimal tiling, device-local memory; `depth` above 1: a 3D image of that many slices.
     OwnedImage(const Device& device, VkFormat format, VkExtent2D extent, VkImageUsageFlags usage,
-               const std::string& name, uint32_t layers = 1, VkImageCreateFlags flags = 0);
+               const std::string& name, uint32_t layers = 1, VkImageCreateFlags flags = 0,
+               uint32_t depth = 1);
     ~OwnedImage();
     OwnedImage(const OwnedImage&) = delete;
     OwnedImage& operator=(const OwnedImage&) = delete;
@@ -24,6 +25,7 @@ class OwnedImage {
     VkExtent2D extent() const { return extent_; }
     VkImageUsageFlags usage() const { return usage_; }
     uint32_t layers() const { return layers_; }
+    uint32_t depth() const { return depth_; }
 
   private:
     const Device& device_;
@@ -31,6 +33,7 @@ class OwnedImage {
     VkExtent2D extent_;
     VkImageUsageFlags usage_;
     uint32_t layers_;
+    uint32_t depth_;
     VkImage image_ = VK_NULL_HANDLE;
     VkDeviceMemory memory_ = VK_NULL_HANDLE;
     VkDeviceSize memoryBytes_ = 0;  // counted by deviceMemoryInUse()

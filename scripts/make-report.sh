@@ -26,6 +26,13 @@
 #                                          # machine); LS_REPORT_LIGHTS=0 skips both in a full run and
 #                                          # reuses an earlier run's results, as above
 #   LS_REPORT_GPU=DIR scripts/make-report.sh # with the GPU section from scripts/gpu-bench.sh's results
+#   scripts/make-report.sh --froxels-only  # bench/froxels.json (froxels at HDRP's and Unreal's sizes,
+#                                          # plain and temporal, beside epipolar's profiles and brute
+#                                          # force at 1920x1080: a quiet machine; about 40 minutes the
+#                                          # first time, most of it the references, which
+#                                          # build/bench-froxels/references keeps), the budgets, its
+#                                          # plot, and "Against froxel fog" spliced into the page (its
+#                                          # N-lights table from --lights-only's run)
 #   scripts/make-report.sh --flicker-only  # bench/flicker.json alone (temporal stability: 60 frames of a
 #                                          # moving light, then camera, per scene and method at 160x90;
 #                                          # about an hour on 2 cores the first time, most of it the float64
@@ -67,6 +74,31 @@ if [[ "$config" == --lights-only ]]; then
   /usr/bin/python3 scripts/write_report.py --lights-section build/bench-lights-scaling build/bench-lights \
     docs/performance.md
   echo "docs/performance.md: section 'Several lights' replaced"
+  exit 0
+fi
+froxels() {
+  # Timings: run it on a quiet machine. The 1920x1080 references stay in build/bench-froxels. The
+  # cost of N lights comes from the lights() run's folder (bench/lights_scaling.json lists froxels).
+  local dir=build/bench-froxels
+  mkdir -p "$dir"
+  uptime > "$dir/load-before.txt"
+  ./build/host_example/lightscatter bench --config bench/froxels.json --out "$dir"
+  uptime > "$dir/load-after.txt"
+  for m in froxels-hdrp froxels-unreal froxels-hdrp-temporal froxels-unreal-temporal; do
+    ./build/host_example/lightscatter budget --method "$m" --profile balanced --size 1920x1080 --json \
+      > "$dir/budget-$m.json"
+  done
+  for p in high-quality balanced high-performance; do
+    ./build/host_example/lightscatter budget --method epipolar --profile "$p" --size 1920x1080 --json \
+      > "$dir/budget-epipolar-$p.json"
+  done
+  /usr/bin/python3 scripts/plot_froxels.py "$dir" "$out"
+}
+if [[ "$config" == --froxels-only ]]; then
+  froxels
+  /usr/bin/python3 scripts/write_report.py --froxels-section build/bench-froxels \
+    build/bench-lights-scaling docs/performance.md
+  echo "docs/performance.md: section 'Against froxel fog' replaced"
   exit 0
 fi
 flicker() {

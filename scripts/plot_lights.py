@@ -18,11 +18,12 @@ def load(bench_dir):
 
 
 def light_rows(runs):
-    """{method label: [(lights, median ms, p10 ms, p90 ms), ...] sorted by lights}. Epipolar is keyed
-    by its label ('epipolar balanced'), the others by method name."""
+    """{method label: [(lights, median ms, p10 ms, p90 ms), ...] sorted by lights}. Epipolar and
+    froxels are keyed by their labels ('epipolar balanced', 'froxels-hdrp'), the others by method
+    name."""
     out = {}
     for r in runs:
-        key = r["label"] if r["method"] == "epipolar" else r["method"]
+        key = r["label"] if r["method"] in ("epipolar", "froxels") else r["method"]
         t = r["time"]
         out.setdefault(key, []).append((r["lights"], t["median"], t["p10"], t["p90"]))
     for rows in out.values():
@@ -43,7 +44,7 @@ def main():
     colors = {"brute-force": "tab:red"}
     fig, (total, per) = plt.subplots(1, 2, figsize=(11, 4.8))
     for k, (method, rows) in enumerate(sorted(table.items())):
-        color = colors.get(method, ["tab:blue", "tab:green", "tab:purple"][k % 3])
+        color = colors.get(method, ["tab:blue", "tab:green", "tab:purple", "tab:orange"][k % 4])
         n = [r[0] for r in rows]
         median = [r[1] for r in rows]
         below = [r[1] - r[2] for r in rows]

@@ -30,6 +30,7 @@ void useMethod(BenchRun& r, const MethodName& m) {
     r.method = m.method;
     r.settings.froxelTile = m.settings.froxelTile;
     r.settings.froxelSlices = m.settings.froxelSlices;
+    r.settings.froxelTemporal = m.settings.froxelTemporal;
 }
 
 constexpr uint64_t kConfigFileCap = 1 * kMiB;

@@ -134,6 +134,8 @@ RenderOptions runOptions(const bench::BenchRun& run) {
     options.custom.froxelTile = run.settings.froxelTile;
     options.custom.froxelSlices = run.settings.froxelSlices;
     options.custom.froxelFarDistance = run.settings.froxelFarDistance;
+    options.custom.froxelTemporal = run.settings.froxelTemporal;
+    options.custom.froxelHistoryWeight = run.settings.froxelHistoryWeight;
     return options;
 }
 

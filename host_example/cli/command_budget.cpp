@@ -162,10 +162,12 @@ int runBudget(Args& args) {
         if (froxelPreset) {
             s.froxelTile = preset.froxelTile;
             s.froxelSlices = preset.froxelSlices;
+            s.froxelTemporal = preset.froxelTemporal;
         } else if (p != lightscatter::Profile::Custom) {
             s.froxelTile = custom.froxelTile;  // the grid is read from --settings with any profile
             s.froxelSlices = custom.froxelSlices;
             s.froxelFarDistance = custom.froxelFarDistance;
+            s.froxelTemporal = custom.froxelTemporal;
         }
         const uint32_t shadow = shadowOverride ? shadowOverride : s.shadowMapSize;
         const lightscatter::Budget b =
@@ -215,9 +217,10 @@ int runBudget(Args& args) {
             continue;
         }
         const std::string what =
-            froxels ? "froxel columns of " + std::to_string(s.froxelTile) + "x" +
-                          std::to_string(s.froxelTile) + " pixels, " +
-                          std::to_string(s.froxelSlices) + " depth slices"
+            froxels
+                ? "froxel columns of " + std::to_string(s.froxelTile) + "x" +
+                      std::to_string(s.froxelTile) + " pixels, " + std::to_string(s.froxelSlices) +
+                      " depth slices" + (s.froxelTemporal ? ", temporal" : "")
             : method == lightscatter::Method::BeamTreeAnalytic
                 ? std::to_string(s.planeCount) + " sampling planes where uncertain, float32 target"
             : method == lightscatter::Method::BeamTreeSampling

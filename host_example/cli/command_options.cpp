@@ -71,6 +71,7 @@ SceneOptions takeSceneOptions(Args& args, const char* defaultSize) {
     if (froxelPreset) {
         o.render.custom.froxelTile = preset.froxelTile;
         o.render.custom.froxelSlices = preset.froxelSlices;
+        o.render.custom.froxelTemporal = preset.froxelTemporal;
     }
     // Known before any device exists: seed 002's noise is a density only seed 002's planes sample
     // (auto picks them when it is on); the plugin would refuse every other method's frame.

@@ -10,7 +10,8 @@ const char* kCommon =
     "common options: --device NAME (or LS_DEVICE), --validation, --help (-h)\n"
     "methods: auto (default), epipolar, brute-force, analytic, cone-march, planes (or its\n"
     "former name slices), beam-tree-analytic, beam-tree-sampling, froxels (or a grid\n"
-    "preset: froxels-hdrp, the default, froxels-unreal); profiles:\n"
+    "preset: froxels-hdrp, the default, froxels-unreal, each with -temporal after it\n"
+    "for the temporal mode); profiles:\n"
     "high-quality, balanced (default), high-performance, low-high-quality, low-balanced,\n"
     "low-high-performance, custom (with --settings)\n";
 
@@ -28,7 +29,8 @@ const char* kSettings =
     "                        sliceAmbient),\n"
     "                        noiseAmplitude, noiseScale, noiseVelocity [4 numbers]; seed 004's\n"
     "                        lightModel (full, simplified), simplifiedA0, simplifiedA1;\n"
-    "                        froxels' froxelTile, froxelSlices, froxelFarDistance); fields\n"
+    "                        froxels' froxelTile, froxelSlices, froxelFarDistance,\n"
+    "                        froxelTemporal, froxelHistoryWeight); fields\n"
     "                        it leaves out keep the values of --profile, and the frame runs as\n"
     "                        the custom profile\n";
 

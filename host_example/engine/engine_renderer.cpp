@@ -517,6 +517,7 @@ lightscatter::FrameDescription EngineRenderer::describe(const RenderOptions& opt
     f.custom = options.custom;
     f.timeSeconds = options.timeSeconds;
     f.debug.countSteps = options.countSteps;
+    f.resetHistory = options.resetHistory;
     return f;
 }
 

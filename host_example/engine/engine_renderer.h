@@ -23,6 +23,7 @@ struct RenderOptions {
     lightscatter::Settings custom;
     double timeSeconds = 0.0;  // FrameDescription::timeSeconds: scrolls the planes method's noise
     bool countSteps = false;   // DebugOptions::countSteps: epipolar's ray-march steps in the report
+    bool resetHistory = false;  // FrameDescription::resetHistory: a camera cut
 };
 
 struct FrameOutput {

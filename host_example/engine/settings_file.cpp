@@ -50,7 +50,9 @@ constexpr const char* kFields[] = {"slices",
                                    "simplifiedA1",
                                    "froxelTile",
                                    "froxelSlices",
-                                   "froxelFarDistance"};
+                                   "froxelFarDistance",
+                                   "froxelTemporal",
+                                   "froxelHistoryWeight"};
 
 // The planes method's fields were named after "slice" until the word came to mean only an
 // epipolar line; files written with those names still read.
@@ -169,6 +171,10 @@ class SettingsReader {
                 s.froxelSlices = whole(v, key);
             else if (field == "froxelFarDistance")
                 s.froxelFarDistance = number(v, key);
+            else if (field == "froxelTemporal")
+                s.froxelTemporal = boolean(v, key);
+            else if (field == "froxelHistoryWeight")
+                s.froxelHistoryWeight = number(v, key);
             else if (field == "shadowMapSize") {
                 s.shadowMapSize = whole(v, key);
                 if (s.shadowMapSize < 1 || s.shadowMapSize > 16384)

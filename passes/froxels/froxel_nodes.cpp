@@ -11,6 +11,7 @@
 #include "integrate_comp.h"
 #include "shared/pass_helpers.h"
 #include "shared/shader_variant.h"
+#include "temporal_comp.h"
 
 namespace ls {
 namespace {
@@ -38,6 +39,25 @@ FroxelPush froxelPush(const FrameConstants& c, const FroxelGrid& g, float storag
     return p;
 }
 
+// temporal.comp's push block (froxel_temporal_push_fields.h).
+struct FroxelTemporalPush {
+#define LS_VEC4 glm::vec4
+#define LS_MAT4 glm::mat4
+#include "shaders/froxels/froxel_temporal_push_fields.h"
+#undef LS_VEC4
+#undef LS_MAT4
+};
+static_assert(sizeof(FroxelTemporalPush) <= 128, "Vulkan guarantees 128 bytes of push constants");
+
+float halton(uint32_t i, uint32_t base) {
+    float f = 1.0f, r = 0.0f;
+    for (; i > 0; i /= base) {
+        f /= float(base);
+        r += f * float(i % base);
+    }
+    return r;
+}
+
 // The smallest Lin scale of the frame's lights: the integrated grid holds all of them.
 float gridStorage(const rg::PassContext& ctx,
                   const std::vector<rg::HostDataRef<LightFrame>>& lights) {
@@ -58,6 +78,11 @@ rg::ShaderCode froxelInjectShader(bool shadowMap, bool lightColor, bool cube) {
 
 rg::ShaderCode froxelApplyShader(VkFormat color, bool withOutput) {
     return pickCompositeShader(ls_spirv::apply_comp_variants, {}, color, withOutput);
+}
+
+glm::vec3 froxelJitter(uint32_t index) {
+    const uint32_t i = index % 16 + 1;
+    return {halton(i, 2), halton(i, 3), halton(i, 5)};
 }
 
 FroxelGrid froxelGrid(VkExtent2D screen, const FroxelSettings& s) {
@@ -90,9 +115,11 @@ rg::ImageRef addFroxelInjection(rg::RenderGraph& graph, const FroxelInjectInputs
         first ? table.storageWrite(LS_BINDING_FROXEL_SCATTERING, in.scattering)
               : table.storageReadWrite(LS_BINDING_FROXEL_SCATTERING, in.scattering);
     const bool shadow = in.light.shadowMap.valid(), color = in.light.lightColor.valid();
-    pass.execute([frame = in.frame, table, grid, first, shadow, color](rg::PassContext& ctx) {
+    pass.execute([frame = in.frame, table, grid, first, shadow, color,
+                  history = in.history](rg::PassContext& ctx) {
         const LightFrame& values = ctx.data(frame.values);
         FroxelPush push = froxelPush(values.constants, grid, 1.0f);
+        if (history.valid()) push.jitter = glm::vec4(froxelJitter(ctx.data(history).index), 0.0f);
         // The columns the light's volume may reach (its screen rectangle, in froxels).
         const VkRect2D r = values.screenRect;
         const uint32_t x0 = uint32_t(r.offset.x) / grid.tile, y0 = uint32_t(r.offset.y) / grid.tile;
@@ -115,6 +142,37 @@ rg::ImageRef addFroxelInjection(rg::RenderGraph& graph, const FroxelInjectInputs
                              groupCount(grid.slices, 4));
     });
     return scattering;
+}
+
+FroxelTemporalOutputs addFroxelTemporalBlend(rg::RenderGraph& graph, const FroxelTemporalInputs& in,
+                                             const FroxelGrid& grid) {
+    auto pass = graph.addPass("froxel temporal blend", rg::PassType::Compute);
+    rg::BindingTable table = frameTable(pass, in.frame.constants);
+    FroxelTemporalOutputs out;
+    out.scattering = table.storageReadWrite(LS_BINDING_FROXEL_SCATTERING, in.scattering);
+    table.storageRead(LS_BINDING_FROXEL_HISTORY, in.history);
+    out.historyOut = table.storageWrite(LS_BINDING_FROXEL_HISTORY_OUT, in.historyOut);
+    pass.execute([frame = in.frame, values = in.values, weight = in.weight, table,
+                  grid](rg::PassContext& ctx) {
+        const HistoryFrame& h = ctx.data(values);
+        const FroxelPush now = froxelPush(ctx.data(frame.values).constants, grid, 1.0f);
+        const FroxelPush before = froxelPush(h.previous, grid, 1.0f);
+        FroxelTemporalPush push{};
+        push.grid = now.grid;
+        push.slices = now.slices;
+        push.previousViewProj = h.previous.viewProj;
+        push.previousSlices = glm::vec4(glm::vec3(before.slices), h.valid ? 1.0f : 0.0f);
+        push.blend = {weight, 0.0f, 0.0f, 0.0f};
+        const auto& p = frame.shared->pipelines.compute(
+            "froxel temporal blend", rg::spirv(ls_spirv::temporal_comp), table.layout(),
+            sizeof(FroxelTemporalPush), {});
+        p.bind(ctx.cmd());
+        table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
+        p.push(ctx.cmd(), push);
+        ctx.vk().CmdDispatch(ctx.cmd(), groupCount(grid.columns, 4), groupCount(grid.rows, 4),
+                             groupCount(grid.slices, 4));
+    });
+    return out;
 }
 
 rg::ImageRef addFroxelIntegration(rg::RenderGraph& graph, const FroxelIntegrateInputs& in,

@@ -6,6 +6,7 @@
 
 #include "shared/composite_target.h"
 #include "shared/frame_context.h"
+#include "shared/frame_history.h"
 #include "shared/scattering_params.h"
 
 namespace ls {
@@ -31,6 +32,9 @@ struct FroxelInjectInputs {
     // every froxel, the new grid (froxelScatteringImage()).
     rg::ImageRef scattering;
     bool first = false;
+    // The temporal mode's frame (its jitter follows the frame's index); invalid: the froxels'
+    // centres.
+    rg::HostDataRef<HistoryFrame> history;
 };
 // The in-scattering grid, declared (kFroxelScatteringFormat, the grid's size) for the first
 // light's injection.
@@ -39,6 +43,24 @@ rg::ImageRef froxelScatteringImage(rg::RenderGraph& graph, const FroxelGrid& gri
 // earlier lights'.
 rg::ImageRef addFroxelInjection(rg::RenderGraph& graph, const FroxelInjectInputs& in,
                                 const FroxelGrid& grid);
+
+// Where in its froxel the temporal mode samples each froxel in the frame of `index`: a 16-frame
+// Halton (2, 3, 5) sequence in [0, 1)^3.
+glm::vec3 froxelJitter(uint32_t index);
+
+struct FroxelTemporalInputs {
+    FrameContext frame;                // the first light's: this frame's camera
+    rg::ImageRef scattering;           // every light's, injected at this frame's jittered points
+    rg::ImageRef history, historyOut;  // the frame before's grid, and this frame's
+    rg::HostDataRef<HistoryFrame> values;
+    float weight = 0.9f;  // the history's
+};
+struct FroxelTemporalOutputs {
+    rg::ImageRef scattering, historyOut;
+};
+// The blend with the frame before's grid, reprojected (temporal.comp).
+FroxelTemporalOutputs addFroxelTemporalBlend(rg::RenderGraph& graph, const FroxelTemporalInputs& in,
+                                             const FroxelGrid& grid);
 
 struct FroxelIntegrateInputs {
     FrameContext frame;  // the first light's: the camera and the medium

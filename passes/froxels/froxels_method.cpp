@@ -51,33 +51,55 @@ ChainOutputs FroxelsMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,
 ChainOutputs FroxelsMethod::addFrameChain(rg::RenderGraph& g, const std::vector<ChainInputs>& in,
                                           const std::vector<ChainConfig>& configs,
                                           const CompositeTarget& target) const {
-    const FroxelGrid grid = froxelGrid(in.at(0).screen, configs.at(0).options.get<Options>()->grid);
+    const FroxelSettings& settings = configs.at(0).options.get<Options>()->grid;
+    const FroxelGrid grid = froxelGrid(in.at(0).screen, settings);
+    const bool temporal = settings.temporal && in[0].history.valid();
     rg::ImageRef scattering = froxelScatteringImage(g, grid);
     std::vector<rg::HostDataRef<LightFrame>> lights;
     for (size_t i = 0; i < in.size(); ++i) {
         if (in.size() > 1) g.setNameSuffix(" (light " + std::to_string(i) + ")");
         scattering = addFroxelInjection(
             g,
-            {frameContext(in[i], configs[i]), lightImages(in[i], configs[i]), scattering, i == 0},
+            {frameContext(in[i], configs[i]), lightImages(in[i], configs[i]), scattering, i == 0,
+             temporal ? in[i].historyValues : rg::HostDataRef<HistoryFrame>{}},
             grid);
         lights.push_back(in[i].values);
     }
     g.setNameSuffix({});
     const FrameContext frame = frameContext(in[0], configs[0]);
-    const rg::ImageRef integrated = addFroxelIntegration(g, {frame, scattering, lights}, grid);
     ChainOutputs out;
+    if (temporal) {
+        const FroxelTemporalOutputs t =
+            addFroxelTemporalBlend(g,
+                                   {frame, scattering, in[0].history, in[0].historyOut,
+                                    in[0].historyValues, settings.historyWeight},
+                                   grid);
+        scattering = t.scattering;
+        out.historyOut = t.historyOut;
+    }
+    const rg::ImageRef integrated = addFroxelIntegration(g, {frame, scattering, lights}, grid);
     out.composited = true;
     out.target = addFroxelApply(
         g, {frame, integrated, lights, {target.color, target.inscatterOut, false}}, grid);
     return out;
 }
 
+HistoryShape FroxelsMethod::history(const ChainConfig& c, VkExtent2D screen) const {
+    const FroxelSettings& s = c.options.get<Options>()->grid;
+    if (!s.temporal) return {};
+    const FroxelGrid g = froxelGrid(screen, s);
+    return {kFroxelScatteringFormat, g.columns, g.rows, g.slices};
+}
+
 std::string FroxelsMethod::summary(const ChainConfig& c) const {
     const FroxelSettings& s = c.options.get<Options>()->grid;
     return "froxel grid of " + std::to_string(s.tile) + "x" + std::to_string(s.tile) +
            "-pixel columns and " + std::to_string(s.slices) +
-           " exponential depth slices: each light injected at the froxels' centres, integrated "
-           "front to back, applied at each pixel's depth";
+           " exponential depth slices: each light injected at the froxels' " +
+           (s.temporal ? "jittered points, blended with the frame before's grid (weight " +
+                             twoDigits(s.historyWeight) + "), "
+                       : "centres, ") +
+           "integrated front to back, applied at each pixel's depth";
 }
 
 }  // namespace ls

@@ -12,6 +12,7 @@
 #include "light_setup.h"
 #include "rendergraph/render_graph.h"
 #include "shared/composite_target.h"
+#include "shared/frame_history.h"
 #include "shared/light_frame.h"
 #include "shared/shared_state.h"
 
@@ -62,6 +63,10 @@ struct ChainInputs {
     VkFormat depthStencil = VK_FORMAT_UNDEFINED;  // the stencil textures' format
     VkFormat coordinateFormat = VK_FORMAT_R32G32_SFLOAT;
     rg::BufferRef stepCounts;  // cleared, when the frame counts epipolar's steps; else invalid
+    // The frame's history (MethodUnit::history()): the image the frame before wrote, the one this
+    // frame writes, and what the frame knows of it; invalid where the method keeps none.
+    rg::ImageRef history, historyOut;
+    rg::HostDataRef<HistoryFrame> historyValues;
 };
 
 // What a chain leaves: a screen Lin for the composite, or the target's new versions where the
@@ -71,6 +76,7 @@ struct ChainOutputs {
     bool composited = false;
     CompositeOutputs target;
     rg::BufferRef stepCounts;  // the counter's new version, when the chain counted
+    rg::ImageRef historyOut;   // the history's new version, when the chain keeps one
 };
 
 class MethodUnit {
@@ -109,6 +115,9 @@ class MethodUnit {
     virtual ChainOutputs addFrameChain(rg::RenderGraph& graph, const std::vector<ChainInputs>& in,
                                        const std::vector<ChainConfig>& configs,
                                        const CompositeTarget& target) const;
+    // The state a frame-wide chain carries to the next frame on the GPU (frame_history.h), for a
+    // screen of `screen` texels; none by default.
+    virtual HistoryShape history(const ChainConfig&, VkExtent2D) const { return {}; }
     // Which nodes the chain was built from, and why, in one line.
     virtual std::string summary(const ChainConfig& config) const = 0;
     // What changed this frame without a rebuild, appended to the report's reason (the cube faces

@@ -97,9 +97,11 @@ struct ConeMarchOptions {
 // The froxel grid (the method froxels): its size, and how far its slices reach.
 struct FroxelSettings {
     bool operator==(const FroxelSettings&) const = default;
-    uint32_t tile = 8;         // pixels per froxel on x and y
-    uint32_t slices = 64;      // depth slices
-    float farDistance = 0.0f;  // metres; 0: the medium's maxDistance (and the camera's far plane)
+    uint32_t tile = 8;           // pixels per froxel on x and y
+    uint32_t slices = 64;        // depth slices
+    float farDistance = 0.0f;    // metres; 0: the medium's maxDistance (and the camera's far plane)
+    bool temporal = false;       // jittered samples blended with the reprojected history
+    float historyWeight = 0.9f;  // the history's share
 };
 
 // The look-up table's shape and scale (shaders/shared/lut.glsl).

@@ -59,10 +59,11 @@ std::string methodsWhere(F which) {
     return s;
 }
 
-uint64_t persistentBytes(const rg::OfflineDeviceCaps& caps, VkFormat format, VkExtent2D extent) {
+uint64_t persistentBytes(const rg::OfflineDeviceCaps& caps, VkFormat format, VkExtent2D extent,
+                         uint32_t depth = 1) {
     VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
     info.format = format;
-    info.extent = {extent.width, extent.height, 1};
+    info.extent = {extent.width, extent.height, depth};
     info.mipLevels = info.arrayLayers = 1;
     return caps.imageRequirements(info).size;
 }
@@ -141,6 +142,8 @@ Budget setBudget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
         s.froxelTile = custom->froxelTile;
         s.froxelSlices = custom->froxelSlices;
         s.froxelFarDistance = custom->froxelFarDistance;
+        s.froxelTemporal = custom->froxelTemporal;
+        s.froxelHistoryWeight = custom->froxelHistoryWeight;
     }
     detail::checkSettings(s);
 
@@ -221,14 +224,19 @@ Budget setBudget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
     b.peakBytes = compiled.aliasedBytes;
     // What lives across frames, outside the graph's aliased memory: the plugin's own tiling noise
     // (an engine's noise image replaces it) and each point or spot light's table.
-    auto persistent = [&](const std::string& name, VkFormat format, VkExtent2D extent) {
-        const uint64_t bytes = persistentBytes(device, format, extent);
+    auto persistent = [&](const std::string& name, VkFormat format, VkExtent2D extent,
+                          uint32_t depth = 1) {
+        const uint64_t bytes = persistentBytes(device, format, extent, depth);
         b.entries.push_back(
-            {name, rg::formatName(format), extent.width, extent.height, bytes, false});
+            {name, rg::formatName(format), extent.width, extent.height, bytes, false, depth});
         b.totalBytes += bytes;
         b.peakBytes += bytes;
     };
     if (c.ownNoise) persistent("tiling noise", ls::kNoiseFormat, ls::kNoiseExtent);
+    // The frame-wide method's history: two images, alternated (froxels' temporal mode).
+    if (c.history.given())
+        for (const char* name : {"frame history A", "frame history B"})
+            persistent(name, c.history.format, c.history.extent, c.history.depth);
     for (size_t i = 0; i < c.lights.size(); ++i)
         if (c.lights[i].table.given())
             persistent(lights.size() == 1 ? "point-light table"

@@ -57,6 +57,18 @@ rg::ImportedImage persistentImport(const ImportState& s, VkImage image, bool fil
     return d;
 }
 
+rg::ImportedImage historyImport(const ImportState& s, VkImage image, bool filled) {
+    rg::ImportedImage d = importDescription(s);
+    d.image = image;
+    if (!filled) d.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    // Compute passes read and write the two images, each frame in the other role: a frame waits
+    // for the frame before's writes (to read them) and reads (to overwrite them).
+    d.initialStages = d.finalStages = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+    d.initialAccess = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+    d.finalAccess = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT;
+    return d;
+}
+
 ImportState ownNoiseState() {
     return {ls::kNoiseFormat, ls::kNoiseExtent,
             VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT,
@@ -71,11 +83,24 @@ ImportState tableState() {
             VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
 }
 
+ImportState historyState(const ls::HistoryShape& shape) {
+    // Read-only between frames: each frame's uses (storage, GENERAL) then have a barrier before
+    // them, which a frame that finds an image new (UNDEFINED) needs.
+    ImportState s{shape.format,
+                  {shape.width, shape.height},
+                  VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    s.depth = shape.depth;
+    return s;
+}
+
 rg::ImportedImage importDescription(const ImportState& s) {
     rg::ImportedImage d;
     d.format = s.format;
     d.extent = s.extent;
     d.arrayLayers = s.arrayLayers;
+    d.depth = s.depth;
     d.usage = s.usage;
     d.initialLayout = s.layout;
     d.finalLayout = s.finalLayout;
@@ -222,11 +247,23 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
     }
     g.setNameSuffix({});
     if (!frameWide.empty()) {
+        if (c.history.given()) {
+            // The frame before's state, and this frame's, in the plugin's two images.
+            fg.history = g.importImage("frame history", importDescription(c.history));
+            fg.historyOut = g.importImage("frame history (next)", importDescription(c.history));
+            fg.historyValues = g.hostData<ls::HistoryFrame>("frame history values");
+            for (ls::ChainInputs& in : frameWide) {
+                in.history = fg.history;
+                in.historyOut = fg.historyOut;
+                in.historyValues = fg.historyValues;
+            }
+        }
         // A frame-wide method takes every light (the method choice mixes it with no other).
         const ls::ChainOutputs o = c.lights[0].method->addFrameChain(g, frameWide, frameWideConfigs,
                                                                      {color, linOut, false});
         color = o.target.color;
         linOut = o.target.inscatterOut;
+        if (o.historyOut.valid()) g.markOutput(o.historyOut);
         chains = frameWide.size();
     }
     if (chains == 0) ls::addComposite(g, {frame, color, {}, linOut});  // extinction only

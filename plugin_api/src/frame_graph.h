@@ -24,6 +24,7 @@ struct ImportState {
     VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
     VkImageLayout finalLayout = VK_IMAGE_LAYOUT_UNDEFINED;
     uint32_t arrayLayers = 1;
+    uint32_t depth = 1;  // a 3D image's slices (the frame's history)
     bool operator==(const ImportState&) const = default;
     bool given() const { return format != VK_FORMAT_UNDEFINED; }
 };
@@ -56,6 +57,9 @@ struct GraphConfig {
     // into FrameGraph::stepCounts, which holds stepCountSlices slices (the most of any light).
     bool countSteps = false;
     uint32_t stepCountSlices = 0;
+    // The frame-wide method's history (MethodUnit::history()), two images of this state the
+    // plugin alternates; absent when the frame keeps none.
+    ImportState history;
     std::vector<LightGraphConfig> lights;  // in the frame's order
     bool operator==(const GraphConfig&) const = default;
 };
@@ -74,6 +78,9 @@ struct FrameGraph {
     // The step counter the plugin imports (one buffer per frame in flight); invalid without
     // GraphConfig::countSteps.
     rg::BufferRef stepCounts;
+    // The history the frame reads and the one it writes, and its values (GraphConfig::history).
+    rg::ImageRef history, historyOut;
+    rg::HostDataRef<ls::HistoryFrame> historyValues;
 };
 
 // The step counter's import: written by the frame's passes, read by the host once it is done.
@@ -88,6 +95,10 @@ rg::ImportedImage persistentImport(const ImportState& s, VkImage image, bool fil
 // The plugin's own tiling noise and a light's point-light table, as the frame graph imports them.
 ImportState ownNoiseState();
 ImportState tableState();
+// A frame history of `shape` as the frame graph imports it (storage, read-only between frames), and
+// one of the plugin's two images of it (`filled`: an earlier frame wrote it).
+ImportState historyState(const ls::HistoryShape& shape);
+rg::ImportedImage historyImport(const ImportState& s, VkImage image, bool filled);
 
 // The format of the stencil textures (epipolar's sample marking, the fix-up's pixel marking),
 // which hold stencil only: S8 where the device renders to it (a quarter of a depth-stencil texel),

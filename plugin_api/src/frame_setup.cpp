@@ -589,6 +589,8 @@ void checkSettings(const Settings& s, const std::string& at) {
     if (s.froxelSlices < 4 || s.froxelSlices > 512)
         fail(c + "froxelSlices = " + std::to_string(s.froxelSlices) +
              ": must be between 4 and 512");
+    inRange(s.froxelHistoryWeight, c + "froxelHistoryWeight", 0.0, 0.99,
+            "the history's share of each froxel; 1 would never take a new frame");
     if (s.froxelFarDistance != 0.0f)
         inRange(s.froxelFarDistance, c + "froxelFarDistance", 1e-6, limits::kMaxLength,
                 "or 0: the medium's maxDistance");
@@ -868,7 +870,8 @@ void applySettings(ls::LightSetup& s, const Settings& st, uint32_t shadowMapSize
     s.planeBlur = st.planeBlur;
     s.planeDither = st.planeDither;
     s.cone = {st.coneSamples, st.coneLimited, st.coneJitter};
-    s.froxels = {st.froxelTile, st.froxelSlices, st.froxelFarDistance};
+    s.froxels = {st.froxelTile, st.froxelSlices, st.froxelFarDistance, st.froxelTemporal,
+                 st.froxelHistoryWeight};
     s.shadowSampling = st.shadowSampling;
     s.noise = st.noiseAmplitude > 0.0f;
     s.simplified = st.lightModel == LightModel::Simplified;

@@ -67,6 +67,17 @@ GraphConfig graphConfig(const ValidatedFrame& frame,
         }
         c.lights.push_back(l);
     }
+    // A frame-wide method's history, for the graph's screen (the frame-wide method takes every
+    // light, so the first light reaching the view names it).
+    for (size_t i = 0; i < c.lights.size(); ++i)
+        if (c.lights[i].touchesView) {
+            const ls::MethodUnit& m = *c.lights[i].method;
+            if (m.caps().frameWide) {
+                const ls::HistoryShape shape = m.history(c.lights[i].chain, c.screen);
+                if (shape.given()) c.history = historyState(shape);
+            }
+            break;
+        }
     if (noise) {
         c.ownNoise = !images.noise.given();
         c.noise = c.ownNoise ? ownNoiseState() : images.noise;

@@ -115,10 +115,15 @@ std::vector<FroxelPreset> froxelPresets() {
 }
 
 bool applyFroxelPreset(const std::string& name, Settings& s) {
+    const std::string suffix = "-temporal";
+    const bool temporal = name.size() > suffix.size() &&
+                          name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
+    const std::string preset = temporal ? name.substr(0, name.size() - suffix.size()) : name;
     for (const FroxelPreset& p : froxelPresets())
-        if (name == p.name) {
+        if (preset == p.name) {
             s.froxelTile = p.tile;
             s.froxelSlices = p.slices;
+            s.froxelTemporal = temporal;
             return true;
         }
     return false;

@@ -21,6 +21,7 @@
 #include "rendergraph/executor.h"
 #include "rendergraph/format_info.h"
 #include "rendergraph/host_buffer.h"
+#include "rendergraph/owned_image.h"
 #include "rendergraph/report.h"
 #include "rendergraph/vk_error.h"
 #include "shared/point_table.h"
@@ -307,6 +308,8 @@ struct Plugin::Impl {
         std::vector<std::string> setupPasses;
         std::vector<PassTime> cpuWork;
         std::vector<detail::MethodChoice> choices;  // per light
+        bool keepsHistory = false;                  // the frame reads and writes the history
+        ls::HistoryFrame historyValues;
         bool graphCompiled = false;
         VkExtent2D screen{0, 0};  // the frame's (within the graph's, with maxRenderSize)
     };
@@ -405,6 +408,7 @@ struct Plugin::Impl {
                                                          lightTables[i]->filled()));
         }
         importStepCounter(fg, c.stepCountSlices);
+        if (fg.history.valid()) importHistory(p, fg, c.history, frame.resetHistory);
         Running& r = *p.graph->running;
         if (!r.rehearsed) {
             // Passes make their pipelines on first use: that happens here, on a command buffer of
@@ -421,10 +425,50 @@ struct Plugin::Impl {
         return p;
     }
 
+    // The frame's history images, made (again) for the shape the frame keeps, and what the frame
+    // knows of them: the frame before's state where it left one of this shape and no reset came.
+    void importHistory(Prepared& p, const FrameGraph& fg, const detail::ImportState& state,
+                       bool reset) {
+        History& h = history;
+        if (h.state != state) {
+            if (h.images[0])  // frames recorded with the old images may still run
+                retired.retire(
+                    lastFrame,
+                    [old = std::make_shared<decltype(h.images)>(std::move(h.images))] {});
+            for (int i = 0; i < 2; ++i)
+                h.images[i] = std::make_unique<rg::OwnedImage>(
+                    device, state.format, state.extent, state.usage,
+                    i == 0 ? "frame history A" : "frame history B", 1, 0, state.depth);
+            h.state = state;
+            h.filled = {};
+            h.valid = false;
+        }
+        p.keepsHistory = true;
+        p.historyValues.valid = h.valid && !reset;
+        p.historyValues.index = p.historyValues.valid ? h.index : 0;
+        p.historyValues.previous = h.previous;
+        p.data.set(fg.historyValues, p.historyValues);
+        const uint32_t read = h.next ^ 1u;
+        fg.graph->updateImport(
+            fg.history, detail::historyImport(state, h.images[read]->image(), h.filled[read]));
+        fg.graph->updateImport(
+            fg.historyOut,
+            detail::historyImport(state, h.images[h.next]->image(), h.filled[h.next]));
+    }
+
     // The frame was recorded: what it fills is filled for the frames after it, and it is kept in
     // the history for its report.
     uint64_t recorded(const Prepared& p) {
         const GraphConfig& c = p.graph->config;
+        if (p.keepsHistory) {
+            history.filled[history.next] = true;
+            history.previous = p.values[0].constants;
+            history.index = p.historyValues.index + 1;
+            history.valid = true;
+            history.next ^= 1u;
+        } else {
+            history.valid = false;  // a frame without it breaks the sequence
+        }
         for (size_t i = 0; i < p.values.size(); ++i)
             if (p.values[i].fillTable)
                 lightTables[i]->recordedFill(p.values[i].constants, c.lights[i].chain.spec.phase);
@@ -583,6 +627,16 @@ struct Plugin::Impl {
     std::vector<std::unique_ptr<ls::LightData>> lightData;
     std::vector<const ls::MethodUnit*> dataMethod;
     std::unique_ptr<ls::TilingNoise> tilingNoise;
+    // The frame-wide method's history (shared/frame_history.h): two images, alternated.
+    struct History {
+        detail::ImportState state;  // their shape; absent before the first frame that keeps one
+        std::array<std::unique_ptr<rg::OwnedImage>, 2> images;
+        std::array<bool, 2> filled{};
+        uint32_t next = 0;   // the image the next frame writes
+        bool valid = false;  // the other holds the last recorded frame's state
+        uint32_t index = 0;  // frames since the history began, the last recorded one included
+        ls::FrameConstants previous{};  // the last recorded frame's first light's constants
+    } history;
     // Declared before the graphs: they are placed in it, and go first.
     rg::TransientHeap heap;
     rg::RetireList retired;

@@ -11,6 +11,7 @@ from pathlib import Path
 
 from . import flicker
 from .common import splice_section
+from .froxels import FROXELS_HEADING, froxels_section
 from .gpu import GPU_HEADING, gpu_section
 from .lights import LIGHTS_HEADING, lights_section
 from .occluders import OCCLUDERS_HEADING, occluders_section
@@ -42,6 +43,9 @@ SECTIONS = {
     "lights": (("SCALING_DIR", "LIGHTS_DIR"), "bench runs of bench/lights_scaling.json and bench/lights.json",
                lambda dirs, page: (lights_section(dirs[0], dirs[1]), LIGHTS_HEADING)),
     "planes": (("PLANES_DIR",), "a bench run of bench/planes.json", planes_lines),
+    "froxels": (("FROXELS_DIR", "SCALING_DIR"),
+                "bench runs of bench/froxels.json (with budget-*.json beside) and bench/lights_scaling.json",
+                lambda dirs, page: (froxels_section(dirs[0], dirs[1]), FROXELS_HEADING)),
 }
 
 # Options under the names they had before: the planes section was "slices" until the word came to

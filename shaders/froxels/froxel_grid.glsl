@@ -7,11 +7,18 @@
 #define LS_FROXEL_GRID_GLSL
 #include "camera.glsl"
 
+// The passes' push block; the temporal blend's (LS_FROXEL_TEMPORAL) has grid and slices too.
 #define LS_VEC4 vec4
+#define LS_MAT4 mat4
 layout(push_constant) uniform FroxelPush {
+#if defined(LS_FROXEL_TEMPORAL)
+#include "froxel_temporal_push_fields.h"
+#else
 #include "froxel_push_fields.h"
+#endif
 } pc;
 #undef LS_VEC4
+#undef LS_MAT4
 
 // Camera-space z at slice coordinate u.
 float sliceZ(float u) { return pc.slices.x * exp(pc.slices.z * u / pc.grid.z); }

@@ -56,8 +56,10 @@
 #define LS_BINDING_UNWARP_INSCATTER 3
 #define LS_BINDING_UNWARP_DEPTH 4
 // froxels (shaders/froxels/)
-#define LS_BINDING_FROXEL_SCATTERING 2  // inject.comp, integrate.comp: in-scattering per froxel
-#define LS_BINDING_FROXEL_INTEGRATED 3  // integrate.comp, apply.comp: Lin and T to each froxel
+#define LS_BINDING_FROXEL_SCATTERING 2   // inject.comp, integrate.comp: in-scattering per froxel
+#define LS_BINDING_FROXEL_INTEGRATED 3   // integrate.comp, apply.comp: Lin and T to each froxel
+#define LS_BINDING_FROXEL_HISTORY 4      // temporal.comp: the frame before's in-scattering grid
+#define LS_BINDING_FROXEL_HISTORY_OUT 5  // temporal.comp: this frame's, for the next
 
 // The light types' and Mie phases' values (LIGHTSCATTER_LIGHT_*, LIGHTSCATTER_MIE_*) are the
 // vocabulary's, which C++ names lightscatter::LightType and lightscatter::MiePhase.

@@ -350,6 +350,13 @@ TEST(Cli, BudgetOfFroxelsFollowsThePreset) {
         EXPECT_GE(g["froxel in-scattering"]["bytes"].get<uint64_t>(),
                   uint64_t(columns) * rows * 64 * 16);
     }
+    // The temporal mode keeps two float32 grids across frames.
+    const auto t =
+        run("budget --method froxels-unreal-temporal --profile balanced --size 1920x1080");
+    ASSERT_EQ(t.exitCode, 0) << t.out;
+    for (const char* line : {"frame history A", "frame history B", "120 x 68    x 64",
+                             "(kept across frames)", "64 depth slices, temporal"})
+        EXPECT_NE(t.out.find(line), std::string::npos) << line << "\n" << t.out;
     expectFailure(run("budget --method froxels --lights sun,spot:epipolar"),
                   "froxels takes every light of the frame into one grid");
 }

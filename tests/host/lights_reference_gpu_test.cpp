@@ -348,3 +348,36 @@ TEST_F(LightsReferenceGpu, FroxelsSampleACubeShadowMap) {
         judge(dev(), open, mesh, ref, froxelOptions(2), "point_cage, froxels, no cube map");
     EXPECT_GT(unshadowed.error, 0.4);
 }
+
+// The temporal mode on a still scene: each frame samples every froxel at another point of a
+// 16-frame sequence and blends it with the history, so after the sequence the grid holds each
+// froxel's average rather than one point's, and the error falls below the plain grid's. A reset
+// (a camera cut) renders as a new plugin's first frame does, bit for bit.
+TEST_F(LightsReferenceGpu, FroxelsTemporalModeSettlesOnAStillSceneAndResets) {
+    const host::SceneDesc scene = shippedScene("atrium_lights");
+    const host::MeshData mesh = host::loadSceneMeshes(scene);
+    const Reference ref = reference(scene, mesh);
+    const double plain =
+        judge(dev(), scene, mesh, ref, froxelOptions(2), "atrium_lights, froxels, plain").error;
+    host::RenderOptions temporal = froxelOptions(2);
+    temporal.custom.froxelTemporal = true;
+    host::EngineRenderer renderer(dev(), scene, mesh, kSize);
+    const host::FrameOutput first = renderer.render(temporal);
+    EXPECT_NE(first.plugin.reason.find("blended with the frame before's grid"), std::string::npos)
+        << first.plugin.reason;
+    std::vector<float> second;
+    double settled = 0;
+    for (int frame = 2; frame <= 24; ++frame) {
+        const host::FrameOutput out = renderer.render(temporal);
+        if (frame == 2) second = out.inscatter;
+        if (frame == 24)
+            settled =
+                judgeImage(out.inscatter, ref, "atrium_lights, froxels, temporal, frame 24").error;
+    }
+    EXPECT_NE(second, first.inscatter) << "the second frame reads the first's history";
+    EXPECT_LT(settled, plain);
+    host::RenderOptions cut = temporal;
+    cut.resetHistory = true;
+    EXPECT_EQ(renderer.render(cut).inscatter, first.inscatter)
+        << "a reset renders as a new plugin's first frame";
+}

@@ -280,11 +280,21 @@ struct Settings {
     uint32_t froxelTile = 8;
     uint32_t froxelSlices = 64;
     float froxelFarDistance = 0.0f;
+    // The temporal mode engines run froxels in: each frame samples every froxel at another point
+    // within it (a 16-frame Halton sequence) and blends its in-scattering with the frame before's,
+    // reprojected to where that froxel was: new = lerp(this frame's, history, froxelHistoryWeight)
+    // where the history covers the froxel. The one case where a frame's output depends on earlier
+    // frames; FrameDescription::resetHistory starts it anew (a camera cut). The history is two
+    // grid-sized float32 3D images kept by the plugin. Weight in [0, 0.99].
+    bool froxelTemporal = false;
+    float froxelHistoryWeight = 0.9f;
 };
 
 // The froxel grid's named presets as engines ship them: "froxels-hdrp" (Unity HDRP: the screen / 8
 // on x and y, 64 slices; the default) and "froxels-unreal" (Unreal's volumetric fog: the screen /
-// 16, 64 slices). `apply` sets a preset's fields in `s`; false for an unknown name.
+// 16, 64 slices). applyFroxelPreset() sets a preset's fields in `s` (a name with "-temporal" after
+// it, "froxels-unreal-temporal", sets froxelTemporal too, else clears it); false for an unknown
+// name.
 struct FroxelPreset {
     const char* name;
     uint32_t tile, slices;
@@ -527,6 +537,10 @@ struct FrameDescription {
     // profile decides. A light's own LightInput::settings replace them for its chain.
     Settings custom;
     DebugOptions debug;
+    // A camera cut: the frame ignores what earlier frames left (froxels' temporal history,
+    // Settings::froxelTemporal), renders as a new plugin's first frame would, and starts the
+    // history anew. Only a method that keeps history reads it.
+    bool resetHistory = false;
 };
 
 // Thrown before anything is recorded when a description breaks a rule; the message names the field

@@ -1,0 +1,75 @@
+"""The 'Against froxel fog' section: the froxel grid engines ship beside the seeds' methods, from a
+bench run of bench/froxels.json (time and error at 1920x1080), the budget of each configuration
+(budget-*.json in the same folder, `lightscatter budget --json`), and the cost of N lights
+(a run of bench/lights_scaling.json)."""
+import json
+import sys
+from datetime import date
+from pathlib import Path
+
+from .common import fmt, load_note
+
+FROXELS_HEADING = "## Against froxel fog"
+
+
+def family(label):
+    return "froxels" if label.startswith("froxels") else "seeds"
+
+
+def memory_mib(bench_dir, label):
+    """Peak MiB of a configuration at the run's size, from budget-LABEL.json (None without it)."""
+    f = Path(bench_dir) / f"budget-{label.replace(' ', '-')}.json"
+    if not f.exists():
+        return None
+    b = json.loads(f.read_text())[0]
+    return b["peakBytes"] / (1024.0 * 1024.0)
+
+
+def froxels_section(bench_dir, scaling_dir=None):
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+    import plot_lights as pl
+
+    out = []
+    p = out.append
+    p(FROXELS_HEADING + "\n")
+    p("What engines ship for volumetric light is a froxel grid (Unreal's volumetric fog, Frostbite's unified "
+      "volumetrics, HDRP, Godot 4): `froxels` is that method in the same graph (docs/methods.md, \"froxels\"), "
+      "at HDRP's size (`froxels-hdrp`, 8-pixel columns) and Unreal's (`froxels-unreal`, 16), each plain and in "
+      "the temporal mode, beside epipolar's three main profiles and brute force on the same frames, against the "
+      "same float64 reference. `scripts/make-report.sh --froxels-only` reruns it and splices this section.\n")
+    runs = json.loads((Path(bench_dir) / "bench.json").read_text())["runs"]
+    r0 = runs[0]
+    w, h = r0["size"]
+    kind = "lavapipe CPU timings: compare ratios, not milliseconds" if r0["cpuDevice"] else "GPU timestamps"
+    p(f"Measured on {date.today().isoformat()} with `./build/host_example/lightscatter bench --config "
+      f"bench/froxels.json`, at {w}x{h}, the median of {r0['frames']} frames after warm-up (the temporal mode "
+      f"after the same frames, the scene still), on **{r0['device']}** ({kind}); memory is the plugin's peak "
+      f"with aliasing at this size (`lightscatter budget`, estimated without a device; the temporal mode's two "
+      f"history grids included).\n")
+    note = load_note(bench_dir)
+    if note:
+        p(note + "\n")
+    p("![time against error, froxels and the seeds' methods](performance/froxels.png)\n")
+    p("| scene | configuration | median ms (p10-p90) | x brute force | mean rel. error | p99 | PSNR dB | "
+      "memory MiB |")
+    p("|---|---|---|---|---|---|---|---|")
+    brute = {r["scene"]: r["time"]["median"] for r in runs if r["label"] == "brute-force"}
+    for r in runs:
+        t, e = r["time"], r.get("error", {})
+        speed = brute.get(r["scene"], 0) / t["median"] if t["median"] else None
+        p(f"| {r['scene']} | {r['label']} | {fmt(t['median'])} ({fmt(t['p10'])}-{fmt(t['p90'])}) | "
+          f"{fmt(speed)} | {fmt(e.get('meanRelative'))} | {fmt(e.get('p99'))} | {fmt(e.get('psnrDb'))} | "
+          f"{fmt(memory_mib(bench_dir, r['label']))} |")
+    p("")
+    if scaling_dir and (Path(scaling_dir) / "bench.json").exists():
+        table = pl.light_rows(pl.load(scaling_dir))
+        p("The cost of N shadowed spots (the atrium's `scenes/atrium_spots_N`, bench/lights_scaling.json, the "
+          "same run as \"The cost of N lights\" above):\n")
+        methods = sorted(table)
+        p("| lights | " + " | ".join(f"{m} ms" for m in methods) + " |")
+        p("|---|" + "---|" * len(methods))
+        for n in sorted({r[0] for rows in table.values() for r in rows}):
+            row = [next((x for x in table[m] if x[0] == n), None) for m in methods]
+            p(f"| {n} | " + " | ".join(fmt(x[1]) if x else "-" for x in row) + " |")
+        p("")
+    return out
