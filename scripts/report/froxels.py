@@ -61,6 +61,28 @@ def froxels_section(bench_dir, scaling_dir=None):
           f"{fmt(speed)} | {fmt(e.get('meanRelative'))} | {fmt(e.get('p99'))} | {fmt(e.get('psnrDb'))} | "
           f"{fmt(memory_mib(bench_dir, r['label']))} |")
     p("")
+    # Where each family wins: each froxel configuration against epipolar balanced on each scene.
+    by = {(r["scene"], r["label"]): r for r in runs}
+    base = "epipolar balanced"
+    p(f"Each froxel configuration against `{base}` on the same scene (time ratio, error ratio; below 1 "
+      f"the froxels are faster or more accurate):\n")
+    froxel_labels = sorted({r["label"] for r in runs if family(r["label"]) == "froxels"})
+    scenes = sorted({r["scene"] for r in runs})
+    p("| scene | " + " | ".join(froxel_labels) + " |")
+    p("|---|" + "---|" * len(froxel_labels))
+    for scene in scenes:
+        b = by.get((scene, base))
+        cells = []
+        for label in froxel_labels:
+            f = by.get((scene, label))
+            be, fe = (b or {}).get("error", {}).get("meanRelative"), (f or {}).get("error", {}).get("meanRelative")
+            if not b or not f or not b["time"]["median"] or not be:
+                cells.append("-")
+                continue
+            cells.append(f"{fmt(f['time']['median'] / b['time']['median'])}x time, "
+                         f"{fmt(fe / be) if fe is not None else '-'}x error")
+        p(f"| {scene} | " + " | ".join(cells) + " |")
+    p("")
     if scaling_dir and (Path(scaling_dir) / "bench.json").exists():
         table = pl.light_rows(pl.load(scaling_dir))
         p("The cost of N shadowed spots (the atrium's `scenes/atrium_spots_N`, bench/lights_scaling.json, the "

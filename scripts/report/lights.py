@@ -22,9 +22,10 @@ def lights_section(scaling_dir, rows_dir):
     p(LIGHTS_HEADING + "\n")
     p("`FrameDescription::lights` gives the plugin several lights; it builds a chain per light that reaches the "
       "view and composites once (docs/model.md: `color * exp(-betaT S)` plus the sum of every light's Lin). The "
-      "float64 reference sums the lights' Lin in the same way, each light with its own exact visibility. Not "
-      "every method takes several lights, nor a point light's cube shadow map: `bench/lights.json` lists, per "
-      "scene, the methods that do, and each table row is one of them (`ran`: the method `auto` picked). "
+      "float64 reference sums the lights' Lin in the same way, each light with its own exact visibility. Every "
+      "method takes a list of lights, and every method but analytic a point light's cube map (docs/methods.md); "
+      "`auto` chooses per light. `bench/lights.json` lists the methods measured here, and each table row is one "
+      "of them (`ran`: the method `auto` picked; froxels are measured in \"Against froxel fog\"). "
       "`scripts/make-report.sh --lights-only` reruns both benchmarks below, draws the plot and splices this "
       "section into the page.\n")
     rows_file = Path(rows_dir) / "bench.json" if rows_dir else None
