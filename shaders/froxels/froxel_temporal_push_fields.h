@@ -1,8 +1,8 @@
 // The fields of the froxel temporal blend's push block (temporal.comp), written once for both
 // languages as froxel_push_fields.h is: grid and slices as there, then the frame before's.
-LS_VEC4 grid;             // as froxel_push_fields.h
-LS_VEC4 slices;           // as froxel_push_fields.h
-LS_MAT4 previousViewProj; // world -> the frame before's clip
-LS_VEC4 previousSlices;   // x: its first slice's start, y: its far distance, z: log(y / x), w: 1
-                          // when the history holds the frame before's grid
-LS_VEC4 blend;            // x: the history's weight, yzw: -
+LS_VEC4 grid;              // as froxel_push_fields.h
+LS_VEC4 slices;            // as froxel_push_fields.h
+LS_MAT4 previousViewProj;  // world -> the frame before's clip
+LS_VEC4 previousSlices;    // x: its first slice's start, y: its far distance, z: log(y / x), w: 1
+                           // when the history holds the frame before's grid
+LS_VEC4 blend;             // x: the history's weight, yzw: -
