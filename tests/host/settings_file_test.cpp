@@ -96,6 +96,31 @@ TEST_F(HostSettingsFile, EveryFieldByName) {
               lightscatter::PlaneTarget::Float16);
     EXPECT_EQ(load(R"({"planeTarget": "float32"})").planeTarget,
               lightscatter::PlaneTarget::Float32);
+    const lightscatter::Settings f = load(R"({"froxelTile": 16, "froxelSlices": 128,
+        "froxelFarDistance": 50, "froxelTemporal": true, "froxelHistoryWeight": 0.8})");
+    EXPECT_EQ(f.froxelTile, 16u);
+    EXPECT_EQ(f.froxelSlices, 128u);
+    EXPECT_FLOAT_EQ(f.froxelFarDistance, 50.0f);
+    EXPECT_TRUE(f.froxelTemporal);
+    EXPECT_FLOAT_EQ(f.froxelHistoryWeight, 0.8f);
+}
+
+// The froxel presets by name: the grid's sizes, and "-temporal" for the temporal mode.
+TEST(HostSettingsFile, FroxelPresetsSetTheGrid) {
+    lightscatter::Settings s;
+    s.froxelTemporal = true;
+    ASSERT_TRUE(lightscatter::applyFroxelPreset("froxels-unreal", s));
+    EXPECT_EQ(s.froxelTile, 16u);
+    EXPECT_EQ(s.froxelSlices, 64u);
+    EXPECT_FALSE(s.froxelTemporal);
+    ASSERT_TRUE(lightscatter::applyFroxelPreset("froxels-hdrp-temporal", s));
+    EXPECT_EQ(s.froxelTile, 8u);
+    EXPECT_TRUE(s.froxelTemporal);
+    const lightscatter::Settings before = s;
+    for (const char* name : {"froxels", "froxels-", "-temporal", "froxels-hdrp-temporal-temporal"})
+        EXPECT_FALSE(lightscatter::applyFroxelPreset(name, s)) << name;
+    EXPECT_EQ(s.froxelTile, before.froxelTile);
+    EXPECT_EQ(s.froxelTemporal, before.froxelTemporal);
 }
 
 // The planes method's fields under their former names (named after "slice" until the word came
