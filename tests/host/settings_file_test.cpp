@@ -106,7 +106,7 @@ TEST_F(HostSettingsFile, EveryFieldByName) {
 }
 
 // The froxel presets by name: the grid's sizes, and "-temporal" for the temporal mode.
-TEST(HostSettingsFile, FroxelPresetsSetTheGrid) {
+TEST_F(HostSettingsFile, FroxelPresetsSetTheGrid) {
     lightscatter::Settings s;
     s.froxelTemporal = true;
     ASSERT_TRUE(lightscatter::applyFroxelPreset("froxels-unreal", s));
