@@ -58,9 +58,7 @@ rg::ImportedImage persistentImport(const ImportState& s, VkImage image, bool fil
 }
 
 rg::ImportedImage historyImport(const ImportState& s, VkImage image, bool filled) {
-    rg::ImportedImage d = importDescription(s);
-    d.image = image;
-    if (!filled) d.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    rg::ImportedImage d = persistentImport(s, image, filled);
     // Compute passes read and write the two images, each frame in the other role: a frame waits
     // for the frame before's writes (to read them) and reads (to overwrite them).
     d.initialStages = d.finalStages = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
