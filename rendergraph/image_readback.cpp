@@ -3,11 +3,11 @@
 namespace rg {
 
 void recordReadback(const Device& device, VkCommandBuffer cmd, VkImage image, VkImageLayout layout,
-                    VkExtent2D extent, VkBuffer buffer, VkImageAspectFlags aspect,
-                    uint32_t layers) {
+                    VkExtent2D extent, VkBuffer buffer, VkImageAspectFlags aspect, uint32_t layers,
+                    uint32_t depth) {
     VkBufferImageCopy region{};
     region.imageSubresource = {aspect, 0, 0, layers};
-    region.imageExtent = {extent.width, extent.height, 1};
+    region.imageExtent = {extent.width, extent.height, depth};
     device.vk().CmdCopyImageToBuffer(cmd, image, layout, buffer, 1, &region);
     VkMemoryBarrier2 toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
     toHost.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;

@@ -262,21 +262,30 @@ void EngineRenderer::createScreenTargets() {
         device_, pixels * 16, VK_BUFFER_USAGE_TRANSFER_DST_BIT, "in-scattering readback");
 }
 
-void EngineRenderer::layOutTargets() {
-    // The Lin output stays in GENERAL from frame to frame, as the plugin expects it.
-    device_.submitAndWait([&](VkCommandBuffer cmd) {
+namespace {
+
+// A new storage image into GENERAL, where the host keeps its outputs from frame to frame.
+void layOutAsGeneral(const rg::Device& device, VkImage image) {
+    device.submitAndWait([&](VkCommandBuffer cmd) {
         VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
         b.dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
         b.dstAccessMask = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT;
         b.newLayout = VK_IMAGE_LAYOUT_GENERAL;
         b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-        b.image = inscatter_->image();
+        b.image = image;
         b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
         VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
         dep.imageMemoryBarrierCount = 1;
         dep.pImageMemoryBarriers = &b;
         vkCmdPipelineBarrier2(cmd, &dep);
     });
+}
+
+}  // namespace
+
+void EngineRenderer::layOutTargets() {
+    // The Lin output stays in GENERAL from frame to frame, as the plugin expects it.
+    layOutAsGeneral(device_, inscatter_->image());
 }
 
 void EngineRenderer::recordCubeShadows(VkCommandBuffer cmd) {
@@ -518,6 +527,12 @@ lightscatter::FrameDescription EngineRenderer::describe(const RenderOptions& opt
     f.timeSeconds = options.timeSeconds;
     f.debug.countSteps = options.countSteps;
     f.resetHistory = options.resetHistory;
+    if (options.exportVolume && volume_) {
+        f.volumeOut = imageInput(*volume_, VK_IMAGE_LAYOUT_GENERAL);
+        f.volumeOut->depth = volume_->depth();
+        f.volumeOut->finalStages = finalStages;
+        f.volumeOut->finalAccess = finalAccess;
+    }
     return f;
 }
 
@@ -528,6 +543,7 @@ void EngineRenderer::record(VkCommandBuffer cmd, const RenderOptions& options,
     lightscatter::FrameDescription frame = describe(options, finalStages, finalAccess);
     frame.color.finalLayout = finalLayout;
     frame.inscatterOut->finalLayout = finalLayout;
+    if (frame.volumeOut) frame.volumeOut->finalLayout = finalLayout;
     const float aspect = static_cast<float>(size_.width) / static_cast<float>(size_.height);
     pipelines_->viewProj = cameraProjection(scene_.camera, aspect) * cameraView(scene_.camera);
     pipelines_->lighting.resize(lights_.size());
@@ -580,8 +596,33 @@ FrameOutput EngineRenderer::timings() {
     return out;
 }
 
+void EngineRenderer::prepareVolume(const RenderOptions& options) {
+    lightscatter::FroxelVolume v;
+    try {
+        v = lightscatter::froxelVolume(
+            describe(options, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE));
+    } catch (const lightscatter::InvalidInput&) {
+        return;  // record() refuses the same frame, in the scene's terms
+    }
+    if (volume_ && volume_->extent().width == v.width && volume_->extent().height == v.height &&
+        volume_->depth() == v.depth)
+        return;
+    volume_.reset();
+    volumeReadback_.reset();
+    volume_ = std::make_unique<GpuImage>(
+        device_, VK_FORMAT_R16G16B16A16_SFLOAT, VkExtent2D{v.width, v.height},
+        VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "host froxel volume", 1, 0,
+        v.depth);
+    volumeReadback_ = std::make_unique<rg::HostBuffer>(
+        device_, VkDeviceSize{v.width} * v.height * v.depth * 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+        "froxel volume readback");
+    layOutAsGeneral(device_, volume_->image());
+}
+
 FrameOutput EngineRenderer::render(const RenderOptions& options) {
     const VkDeviceSize pixels = size_t{size_.width} * size_.height;
+    if (options.exportVolume) prepareVolume(options);
+    const bool volume = options.exportVolume && volume_;
     const rg::HostBuffer& colorBuffer = *colorReadback_;
     const rg::HostBuffer& linBuffer = *linReadback_;
     RG_VK(vkResetCommandBuffer(cmd_, 0));
@@ -599,10 +640,13 @@ FrameOutput EngineRenderer::render(const RenderOptions& options) {
     // GENERAL, where the next frame expects them.
     auto transition = [&](VkImageLayout from, VkImageLayout to, VkPipelineStageFlags2 dst,
                           VkAccessFlags2 dstAccess) {
-        VkImageMemoryBarrier2 b[2] = {{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2},
+        VkImageMemoryBarrier2 b[3] = {{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2},
+                                      {VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2},
                                       {VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2}};
-        const VkImage images[2] = {color_->image(), inscatter_->image()};
-        for (int i = 0; i < 2; ++i) {
+        const VkImage images[3] = {color_->image(), inscatter_->image(),
+                                   volume ? volume_->image() : VK_NULL_HANDLE};
+        const uint32_t count = volume ? 3 : 2;
+        for (uint32_t i = 0; i < count; ++i) {
             b[i].srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
             b[i].srcAccessMask = 0;
             b[i].dstStageMask = dst;
@@ -614,7 +658,7 @@ FrameOutput EngineRenderer::render(const RenderOptions& options) {
             b[i].subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
         }
         VkDependencyInfo d{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-        d.imageMemoryBarrierCount = 2;
+        d.imageMemoryBarrierCount = count;
         d.pImageMemoryBarriers = b;
         vkCmdPipelineBarrier2(cmd_, &d);
     };
@@ -622,6 +666,10 @@ FrameOutput EngineRenderer::render(const RenderOptions& options) {
                        colorBuffer.buffer());
     rg::recordReadback(device_, cmd_, inscatter_->image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                        size_, linBuffer.buffer());
+    if (volume)
+        rg::recordReadback(device_, cmd_, volume_->image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           volume_->extent(), volumeReadback_->buffer(), VK_IMAGE_ASPECT_COLOR_BIT,
+                           1, volume_->depth());
     transition(VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
                VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
                VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT);
@@ -634,6 +682,15 @@ FrameOutput EngineRenderer::render(const RenderOptions& options) {
     for (size_t i = 0; i < out.color.size(); ++i) out.color[i] = glm::unpackHalf1x16(halves[i]);
     out.inscatter.resize(pixels * 4);
     std::memcpy(out.inscatter.data(), linBuffer.data(), pixels * 16);
+    if (volume) {
+        out.volumeLayout = lightscatter::froxelVolume(
+            describe(options, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE));
+        out.volume.resize(size_t{volume_->extent().width} * volume_->extent().height *
+                          volume_->depth() * 4);
+        const auto* texels = static_cast<const uint16_t*>(volumeReadback_->data());
+        for (size_t i = 0; i < out.volume.size(); ++i)
+            out.volume[i] = glm::unpackHalf1x16(texels[i]);
+    }
     return out;
 }
 

@@ -24,11 +24,18 @@ struct RenderOptions {
     double timeSeconds = 0.0;  // FrameDescription::timeSeconds: scrolls the planes method's noise
     bool countSteps = false;   // DebugOptions::countSteps: epipolar's ray-march steps in the report
     bool resetHistory = false;  // FrameDescription::resetHistory: a camera cut
+    // With froxels: the frame's grid in an engine image (FrameDescription::volumeOut), read back
+    // by render() into FrameOutput::volume.
+    bool exportVolume = false;
 };
 
 struct FrameOutput {
     std::vector<float> color;      // RGBA, linear HDR radiance after compositing
     std::vector<float> inscatter;  // RGBA, Lin alone
+    // RenderOptions::exportVolume: the froxel grid, RGBA per texel (x fastest, then y, then the
+    // slice), laid out as `volumeLayout` says.
+    std::vector<float> volume;
+    lightscatter::FroxelVolume volumeLayout;
     lightscatter::FrameReport plugin;
     rg::FrameTimings engine;
 };
@@ -99,6 +106,11 @@ class EngineRenderer {
     std::unique_ptr<GpuImage> depth_, color_, inscatter_;
     std::vector<LightTargets> lights_;  // one per scene light, in the scene's order
     std::unique_ptr<rg::HostBuffer> colorReadback_, linReadback_;  // sized with the targets
+    // RenderOptions::exportVolume's image (GENERAL between frames) and its read-back, made at the
+    // grid's size on first use and again when the size changes.
+    void prepareVolume(const RenderOptions& options);
+    std::unique_ptr<GpuImage> volume_;
+    std::unique_ptr<rg::HostBuffer> volumeReadback_;
     std::unique_ptr<lightscatter::Plugin> plugin_;
     std::shared_ptr<Pipelines> pipelines_;
     std::unique_ptr<rg::RenderGraph> graph_;

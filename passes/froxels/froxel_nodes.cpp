@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "apply_comp_variants.h"
+#include "export_comp.h"
 #include "inject_comp_variants.h"
 #include "integrate_comp.h"
 #include "shared/pass_helpers.h"
@@ -26,14 +27,11 @@ struct FroxelPush {
 // The push block of a frame: the slices from the near plane to the far distance, capped by the
 // medium's maxDistance and a finite far plane (no ray goes further); Lin stored at `storage`.
 FroxelPush froxelPush(const FrameConstants& c, const FroxelGrid& g, float storage) {
-    const float nearZ = c.depthInfo.z;
-    float farZ = c.betaM.w;  // maxDistance
-    if (g.farDistance > 0.0f) farZ = std::min(farZ, g.farDistance);
-    if (c.depthInfo.y < 0.5f) farZ = std::min(farZ, c.depthInfo.w);
-    farZ = std::max(farZ, nearZ * 1.001f);
+    const FroxelDepthRange z = froxelDepthRange(c.depthInfo.z, c.depthInfo.w, c.depthInfo.y > 0.5f,
+                                                c.betaM.w, g.farDistance);
     FroxelPush p{};
     p.grid = {float(g.columns), float(g.rows), float(g.slices), float(g.tile)};
-    p.slices = {nearZ, farZ, std::log(farZ / nearZ), storage};
+    p.slices = {z.nearZ, z.farZ, std::log(z.farZ / z.nearZ), storage};
     p.jitter = glm::vec4(0.5f);
     p.columns = {0.0f, 0.0f, float(g.columns), float(g.rows)};
     return p;
@@ -93,6 +91,14 @@ FroxelGrid froxelGrid(VkExtent2D screen, const FroxelSettings& s) {
     g.slices = s.slices;
     g.farDistance = s.farDistance;
     return g;
+}
+
+FroxelDepthRange froxelDepthRange(float nearPlane, float farPlane, bool infiniteFar,
+                                  float maxDistance, float farDistance) {
+    float farZ = maxDistance;
+    if (farDistance > 0.0f) farZ = std::min(farZ, farDistance);
+    if (!infiniteFar) farZ = std::min(farZ, farPlane);
+    return {nearPlane, std::max(farZ, nearPlane * 1.001f)};
 }
 
 rg::ImageRef froxelScatteringImage(rg::RenderGraph& graph, const FroxelGrid& grid) {
@@ -221,6 +227,27 @@ CompositeOutputs addFroxelApply(rg::RenderGraph& graph, const FroxelApplyInputs&
             const VkExtent2D e = ctx.extent(written.color);
             ctx.vk().CmdDispatch(ctx.cmd(), groupCount(e.width, 8), groupCount(e.height, 8), 1);
         });
+    return written;
+}
+
+rg::ImageRef addFroxelExport(rg::RenderGraph& graph, const FroxelExportInputs& in,
+                             const FroxelGrid& grid) {
+    auto pass = graph.addPass("froxel volume export", rg::PassType::Compute);
+    rg::BindingTable table = frameTable(pass, in.frame.constants);
+    table.storageRead(LS_BINDING_FROXEL_INTEGRATED, in.integrated);
+    const rg::ImageRef written = table.storageWrite(LS_BINDING_FROXEL_VOLUME_OUT, in.volumeOut);
+    pass.execute([frame = in.frame, lights = in.lights, table, grid](rg::PassContext& ctx) {
+        const FroxelPush push =
+            froxelPush(ctx.data(frame.values).constants, grid, gridStorage(ctx, lights));
+        const auto& p = frame.shared->pipelines.compute("froxel volume export",
+                                                        rg::spirv(ls_spirv::export_comp),
+                                                        table.layout(), sizeof(FroxelPush), {});
+        p.bind(ctx.cmd());
+        table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
+        p.push(ctx.cmd(), push);
+        ctx.vk().CmdDispatch(ctx.cmd(), groupCount(grid.columns, 4), groupCount(grid.rows, 4),
+                             groupCount(grid.slices, 4));
+    });
     return written;
 }
 

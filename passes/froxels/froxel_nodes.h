@@ -19,6 +19,15 @@ struct FroxelGrid {
 };
 FroxelGrid froxelGrid(VkExtent2D screen, const FroxelSettings& settings);
 
+// The view-axis distances (metres) where the first slice starts, the camera's near plane, and where
+// the last one ends: the far distance, or where no ray goes further (the medium's maxDistance, a
+// finite far plane).
+struct FroxelDepthRange {
+    float nearZ = 0.0f, farZ = 0.0f;
+};
+FroxelDepthRange froxelDepthRange(float nearPlane, float farPlane, bool infiniteFar,
+                                  float maxDistance, float farDistance);
+
 // The in-scattering grid's and the integrated grid's formats: float32 for the in-scattering, whose
 // per-metre values of a faint light fall under float16's normal range; float16 for the integrated
 // Lin (stored at a scale, as the screen Lin is) and transmittance.
@@ -82,5 +91,15 @@ struct FroxelApplyInputs {
 // The engine's color (and Lin output) with the grid applied at each pixel's depth.
 CompositeOutputs addFroxelApply(rg::RenderGraph& graph, const FroxelApplyInputs& in,
                                 const FroxelGrid& grid);
+
+struct FroxelExportInputs {
+    FrameContext frame;  // the first light's
+    rg::ImageRef integrated;
+    std::vector<rg::HostDataRef<LightFrame>> lights;  // as the integration's
+    rg::ImageRef volumeOut;  // the engine's 3D image (R16G16B16A16_SFLOAT, the grid's size)
+};
+// The integrated grid in the engine's image: Lin at its true scale in rgb, T in a.
+rg::ImageRef addFroxelExport(rg::RenderGraph& graph, const FroxelExportInputs& in,
+                             const FroxelGrid& grid);
 
 }  // namespace ls

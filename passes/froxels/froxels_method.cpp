@@ -10,6 +10,7 @@ MethodCaps FroxelsMethod::caps() const {
     c.cubeShadow = true;
     c.budgeted = true;
     c.frameWide = true;
+    c.exportsVolume = true;
     return c;
 }
 
@@ -78,6 +79,8 @@ ChainOutputs FroxelsMethod::addFrameChain(rg::RenderGraph& g, const std::vector<
         out.historyOut = t.historyOut;
     }
     const rg::ImageRef integrated = addFroxelIntegration(g, {frame, scattering, lights}, grid);
+    if (in[0].volumeOut.valid())
+        out.volumeOut = addFroxelExport(g, {frame, integrated, lights, in[0].volumeOut}, grid);
     out.composited = true;
     out.target = addFroxelApply(
         g, {frame, integrated, lights, {target.color, target.inscatterOut, false}}, grid);

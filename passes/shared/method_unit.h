@@ -27,6 +27,8 @@ struct MethodCaps {
     bool budgeted = false;
     // Every light of the frame goes through one chain (addFrameChain): the froxel grid.
     bool frameWide = false;
+    // A frame-wide chain that writes its 3D result into ChainInputs::volumeOut when given.
+    bool exportsVolume = false;
 };
 
 // One light's chain in the frame graph's configuration: what decides its nodes, their textures
@@ -67,6 +69,9 @@ struct ChainInputs {
     // frame writes, and what the frame knows of it; invalid where the method keeps none.
     rg::ImageRef history, historyOut;
     rg::HostDataRef<HistoryFrame> historyValues;
+    // The engine's 3D image for the chain's 3D result (FrameDescription::volumeOut), for a method
+    // that exportsVolume; else invalid.
+    rg::ImageRef volumeOut;
 };
 
 // What a chain leaves: a screen Lin for the composite, or the target's new versions where the
@@ -77,6 +82,7 @@ struct ChainOutputs {
     CompositeOutputs target;
     rg::BufferRef stepCounts;  // the counter's new version, when the chain counted
     rg::ImageRef historyOut;   // the history's new version, when the chain keeps one
+    rg::ImageRef volumeOut;    // ChainInputs::volumeOut written, when it was given
 };
 
 class MethodUnit {

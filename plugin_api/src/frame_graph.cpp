@@ -11,7 +11,7 @@
 namespace lightscatter::detail {
 
 ImportState importState(const ImageInput& in) {
-    return {in.format, in.extent, in.usage, in.layout, in.finalLayout, in.arrayLayers};
+    return {in.format, in.extent, in.usage, in.layout, in.finalLayout, in.arrayLayers, in.depth};
 }
 
 VkFormat stencilFormat(const rg::DeviceCaps& caps) {
@@ -256,12 +256,17 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
                 in.historyValues = fg.historyValues;
             }
         }
+        if (c.volumeOut.given()) {
+            fg.volumeOut = g.importImage("froxel volume output", importDescription(c.volumeOut));
+            frameWide[0].volumeOut = fg.volumeOut;
+        }
         // A frame-wide method takes every light (the method choice mixes it with no other).
         const ls::ChainOutputs o = c.lights[0].method->addFrameChain(g, frameWide, frameWideConfigs,
                                                                      {color, linOut, false});
         color = o.target.color;
         linOut = o.target.inscatterOut;
         if (o.historyOut.valid()) g.markOutput(o.historyOut);
+        if (o.volumeOut.valid()) g.markOutput(o.volumeOut);
         chains = frameWide.size();
     }
     if (chains == 0) ls::addComposite(g, {frame, color, {}, linOut});  // extinction only

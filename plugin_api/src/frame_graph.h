@@ -60,6 +60,8 @@ struct GraphConfig {
     // The frame-wide method's history (MethodUnit::history()), two images of this state the
     // plugin alternates; absent when the frame keeps none.
     ImportState history;
+    // The engine's image for the frame-wide method's 3D result (FrameDescription::volumeOut).
+    ImportState volumeOut;
     std::vector<LightGraphConfig> lights;  // in the frame's order
     bool operator==(const GraphConfig&) const = default;
 };
@@ -81,6 +83,7 @@ struct FrameGraph {
     // The history the frame reads and the one it writes, and its values (GraphConfig::history).
     rg::ImageRef history, historyOut;
     rg::HostDataRef<ls::HistoryFrame> historyValues;
+    rg::ImageRef volumeOut;  // GraphConfig::volumeOut's import
 };
 
 // The step counter's import: written by the frame's passes, read by the host once it is done.

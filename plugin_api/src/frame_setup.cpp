@@ -196,12 +196,17 @@ void checkLayout(VkImageLayout layout, const ImageInput& img, const std::string&
          " cannot hold this " + rg::formatName(img.format) + " image: the layout " + why);
 }
 
+// `volume`: a 3D image (volumeOut); the others are 2D, depth 1.
 void checkImage(const ImageInput& img, const std::string& field, VkImageUsageFlags usage,
-                const char* usageName, bool read = true) {
+                const char* usageName, bool read = true, bool volume = false) {
     if (!img.image) fail(field + ".image is VK_NULL_HANDLE");
-    if (img.extent.width == 0 || img.extent.height == 0)
+    if (img.extent.width == 0 || img.extent.height == 0 || (volume && img.depth == 0))
         fail(field + ".extent is " + std::to_string(img.extent.width) + "x" +
-             std::to_string(img.extent.height) + ": must not be empty");
+             std::to_string(img.extent.height) +
+             (volume ? "x" + std::to_string(img.depth) : std::string()) + ": must not be empty");
+    if (!volume && img.depth != 1)
+        fail(field + ".depth = " + std::to_string(img.depth) +
+             ": must be 1 (a 2D image; only volumeOut is a 3D one)");
     if ((img.usage & usage) != usage)
         fail(field + ".usage lacks " + usageName + ", which the plugin needs to read or write it");
     if (img.finalLayout == VK_IMAGE_LAYOUT_UNDEFINED)
@@ -717,6 +722,16 @@ FrameSetup setupFrameWide(const FrameDescription& f, bool withImages) {
             if (f.inscatterOut->extent.width != s.screen.width ||
                 f.inscatterOut->extent.height != s.screen.height)
                 fail("inscatterOut.extent differs from depth.extent");
+        }
+        if (f.volumeOut) {
+            // Its extent is the froxel grid's, checked once the frame's method is known
+            // (checkVolumeOut).
+            oneLayer(&*f.volumeOut, "volumeOut");
+            checkImage(*f.volumeOut, "volumeOut", VK_IMAGE_USAGE_STORAGE_BIT, "STORAGE", false,
+                       true);
+            if (f.volumeOut->format != VK_FORMAT_R16G16B16A16_SFLOAT)
+                fail("volumeOut.format " + rg::formatName(f.volumeOut->format) +
+                     ": must be R16G16B16A16_SFLOAT");
         }
     }
     return s;

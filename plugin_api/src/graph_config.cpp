@@ -10,6 +10,7 @@ FrameImports frameImports(const FrameDescription& frame) {
     f.color = importState(frame.color);
     if (frame.inscatterOut) f.inscatterOut = importState(*frame.inscatterOut);
     if (frame.noise) f.noise = importState(*frame.noise);
+    if (frame.volumeOut) f.volumeOut = importState(*frame.volumeOut);
     for (const LightInput& l : lightInputs(frame)) {
         f.shadowMaps.push_back(l.shadowMap ? importState(*l.shadowMap) : ImportState{});
         f.lightColors.push_back(l.lightColor ? importState(*l.lightColor) : ImportState{});
@@ -75,6 +76,7 @@ GraphConfig graphConfig(const ValidatedFrame& frame,
             if (m.caps().frameWide) {
                 const ls::HistoryShape shape = m.history(c.lights[i].chain, c.screen);
                 if (shape.given()) c.history = historyState(shape);
+                if (m.caps().exportsVolume) c.volumeOut = images.volumeOut;
             }
             break;
         }

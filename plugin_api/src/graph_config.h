@@ -11,7 +11,7 @@ namespace lightscatter::detail {
 // What of the engine's images decides the graph: the frame's, and each light's (absent: format
 // UNDEFINED).
 struct FrameImports {
-    ImportState depth, color, inscatterOut, noise;
+    ImportState depth, color, inscatterOut, noise, volumeOut;
     std::vector<ImportState> shadowMaps, lightColors;  // one per light
 };
 FrameImports frameImports(const FrameDescription& frame);

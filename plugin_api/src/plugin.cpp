@@ -25,6 +25,7 @@
 #include "rendergraph/report.h"
 #include "rendergraph/vk_error.h"
 #include "shared/point_table.h"
+#include "volume_out.h"
 
 namespace lightscatter {
 
@@ -172,14 +173,22 @@ struct Plugin::Impl {
         detail::ValidatedFrame frame;
         std::vector<detail::MethodChoice> choices;  // per light
     };
-    static Chosen choose(const FrameDescription& frame) {
+    Chosen choose(const FrameDescription& frame) const {
         Chosen c{detail::validateFrame(frame)};
         c.choices = detail::chooseLightMethods(frame.method, c.frame, frame);
+        if (frame.volumeOut) {
+            const VkExtent2D screen =
+                maxRenderSize.width != 0 ? maxRenderSize : c.frame.lights[0].screen;
+            detail::checkVolumeOut(*frame.volumeOut, c.frame, c.choices, screen);
+            // The engine's volume is written even where no light reaches the view: the first
+            // light's chain then fills the grid with the medium's transmittance alone.
+            c.frame.touchesView[detail::gridLight(c.frame)] = true;
+        }
         return c;
     }
 
     // What prepare() refuses, found the same way, with nothing built or changed.
-    static void check(const FrameDescription& frame) { choose(frame); }
+    void check(const FrameDescription& frame) const { choose(frame); }
 
     // One light's constants.
     ls::FrameConstants frameConstants(const detail::FrameSetup& setup) const {
@@ -385,6 +394,8 @@ struct Plugin::Impl {
         fg.graph->updateImport(fg.color, detail::importDescription(frame.color));
         if (fg.inscatterOut.valid())
             fg.graph->updateImport(fg.inscatterOut, detail::importDescription(*frame.inscatterOut));
+        if (fg.volumeOut.valid())
+            fg.graph->updateImport(fg.volumeOut, detail::importDescription(*frame.volumeOut));
         if (fg.noise.valid())
             fg.graph->updateImport(fg.noise, frame.noise
                                                  ? detail::importDescription(*frame.noise)
@@ -704,7 +715,7 @@ FrameReport Plugin::render(const FrameDescription& frame) {
 }
 
 void Plugin::check(const FrameDescription& frame) const {
-    translated([&] { Impl::check(frame); });
+    translated([&] { impl_->check(frame); });
 }
 
 FrameReport Plugin::report(uint64_t frame) {

@@ -60,6 +60,7 @@
 #define LS_BINDING_FROXEL_INTEGRATED 3   // integrate.comp, apply.comp: Lin and T to each froxel
 #define LS_BINDING_FROXEL_HISTORY 4      // temporal.comp: the frame before's in-scattering grid
 #define LS_BINDING_FROXEL_HISTORY_OUT 5  // temporal.comp: this frame's, for the next
+#define LS_BINDING_FROXEL_VOLUME_OUT 12  // export.comp: the engine's 3D image (volumeOut)
 
 // The light types' and Mie phases' values (LIGHTSCATTER_LIGHT_*, LIGHTSCATTER_MIE_*) are the
 // vocabulary's, which C++ names lightscatter::LightType and lightscatter::MiePhase.

@@ -282,6 +282,50 @@ TEST_F(PluginIntegrationGpu, LayoutsTheImageCannotHoldAreRefused) {
                   "inscatterOut.finalLayout PREINITIALIZED");
 }
 
+// volumeOut is froxels' grid: a 3D R16G16B16A16_SFLOAT storage image of froxelVolume()'s extent,
+// in a frame whose method is froxels. The refusals come before the handle is touched, so the
+// color's stands in for it.
+TEST_F(PluginIntegrationGpu, AVolumeOutputTheFrameCannotFillIsRefused) {
+    auto volume = [](lightscatter::FrameDescription& d) {
+        lightscatter::ImageInput v = d.color;
+        v.format = VK_FORMAT_R16G16B16A16_SFLOAT;
+        const lightscatter::FroxelVolume grid = lightscatter::froxelVolume(d);
+        v.extent = {grid.width, grid.height};
+        v.depth = grid.depth;
+        d.volumeOut = v;
+    };
+    expectRefused(volume, "volumeOut is given but the frame runs epipolar", "only froxels");
+    expectRefused(
+        [&](auto& d) {
+            d.method = Method::Froxels;
+            volume(d);
+            d.volumeOut->depth += 1;
+        },
+        "volumeOut.extent", "differs from the froxel grid's");
+    expectRefused(
+        [&](auto& d) {
+            d.method = Method::Froxels;
+            volume(d);
+            d.volumeOut->format = VK_FORMAT_R32G32B32A32_SFLOAT;
+        },
+        "volumeOut.format R32G32B32A32_SFLOAT", "must be R16G16B16A16_SFLOAT");
+    expectRefused(
+        [&](auto& d) {
+            d.method = Method::Froxels;
+            volume(d);
+            d.volumeOut->depth = 0;
+        },
+        "volumeOut.extent", "must not be empty");
+    expectRefused(
+        [&](auto& d) {
+            d.method = Method::Froxels;
+            volume(d);
+            d.volumeOut->usage = VK_IMAGE_USAGE_SAMPLED_BIT;
+        },
+        "volumeOut.usage lacks STORAGE");
+    expectRefused([](auto& d) { d.color.depth = 2; }, "color.depth = 2", "a 2D image");
+}
+
 TEST_F(PluginIntegrationGpu, LayoutsTheImageCanHoldAreAccepted) {
     // A sampled depth image may rest in DEPTH_READ_ONLY_OPTIMAL; Lin alone may start UNDEFINED.
     FrameSpec spec = spotFrame();

@@ -36,7 +36,7 @@
 // header and a library of different major.minor versions do not link (Plugin's constructor takes
 // a tag named for the header's version, which only the library of that version defines).
 #define LIGHTSCATTER_VERSION_MAJOR 0
-#define LIGHTSCATTER_VERSION_MINOR 2
+#define LIGHTSCATTER_VERSION_MINOR 3
 #define LIGHTSCATTER_VERSION_PATCH 0
 
 // What the library exports: everything declared with LIGHTSCATTER_API (a shared build exports
@@ -436,6 +436,7 @@ struct ImageInput {
         VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;  // the engine's next use
     VkAccessFlags2 finalAccess = VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT;
     uint32_t arrayLayers = 1;  // 6 for a point light's cube shadow map, else 1
+    uint32_t depth = 1;        // a 3D image's extent in z (volumeOut), else 1
 };
 
 // Seed 004's occluders: bounding volumes of the scene's objects, in world space (metres), from
@@ -505,6 +506,12 @@ struct FrameDescription {
     // beam-tree-analytic refuse it; docs/methods.md, "Cookies"). Refused with a point light.
     std::optional<ImageInput> lightColor;
     std::optional<ImageInput> inscatterOut;  // optional: Lin alone, R32G32B32A32_SFLOAT storage
+    // Optional, with froxels: the frame's integrated grid, for an engine to fog what the depth
+    // buffer does not hold (forward transparents, particles). A 3D R16G16B16A16_SFLOAT storage
+    // image of froxelVolume()'s width x height x depth; each texel holds Lin (rgb, unexposed,
+    // capped at 65504) and the transmittance (a) from the camera to its froxel's far end. A frame
+    // whose method is not froxels refuses it.
+    std::optional<ImageInput> volumeOut;
     // Optional tiling noise for Settings::noiseAmplitude (sampled, repeating; red and green are two
     // independent layers with values in [0, 1] and mean 0.5). Without it the plugin makes its own.
     std::optional<ImageInput> noise;
@@ -542,6 +549,32 @@ struct FrameDescription {
     // history anew. Only a method that keeps history reads it.
     bool resetHistory = false;
 };
+
+// How to read FrameDescription::volumeOut. Column x covers the screen's pixels [x tile, (x + 1)
+// tile) across (rows alike, row 0 at the top); the slices cut the view axis geometrically, slice k
+// spanning camera-space z (the distance along the view axis, metres) in
+//     [nearZ (farZ / nearZ)^(k / depth), nearZ (farZ / nearZ)^((k + 1) / depth)),
+// and texel k holds the integral from the camera to that slice's far end. For a point at pixel
+// position (px, py) (continuous: a pixel's centre is at + 0.5) and camera-space z:
+//     u = depth ln(z / nearZ) / ln(farZ / nearZ), clamped to [0, depth]
+//     g = the image sampled with a linear filter, clamped to its edge, at the normalised
+//         (px / (width tile), py / (height tile), (max(u, 1) - 0.5) / depth)
+//     within the first slice (u < 1): g = mix((0, 0, 0, 1), g, min(z / z1, 1)), z1 its far end
+//     fogged = color g.a + g.rgb (times FrameDescription::preExposure for a pre-exposed color).
+// That is how the plugin applies the grid to the depth buffer's pixels. nearZ is the camera's near
+// plane; farZ the smallest of Settings::froxelFarDistance (when not 0), medium.maxDistance and a
+// finite far plane. Beyond farZ the last slice holds.
+struct FroxelVolume {
+    uint32_t width = 0, height = 0, depth = 0;  // volumeOut's extent: columns, rows, slices
+    uint32_t tile = 0;                          // pixels per column, across and down
+    float nearZ = 0.0f, farZ = 0.0f;
+};
+// The froxel grid a frame would build (its first light reaching the view decides the settings,
+// its own or the frame's), for a screen of depth.extent, or of `maxRenderSize` when the plugin was
+// created with one. Throws InvalidInput as Plugin::check() does for the frame's fields; the image
+// handles are not looked at, so an engine may call it before it makes volumeOut.
+LIGHTSCATTER_API FroxelVolume froxelVolume(const FrameDescription& frame,
+                                           VkExtent2D maxRenderSize = {0, 0});
 
 // Thrown before anything is recorded when a description breaks a rule; the message names the field
 // (as a path from FrameDescription: "custom.slices", "depth.layout"; or from VulkanContext:
