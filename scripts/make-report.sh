@@ -33,6 +33,12 @@
 #                                          # build/bench-froxels/references keeps), the budgets, its
 #                                          # plot, and "Against froxel fog" spliced into the page (its
 #                                          # N-lights table from --lights-only's run)
+#   scripts/make-report.sh --froxels-motion-only # bench/froxels_flicker.json (froxels plain and temporal
+#                                          # under bench/flicker.json's motions at 160x90, beside epipolar
+#                                          # balanced and brute force; about 40 minutes on 2 cores the first
+#                                          # time, most of it the references, which
+#                                          # build/bench-froxels-flicker/references keeps) and "Froxels under
+#                                          # motion" spliced into the page
 #   scripts/make-report.sh --flicker-only  # bench/flicker.json alone (temporal stability: 60 frames of a
 #                                          # moving light, then camera, per scene and method at 160x90;
 #                                          # about an hour on 2 cores the first time, most of it the float64
@@ -99,6 +105,12 @@ if [[ "$config" == --froxels-only ]]; then
   /usr/bin/python3 scripts/write_report.py --froxels-section build/bench-froxels \
     build/bench-lights-scaling docs/performance.md
   echo "docs/performance.md: section 'Against froxel fog' replaced"
+  exit 0
+fi
+if [[ "$config" == --froxels-motion-only ]]; then
+  ./build/host_example/lightscatter bench --config bench/froxels_flicker.json --out build/bench-froxels-flicker
+  /usr/bin/python3 scripts/write_report.py --froxels-motion-section build/bench-froxels-flicker docs/performance.md
+  echo "docs/performance.md: section 'Froxels under motion' replaced"
   exit 0
 fi
 flicker() {

@@ -16,6 +16,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <utility>
 
 #include "activity.h"
 #include "bench/bench_config.h"
@@ -282,7 +283,15 @@ int runBench(Args& args) {
         for (const std::optional<bench::MotionKind>& motion : passes) {
             renderer->scene().camera = sceneForRun.camera;
             renderer->scene().light = sceneForRun.light;
-            for (int i = 0; i < config.warmup; ++i) renderer->render(options);
+            // Each pass starts again from the scene's own pose: a camera cut, so a method that
+            // keeps history (froxels' temporal mode) forgets the pass before's last pose.
+            bool cut = true;
+            auto renderFrame = [&] {
+                RenderOptions o = options;
+                o.resetHistory = std::exchange(cut, false);
+                return renderer->render(o);
+            };
+            for (int i = 0; i < config.warmup; ++i) renderFrame();
             std::vector<double> totals, cpuTotals;
             std::map<std::string, std::vector<double>> perPass, perCpuWork;
             FrameOutput last;
@@ -296,7 +305,7 @@ int runBench(Args& args) {
                     renderer->scene().camera = pose.camera;
                     renderer->scene().light = pose.light;
                 }
-                last = renderer->render(options);
+                last = renderFrame();
                 totals.push_back(last.plugin.totalMilliseconds);
                 for (const auto& p : last.plugin.passes) perPass[p.name].push_back(p.milliseconds);
                 double cpu = 0.0;

@@ -10,8 +10,9 @@ import argparse
 from pathlib import Path
 
 from . import flicker
-from .common import splice_section
+from .common import splice_section, with_kept_sections
 from .froxels import FROXELS_HEADING, froxels_section
+from .froxels_motion import FROXELS_MOTION_HEADING, froxels_motion_section
 from .gpu import GPU_HEADING, gpu_section
 from .lights import LIGHTS_HEADING, lights_section
 from .occluders import OCCLUDERS_HEADING, occluders_section
@@ -46,6 +47,8 @@ SECTIONS = {
     "froxels": (("FROXELS_DIR", "SCALING_DIR"),
                 "bench runs of bench/froxels.json (with budget-*.json beside) and bench/lights_scaling.json",
                 lambda dirs, page: (froxels_section(dirs[0], dirs[1]), FROXELS_HEADING)),
+    "froxels-motion": (("MOTION_DIR",), "a bench run of bench/froxels_flicker.json",
+                       lambda dirs, page: (froxels_motion_section(dirs[0]), FROXELS_MOTION_HEADING)),
 }
 
 # Options under the names they had before: the planes section was "slices" until the word came to
@@ -80,7 +83,7 @@ def main(argv=None):
     p = parser()
     args = p.parse_args(argv)
     for name, (folders, _, make) in SECTIONS.items():
-        given = getattr(args, f"{name}_section")
+        given = getattr(args, f"{name.replace('-', '_')}_section")
         if given is None:
             continue
         if args.bench is not None:
@@ -98,7 +101,10 @@ def main(argv=None):
     if args.config is None:
         p.error("the whole page needs BENCH, HARD and CONFIG (or one --NAME-section)")
     folders = {name: Path(getattr(args, name)) if getattr(args, name) else None for name, _ in PAGE_FOLDERS}
-    print("\n".join(page_lines(Path(args.bench), Path(args.hard), args.config,
-                               **{f"{name}_dir": d for name, d in folders.items()})))
+    text = "\n".join(page_lines(Path(args.bench), Path(args.hard), args.config,
+                                **{f"{name}_dir": d for name, d in folders.items()}))
+    # The sections this run does not write stay as they were (page_lines reads the same page).
+    old = Path("docs/performance.md")
+    print(with_kept_sections(old.read_text(), text) if old.exists() else text)
     return 0
 

@@ -57,6 +57,38 @@ def splice_section(page, heading, lines, before="## Scaling"):
 
 
 
+def sections(text):
+    """[(heading, lines)] of Markdown text cut at each '## ' heading; the part before the first has
+    the heading None."""
+    out = [(None, [])]
+    for line in text.split("\n"):
+        if line.startswith("## "):
+            out.append((line, []))
+        out[-1][1].append(line)
+    return out
+
+
+def with_kept_sections(old_page, new_text):
+    """`new_text` with every section of `old_page` it does not write (a hand-written one such as
+    'Cookies', or one another run splices in, such as 'Against froxel fog') kept, after the section
+    it followed on the old page: regenerating the page loses none of them."""
+    new = sections(new_text)
+    written = {h for h, _ in new}
+    previous = None
+    after = {}  # a written heading (None: the top) -> the old sections that followed it
+    for heading, lines in sections(old_page)[1:]:
+        if heading in written:
+            previous = heading
+        else:
+            after.setdefault(previous, []).append(lines)
+    out = []
+    for heading, lines in new:
+        out += lines
+        for kept in after.get(heading, []):
+            out += kept
+    return "\n".join(out)
+
+
 def kept_section(page_text, heading):
     """The section at `heading` of the page as it was (up to the next '## '), for a section whose
     results this run does not have: it stays as last measured, with its own date and command."""

@@ -1,0 +1,99 @@
+"""The 'Froxels under motion' section: the froxel grid's flicker and its temporal mode's ghosting
+under bench/flicker.json's motions, from a `lightscatter bench` run of bench/froxels_flicker.json
+(rows with "motion" and "flicker"; docs/performance.md, "Temporal stability", defines the
+figures)."""
+import json
+from datetime import date
+from pathlib import Path
+
+from .common import fmt
+
+FROXELS_MOTION_HEADING = "## Froxels under motion"
+
+
+def pct(x):
+    return "-" if x is None else f"{fmt(100 * x)}%"
+
+
+def mean(v):
+    v = [x for x in v if x is not None]
+    return sum(v) / len(v) if v else None
+
+
+def froxels_motion_section(bench_dir):
+    bench = json.loads((Path(bench_dir) / "bench.json").read_text())
+    runs = [r for r in bench["runs"] if "flicker" in r]
+    out = []
+    p = out.append
+    p(FROXELS_MOTION_HEADING + "\n")
+    if not runs:
+        return out
+    r0 = runs[0]
+    w, h = r0["size"]
+    frames = r0["frames"]
+    p("Engines run their froxel grids with temporal reprojection, and what their users report is its cost "
+      "in motion: ghosting (a shaft that trails where the light or the camera was) and flicker. This is "
+      "`froxels` at HDRP's and Unreal's sizes, plain and in the temporal mode, under bench/flicker.json's "
+      "two motions (the light turning slowly, then the camera moving), beside epipolar balanced and brute "
+      "force, every frame judged against the float64 reference at its own pose (\"Temporal stability\" above "
+      "defines the figures). Each motion starts from the scene's own pose as a camera cut "
+      "(`resetHistory`) after 16 still frames, so that the temporal mode's history has seen its whole "
+      "jitter sequence before the motion begins.\n")
+    p(f"Measured on {date.today().isoformat()} with `./build/host_example/lightscatter bench --config "
+      f"bench/froxels_flicker.json --out build/bench-froxels-flicker` (`scripts/make-report.sh "
+      f"--froxels-motion-only` runs it and splices this section) at {w}x{h}, {frames} frames per motion, on "
+      f"**{r0['device']}** (flicker and error do not depend on the device's speed). At this size "
+      f"`froxels-hdrp`'s grid is {-(-w // 8)}x{-(-h // 8)}x64 and `froxels-unreal`'s "
+      f"{-(-w // 16)}x{-(-h // 16)}x64: the same froxels per pixel as at 1920x1080, so a shaft a froxel "
+      "wide at this size is one at that size too.\n")
+    p("| scene | motion | configuration | mean rel. error (moving) | mean excess flicker | p99 excess | "
+      "error change |")
+    p("|---|---|---|---|---|---|---|")
+    for r in runs:
+        f = r["flicker"]
+        p(f"| {r['scene']} | {r['motion']['what']} | {r['label']} | {fmt(f['meanRelativeError'])} | "
+          f"{pct(f['meanExcess'])} | {pct(f['p99Excess'])} | {pct(f['meanErrorChange'])} |")
+    p("")
+
+    by = {(r["scene"], r["motion"]["what"], r["label"]): r["flicker"] for r in runs}
+    keys = sorted({(r["scene"], r["motion"]["what"]) for r in runs})
+    p("The temporal mode against the plain grid of the same size, per scene and motion (ratios; below 1 the "
+      "temporal mode is better): the moving error shows the ghosting, a history that lags the scene, against "
+      "what the jittered average gains; the excess flicker shows what the blend smooths.\n")
+    p("| scene | motion | hdrp: error | hdrp: flicker | unreal: error | unreal: flicker |")
+    p("|---|---|---|---|---|---|")
+    ratios = {"froxels-hdrp": ([], []), "froxels-unreal": ([], [])}
+    for scene, what in keys:
+        cells = []
+        for preset in ("froxels-hdrp", "froxels-unreal"):
+            plain, temporal = by.get((scene, what, preset)), by.get((scene, what, preset + "-temporal"))
+            if not plain or not temporal or not plain["meanRelativeError"] or not plain["meanExcess"]:
+                cells += ["-", "-"]
+                continue
+            e = temporal["meanRelativeError"] / plain["meanRelativeError"]
+            x = temporal["meanExcess"] / plain["meanExcess"]
+            ratios[preset][0].append(e)
+            ratios[preset][1].append(x)
+            cells += [f"{fmt(e)}x", f"{fmt(x)}x"]
+        p(f"| {scene} | {what} | " + " | ".join(cells) + " |")
+    p("")
+
+    # Against epipolar balanced in motion, per scene and motion.
+    epi = {k: by.get(k + ("epipolar balanced",)) for k in keys}
+    lines = []
+    for preset in ("froxels-hdrp", "froxels-unreal", "froxels-hdrp-temporal", "froxels-unreal-temporal"):
+        err = [by[k + (preset,)]["meanRelativeError"] / epi[k]["meanRelativeError"]
+               for k in keys if by.get(k + (preset,)) and epi[k] and epi[k]["meanRelativeError"]]
+        flick = [by[k + (preset,)]["meanExcess"] / epi[k]["meanExcess"]
+                 for k in keys if by.get(k + (preset,)) and epi[k] and epi[k]["meanExcess"]]
+        if err:
+            lines.append(f"`{preset}` {fmt(min(err))}x to {fmt(max(err))}x epipolar balanced's moving error and "
+                         f"{fmt(min(flick))}x to {fmt(max(flick))}x its excess flicker" if flick else
+                         f"`{preset}` {fmt(min(err))}x to {fmt(max(err))}x epipolar balanced's moving error")
+    if lines:
+        p("Against epipolar balanced in the same motions: " + "; ".join(lines) + ".\n")
+    for preset, (e, x) in ratios.items():
+        if e:
+            p(f"`{preset}-temporal` against `{preset}`: moving error {fmt(min(e))}x to {fmt(max(e))}x (mean "
+              f"{fmt(mean(e))}x), excess flicker {fmt(min(x))}x to {fmt(max(x))}x (mean {fmt(mean(x))}x).\n")
+    return out
