@@ -65,10 +65,11 @@ class ConfigReader {
         for (const auto& [key, value] : j.items())
             if (key != "name" && key != "frames" && key != "warmup" && key != "size" &&
                 key != "scenes" && key != "methods" && key != "profiles" && key != "sweeps" &&
-                key != "measureError" && key != "motion" && key != "sweepProfile")
+                key != "measureError" && key != "motion" && key != "sweepProfile" &&
+                key != "profileShadowMap")
                 fail("unknown key '" + echoText(key) +
                      "' (known: name, frames, warmup, size, scenes, methods, profiles, sweeps, "
-                     "sweepProfile, measureError, motion)");
+                     "sweepProfile, measureError, motion, profileShadowMap)");
         BenchConfig c;
         c.name = j.contains("name") ? text(j["name"], "name")
                                     : std::filesystem::path(path_).stem().string();
@@ -79,6 +80,13 @@ class ConfigReader {
             if (!j["measureError"].is_boolean())
                 fail("measureError = " + echo(j["measureError"]) + ": must be true or false");
             c.measureError = j["measureError"].get<bool>();
+        }
+        bool profileShadowMap = false;
+        if (j.contains("profileShadowMap")) {
+            if (!j["profileShadowMap"].is_boolean())
+                fail("profileShadowMap = " + echo(j["profileShadowMap"]) +
+                     ": must be true or false");
+            profileShadowMap = j["profileShadowMap"].get<bool>();
         }
         if (j.contains("motion")) {
             c.motion = motion(j["motion"]);
@@ -164,6 +172,7 @@ class ConfigReader {
         }
         for (size_t k = 0; k < c.scenes.size(); ++k)
             expand(c, c.scenes[k], sceneMethods[k], profiles, sweepProfile, sweeps);
+        if (profileShadowMap) applyProfileShadowMaps(c, profiles);
         return c;
     }
 
@@ -318,6 +327,23 @@ class ConfigReader {
             for (const char* prefix : {"lightscatter: ", "custom."})
                 if (why.rfind(prefix, 0) == 0) why.erase(0, std::char_traits<char>::length(prefix));
             fail(where + " (run '" + r.label + "'): " + why);
+        }
+    }
+
+    // Each profile run's map is its profile's; every other run's the largest of the profiles'.
+    static void applyProfileShadowMaps(BenchConfig& c,
+                                       const std::vector<lightscatter::Profile>& profiles) {
+        lightscatter::Profile largest = profiles.front();
+        for (lightscatter::Profile p : profiles)
+            if (lightscatter::profileSettings(p).shadowMapSize >
+                lightscatter::profileSettings(largest).shadowMapSize)
+                largest = p;
+        for (BenchRun& r : c.runs) {
+            if (r.shadowMapSize) continue;  // a shadow-map sweep sets its own
+            const bool own = r.family == "profiles" && r.method == lightscatter::Method::Epipolar;
+            const lightscatter::Profile p = own ? r.profile : largest;
+            r.profileShadowMap = lightscatter::profileSettings(p).shadowMapSize;
+            r.shadowMapFrom = std::string("profile ") + lightscatter::profileName(p);
         }
     }
 

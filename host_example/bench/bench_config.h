@@ -23,7 +23,13 @@ struct BenchRun {
     bool custom = false;
     VkExtent2D size{0, 0};
     uint32_t shadowMapSize = 0;  // 0: the scene's
-    bool measureError = false;   // at the config's error size only (the reference is slow)
+    // "profileShadowMap": the shadow map's size for a shadowed scene, from the profile that
+    // decides it (shadowMapFrom names it: epipolar's own profile, the largest of the
+    // configuration's profiles for the other methods, as seed 000's brute force ran at the
+    // high-quality map); 0: the scene's.
+    uint32_t profileShadowMap = 0;
+    std::string shadowMapFrom;
+    bool measureError = false;  // at the config's error size only (the reference is slow)
 };
 
 struct BenchConfig {

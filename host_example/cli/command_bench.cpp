@@ -245,6 +245,9 @@ int runBench(Args& args) {
         }
         SceneDesc sceneForRun = scene;
         if (run.shadowMapSize) sceneForRun.light.shadowMapSize = run.shadowMapSize;
+        // A profile's map for a shadowed light; a light without a map keeps none.
+        const bool profileMap = run.profileShadowMap && scene.light.shadowMapSize != 0;
+        if (profileMap) sceneForRun.light.shadowMapSize = run.profileShadowMap;
         const std::string key = run.scene + "/" + std::to_string(run.size.width) + "x" +
                                 std::to_string(run.size.height) + "/" +
                                 std::to_string(sceneForRun.light.shadowMapSize);
@@ -345,6 +348,9 @@ int runBench(Args& args) {
             row["initialStep"] = used.initialSampleStep;
             row["minMaxTrees"] = used.minMaxTrees;
             row["shadowMapSize"] = sceneForRun.light.shadowMapSize;
+            row["shadowMapFrom"] = profileMap          ? run.shadowMapFrom
+                                   : run.shadowMapSize ? std::string("sweep")
+                                                       : std::string("scene");
             row["frames"] = frames;
             row["time"] = spreadJson(t);
             row["passes"] = namedSpreads(last.plugin.passes, perPass);

@@ -1,12 +1,12 @@
 #pragma once
-// The order seed 004's beam tree needs its polygons in: front to back as seen from the light.
-// Nearest-point distance (the seed's sort) is not such an order: a box standing on a floor far
-// from the light is farther than the floor's nearest point, yet hides part of the floor, and
-// inserted after the floor it would be lost and its shadow taken for lit space. A BSP tree of the
+// The order seed 004's beam tree needs its polygons in: front to back as seen from the light, none
+// crossing another. A distance sort is not such an order (nearest point: a box standing on a floor
+// far from the light is farther than the floor's nearest point, yet hides part of the floor, and
+// inserted after the floor it would be lost and its shadow taken for lit space). A BSP tree of the
 // polygons (autopartition, largest polygons first as splitters, since a floor or wall then cuts
 // nothing) traversed from the light gives an exact order, splitting the polygons that
-// interpenetrate (seed 004's own future work, chapter 8, which also lifts its restriction to boxes
-// that do not overlap).
+// interpenetrate: the way seed 004 (chapter 6) names to lift its restriction to outer boxes that do
+// not overlap.
 #include <vector>
 
 #include "polygon.h"

@@ -134,6 +134,33 @@ TEST(CliBench, AShadowMapSweepSkipsALightWithoutAShadowMap) {
                   "profile.json: sweepProfile: unknown profile 'custom'");
 }
 
+// "profileShadowMap" gives each of epipolar's profiles its own map, as seed 000 ran them, and the
+// other methods the largest (its brute force ran at the high-quality map); a light without a map
+// keeps none. Each row says where its map's size came from.
+TEST(CliBench, ProfileShadowMapGivesEachProfileItsMap) {
+    writeFile("maps.json", R"({"frames": 1, "warmup": 0, "size": "16x9", "measureError": false,
+        "scenes": ["scenes/engine_spot.json", "scenes/point_fog.json"], "methods": ["epipolar", "brute-force"],
+        "profiles": ["balanced", "high-performance"], "profileShadowMap": true})");
+    const auto r = run("bench --config maps.json --out maps --validation");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    std::ifstream j(cli_test::path("maps/bench.json"));
+    const auto parsed = nlohmann::json::parse(j);
+    std::map<std::string, std::pair<int, std::string>> maps;
+    for (const auto& row : parsed["runs"])
+        maps[row["scene"].get<std::string>() + " " + row["label"].get<std::string>()] = {
+            row["shadowMapSize"].get<int>(), row["shadowMapFrom"].get<std::string>()};
+    using Map = std::pair<int, std::string>;
+    EXPECT_EQ(maps["engine_spot epipolar balanced"], (Map{2048, "profile balanced"}));
+    EXPECT_EQ(maps["engine_spot epipolar high-performance"],
+              (Map{1024, "profile high-performance"}));
+    EXPECT_EQ(maps["engine_spot brute-force"], (Map{2048, "profile balanced"}));
+    EXPECT_EQ(maps["point_fog epipolar balanced"], (Map{0, "scene"}));
+    EXPECT_EQ(maps["point_fog brute-force"], (Map{0, "scene"}));
+    writeFile("maps_flag.json", R"({"profileShadowMap": 1, "scenes": ["scenes/atrium.json"]})");
+    expectFailure(run("bench --config maps_flag.json --out maps_flag"),
+                  "maps_flag.json: profileShadowMap = 1: must be true or false");
+}
+
 // A scene may name methods of its own (those that take its lights); rows carry the light count.
 TEST(CliBench, AScenesOwnMethodsAndItsLightCount) {
     writeFile("own.json", R"({"frames": 1, "warmup": 0, "size": "16x9", "methods": ["epipolar"],
