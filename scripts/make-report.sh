@@ -33,6 +33,10 @@
 #                                          # build/bench-froxels/references keeps), the budgets, its
 #                                          # plot, and "Against froxel fog" spliced into the page (its
 #                                          # N-lights table from --lights-only's run)
+#   scripts/make-report.sh --seeds-only    # bench/seed000_*.json and bench/seed003_*.json: each of the seeds'
+#                                          # tables at the seed's size, settings and shadow maps, with the
+#                                          # seed's figures and a verdict per row ("Seed 000's results beside
+#                                          # ours", "Seed 003's ..."); timings only: a quiet machine
 #   scripts/make-report.sh --froxels-motion-only # bench/froxels_flicker.json (froxels plain and temporal
 #                                          # under bench/flicker.json's motions at 160x90, beside epipolar
 #                                          # balanced and brute force; about 40 minutes on 2 cores the first
@@ -105,6 +109,49 @@ if [[ "$config" == --froxels-only ]]; then
   /usr/bin/python3 scripts/write_report.py --froxels-section build/bench-froxels \
     build/bench-lights-scaling docs/performance.md
   echo "docs/performance.md: section 'Against froxel fog' replaced"
+  exit 0
+fi
+seeds() {
+  # Timings: run it on a quiet machine. Seed 000's tables at the seed's sizes, settings and shadow
+  # maps, each configuration's memory beside it, then seed 003's at its two sizes.
+  local c p size
+  for c in gtx680 quadro intel directional trees; do
+    mkdir -p "build/bench-seed000-$c"
+    ./build/host_example/lightscatter bench --config "bench/seed000_$c.json" --out "build/bench-seed000-$c"
+  done
+  for p in high-quality balanced high-performance; do
+    ./build/host_example/lightscatter budget --method epipolar --profile "$p" --size 2560x1600 --json \
+      > "build/bench-seed000-gtx680/budget-epipolar-$p.json"
+  done
+  # The smaller GPUs' profiles: (label, slices, samples, shadow map), as bench/seed000_quadro.json.
+  for c in quadro:1366x768 intel:1024x768; do
+    size=${c#*:}
+    while read -r label slices samples map; do
+      printf '{"slices": %s, "samplesPerSlice": %s, "shadowMapSize": %s}\n' "$slices" "$samples" "$map" \
+        > "build/bench-seed000-${c%%:*}/settings-$label.json"
+      ./build/host_example/lightscatter budget --method epipolar --profile custom \
+        --settings "build/bench-seed000-${c%%:*}/settings-$label.json" --shadow-map "$map" --size "$size" \
+        --json > "build/bench-seed000-${c%%:*}/budget-$label.json"
+    done <<'ROWS'
+seed-high-quality 1024 1024 2048
+seed-balanced 512 512 1024
+seed-high-performance 512 256 512
+ROWS
+  done
+  for size in 1280x720 2560x1440; do
+    mkdir -p "build/bench-seed003-$size"
+    ./build/host_example/lightscatter bench --config "bench/seed003_$size.json" --out "build/bench-seed003-$size"
+  done
+}
+if [[ "$config" == --seeds-only ]]; then
+  uptime > build/seeds-load-before.txt
+  seeds
+  uptime > build/seeds-load-after.txt
+  /usr/bin/python3 scripts/write_report.py --seed000-section build/bench-seed000-gtx680 build/bench-seed000-quadro \
+    build/bench-seed000-intel build/bench-seed000-directional build/bench-seed000-trees docs/performance.md
+  /usr/bin/python3 scripts/write_report.py --seed003-section build/bench-seed003-1280x720 \
+    build/bench-seed003-2560x1440 docs/performance.md
+  echo "docs/performance.md: sections 'Seed 000's results beside ours' and 'Seed 003's results beside ours' replaced"
   exit 0
 fi
 if [[ "$config" == --froxels-motion-only ]]; then

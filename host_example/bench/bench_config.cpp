@@ -66,10 +66,10 @@ class ConfigReader {
             if (key != "name" && key != "frames" && key != "warmup" && key != "size" &&
                 key != "scenes" && key != "methods" && key != "profiles" && key != "sweeps" &&
                 key != "measureError" && key != "motion" && key != "sweepProfile" &&
-                key != "profileShadowMap")
+                key != "profileShadowMap" && key != "configurations")
                 fail("unknown key '" + echoText(key) +
                      "' (known: name, frames, warmup, size, scenes, methods, profiles, sweeps, "
-                     "sweepProfile, measureError, motion, profileShadowMap)");
+                     "sweepProfile, measureError, motion, profileShadowMap, configurations)");
         BenchConfig c;
         c.name = j.contains("name") ? text(j["name"], "name")
                                     : std::filesystem::path(path_).stem().string();
@@ -107,9 +107,15 @@ class ConfigReader {
         }
         if (profiles.empty())
             fail("profiles is empty: list at least one profile, or leave the key out for balanced");
-        const std::vector<MethodName> methods = methodList(
-            j.contains("methods") ? j["methods"] : json::array({"epipolar", "brute-force"}),
-            "methods");
+        // With configurations, the methods' list may be empty: they are the runs.
+        const bool onlyConfigured = j.contains("configurations") && j.contains("methods") &&
+                                    j["methods"].is_array() && j["methods"].empty();
+        const std::vector<MethodName> methods =
+            onlyConfigured
+                ? std::vector<MethodName>{}
+                : methodList(j.contains("methods") ? j["methods"]
+                                                   : json::array({"epipolar", "brute-force"}),
+                             "methods");
         // A scene is its file's path, or {"scene": path, "methods": [...]} with methods of its
         // own: those that take its lights (a cube shadow map or several lights are not every
         // method's).
@@ -170,8 +176,18 @@ class ConfigReader {
                 fail("sweeps." + key + " and sweeps." + k + " are one sweep (" + key +
                      " is its former name): give it once");
         }
-        for (size_t k = 0; k < c.scenes.size(); ++k)
+        const std::vector<BenchRun> configured = j.contains("configurations")
+                                                     ? configurations(j["configurations"])
+                                                     : std::vector<BenchRun>{};
+        for (size_t k = 0; k < c.scenes.size(); ++k) {
             expand(c, c.scenes[k], sceneMethods[k], profiles, sweepProfile, sweeps);
+            for (BenchRun r : configured) {
+                r.scene = c.scenes[k];
+                r.size = c.size;
+                r.measureError = c.measureError;
+                add(c, r);
+            }
+        }
         if (profileShadowMap) applyProfileShadowMaps(c, profiles);
         return c;
     }
@@ -328,6 +344,83 @@ class ConfigReader {
                 if (why.rfind(prefix, 0) == 0) why.erase(0, std::char_traits<char>::length(prefix));
             fail(where + " (run '" + r.label + "'): " + why);
         }
+    }
+
+    // "configurations": named runs of settings no profile or one-parameter sweep gives (seed 000's
+    // smaller GPUs' profiles, seed 003's modes at its sample counts): each an object with a
+    // "label", a "method" (default epipolar; a froxel preset too), the profile it starts "from"
+    // (default balanced) and any of the keys below. Checked by the plugin's rules like a sweep.
+    std::vector<BenchRun> configurations(const json& v) const {
+        std::vector<BenchRun> runs;
+        const json items = list(v, "configurations");
+        if (items.empty()) fail("configurations is empty: leave the key out, or list a run");
+        for (size_t i = 0; i < items.size(); ++i) {
+            const json& o = items[i];
+            const std::string at = "configurations[" + std::to_string(i) + "]";
+            if (!o.is_object()) fail(at + " must be an object");
+            static const char* const kKeys[] = {"label",       "method",        "from",
+                                                "slices",      "samples",       "initialStep",
+                                                "minMaxTrees", "shadowMapSize", "coneSamples",
+                                                "coneMode",    "planeCount",    "planeBlur"};
+            for (const auto& [key, value] : o.items())
+                if (std::find_if(std::begin(kKeys), std::end(kKeys),
+                                 [&](const char* k) { return key == k; }) == std::end(kKeys))
+                    fail(at + ": unknown key '" + echoText(key) +
+                         "' (known: label, method, from, slices, samples, initialStep, "
+                         "minMaxTrees, shadowMapSize, coneSamples, coneMode, planeCount, "
+                         "planeBlur)");
+            if (!o.contains("label")) fail(at + ".label is required");
+            BenchRun r;
+            r.family = "configurations";
+            r.label = text(o["label"], at + ".label");
+            for (const BenchRun& earlier : runs)
+                if (earlier.label == r.label)
+                    fail(at + ".label '" + echoText(r.label) + "' names an earlier run too");
+            lightscatter::Profile from = lightscatter::Profile::Balanced;
+            if (o.contains("from")) {
+                const std::string name = text(o["from"], at + ".from");
+                const auto parsed = lightscatter::parseProfile(name);
+                if (!parsed || *parsed == lightscatter::Profile::Custom)
+                    fail(at + ".from: unknown profile '" + echoText(name) + "'");
+                from = *parsed;
+            }
+            r.custom = true;
+            r.settings = lightscatter::profileSettings(from);
+            if (o.contains("method"))
+                useMethod(r, methodList(json::array({o["method"]}), at + ".method").front());
+            using Settings = lightscatter::Settings;
+            auto wholeKey = [&](const char* key, uint32_t Settings::*field, uint32_t lo,
+                                uint32_t hi) {
+                if (o.contains(key)) r.settings.*field = whole(o[key], at + "." + key, lo, hi);
+            };
+            wholeKey("slices", &Settings::slices, 0, std::numeric_limits<uint32_t>::max());
+            wholeKey("samples", &Settings::samplesPerSlice, 0,
+                     std::numeric_limits<uint32_t>::max());
+            wholeKey("initialStep", &Settings::initialSampleStep, 0,
+                     std::numeric_limits<uint32_t>::max());
+            wholeKey("coneSamples", &Settings::coneSamples, 1, 4096);
+            wholeKey("planeCount", &Settings::planeCount, 2, 4096);
+            wholeKey("planeBlur", &Settings::planeBlur, 0, std::numeric_limits<uint32_t>::max());
+            if (o.contains("minMaxTrees")) {
+                if (!o["minMaxTrees"].is_boolean())
+                    fail(at + ".minMaxTrees = " + echo(o["minMaxTrees"]) +
+                         ": must be true or false");
+                r.settings.minMaxTrees = o["minMaxTrees"].get<bool>();
+            }
+            if (o.contains("coneMode")) {
+                const std::string m = text(o["coneMode"], at + ".coneMode");
+                if (m != "cone" && m != "naive" && m != "no-shadow-sampling")
+                    fail(at + ".coneMode = \"" + echoText(m) +
+                         "\": must be cone, naive or no-shadow-sampling");
+                r.settings.coneLimited = m != "naive";
+                r.settings.shadowSampling = m != "no-shadow-sampling";
+            }
+            if (o.contains("shadowMapSize"))
+                r.shadowMapSize = whole(o["shadowMapSize"], at + ".shadowMapSize", 1, 16384);
+            checkSettings(r, at);
+            runs.push_back(r);
+        }
+        return runs;
     }
 
     // Each profile run's map is its profile's; every other run's the largest of the profiles'.

@@ -83,6 +83,12 @@ Spread spreadOf(std::vector<double> v) {
     s.p90 = at(0.9);
     s.min = v.front();
     s.max = v.back();
+    double sum = 0.0;
+    for (double x : v) sum += x;
+    s.mean = sum / static_cast<double>(v.size());
+    double squares = 0.0;
+    for (double x : v) squares += (x - s.mean) * (x - s.mean);
+    s.sd = std::sqrt(squares / static_cast<double>(v.size()));
     return s;
 }
 

@@ -25,6 +25,7 @@ double percentile(std::vector<double> values, double p);
 
 struct Spread {
     double median = 0, p10 = 0, p90 = 0, min = 0, max = 0;
+    double mean = 0, sd = 0;  // sd: the population's (seed 003's tables give mean, SD and max)
 };
 Spread spreadOf(std::vector<double> values);
 

@@ -13,6 +13,7 @@ from . import flicker
 from .common import splice_section, with_kept_sections
 from .froxels import FROXELS_HEADING, froxels_section
 from .froxels_motion import FROXELS_MOTION_HEADING, froxels_motion_section
+from .seeds import SEED000_HEADING, SEED003_HEADING, seed000_section, seed003_section
 from .gpu import GPU_HEADING, gpu_section
 from .lights import LIGHTS_HEADING, lights_section
 from .occluders import OCCLUDERS_HEADING, occluders_section
@@ -49,6 +50,13 @@ SECTIONS = {
                 lambda dirs, page: (froxels_section(dirs[0], dirs[1]), FROXELS_HEADING)),
     "froxels-motion": (("MOTION_DIR",), "a bench run of bench/froxels_flicker.json",
                        lambda dirs, page: (froxels_motion_section(dirs[0]), FROXELS_MOTION_HEADING)),
+    "seed000": (("GTX680_DIR", "QUADRO_DIR", "INTEL_DIR", "DIRECTIONAL_DIR", "TREES_DIR"),
+                "bench runs of bench/seed000_{gtx680,quadro,intel,directional,trees}.json (budget-*.json beside)",
+                lambda dirs, page: (seed000_section(dict(zip(
+                    ("gtx680", "quadro", "intel", "directional", "trees"), dirs))), SEED000_HEADING)),
+    "seed003": (("SMALL_DIR", "LARGE_DIR"), "bench runs of bench/seed003_1280x720.json and _2560x1440.json",
+                lambda dirs, page: (seed003_section({"1280x720": dirs[0], "2560x1440": dirs[1]}),
+                                    SEED003_HEADING)),
 }
 
 # Options under the names they had before: the planes section was "slices" until the word came to

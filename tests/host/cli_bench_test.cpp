@@ -161,6 +161,56 @@ TEST(CliBench, ProfileShadowMapGivesEachProfileItsMap) {
                   "maps_flag.json: profileShadowMap = 1: must be true or false");
 }
 
+// "configurations" are named runs of settings no profile gives, on every scene, checked before
+// anything renders; every row times the host's frame beside the plugin's (seed 003's baseline).
+TEST(CliBench, ConfigurationsRunNamedSettingsOnEveryScene) {
+    writeFile("named.json", R"({"frames": 2, "warmup": 0, "size": "16x9", "measureError": false,
+        "scenes": ["scenes/engine_spot.json"], "methods": ["brute-force"],
+        "configurations": [
+          {"label": "seed low", "slices": 512, "samples": 256, "shadowMapSize": 512},
+          {"label": "no sampling 16", "method": "cone-march", "coneSamples": 16,
+           "coneMode": "no-shadow-sampling"}]})");
+    const auto r = run("bench --config named.json --out named --validation");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    std::ifstream j(cli_test::path("named/bench.json"));
+    const auto parsed = nlohmann::json::parse(j);
+    std::map<std::string, nlohmann::json> rows;
+    for (const auto& row : parsed["runs"]) rows[row["label"].get<std::string>()] = row;
+    ASSERT_EQ(rows.size(), 3u);
+    EXPECT_EQ(rows["seed low"]["family"], "configurations");
+    EXPECT_EQ(rows["seed low"]["method"], "epipolar");
+    EXPECT_EQ(rows["seed low"]["slices"], 512);
+    EXPECT_EQ(rows["seed low"]["samples"], 256);
+    EXPECT_EQ(rows["seed low"]["shadowMapSize"], 512);
+    EXPECT_EQ(rows["no sampling 16"]["method"], "cone-march");
+    EXPECT_EQ(rows["no sampling 16"]["coneSamples"], 16);
+    EXPECT_FALSE(rows["no sampling 16"]["shadowSampling"].get<bool>());
+    for (const auto& [label, row] : rows) {
+        EXPECT_GT(row["engineTime"]["mean"].get<double>(), 0.0) << label;
+        EXPECT_GE(row["engineTime"]["sd"].get<double>(), 0.0) << label;
+        EXPECT_NEAR(row["frameTime"]["mean"].get<double>(),
+                    row["engineTime"]["mean"].get<double>() + row["time"]["mean"].get<double>(),
+                    1e-6 * row["frameTime"]["mean"].get<double>() + 1e-9)
+            << label;
+    }
+    // With configurations the methods' list may be empty: they are the runs.
+    writeFile("only.json", R"({"frames": 1, "warmup": 0, "size": "16x9", "measureError": false,
+        "scenes": ["scenes/engine_spot.json"], "methods": [],
+        "configurations": [{"label": "seed low", "slices": 512, "samples": 256}]})");
+    const auto only = run("bench --config only.json --out only --validation");
+    ASSERT_EQ(only.exitCode, 0) << only.out;
+    std::ifstream oj(cli_test::path("only/bench.json"));
+    EXPECT_EQ(nlohmann::json::parse(oj)["runs"].size(), 1u);
+    writeFile("named_bad.json", R"({"scenes": ["scenes/atrium.json"],
+        "configurations": [{"label": "a", "slices": 3}]})");
+    expectFailure(run("bench --config named_bad.json --out named_bad"),
+                  "named_bad.json: configurations[0] (run 'a'): ");
+    writeFile("named_key.json", R"({"scenes": ["scenes/atrium.json"],
+        "configurations": [{"label": "a", "slice": 3}]})");
+    expectFailure(run("bench --config named_key.json --out named_key"),
+                  "named_key.json: configurations[0]: unknown key 'slice'");
+}
+
 // A scene may name methods of its own (those that take its lights); rows carry the light count.
 TEST(CliBench, AScenesOwnMethodsAndItsLightCount) {
     writeFile("own.json", R"({"frames": 1, "warmup": 0, "size": "16x9", "methods": ["epipolar"],
