@@ -361,14 +361,15 @@ class ConfigReader {
             static const char* const kKeys[] = {"label",       "method",        "from",
                                                 "slices",      "samples",       "initialStep",
                                                 "minMaxTrees", "shadowMapSize", "coneSamples",
-                                                "coneMode",    "planeCount",    "planeBlur"};
+                                                "coneMode",    "planeCount",    "planeBlur",
+                                                "planeTarget"};
             for (const auto& [key, value] : o.items())
                 if (std::find_if(std::begin(kKeys), std::end(kKeys),
                                  [&](const char* k) { return key == k; }) == std::end(kKeys))
                     fail(at + ": unknown key '" + echoText(key) +
                          "' (known: label, method, from, slices, samples, initialStep, "
                          "minMaxTrees, shadowMapSize, coneSamples, coneMode, planeCount, "
-                         "planeBlur)");
+                         "planeBlur, planeTarget)");
             if (!o.contains("label")) fail(at + ".label is required");
             BenchRun r;
             r.family = "configurations";
@@ -414,6 +415,16 @@ class ConfigReader {
                          "\": must be cone, naive or no-shadow-sampling");
                 r.settings.coneLimited = m != "naive";
                 r.settings.shadowSampling = m != "no-shadow-sampling";
+            }
+            if (o.contains("planeTarget")) {
+                const std::string t = text(o["planeTarget"], at + ".planeTarget");
+                if (t != "float16" && t != "float32" && t != "rgba8" && t != "rgba8-dither")
+                    fail(at + ".planeTarget = \"" + echoText(t) +
+                         "\": must be float16, float32, rgba8 (the seed's rounding) or rgba8-dither");
+                r.settings.planeTarget = t == "float16"   ? lightscatter::PlaneTarget::Float16
+                                         : t == "float32" ? lightscatter::PlaneTarget::Float32
+                                                          : lightscatter::PlaneTarget::Rgba8Channels;
+                r.settings.planeDither = t == "rgba8-dither";
             }
             if (o.contains("shadowMapSize"))
                 r.shadowMapSize = whole(o["shadowMapSize"], at + ".shadowMapSize", 1, 16384);

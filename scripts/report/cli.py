@@ -13,7 +13,7 @@ from . import flicker
 from .common import splice_section, with_kept_sections
 from .froxels import FROXELS_HEADING, froxels_section
 from .froxels_motion import FROXELS_MOTION_HEADING, froxels_motion_section
-from .seeds import SEED000_HEADING, SEED003_HEADING, seed000_section, seed003_section
+from .seeds import SEED000_HEADING, SEED002_HEADING, SEED003_HEADING, seed000_section, seed002_section, seed003_section
 from .gpu import GPU_HEADING, gpu_section
 from .lights import LIGHTS_HEADING, lights_section
 from .occluders import OCCLUDERS_HEADING, occluders_section
@@ -54,6 +54,9 @@ SECTIONS = {
                 "bench runs of bench/seed000_{gtx680,quadro,intel,directional,trees}.json (budget-*.json beside)",
                 lambda dirs, page: (seed000_section(dict(zip(
                     ("gtx680", "quadro", "intel", "directional", "trees"), dirs))), SEED000_HEADING)),
+    "seed002": (("SEED002_DIR",), "a bench run of bench/seed002.json (its strips are copied beside the page)",
+                lambda dirs, page: (seed002_section(dirs[0], page.parent / "performance" if page else None),
+                                    SEED002_HEADING)),
     "seed003": (("SMALL_DIR", "LARGE_DIR"), "bench runs of bench/seed003_1280x720.json and _2560x1440.json",
                 lambda dirs, page: (seed003_section({"1280x720": dirs[0], "2560x1440": dirs[1]}),
                                     SEED003_HEADING)),
