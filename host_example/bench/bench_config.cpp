@@ -358,11 +358,10 @@ class ConfigReader {
             const json& o = items[i];
             const std::string at = "configurations[" + std::to_string(i) + "]";
             if (!o.is_object()) fail(at + " must be an object");
-            static const char* const kKeys[] = {"label",       "method",        "from",
-                                                "slices",      "samples",       "initialStep",
-                                                "minMaxTrees", "shadowMapSize", "coneSamples",
-                                                "coneMode",    "planeCount",    "planeBlur",
-                                                "planeTarget"};
+            static const char* const kKeys[] = {
+                "label",       "method",      "from",          "slices",      "samples",
+                "initialStep", "minMaxTrees", "shadowMapSize", "coneSamples", "coneMode",
+                "planeCount",  "planeBlur",   "planeTarget"};
             for (const auto& [key, value] : o.items())
                 if (std::find_if(std::begin(kKeys), std::end(kKeys),
                                  [&](const char* k) { return key == k; }) == std::end(kKeys))
@@ -420,10 +419,12 @@ class ConfigReader {
                 const std::string t = text(o["planeTarget"], at + ".planeTarget");
                 if (t != "float16" && t != "float32" && t != "rgba8" && t != "rgba8-dither")
                     fail(at + ".planeTarget = \"" + echoText(t) +
-                         "\": must be float16, float32, rgba8 (the seed's rounding) or rgba8-dither");
-                r.settings.planeTarget = t == "float16"   ? lightscatter::PlaneTarget::Float16
-                                         : t == "float32" ? lightscatter::PlaneTarget::Float32
-                                                          : lightscatter::PlaneTarget::Rgba8Channels;
+                         "\": must be float16, float32, rgba8 (the seed's rounding) or "
+                         "rgba8-dither");
+                r.settings.planeTarget = t == "float16" ? lightscatter::PlaneTarget::Float16
+                                         : t == "float32"
+                                             ? lightscatter::PlaneTarget::Float32
+                                             : lightscatter::PlaneTarget::Rgba8Channels;
                 r.settings.planeDither = t == "rgba8-dither";
             }
             if (o.contains("shadowMapSize"))
