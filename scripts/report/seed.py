@@ -10,10 +10,14 @@ def seed_section(runs, scenes, budget, seed_dir):
     seed_rows, seed_first = rs.seed_size_rows(seed_dir) if seed_dir else ({}, None)
     if seed_rows:
         sw, sh_ = seed_first["size"]
+        maps = sorted({r.get("shadowMapSize") for r in rs.load_runs(seed_dir)} - {None})
         p(f"The seed's figures are a GeForce GTX 680 at 2560x1600 with a spot light. Ours: `bench/seed_size.json`, "
           f"the same profiles and brute force at {sw}x{sh_} on the device above ({seed_first['frames']} frames after "
           "warm-up each, timings only), so the ratios can be set side by side; the milliseconds cannot (a CPU "
-          "device runs the per-pixel passes far slower, relative to the rest, than a GPU).\n")
+          "device runs the per-pixel passes far slower, relative to the rest, than a GPU). Every run here keeps "
+          f"its scene's shadow map ({', '.join(f'{m}^2' for m in maps)}), brute force's included, where the seed "
+          "gave each profile its own (4096^2, 2048^2, 1024^2) and ran brute force at 4096^2: "
+          "[Seed 000's results beside ours](#seed-000s-results-beside-ours) runs the seed's maps.\n")
         p(f"| profile | seed ms | seed speed-up over brute force | ours at {sw}x{sh_}: speed-up over brute force, "
           "per scene | seed memory MB | ours: peak MiB at 2560x1600 (aliased) | ours: total MiB |")
     else:
