@@ -33,7 +33,7 @@
 #                                          # build/bench-froxels/references keeps), the budgets, its
 #                                          # plot, and "Against froxel fog" spliced into the page (its
 #                                          # N-lights table from --lights-only's run)
-#   scripts/make-report.sh --seeds-only    # bench/seed000_*.json, seed002.json, seed003_*.json: each of the seeds'
+#   scripts/make-report.sh --seeds-only    # bench/seed000_*.json, seed002.json, seed003_*.json, seed004.json: each seed's
 #                                          # tables at the seed's size, settings and shadow maps, with the
 #                                          # seed's figures and a verdict per row ("Seed 000's results beside
 #                                          # ours", "Seed 003's ..."); timings only: a quiet machine
@@ -140,6 +140,8 @@ ROWS
   done
   mkdir -p build/bench-seed002
   ./build/host_example/lightscatter bench --config bench/seed002.json --out build/bench-seed002
+  mkdir -p build/bench-seed004
+  ./build/host_example/lightscatter bench --config bench/seed004.json --out build/bench-seed004
   for size in 1280x720 2560x1440; do
     mkdir -p "build/bench-seed003-$size"
     ./build/host_example/lightscatter bench --config "bench/seed003_$size.json" --out "build/bench-seed003-$size"
@@ -152,9 +154,10 @@ if [[ "$config" == --seeds-only ]]; then
   /usr/bin/python3 scripts/write_report.py --seed000-section build/bench-seed000-gtx680 build/bench-seed000-quadro \
     build/bench-seed000-intel build/bench-seed000-directional build/bench-seed000-trees docs/performance.md
   /usr/bin/python3 scripts/write_report.py --seed002-section build/bench-seed002 docs/performance.md
+  /usr/bin/python3 scripts/write_report.py --seed004-section build/bench-seed004 docs/performance.md
   /usr/bin/python3 scripts/write_report.py --seed003-section build/bench-seed003-1280x720 \
     build/bench-seed003-2560x1440 docs/performance.md
-  echo "docs/performance.md: sections 'Seed 000/002/003's results beside ours' replaced"
+  echo "docs/performance.md: sections 'Seed 000/002/003/004's results beside ours' replaced"
   exit 0
 fi
 if [[ "$config" == --froxels-motion-only ]]; then

@@ -183,8 +183,9 @@ class ConfigReader {
             expand(c, c.scenes[k], sceneMethods[k], profiles, sweepProfile, sweeps);
             for (BenchRun r : configured) {
                 r.scene = c.scenes[k];
-                r.size = c.size;
-                r.measureError = c.measureError;
+                if (r.size.width == 0) r.size = c.size;
+                r.measureError = c.measureError && r.size.width == c.size.width &&
+                                 r.size.height == c.size.height;
                 add(c, r);
             }
         }
@@ -359,16 +360,16 @@ class ConfigReader {
             const std::string at = "configurations[" + std::to_string(i) + "]";
             if (!o.is_object()) fail(at + " must be an object");
             static const char* const kKeys[] = {
-                "label",       "method",      "from",          "slices",      "samples",
-                "initialStep", "minMaxTrees", "shadowMapSize", "coneSamples", "coneMode",
-                "planeCount",  "planeBlur",   "planeTarget"};
+                "label",       "method",      "from",          "slices",       "samples",
+                "initialStep", "minMaxTrees", "shadowMapSize", "coneSamples",  "coneMode",
+                "planeCount",  "planeBlur",   "planeTarget",   "planeSpacing", "sizes"};
             for (const auto& [key, value] : o.items())
                 if (std::find_if(std::begin(kKeys), std::end(kKeys),
                                  [&](const char* k) { return key == k; }) == std::end(kKeys))
                     fail(at + ": unknown key '" + echoText(key) +
                          "' (known: label, method, from, slices, samples, initialStep, "
                          "minMaxTrees, shadowMapSize, coneSamples, coneMode, planeCount, "
-                         "planeBlur, planeTarget)");
+                         "planeBlur, planeTarget, planeSpacing, sizes)");
             if (!o.contains("label")) fail(at + ".label is required");
             BenchRun r;
             r.family = "configurations";
@@ -415,6 +416,11 @@ class ConfigReader {
                 r.settings.coneLimited = m != "naive";
                 r.settings.shadowSampling = m != "no-shadow-sampling";
             }
+            if (o.contains("planeSpacing")) {
+                if (!o["planeSpacing"].is_number())
+                    fail(at + ".planeSpacing = " + echo(o["planeSpacing"]) + ": must be a number");
+                r.settings.planeSpacing = o["planeSpacing"].get<float>();
+            }
             if (o.contains("planeTarget")) {
                 const std::string t = text(o["planeTarget"], at + ".planeTarget");
                 if (t != "float16" && t != "float32" && t != "rgba8" && t != "rgba8-dither")
@@ -430,7 +436,20 @@ class ConfigReader {
             if (o.contains("shadowMapSize"))
                 r.shadowMapSize = whole(o["shadowMapSize"], at + ".shadowMapSize", 1, 16384);
             checkSettings(r, at);
-            runs.push_back(r);
+            if (!o.contains("sizes")) {
+                runs.push_back(r);
+                continue;
+            }
+            // One run per screen size (seed 004 measures each setup at four), labelled with it;
+            // errors only at the configuration's size, as a size sweep's.
+            const json sizes = list(o["sizes"], at + ".sizes");
+            if (sizes.empty()) fail(at + ".sizes is empty: leave the key out, or list a size");
+            for (const json& given : sizes) {
+                BenchRun sized = r;
+                sized.size = size(given, at + ".sizes[]");
+                sized.label = r.label + " " + given.get<std::string>();
+                runs.push_back(sized);
+            }
         }
         return runs;
     }

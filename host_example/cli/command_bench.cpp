@@ -342,6 +342,8 @@ int runBench(Args& args) {
             row["family"] = run.family;
             row["method"] = lightscatter::methodName(run.method);
             row["methodRan"] = last.plugin.method;  // with auto, the method it picked
+            // Which nodes ran and why, and what the last frame placed (its sampling planes).
+            row["reason"] = last.plugin.reason;
             row["coneSamples"] = used.coneSamples;
             row["coneLimited"] = used.coneLimited;
             row["shadowSampling"] = used.shadowSampling;

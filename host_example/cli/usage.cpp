@@ -22,7 +22,7 @@ const char* kSettings =
     "                        shadowFilter, fixup, fixupMaxSteps,\n"
     "                        shadowDepthBias, interpolation, shadowMapSize; cone-march's\n"
     "                        coneSamples, coneLimited, coneJitter, shadowSampling; planes'\n"
-    "                        planeCount, planeTarget (float16, float32, rgba8),\n"
+    "                        planeCount, planeSpacing, planeTarget (float16, float32, rgba8),\n"
     "                        planeScaling, planeRange, planeDither, planeBlur, planeAmbient\n"
     "                        (read under their former names too: slicePlanes, sliceTarget,\n"
     "                        slicePlaneScaling, sliceRange, sliceDither, sliceBlur,\n"

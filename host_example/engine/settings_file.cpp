@@ -36,6 +36,7 @@ constexpr const char* kFields[] = {"slices",
                                    "coneJitter",
                                    "shadowSampling",
                                    "planeCount",
+                                   "planeSpacing",
                                    "planeTarget",
                                    "planeScaling",
                                    "planeRange",
@@ -129,6 +130,8 @@ class SettingsReader {
                 s.shadowSampling = boolean(v, key);
             else if (field == "planeCount")
                 s.planeCount = whole(v, key);
+            else if (field == "planeSpacing")
+                s.planeSpacing = number(v, key);
             else if (field == "planeTarget")
                 s.planeTarget = oneOf<lightscatter::PlaneTarget>(
                     v, key,

@@ -51,6 +51,12 @@ std::string BeamTreeMethod::notice(const LightSetup& s) const {
                                                : "it never looks the shadow map up");
 }
 
+std::string BeamTreeMethod::frameNote(const LightFrame& frame, const ChainConfig&) const {
+    if (!frame.data) return {};
+    const PlanePush& p = static_cast<const BeamTreeData*>(frame.data)->frame.planePush;
+    return planesNote(static_cast<uint32_t>(p.boxMax.z), p.boxMin.w);
+}
+
 std::unique_ptr<LightData> BeamTreeMethod::makeData() const {
     return std::make_unique<BeamTreeData>();
 }
@@ -58,7 +64,9 @@ std::unique_ptr<LightData> BeamTreeMethod::makeData() const {
 std::vector<CpuWork> BeamTreeMethod::prepare(LightData* data, LightFrame&,
                                              const LightSetup& s) const {
     PlaneSettings planes;
-    planes.planes = s.planes.planes;  // only the count: the other settings are the planes method's
+    // Only the count or spacing: the other settings are the planes method's.
+    planes.planes = s.planes.planes;
+    planes.spacing = s.planes.spacing;
     BeamTreeFrame& frame = static_cast<BeamTreeData*>(data)->frame;
     frame = buildBeamTreeFrame(s.camera, s.light, s.medium, s.beamOccluders, planes, litSpace());
     return {{"beam tree (CPU, seed 004)", frame.buildMilliseconds}};

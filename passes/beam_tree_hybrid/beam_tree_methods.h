@@ -24,6 +24,8 @@ class BeamTreeMethod : public MethodUnit {
                                  const LightSetup& light) const override;
     ChainOptions options(const LightSetup& light, const LightData* data,
                          const ChainOptions* previous) const override;
+    // The sampling planes this frame placed (with Settings::planeSpacing their count varies).
+    std::string frameNote(const LightFrame& frame, const ChainConfig& config) const override;
 
   protected:
     virtual LitSpace litSpace() const = 0;

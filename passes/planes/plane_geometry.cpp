@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 namespace ls {
@@ -116,6 +117,13 @@ float estimatedPlaneRange(const CameraParams& camera, const LightParams& light,
     return std::max(1.25f * peak, 1e-30f);
 }
 
+std::string planesNote(uint32_t planes, float spacing) {
+    if (planes == 0) return "no sampling plane (the light's volume is out of view)";
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%u sampling planes %.3g m apart", planes, spacing);
+    return buf;
+}
+
 PlanePlacement placePlanes(const CameraParams& camera, const LightParams& light,
                            const MediumParams& medium, const PlaneSettings& settings, double time) {
     PlanePlacement out;
@@ -153,7 +161,12 @@ PlanePlacement placePlanes(const CameraParams& camera, const LightParams& light,
     if (!(boxFront < boxBack) || lo.x >= hi.x || lo.y >= hi.y) return out;
 
     uint32_t planes = settings.planes;
-    if (settings.planeScaling) {
+    if (settings.spacing > 0.0f) {
+        // Seed 004's dz: as many planes as the depth extent needs at that spacing (in double: an
+        // extent of kilometres over a spacing of micrometres is no float).
+        const double n = std::ceil(double(boxBack - boxFront) / double(settings.spacing));
+        planes = static_cast<uint32_t>(std::clamp(n, 2.0, 4096.0));
+    } else if (settings.planeScaling) {
         // Seed 002 draws fewer planes as the viewer moves away from the light's volume: its depth
         // extent over its distance, down to an eighth.
         const float fraction =

@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <string>
 
 #include "shared/scattering_params.h"
 
@@ -38,6 +39,9 @@ struct PlanePlacement {
 
 PlanePlacement placePlanes(const CameraParams& camera, const LightParams& light,
                            const MediumParams& medium, const PlaneSettings& settings, double time);
+
+// The frame report's note on a placement: "N sampling planes S m apart".
+std::string planesNote(uint32_t planes, float spacing);
 
 // The Lin luminance the four 8-bit channels hold at full scale when the engine gives none: 1.25
 // times the largest luminance of the unshadowed Lin between view depths `front` and `back` (the

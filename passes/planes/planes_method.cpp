@@ -56,6 +56,12 @@ ChainOutputs PlanesMethod::addChain(rg::RenderGraph& g, const ChainInputs& in, c
     return out;
 }
 
+std::string PlanesMethod::frameNote(const LightFrame& frame, const ChainConfig&) const {
+    if (!frame.data) return {};
+    const PlanePlacement& p = placementOf(frame);
+    return planesNote(p.planes, p.push.boxMin.w);
+}
+
 std::string PlanesMethod::summary(const ChainConfig& c) const {
     const Options& o = *c.options.get<Options>();
     return std::string("seed 002's view-aligned planes") +

@@ -31,6 +31,8 @@ class PlanesMethod final : public MethodUnit {
     ChainOutputs addChain(rg::RenderGraph& graph, const ChainInputs& in, const ChainConfig& config,
                           const CompositeTarget& target) const override;
     std::string summary(const ChainConfig& config) const override;
+    // The planes this frame placed (with Settings::planeSpacing their count varies).
+    std::string frameNote(const LightFrame& frame, const ChainConfig& config) const override;
 };
 
 }  // namespace ls

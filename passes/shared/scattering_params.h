@@ -77,6 +77,7 @@ struct EpipolarSettings {
 struct PlaneSettings {
     bool operator==(const PlaneSettings&) const = default;
     uint32_t planes = 128;
+    float spacing = 0.0f;         // seed 004's dz (metres, at most): the count follows; 0: planes
     bool planeScaling = false;    // seed 002: fewer planes as the light's volume recedes
     bool eightBitTarget = false;  // the range below only matters to the 8-bit channel target
     float range = 0.0f;           // 8-bit target: Lin luminance at full scale; 0: estimated

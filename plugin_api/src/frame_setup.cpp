@@ -601,6 +601,9 @@ void checkSettings(const Settings& s, const std::string& at) {
                 "or 0: the medium's maxDistance");
     if (s.planeCount < 2 || s.planeCount > 4096)
         fail(c + "planeCount = " + std::to_string(s.planeCount) + ": must be between 2 and 4096");
+    if (s.planeSpacing != 0.0f)
+        inRange(s.planeSpacing, c + "planeSpacing", 1e-6, limits::kMaxLength,
+                "metres between sampling planes, or 0: planeCount planes");
     if (s.planeTarget != PlaneTarget::Float16 && s.planeTarget != PlaneTarget::Float32 &&
         s.planeTarget != PlaneTarget::Rgba8Channels)
         fail(c + "planeTarget is not a PlaneTarget value");
@@ -873,6 +876,7 @@ void applySettings(ls::LightSetup& s, const Settings& st, uint32_t shadowMapSize
     s.epipolar.shadowDepthBias = st.shadowDepthBias;
     s.epipolar.interpolateFraction = st.interpolation == Interpolation::ShadowedFraction;
     s.planes.planes = st.planeCount;
+    s.planes.spacing = st.planeSpacing;
     s.planes.planeScaling = st.planeScaling;
     s.planes.eightBitTarget = st.planeTarget == PlaneTarget::Rgba8Channels;
     s.planes.range = st.planeRange;

@@ -13,7 +13,8 @@ from . import flicker
 from .common import splice_section, with_kept_sections
 from .froxels import FROXELS_HEADING, froxels_section
 from .froxels_motion import FROXELS_MOTION_HEADING, froxels_motion_section
-from .seeds import SEED000_HEADING, SEED002_HEADING, SEED003_HEADING, seed000_section, seed002_section, seed003_section
+from .seeds import (SEED000_HEADING, SEED002_HEADING, SEED003_HEADING, SEED004_HEADING, seed000_section,
+                    seed002_section, seed003_section, seed004_section)
 from .gpu import GPU_HEADING, gpu_section
 from .lights import LIGHTS_HEADING, lights_section
 from .occluders import OCCLUDERS_HEADING, occluders_section
@@ -57,6 +58,8 @@ SECTIONS = {
     "seed002": (("SEED002_DIR",), "a bench run of bench/seed002.json (its strips are copied beside the page)",
                 lambda dirs, page: (seed002_section(dirs[0], page.parent / "performance" if page else None),
                                     SEED002_HEADING)),
+    "seed004": (("SEED004_DIR",), "a bench run of bench/seed004.json",
+                lambda dirs, page: (seed004_section(dirs[0]), SEED004_HEADING)),
     "seed003": (("SMALL_DIR", "LARGE_DIR"), "bench runs of bench/seed003_1280x720.json and _2560x1440.json",
                 lambda dirs, page: (seed003_section({"1280x720": dirs[0], "2560x1440": dirs[1]}),
                                     SEED003_HEADING)),

@@ -3,6 +3,7 @@
 // stripes where brute force puts them, the noise's paths, and its refusals.
 #include <cmath>
 #include <cstdio>
+#include <tuple>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include "model_conversion.h"
@@ -232,10 +233,10 @@ TEST_F(PlanesGpu, DirectionalLightAndBlurStayCloseToBruteForce) {
     }
 }
 
-// Where the planes go (no GPU): a camera inside the spot's volume starts them at its near plane,
-// and the seed's scaling of the count leaves a near volume all its planes and a far one fewer,
-// never under an eighth.
-TEST(PlanePlacement, FillsTheViewFromInsideAndScalesTheCountWithDistance) {
+namespace {
+
+// A camera at y = 1 looking down -z, and a spot 1 m behind it shining the same way, reaching 20 m.
+std::tuple<ls::CameraParams, ls::LightParams, ls::MediumParams> placementScene() {
     ls::CameraParams camera;
     camera.view = glm::lookAt(glm::vec3(0, 1, 0), glm::vec3(0, 1, -1), glm::vec3(0, 1, 0));
     camera.projection = glm::perspective(glm::radians(60.0f), 1.5f, 0.1f, 500.0f);
@@ -249,6 +250,16 @@ TEST(PlanePlacement, FillsTheViewFromInsideAndScalesTheCountWithDistance) {
     spot.range = 20.0f;
     ls::MediumParams medium;
     medium.betaM = glm::vec3(0.02f);
+    return {camera, spot, medium};
+}
+
+}  // namespace
+
+// Where the planes go (no GPU): a camera inside the spot's volume starts them at its near plane,
+// and the seed's scaling of the count leaves a near volume all its planes and a far one fewer,
+// never under an eighth.
+TEST(PlanePlacement, FillsTheViewFromInsideAndScalesTheCountWithDistance) {
+    auto [camera, spot, medium] = placementScene();
     ls::PlaneSettings settings;
     settings.planes = 128;
     settings.planeScaling = true;
@@ -266,4 +277,21 @@ TEST(PlanePlacement, FillsTheViewFromInsideAndScalesTheCountWithDistance) {
     spot.direction = {0, 0, 1};  // pointing away, the volume all behind the camera
     spot.position = {0, 1, 2};
     EXPECT_EQ(ls::placePlanes(camera, spot, medium, settings, 0.0).planes, 0u);
+}
+
+// Seed 004's dz: planes at most `spacing` apart along the view axis over the light's depth extent
+// (here 18.9 m, the near plane to the range), however many that takes, within 2 to 4096.
+TEST(PlanePlacement, ASpacingSetsTheCountFromTheDepthExtent) {
+    auto [camera, spot, medium] = placementScene();
+    ls::PlaneSettings settings;
+    settings.planes = 128;
+    for (const auto& [dz, planes] : {std::pair{0.5f, 38u}, {0.1f, 189u}, {100.0f, 2u}}) {
+        settings.spacing = dz;
+        const ls::PlanePlacement p = ls::placePlanes(camera, spot, medium, settings, 0.0);
+        EXPECT_EQ(p.planes, planes) << "dz " << dz;
+        EXPECT_LE(p.push.boxMin.w, dz) << "dz " << dz;
+        EXPECT_NEAR(p.push.boxMin.w * float(p.planes), 18.9f, 0.01f) << "dz " << dz;
+    }
+    settings.spacing = 1e-6f;  // 19 million planes' worth: held at 4096
+    EXPECT_EQ(ls::placePlanes(camera, spot, medium, settings, 0.0).planes, 4096u);
 }

@@ -230,6 +230,11 @@ struct Settings {
     // planes (seed 002). The plane count and target follow the profile (docs/methods.md); the rest
     // is taken from `custom` with every profile.
     uint32_t planeCount = 128;  // view-aligned planes across the light's volume, 2 to 4096
+    // Seed 004's dz: the planes set at most this many metres apart along the view axis instead of
+    // planeCount of them (their count then follows the light's depth extent each frame, 2 to 4096,
+    // the spacing shrinking where 4096 do not reach); 0: planeCount. Planes and the beam trees'
+    // sampling planes. With every profile, from `custom`.
+    float planeSpacing = 0.0f;
     PlaneTarget planeTarget = PlaneTarget::Float16;
     // The seed's scaling of the count: fewer planes, down to an eighth, as the light's volume
     // shrinks on screen (its depth extent over its distance from the camera).
