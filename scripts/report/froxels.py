@@ -83,6 +83,7 @@ def froxels_section(bench_dir, scaling_dir=None):
                          f"{fmt(fe / be) if fe is not None else '-'}x error")
         p(f"| {scene} | " + " | ".join(cells) + " |")
     p("")
+    table = None
     if scaling_dir and (Path(scaling_dir) / "bench.json").exists():
         table = pl.light_rows(pl.load(scaling_dir))
         p("The cost of N shadowed spots (the atrium's `scenes/atrium_spots_N`, bench/lights_scaling.json, the "
@@ -94,4 +95,61 @@ def froxels_section(bench_dir, scaling_dir=None):
             row = [next((x for x in table[m] if x[0] == n), None) for m in methods]
             p(f"| {n} | " + " | ".join(fmt(x[1]) if x else "-" for x in row) + " |")
         p("")
+    out += where_each_wins(runs, base, table)
+    return out
+
+
+def where_each_wins(runs, base, lights_table=None):
+    """The plain statement the section ends with: where each family won on this device and by how
+    much, from the rows themselves (each froxel configuration against `base` on the same scenes,
+    and each light's cost from the N-lights table), with the reason the method's design gives."""
+    by = {(r["scene"], r["label"]): r for r in runs}
+    scenes = sorted({r["scene"] for r in runs})
+    labels = sorted({r["label"] for r in runs if family(r["label"]) == "froxels"})
+
+    def err(r):
+        return (r or {}).get("error", {}).get("meanRelative")
+
+    out = ["Where each wins, on this device:\n"]
+    for label in labels:
+        pairs = []
+        for scene in scenes:
+            b, f = by.get((scene, base)), by.get((scene, label))
+            if b and f and b["time"]["median"] and err(b) and err(f) is not None:
+                pairs.append((scene, f["time"]["median"] / b["time"]["median"], err(f) / err(b)))
+        if not pairs:
+            continue
+        faster = [x for x in pairs if x[1] < 1]
+        worse = [x for x in pairs if x[2] > 1]
+        t = sorted(x[1] for x in pairs)
+        e = sorted(x[2] for x in pairs)
+        worst = max(pairs, key=lambda x: x[2])
+        out.append(f"- `{label}` took {fmt(t[0])}x to {fmt(t[-1])}x the time of `{base}` (faster on "
+                   f"{len(faster)} of {len(pairs)} scenes) at {fmt(e[0])}x to {fmt(e[-1])}x its mean error "
+                   f"(worse on {len(worse)} of {len(pairs)}; most on {worst[0]}, {fmt(worst[2])}x).")
+    brute_pairs = []
+    for scene in scenes:
+        b, r = by.get((scene, base)), by.get((scene, "brute-force"))
+        if b and r and err(b) and err(r):
+            brute_pairs.append(err(b) / err(r))
+    if brute_pairs:
+        out.append(f"- `{base}` stayed within {fmt(max(brute_pairs))}x of brute force's mean error on every "
+                   f"scene: its error is the shadow map's and the reference's, not its sampling's.")
+    if lights_table:
+        per = []
+        for m, rows in sorted(lights_table.items()):
+            if len(rows) > 1 and rows[-1][0] > rows[0][0]:
+                per.append(f"`{m}` {fmt((rows[-1][1] - rows[0][1]) / (rows[-1][0] - rows[0][0]))} ms")
+        if per:
+            out.append("- Each shadowed spot beyond the first added " + ", ".join(per) + ": a light costs the "
+                       "grid one injection pass, not a full-screen chain of its own.")
+    out.append("")
+    out.append("Why: the grid samples each light once per froxel, at its centre, and spreads that over the "
+               "froxel, so a shaft narrower than a column (a grille, bars, struts) is blurred or lost and a "
+               "light's glow is sampled wherever a centre happens to fall; epipolar sampling and brute force "
+               "march each pixel's own ray through the shadow map. What the grid costs grows with its froxels "
+               "and its lights' injections, not with the screen's rays, which is where it wins; and it gives "
+               "the volume itself (docs/methods.md, \"The exported volume\"), which fogs forward transparents "
+               "and particles as no screen-space method can. `auto` never picks it, as it keeps to methods "
+               "that hold the reference's accuracy (docs/methods.md, \"auto\").\n")
     return out
