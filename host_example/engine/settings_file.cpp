@@ -10,6 +10,7 @@
 
 #include "scene/input_file.h"
 #include "scene/json_input.h"
+#include "settings_fields.h"
 
 namespace host {
 namespace {
@@ -17,43 +18,6 @@ namespace {
 using nlohmann::json;
 
 constexpr uint64_t kSettingsFileCap = 1 * kMiB;
-
-constexpr const char* kFields[] = {"slices",
-                                   "samplesPerSlice",
-                                   "initialSampleStep",
-                                   "refinementThreshold",
-                                   "inscatterRefinementThreshold",
-                                   "bilateralThreshold",
-                                   "minMaxTrees",
-                                   "shadowFilter",
-                                   "fixup",
-                                   "fixupMaxSteps",
-                                   "shadowDepthBias",
-                                   "interpolation",
-                                   "shadowMapSize",
-                                   "coneSamples",
-                                   "coneLimited",
-                                   "coneJitter",
-                                   "shadowSampling",
-                                   "planeCount",
-                                   "planeSpacing",
-                                   "planeTarget",
-                                   "planeScaling",
-                                   "planeRange",
-                                   "planeDither",
-                                   "planeBlur",
-                                   "planeAmbient",
-                                   "noiseAmplitude",
-                                   "noiseScale",
-                                   "noiseVelocity",
-                                   "lightModel",
-                                   "simplifiedA0",
-                                   "simplifiedA1",
-                                   "froxelTile",
-                                   "froxelSlices",
-                                   "froxelFarDistance",
-                                   "froxelTemporal",
-                                   "froxelHistoryWeight"};
 
 // The planes method's fields were named after "slice" until the word came to mean only an
 // epipolar line; files written with those names still read.
@@ -72,7 +36,8 @@ std::string currentName(const std::string& key) {
 
 std::string knownFields() {
     std::string s;
-    for (const char* f : kFields) s += (s.empty() ? "" : ", ") + std::string(f);
+    for (const SettingField& f : settingFields())
+        s += (s.empty() ? "" : ", ") + std::string(f.name);
     return s;
 }
 
@@ -90,101 +55,29 @@ class SettingsReader {
                 fail(key + " and " + field + " are one field (" + key +
                      " is its former name): give it once");
             const json& v = item.value();
-            if (field == "slices")
-                s.slices = whole(v, key);
-            else if (field == "samplesPerSlice")
-                s.samplesPerSlice = whole(v, key);
-            else if (field == "initialSampleStep")
-                s.initialSampleStep = whole(v, key);
-            else if (field == "refinementThreshold")
-                s.refinementThreshold = number(v, key);
-            else if (field == "inscatterRefinementThreshold")
-                s.inscatterRefinementThreshold = number(v, key);
-            else if (field == "bilateralThreshold")
-                s.bilateralThreshold = number(v, key);
-            else if (field == "minMaxTrees")
-                s.minMaxTrees = boolean(v, key);
-            else if (field == "shadowFilter")
-                s.shadowFilter = oneOf<lightscatter::ShadowFilter>(
-                    v, key,
-                    {{"bilinear", lightscatter::ShadowFilter::Bilinear},
-                     {"nearest", lightscatter::ShadowFilter::Nearest}});
-            else if (field == "fixup")
-                s.fixup = boolean(v, key);
-            else if (field == "fixupMaxSteps")
-                s.fixupMaxSteps = whole(v, key);
-            else if (field == "shadowDepthBias")
-                s.shadowDepthBias = number(v, key);
-            else if (field == "interpolation")
-                s.interpolation = oneOf<lightscatter::Interpolation>(
-                    v, key,
-                    {{"shadowed-fraction", lightscatter::Interpolation::ShadowedFraction},
-                     {"inscattering", lightscatter::Interpolation::Inscattering}});
-            else if (field == "coneSamples")
-                s.coneSamples = whole(v, key);
-            else if (field == "coneLimited")
-                s.coneLimited = boolean(v, key);
-            else if (field == "coneJitter")
-                s.coneJitter = boolean(v, key);
-            else if (field == "shadowSampling")
-                s.shadowSampling = boolean(v, key);
-            else if (field == "planeCount")
-                s.planeCount = whole(v, key);
-            else if (field == "planeSpacing")
-                s.planeSpacing = number(v, key);
-            else if (field == "planeTarget")
-                s.planeTarget = oneOf<lightscatter::PlaneTarget>(
-                    v, key,
-                    {{planeTargetName(lightscatter::PlaneTarget::Float16),
-                      lightscatter::PlaneTarget::Float16},
-                     {planeTargetName(lightscatter::PlaneTarget::Float32),
-                      lightscatter::PlaneTarget::Float32},
-                     {planeTargetName(lightscatter::PlaneTarget::Rgba8Channels),
-                      lightscatter::PlaneTarget::Rgba8Channels}});
-            else if (field == "planeScaling")
-                s.planeScaling = boolean(v, key);
-            else if (field == "planeRange")
-                s.planeRange = number(v, key);
-            else if (field == "planeDither")
-                s.planeDither = boolean(v, key);
-            else if (field == "planeBlur")
-                s.planeBlur = whole(v, key);
-            else if (field == "planeAmbient")
-                s.planeAmbient = number(v, key);
-            else if (field == "noiseAmplitude")
-                s.noiseAmplitude = number(v, key);
-            else if (field == "noiseScale")
-                s.noiseScale = number(v, key);
-            else if (field == "noiseVelocity")
-                s.noiseVelocity = numbers<4>(v, key);
-            else if (field == "lightModel")
-                s.lightModel = oneOf<lightscatter::LightModel>(
-                    v, key,
-                    {{lightModelName(lightscatter::LightModel::Full),
-                      lightscatter::LightModel::Full},
-                     {lightModelName(lightscatter::LightModel::Simplified),
-                      lightscatter::LightModel::Simplified}});
-            else if (field == "simplifiedA0")
-                s.simplifiedA0 = number(v, key);
-            else if (field == "simplifiedA1")
-                s.simplifiedA1 = number(v, key);
-            else if (field == "froxelTile")
-                s.froxelTile = whole(v, key);
-            else if (field == "froxelSlices")
-                s.froxelSlices = whole(v, key);
-            else if (field == "froxelFarDistance")
-                s.froxelFarDistance = number(v, key);
-            else if (field == "froxelTemporal")
-                s.froxelTemporal = boolean(v, key);
-            else if (field == "froxelHistoryWeight")
-                s.froxelHistoryWeight = number(v, key);
-            else if (field == "shadowMapSize") {
-                s.shadowMapSize = whole(v, key);
-                if (s.shadowMapSize < 1 || s.shadowMapSize > 16384)
-                    fail(key + " = " + echo(v) + ": must be from 1 to 16384");
-            } else {
-                fail("unknown key '" + echoText(key) + "' (known keys: " + knownFields() + ")");
+            const SettingField* f = findSettingField(field);
+            if (!f) fail("unknown key '" + echoText(key) + "' (known keys: " + knownFields() + ")");
+            switch (f->kind) {
+                case SettingField::Kind::Whole:
+                    setFieldValue(s, *f, whole(v, key));
+                    break;
+                case SettingField::Kind::Number:
+                    setFieldValue(s, *f, number(v, key));
+                    break;
+                case SettingField::Kind::Boolean:
+                    setFieldValue(s, *f, boolean(v, key) ? 1.0 : 0.0);
+                    break;
+                case SettingField::Kind::Choice:
+                    setFieldValue(s, *f, static_cast<double>(oneOf(v, key, f->choices)));
+                    break;
+                case SettingField::Kind::Vector4: {
+                    const std::array<float, 4> a = numbers<4>(v, key);
+                    for (int c = 0; c < 4; ++c) setFieldValue(s, *f, a[c], c);
+                    break;
+                }
             }
+            if (field == "shadowMapSize" && (s.shadowMapSize < 1 || s.shadowMapSize > 16384))
+                fail(key + " = " + echo(v) + ": must be from 1 to 16384");
         }
         checkWithThePlugin(s, root);
         return s;
@@ -234,13 +127,13 @@ class SettingsReader {
         return v.get<bool>();
     }
 
-    template <class Enum>
-    Enum oneOf(const json& v, const std::string& key,
-               std::initializer_list<std::pair<const char*, Enum>> choices) const {
+    // The index of the choice `v` names.
+    size_t oneOf(const json& v, const std::string& key,
+                 const std::vector<const char*>& choices) const {
         std::string names;
-        for (const auto& [word, value] : choices) {
-            if (v.is_string() && v.get<std::string>() == word) return value;
-            names += (names.empty() ? "" : ", ") + std::string(word);
+        for (size_t i = 0; i < choices.size(); ++i) {
+            if (v.is_string() && v.get<std::string>() == choices[i]) return i;
+            names += (names.empty() ? "" : ", ") + std::string(choices[i]);
         }
         fail(key + " = " + echo(v) + ": must be one of " + names);
     }

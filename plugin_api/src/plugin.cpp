@@ -317,6 +317,7 @@ struct Plugin::Impl {
         std::vector<std::string> setupPasses;
         std::vector<PassTime> cpuWork;
         std::vector<detail::MethodChoice> choices;  // per light
+        std::vector<Settings> settings;             // per light: what its chain runs with
         bool keepsHistory = false;                  // the frame reads and writes the history
         ls::HistoryFrame historyValues;
         bool graphCompiled = false;
@@ -335,6 +336,7 @@ struct Plugin::Impl {
         const size_t n = v.lights.size();
         Prepared p;
         p.choices = chosen.choices;
+        for (const detail::FrameSetup& s : v.lights) p.settings.push_back(s.settings);
         std::vector<const ls::MethodUnit*> methods(n);
         for (size_t i = 0; i < n; ++i) methods[i] = &chosen.choices[i].unit();
         p.screen = screen;
@@ -542,6 +544,7 @@ struct Plugin::Impl {
                                                       "scatters): no chain")
                                              : choice.reason;
             l.notice = choice.notice;
+            l.settings = p.settings[i];
             f.lights.push_back(l);
             if (!c.lights[i].touchesView) continue;
             if (!first) first = &choice;

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "settings_fields.h"
 #include "settings_file.h"
 
 namespace {
@@ -106,6 +107,28 @@ TEST_F(HostSettingsFile, EveryFieldByName) {
 }
 
 // The froxel presets by name: the grid's sizes, and "-temporal" for the temporal mode.
+// The viewer's "save settings": every field written, and read back to the same settings; a field
+// of Settings the list leaves out would keep its default on the way back and fail here.
+TEST_F(HostSettingsFile, AWrittenFileReadsBackToTheSameSettings) {
+    lightscatter::Settings s;
+    s.slices = 512;
+    s.refinementThreshold = 0.07f;
+    s.minMaxTrees = false;
+    s.shadowFilter = lightscatter::ShadowFilter::Nearest;
+    s.planeTarget = lightscatter::PlaneTarget::Rgba8Channels;
+    s.noiseVelocity = {0.25f, -0.5f, 0.125f, 1.0f};
+    s.lightModel = lightscatter::LightModel::Simplified;
+    s.froxelHistoryWeight = 0.3f;
+    const lightscatter::Settings back = load(host::settingsFileText(s));
+    for (const host::SettingField& f : host::settingFields())
+        for (int c = 0; c < (f.kind == host::SettingField::Kind::Vector4 ? 4 : 1); ++c)
+            EXPECT_EQ(host::fieldValue(back, f, c), host::fieldValue(s, f, c)) << f.name;
+    // 36 fields today: a member added to Settings is added to settings_fields.cpp, then here.
+    EXPECT_EQ(host::settingFields().size(), 36u);
+    EXPECT_EQ(host::settingsFileText(s).find("0.07000000"), std::string::npos)
+        << "floats are written as their shortest decimal";
+}
+
 TEST_F(HostSettingsFile, FroxelPresetsSetTheGrid) {
     lightscatter::Settings s;
     s.froxelTemporal = true;
@@ -193,7 +216,7 @@ TEST_F(HostSettingsFile, BadFieldsAreNamed) {
               "shadowDepthBias = 1e+39: must be a finite number");
     EXPECT_EQ(errorFor(R"({"minMaxTrees": 1})"), "minMaxTrees = 1: must be true or false");
     EXPECT_EQ(errorFor(R"({"shadowFilter": "trilinear"})"),
-              "shadowFilter = \"trilinear\": must be one of bilinear, nearest");
+              "shadowFilter = \"trilinear\": must be one of nearest, bilinear");
     EXPECT_EQ(errorFor(R"({"interpolation": 2})"),
               "interpolation = 2: must be one of shadowed-fraction, inscattering");
     EXPECT_EQ(errorFor(R"({"shadowMapSize": 0})"), "shadowMapSize = 0: must be from 1 to 16384");

@@ -648,6 +648,9 @@ struct FrameReport {
         std::string method;
         std::string reason;
         std::string notice;
+        // The settings its chain ran with: the profile's sizes over the frame's `custom` (or the
+        // light's own LightInput::settings), as checked. A tool can show what a frame really used.
+        Settings settings;
     };
     std::vector<Light> lights;
 };
