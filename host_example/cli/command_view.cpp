@@ -21,20 +21,25 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 
 #include "command_options.h"
 #include "commands.h"
 #include "fullscreen_vert.h"
 #include "image_io.h"
 #include "output_set.h"
+#include "panel_script.h"
 #include "rendergraph/compile.h"
 #include "rendergraph/device_caps_vulkan.h"
 #include "rendergraph/host_buffer.h"
 #include "rendergraph/memory_counter.h"
 #include "rendergraph/pipeline.h"
 #include "rendergraph/vk_error.h"
+#include "settings_fields.h"
+#include "settings_panel.h"
 #include "swapchain.h"
 #include "tonemap_frag.h"
+#include "ui_overlay.h"
 
 namespace host {
 namespace {
@@ -73,10 +78,13 @@ struct Surface {
 class Display {
   public:
     // `pipeline` outlives displays: a resize builds a new display but keeps the pipeline.
+    // `overlay`: the interface draws over the image after this graph (UiOverlay), so the graph
+    // leaves it a color attachment, and the screenshot, in a graph of its own, comes after both.
     Display(const rg::Device& device, const GpuImage& hdr, const Swapchain& swapchain,
-            float exposure, bool screenshot, std::shared_ptr<rg::Pipeline> pipeline)
+            float exposure, bool screenshot, std::shared_ptr<rg::Pipeline> pipeline, bool overlay)
         : device_(device), samplers_(device), exposure_(exposure), pipeline_(std::move(pipeline)) {
         graph_.setScreenExtent(swapchain.extent());
+        shotGraph_.setScreenExtent(swapchain.extent());
         rg::ImportedImage h;
         h.image = hdr.image();
         h.format = hdr.format();
@@ -98,6 +106,11 @@ class Display {
         s.finalLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
         s.finalStages = VK_PIPELINE_STAGE_2_NONE;
         s.finalAccess = VK_ACCESS_2_NONE;
+        if (overlay) {
+            s.finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+            s.finalStages = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
+            s.finalAccess = VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT;
+        }
         target_ = graph_.importImage("swapchain image", s);
         swapchainDesc_ = s;
 
@@ -123,34 +136,51 @@ class Display {
             pipeline_->push(ctx.cmd(), exposure_);
             vkCmdDraw(ctx.cmd(), 3, 1, 0, 0);
         });
+        const rg::VulkanDeviceCaps caps(device);
         if (screenshot) {
             const VkExtent2D e = swapchain.extent();
             readback_ =
                 std::make_unique<rg::HostBuffer>(device, VkDeviceSize{4} * e.width * e.height,
                                                  VK_BUFFER_USAGE_TRANSFER_DST_BIT, "screenshot");
-            rg::BufferRef buf = graph_.importBuffer("screenshot", readback_->asReadback());
-            auto copy = graph_.addPass("screenshot", rg::PassType::Transfer);
-            copy.transferSrc(target_);
-            buf = copy.transferDst(buf);
-            const rg::ImageRef img = target_;
-            copy.execute([img, buf, e](rg::PassContext& ctx) {
-                VkBufferImageCopy region{};
-                region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-                region.imageExtent = {e.width, e.height, 1};
-                vkCmdCopyImageToBuffer(ctx.cmd(), ctx.image(img), ctx.layout(img), ctx.buffer(buf),
-                                       1, &region);
-            });
+            if (overlay) {
+                // After the interface: the image as its render pass left it.
+                rg::ImportedImage after = s;
+                after.initialLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+                after.initialStages = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
+                after.initialAccess = VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT;
+                after.finalLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+                after.finalStages = VK_PIPELINE_STAGE_2_NONE;
+                after.finalAccess = VK_ACCESS_2_NONE;
+                shotTarget_ = shotGraph_.importImage("swapchain image", after);
+                shotDesc_ = after;
+                addScreenshot(shotGraph_, shotTarget_, e);
+                shotExecutor_ = std::make_unique<rg::GraphExecutor>(device, shotGraph_,
+                                                                    rg::compile(shotGraph_, caps));
+            } else {
+                addScreenshot(graph_, target_, e);
+            }
         }
-        const rg::VulkanDeviceCaps caps(device);
         executor_ = std::make_unique<rg::GraphExecutor>(device, graph_, rg::compile(graph_, caps));
     }
-    ~Display() { executor_.reset(); }
+    ~Display() {
+        shotExecutor_.reset();
+        executor_.reset();
+    }
 
     void record(VkCommandBuffer cmd, VkImage swapchainImage) {
         swapchainDesc_.image = swapchainImage;
         graph_.updateImport(target_, swapchainDesc_);
         executor_->record(cmd);
     }
+    // After the interface: the screenshot's copy (and the image's way to presentation).
+    void recordAfterOverlay(VkCommandBuffer cmd, VkImage swapchainImage) {
+        if (!shotExecutor_) return;
+        shotDesc_.image = swapchainImage;
+        shotGraph_.updateImport(shotTarget_, shotDesc_);
+        shotExecutor_->record(cmd);
+    }
+    // The interface leaves the image for the screenshot graph rather than for presentation.
+    bool keepsForScreenshot() const { return shotExecutor_ != nullptr; }
     // RGBA8 of the last recorded frame (after the engine waited for it); BGRA swapchains swizzled.
     std::vector<uint8_t> screenshot(VkFormat format) const {
         std::vector<uint8_t> px(readback_->size());
@@ -161,15 +191,29 @@ class Display {
     }
 
   private:
+    void addScreenshot(rg::RenderGraph& graph, rg::ImageRef image, VkExtent2D e) {
+        rg::BufferRef buf = graph.importBuffer("screenshot", readback_->asReadback());
+        auto copy = graph.addPass("screenshot", rg::PassType::Transfer);
+        copy.transferSrc(image);
+        buf = copy.transferDst(buf);
+        copy.execute([image, buf, e](rg::PassContext& ctx) {
+            VkBufferImageCopy region{};
+            region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+            region.imageExtent = {e.width, e.height, 1};
+            vkCmdCopyImageToBuffer(ctx.cmd(), ctx.image(image), ctx.layout(image), ctx.buffer(buf),
+                                   1, &region);
+        });
+    }
+
     const rg::Device& device_;
     rg::Samplers samplers_;
     float exposure_;
-    rg::RenderGraph graph_;
-    rg::ImageRef hdr_, target_;
-    rg::ImportedImage swapchainDesc_;
+    rg::RenderGraph graph_, shotGraph_;
+    rg::ImageRef hdr_, target_, shotTarget_;
+    rg::ImportedImage swapchainDesc_, shotDesc_;
     std::shared_ptr<rg::Pipeline> pipeline_;
     std::unique_ptr<rg::HostBuffer> readback_;
-    std::unique_ptr<rg::GraphExecutor> executor_;
+    std::unique_ptr<rg::GraphExecutor> executor_, shotExecutor_;
 };
 
 struct Controls {
@@ -177,22 +221,25 @@ struct Controls {
     double lastX = 0, lastY = 0;
 };
 
-void moveCamera(GLFWwindow* w, CameraDesc& cam, float speed, float dt, Controls& c) {
+// `keys` and `mouse`: whether the interface left them to the camera.
+void moveCamera(GLFWwindow* w, CameraDesc& cam, float speed, float dt, Controls& c, bool keys,
+                bool mouse) {
     glm::vec3 forward = glm::normalize(cam.target - cam.position);
     const glm::vec3 right = glm::normalize(glm::cross(forward, cam.up));
     glm::vec3 move(0.0f);
-    if (glfwGetKey(w, GLFW_KEY_W) == GLFW_PRESS) move += forward;
-    if (glfwGetKey(w, GLFW_KEY_S) == GLFW_PRESS) move -= forward;
-    if (glfwGetKey(w, GLFW_KEY_D) == GLFW_PRESS) move += right;
-    if (glfwGetKey(w, GLFW_KEY_A) == GLFW_PRESS) move -= right;
-    if (glfwGetKey(w, GLFW_KEY_E) == GLFW_PRESS) move += cam.up;
-    if (glfwGetKey(w, GLFW_KEY_Q) == GLFW_PRESS) move -= cam.up;
+    auto held = [&](int key) { return keys && glfwGetKey(w, key) == GLFW_PRESS; };
+    if (held(GLFW_KEY_W)) move += forward;
+    if (held(GLFW_KEY_S)) move -= forward;
+    if (held(GLFW_KEY_D)) move += right;
+    if (held(GLFW_KEY_A)) move -= right;
+    if (held(GLFW_KEY_E)) move += cam.up;
+    if (held(GLFW_KEY_Q)) move -= cam.up;
     const glm::vec3 delta = move * speed * dt;
     cam.position += delta;
     cam.target += delta;
     double x, y;
     glfwGetCursorPos(w, &x, &y);
-    const bool down = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+    const bool down = mouse && glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
     if (down && c.dragging) {
         const float yaw = static_cast<float>(x - c.lastX) * -0.004f;
         const float pitch = static_cast<float>(y - c.lastY) * -0.004f;
@@ -207,7 +254,8 @@ void moveCamera(GLFWwindow* w, CameraDesc& cam, float speed, float dt, Controls&
     c.lastY = y;
 }
 
-void moveLight(GLFWwindow* w, LightDesc& light, float speed, float dt) {
+void moveLight(GLFWwindow* w, LightDesc& light, float speed, float dt, bool keys) {
+    if (!keys) return;
     glm::vec2 m(0.0f);
     if (glfwGetKey(w, GLFW_KEY_LEFT) == GLFW_PRESS) m.x -= 1;
     if (glfwGetKey(w, GLFW_KEY_RIGHT) == GLFW_PRESS) m.x += 1;
@@ -272,6 +320,9 @@ int runView(Args& args) {
     const bool animate = args.flag("--animate-light");
     const std::string resizesText = args.take("--resizes", "");
     const std::string memoryLogPath = args.take("--memory-log", "");
+    const bool noPanel = args.flag("--no-panel");
+    const std::string scriptPath = args.take("--panel-script", "");
+    const std::string reportLogPath = args.take("--report-log", "");
     const std::string scenePath = args.positional("SCENE.json");
     args.finish();
     const int frameLimit = framesText.empty() ? 0 : parseCount(framesText, "--frames");
@@ -283,6 +334,9 @@ int runView(Args& args) {
     if (!screenshotPath.empty() && frameLimit == 0)
         throw std::runtime_error(
             "view: --screenshot needs --frames (the screenshot is of the last frame)");
+    if (!scriptPath.empty() && (noPanel || frameLimit == 0))
+        throw std::runtime_error(
+            "view: --panel-script drives the panel: it needs --frames and no --no-panel");
     const int resizes = resizesText.empty() ? 0 : parseCount(resizesText, "--resizes");
     if (resizes > 0 && frameLimit <= resizes)
         throw std::runtime_error(
@@ -301,8 +355,12 @@ int runView(Args& args) {
     for (size_t i = 0; i < scene.lightCount(); ++i)
         if (scene.lightAt(i).cookie)
             outputs.addInput("a file the scene reads", scene.lightAt(i).cookie->name);
+    if (!scriptPath.empty()) outputs.addInput("the panel script", scriptPath);
     if (!screenshotPath.empty()) outputs.add("--screenshot", screenshotPath);
     if (!memoryLogPath.empty()) outputs.add("--memory-log", memoryLogPath);
+    if (!reportLogPath.empty()) outputs.add("--report-log", reportLogPath);
+    const PanelScript script = scriptPath.empty() ? PanelScript() : PanelScript(scriptPath);
+    nlohmann::json reportLog = nlohmann::json::array();
     std::string memoryLog = "frame,rss_kib,device_bytes\n";
 
     GlfwSession glfw;
@@ -316,12 +374,17 @@ int runView(Args& args) {
     Surface surface(device.instance(), window.handle);
     Swapchain swapchain(device, surface.handle, size);
     EngineRenderer renderer(device, scene, mesh, swapchain.extent());
+    std::unique_ptr<UiOverlay> ui;
+    if (!noPanel) ui = std::make_unique<UiOverlay>(device, window.handle, swapchain);
+    SettingsPanel panel;
+    bool panelVisible = true;
     std::unique_ptr<Display> display;
     const auto displayPipeline = std::make_shared<rg::Pipeline>();
     auto rebuildDisplay = [&](bool screenshot) {
         display.reset();
         display = std::make_unique<Display>(device, renderer.color(), swapchain, scene.exposure,
-                                            screenshot, displayPipeline);
+                                            screenshot, displayPipeline, ui != nullptr);
+        if (ui) ui->swapchainChanged(swapchain);
     };
     rebuildDisplay(false);
 
@@ -355,9 +418,31 @@ int runView(Args& args) {
         lightscatter::Profile::LowBalanced,     lightscatter::Profile::LowHighPerformance};
     // N steps the noise's amplitude through these; it starts at the --settings file's.
     constexpr std::array kNoiseSteps{0.0f, 0.25f, 0.5f, 1.0f};
-    float noise = options.custom.noiseAmplitude;
-    const lightscatter::LightModel lightModel = options.custom.lightModel;
-    bool keyM = false, keyP = false, keyT = false, keyN = false, keyL = false;
+    bool keyM = false, keyP = false, keyT = false, keyN = false, keyL = false, keyF1 = false;
+    // What the plugin accepted last: an edit it refuses is undone to this (the camera excepted).
+    RenderOptions good = options;
+    std::vector<LightDesc> goodLights;
+    for (size_t i = 0; i < renderer.scene().lightCount(); ++i)
+        goodLights.push_back(renderer.scene().lightAt(i));
+    MediumDesc goodMedium = renderer.scene().medium;
+    lightscatter::FrameReport lastReport;
+    std::vector<std::pair<long, std::string>> frameSteps{{-1, ""}};  // by the plugin's frame
+    auto logReport = [&](const lightscatter::FrameReport& r) {
+        lastReport = r;
+        if (reportLogPath.empty() || r.frame == 0 || r.frame >= frameSteps.size()) return;
+        nlohmann::json e = {{"frame", r.frame},
+                            {"step", frameSteps[r.frame].first},
+                            {"refused", frameSteps[r.frame].second},
+                            {"method", r.method},
+                            {"reason", r.reason}};
+        e["lights"] = nlohmann::json::array();
+        for (const auto& l : r.lights) {
+            nlohmann::json fields = nlohmann::json::object();
+            for (const SettingField& f : settingFields()) fields[f.name] = fieldJson(l.settings, f);
+            e["lights"].push_back({{"method", l.method}, {"settings", fields}});
+        }
+        reportLog.push_back(e);
+    };
     size_t selectedLight = 0;  // the light the arrow keys move; L selects the next
     const auto start = std::chrono::steady_clock::now();
     auto last = start;
@@ -372,8 +457,9 @@ int runView(Args& args) {
         const auto now = std::chrono::steady_clock::now();
         const float dt = std::min(std::chrono::duration<float>(now - last).count(), 0.1f);
         last = now;
-        moveCamera(window.handle, renderer.scene().camera, speed, dt, controls);
-        moveLight(window.handle, renderer.scene().lightAt(selectedLight), speed, dt);
+        const bool keys = !(ui && ui->wantsKeyboard()), mouse = !(ui && ui->wantsMouse());
+        moveCamera(window.handle, renderer.scene().camera, speed, dt, controls, keys, mouse);
+        moveLight(window.handle, renderer.scene().lightAt(selectedLight), speed, dt, keys);
         if (animate) animateLight(renderer.scene().light, scene.light, frame);
         if (resizes > 0 && frame > 0 && frame % (frameLimit / (resizes + 1)) == 0 &&
             frame / (frameLimit / (resizes + 1)) <= resizes) {
@@ -382,11 +468,12 @@ int runView(Args& args) {
                               static_cast<int>(to.height));
         }
         auto pressed = [&](int key, bool& held) {
-            const bool down = glfwGetKey(window.handle, key) == GLFW_PRESS;
+            const bool down = keys && glfwGetKey(window.handle, key) == GLFW_PRESS;
             const bool edge = down && !held;
             held = down;
             return edge;
         };
+        if (pressed(GLFW_KEY_F1, keyF1)) panelVisible = !panelVisible;
         if (pressed(GLFW_KEY_L, keyL))
             selectedLight = (selectedLight + 1) % renderer.scene().lightCount();
         if (pressed(GLFW_KEY_M, keyM)) {
@@ -416,15 +503,10 @@ int runView(Args& args) {
         }
         if (pressed(GLFW_KEY_T, keyT)) options.custom.minMaxTrees = !options.custom.minMaxTrees;
         if (pressed(GLFW_KEY_N, keyN)) {
+            const float noise = options.custom.noiseAmplitude;
             const auto next = std::upper_bound(kNoiseSteps.begin(), kNoiseSteps.end(), noise);
-            noise = next == kNoiseSteps.end() ? kNoiseSteps[0] : *next;
+            options.custom.noiseAmplitude = next == kNoiseSteps.end() ? kNoiseSteps[0] : *next;
         }
-        // Only the planes method samples the noise (auto then picks it); the others run without.
-        options.custom.noiseAmplitude = honoursNoise(options.method) ? noise : 0.0f;
-        // Likewise seed 004's simplified light model: the methods that do not honour it run the
-        // full one.
-        options.custom.lightModel =
-            honoursLightModel(options.method) ? lightModel : lightscatter::LightModel::Full;
         options.timeSeconds = std::chrono::duration<double>(now - start).count();
         if (frame == resizeFrame)
             glfwSetWindowSize(window.handle, static_cast<int>(resizeSize.width),
@@ -433,6 +515,7 @@ int runView(Args& args) {
         RG_VK(vkWaitForFences(device.device(), 1, &fence, VK_TRUE, UINT64_MAX));
         if (!firstWait) {
             const FrameOutput t = renderer.timings();
+            logReport(t.plugin);
             titleClock += dt;
             if (titleClock > 0.5 || frameLimit) {
                 titleClock = 0.0;
@@ -441,7 +524,7 @@ int runView(Args& args) {
                     (options.method == lightscatter::Method::Auto ? " (" + t.plugin.method + ")"
                                                                   : "") +
                     " / " + lightscatter::profileName(options.profile) +
-                    noiseTitle(noise, options.method) + " - " +
+                    noiseTitle(options.custom.noiseAmplitude, options.method) + " - " +
                     std::to_string(t.plugin.totalMilliseconds).substr(0, 6) + " ms";
                 std::vector<lightscatter::PassTime> top = t.plugin.passes;
                 std::sort(top.begin(), top.end(),
@@ -477,14 +560,81 @@ int runView(Args& args) {
             continue;
         }
         if (acq != VK_SUBOPTIMAL_KHR) rg::check(acq, "vkAcquireNextImageKHR");
+        // The panel's edits, then the script's step, then the plugin's word on them: what it
+        // refuses is shown in the panel and undone, and the frame runs as the last one accepted.
+        if (ui) {
+            ui->beginFrame();
+            if (panelVisible) {
+                PanelStatus status;
+                status.report = lastReport.frame ? &lastReport : nullptr;
+                status.cpuDevice = device.isCpu();
+                status.deviceBytes = rg::deviceMemoryInUse();
+                if (options.custom.noiseAmplitude > 0.0f && !honoursNoise(options.method))
+                    status.note = "the noise: planes and auto only (this method runs without)";
+                if (options.custom.lightModel == lightscatter::LightModel::Simplified &&
+                    !honoursLightModel(options.method))
+                    status.note += std::string(status.note.empty() ? "" : "; ") +
+                                   "the simplified model: analytic, beam-tree-analytic and auto "
+                                   "only (this method runs the full one)";
+                panel.draw(options, renderer.scene(), status);
+            }
+        }
+        const long step = static_cast<size_t>(frame) < script.size() ? frame : -1;
+        script.apply(static_cast<size_t>(frame), panel, options);
+        auto structure = [&] {
+            std::vector<std::pair<lightscatter::LightType, uint32_t>> v;
+            for (size_t i = 0; i < renderer.scene().lightCount(); ++i)
+                v.emplace_back(renderer.scene().lightAt(i).type,
+                               renderer.scene().lightAt(i).shadowMapSize);
+            return v;
+        };
+        auto rebuildTargets = [&] {
+            vkDeviceWaitIdle(device.device());
+            renderer.resize(swapchain.extent());
+            rebuildDisplay(lastFrame && !screenshotPath.empty());
+        };
+        if (panel.rebuildTargets()) rebuildTargets();
+        // Only the planes method samples the noise (auto then picks it), and only some methods
+        // seed 004's simplified model: the others run without them.
+        auto runnable = [&](RenderOptions r) {
+            if (!honoursNoise(r.method)) r.custom.noiseAmplitude = 0.0f;
+            if (!honoursLightModel(r.method)) r.custom.lightModel = lightscatter::LightModel::Full;
+            return r;
+        };
+        RenderOptions run = runnable(options);
+        std::string refusal;
+        try {
+            renderer.check(run);
+            good = options;
+            for (size_t i = 0; i < goodLights.size(); ++i)
+                goodLights[i] = renderer.scene().lightAt(i);
+            goodMedium = renderer.scene().medium;
+            panel.refused("");
+        } catch (const std::exception& e) {
+            refusal = e.what();
+            panel.refused(refusal);
+            const auto before = structure();
+            options = good;
+            for (size_t i = 0; i < goodLights.size(); ++i)
+                renderer.scene().lightAt(i) = goodLights[i];
+            renderer.scene().medium = goodMedium;
+            if (structure() != before) rebuildTargets();
+            run = runnable(options);
+            run.timeSeconds = std::chrono::duration<double>(now - start).count();
+        }
+        frameSteps.emplace_back(step, refusal);
         RG_VK(vkResetFences(device.device(), 1, &fence));
         RG_VK(vkResetCommandBuffer(cmd, 0));
         VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
         begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
         RG_VK(vkBeginCommandBuffer(cmd, &begin));
-        renderer.record(cmd, options, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+        renderer.record(cmd, run, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
                         VK_ACCESS_2_MEMORY_READ_BIT);
         display->record(cmd, swapchain.image(index));
+        if (ui) {
+            ui->record(cmd, index, display->keepsForScreenshot());
+            display->recordAfterOverlay(cmd, swapchain.image(index));
+        }
         RG_VK(vkEndCommandBuffer(cmd));
         VkSemaphoreSubmitInfo wait{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
         wait.semaphore = acquired;
@@ -519,6 +669,7 @@ int runView(Args& args) {
                          std::to_string(rg::deviceMemoryInUse()) + "\n";
         if (lastFrame) {
             RG_VK(vkWaitForFences(device.device(), 1, &fence, VK_TRUE, UINT64_MAX));
+            logReport(renderer.timings().plugin);
             if (!screenshotPath.empty()) {
                 const VkExtent2D e = swapchain.extent();
                 const std::vector<uint8_t> pixels = display->screenshot(swapchain.format());
@@ -541,6 +692,7 @@ int runView(Args& args) {
         exitCode = 3;
     }
     display.reset();
+    ui.reset();
     vkDestroyFence(device.device(), fence, nullptr);
     for (auto s : finished) vkDestroySemaphore(device.device(), s, nullptr);
     vkDestroySemaphore(device.device(), acquired, nullptr);
@@ -550,6 +702,7 @@ int runView(Args& args) {
                                  ": the window was closed after " + std::to_string(frame) + " of " +
                                  std::to_string(frameLimit) + " frames; nothing was written");
     if (!memoryLogPath.empty()) outputs.writeText(memoryLogPath, memoryLog);
+    if (!reportLogPath.empty()) outputs.writeText(reportLogPath, reportLog.dump(1) + "\n");
     outputs.commit();
     if (!screenshotPath.empty()) std::cout << "wrote " << screenshotPath << screenshotNote << "\n";
     return exitCode;

@@ -88,11 +88,16 @@ const std::array kCommands{
         "view",
         "view SCENE.json [--method NAME] [--profile NAME] [--settings FILE.json] [--size WxH]\n"
         "                  [--frames N] [--screenshot FILE.png] [--resize-at N --resize-to WxH]\n"
-        "                  [--animate-light] [--resizes N] [--memory-log FILE.csv]\n",
-        "Opens a window (needs a display; xvfb-run -a gives one). WASD/QE move, left-drag\n"
-        "looks, arrow keys move the selected light (L selects the next of several), M cycles\n"
-        "the methods, P cycles profiles, T toggles the min/max trees, N steps the scrolling\n"
-        "noise's amplitude (0, 0.25, 0.5, 1; planes and auto only), Esc quits.\n"
+        "                  [--animate-light] [--resizes N] [--memory-log FILE.csv]\n"
+        "                  [--no-panel] [--panel-script FILE.json] [--report-log FILE.json]\n",
+        "Opens a window (needs a display; xvfb-run -a gives one) with a settings panel: the\n"
+        "method, the profile, every setting, the lights and the medium, live; the plugin's\n"
+        "report, GPU time per pass and device memory; 'save settings' writes a --settings file.\n"
+        "An edit the plugin refuses shows its message and is undone. F1 hides the panel.\n"
+        "WASD/QE move, left-drag looks, arrow keys move the selected light (L selects the next\n"
+        "of several), M cycles the methods, P cycles profiles, T toggles the min/max trees, N\n"
+        "steps the scrolling noise's amplitude (0, 0.25, 0.5, 1; planes and auto only), Esc\n"
+        "quits.\n"
         "  --size WxH          1 to 16384 each (default 960x540)\n"
         "  --frames N          close after N frames (1 to 100000)\n"
         "  --screenshot FILE   the last frame as a PNG (needs --frames)\n"
@@ -100,7 +105,12 @@ const std::array kCommands{
         "  --animate-light     move the light on a slow circle, every frame (soak tests)\n"
         "  --resizes N         resize the window N times, evenly over --frames, through 60%, 80%\n"
         "                      and 100% of --size in turn (soak tests)\n"
-        "  --memory-log FILE   every 100 frames: frame, resident KiB, device bytes held (CSV)\n"},
+        "  --memory-log FILE   every 100 frames: frame, resident KiB, device bytes held (CSV)\n"
+        "  --no-panel          the window without the settings panel\n"
+        "  --panel-script FILE edits made through the panel, one step per frame (needs\n"
+        "                      --frames): a JSON array of {\"settings\": {...}, \"method\": ...,\n"
+        "                      \"profile\": ..., \"save\": FILE}\n"
+        "  --report-log FILE   each frame's report: method, reason, each light's settings\n"},
     Command{
         "bench", "bench [--config FILE.json] [--out DIR]\n",
         "Times every method and profile of a benchmark configuration and measures each against\n"

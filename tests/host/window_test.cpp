@@ -17,7 +17,7 @@ TEST(Window, OpensRendersResizesAndShowsTheScene) {
         << "xvfb-run is missing (Debian package xvfb)";
     const auto r = cli_test::run("view " + cli_test::scene("atrium") +
                                      " --size 160x90 --frames 8 --resize-at 3 --resize-to 200x120"
-                                     " --screenshot window.png --validation",
+                                     " --screenshot window.png --no-panel --validation",
                                  "xvfb-run -a -s '-screen 0 640x480x24'");
     ASSERT_EQ(r.exitCode, 0) << r.out;
     const std::string shot = (std::filesystem::path(cli_test::scratch()) / "window.png").string();
@@ -59,7 +59,7 @@ TEST(Window, VeryBrightPixelsStayWhite) {
     std::ofstream(dir / "bright.json") << scene.dump();
     const auto r = cli_test::run(
         "view bright.json --size 64x36 --frames 2 --screenshot bright.png"
-        " --validation",
+        " --no-panel --validation",
         "xvfb-run -a -s '-screen 0 640x480x24'");
     ASSERT_EQ(r.exitCode, 0) << r.out;
     int w = 0, h = 0, n = 0;

@@ -1,0 +1,299 @@
+#include "settings_panel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <utility>
+
+namespace host {
+namespace {
+
+using lightscatter::LightType;
+using lightscatter::Method;
+using lightscatter::Profile;
+
+constexpr std::array kMethods{
+    Method::Auto,      Method::Epipolar, Method::BruteForce,       Method::Analytic,
+    Method::ConeMarch, Method::Planes,   Method::BeamTreeAnalytic, Method::BeamTreeSampling,
+    Method::Froxels};
+constexpr std::array kProfiles{Profile::HighQuality,     Profile::Balanced,
+                               Profile::HighPerformance, Profile::LowHighQuality,
+                               Profile::LowBalanced,     Profile::LowHighPerformance,
+                               Profile::Custom};
+constexpr std::array kLightTypes{"directional", "spot", "point"};
+constexpr std::array kPhases{"cornette-shanks", "isotropic", "hazy"};
+constexpr std::array<uint32_t, 7> kShadowSizes{0, 256, 512, 1024, 2048, 4096, 8192};
+
+int lightTypeIndex(LightType t) {
+    return t == LightType::Directional ? 0 : t == LightType::Spot ? 1 : 2;
+}
+LightType lightTypeAt(int i) {
+    return i == 0 ? LightType::Directional : i == 1 ? LightType::Spot : LightType::Point;
+}
+int phaseIndex(lightscatter::MiePhase p) {
+    return p == lightscatter::MiePhase::CornetteShanks ? 0
+           : p == lightscatter::MiePhase::Isotropic    ? 1
+                                                       : 2;
+}
+lightscatter::MiePhase phaseAt(int i) {
+    return i == 0   ? lightscatter::MiePhase::CornetteShanks
+           : i == 1 ? lightscatter::MiePhase::Isotropic
+                    : lightscatter::MiePhase::Hazy;
+}
+
+// A colour in 1/m or W: three components dragged over decades.
+bool dragVec3(const char* label, glm::vec3& v, float lo, float hi, const char* format) {
+    float a[3] = {v.x, v.y, v.z};
+    const bool changed = ImGui::DragFloat3(label, a, std::max(1e-7f, (v.x + v.y + v.z) * 0.005f),
+                                           lo, hi, format, ImGuiSliderFlags_AlwaysClamp);
+    if (changed) v = {a[0], a[1], a[2]};
+    return changed;
+}
+
+}  // namespace
+
+SettingsPanel::SettingsPanel(const std::string& saveName) {
+    std::snprintf(savePath_.data(), savePath_.size(), "%s", saveName.c_str());
+}
+
+void SettingsPanel::setMethod(RenderOptions& o, Method m) const {
+    o.method = m;
+}
+
+void SettingsPanel::setProfile(RenderOptions& o, Profile p) const {
+    o.profile = p;
+}
+
+void SettingsPanel::setField(RenderOptions& o, const SettingField& f, double value,
+                             int component) const {
+    if (f.profileSized && o.profile != Profile::Custom) {
+        o.custom = effective(o);
+        o.profile = Profile::Custom;
+    }
+    setFieldValue(o.custom, f, value, component);
+}
+
+void SettingsPanel::setLightType(SceneDesc& s, size_t light, LightType type) {
+    LightDesc& l = s.lightAt(light);
+    if (l.type == type) return;
+    l.type = type;
+    rebuild_ = true;
+}
+
+void SettingsPanel::setShadowMapSize(SceneDesc& s, size_t light, uint32_t size) {
+    LightDesc& l = s.lightAt(light);
+    if (l.shadowMapSize == size) return;
+    l.shadowMapSize = size;
+    rebuild_ = true;
+}
+
+bool SettingsPanel::rebuildTargets() {
+    return std::exchange(rebuild_, false);
+}
+
+lightscatter::Settings SettingsPanel::effective(const RenderOptions& o) {
+    if (o.profile == Profile::Custom) return o.custom;
+    lightscatter::Settings s = o.custom;
+    const lightscatter::Settings sized = lightscatter::profileSettings(o.profile);
+    for (const SettingField& f : settingFields())
+        if (f.profileSized)
+            for (int c = 0; c < (f.kind == SettingField::Kind::Vector4 ? 4 : 1); ++c)
+                setFieldValue(s, f, fieldValue(sized, f, c), c);
+    return s;
+}
+
+std::string SettingsPanel::save(const RenderOptions& o, const std::string& path) const {
+    const std::string tmp = path + ".part";
+    {
+        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+        out << settingsFileText(effective(o));
+        if (!out.good()) {
+            std::remove(tmp.c_str());
+            return "cannot write " + path;
+        }
+    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+        std::remove(tmp.c_str());
+        return "cannot write " + path;
+    }
+    return "wrote " + path + ": lightscatter view SCENE --profile custom --settings " + path;
+}
+
+void SettingsPanel::draw(RenderOptions& o, SceneDesc& scene, const PanelStatus& status) {
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(380, 520), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowBgAlpha(0.85f);
+    if (!ImGui::Begin("lightscatter (F1 hides)")) {
+        ImGui::End();
+        return;
+    }
+    int method =
+        static_cast<int>(std::find(kMethods.begin(), kMethods.end(), o.method) - kMethods.begin());
+    if (ImGui::BeginCombo("method", lightscatter::methodName(o.method))) {
+        for (size_t i = 0; i < kMethods.size(); ++i)
+            if (ImGui::Selectable(lightscatter::methodName(kMethods[i]), method == int(i)))
+                setMethod(o, kMethods[i]);
+        ImGui::EndCombo();
+    }
+    if (ImGui::BeginCombo("profile", lightscatter::profileName(o.profile))) {
+        for (Profile p : kProfiles)
+            if (ImGui::Selectable(lightscatter::profileName(p), p == o.profile)) setProfile(o, p);
+        ImGui::EndCombo();
+    }
+    if (status.report && status.report->frame) {
+        ImGui::TextWrapped("ran: %s", status.report->method.c_str());
+        ImGui::TextWrapped("why: %s", status.report->reason.c_str());
+        if (!status.report->notice.empty())
+            ImGui::TextWrapped("notice: %s", status.report->notice.c_str());
+    }
+    if (!status.note.empty()) ImGui::TextWrapped("%s", status.note.c_str());
+    if (!message_.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+        ImGui::TextWrapped("refused: %s", message_.c_str());
+        ImGui::PopStyleColor();
+    }
+    drawTimings(status);
+    if (ImGui::CollapsingHeader("Settings", ImGuiTreeNodeFlags_DefaultOpen)) drawSettings(o);
+    if (ImGui::CollapsingHeader("Lights")) drawLights(scene);
+    if (ImGui::CollapsingHeader("Medium")) drawMedium(scene);
+    ImGui::End();
+}
+
+void SettingsPanel::drawTimings(const PanelStatus& status) const {
+    ImGui::Text("device memory in use: %.1f MiB",
+                static_cast<double>(status.deviceBytes) / (1024.0 * 1024.0));
+    const lightscatter::FrameReport* r = status.report;
+    if (!r || !r->timed) return;
+    ImGui::TextWrapped("plugin: %.2f ms on the GPU%s", r->totalMilliseconds,
+                       status.cpuDevice ? " (a CPU device: CPU timings)" : "");
+    // One bar per pass in execution order, as long as its share of the slowest pass; a scrolling
+    // box of its own, so that epipolar's dozens of passes leave room for the settings.
+    double longest = 0.0;
+    for (const auto& p : r->passes) longest = std::max(longest, p.milliseconds);
+    ImGui::BeginChild("passes", ImVec2(0.0f, 150.0f), true);
+    for (const auto& p : r->passes) {
+        char label[160];
+        std::snprintf(label, sizeof label, "%s %.2f ms", p.name.c_str(), p.milliseconds);
+        ImGui::ProgressBar(longest > 0 ? static_cast<float>(p.milliseconds / longest) : 0.0f,
+                           ImVec2(-1.0f, 0.0f), label);
+    }
+    ImGui::EndChild();
+}
+
+void SettingsPanel::drawSettings(RenderOptions& o) {
+    const lightscatter::Settings shown = effective(o);
+    for (const SettingField& f : settingFields()) {
+        ImGui::PushID(f.name);
+        const double v = fieldValue(shown, f);
+        switch (f.kind) {
+            case SettingField::Kind::Whole: {
+                int i = static_cast<int>(std::min(v, 2147483647.0));
+                if (ImGui::SliderInt(
+                        f.name, &i, static_cast<int>(f.min), static_cast<int>(f.max), "%d",
+                        f.max > 64 ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None))
+                    setField(o, f, i);
+                break;
+            }
+            case SettingField::Kind::Number: {
+                float x = static_cast<float>(v);
+                const ImGuiSliderFlags flags =
+                    f.logarithmic ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None;
+                if (ImGui::SliderFloat(f.name, &x, static_cast<float>(f.min),
+                                       static_cast<float>(f.max), "%.4g", flags))
+                    setField(o, f, x);
+                break;
+            }
+            case SettingField::Kind::Boolean: {
+                bool b = v != 0.0;
+                if (ImGui::Checkbox(f.name, &b)) setField(o, f, b ? 1.0 : 0.0);
+                break;
+            }
+            case SettingField::Kind::Choice: {
+                int c = static_cast<int>(v);
+                const size_t n = f.choices.size();
+                if (ImGui::BeginCombo(f.name, c >= 0 && size_t(c) < n ? f.choices[c] : "?")) {
+                    for (size_t k = 0; k < n; ++k)
+                        if (ImGui::Selectable(f.choices[k], int(k) == c)) setField(o, f, double(k));
+                    ImGui::EndCombo();
+                }
+                break;
+            }
+            case SettingField::Kind::Vector4: {
+                float a[4];
+                for (int c = 0; c < 4; ++c) a[c] = static_cast<float>(fieldValue(shown, f, c));
+                if (ImGui::SliderFloat4(f.name, a, static_cast<float>(f.min),
+                                        static_cast<float>(f.max), "%.3f"))
+                    for (int c = 0; c < 4; ++c) setField(o, f, a[c], c);
+                break;
+            }
+        }
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("%s%s", f.help,
+                              f.profileSized ? " (the profile's; editing it selects custom)" : "");
+        ImGui::PopID();
+    }
+    ImGui::InputText("file", savePath_.data(), savePath_.size());
+    if (ImGui::Button("save settings")) saved_ = save(o, savePath_.data());
+    if (!saved_.empty()) ImGui::TextWrapped("%s", saved_.c_str());
+}
+
+void SettingsPanel::drawLights(SceneDesc& scene) {
+    for (size_t i = 0; i < scene.lightCount(); ++i) {
+        LightDesc& l = scene.lightAt(i);
+        ImGui::PushID(static_cast<int>(i));
+        ImGui::Text("light %zu", i);
+        int type = lightTypeIndex(l.type);
+        if (ImGui::Combo("type", &type, kLightTypes.data(), int(kLightTypes.size())))
+            setLightType(scene, i, lightTypeAt(type));
+        if (l.type != LightType::Directional)
+            ImGui::DragFloat3("position", &l.position.x, 0.05f, -1e4f, 1e4f, "%.2f");
+        if (l.type != LightType::Point) {
+            glm::vec3 d = l.direction;
+            if (ImGui::DragFloat3("direction", &d.x, 0.01f, -1.0f, 1.0f, "%.3f") &&
+                glm::length(d) > 1e-3f)
+                l.direction = glm::normalize(d);
+        }
+        dragVec3("intensity", l.intensity, 0.0f, lightscatter::limits::kMaxIntensity, "%.4g");
+        if (l.type == LightType::Spot) {
+            ImGui::SliderFloat("inner cone", &l.innerConeAngleDegrees, 0.1f, 89.0f, "%.1f deg");
+            ImGui::SliderFloat("outer cone", &l.outerConeAngleDegrees, 0.1f, 89.0f, "%.1f deg");
+        }
+        if (l.type != LightType::Directional)
+            ImGui::DragFloat("range", &l.range, 0.1f, 0.01f, 1e30f, "%.4g",
+                             ImGuiSliderFlags_Logarithmic);
+        int sm =
+            static_cast<int>(std::find(kShadowSizes.begin(), kShadowSizes.end(), l.shadowMapSize) -
+                             kShadowSizes.begin());
+        const std::string current = std::to_string(l.shadowMapSize);
+        if (ImGui::BeginCombo("shadow map", l.shadowMapSize ? current.c_str() : "none")) {
+            for (size_t k = 0; k < kShadowSizes.size(); ++k) {
+                const std::string name = kShadowSizes[k] ? std::to_string(kShadowSizes[k]) : "none";
+                if (ImGui::Selectable(name.c_str(), int(k) == sm))
+                    setShadowMapSize(scene, i, kShadowSizes[k]);
+            }
+            ImGui::EndCombo();
+        }
+        ImGui::Separator();
+        ImGui::PopID();
+    }
+}
+
+void SettingsPanel::drawMedium(SceneDesc& scene) {
+    MediumDesc& m = scene.medium;
+    const float maxC = lightscatter::limits::kMaxCoefficient;
+    dragVec3("betaR (1/m)", m.betaR, 0.0f, maxC, "%.3e");
+    dragVec3("betaM (1/m)", m.betaM, 0.0f, maxC, "%.3e");
+    dragVec3("sigmaA (1/m)", m.sigmaA, 0.0f, maxC, "%.3e");
+    ImGui::SliderFloat("g", &m.g, -0.99f, 0.99f, "%.3f");
+    int phase = phaseIndex(m.phase);
+    if (ImGui::Combo("phase", &phase, kPhases.data(), int(kPhases.size())))
+        m.phase = phaseAt(phase);
+    ImGui::DragFloat("max distance (m)", &m.maxDistance, 1.0f, 1e-3f, 1e8f, "%.4g",
+                     ImGuiSliderFlags_Logarithmic);
+}
+
+}  // namespace host

@@ -1,0 +1,66 @@
+#pragma once
+// The viewer's settings panel: the method and profile, every field of lightscatter::Settings (the
+// list of settings_fields.h), each light and the medium, the frame's report (auto's choice and
+// why), the GPU time of each pass as bars and the device memory in use, and "save settings".
+// Every edit goes through the functions below, which the widgets and a panel script
+// (--panel-script) call alike; what the plugin refuses is shown in its own words and the last frame
+// it accepted keeps running (the viewer reverts the edit).
+#include <array>
+#include <string>
+#include <vector>
+
+#include <lightscatter/lightscatter.h>
+#include "engine_renderer.h"
+#include "scene/scene.h"
+#include "settings_fields.h"
+
+namespace host {
+
+// What the panel shows beside what it edits.
+struct PanelStatus {
+    const lightscatter::FrameReport* report = nullptr;  // the last finished frame's, if any
+    bool cpuDevice = false;                             // lavapipe: timings are CPU figures
+    uint64_t deviceBytes = 0;                           // the runtime's counter
+    std::string note;                                   // the viewer's word (a method's limits)
+};
+
+class SettingsPanel {
+  public:
+    explicit SettingsPanel(const std::string& saveName = "lightscatter-settings.json");
+
+    // The edits. A profile-sized field (SettingField::profileSized) edited under a profile other
+    // than custom switches to custom, starting from that profile's sizes, so the edit is what runs.
+    void setMethod(RenderOptions& o, lightscatter::Method m) const;
+    void setProfile(RenderOptions& o, lightscatter::Profile p) const;
+    void setField(RenderOptions& o, const SettingField& f, double value, int component = 0) const;
+    // A light's type or shadow-map size changes the engine's targets: rebuildTargets() says so
+    // once.
+    void setLightType(SceneDesc& s, size_t light, lightscatter::LightType type);
+    void setShadowMapSize(SceneDesc& s, size_t light, uint32_t size);
+    bool rebuildTargets();
+
+    // The settings a frame with these options runs with: the profile's sizes over `custom`.
+    static lightscatter::Settings effective(const RenderOptions& o);
+    // Writes them to `path` as a --settings file (every field); returns the line to show.
+    std::string save(const RenderOptions& o, const std::string& path) const;
+
+    // The plugin refused the last edit (its message), or accepted the frame.
+    void refused(const std::string& message) { message_ = message; }
+    const std::string& message() const { return message_; }
+
+    // Draws the panel (inside an ImGui frame); edits `o` and `scene` through the functions above.
+    void draw(RenderOptions& o, SceneDesc& scene, const PanelStatus& status);
+
+  private:
+    void drawSettings(RenderOptions& o);
+    void drawLights(SceneDesc& scene);
+    void drawMedium(SceneDesc& scene);
+    void drawTimings(const PanelStatus& status) const;
+
+    bool rebuild_ = false;
+    std::string message_;               // the plugin's refusal, shown until the next accepted edit
+    std::array<char, 512> savePath_{};  // the "file" field
+    std::string saved_;                 // the line "save settings" gave
+};
+
+}  // namespace host

@@ -1,0 +1,188 @@
+// The viewer's settings panel under Xvfb, driven by --panel-script through the panel's own edit
+// functions: every field of lightscatter::Settings set in turn, and the report of the frame after
+// each edit (--report-log: each light's settings as the plugin ran them) shows it; an edit the
+// plugin refuses is shown, undone, and the window runs on.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.h"
+#include "settings_fields.h"
+
+namespace {
+
+using nlohmann::json;
+
+const char* kXvfb = "xvfb-run -a -s '-screen 0 640x480x24'";
+
+// A value of every field, none its default, each valid for auto on engine_spot (a shadowed spot):
+// the noise sends auto to planes, the simplified model to beam-tree-analytic, no shadow sampling
+// to cone-march.
+const std::map<std::string, json>& testValues() {
+    static const std::map<std::string, json> v = {
+        {"slices", 256},
+        {"samplesPerSlice", 128},
+        {"initialSampleStep", 8},
+        {"refinementThreshold", 0.05},
+        {"inscatterRefinementThreshold", 0.1},
+        {"bilateralThreshold", 0.2},
+        {"minMaxTrees", false},
+        {"shadowFilter", "nearest"},
+        {"fixup", false},
+        {"fixupMaxSteps", 64},
+        {"shadowDepthBias", 0.001},
+        {"interpolation", "inscattering"},
+        {"shadowMapSize", 1024},
+        {"coneSamples", 16},
+        {"coneLimited", false},
+        {"coneJitter", true},
+        {"shadowSampling", false},
+        {"planeCount", 64},
+        {"planeSpacing", 0.5},
+        {"planeTarget", "float32"},
+        {"planeScaling", true},
+        {"planeRange", 10.0},
+        {"planeDither", false},
+        {"planeBlur", 2},
+        {"planeAmbient", 0.5},
+        {"noiseAmplitude", 0.5},
+        {"noiseScale", 2.0},
+        {"noiseVelocity", {0.1, 0.2, 0.3, 0.4}},
+        {"lightModel", "simplified"},
+        {"simplifiedA0", 0.01},
+        {"simplifiedA1", 2.0},
+        {"froxelTile", 4},
+        {"froxelSlices", 32},
+        {"froxelFarDistance", 50.0},
+        {"froxelTemporal", true},
+        {"froxelHistoryWeight", 0.5},
+    };
+    return v;
+}
+
+bool same(const json& a, const json& b) {
+    if (a.is_number() && b.is_number())
+        return std::fabs(a.get<double>() - b.get<double>()) <=
+               1e-6 * std::max(1.0, std::fabs(b.get<double>()));
+    if (a.is_array() && b.is_array() && a.size() == b.size()) {
+        for (size_t i = 0; i < a.size(); ++i)
+            if (!same(a[i], b[i])) return false;
+        return true;
+    }
+    return a == b;
+}
+
+json readLog(const std::string& name) {
+    std::ifstream in(cli_test::path(name));
+    return json::parse(in);
+}
+
+}  // namespace
+
+TEST(Panel, SetsEverySettingAndTheNextReportShowsIt) {
+    ASSERT_EQ(std::system("command -v xvfb-run > /dev/null"), 0)
+        << "xvfb-run is missing (Debian package xvfb)";
+    const auto& fields = host::settingFields();
+    // A field added to Settings (and to settings_fields.cpp) needs a value here.
+    for (const host::SettingField& f : fields)
+        ASSERT_TRUE(testValues().count(f.name)) << f.name << " has no test value";
+    ASSERT_EQ(testValues().size(), fields.size());
+    // Step k sets field k and puts field k - 1 back to its default, so that each edit is judged
+    // alone (the noise and the simplified model cannot run together).
+    const lightscatter::Settings defaults;
+    json script = json::array();
+    for (size_t k = 0; k < fields.size(); ++k) {
+        json step = {{"settings", {{fields[k].name, testValues().at(fields[k].name)}}}};
+        if (k == 0) {
+            step["method"] = "auto";
+            step["profile"] = "custom";
+        } else {
+            step["settings"][fields[k - 1].name] = host::fieldJson(defaults, fields[k - 1]);
+        }
+        script.push_back(step);
+    }
+    cli_test::writeFile("script.json", script.dump());
+    const auto r = cli_test::run("view " + cli_test::scene("engine_spot") +
+                                     " --size 64x36 --frames " + std::to_string(fields.size() + 1) +
+                                     " --panel-script script.json --report-log log.json"
+                                     " --validation",
+                                 kXvfb);
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    const json log = readLog("log.json");
+    std::map<long, json> byStep;
+    for (const json& e : log)
+        if (e["step"].get<long>() >= 0) byStep[e["step"].get<long>()] = e;
+    for (size_t k = 0; k < fields.size(); ++k) {
+        const std::string name = fields[k].name;
+        ASSERT_TRUE(byStep.count(long(k))) << "no report of the frame after setting " << name;
+        const json& e = byStep[long(k)];
+        EXPECT_EQ(e["refused"], "") << name;
+        ASSERT_FALSE(e["lights"].empty()) << name;
+        const json shown = e["lights"][0]["settings"][name];
+        EXPECT_TRUE(same(shown, testValues().at(name)))
+            << name << ": the report shows " << shown.dump() << ", the panel set "
+            << testValues().at(name).dump() << " (method " << e["method"] << ")";
+    }
+    // The edits that choose auto's method did.
+    for (size_t k = 0; k < fields.size(); ++k) {
+        const std::string name = fields[k].name;
+        if (name == "noiseAmplitude") {
+            EXPECT_EQ(byStep[long(k)]["method"], "planes");
+        }
+        if (name == "shadowSampling") {
+            EXPECT_EQ(byStep[long(k)]["method"], "cone-march");
+        }
+    }
+}
+
+TEST(Panel, ARefusedEditIsShownUndoneAndTheWindowRunsOn) {
+    ASSERT_EQ(std::system("command -v xvfb-run > /dev/null"), 0)
+        << "xvfb-run is missing (Debian package xvfb)";
+    cli_test::writeFile("script.json", R"([{"profile": "custom", "settings": {"slices": 256}},
+                                           {"settings": {"slices": 6}}, {}])");
+    const auto r = cli_test::run("view " + cli_test::scene("engine_spot") +
+                                     " --size 64x36 --frames 3 --panel-script script.json"
+                                     " --report-log log.json --validation",
+                                 kXvfb);
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    const json log = readLog("log.json");
+    bool seen = false;
+    for (const json& e : log) {
+        if (e["step"] != 1) continue;
+        seen = true;
+        EXPECT_NE(e["refused"].get<std::string>().find("slices = 6"), std::string::npos)
+            << e["refused"];
+        EXPECT_EQ(e["lights"][0]["settings"]["slices"], 256);  // the last accepted
+    }
+    EXPECT_TRUE(seen) << log.dump();
+}
+
+TEST(Panel, SaveSettingsWritesAFileTheCommandLineReadsBack) {
+    ASSERT_EQ(std::system("command -v xvfb-run > /dev/null"), 0)
+        << "xvfb-run is missing (Debian package xvfb)";
+    cli_test::writeFile("script.json", R"([{"profile": "custom", "method": "epipolar",
+        "settings": {"slices": 128, "planeBlur": 3, "shadowFilter": "nearest"},
+        "save": "saved.json"}])");
+    const auto r = cli_test::run("view " + cli_test::scene("engine_spot") +
+                                     " --size 64x36 --frames 1 --panel-script script.json"
+                                     " --screenshot panel.png --validation",
+                                 kXvfb);
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    std::ifstream in(cli_test::path("saved.json"));
+    const json saved = json::parse(in);
+    EXPECT_EQ(saved["slices"], 128);
+    EXPECT_EQ(saved["planeBlur"], 3);
+    EXPECT_EQ(saved["shadowFilter"], "nearest");
+    EXPECT_EQ(saved.size(), host::settingFields().size());
+    // The budget reads it as a --settings file: the saved slices are what it lays out.
+    const auto b = cli_test::run(
+        "budget --method epipolar --profile custom --settings saved.json"
+        " --size 64x36 --json");
+    ASSERT_EQ(b.exitCode, 0) << b.out;
+    const json budget = json::parse(b.out.substr(b.out.find('[')));
+    EXPECT_EQ(budget[0]["slices"], 128) << b.out;
+}
