@@ -3,7 +3,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
-scripts/build.sh  # the same configuration as scripts/test.sh, which then rebuilds nothing
+# The program alone (the tests are scripts/test.sh's to build), in the configuration scripts/test.sh
+# uses, so that it rebuilds none of it.
+scripts/build.sh lightscatter
 mkdir -p out
 ./build/host_example/lightscatter render scenes/atrium.json --size 960x540 --out out/atrium.png \
     --inscatter out/atrium-inscatter.exr --timings out/atrium-timings.json

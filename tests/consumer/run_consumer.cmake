@@ -2,6 +2,9 @@
 #   -DMODE=package       installs BUILD_DIR into WORK_DIR/prefix (cmake --install), checks what was
 #                        installed, builds tests/consumer/package against it and runs it, and the
 #                        volk-style engine, after checking with READELF that it needs no libvulkan
+#   -DMODE=deb           makes the Debian package (cpack -G DEB in BUILD_DIR), unpacks it into a
+#                        scratch root, checks its name and dependencies, and builds the same engine
+#                        against the root's /usr
 #   -DMODE=subdirectory  builds tests/consumer/subdirectory (add_subdirectory of SOURCE_DIR, shared
 #                        library), checks that the library exports only lightscatter::, runs it
 # Other variables: SOURCE_DIR, BUILD_DIR, WORK_DIR, JOBS, NM, READELF.
@@ -35,7 +38,7 @@ if(MODE STREQUAL "package")
   string(REPLACE ";" "\n  " listing "${installed}")
   message(STATUS "installed:\n  ${listing}")
   foreach(expected include/lightscatter/lightscatter.h include/lightscatter/vocabulary.h
-                   lightscatterConfig.cmake
+                   pkgconfig/lightscatter.pc lightscatterConfig.cmake
                    lightscatterConfigVersion.cmake lightscatterTargets.cmake liblightscatter.a)
     if(NOT installed MATCHES "(^|;|/)${expected}(;|$)")
       message(FATAL_ERROR "cmake --install did not install ${expected}")
@@ -59,12 +62,35 @@ if(MODE STREQUAL "package")
   endif()
   run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/consumer/package -B ${consumer_build}
       -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix})
+elseif(MODE STREQUAL "deb")
+  get_filename_component(cmake_bin "${CMAKE_COMMAND}" DIRECTORY)
+  run(${cmake_bin}/cpack -G DEB -B ${WORK_DIR}/cpack --config ${BUILD_DIR}/CPackConfig.cmake)
+  file(GLOB debs ${WORK_DIR}/cpack/*.deb)
+  list(LENGTH debs count)
+  if(NOT count EQUAL 1)
+    message(FATAL_ERROR "cpack -G DEB made ${count} packages: ${debs}")
+  endif()
+  run(dpkg-deb -f ${debs} Package Depends Version)
+  if(NOT last_output MATCHES "Package: liblightscatter-dev" OR NOT last_output MATCHES "Depends: libvulkan-dev")
+    message(FATAL_ERROR "the package's control fields:\n${last_output}")
+  endif()
+  message(STATUS "${debs}:\n${last_output}")
+  run(dpkg-deb -x ${debs} ${WORK_DIR}/root)
+  set(prefix ${WORK_DIR}/root/usr)
+  file(GLOB_RECURSE packaged RELATIVE ${WORK_DIR}/root ${WORK_DIR}/root/*)
+  foreach(expected usr/include/lightscatter/lightscatter.h lightscatter.pc lightscatterConfig.cmake)
+    if(NOT packaged MATCHES "(^|;|/)${expected}(;|$)")
+      message(FATAL_ERROR "the package holds no ${expected}: ${packaged}")
+    endif()
+  endforeach()
+  run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/consumer/package -B ${consumer_build}
+      -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix})
 elseif(MODE STREQUAL "subdirectory")
   # No build type given: the engine's empty CMAKE_BUILD_TYPE must survive add_subdirectory.
   run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/consumer/subdirectory -B ${consumer_build}
       -DLIGHTSCATTER_SOURCE_DIR=${SOURCE_DIR})
 else()
-  message(FATAL_ERROR "MODE must be package or subdirectory, not '${MODE}'")
+  message(FATAL_ERROR "MODE must be package, deb or subdirectory, not '${MODE}'")
 endif()
 
 run(${CMAKE_COMMAND} --build ${consumer_build} -j ${JOBS})
@@ -121,4 +147,17 @@ if(MODE STREQUAL "package")
   message(STATUS "volk_style_engine needs:\n  ${needed}")
   run(${consumer_build}/volk_style_engine)
   message(STATUS "volk_style_engine:\n${last_output}")
+
+  # An engine built without CMake: the compiler's flags from pkg-config alone.
+  file(GLOB_RECURSE pc_file ${prefix}/lightscatter.pc)
+  get_filename_component(pc_dir "${pc_file}" DIRECTORY)
+  set(ENV{PKG_CONFIG_PATH} "${pc_dir}")
+  run(pkg-config --cflags --libs lightscatter)
+  string(STRIP "${last_output}" pc_flags)
+  message(STATUS "pkg-config --cflags --libs lightscatter: ${pc_flags}")
+  separate_arguments(pc_flags UNIX_COMMAND "${pc_flags}")
+  run(c++ -o ${WORK_DIR}/pkgconfig_engine ${SOURCE_DIR}/tests/consumer/engine/headless_engine.cpp
+      ${SOURCE_DIR}/tests/plugin/readme_example.cpp -I${SOURCE_DIR}/tests/plugin ${pc_flags} -lvulkan)
+  run(${WORK_DIR}/pkgconfig_engine)
+  message(STATUS "pkgconfig_engine:\n${last_output}")
 endif()
