@@ -125,7 +125,7 @@ std::string SettingsPanel::save(const RenderOptions& o, const std::string& path)
 
 void SettingsPanel::draw(RenderOptions& o, SceneDesc& scene, const PanelStatus& status) {
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(380, 520), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(480, 560), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowBgAlpha(0.85f);
     if (!ImGui::Begin("lightscatter (F1 hides)")) {
         ImGui::End();
