@@ -363,13 +363,15 @@ class ConfigReader {
                 "label",       "method",      "from",          "slices",       "samples",
                 "initialStep", "minMaxTrees", "shadowMapSize", "coneSamples",  "coneMode",
                 "planeCount",  "planeBlur",   "planeTarget",   "planeSpacing", "sizes"};
-            for (const auto& [key, value] : o.items())
+            for (const auto& item : o.items()) {
+                const std::string& key = item.key();
                 if (std::find_if(std::begin(kKeys), std::end(kKeys),
-                                 [&](const char* k) { return key == k; }) == std::end(kKeys))
+                                 [&key](const char* k) { return key == k; }) == std::end(kKeys))
                     fail(at + ": unknown key '" + echoText(key) +
                          "' (known: label, method, from, slices, samples, initialStep, "
                          "minMaxTrees, shadowMapSize, coneSamples, coneMode, planeCount, "
                          "planeBlur, planeTarget, planeSpacing, sizes)");
+            }
             if (!o.contains("label")) fail(at + ".label is required");
             BenchRun r;
             r.family = "configurations";
