@@ -1,5 +1,7 @@
 #include "bvh.h"
 
+#include "embree_occlusion.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -120,7 +122,7 @@ std::optional<double> intersectTriangle(const PreparedRay& r, const Triangle& tr
     return t;
 }
 
-Bvh::Bvh(std::vector<Triangle> triangles) {
+Bvh::Bvh(std::vector<Triangle> triangles, Traversal traversal) {
     for (const Triangle& t : triangles) {
         for (const glm::dvec3& p : {t.a, t.b, t.c}) {
             const glm::dvec3 m = glm::abs(p);
@@ -138,9 +140,10 @@ Bvh::Bvh(std::vector<Triangle> triangles) {
     triangles_ = std::move(triangles);
     nodes_.reserve(2 * triangles_.size());
     build(0, static_cast<uint32_t>(triangles_.size()), centroids);
+    if (traversal == Traversal::Embree) embree_ = makeEmbreeOcclusion(triangles_, coordinateScale_);
 }
 
-Bvh Bvh::fromMesh(const MeshData& mesh) {
+Bvh Bvh::fromMesh(const MeshData& mesh, Traversal traversal) {
     std::vector<Triangle> triangles;
     auto vertex = [&](uint32_t index) -> glm::dvec3 {
         if (index >= mesh.vertices.size()) {
@@ -159,7 +162,7 @@ Bvh Bvh::fromMesh(const MeshData& mesh) {
             triangles.push_back({vertex(idx[0]), vertex(idx[1]), vertex(idx[2])});
         }
     }
-    return Bvh(std::move(triangles));
+    return Bvh(std::move(triangles), traversal);
 }
 
 // Builds the subtree over triangles_[begin, end) (reordering that range and `centroids` alike)
@@ -329,6 +332,22 @@ std::optional<RayHit> Bvh::closestHit(const PreparedRay& ray, double tMin, doubl
 }
 
 bool Bvh::anyHit(const PreparedRay& ray, double tMin, double tMax) const {
+    if (embree_ != nullptr)
+        if (const std::optional<bool> hit = embree_->anyHit(ray, tMin, tMax)) return *hit;
+    return anyHitOwn(ray, tMin, tMax);
+}
+
+void Bvh::anyHit(std::span<const OcclusionQuery> queries, std::span<uint8_t> hits) const {
+    if (hits.size() != queries.size())
+        throw std::invalid_argument("reference BVH: one hit flag per occlusion query");
+    std::fill(hits.begin(), hits.end(), EmbreeOcclusion::kUnanswered);
+    if (embree_ != nullptr) embree_->anyHit(queries, hits);
+    for (std::size_t i = 0; i < queries.size(); ++i)
+        if (hits[i] == EmbreeOcclusion::kUnanswered)
+            hits[i] = anyHitOwn(queries[i].ray, queries[i].tMin, queries[i].tMax) ? 1 : 0;
+}
+
+bool Bvh::anyHitOwn(const PreparedRay& ray, double tMin, double tMax) const {
     if (nodes_.empty()) return false;
     std::array<uint32_t, kStackSize> stack;
     int top = 0;

@@ -3,7 +3,9 @@
 // reference's visibility must not inherit a shadow map's resolution or bias, so every shadow ray is
 // traced against the triangles themselves.
 #include <cstdint>
+#include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -36,24 +38,47 @@ struct PreparedRay {
 [[nodiscard]] std::optional<double> intersectTriangle(const PreparedRay& ray, const Triangle& tri,
                                                       double tMin, double tMax);
 
+// One question for Bvh::anyHit.
+struct OcclusionQuery {
+    PreparedRay ray;
+    double tMin = 0.0, tMax = 0.0;
+};
+
 struct RayHit {
     double t = 0.0;
     uint32_t triangle = 0;  // index into Bvh::triangles()
 };
 
+class EmbreeOcclusion;
+
 // A bounding volume hierarchy built with binned SAH (median split where every centroid coincides).
+// Where the build has Embree, anyHit traverses Embree's BVH over the same triangles instead
+// (embree_occlusion.h) and tests each candidate with the same double test: the same answers,
+// several times sooner.
 class Bvh {
   public:
+    // Who traverses for anyHit: Embree where the build has it, or always this BVH's own nodes
+    // (the same answers, slower: for measuring what Embree saves).
+    enum class Traversal { Embree, Own };
+
     Bvh() = default;
-    explicit Bvh(std::vector<Triangle> triangles);
+    explicit Bvh(std::vector<Triangle> triangles, Traversal traversal = Traversal::Embree);
     // Every primitive's triangles, in world space.
-    static Bvh fromMesh(const MeshData& mesh);
+    static Bvh fromMesh(const MeshData& mesh, Traversal traversal = Traversal::Embree);
 
     // The nearest hit with t in [tMin, tMax].
     [[nodiscard]] std::optional<RayHit> closestHit(const PreparedRay& ray, double tMin,
                                                    double tMax) const;
     // Whether anything is hit with t in [tMin, tMax]; stops at the first hit found.
     [[nodiscard]] bool anyHit(const PreparedRay& ray, double tMin, double tMax) const;
+    // anyHit of each query: hits[i] is 1 where queries[i] hits, else 0 (hits.size() ==
+    // queries.size()). Through Embree, rays that go together (points of one view ray towards one
+    // light) are traced as SIMD packets, which is where batching pays.
+    void anyHit(std::span<const OcclusionQuery> queries, std::span<uint8_t> hits) const;
+    // The same, always through this BVH's own nodes (what anyHit's Embree path must equal).
+    [[nodiscard]] bool anyHitOwn(const PreparedRay& ray, double tMin, double tMax) const;
+    // Whether anyHit goes through Embree.
+    [[nodiscard]] bool usesEmbree() const { return embree_ != nullptr; }
 
     // In the BVH's own order (leaves hold consecutive runs).
     [[nodiscard]] const std::vector<Triangle>& triangles() const { return triangles_; }
@@ -74,6 +99,7 @@ class Bvh {
     std::vector<Triangle> triangles_;
     std::vector<Node> nodes_;
     double coordinateScale_ = 0.0;
+    std::shared_ptr<const EmbreeOcclusion> embree_;  // shared by copies; owns its triangles
 };
 
 }  // namespace host::reference

@@ -52,7 +52,7 @@ ls::ref::Medium toReferenceMedium(const MediumDesc& m) {
 ReferenceScene::ReferenceScene(const SceneDesc& scene, const MeshData& mesh, uint32_t width,
                                uint32_t height, const ReferenceOptions& options)
     : camera_(scene.camera, width, height),
-      bvh_(Bvh::fromMesh(mesh)),
+      bvh_(Bvh::fromMesh(mesh, options.traversal)),
       medium_(toReferenceMedium(scene.medium)),
       options_(options) {
     const double aspect = static_cast<double>(width) / static_cast<double>(height);

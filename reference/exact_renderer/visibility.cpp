@@ -15,15 +15,37 @@ LightVisibility::LightVisibility(const Bvh& bvh, const ls::ref::Light& light)
     if (light.type == ls::ref::Light::Directional) towardLight_ = -glm::normalize(light.direction);
 }
 
-bool LightVisibility::visible(const glm::dvec3& p) const {
-    if (light_.type == ls::ref::Light::Directional) {
-        return !bvh_->anyHit(PreparedRay(p, towardLight_), offset_,
-                             std::numeric_limits<double>::infinity());
-    }
+std::optional<OcclusionQuery> LightVisibility::shadowRay(const glm::dvec3& p) const {
+    if (light_.type == ls::ref::Light::Directional)
+        return OcclusionQuery{PreparedRay(p, towardLight_), offset_,
+                              std::numeric_limits<double>::infinity()};
     const glm::dvec3 toLight = light_.position - p;
     const double distance = glm::length(toLight);
-    if (!(distance > 2.0 * offset_)) return true;  // at the light (or NaN): nothing in between
-    return !bvh_->anyHit(PreparedRay(p, toLight / distance), offset_, distance - offset_);
+    if (!(distance > 2.0 * offset_)) return std::nullopt;  // at the light (or NaN)
+    return OcclusionQuery{PreparedRay(p, toLight / distance), offset_, distance - offset_};
+}
+
+bool LightVisibility::visible(const glm::dvec3& p) const {
+    const std::optional<OcclusionQuery> q = shadowRay(p);
+    return !q || !bvh_->anyHit(q->ray, q->tMin, q->tMax);
+}
+
+void LightVisibility::visible(std::span<const glm::dvec3> points, std::span<uint8_t> out) const {
+    thread_local std::vector<OcclusionQuery> queries;
+    thread_local std::vector<std::size_t> asked;  // the point of each query
+    thread_local std::vector<uint8_t> hits;
+    queries.clear();
+    asked.clear();
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        out[i] = 1;
+        if (std::optional<OcclusionQuery> q = shadowRay(points[i])) {
+            queries.push_back(*q);
+            asked.push_back(i);
+        }
+    }
+    hits.resize(queries.size());
+    bvh_->anyHit(queries, hits);
+    for (std::size_t k = 0; k < queries.size(); ++k) out[asked[k]] = hits[k] ? 0 : 1;
 }
 
 namespace {
@@ -57,6 +79,8 @@ std::vector<ls::ref::Interval> litIntervals(const LightVisibility& visibility,
 
     std::vector<ls::ref::Interval> lit;
     std::vector<double> points;
+    std::vector<glm::dvec3> positions;
+    std::vector<uint8_t> grid;  // V at each of `points`, asked of the BVH together
     for (const ls::ref::Interval& in : volume) {
         points.assign(1, in.begin);
         const int first = static_cast<int>(std::floor(in.begin / spacing)) + 1;
@@ -67,10 +91,16 @@ std::vector<ls::ref::Interval> litIntervals(const LightVisibility& visibility,
         }
         points.push_back(in.end);
 
-        bool previous = visible(points[0]);
+        positions.resize(points.size());
+        for (std::size_t i = 0; i < points.size(); ++i)
+            positions[i] = ray.origin + std::min(points[i], lastPoint) * ray.direction;
+        grid.resize(points.size());
+        visibility.visible(positions, grid);
+
+        bool previous = grid[0] != 0;
         double start = in.begin;
         for (std::size_t i = 1; i < points.size(); ++i) {
-            const bool v = visible(points[i]);
+            const bool v = grid[i] != 0;
             if (v == previous) continue;
             const double edge = bisect(visible, points[i - 1], points[i], previous, tol);
             if (v) {

@@ -1,6 +1,9 @@
 #pragma once
 // docs/model.md's V: exact visibility of the light from a point of the medium, traced against the
 // scene's triangles, and the lit intervals of a view ray found from it.
+#include <cstdint>
+#include <optional>
+#include <span>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -28,8 +31,13 @@ class LightVisibility {
     // -direction to infinity) misses every triangle. A triangle through p itself does not count
     // (see kShadowOffset), nor one through the light's position.
     [[nodiscard]] bool visible(const glm::dvec3& p) const;
+    // visible() of each point (out[i] for points[i], 1 or 0), asked of the BVH together.
+    void visible(std::span<const glm::dvec3> points, std::span<uint8_t> out) const;
 
   private:
+    // The shadow ray from p, or nothing when p is at the light (nothing can lie in between).
+    [[nodiscard]] std::optional<OcclusionQuery> shadowRay(const glm::dvec3& p) const;
+
     const Bvh* bvh_;
     ls::ref::Light light_;
     glm::dvec3 towardLight_{0.0};  // directional only: unit -direction

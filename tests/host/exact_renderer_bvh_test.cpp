@@ -1,5 +1,6 @@
 // The reference's ray queries: the watertight triangle test, the BVH against a brute-force loop
-// over the same triangles, and closed meshes that a ray must never slip through.
+// over the same triangles, closed meshes that a ray must never slip through, and Embree's
+// traversal answering exactly as the double BVH's own on rays that graze edges by a few ulps.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,11 +13,14 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "exact_renderer/bvh.h"
+#include "exact_renderer/embree_occlusion.h"
 
 namespace {
 
 using host::reference::Bvh;
+using host::reference::EmbreeOcclusion;
 using host::reference::intersectTriangle;
+using host::reference::OcclusionQuery;
 using host::reference::PreparedRay;
 using host::reference::Triangle;
 
@@ -225,6 +229,61 @@ TEST(ReferenceBvh, NoRayLeaksThroughSharedEdgesOrVertices) {
         }
     }
     EXPECT_GT(rays, 5000);
+}
+
+// Embree decides in float which boxes a ray enters; the answer must still be the double test's.
+// Rays aimed at points on triangles' edges and vertices, and at points moved off an edge by
+// distances from 1e-14 to 1e-5 of the scene (inside and outside: float rounding alone would
+// misjudge most of these), with tMax ending exactly at the target half the time, and from origins
+// so far out that the double BVH must answer instead.
+TEST(ReferenceBvh, EmbreeAnswersAsTheDoubleBvhOnRaysThatGrazeEdges) {
+    std::mt19937_64 rng(23);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::uniform_real_distribution<double> pos(-14.0, 14.0);
+    const std::vector<Triangle> tris = randomSoup(rng, 400);
+    const Bvh bvh(tris);
+#ifdef LS_REFERENCE_EMBREE
+    ASSERT_TRUE(bvh.usesEmbree()) << "built with Embree, but the BVH does not use it";
+#endif
+    std::vector<OcclusionQuery> queries;
+    for (int i = 0; i < 12000; ++i) {
+        const Triangle& t = tris[static_cast<std::size_t>(i) % tris.size()];
+        const glm::dvec3 corners[3] = {t.a, t.b, t.c};
+        const int e = i % 3;
+        const glm::dvec3 a = corners[e], b = corners[(e + 1) % 3], c = corners[(e + 2) % 3];
+        glm::dvec3 target = i % 5 == 0 ? a : a + unit(rng) * (b - a);
+        // Off the edge, in the triangle's plane, towards the inside (even i) or the outside.
+        const glm::dvec3 edge = b - a;
+        glm::dvec3 inward = (c - a) - edge * (glm::dot(c - a, edge) / glm::dot(edge, edge));
+        if (glm::length(inward) > 0.0 && i % 4 != 0) {
+            const double offset = std::pow(10.0, -14.0 + 9.0 * unit(rng)) * 14.0;
+            target += (i % 2 == 0 ? offset : -offset) * glm::normalize(inward);
+        }
+        const double far = i % 97 == 0 ? 1e4 : 1.0;  // beyond Embree's reach: the own BVH
+        const glm::dvec3 origin = far * glm::dvec3(pos(rng), pos(rng), pos(rng));
+        const glm::dvec3 d = target - origin;
+        if (!(glm::length(d) > 0.0)) continue;
+        const double distance = glm::length(d);
+        const double tMin = i % 3 == 0 ? 0.0 : distance * unit(rng) * 0.5;
+        const double tMax = i % 2 == 0 ? distance : (i % 3 == 0 ? kInf : distance * 1.5);
+        queries.push_back({PreparedRay(origin, d / distance), tMin, tMax});
+    }
+    std::vector<uint8_t> batch(queries.size());
+    bvh.anyHit(queries, batch);
+    int hits = 0, misses = 0;
+    for (std::size_t i = 0; i < queries.size(); ++i) {
+        const OcclusionQuery& q = queries[i];
+        const bool own = bvh.anyHitOwn(q.ray, q.tMin, q.tMax);
+        ASSERT_EQ(own, bruteAny(tris, q.ray, q.tMin, q.tMax)) << "query " << i;
+        ASSERT_EQ(bvh.anyHit(q.ray, q.tMin, q.tMax), own) << "query " << i;
+        ASSERT_EQ(batch[i] != 0, own) << "query " << i << " (batched)";
+        (own ? hits : misses) += 1;
+    }
+    // Both answers are well represented, so a traversal answering either one always would fail.
+    EXPECT_GT(hits, static_cast<int>(queries.size()) / 10);
+    EXPECT_GT(misses, static_cast<int>(queries.size()) / 10);
+    std::vector<uint8_t> wrongSize(queries.size() + 1);
+    EXPECT_THROW(bvh.anyHit(queries, wrongSize), std::invalid_argument);
 }
 
 TEST(ReferenceBvh, FromMeshTakesEveryPrimitiveAndRejectsBadIndices) {
