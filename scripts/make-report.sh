@@ -4,9 +4,10 @@
 #   scripts/make-report.sh                 # bench/report.json at 1920x1080 in two runs: the timings
 #                                          # (measureError false; about 45 minutes on 2 cores, run it on
 #                                          # a quiet machine) and the errors (one frame per configuration
-#                                          # against the float64 references, about 30 minutes the first
-#                                          # time, most of it the references, which build/bench-report-error
-#                                          # /references keeps); then bench/trees.json and
+#                                          # against the float64 references, which build/bench-report-error
+#                                          # /references keeps: 5 minutes of references the first time,
+#                                          # 19 before Embree, "The reference renderer's time"); then
+#                                          # bench/trees.json and
 #                                          # bench/seed_size.json (about 10 minutes, timings), the hard
 #                                          # cases; and about 20 more for bench/planes.json at 1920x1080;
 #                                          # LS_REPORT_PLANES=0 skips it; bench/occluders.json, the beam
@@ -29,7 +30,7 @@
 #   scripts/make-report.sh --froxels-only  # bench/froxels.json (froxels at HDRP's and Unreal's sizes,
 #                                          # plain and temporal, beside epipolar's profiles and brute
 #                                          # force at 1920x1080: a quiet machine; about 40 minutes the
-#                                          # first time, most of it the references, which
+#                                          # first time before Embree, most of it the references, which
 #                                          # build/bench-froxels/references keeps), the budgets, its
 #                                          # plot, and "Against froxel fog" spliced into the page (its
 #                                          # N-lights table from --lights-only's run)
@@ -40,12 +41,16 @@
 #   scripts/make-report.sh --froxels-motion-only # bench/froxels_flicker.json (froxels plain and temporal
 #                                          # under bench/flicker.json's motions at 160x90, beside epipolar
 #                                          # balanced and brute force; about 40 minutes on 2 cores the first
-#                                          # time, most of it the references, which
+#                                          # time before Embree, most of it the references, which
 #                                          # build/bench-froxels-flicker/references keeps) and "Froxels under
 #                                          # motion" spliced into the page
+#   scripts/make-report.sh --reference-only # the float64 reference over bench/report.json's scenes at
+#                                          # 1920x1080 through its double BVH alone and through Embree
+#                                          # (about half an hour; a quiet machine), and "The reference
+#                                          # renderer's time" spliced into the page
 #   scripts/make-report.sh --flicker-only  # bench/flicker.json alone (temporal stability: 60 frames of a
 #                                          # moving light, then camera, per scene and method at 160x90;
-#                                          # about an hour on 2 cores the first time, most of it the float64
+#                                          # about an hour on 2 cores the first time before Embree, most of it the float64
 #                                          # references, which build/bench-flicker/references keeps for
 #                                          # the next run) and its section spliced into the page; a full
 #                                          # run does the same unless LS_REPORT_FLICKER=0, which reuses
@@ -158,6 +163,22 @@ if [[ "$config" == --seeds-only ]]; then
   /usr/bin/python3 scripts/write_report.py --seed003-section build/bench-seed003-1280x720 \
     build/bench-seed003-2560x1440 docs/performance.md
   echo "docs/performance.md: sections 'Seed 000/002/003/004's results beside ours' replaced"
+  exit 0
+fi
+if [[ "$config" == --reference-only ]]; then
+  # The float64 reference over the report's scenes at 1920x1080, through the double BVH alone and
+  # through Embree (about half an hour on 2 cores): a quiet machine.
+  cmake --build build -j"$(nproc)" --target reference_timing > /dev/null
+  dir=build/reference-timing
+  mkdir -p "$dir"
+  uptime > "$dir/load-before.txt"
+  date -u +%Y-%m-%d > "$dir/date.txt"
+  lscpu | sed -n 's/^Model name: *//p' | head -n 1 > "$dir/cpu.txt"
+  mapfile -t scenes < <(/usr/bin/python3 -c 'import json, sys; print("\n".join(json.load(open(sys.argv[1]))["scenes"]))' bench/report.json)
+  ./build/tools/reference_timing/reference_timing --size 1920x1080 --traversal both \
+    --json "$dir/reference_timing.json" "${scenes[@]}"
+  /usr/bin/python3 scripts/write_report.py --reference-section "$dir" docs/performance.md
+  echo "docs/performance.md: section 'The reference renderer's time' replaced"
   exit 0
 fi
 if [[ "$config" == --froxels-motion-only ]]; then

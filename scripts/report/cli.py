@@ -20,6 +20,7 @@ from .lights import LIGHTS_HEADING, lights_section
 from .occluders import OCCLUDERS_HEADING, occluders_section
 from .page import page_lines
 from .planes import FORMER_HEADING, PLANES_HEADING, planes_section
+from .reference import REFERENCE_HEADING, reference_section
 
 
 def flicker_lines(dirs, page):
@@ -60,6 +61,8 @@ SECTIONS = {
                                     SEED002_HEADING)),
     "seed004": (("SEED004_DIR",), "a bench run of bench/seed004.json",
                 lambda dirs, page: (seed004_section(dirs[0]), SEED004_HEADING)),
+    "reference": (("REFERENCE_DIR",), "a run of tools/reference_timing (scripts/make-report.sh --reference-only)",
+                  lambda dirs, page: (reference_section(dirs[0]), REFERENCE_HEADING)),
     "seed003": (("SMALL_DIR", "LARGE_DIR"), "bench runs of bench/seed003_1280x720.json and _2560x1440.json",
                 lambda dirs, page: (seed003_section({"1280x720": dirs[0], "2560x1440": dirs[1]}),
                                     SEED003_HEADING)),

@@ -5,6 +5,9 @@
 #   -DMODE=deb           makes the Debian package (cpack -G DEB in BUILD_DIR), unpacks it into a
 #                        scratch root, checks its name and dependencies, and builds the same engine
 #                        against the root's /usr
+#   -DMODE=configs       installs BUILD_DIR (Release) and a Debug build of the library alone into one
+#                        prefix, then builds the same engine in Debug and in Release against it: each
+#                        must link its own configuration's library (liblightscatterd.a, liblightscatter.a)
 #   -DMODE=subdirectory  builds tests/consumer/subdirectory (add_subdirectory of SOURCE_DIR, shared
 #                        library), checks that the library exports only lightscatter::, runs it
 # Other variables: SOURCE_DIR, BUILD_DIR, WORK_DIR, JOBS, NM, READELF.
@@ -85,12 +88,47 @@ elseif(MODE STREQUAL "deb")
   endforeach()
   run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/consumer/package -B ${consumer_build}
       -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix})
+elseif(MODE STREQUAL "configs")
+  set(prefix ${WORK_DIR}/prefix)
+  run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
+  set(debug_build ${WORK_DIR}/debug)
+  run(${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${debug_build} -DCMAKE_BUILD_TYPE=Debug -DLS_BUILD_TESTS=OFF
+      -DLS_BUILD_HOST_EXAMPLE=OFF)
+  run(${CMAKE_COMMAND} --build ${debug_build} -j ${JOBS} --target lightscatter_plugin)
+  run(${CMAKE_COMMAND} --install ${debug_build} --prefix ${prefix})
+  file(GLOB_RECURSE libraries RELATIVE ${prefix} ${prefix}/*.a)
+  file(GLOB_RECURSE per_config RELATIVE ${prefix} ${prefix}/*/lightscatterTargets-*.cmake)
+  list(LENGTH libraries library_count)
+  list(LENGTH per_config config_count)
+  if(NOT library_count EQUAL 2 OR NOT libraries MATCHES "liblightscatterd\\.a" OR NOT config_count EQUAL 2)
+    message(FATAL_ERROR "Debug beside Release installed ${libraries} and ${per_config}: expected "
+                        "liblightscatter.a, liblightscatterd.a and one targets file per configuration")
+  endif()
+  foreach(config Debug Release)
+    set(build ${WORK_DIR}/build-${config})
+    run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/consumer/package -B ${build} -DCMAKE_BUILD_TYPE=${config}
+        -DCMAKE_PREFIX_PATH=${prefix})
+    run(${CMAKE_COMMAND} --build ${build} -j ${JOBS} -v --target headless_engine)
+    if(config STREQUAL "Debug")
+      set(wanted "liblightscatterd\\.a")
+      set(other "liblightscatter\\.a")
+    else()
+      set(wanted "liblightscatter\\.a")
+      set(other "liblightscatterd\\.a")
+    endif()
+    if(NOT last_output MATCHES "${wanted}" OR last_output MATCHES "${other}")
+      message(FATAL_ERROR "the ${config} engine did not link its own configuration's library:\n${last_output}")
+    endif()
+    run(${build}/headless_engine)
+    message(STATUS "${config} headless_engine (linked ${wanted}):\n${last_output}")
+  endforeach()
+  return()
 elseif(MODE STREQUAL "subdirectory")
   # No build type given: the engine's empty CMAKE_BUILD_TYPE must survive add_subdirectory.
   run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/consumer/subdirectory -B ${consumer_build}
       -DLIGHTSCATTER_SOURCE_DIR=${SOURCE_DIR})
 else()
-  message(FATAL_ERROR "MODE must be package, deb or subdirectory, not '${MODE}'")
+  message(FATAL_ERROR "MODE must be package, deb, configs or subdirectory, not '${MODE}'")
 endif()
 
 run(${CMAKE_COMMAND} --build ${consumer_build} -j ${JOBS})
