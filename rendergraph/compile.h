@@ -1,6 +1,8 @@
 #pragma once
 // Compilation: validate, cull, order, compute lifetimes, place transient memory, derive barriers.
 // Every rejection is a GraphError naming the pass, the resource and the rule.
+#include <string>
+
 #include "compiled_graph.h"
 #include "device_caps.h"
 #include "graph_error.h"
@@ -27,6 +29,11 @@ Schedule schedule(const RenderGraph& graph);
 
 // Derives the combined state of each resource in each pass and the barriers between passes.
 void deriveSync(const RenderGraph& graph, CompiledGraph& out);
+
+// A pass's or resource's name as the compiler's messages quote it.
+inline std::string quote(const std::string& s) {
+    return "'" + s + "'";
+}
 
 }  // namespace detail
 }  // namespace rg

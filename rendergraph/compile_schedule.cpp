@@ -14,10 +14,6 @@ namespace {
 
 using VersionKey = std::pair<uint32_t, uint32_t>;  // resource, version
 
-std::string quote(const std::string& s) {
-    return "'" + s + "'";
-}
-
 struct VersionInfo {
     uint32_t producer = kInvalidIndex;
     std::vector<uint32_t> readers;  // passes that read or overwrite this version

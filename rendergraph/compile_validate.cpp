@@ -11,10 +11,6 @@
 namespace rg::detail {
 namespace {
 
-std::string quote(const std::string& s) {
-    return "'" + s + "'";
-}
-
 std::string extentText(VkExtent2D e) {
     return std::to_string(e.width) + "x" + std::to_string(e.height);
 }

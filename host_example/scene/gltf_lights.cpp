@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 
+#include "scene/glb_bytes.h"
 #include "scene/input_file.h"
 #include "scene/json_input.h"
 
@@ -24,27 +25,12 @@ namespace {
 using nlohmann::json;
 namespace limits = lightscatter::limits;
 
-constexpr uint64_t kGltfFileCap = 2 * kGiB;  // the mesh loader's
-constexpr uint32_t kGlbMagic = 0x46546C67u;  // "glTF"
-constexpr uint32_t kGlbJson = 0x4E4F534Au;   // "JSON"
 // The plugin's largest cone (lightscatter::Light): its methods clip a ray to the cone's lit nappe,
 // which is convex only below 90 degrees.
 constexpr double kMaxConeAngleDegrees = 89.0;
 
-template <class T>
-std::string format(T v) {
-    char text[64];
-    const auto result = std::to_chars(text, text + sizeof text, v);
-    return std::string(text, result.ptr);
-}
-
 std::string quoted(const std::string& name) {
     return name.empty() ? "" : " '" + echoText(name) + "'";
-}
-
-uint32_t readU32(const std::vector<unsigned char>& bytes, size_t at) {
-    return uint32_t{bytes[at]} | uint32_t{bytes[at + 1]} << 8 | uint32_t{bytes[at + 2]} << 16 |
-           uint32_t{bytes[at + 3]} << 24;
 }
 
 class LightReader {
@@ -77,17 +63,17 @@ class LightReader {
     json document() const {
         std::vector<unsigned char> bytes;
         try {
-            bytes = readInputBytes(path_, "glTF file", kGltfFileCap);
+            bytes = readInputBytes(path_, "glTF file", glb::kFileCap);
         } catch (const InputFileError& e) {
             throw SceneError(e.what());
         }
         const char* begin = reinterpret_cast<const char*>(bytes.data());
         const char* end = begin + bytes.size();
-        if (bytes.size() >= 4 && readU32(bytes, 0) == kGlbMagic) {
+        if (bytes.size() >= 4 && glb::readU32(bytes, 0) == glb::kMagic) {
             // A .glb: its JSON chunk, the first, after the 12-byte header.
             if (bytes.size() < 20) fail("truncated GLB header");
-            if (readU32(bytes, 16) != kGlbJson) fail("the first GLB chunk is not JSON");
-            const uint64_t jsonEnd = 20ull + readU32(bytes, 12);
+            if (glb::readU32(bytes, 16) != glb::kJsonChunk) fail("the first GLB chunk is not JSON");
+            const uint64_t jsonEnd = 20ull + glb::readU32(bytes, 12);
             if (jsonEnd > bytes.size()) fail("the GLB JSON chunk runs past the end of the file");
             begin += 20;
             end = reinterpret_cast<const char*>(bytes.data()) + jsonEnd;
@@ -294,9 +280,9 @@ class LightReader {
             const glm::dvec3 position(world[3]);
             for (int i = 0; i < 3; ++i)
                 if (!(std::fabs(position[i]) <= double(limits::kMaxLength)))
-                    fail("its node's world position [" + format(position.x) + ", " +
-                         format(position.y) + ", " + format(position.z) + "] must be within +-" +
-                         format(limits::kMaxLength) + " m");
+                    fail("its node's world position [" + shortestText(position.x) + ", " +
+                         shortestText(position.y) + ", " + shortestText(position.z) +
+                         "] must be within +-" + shortestText(limits::kMaxLength) + " m");
             d.position = glm::vec3(position);
             const glm::dvec3 axis = -glm::dvec3(world[2]);
             const double length = glm::length(axis);
@@ -313,24 +299,25 @@ class LightReader {
                 for (int i = 0; i < 3; ++i) {
                     color[i] = number((*c)[size_t(i)], "color[" + std::to_string(i) + "]");
                     if (color[i] < 0.0)
-                        fail("color[" + std::to_string(i) + "] = " + format(color[i]) +
+                        fail("color[" + std::to_string(i) + "] = " + shortestText(color[i]) +
                              ": must be >= 0");
                 }
             }
             double value = 1.0;
             if (const json* v = member(source, "intensity")) {
                 value = number(*v, "intensity");
-                if (value < 0.0) fail("intensity = " + format(value) + ": must be >= 0");
+                if (value < 0.0) fail("intensity = " + shortestText(value) + ": must be >= 0");
             }
             const bool directional = light_.desc.type == lightscatter::LightType::Directional;
             const glm::dvec3 radiometric = value / kLumensPerWatt * reader_.scale_ * color;
             for (int i = 0; i < 3; ++i)
                 if (!(radiometric[i] <= double(limits::kMaxIntensity)))
-                    fail("intensity " + format(value) + (directional ? " lx" : " cd") +
+                    fail("intensity " + shortestText(value) + (directional ? " lx" : " cd") +
                          " x color[" + std::to_string(i) + "] x gltfLightScale " +
-                         format(reader_.scale_) + " / 683 lm/W = " + format(radiometric[i]) +
+                         shortestText(reader_.scale_) +
+                         " / 683 lm/W = " + shortestText(radiometric[i]) +
                          (directional ? " W/m^2" : " W/sr") + ": must be at most " +
-                         format(limits::kMaxIntensity) + " (the plugin's limit)");
+                         shortestText(limits::kMaxIntensity) + " (the plugin's limit)");
             light_.desc.intensity = glm::vec3(radiometric);
         }
 
@@ -347,18 +334,21 @@ class LightReader {
                     outer = number(*v, "spot.outerConeAngle");
             }
             const double toDegrees = 180.0 / std::numbers::pi;
-            auto degrees = [&](double radians) { return format(radians * toDegrees) + " degrees"; };
+            auto degrees = [&](double radians) {
+                return shortestText(radians * toDegrees) + " degrees";
+            };
             if (!(outer * toDegrees <= kMaxConeAngleDegrees))
-                fail("spot.outerConeAngle = " + format(outer) + " (" + degrees(outer) +
-                     "): must be at most 89 degrees (" + format(kMaxConeAngleDegrees / toDegrees) +
+                fail("spot.outerConeAngle = " + shortestText(outer) + " (" + degrees(outer) +
+                     "): must be at most 89 degrees (" +
+                     shortestText(kMaxConeAngleDegrees / toDegrees) +
                      "), the library's limit: at 90 a spot's cone is no longer convex");
             if (!(float(outer * toDegrees) >= limits::kMinConeAngleDegrees))
-                fail("spot.outerConeAngle = " + format(outer) + " (" + degrees(outer) +
-                     "): must be at least " + format(limits::kMinConeAngleDegrees) +
+                fail("spot.outerConeAngle = " + shortestText(outer) + " (" + degrees(outer) +
+                     "): must be at least " + shortestText(limits::kMinConeAngleDegrees) +
                      " degrees, the library's smallest cone");
             if (!(inner >= 0.0 && inner <= outer))
-                fail("spot.innerConeAngle = " + format(inner) + ": must be in [0, " +
-                     "outerConeAngle = " + format(outer) + "]");
+                fail("spot.innerConeAngle = " + shortestText(inner) + ": must be in [0, " +
+                     "outerConeAngle = " + shortestText(outer) + "]");
             light_.desc.outerConeAngleDegrees = float(outer * toDegrees);
             light_.desc.innerConeAngleDegrees =
                 std::max(float(inner * toDegrees), limits::kMinConeAngleDegrees);

@@ -21,6 +21,7 @@
 #include <memory>
 #include <optional>
 
+#include "scene/glb_bytes.h"
 #include "scene/input_file.h"
 #include "scene/json_input.h"
 #include "scene/scene.h"
@@ -43,9 +44,6 @@ glm::mat3 orthonormalAxes(const glm::mat3& m) {
     return glm::mat3(x, y, glm::cross(x, y));
 }
 
-constexpr uint32_t kGlbMagic = 0x46546C67u;  // "glTF"
-constexpr uint32_t kGlbJson = 0x4E4F534Au;   // "JSON"
-constexpr uint32_t kGlbBin = 0x004E4942u;    // "BIN\0"
 // Every count is checked against the bytes that hold it before anything is allocated for it, so
 // that the memory a file costs follows the data it holds. Beyond this an accessor is refused even
 // when its data is there.
@@ -62,8 +60,6 @@ constexpr size_t kMaxPlacedIndices = size_t{1} << 27;
 constexpr int kMaxTextureSide = 16384;
 // tinygltf's report holds a line per failure and names from the file; a message keeps this much.
 constexpr size_t kMaxReportChars = 1024;
-// A .gltf/.glb, and each buffer or image it references, is read whole; beyond this it is refused.
-constexpr uint64_t kGltfFileCap = 2 * kGiB;
 
 [[noreturn]] void fail(const std::string& path, const std::string& what) {
     throw SceneError(path + ": " + what);
@@ -93,39 +89,35 @@ std::string plural(size_t n, const std::string& noun, const std::string& nouns =
 
 std::vector<unsigned char> readFile(const std::string& path) {
     try {
-        return readInputBytes(path, "glTF file", kGltfFileCap);
+        return readInputBytes(path, "glTF file", glb::kFileCap);
     } catch (const InputFileError& e) {
         throw SceneError(e.what());
     }
 }
 
-uint32_t readU32(const std::vector<unsigned char>& bytes, size_t at) {
-    return uint32_t{bytes[at]} | uint32_t{bytes[at + 1]} << 8 | uint32_t{bytes[at + 2]} << 16 |
-           uint32_t{bytes[at + 3]} << 24;
-}
-
 bool isGlb(const std::vector<unsigned char>& bytes) {
-    return bytes.size() >= 4 && readU32(bytes, 0) == kGlbMagic;
+    return bytes.size() >= 4 && glb::readU32(bytes, 0) == glb::kMagic;
 }
 
 // tinygltf 2.7 compares the BIN chunk's length with the file without counting the chunk's 8-byte
 // header, so a crafted length makes it read past the end: the layout is checked here first.
 void checkGlbLayout(const std::string& path, const std::vector<unsigned char>& bytes) {
     if (bytes.size() < 20) fail(path, "truncated GLB header");
-    const uint32_t version = readU32(bytes, 4);
+    const uint32_t version = glb::readU32(bytes, 4);
     if (version != 2) fail(path, "GLB version " + std::to_string(version) + " is not 2");
-    const uint64_t length = readU32(bytes, 8);
+    const uint64_t length = glb::readU32(bytes, 8);
     if (length > bytes.size()) {
         fail(path, "GLB header says " + std::to_string(length) + " bytes but the file has " +
                        std::to_string(bytes.size()));
     }
-    const uint64_t jsonEnd = 20ull + readU32(bytes, 12);
-    if (readU32(bytes, 16) != kGlbJson) fail(path, "the first GLB chunk is not JSON");
+    const uint64_t jsonEnd = 20ull + glb::readU32(bytes, 12);
+    if (glb::readU32(bytes, 16) != glb::kJsonChunk) fail(path, "the first GLB chunk is not JSON");
     if (jsonEnd > length) fail(path, "the GLB JSON chunk runs past the end of the file");
     if (jsonEnd == length) return;
     if (jsonEnd + 8 > length) fail(path, "truncated GLB BIN chunk header");
-    const uint64_t binEnd = jsonEnd + 8 + readU32(bytes, jsonEnd);
-    if (readU32(bytes, jsonEnd + 4) != kGlbBin) fail(path, "the second GLB chunk is not BIN");
+    const uint64_t binEnd = jsonEnd + 8 + glb::readU32(bytes, jsonEnd);
+    if (glb::readU32(bytes, jsonEnd + 4) != glb::kBinChunk)
+        fail(path, "the second GLB chunk is not BIN");
     if (binEnd > length) fail(path, "the GLB BIN chunk runs past the end of the file");
 }
 
@@ -156,7 +148,7 @@ bool readReferencedFile(std::vector<unsigned char>* out, std::string* err, const
                         void* user) {
     auto& context = *static_cast<ImageLoadContext*>(user);
     try {
-        *out = readInputBytes(path, "file referenced by the glTF", kGltfFileCap);
+        *out = readInputBytes(path, "file referenced by the glTF", glb::kFileCap);
         context.files.push_back(path);
         return true;
     } catch (const InputFileError& e) {
@@ -1047,7 +1039,7 @@ void appendGltfBytes(MeshData& mesh, const std::string& path, std::vector<unsign
         fail(path, "is larger than the 4 GiB tinygltf reads");
     if (isGlb(bytes)) {
         checkGlbLayout(path, bytes);
-        checkDocument(path, bytes.data() + 20, readU32(bytes, 12));
+        checkDocument(path, bytes.data() + 20, glb::readU32(bytes, 12));
         ok = loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), uint32_t(bytes.size()),
                                          baseDir);
     } else {

@@ -4,6 +4,7 @@
 // error message quotes of the file is cut to a stated length. A hostile or broken file is then one
 // short error line, never a stack overflow in a recursive walk of the parsed value (nlohmann's
 // dump(), copies and comparisons recurse once per level) nor a message the size of the file.
+#include <charconv>
 #include <cstddef>
 #include <cstdint>
 #include <nlohmann/json.hpp>
@@ -23,6 +24,15 @@ constexpr size_t kMaxEchoChars = 80;
 // A path longer than this is refused before it is looked up (Linux's PATH_MAX); shorter ones are
 // quoted whole, as they name the file.
 constexpr size_t kMaxPathChars = 4096;
+
+// The shortest text that reads back as the same value: "0.1" for 0.1f, not "0.100000001490116"
+// (how an error message quotes a number from a file).
+template <class T>
+std::string shortestText(T v) {
+    char text[64];
+    const auto result = std::to_chars(text, text + sizeof text, v);
+    return std::string(text, result.ptr);
+}
 
 // "PATH: <what>", one line.
 class JsonInputError : public std::runtime_error {

@@ -29,14 +29,6 @@ constexpr int kMaxCookieSide = 4096;
 namespace limits = lightscatter::limits;
 constexpr double kMaxCoordinate = limits::kMaxLength;
 
-// The shortest text that reads back as the same value: "0.1" for 0.1f, not "0.100000001490116".
-template <class T>
-std::string format(T v) {
-    char text[64];
-    const auto result = std::to_chars(text, text + sizeof text, v);
-    return std::string(text, result.ptr);
-}
-
 std::string joinNames(std::initializer_list<const char*> names) {
     std::string out;
     for (const char* name : names) out += (out.empty() ? "" : ", ") + std::string(name);
@@ -89,12 +81,12 @@ class SceneReader {
         const double ratio = 16777216.0 / limits::kDepthStepsPerDistance;
         const double farthest = camera.infiniteFar ? medium.maxDistance : camera.farPlane;
         if (farthest <= ratio * double(camera.nearPlane)) return;
-        fail("camera.near = " + format(camera.nearPlane) + ": with standard depth the " +
+        fail("camera.near = " + shortestText(camera.nearPlane) + ": with standard depth the " +
              (camera.infiniteFar ? "sky (medium.maxDistance, " : "far plane (camera.far, ") +
-             format(float(farthest)) + " m) may be at most " + format(ratio) +
+             shortestText(float(farthest)) + " m) may be at most " + shortestText(ratio) +
              " times the near plane, where a float32 depth step is 1/16 of the distance; make "
              "camera.near " +
-             format(float(farthest / ratio)) + " or more, or camera.reversedZ true");
+             shortestText(float(farthest / ratio)) + " or more, or camera.reversedZ true");
     }
 
   private:
@@ -136,7 +128,7 @@ class SceneReader {
         if (!v.is_number()) fail(name + " must be a number");
         const double d = v.get<double>();
         if (!std::isfinite(d) || std::fabs(d) > double(std::numeric_limits<float>::max())) {
-            fail(name + " = " + format(d) + ": must be a finite number");
+            fail(name + " = " + shortestText(d) + ": must be a finite number");
         }
         return d;
     }
@@ -144,15 +136,17 @@ class SceneReader {
     // What a value becomes as the float it is stored in, for messages about values that are in
     // range as written but not once rounded (1e-50 becomes 0).
     static std::string rounding(double written, float stored) {
-        return double(stored) == written ? ""
-                                         : " (it is " + format(stored) + " in single precision)";
+        return double(stored) == written
+                   ? ""
+                   : " (it is " + shortestText(stored) + " in single precision)";
     }
 
     float positive(const json& v, const std::string& name) const {
         const double x = number(v, name);
         const float f = float(x);
         if (!(f > 0.0f))
-            fail(name + " = " + format(x) + ": must be > 0" + (x > 0.0 ? rounding(x, f) : ""));
+            fail(name + " = " + shortestText(x) + ": must be > 0" +
+                 (x > 0.0 ? rounding(x, f) : ""));
         return f;
     }
 
@@ -163,8 +157,8 @@ class SceneReader {
         const float f = float(x);
         auto inside = [&](double d) { return d > lo && (d < hi || (closedHigh && d == hi)); };
         if (!inside(f)) {
-            fail(name + " = " + format(x) + ": must be in (" + format(lo) + ", " + format(hi) +
-                 (closedHigh ? "]" : ")") + (inside(x) ? rounding(x, f) : ""));
+            fail(name + " = " + shortestText(x) + ": must be in (" + shortestText(lo) + ", " +
+                 shortestText(hi) + (closedHigh ? "]" : ")") + (inside(x) ? rounding(x, f) : ""));
         }
         return f;
     }
@@ -175,8 +169,8 @@ class SceneReader {
         const float f = float(x);
         auto inside = [&](double d) { return d >= lo && d <= hi; };
         if (!inside(f)) {
-            fail(name + " = " + format(x) + ": must be in [" + format(lo) + ", " + format(hi) +
-                 "]" + (inside(x) ? rounding(x, f) : ""));
+            fail(name + " = " + shortestText(x) + ": must be in [" + shortestText(lo) + ", " +
+                 shortestText(hi) + "]" + (inside(x) ? rounding(x, f) : ""));
         }
         return f;
     }
@@ -185,8 +179,8 @@ class SceneReader {
         const glm::vec3 out = vec3(v, name);
         for (int i = 0; i < 3; ++i) {
             if (!(out[i] >= lo && out[i] <= hi)) {
-                fail(name + "[" + std::to_string(i) + "] = " + format(out[i]) + ": must be in [" +
-                     format(lo) + ", " + format(hi) + "]");
+                fail(name + "[" + std::to_string(i) + "] = " + shortestText(out[i]) +
+                     ": must be in [" + shortestText(lo) + ", " + shortestText(hi) + "]");
             }
         }
         return out;
@@ -206,7 +200,8 @@ class SceneReader {
         const glm::vec3 out = vec3(v, name);
         for (int i = 0; i < 3; ++i) {
             if (out[i] < 0.0f) {
-                fail(name + "[" + std::to_string(i) + "] = " + format(out[i]) + ": must be >= 0");
+                fail(name + "[" + std::to_string(i) + "] = " + shortestText(out[i]) +
+                     ": must be >= 0");
             }
         }
         return out;
@@ -325,12 +320,12 @@ class SceneReader {
             camera.infiniteFar = boolean(*x, "camera.infiniteFar");
         }
         if (!camera.infiniteFar && !(camera.farPlane > camera.nearPlane)) {
-            fail("camera.far = " + format(camera.farPlane) + ": must be > camera.near (" +
-                 format(camera.nearPlane) + ") unless camera.infiniteFar is true");
+            fail("camera.far = " + shortestText(camera.farPlane) + ": must be > camera.near (" +
+                 shortestText(camera.nearPlane) + ") unless camera.infiniteFar is true");
         }
         if (!camera.infiniteFar && !(camera.farPlane <= limits::kMaxLength)) {
-            fail("camera.far = " + format(camera.farPlane) + ": must be at most " +
-                 format(double(limits::kMaxLength)) + " unless camera.infiniteFar is true");
+            fail("camera.far = " + shortestText(camera.farPlane) + ": must be at most " +
+                 shortestText(double(limits::kMaxLength)) + " unless camera.infiniteFar is true");
         }
         checkCameraPlacement(camera);
     }
@@ -340,8 +335,8 @@ class SceneReader {
     void checkCoordinates(const glm::vec3& point, const std::string& name) const {
         for (int i = 0; i < 3; ++i) {
             if (std::fabs(double(point[i])) > kMaxCoordinate) {
-                fail(name + "[" + std::to_string(i) + "] = " + format(point[i]) +
-                     ": must be within +-" + format(kMaxCoordinate) +
+                fail(name + "[" + std::to_string(i) + "] = " + shortestText(point[i]) +
+                     ": must be within +-" + shortestText(kMaxCoordinate) +
                      " (the renderer works in single precision)");
             }
         }

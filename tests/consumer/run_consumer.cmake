@@ -94,7 +94,7 @@ elseif(MODE STREQUAL "configs")
   set(debug_build ${WORK_DIR}/debug)
   run(${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${debug_build} -DCMAKE_BUILD_TYPE=Debug -DLS_BUILD_TESTS=OFF
       -DLS_BUILD_HOST_EXAMPLE=OFF)
-  run(${CMAKE_COMMAND} --build ${debug_build} -j ${JOBS} --target lightscatter_plugin)
+  run(${CMAKE_COMMAND} --build ${debug_build} -j ${JOBS} --target lightscatter_package)
   run(${CMAKE_COMMAND} --install ${debug_build} --prefix ${prefix})
   file(GLOB_RECURSE libraries RELATIVE ${prefix} ${prefix}/*.a)
   file(GLOB_RECURSE per_config RELATIVE ${prefix} ${prefix}/*/lightscatterTargets-*.cmake)
