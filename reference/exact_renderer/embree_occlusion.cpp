@@ -129,7 +129,6 @@ class EmbreeScene final : public EmbreeOcclusion {
         return r;
     }
 
-  private:
     static void bounds(const RTCBoundsFunctionArguments* args) {
         const auto* self = static_cast<const EmbreeScene*>(args->geometryUserPtr);
         const Triangle& t = self->triangles_[args->primID];

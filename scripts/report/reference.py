@@ -19,6 +19,9 @@ def reference_section(run_dir):
     with DIR/cpu.txt and DIR/load-before.txt beside it (scripts/make-report.sh --reference-only)."""
     run_dir = Path(run_dir)
     data = json.loads((run_dir / "reference_timing.json").read_text())
+    if not data.get("embreeBuilt"):
+        raise SystemExit(f"{run_dir}: reference_timing was built without Embree; its 'embree' column "
+                         "would be the double BVH's again")
     cpu = _text(run_dir / "cpu.txt") or "this machine's CPU"
     load = _text(run_dir / "load-before.txt")
     when = _text(run_dir / "date.txt") or date.today().isoformat()
