@@ -187,9 +187,7 @@ TestPatternHandles declareTestPattern(RenderGraph& graph, VkExtent2D size, VkFor
 }
 
 TestPatternRenderer::TestPatternRenderer(const Device& device, VkExtent2D size)
-    : device_(device),
-      size_(size),
-      readback_(device, VkDeviceSize{4} * size.width * size.height,
+    : readback_(device, VkDeviceSize{4} * size.width * size.height,
                 VK_BUFFER_USAGE_TRANSFER_DST_BIT, "test pattern readback") {
     const VulkanDeviceCaps caps(device);
     depthStencil_ =

@@ -40,8 +40,6 @@ class TestPatternRenderer {
     VkFormat depthStencilFormat() const { return depthStencil_; }
 
   private:
-    const Device& device_;
-    VkExtent2D size_;
     VkFormat depthStencil_;
     HostBuffer readback_;
     RenderGraph graph_;

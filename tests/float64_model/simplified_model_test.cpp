@@ -23,7 +23,7 @@ Medium isotropicHaze() {
     return m;
 }
 
-Light spot() {
+Light rangedSpot() {
     Light l;
     l.type = Light::Spot;
     l.position = {0.0, 4.0, 0.0};
@@ -55,7 +55,7 @@ glm::dvec3 simplifiedByQuadrature(const Medium& m, const Light& l, const Ray& ra
 
 TEST(SimplifiedModel, ClosedFormMatchesQuadratureOfItsIntegrand) {
     const Medium m = isotropicHaze();
-    const Light l = spot();
+    const Light l = rangedSpot();
     for (double a0 : {0.0025, 0.5, 4.0})
         for (double a1 : {0.5, 1.0, 3.0})
             for (const Ray& ray :
@@ -73,7 +73,7 @@ TEST(SimplifiedModel, ClosedFormMatchesQuadratureOfItsIntegrand) {
 
 TEST(SimplifiedModel, WithA1OneAndA0R0SquaredItIsSeed001sClosedForm) {
     const Medium m = isotropicHaze();
-    Light l = spot();
+    Light l = rangedSpot();
     l.r0 = 0.05;
     const Ray ray{{-6.0, 1.0, 0.5}, glm::normalize(glm::dvec3(1.0, 0.3, 0.0)), 12.0};
     const glm::dvec3 seed004 = simplifiedClosedForm(m, l, ray, l.r0 * l.r0, 1.0);

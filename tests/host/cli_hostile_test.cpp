@@ -14,6 +14,7 @@
 
 #include <stb/stb_image_write.h>
 #include "cli_runner.h"
+#include "host_test_helpers.h"
 
 namespace {
 
@@ -98,10 +99,7 @@ std::string separateTriangles(int n) {
            R"(, "uri": "data:application/octet-stream;base64,)" + b64 + R"("}]})";
 }
 
-std::string readAll(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using host_test::readAll;
 
 // A PNG of `width` x `height` grey pixels, as bytes.
 std::string png(int width, int height) {

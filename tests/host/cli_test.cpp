@@ -16,20 +16,10 @@
 
 using cli_test::exists;
 using cli_test::expectFailure;
+using cli_test::path;
 using cli_test::run;
 using cli_test::scene;
-
-namespace {
-
-std::string path(const std::string& name) {
-    return (std::filesystem::path(cli_test::scratch()) / name).string();
-}
-
-void writeFile(const std::string& name, const std::string& text) {
-    std::ofstream(path(name)) << text;
-}
-
-}  // namespace
+using cli_test::writeFile;
 
 TEST(Cli, RenderWritesPngLinAndTimings) {
     const auto r =

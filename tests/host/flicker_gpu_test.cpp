@@ -15,7 +15,7 @@
 
 namespace {
 
-const VkExtent2D kSize{32, 18};
+const VkExtent2D kFlickerSize{32, 18};
 constexpr int kFrames = 4;
 
 host::SceneDesc windowRoom() {
@@ -29,7 +29,7 @@ host::bench::FlickerMetrics measure(lightscatter::Method method, const host::ben
                                     host::bench::MotionKind what, double noise = 0.0) {
     const host::SceneDesc start = windowRoom();
     const host::MeshData mesh = host::loadSceneMeshes(start);
-    host::EngineRenderer renderer(testing_support::device(), start, mesh, kSize);
+    host::EngineRenderer renderer(testing_support::device(), start, mesh, kFlickerSize);
     host::RenderOptions options;
     options.method = method;
     host::bench::FlickerMeter meter;
@@ -42,8 +42,9 @@ host::bench::FlickerMetrics measure(lightscatter::Method method, const host::ben
         host::FrameOutput out = renderer.render(options);
         for (size_t i = 0; i < out.inscatter.size(); ++i)
             if (i % 4 != 3) out.inscatter[i] *= static_cast<float>(1.0 + noise * u(rng));
-        meter.add(out.inscatter,
-                  host::reference::renderReference(pose, mesh, kSize.width, kSize.height).rgb);
+        meter.add(out.inscatter, host::reference::renderReference(pose, mesh, kFlickerSize.width,
+                                                                  kFlickerSize.height)
+                                     .rgb);
     }
     const host::bench::FlickerMetrics f = meter.result();
     std::printf(

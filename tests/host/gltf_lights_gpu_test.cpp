@@ -22,7 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const VkExtent2D kSize{96, 54};
+const VkExtent2D kGltfLightsSize{96, 54};
 // Float rounding: the twin's directions are normalised from float32 components (0.3 is
 // 0.300000012 there), the glTF's from the quaternions that turn -Z onto the exact vectors, so
 // the warm spot's axis differs in its last bit. Its shadow map and cone edge move by that much,
@@ -56,7 +56,7 @@ Difference compare(const std::vector<float>& a, const std::vector<float>& b) {
 
 std::vector<float> render(rg::Device& device, const host::SceneDesc& scene,
                           lightscatter::Method method) {
-    host::EngineRenderer renderer(device, scene, host::loadSceneMeshes(scene), kSize);
+    host::EngineRenderer renderer(device, scene, host::loadSceneMeshes(scene), kGltfLightsSize);
     host::RenderOptions options;
     options.method = method;
     const host::FrameOutput out = renderer.render(options);
@@ -87,8 +87,6 @@ class LightsFromGltfGpu : public testing_support::GpuTest {
     fs::path dir_;
 };
 
-}  // namespace
-
 // Measured on lavapipe: epipolar differs by at most 1.8e-8 of the peak (mean relative 6.9e-10),
 // brute force by 3.6e-7 (2.4e-9); the inner cone ignored, by 6.2e-3 (8.7e-4).
 TEST_F(LightsFromGltfGpu, RendersTheSameLinAsTheLightsInSceneJson) {
@@ -100,7 +98,8 @@ TEST_F(LightsFromGltfGpu, RendersTheSameLinAsTheLightsInSceneJson) {
         std::printf(
             "%ux%u, %s: max |difference| %.3g of the peak (%.3g), mean relative %.3g, "
             "max relative %.3g where Lin is over 1e-3 of the peak\n",
-            kSize.width, kSize.height, what, d.maxOverPeak, d.peak, d.mean, d.maxRelative);
+            kGltfLightsSize.width, kGltfLightsSize.height, what, d.maxOverPeak, d.peak, d.mean,
+            d.maxRelative);
     };
     for (lightscatter::Method method :
          {lightscatter::Method::Epipolar, lightscatter::Method::BruteForce}) {
@@ -121,3 +120,5 @@ TEST_F(LightsFromGltfGpu, RendersTheSameLinAsTheLightsInSceneJson) {
     EXPECT_GT(d.maxOverPeak, 100 * kBound);
     EXPECT_GT(d.mean, 10 * kBound);  // a spot's pool beside the sun's shafts: measured 8.7e-4
 }
+
+}  // namespace

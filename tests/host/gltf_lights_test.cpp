@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "gltf_lights_scene.h"
+#include "host_test_helpers.h"
 #include "scene/gltf_lights.h"
 #include "scene/scene.h"
 
@@ -22,18 +23,8 @@ namespace fs = std::filesystem;
 using lightscatter::LightType;
 using lightscatter::RangeFalloff;
 
-void expectVec3(const glm::vec3& actual, const glm::vec3& expected, float tolerance = 1e-5f) {
-    EXPECT_NEAR(actual.x, expected.x, tolerance);
-    EXPECT_NEAR(actual.y, expected.y, tolerance);
-    EXPECT_NEAR(actual.z, expected.z, tolerance);
-}
-
-std::string readAll(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using host_test::expectVec3;
+using host_test::readAll;
 
 // A rig rotated 90 degrees about +Y, scaled 2 and moved to x = 10, holding a point light and a
 // spot (the spot's node a matrix: turned -90 degrees about X, so its -Z is down); a sun and a spot
@@ -171,16 +162,16 @@ TEST_F(GltfLightsTest, TheScaleDefaultsToOneAndAPointLightToNoShadowMap) {
 
 // A .glb's JSON chunk is read the same way (no BIN chunk needed).
 TEST_F(GltfLightsTest, AGlbsJsonChunkIsRead) {
-    std::string json = R"({"asset": {"version": "2.0"}, "nodes": [{"rotation": [1, 0, 0, 0],
+    std::string gltf = R"({"asset": {"version": "2.0"}, "nodes": [{"rotation": [1, 0, 0, 0],
       "extensions": {"KHR_lights_punctual": {"light": 0}}}], "extensions": {"KHR_lights_punctual":
       {"lights": [{"type": "spot", "spot": {"outerConeAngle": 0.5}}]}}})";
-    json.append((4 - json.size() % 4) % 4, ' ');
+    gltf.append((4 - gltf.size() % 4) % 4, ' ');
     auto u32 = [](uint32_t v) {
         return std::string{char(v & 0xff), char(v >> 8 & 0xff), char(v >> 16 & 0xff),
                            char(v >> 24 & 0xff)};
     };
-    write("lights.glb", "glTF" + u32(2) + u32(uint32_t(20 + json.size())) +
-                            u32(uint32_t(json.size())) + "JSON" + json);
+    write("lights.glb", "glTF" + u32(2) + u32(uint32_t(20 + gltf.size())) +
+                            u32(uint32_t(gltf.size())) + "JSON" + gltf);
     const host::SceneDesc s = host::loadSceneFile(
         write("scene.json", R"({"gltf": "lights.glb", "lightsFromGltf": true})"));
     ASSERT_EQ(s.lightCount(), 1u);
@@ -308,15 +299,15 @@ TEST_F(GltfLightsTest, TheGeneratorWritesTheShippedScene) {
 TEST_F(GltfLightsTest, TheShippedSceneHasTheLightsWrittenInSceneJson) {
     const fs::path scenes = fs::path(LS_SOURCE_DIR) / "scenes";
     const host::SceneDesc gltf = host::loadSceneFile((scenes / "atrium_gltf_lights.json").string());
-    const host::SceneDesc json = host::loadSceneFile(
+    const host::SceneDesc fromJson = host::loadSceneFile(
         write("as_json.json",
               gltf_lights_test::atriumLightsAsSceneJson((scenes / "atrium.gltf").string())));
     ASSERT_EQ(gltf.lightCount(), 3u);
-    ASSERT_EQ(json.lightCount(), 3u);
+    ASSERT_EQ(fromJson.lightCount(), 3u);
     for (size_t i = 0; i < 3; ++i) {
         SCOPED_TRACE("light " + std::to_string(i));
         const host::LightDesc& a = gltf.lightAt(i);
-        const host::LightDesc& b = json.lightAt(i);
+        const host::LightDesc& b = fromJson.lightAt(i);
         EXPECT_EQ(a.type, b.type);
         EXPECT_EQ(a.position, b.position);
         expectVec3(a.direction, b.direction, 1e-7f);
@@ -328,10 +319,10 @@ TEST_F(GltfLightsTest, TheShippedSceneHasTheLightsWrittenInSceneJson) {
         EXPECT_EQ(a.radius, b.radius);
         EXPECT_EQ(a.shadowMapSize, b.shadowMapSize);
     }
-    EXPECT_EQ(gltf.camera.position, json.camera.position);
-    EXPECT_EQ(gltf.medium.betaM, json.medium.betaM);
+    EXPECT_EQ(gltf.camera.position, fromJson.camera.position);
+    EXPECT_EQ(gltf.medium.betaM, fromJson.medium.betaM);
     // The same triangles: the glTF's lights add nodes, not geometry.
-    const host::MeshData a = host::loadSceneMeshes(gltf), b = host::loadSceneMeshes(json);
+    const host::MeshData a = host::loadSceneMeshes(gltf), b = host::loadSceneMeshes(fromJson);
     ASSERT_EQ(a.vertices.size(), b.vertices.size());
     EXPECT_EQ(a.indices, b.indices);
     for (size_t v = 0; v < a.vertices.size(); ++v)

@@ -15,6 +15,7 @@
 #include <new>
 #include <nlohmann/json.hpp>
 
+#include "host_test_helpers.h"
 #include "scene/scene.h"
 
 namespace {
@@ -177,11 +178,7 @@ class GltfBuilder {
 
 const std::vector<glm::vec3> kTriangle = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
 
-void expectVec3(const glm::vec3& actual, const glm::vec3& expected, float tolerance = 1e-5f) {
-    EXPECT_NEAR(actual.x, expected.x, tolerance);
-    EXPECT_NEAR(actual.y, expected.y, tolerance);
-    EXPECT_NEAR(actual.z, expected.z, tolerance);
-}
+using host_test::expectVec3;
 
 glm::vec3 triangleNormal(const host::MeshData& mesh, size_t firstIndex) {
     const glm::vec3 a = mesh.vertices[mesh.indices[firstIndex]].position;

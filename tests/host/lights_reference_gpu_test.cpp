@@ -25,7 +25,7 @@
 
 namespace {
 
-const VkExtent2D kSize{64, 36};
+const VkExtent2D kLightsSize{64, 36};
 constexpr size_t kPixels = size_t{64} * 36;
 
 host::SceneDesc shippedScene(const std::string& name) {
@@ -57,7 +57,8 @@ Reference reference(const host::SceneDesc& scene, const host::MeshData& mesh) {
     for (size_t i = 0; i < scene.lightCount(); ++i) {
         const host::SceneDesc alone = withLights(scene, [&](size_t k) { return k == i; });
         r.light.push_back(
-            host::reference::renderReference(alone, mesh, kSize.width, kSize.height).rgb);
+            host::reference::renderReference(alone, mesh, kLightsSize.width, kLightsSize.height)
+                .rgb);
         for (size_t k = 0; k < r.total.size(); ++k) r.total[k] += r.light.back()[k];
     }
     return r;
@@ -92,7 +93,7 @@ Judged judgeImage(const std::vector<float>& rgba, const Reference& ref, const st
     std::printf(
         "%ux%u, %s: mean relative error %.4f against the float64 reference; per light's "
         "region:",
-        kSize.width, kSize.height, what.c_str(), j.error);
+        kLightsSize.width, kLightsSize.height, what.c_str(), j.error);
     for (size_t i = 0; i < ref.light.size(); ++i) {
         const auto [error, pixels] = meanRelative(rgba, ref, [&](size_t p) {
             double mine = 0, all = 0;
@@ -118,7 +119,7 @@ host::RenderOptions methodOptions(lightscatter::Method method) {
 
 Judged judge(rg::Device& device, const host::SceneDesc& scene, const host::MeshData& mesh,
              const Reference& ref, const host::RenderOptions& options, const std::string& what) {
-    host::EngineRenderer renderer(device, scene, mesh, kSize);
+    host::EngineRenderer renderer(device, scene, mesh, kLightsSize);
     const host::FrameOutput out = renderer.render(options);
     for (float v : out.inscatter) EXPECT_TRUE(std::isfinite(v)) << what;
     Judged j = judgeImage(out.inscatter, ref, what + " (" + out.plugin.method + ")");
@@ -253,7 +254,7 @@ TEST_F(LightsReferenceGpu, RefinementOnInscatteringMarchesEveryCubeFace) {
     ASSERT_GT(scene.light.shadowMapSize, 0u);
     const host::MeshData mesh = host::loadSceneMeshes(scene);
     const Reference ref = reference(scene, mesh);
-    host::EngineRenderer renderer(dev(), scene, mesh, kSize);
+    host::EngineRenderer renderer(dev(), scene, mesh, kLightsSize);
     const host::FrameOutput out = renderer.render(refinedOptions(0.1f));
     size_t faceMarches = 0;
     for (const std::string& p : out.plugin.passNames)
@@ -291,7 +292,7 @@ TEST_F(LightsReferenceGpu, FroxelsTakeEveryLightIntoOneGrid) {
     const host::SceneDesc scene = shippedScene("atrium_lights");
     const host::MeshData mesh = host::loadSceneMeshes(scene);
     const Reference ref = reference(scene, mesh);
-    host::EngineRenderer renderer(dev(), scene, mesh, kSize);
+    host::EngineRenderer renderer(dev(), scene, mesh, kLightsSize);
     const host::FrameOutput out = renderer.render(froxelOptions(2));
     EXPECT_EQ(out.plugin.method, "froxels");
     size_t injections = 0, integrations = 0, applies = 0;
@@ -311,7 +312,7 @@ TEST_F(LightsReferenceGpu, FroxelsTakeEveryLightIntoOneGrid) {
     std::vector<double> sum(kPixels * 4, 0.0);
     for (size_t i = 0; i < scene.lightCount(); ++i) {
         const host::SceneDesc alone = withLights(scene, [&](size_t k) { return k == i; });
-        host::EngineRenderer one(dev(), alone, mesh, kSize);
+        host::EngineRenderer one(dev(), alone, mesh, kLightsSize);
         const host::FrameOutput o = one.render(froxelOptions(2));
         double diff = 0, total = 0;
         for (size_t p = 0; p < kPixels; ++p)
@@ -364,7 +365,7 @@ TEST_F(LightsReferenceGpu, FroxelsTemporalModeSettlesOnAStillSceneAndResets) {
         judge(dev(), scene, mesh, ref, froxelOptions(2), "atrium_lights, froxels, plain").error;
     host::RenderOptions temporal = froxelOptions(2);
     temporal.custom.froxelTemporal = true;
-    host::EngineRenderer renderer(dev(), scene, mesh, kSize);
+    host::EngineRenderer renderer(dev(), scene, mesh, kLightsSize);
     const host::FrameOutput first = renderer.render(temporal);
     EXPECT_NE(first.plugin.reason.find("blended with the frame before's grid"), std::string::npos)
         << first.plugin.reason;
@@ -431,13 +432,14 @@ glm::dvec4 sampleVolume(const std::vector<float>& texels, const lightscatter::Fr
 TEST_F(LightsReferenceGpu, FroxelVolumeFogsATransparentQuadAsTheModelDoes) {
     const host::SceneDesc scene = shippedScene("engine_spot");
     const host::MeshData mesh = host::loadSceneMeshes(scene);
-    const host::reference::ReferenceScene exact(scene, mesh, kSize.width, kSize.height);
+    const host::reference::ReferenceScene exact(scene, mesh, kLightsSize.width, kLightsSize.height);
     // The quad halfway to the median wall: it covers most pixels.
     std::vector<double> wallZ(kPixels);
-    for (uint32_t y = 0; y < kSize.height; ++y)
-        for (uint32_t x = 0; x < kSize.width; ++x) {
+    for (uint32_t y = 0; y < kLightsSize.height; ++y)
+        for (uint32_t x = 0; x < kLightsSize.width; ++x) {
             const ls::ref::Ray r = exact.pixelRay(x, y);
-            wallZ[y * kSize.width + x] = r.length * glm::dot(r.direction, exact.camera().axis());
+            wallZ[y * kLightsSize.width + x] =
+                r.length * glm::dot(r.direction, exact.camera().axis());
         }
     std::vector<double> sorted = wallZ;
     std::nth_element(sorted.begin(), sorted.begin() + kPixels / 2, sorted.end());
@@ -445,7 +447,7 @@ TEST_F(LightsReferenceGpu, FroxelVolumeFogsATransparentQuadAsTheModelDoes) {
 
     host::RenderOptions options = froxelOptions(2);
     options.exportVolume = true;
-    host::EngineRenderer renderer(dev(), scene, mesh, kSize);
+    host::EngineRenderer renderer(dev(), scene, mesh, kLightsSize);
     const host::FrameOutput out = renderer.render(options);
     const lightscatter::FroxelVolume& v = out.volumeLayout;
     ASSERT_EQ(v.width, 32u);
@@ -462,9 +464,9 @@ TEST_F(LightsReferenceGpu, FroxelVolumeFogsATransparentQuadAsTheModelDoes) {
     auto judgeQuad = [&](const std::vector<float>& texels, double scale) {
         double linDiff = 0, linSum = 0, tDiff = 0, tSum = 0;
         size_t covered = 0;
-        for (uint32_t y = 0; y < kSize.height; ++y)
-            for (uint32_t x = 0; x < kSize.width; ++x) {
-                if (wallZ[y * kSize.width + x] <= d) continue;  // the wall hides the quad
+        for (uint32_t y = 0; y < kLightsSize.height; ++y)
+            for (uint32_t x = 0; x < kLightsSize.width; ++x) {
+                if (wallZ[y * kLightsSize.width + x] <= d) continue;  // the wall hides the quad
                 ++covered;
                 ls::ref::Ray r = exact.pixelRay(x, y);
                 r.length = d / glm::dot(r.direction, exact.camera().axis());

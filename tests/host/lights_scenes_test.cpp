@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "host_test_helpers.h"
 #include "scene/scene.h"
 
 namespace {
@@ -19,14 +20,9 @@ namespace fs = std::filesystem;
 
 constexpr size_t kCounts[] = {1, 2, 4, 8};
 
-std::string readAll(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using host_test::readAll;
 
-fs::path scenePath(const std::string& name) {
+fs::path shippedScene(const std::string& name) {
     return fs::path(LS_SOURCE_DIR) / "scenes" / (name + ".json");
 }
 
@@ -53,10 +49,10 @@ TEST(LightsScenes, TheGeneratorWritesTheShippedFiles) {
 }
 
 TEST(LightsScenes, EachIsTheAtriumUnderNShadowedSpots) {
-    const host::SceneDesc atrium = host::loadSceneFile(scenePath("atrium").string());
+    const host::SceneDesc atrium = host::loadSceneFile(shippedScene("atrium").string());
     for (size_t count : kCounts) {
         const host::SceneDesc s =
-            host::loadSceneFile(scenePath("atrium_spots_" + std::to_string(count)).string());
+            host::loadSceneFile(shippedScene("atrium_spots_" + std::to_string(count)).string());
         SCOPED_TRACE(s.path);
         ASSERT_EQ(s.lightCount(), count);
         for (size_t i = 0; i < count; ++i) {

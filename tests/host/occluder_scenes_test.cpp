@@ -16,6 +16,7 @@
 
 #include "beam_tree/light_volume_mesh.h"
 #include "beam_tree/occluders.h"
+#include "host_test_helpers.h"
 #include "scene/bounding_boxes.h"
 
 namespace {
@@ -28,12 +29,7 @@ std::string scenePath(int count) {
     return std::string(LS_SOURCE_DIR) + "/scenes/occluders_" + std::to_string(count) + ".json";
 }
 
-std::string readAll(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using host_test::readAll;
 
 void worldBounds(const host::OrientedBox& b, glm::vec3& lo, glm::vec3& hi) {
     glm::vec3 extent(0.0f);

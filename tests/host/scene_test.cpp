@@ -9,6 +9,7 @@
 #include <fstream>
 #include <glm/glm.hpp>
 
+#include "host_test_helpers.h"
 #include "scene/scene.h"
 
 namespace {
@@ -17,11 +18,9 @@ namespace fs = std::filesystem;
 
 const std::string kBox = "/usr/share/assimp/models/glTF2/BoxTextured-glTF/BoxTextured.gltf";
 
-void expectVec3(const glm::vec3& actual, const glm::vec3& expected, float tolerance = 1e-6f) {
-    EXPECT_NEAR(actual.x, expected.x, tolerance);
-    EXPECT_NEAR(actual.y, expected.y, tolerance);
-    EXPECT_NEAR(actual.z, expected.z, tolerance);
-}
+using host_test::expectVec3;
+// What the reader parses lands within a float's rounding of the file's decimal.
+constexpr float kParsed = 1e-6f;
 
 glm::vec3 apply(const glm::mat4& m, const glm::vec3& p) {
     return glm::vec3(m * glm::vec4(p, 1));
@@ -84,11 +83,11 @@ TEST_F(SceneFileTest, AFullFileSetsEveryField) {
     EXPECT_EQ(s.models[0].path, (dir_ / "model.glb").string());
     EXPECT_EQ(s.models[0].transform, glm::mat4(1.0f));
     EXPECT_EQ(s.models[1].path, kBox);
-    expectVec3(apply(s.models[1].transform, {0, 0, 0}), {1, 2, 3});
+    expectVec3(apply(s.models[1].transform, {0, 0, 0}), {1, 2, 3}, kParsed);
 
-    expectVec3(s.camera.position, {1, 2, 3});
-    expectVec3(s.camera.target, {4, 2, 3});
-    expectVec3(s.camera.up, {0, 0, 1});  // normalized
+    expectVec3(s.camera.position, {1, 2, 3}, kParsed);
+    expectVec3(s.camera.target, {4, 2, 3}, kParsed);
+    expectVec3(s.camera.up, {0, 0, 1}, kParsed);  // normalized
     EXPECT_FLOAT_EQ(s.camera.fovYDegrees, 45.0f);
     EXPECT_FLOAT_EQ(s.camera.nearPlane, 0.5f);
     EXPECT_FLOAT_EQ(s.camera.farPlane, 250.0f);
@@ -96,9 +95,9 @@ TEST_F(SceneFileTest, AFullFileSetsEveryField) {
     EXPECT_TRUE(s.camera.infiniteFar);
 
     EXPECT_EQ(s.light.type, lightscatter::LightType::Spot);
-    expectVec3(s.light.position, {0, 10, 0});
-    expectVec3(s.light.direction, {0, -0.6f, 0.8f});  // (0, -3, 4) / 5
-    expectVec3(s.light.intensity, {100, 90, 80});
+    expectVec3(s.light.position, {0, 10, 0}, kParsed);
+    expectVec3(s.light.direction, {0, -0.6f, 0.8f}, kParsed);  // (0, -3, 4) / 5
+    expectVec3(s.light.intensity, {100, 90, 80}, kParsed);
     EXPECT_FLOAT_EQ(s.light.innerConeAngleDegrees, 89.0f);
     EXPECT_FLOAT_EQ(s.light.outerConeAngleDegrees, 89.0f);
     EXPECT_FLOAT_EQ(s.light.range, 40.0f);
@@ -106,13 +105,13 @@ TEST_F(SceneFileTest, AFullFileSetsEveryField) {
     EXPECT_EQ(s.light.shadowMapSize, 0u);
 
     expectVec3(s.medium.betaR, {1e-5f, 2e-5f, 3e-5f}, 1e-12f);
-    expectVec3(s.medium.betaM, {0.01f, 0.02f, 0.03f});
+    expectVec3(s.medium.betaM, {0.01f, 0.02f, 0.03f}, kParsed);
     EXPECT_FLOAT_EQ(s.medium.g, -0.5f);
-    expectVec3(s.medium.sigmaA, {0, 0.001f, 0});
+    expectVec3(s.medium.sigmaA, {0, 0.001f, 0}, kParsed);
     EXPECT_EQ(s.medium.phase, lightscatter::MiePhase::Isotropic);
     EXPECT_FLOAT_EQ(s.medium.maxDistance, 500.0f);
-    expectVec3(s.skyColor, {0.1f, 0.2f, 0.3f});
-    expectVec3(s.ambient, {0.01f, 0.02f, 0.03f});
+    expectVec3(s.skyColor, {0.1f, 0.2f, 0.3f}, kParsed);
+    expectVec3(s.ambient, {0.01f, 0.02f, 0.03f}, kParsed);
     EXPECT_FLOAT_EQ(s.exposure, 0.8f);
 }
 
@@ -191,8 +190,8 @@ TEST_F(SceneFileTest, LoadSceneMeshesAppendsEveryModel) {
     ASSERT_EQ(m.primitives.size(), 2u);
     EXPECT_EQ(m.primitives[1].material, 1);
     EXPECT_EQ(m.textures.size(), 2u);
-    expectVec3(m.bounds.min, {-0.5f, -0.5f, -0.5f});
-    expectVec3(m.bounds.max, {10.5f, 0.5f, 0.5f});
+    expectVec3(m.bounds.min, {-0.5f, -0.5f, -0.5f}, kParsed);
+    expectVec3(m.bounds.max, {10.5f, 0.5f, 0.5f}, kParsed);
 }
 
 // Every SCENE.json in `folder` loads with its meshes, and there is at least one: a folder with
@@ -468,8 +467,6 @@ TEST_F(SceneFileTest, Directions) {
               "camera.up is parallel to the view direction");
 }
 
-}  // namespace
-
 // "lights": an array of light objects beside the single "light", one of the two.
 // A spot's cookie: an image next to the scene (or at a path relative to it), decoded to RGBA8 as
 // stored; every way it can be wrong is one line naming the field and the file.
@@ -570,14 +567,10 @@ TEST_F(SceneFileTest, ALightListHasItsOwnRules) {
               "(no error)");
 }
 
-namespace {
-
 // A 200 KB value of `levels` arrays within one another.
 std::string deepArray(size_t levels) {
     return std::string(levels, '[') + std::string(levels, ']');
 }
-
-}  // namespace
 
 // Deep nesting is refused while parsing, in every field, and no message quotes more than a few
 // dozen characters of what the file holds (scene files used to refuse these through type checks;
@@ -610,3 +603,5 @@ TEST_F(SceneFileTest, DeepNestingAndLongValuesGiveShortErrors) {
     EXPECT_EQ(errorFor(R"({"camera": {"near": 1, "near": 2}})"),
               "camera: key 'near' appears twice in one object");
 }
+
+}  // namespace

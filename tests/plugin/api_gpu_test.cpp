@@ -46,7 +46,7 @@ lightscatter::Mat4 times(const glm::mat4& left, const lightscatter::Mat4& m) {
     return out;
 }
 
-bool hasPass(const std::vector<std::string>& passes, const std::string& fragment) {
+bool anyPassContains(const std::vector<std::string>& passes, const std::string& fragment) {
     for (const auto& p : passes)
         if (p.find(fragment) != std::string::npos) return true;
     return false;
@@ -298,8 +298,8 @@ TEST_F(PluginApiGpu, OnlyTheNodesAFrameNeedsAreBuilt) {
     // Spot with a shadow map: the epipolar set, and the point-light table the first time.
     TestFrame spot(dev(), spotFrame());
     auto r = run(spot, Method::Epipolar);
-    EXPECT_TRUE(hasPass(r.passNames, "min/max trees"));
-    EXPECT_FALSE(hasPass(r.passNames, "light color"));
+    EXPECT_TRUE(anyPassContains(r.passNames, "min/max trees"));
+    EXPECT_FALSE(anyPassContains(r.passNames, "light color"));
     // The table is refilled only when the medium changes.
     r = run(spot, Method::Epipolar);
     EXPECT_TRUE(r.setupPasses.empty());
@@ -307,7 +307,7 @@ TEST_F(PluginApiGpu, OnlyTheNodesAFrameNeedsAreBuilt) {
     denser.medium.betaM = {0.05f, 0.05f, 0.05f};
     TestFrame other(dev(), denser);
     r = run(other, Method::Epipolar);
-    EXPECT_TRUE(hasPass(r.setupPasses, "point-light table"));
+    EXPECT_TRUE(anyPassContains(r.setupPasses, "point-light table"));
 
     // Directional: no table.
     FrameSpec sunSpec = spotFrame();
@@ -315,16 +315,16 @@ TEST_F(PluginApiGpu, OnlyTheNodesAFrameNeedsAreBuilt) {
     TestFrame sun(dev(), sunSpec);
     r = run(sun, Method::Epipolar);
     EXPECT_TRUE(r.setupPasses.empty());
-    EXPECT_FALSE(hasPass(r.passNames, "table"));
+    EXPECT_FALSE(anyPassContains(r.passNames, "table"));
 
     // Without a shadow map: no trees, no ray marching.
     FrameSpec open = spotFrame();
     open.shadowed = false;
     TestFrame unshadowed(dev(), open);
     r = run(unshadowed, Method::Epipolar);
-    EXPECT_FALSE(hasPass(r.passNames, "min/max"));
-    EXPECT_FALSE(hasPass(r.passNames, "ray march"));
-    EXPECT_TRUE(hasPass(r.passNames, "unshadowed"));
+    EXPECT_FALSE(anyPassContains(r.passNames, "min/max"));
+    EXPECT_FALSE(anyPassContains(r.passNames, "ray march"));
+    EXPECT_TRUE(anyPassContains(r.passNames, "unshadowed"));
 
     // A spot behind the camera, pointing away: nothing but the extinction of the composite.
     FrameSpec away = spotFrame();

@@ -14,7 +14,7 @@ namespace limits = lightscatter::limits;
 
 namespace {
 
-constexpr VkExtent2D kScreen{32, 18};
+constexpr VkExtent2D kLimitsScreen{32, 18};
 const glm::vec3 kEye{0.0f, 2.5f, 9.0f}, kTarget{0.0f, 1.5f, 0.0f};
 
 // sum |a - b| / sum |b| over every channel; non-finite values fail it.
@@ -38,7 +38,7 @@ double bound(Method m) {
 const Method kMethods[] = {Method::BruteForce, Method::Epipolar, Method::ConeMarch, Method::Planes};
 
 FrameSpec unshadowed(lightscatter::Light light, const View& view) {
-    FrameSpec s = sceneWith(light, kScreen);
+    FrameSpec s = sceneWith(light, kLimitsScreen);
     s.shadowed = false;
     s.view = view;
     return s;
@@ -52,8 +52,8 @@ class CameraLimitsGpu : public PluginGpuTest {
         TestFrame frame(dev(), spec);
         const std::vector<float> want = float64Unshadowed(frame);
         for (Method method : kMethods) {
-            plugin().render(
-                frame.description(method, lightscatter::Profile::Custom, smallSettings(kScreen)));
+            plugin().render(frame.description(method, lightscatter::Profile::Custom,
+                                              smallSettings(kLimitsScreen)));
             const double e = meanRelative(frame.inscatter(), want);
             std::printf("%-40s %-12s %.4f\n", what.c_str(), lightscatter::methodName(method), e);
             EXPECT_LE(e, bound(method)) << what << ", " << lightscatter::methodName(method);
@@ -63,7 +63,7 @@ class CameraLimitsGpu : public PluginGpuTest {
         TestFrame frame(dev(), spec);
         try {
             plugin().render(frame.description(Method::BruteForce, lightscatter::Profile::Custom,
-                                              smallSettings(kScreen)));
+                                              smallSettings(kLimitsScreen)));
             ADD_FAILURE() << "accepted; expected a refusal saying " << fragment;
         } catch (const lightscatter::InvalidInput& e) {
             const std::string m = e.what();
@@ -77,7 +77,7 @@ class CameraLimitsGpu : public PluginGpuTest {
 // limits::kMinNearPlane. Before the camera's rays were made from the projection's rows, near 1e-8
 // m gave an error of 1.0 (black) with every method, and 1e-5 m 0.24.
 TEST_F(CameraLimitsGpu, ATinyNearPlaneWithReversedDepthRendersCorrectly) {
-    const float aspect = float(kScreen.width) / float(kScreen.height);
+    const float aspect = float(kLimitsScreen.width) / float(kLimitsScreen.height);
     for (bool infinite : {false, true})
         for (float nearPlane : {1e-8f, limits::kMinNearPlane}) {
             const View view =
@@ -94,7 +94,7 @@ TEST_F(CameraLimitsGpu, ATinyNearPlaneWithReversedDepthRendersCorrectly) {
 // near plane. Near 1e-8 m with a far plane of 50 m collapses everything beyond 0.17 m onto depth 1,
 // and a float32 projection cannot even hold that far plane (it rounds to an infinite one).
 TEST_F(CameraLimitsGpu, StandardDepthRefusesANearPlaneItCannotResolve) {
-    const float aspect = float(kScreen.width) / float(kScreen.height);
+    const float aspect = float(kLimitsScreen.width) / float(kLimitsScreen.height);
     expectRefused(unshadowed(spotOverGrille(), lookAt(kEye, kTarget, 60.0f, aspect, 1e-8f, 50.0f)),
                   "cannot hold a far plane more than about 2^24 times its near plane, 1e-08 m");
     expectRefused(unshadowed(spotOverGrille(), lookAt(kEye, kTarget, 60.0f, aspect, 1e-5f, 50.0f)),
@@ -109,7 +109,7 @@ TEST_F(CameraLimitsGpu, StandardDepthRefusesANearPlaneItCannotResolve) {
 
 // A sun lights every pixel, so every ray is judged.
 TEST_F(CameraLimitsGpu, TheFieldOfViewWithinItsLimitsRendersCorrectly) {
-    const float aspect = float(kScreen.width) / float(kScreen.height);
+    const float aspect = float(kLimitsScreen.width) / float(kLimitsScreen.height);
     for (float fov : {limits::kMinFovDegrees, 1.0f, 170.0f}) {
         const View view = lookAt(kEye, kTarget, fov, aspect, 0.1f, 50.0f);
         expectAccurate(unshadowed(sunThroughGrille(), view), "fov " + std::to_string(fov));

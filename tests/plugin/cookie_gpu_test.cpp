@@ -73,11 +73,6 @@ lightscatter::Settings accurate(const FrameSpec& spec) {
     return s;
 }
 
-struct Bound {
-    Method method;
-    double meanRelative;  // of the reference's peak, over the frame
-};
-
 class CookieGpu : public PluginGpuTest {
   protected:
     std::vector<float> render(Method method, const FrameSpec& spec,
@@ -91,14 +86,14 @@ class CookieGpu : public PluginGpuTest {
     // Each method's Lin with `spec`'s cookie within its bound of the float64 model with the
     // cookie, and the same light without the cookie, and with the cookie's glass moved one pane
     // over (the same leading), outside it.
-    void check(const char* what, const FrameSpec& spec, const std::vector<Bound>& bounds) {
+    void check(const char* what, const FrameSpec& spec, const std::vector<MethodBound>& bounds) {
         TestFrame truth(dev(), spec);
         const std::vector<float> want = float64WithCookie(truth);
         FrameSpec plain = spec;
         plain.cookie.clear();
         FrameSpec shifted = spec;
         shifted.cookie = stainedGlass(8);
-        for (const Bound& b : bounds) {
+        for (const MethodBound& b : bounds) {
             SCOPED_TRACE(std::string(what) + ", " + lightscatter::methodName(b.method));
             const ErrorStats e = compare(render(b.method, spec), want);
             const ErrorStats p = compare(render(b.method, plain), want);

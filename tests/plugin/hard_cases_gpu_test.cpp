@@ -63,14 +63,14 @@ lightscatter::Light sun(glm::vec3 direction) {
     return l;
 }
 
-struct Case {
+struct HardCase {
     const char* name;
     std::function<FrameSpec()> make;
 };
 
-std::vector<Case> cases() {
+std::vector<HardCase> hardCases() {
     const View view = defaultView(kScreen);
-    std::vector<Case> c;
+    std::vector<HardCase> c;
     c.push_back({"light in the screen's centre", [=] {
                      return base(spotAt(throughNdc(view, 0, 0, 5), {0, -1, -0.3f}));
                  }});
@@ -196,7 +196,7 @@ size_t countNonFinite(const std::vector<float>& v) {
 class HardCasesGpu : public PluginGpuTest {};
 
 TEST_F(HardCasesGpu, EveryCaseGivesFinitePixelsWithEveryMethod) {
-    for (const Case& hard : cases()) {
+    for (const HardCase& hard : hardCases()) {
         TestFrame frame(dev(), hard.make());
         // Epipolar twice: without and with refinement on in-scattering differences.
         for (auto [method, refinement] :
@@ -226,7 +226,7 @@ TEST_F(HardCasesGpu, EveryCaseGivesFinitePixelsWithEveryMethod) {
 // measured (lavapipe, 48x32): the light behind the camera, 0.88%; a spot light at the camera, where
 // every ray projects to a point of the shadow map and is marched on its own, 0.45%.
 TEST_F(HardCasesGpu, EpipolarStaysCloseToBruteForce) {
-    for (const Case& hard : cases()) {
+    for (const HardCase& hard : hardCases()) {
         FrameSpec spec = hard.make();
         if (spec.screen.width != kScreen.width || !spec.depthOverride.empty()) continue;
         spec.screen = {48, 32};

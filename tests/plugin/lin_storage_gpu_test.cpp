@@ -10,38 +10,38 @@ using lightscatter::Method;
 
 namespace {
 
-constexpr VkExtent2D kScreen{16, 16};
+constexpr VkExtent2D kStorageScreen{16, 16};
 constexpr float kBright = 1e9f;  // W/sr or W/m^2: lightscatter.h's largest intensity
 
-struct Case {
+struct StorageCase {
     const char* name;
     FrameSpec spec;
     std::vector<Method> methods;
 };
 
-std::vector<Case> cases() {
+std::vector<StorageCase> storageCases() {
     lightscatter::Light point;
     point.type = lightscatter::LightType::Point;
     point.position = {0.5f, 2.0f, 1.0f};
-    std::vector<Case> c{
+    std::vector<StorageCase> c{
         {"sun",
-         sceneWith(sunThroughGrille(), kScreen),
+         sceneWith(sunThroughGrille(), kStorageScreen),
          {Method::Epipolar, Method::BruteForce, Method::ConeMarch, Method::Planes}},
         {"spot",
-         sceneWith(spotOverGrille(), kScreen),
+         sceneWith(spotOverGrille(), kStorageScreen),
          {Method::Epipolar, Method::BruteForce, Method::ConeMarch, Method::Planes,
           Method::BeamTreeAnalytic, Method::BeamTreeSampling}},
         {"unshadowed spot",
-         sceneWith(spotOverGrille(), kScreen),
+         sceneWith(spotOverGrille(), kStorageScreen),
          {Method::Analytic, Method::BeamTreeAnalytic}},
         {"point",
-         sceneWith(point, kScreen),
+         sceneWith(point, kStorageScreen),
          {Method::Epipolar, Method::BruteForce, Method::Analytic, Method::ConeMarch,
           Method::Planes}},
     };
     c[2].spec.shadowed = false;
     c[3].spec.shadowed = false;
-    for (Case& k : c) {
+    for (StorageCase& k : c) {
         k.spec.light.intensity = {1.0f, 1.0f, 1.0f};
         k.spec.light.shadowMapSize = 64;
     }
@@ -53,10 +53,10 @@ std::vector<Case> cases() {
 class LinStorageGpu : public PluginGpuTest {};
 
 TEST_F(LinStorageGpu, ABrightLightsLinIsScaledNotClamped) {
-    for (const Case& k : cases()) {
+    for (const StorageCase& k : storageCases()) {
         TestFrame frame(dev(), k.spec);
         for (Method method : k.methods) {
-            lightscatter::Settings s = smallSettings(kScreen);
+            lightscatter::Settings s = smallSettings(kStorageScreen);
             s.shadowMapSize = 64;
             s.planeCount = 32;
             auto d = frame.description(method, lightscatter::Profile::Custom, s);

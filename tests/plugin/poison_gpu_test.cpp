@@ -12,7 +12,7 @@ using lightscatter::Method;
 
 namespace {
 
-struct Case {
+struct PoisonCase {
     std::string name;
     lightscatter::Light light;
     Method method;
@@ -22,7 +22,7 @@ struct Case {
     glm::vec3 eye{0.0f, 2.5f, 9.0f};
 };
 
-std::vector<Case> cases() {
+std::vector<PoisonCase> poisonCases() {
     lightscatter::Light point = spotOverGrille();
     point.type = lightscatter::LightType::Point;
     return {
@@ -55,7 +55,7 @@ std::vector<Case> cases() {
 class PoisonedTransientsGpu : public PluginGpuTest {};
 
 TEST_F(PoisonedTransientsGpu, EveryMethodGivesTheSameImageWithoutNaN) {
-    for (const Case& c : cases()) {
+    for (const PoisonCase& c : poisonCases()) {
         FrameSpec spec;
         spec.screen = {48, 32};
         spec.view = lookAt(c.eye, {0.0f, 1.5f, 0.0f}, 60.0f, 1.5f, 0.1f, 50.0f);

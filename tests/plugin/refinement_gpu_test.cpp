@@ -18,7 +18,7 @@ namespace {
 constexpr float kThreshold = 0.1f;  // the threshold docs/epipolar.md measures
 constexpr const char* kPass = "refine on in-scattering differences";
 
-bool hasPass(const lightscatter::FrameReport& r, const std::string& name) {
+bool ranPassStartingWith(const lightscatter::FrameReport& r, const std::string& name) {
     for (const auto& p : r.passNames)
         if (p.rfind(name, 0) == 0) return true;
     return false;
@@ -71,9 +71,9 @@ TEST_F(RefinementGpu, ShadowEdgesWithoutDepthBreaksAreMarched) {
         std::printf(
             "%s, initial step 16: mean error %.2e without refinement, %.2e with (max %.2e, %.2e)\n",
             what, plain.meanRelative, refined.meanRelative, plain.maxRelative, refined.maxRelative);
-        EXPECT_FALSE(hasPass(off, kPass)) << what;
-        EXPECT_TRUE(hasPass(on, kPass)) << what;
-        EXPECT_TRUE(hasPass(on, "ray march with min/max trees (refinement)")) << what;
+        EXPECT_FALSE(ranPassStartingWith(off, kPass)) << what;
+        EXPECT_TRUE(ranPassStartingWith(on, kPass)) << what;
+        EXPECT_TRUE(ranPassStartingWith(on, "ray march with min/max trees (refinement)")) << what;
         EXPECT_EQ(refined.nonFinite, 0u) << what;
         EXPECT_GT(refined.peak, 0.0) << what;
         EXPECT_LT(refined.meanRelative, 0.5 * plain.meanRelative) << what;
@@ -130,7 +130,7 @@ TEST_F(RefinementGpu, EpipolarBoundsHoldWithRefinement) {
             const ErrorStats e = compare(render(frame, Method::Epipolar, settings, &report), brute);
             std::printf("%s, trees %s, refined: mean %.2e max %.2e\n", c.name, trees ? "on" : "off",
                         e.meanRelative, e.maxRelative);
-            EXPECT_TRUE(hasPass(report, kPass)) << c.name;
+            EXPECT_TRUE(ranPassStartingWith(report, kPass)) << c.name;
             EXPECT_EQ(e.nonFinite, 0u) << c.name;
             EXPECT_GT(e.peak, 0.0) << c.name;
             EXPECT_LT(e.meanRelative, c.meanBound) << c.name << ", trees " << trees;

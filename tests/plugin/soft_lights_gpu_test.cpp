@@ -46,11 +46,6 @@ FrameSpec windowedPoint(lightscatter::Medium medium) {
     return s;
 }
 
-struct Bound {
-    Method method;
-    double meanRelative;  // of the peak, over the frame
-};
-
 // Renders `spec` with `method` and compares with the float64 model's Lin `want`.
 ErrorStats errorOf(Method method, const FrameSpec& spec, const std::vector<float>& want) {
     TestFrame frame(testing_support::device(), spec);
@@ -62,7 +57,7 @@ ErrorStats errorOf(Method method, const FrameSpec& spec, const std::vector<float
 
 // Each method's bound on the mean error, of the peak: about five times what it measured (lavapipe),
 // and under the 6e-3 to 1.3e-2 that the light without its smooth edge gives.
-const std::vector<Bound> kBounds = {
+const std::vector<MethodBound> kBounds = {
     {Method::Epipolar, 1e-4}, {Method::BruteForce, 1e-4},       {Method::ConeMarch, 2e-4},
     {Method::Planes, 1e-3},   {Method::BeamTreeAnalytic, 1e-4}, {Method::BeamTreeSampling, 5e-4}};
 
@@ -71,10 +66,10 @@ class SoftLightsGpu : public PluginGpuTest {
     // Each method's error on `soft` within its bound, and `wrong` (the same light with its smooth
     // edge taken away) outside it.
     void check(const char* what, const FrameSpec& soft, const FrameSpec& wrong,
-               const std::vector<Bound>& bounds) {
+               const std::vector<MethodBound>& bounds) {
         TestFrame truth(dev(), soft);
         const std::vector<float> want = float64Unshadowed(truth);
-        for (const Bound& b : bounds) {
+        for (const MethodBound& b : bounds) {
             SCOPED_TRACE(std::string(what) + ", " + lightscatter::methodName(b.method));
             const ErrorStats e = errorOf(b.method, soft, want);
             const ErrorStats w = errorOf(b.method, wrong, want);

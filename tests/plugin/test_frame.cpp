@@ -1,5 +1,6 @@
 #include "test_frame.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace plugin_test {
@@ -190,6 +191,10 @@ ErrorStats compare(const std::vector<float>& a, const std::vector<float>& b) {
         e.rmsRelative = std::sqrt(sum2 / static_cast<double>(n));
     }
     return e;
+}
+
+bool ranPass(const lightscatter::FrameReport& r, std::string_view name) {
+    return std::find(r.passNames.begin(), r.passNames.end(), name) != r.passNames.end();
 }
 
 }  // namespace plugin_test

@@ -2,6 +2,7 @@
 // One frame of a synthetic scene on the test device: depth and shadow map ray-cast on the CPU and
 // uploaded, a constant engine color, and an R32G32B32A32 image receiving Lin.
 #include <memory>
+#include <string_view>
 #include <vector>
 
 #include "gpu_images.h"
@@ -78,5 +79,14 @@ struct ErrorStats {
     size_t nonFinite = 0;
 };
 ErrorStats compare(const std::vector<float>& a, const std::vector<float>& b);
+
+// A method's bound on ErrorStats::meanRelative in a test that renders one frame with several.
+struct MethodBound {
+    lightscatter::Method method;
+    double meanRelative;
+};
+
+// Whether the frame ran a pass of exactly this name.
+bool ranPass(const lightscatter::FrameReport& r, std::string_view name);
 
 }  // namespace plugin_test

@@ -72,7 +72,7 @@ TEST_F(BuffersGpu, ComputeChainThroughTransientBuffers) {
         p.transferSrc(b);
         out = p.transferDst(out);
         const rg::BufferRef src = b, dst = out;
-        p.execute([src, dst, bytes](rg::PassContext& ctx) {
+        p.execute([src, dst](rg::PassContext& ctx) {
             VkBufferCopy region{0, 0, bytes};
             vkCmdCopyBuffer(ctx.cmd(), ctx.buffer(src), ctx.buffer(dst), 1, &region);
         });
