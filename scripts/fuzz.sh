@@ -2,20 +2,27 @@
 # Fuzzes the project's own input readers (tests/fuzz/: the scene reader, the --settings reader, the
 # benchmark configuration reader, the glTF loader's checks over what tinygltf parsed).
 #
-#   scripts/fuzz.sh [SECONDS] [TARGET...]
+#   scripts/fuzz.sh [--build DIR] [SECONDS] [TARGET...]
 #
 # Builds build-fuzz/ with clang++ (libFuzzer, AddressSanitizer, UndefinedBehaviorSanitizer; only
 # the fuzz targets and what they link) and runs each target for SECONDS (default 30; CI runs 30),
-# one after the other. Each starts from a working copy of its corpus in build-fuzz/corpus/TARGET:
-# the shipped files (scenes, benchmark configurations, glTF) and tests/fuzz/corpus/TARGET/, which
-# holds the settings examples and every input a fuzzer ever found a fault with; tests/fuzz/TARGET.dict
-# gives it the format's words (keys, methods, glTF's types). Nothing is written
-# into the repository: a new finding is left in build-fuzz/findings/ and its input is added to
+# one after the other. With --build DIR the targets are built in DIR instead, a folder configured
+# with -DLS_FUZZ=ON (scripts/test.sh passes build-asan/, whose libraries are then compiled once
+# for both); corpora, logs and findings stay in build-fuzz/. Each starts from a working copy of its
+# corpus in build-fuzz/corpus/TARGET: the shipped files (scenes, benchmark configurations, glTF) and
+# tests/fuzz/corpus/TARGET/, which holds the settings examples and every input a fuzzer ever found a
+# fault with; tests/fuzz/TARGET.dict gives it the format's words (keys, methods, glTF's types).
+# Nothing is written into the repository: a new finding is left in build-fuzz/findings/ and its input is added to
 # tests/fuzz/corpus/TARGET/ by hand, with the fix and a test. A crash, a sanitizer report, an input
 # that runs longer than 10 s or a process above 2 GB counts as a finding and fails the script.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
+build=""
+if [[ ${1:-} == --build ]]; then
+    build=${2:?"fuzz: --build needs a build folder"}
+    shift 2
+fi
 seconds=${1:-30}
 shift $(($# > 0 ? 1 : 0))
 targets=("$@")
@@ -25,10 +32,19 @@ out=$root/build-fuzz
 # -O0: the build is most of CI's four minutes (88 s of CPU at -O0, 137 s at -O1, which runs each
 # input about twice as fast: LS_FUZZ_FLAGS="-O1 -gline-tables-only" for long runs).
 flags=${LS_FUZZ_FLAGS:--O0 -gline-tables-only}
-cmake -S . -B "$out" --log-level=WARNING -DCMAKE_CXX_COMPILER=clang++ -DLS_FUZZ=ON \
-    -DLS_BUILD_TESTS=OFF -DLS_BUILD_HOST_EXAMPLE=OFF -DLS_INSTALL=OFF \
-    -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="$flags"
-cmake --build "$out" -j"$(nproc)" --target "${targets[@]/%/_fuzzer}" > "$out/build.log" 2>&1 ||
+mkdir -p "$out"
+if [[ -n $build ]]; then
+    if ! grep -qx 'LS_FUZZ:BOOL=ON' "$build/CMakeCache.txt" 2> /dev/null; then
+        echo "fuzz: --build $build: not a build folder configured with -DLS_FUZZ=ON" >&2
+        exit 1
+    fi
+else
+    build=$out
+    cmake -S . -B "$build" --log-level=WARNING -DCMAKE_CXX_COMPILER=clang++ -DLS_FUZZ=ON \
+        -DLS_BUILD_TESTS=OFF -DLS_BUILD_HOST_EXAMPLE=OFF -DLS_INSTALL=OFF \
+        -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="$flags"
+fi
+cmake --build "$build" -j"$(nproc)" --target "${targets[@]/%/_fuzzer}" > "$out/build.log" 2>&1 ||
     { tail -n 40 "$out/build.log"; exit 1; }
 
 # The seeds of each target, besides tests/fuzz/corpus/TARGET/. Files above the inputs' length cap
@@ -56,7 +72,7 @@ for t in "${targets[@]}"; do
         [ "$(stat -c %s "$f")" -le $max_len ] && cp "$f" "$corpus/seed-$(basename "$f")"
     done
     log=$out/logs/$t.log
-    if "$out/tests/fuzz/${t}_fuzzer" "$corpus" -dict="tests/fuzz/$t.dict" -max_len=$max_len \
+    if "$build/tests/fuzz/${t}_fuzzer" "$corpus" -dict="tests/fuzz/$t.dict" -max_len=$max_len \
         -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
         -artifact_prefix="$out/findings/$t-" > "$log" 2>&1; then
         runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log")

@@ -11,13 +11,15 @@ cd "$(dirname "$0")/.."
 # to build these programs with both sanitizers at -O3 (87 s for gltf_test.cpp alone), clang 14 at
 # -O1 470 s, and the suites then ran in 32 s. Its warnings are errors too, so the code is
 # held to both compilers' warnings. A build folder configured with another compiler is started over.
+# LS_FUZZ too: the libraries carry libFuzzer's coverage as well, and scripts/fuzz.sh --build
+# build-asan builds its targets on them instead of compiling the libraries a third time.
 if [[ -f build-asan/CMakeCache.txt ]] && ! grep -q '^CMAKE_CXX_COMPILER:[A-Z]*=.*clang++' build-asan/CMakeCache.txt; then
     rm -rf build-asan
 fi
 cmake -S . -B build-asan -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Release \
-    -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DLS_WERROR=ON -DLS_SANITIZE=ON
+    -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DLS_WERROR=ON -DLS_SANITIZE=ON -DLS_FUZZ=ON
 cmake --build build-asan -j"$(nproc)" --target test_rendergraph_compile test_float64_model test_plugin_budget \
-    test_host_scene test_host_camera test_host_bench test_rendergraph_gpu test_plugin_gpu_sanitized
+    test_host_scene test_host_camera test_host_bench test_rendergraph_gpu test_plugin_gpu_sanitized fuzzers
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 cd build-asan
 for suite in tests/test_rendergraph_compile tests/float64_model/test_float64_model tests/plugin/test_plugin_budget \

@@ -9,5 +9,6 @@ scripts/build.sh
 ctest --test-dir build --output-on-failure -j"$(nproc)"
 # The same code under AddressSanitizer and UndefinedBehaviorSanitizer (build-asan/).
 scripts/test-sanitizers.sh
-# The input readers under libFuzzer, 30 s each (build-fuzz/, clang++).
-scripts/fuzz.sh 30
+# The input readers under libFuzzer, 30 s each, built in build-asan/ (configured with LS_FUZZ too,
+# so the libraries are compiled once for both).
+scripts/fuzz.sh --build build-asan 30
