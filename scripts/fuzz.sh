@@ -12,9 +12,10 @@
 # corpus in build-fuzz/corpus/TARGET: the shipped files (scenes, benchmark configurations, glTF) and
 # tests/fuzz/corpus/TARGET/, which holds the settings examples and every input a fuzzer ever found a
 # fault with; tests/fuzz/TARGET.dict gives it the format's words (keys, methods, glTF's types).
-# Nothing is written into the repository: a new finding is left in build-fuzz/findings/ and its input is added to
-# tests/fuzz/corpus/TARGET/ by hand, with the fix and a test. A crash, a sanitizer report, an input
-# that runs longer than 10 s or a process above 2 GB counts as a finding and fails the script.
+# Nothing is written into the repository: a new finding is left in build-fuzz/findings/ and its
+# input is added to tests/fuzz/corpus/TARGET/ by hand, with the fix and a test. A crash, a
+# sanitizer report, an input that runs longer than 10 s or a process above 2 GB counts as a finding
+# and fails the script.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
@@ -29,8 +30,9 @@ targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(scene settings bench gltf)
 out=$root/build-fuzz
 
-# -O0: the build is most of CI's four minutes (88 s of CPU at -O0, 137 s at -O1, which runs each
-# input about twice as fast: LS_FUZZ_FLAGS="-O1 -gline-tables-only" for long runs).
+# -O0 for build-fuzz/ alone: the build is most of a short run (88 s of CPU at -O0, 137 s at -O1,
+# which runs each input several times as fast: LS_FUZZ_FLAGS="-O1 -gline-tables-only" for long
+# runs). scripts/test.sh's build-asan/ is at -O1 already.
 flags=${LS_FUZZ_FLAGS:--O0 -gline-tables-only}
 mkdir -p "$out"
 if [[ -n $build ]]; then

@@ -13,7 +13,8 @@ cd "$(dirname "$0")/.."
 # held to both compilers' warnings. A build folder configured with another compiler is started over.
 # LS_FUZZ too: the libraries carry libFuzzer's coverage as well, and scripts/fuzz.sh --build
 # build-asan builds its targets on them instead of compiling the libraries a third time.
-if [[ -f build-asan/CMakeCache.txt ]] && ! grep -q '^CMAKE_CXX_COMPILER:[A-Z]*=.*clang++' build-asan/CMakeCache.txt; then
+cache=build-asan/CMakeCache.txt
+if [[ -f $cache ]] && ! grep -q '^CMAKE_CXX_COMPILER:[A-Z]*=.*clang++' "$cache"; then
     rm -rf build-asan
 fi
 cmake -S . -B build-asan -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Release \
