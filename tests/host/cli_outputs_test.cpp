@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "cli_runner.h"
+#include "host_test_helpers.h"
 
 extern char** environ;
 
@@ -28,8 +29,7 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string read(const std::string& name) {
-    std::ifstream in(path(name));
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    return host_test::readAll(path(name));
 }
 
 bool anyTemporary() {

@@ -770,8 +770,7 @@ TEST_F(GltfTest, MalformedGlb) {
     b.node({{"mesh", b.mesh({{"POSITION", b.vec3s(kTriangle)}})}});
     b.scene({0});
     const std::string good = b.writeGlb(path("good.glb"));
-    std::ifstream in(good, std::ios::binary);
-    const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    const std::string bytes = host_test::readAll(good);
 
     const std::string version = path("version.glb");
     writeBytes(version, bytes.substr(0, 4) + std::string("\x01\0\0\0", 4) + bytes.substr(8));

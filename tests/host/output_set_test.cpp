@@ -8,6 +8,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "host_test_helpers.h"
 #include "output_set.h"
 
 namespace {
@@ -29,10 +30,7 @@ class HostOutputSet : public ::testing::Test {
     void write(const std::string& name, const std::string& text) const {
         std::ofstream(path(name)) << text;
     }
-    std::string read(const std::string& name) const {
-        std::ifstream in(path(name));
-        return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    }
+    std::string read(const std::string& name) const { return host_test::readAll(path(name)); }
     std::vector<std::string> files() const {
         std::vector<std::string> names;
         for (const auto& e : fs::directory_iterator(dir_))
