@@ -1,7 +1,8 @@
 # cmake --install: the public header, the library (SPIR-V embedded in it) and the CMake package
 # lightscatterConfig.cmake with its version file, exporting one target, lightscatter::plugin.
 #
-#   <prefix>/include/lightscatter/lightscatter.h, vocabulary.h (which lightscatter.h includes)
+#   <prefix>/include/lightscatter/lightscatter.h and the headers it includes (vocabulary.h,
+#                                     settings.h, limits.h, methods.inc, methods/<method>.h)
 #   <prefix>/lib/liblightscatter.a (LS_BUILD_SHARED: liblightscatter.so)
 #   <prefix>/lib/cmake/lightscatter/lightscatterConfig.cmake, ...ConfigVersion.cmake, ...Targets*.cmake
 #   <prefix>/lib/pkgconfig/lightscatter.pc
@@ -35,9 +36,15 @@ install(TARGETS ${ls_installed} EXPORT lightscatterTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(FILES ${PROJECT_SOURCE_DIR}/plugin_api/include/lightscatter/lightscatter.h
-              ${PROJECT_SOURCE_DIR}/vocabulary/lightscatter/vocabulary.h
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/plugin_api/include/lightscatter
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(FILES ${PROJECT_SOURCE_DIR}/vocabulary/lightscatter/vocabulary.h
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/lightscatter)
+# Each method's settings header (lightscatter/methods/<method>.h).
+get_property(ls_method_include_dirs GLOBAL PROPERTY LS_METHOD_INCLUDE_DIRS)
+foreach(dir ${ls_method_include_dirs})
+  install(DIRECTORY ${dir}/lightscatter DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+endforeach()
 
 set(ls_package_dir ${CMAKE_INSTALL_LIBDIR}/cmake/lightscatter)
 install(EXPORT lightscatterTargets NAMESPACE lightscatter:: DESTINATION ${ls_package_dir})

@@ -5,32 +5,54 @@
 #include <cstdio>
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <utility>
 
 #include "cli_args.h"
+#include "settings_fields.h"
 #include "scene/input_file.h"
 #include "scene/json_input.h"
 
 namespace host::bench {
 namespace {
 
-// A method as a configuration names it: a froxel preset is froxels with its grid in `settings`.
+// A method as a configuration names it: its own name, or a preset's (MethodInfo::presets), which
+// is the method with the preset's settings.
 struct MethodName {
     lightscatter::Method method;
     std::string name;
-    lightscatter::Settings settings;
+    bool preset = false;
 };
 
 using nlohmann::json;
 
-// A sweep's run of a method: its enum value and a preset's froxel grid over the sweep's settings.
+// A run of a method: its enum value, and a preset's settings over the run's.
 void useMethod(BenchRun& r, const MethodName& m) {
     r.method = m.method;
-    r.settings.froxelTile = m.settings.froxelTile;
-    r.settings.froxelSlices = m.settings.froxelSlices;
-    r.settings.froxelTemporal = m.settings.froxelTemporal;
+    if (m.preset) (void)lightscatter::applyMethodPreset(m.name, r.settings);
+}
+
+// The method whose own field this is (its group is the method's settings member); none for
+// Settings' shared fields.
+std::optional<lightscatter::Method> owner(const SettingField& f) {
+    for (const lightscatter::MethodInfo& m : lightscatter::methodInfo())
+        for (const SettingField& own : m.settings)
+            if (own.name == f.name) return m.method;
+    return std::nullopt;
+}
+
+// A value as a run's label gives it: a number, on or off, a choice's name.
+std::string valueText(const json& v) {
+    if (v.is_boolean()) return v.get<bool>() ? "on" : "off";
+    if (v.is_string()) return v.get<std::string>();
+    if (v.is_number_float()) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%g", v.get<double>());
+        return buf;
+    }
+    return v.dump();
 }
 
 constexpr uint64_t kConfigFileCap = 1 * kMiB;
@@ -38,18 +60,6 @@ constexpr uint64_t kConfigFileCap = 1 * kMiB;
 // the square of the file (1000 scenes and 1000 sweep values are 30 KB and a million runs, each
 // checked with the plugin's budget). The largest shipped one, bench/full.json, has 420.
 constexpr size_t kMaxRuns = 10000;
-
-// The planes method's sweeps were named after "slice" until the word came to mean only an
-// epipolar line; configurations written with those names still read.
-constexpr std::pair<const char*, const char*> kFormerSweepKeys[] = {
-    {"slicePlanes", "planeCount"}, {"sliceTargets", "planeTargets"}};
-
-// The sweep a key of `sweeps` names: itself, or the sweep of its former name.
-std::string currentSweepKey(const std::string& key) {
-    for (const auto& [former, current] : kFormerSweepKeys)
-        if (key == former) return current;
-    return key;
-}
 
 // Reads one configuration; every failure names the file and the field. Every run it expands to
 // is checked here, before the benchmark renders anything, so a bad sweep value at the end of a
@@ -161,20 +171,20 @@ class ConfigReader {
         }
         const json sweeps = j.contains("sweeps") ? j["sweeps"] : json::object();
         if (!sweeps.is_object()) fail("sweeps must be an object");
+        // A sweep's key is a settings field (its name, or a former one) or the benchmark's
+        // own shadowMapSize (the scenes' maps) and size.
+        std::vector<const SettingField*> swept;
         for (const auto& [key, value] : sweeps.items()) {
-            const std::string k = currentSweepKey(key);
-            if (k != "slices" && k != "samples" && k != "initialStep" && k != "shadowMapSize" &&
-                k != "size" && k != "minMaxTrees" && k != "coneSamples" && k != "coneModes" &&
-                k != "planeCount" && k != "planeTargets" && k != "lightModel" &&
-                k != "refinementThreshold" && k != "inscatterRefinementThreshold")
+            if (key == "shadowMapSize" || key == "size") continue;
+            const SettingField* f = findSettingField(key);
+            if (!f)
                 fail("sweeps: unknown key '" + echoText(key) +
-                     "' (known: slices, samples, initialStep, refinementThreshold, "
-                     "inscatterRefinementThreshold, shadowMapSize, "
-                     "size, minMaxTrees, coneSamples, coneModes, planeCount, planeTargets, "
-                     "lightModel)");
-            if (k != key && sweeps.contains(k))
-                fail("sweeps." + key + " and sweeps." + k + " are one sweep (" + key +
-                     " is its former name): give it once");
+                     "' (known: shadowMapSize, size, and every settings field: " +
+                     knownFieldNames() + ")");
+            if (std::find(swept.begin(), swept.end(), f) != swept.end())
+                fail("sweeps." + key + " sweeps " + f->name +
+                     " a second time (under another of its names): give it once");
+            swept.push_back(f);
         }
         const std::vector<BenchRun> configured = j.contains("configurations")
                                                      ? configurations(j["configurations"])
@@ -215,9 +225,9 @@ class ConfigReader {
         std::vector<MethodName> methods;
         for (const json& m : list(v, name)) {
             const std::string method = text(m, name + "[]");
-            MethodName n{lightscatter::Method::Froxels, method, {}};
-            if (lightscatter::applyFroxelPreset(method, n.settings)) {
-                methods.push_back(n);
+            lightscatter::Settings unused;
+            if (const auto preset = lightscatter::applyMethodPreset(method, unused)) {
+                methods.push_back({*preset, method, true});
                 continue;
             }
             const auto parsed = lightscatter::parseMethod(method);
@@ -225,11 +235,11 @@ class ConfigReader {
                 std::string known;
                 for (const auto& k : lightscatter::methodNames())
                     known += (known.empty() ? "" : ", ") + k;
-                for (const auto& p : lightscatter::froxelPresets())
-                    known += std::string(", ") + p.name;
+                for (const lightscatter::MethodInfo& info : lightscatter::methodInfo())
+                    for (const lightscatter::MethodPreset& p : info.presets) known += ", " + p.name;
                 fail(name + ": unknown method '" + echoText(method) + "' (known: " + known + ")");
             }
-            methods.push_back({*parsed, lightscatter::methodName(*parsed), {}});
+            methods.push_back({*parsed, lightscatter::methodName(*parsed), false});
         }
         if (methods.empty())
             fail(name +
@@ -334,16 +344,24 @@ class ConfigReader {
         c.runs.push_back(r);
     }
 
-    // The plugin's rules for settings, applied without a GPU through its budget.
+    // The plugin's rules for settings.
     void checkSettings(const BenchRun& r, const std::string& where) const {
         try {
-            (void)lightscatter::budget(lightscatter::Profile::Custom, 64, 64, 64,
-                                       lightscatter::LightType::Spot, &r.settings);
+            lightscatter::checkSettings(r.settings, "");
         } catch (const lightscatter::InvalidInput& e) {
             std::string why = e.what();
-            for (const char* prefix : {"lightscatter: ", "custom."})
-                if (why.rfind(prefix, 0) == 0) why.erase(0, std::char_traits<char>::length(prefix));
+            const std::string lead = "lightscatter: ";
+            if (why.rfind(lead, 0) == 0) why.erase(0, lead.size());
             fail(where + " (run '" + r.label + "'): " + why);
+        }
+    }
+
+    // Sets a settings field a configuration or sweep names, its value as a settings file gives it.
+    void setField(BenchRun& r, const SettingField& f, const json& v, const std::string& key) const {
+        try {
+            setFieldFromJson(r.settings, f, v, key);
+        } catch (const std::runtime_error& e) {
+            fail(e.what());
         }
     }
 
@@ -359,22 +377,44 @@ class ConfigReader {
             const json& o = items[i];
             const std::string at = "configurations[" + std::to_string(i) + "]";
             if (!o.is_object()) fail(at + " must be an object");
-            static const char* const kKeys[] = {
-                "label",       "method",      "from",          "slices",       "samples",
-                "initialStep", "minMaxTrees", "shadowMapSize", "coneSamples",  "coneMode",
-                "planeCount",  "planeBlur",   "planeTarget",   "planeSpacing", "sizes"};
+            // The run's own keys, then settings fields (a method's nested under its member, or
+            // named in full, or by a former name).
+            static const char* const kKeys[] = {"label", "method", "from", "sizes",
+                                                "shadowMapSize", "family"};
+            struct Given {
+                const SettingField* field;
+                std::string key;
+                json value;
+            };
+            std::vector<Given> fields;
+            auto field = [&](const std::string& key, const json& value) {
+                const SettingField* f = findSettingField(key);
+                if (!f)
+                    fail(at + ": unknown key '" + echoText(key) +
+                         "' (known: label, method, from, sizes, shadowMapSize, family, and every "
+                         "settings field: " +
+                         knownFieldNames() + ")");
+                for (const Given& other : fields)
+                    if (other.field == f)
+                        fail(at + "." + key + " sets " + f->name + " a second time (as " +
+                             other.key + "): give it once");
+                fields.push_back({f, key, value});
+            };
             for (const auto& item : o.items()) {
                 const std::string& key = item.key();
-                if (std::find_if(std::begin(kKeys), std::end(kKeys),
-                                 [&key](const char* k) { return key == k; }) == std::end(kKeys))
-                    fail(at + ": unknown key '" + echoText(key) +
-                         "' (known: label, method, from, slices, samples, initialStep, "
-                         "minMaxTrees, shadowMapSize, coneSamples, coneMode, planeCount, "
-                         "planeBlur, planeTarget, planeSpacing, sizes)");
+                if (std::find_if(std::begin(kKeys), std::end(kKeys), [&key](const char* k) {
+                        return key == k;
+                    }) != std::end(kKeys))
+                    continue;
+                if (item.value().is_object())
+                    for (const auto& inner : item.value().items())
+                        field(key + "." + inner.key(), inner.value());
+                else
+                    field(key, item.value());
             }
             if (!o.contains("label")) fail(at + ".label is required");
             BenchRun r;
-            r.family = "configurations";
+            r.family = o.contains("family") ? text(o["family"], at + ".family") : "configurations";
             r.label = text(o["label"], at + ".label");
             for (const BenchRun& earlier : runs)
                 if (earlier.label == r.label)
@@ -391,50 +431,7 @@ class ConfigReader {
             r.settings = lightscatter::profileSettings(from);
             if (o.contains("method"))
                 useMethod(r, methodList(json::array({o["method"]}), at + ".method").front());
-            using Settings = lightscatter::Settings;
-            auto wholeKey = [&](const char* key, uint32_t Settings::*field, uint32_t lo,
-                                uint32_t hi) {
-                if (o.contains(key)) r.settings.*field = whole(o[key], at + "." + key, lo, hi);
-            };
-            wholeKey("slices", &Settings::slices, 0, std::numeric_limits<uint32_t>::max());
-            wholeKey("samples", &Settings::samplesPerSlice, 0,
-                     std::numeric_limits<uint32_t>::max());
-            wholeKey("initialStep", &Settings::initialSampleStep, 0,
-                     std::numeric_limits<uint32_t>::max());
-            wholeKey("coneSamples", &Settings::coneSamples, 1, 4096);
-            wholeKey("planeCount", &Settings::planeCount, 2, 4096);
-            wholeKey("planeBlur", &Settings::planeBlur, 0, std::numeric_limits<uint32_t>::max());
-            if (o.contains("minMaxTrees")) {
-                if (!o["minMaxTrees"].is_boolean())
-                    fail(at + ".minMaxTrees = " + echo(o["minMaxTrees"]) +
-                         ": must be true or false");
-                r.settings.minMaxTrees = o["minMaxTrees"].get<bool>();
-            }
-            if (o.contains("coneMode")) {
-                const std::string m = text(o["coneMode"], at + ".coneMode");
-                if (m != "cone" && m != "naive" && m != "no-shadow-sampling")
-                    fail(at + ".coneMode = \"" + echoText(m) +
-                         "\": must be cone, naive or no-shadow-sampling");
-                r.settings.coneLimited = m != "naive";
-                r.settings.shadowSampling = m != "no-shadow-sampling";
-            }
-            if (o.contains("planeSpacing")) {
-                if (!o["planeSpacing"].is_number())
-                    fail(at + ".planeSpacing = " + echo(o["planeSpacing"]) + ": must be a number");
-                r.settings.planeSpacing = o["planeSpacing"].get<float>();
-            }
-            if (o.contains("planeTarget")) {
-                const std::string t = text(o["planeTarget"], at + ".planeTarget");
-                if (t != "float16" && t != "float32" && t != "rgba8" && t != "rgba8-dither")
-                    fail(at + ".planeTarget = \"" + echoText(t) +
-                         "\": must be float16, float32, rgba8 (the seed's rounding) or "
-                         "rgba8-dither");
-                r.settings.planeTarget = t == "float16" ? lightscatter::PlaneTarget::Float16
-                                         : t == "float32"
-                                             ? lightscatter::PlaneTarget::Float32
-                                             : lightscatter::PlaneTarget::Rgba8Channels;
-                r.settings.planeDither = t == "rgba8-dither";
-            }
+            for (const Given& g : fields) setField(r, *g.field, g.value, at + "." + g.key);
             if (o.contains("shadowMapSize"))
                 r.shadowMapSize = whole(o["shadowMapSize"], at + ".shadowMapSize", 1, 16384);
             checkSettings(r, at);
@@ -483,13 +480,12 @@ class ConfigReader {
         for (const MethodName& named : methods) {
             const lightscatter::Method m = named.method;
             // Only epipolar has the seed's profiles; the other methods run once, balanced (a
-            // froxel preset with its grid).
+            // preset with its settings).
             if (m != lightscatter::Method::Epipolar) {
                 BenchRun r = base;
-                r.method = m;
+                useMethod(r, named);
                 r.family = "profiles";
                 r.label = named.name;
-                r.settings = named.settings;
                 add(c, r);
                 continue;
             }
@@ -502,146 +498,54 @@ class ConfigReader {
                 add(c, r);
             }
         }
-        constexpr uint32_t kMax = std::numeric_limits<uint32_t>::max();
-        // The key the file gave a sweep under: its name, or its former one.
-        auto written = [&](const char* key) {
-            for (const auto& [former, current] : kFormerSweepKeys)
-                if (current == std::string(key) && sweeps.contains(former)) return former;
-            return key;
+        auto values = [&](const std::string& key) {
+            return list(sweeps[key], "sweeps." + key);
         };
-        auto named = [&](const char* key) { return std::string("sweeps.") + written(key); };
-        auto values = [&](const char* key) {
-            return sweeps.contains(written(key)) ? list(sweeps[written(key)], named(key))
-                                                 : json::array();
-        };
-        // One-parameter sweeps from one profile (balanced unless sweepProfile says otherwise):
-        // `read` checks each value of sweeps.<key> and calls emit(label, change) for each run it
-        // makes; with `checked`, the plugin's rules check the run's settings.
-        auto sweep = [&](const char* key, const char* family, bool checked, auto read) {
+        // One-parameter sweeps of a settings field from one profile (balanced unless
+        // sweepProfile says otherwise): a run per value, of the method whose field it is (the
+        // configuration's first method for Settings' shared fields), labelled KEY=VALUE under
+        // the key as the file wrote it, and checked by the plugin's rules.
+        for (const auto& [key, given] : sweeps.items()) {
+            if (key == "shadowMapSize" || key == "size") continue;
+            const SettingField& f = *findSettingField(key);
+            const std::string where = "sweeps." + key;
+            for (const json& v : values(key)) {
+                BenchRun r = base;
+                r.family = key;
+                r.label = key + "=" + valueText(v);
+                r.custom = true;
+                r.settings = lightscatter::profileSettings(sweepProfile);
+                if (const auto m = owner(f))
+                    r.method = *m;
+                else if (!methods.empty())
+                    useMethod(r, methods.front());
+                setField(r, f, v, where + "[]");
+                checkSettings(r, where);
+                add(c, r);
+            }
+        }
+        auto sweep = [&](const char* key, auto emit) {
+            if (!sweeps.contains(key)) return;
             for (const json& v : values(key))
-                read(v, [&](const std::string& label, const auto& change) {
+                for (const MethodName& m : methods) {
                     BenchRun r = base;
-                    r.family = family;
-                    r.label = label;
+                    r.family = key;
                     r.custom = true;
                     r.settings = lightscatter::profileSettings(sweepProfile);
-                    change(r);
-                    if (checked) checkSettings(r, named(key));
+                    useMethod(r, m);
+                    emit(r, v, m);
                     add(c, r);
-                });
+                }
         };
-        using Settings = lightscatter::Settings;
-        auto wholeSetting = [&](const char* key, uint32_t Settings::*field) {
-            sweep(key, key, true, [&](const json& v, auto emit) {
-                const uint32_t n = whole(v, std::string("sweeps.") + key + "[]", 0, kMax);
-                emit(std::string(key) + "=" + std::to_string(n),
-                     [&](BenchRun& r) { r.settings.*field = n; });
-            });
-        };
-        auto numberSetting = [&](const char* key, float Settings::*field) {
-            sweep(key, key, true, [&](const json& v, auto emit) {
-                if (!v.is_number())
-                    fail(std::string("sweeps.") + key + "[] = " + echo(v) + ": must be a number");
-                emit(std::string(key) + "=" + shortNumber(v.get<double>()),
-                     [&](BenchRun& r) { r.settings.*field = v.get<float>(); });
-            });
-        };
-        wholeSetting("slices", &Settings::slices);
-        wholeSetting("samples", &Settings::samplesPerSlice);
-        wholeSetting("initialStep", &Settings::initialSampleStep);
-        // Epipolar's depth breaks: a smaller threshold marches more samples where the depth steps
-        // a little (temporal stability: bench/flicker.json).
-        numberSetting("refinementThreshold", &Settings::refinementThreshold);
-        // Epipolar's refinement on in-scattering differences (0: off): the samples between two
-        // marched ones that differ by more than this are marched too.
-        numberSetting("inscatterRefinementThreshold", &Settings::inscatterRefinementThreshold);
-        sweep("minMaxTrees", "trees", false, [&](const json& v, auto emit) {
-            if (!v.is_boolean())
-                fail("sweeps.minMaxTrees[] = " + echo(v) + ": must be true or false");
-            emit(std::string("minMaxTrees=") + (v.get<bool>() ? "on" : "off"),
-                 [&](BenchRun& r) { r.settings.minMaxTrees = v.get<bool>(); });
+        sweep("shadowMapSize", [&](BenchRun& r, const json& v, const MethodName& m) {
+            r.shadowMapSize = whole(v, "sweeps.shadowMapSize[]", 1, 16384);
+            r.label = m.name + " shadowMap=" + std::to_string(r.shadowMapSize);
         });
-        sweep("shadowMapSize", "shadowMapSize", false, [&](const json& v, auto emit) {
-            const uint32_t n = whole(v, "sweeps.shadowMapSize[]", 1, 16384);
-            for (const MethodName& m : methods)
-                emit(m.name + " shadowMap=" + std::to_string(n), [&](BenchRun& r) {
-                    useMethod(r, m);
-                    r.shadowMapSize = n;
-                });
-        });
-        // Seed 003's comparison: cone-march with each sample count and mode (the cone-limited
-        // march, the naive full-ray march, the cone-limited march without shadow-map sampling).
-        const json counts = values("coneSamples"), modes = values("coneModes");
-        if (!modes.empty() && counts.empty()) fail("sweeps.coneModes needs sweeps.coneSamples");
-        sweep("coneSamples", "cone", false, [&](const json& n, auto emit) {
-            const uint32_t samples = whole(n, "sweeps.coneSamples[]", 1, 4096);
-            for (const json& mode : modes.empty() ? json::array({"cone"}) : modes) {
-                const std::string m = mode.is_string() ? mode.get<std::string>() : echo(mode);
-                if (m != "cone" && m != "naive" && m != "no-shadow-sampling")
-                    fail("sweeps.coneModes[] = " + echo(mode) +
-                         ": must be cone, naive or no-shadow-sampling");
-                emit(m + " " + std::to_string(samples), [&](BenchRun& r) {
-                    r.method = lightscatter::Method::ConeMarch;
-                    r.settings.coneSamples = samples;
-                    r.settings.coneLimited = m != "naive";
-                    r.settings.shadowSampling = m != "no-shadow-sampling";
-                });
-            }
-        });
-        // Seed 002: the planes method with each plane count and accumulation target.
-        const json planes = values("planeCount"), targets = values("planeTargets");
-        if (!targets.empty() && planes.empty())
-            fail(named("planeTargets") + " needs sweeps.planeCount");
-        sweep("planeCount", "planes", false, [&](const json& n, auto emit) {
-            const uint32_t count = whole(n, named("planeCount") + "[]", 2, 4096);
-            for (const json& target : targets.empty() ? json::array({"float16"}) : targets) {
-                const std::string t = target.is_string() ? target.get<std::string>() : echo(target);
-                if (t != "float16" && t != "float32" && t != "rgba8" && t != "rgba8-dither")
-                    fail(named("planeTargets") + "[] = " + echo(target) +
-                         ": must be float16, float32, rgba8 (the seed's rounding) or rgba8-dither");
-                emit("planes " + std::to_string(count) + " " + t, [&](BenchRun& r) {
-                    r.method = lightscatter::Method::Planes;
-                    r.settings.planeCount = count;
-                    r.settings.planeTarget = t == "float16" ? lightscatter::PlaneTarget::Float16
-                                             : t == "float32"
-                                                 ? lightscatter::PlaneTarget::Float32
-                                                 : lightscatter::PlaneTarget::Rgba8Channels;
-                    r.settings.planeDither = t == "rgba8-dither";
-                });
-            }
-        });
-        // Seed 004's simplified light model against the full one, for each method of the
-        // configuration that honours it (beam-tree-analytic, analytic); both are measured against
-        // the full model's float64 reference.
-        sweep("lightModel", "lightModel", false, [&](const json& v, auto emit) {
-            const std::string name = v.is_string() ? v.get<std::string>() : echo(v);
-            if (name != "full" && name != "simplified")
-                fail("sweeps.lightModel[] = " + echo(v) + ": must be full or simplified");
-            bool any = false;
-            for (const MethodName& m : methods) {
-                if (m.method != lightscatter::Method::BeamTreeAnalytic &&
-                    m.method != lightscatter::Method::Analytic)
-                    continue;
-                any = true;
-                emit(m.name + " lightModel=" + name, [&](BenchRun& r) {
-                    useMethod(r, m);
-                    r.settings.lightModel = name == "simplified"
-                                                ? lightscatter::LightModel::Simplified
-                                                : lightscatter::LightModel::Full;
-                });
-            }
-            if (!any)
-                fail("sweeps.lightModel needs method beam-tree-analytic or analytic in methods");
-        });
-        sweep("size", "size", false, [&](const json& v, auto emit) {
-            const VkExtent2D s = size(v, "sweeps.size[]");
-            for (const MethodName& m : methods)
-                emit(m.name + " size=" + v.get<std::string>(), [&](BenchRun& r) {
-                    useMethod(r, m);
-                    r.size = s;
-                    r.measureError = c.measureError && r.size.width == c.size.width &&
-                                     r.size.height == c.size.height;
-                });
+        sweep("size", [&](BenchRun& r, const json& v, const MethodName& m) {
+            r.size = size(v, "sweeps.size[]");
+            r.label = m.name + " size=" + v.get<std::string>();
+            r.measureError = c.measureError && r.size.width == c.size.width &&
+                             r.size.height == c.size.height;
         });
     }
 

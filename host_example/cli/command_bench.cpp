@@ -25,6 +25,7 @@
 #include "bench/metrics.h"
 #include "bench/reference_cache.h"
 #include "commands.h"
+#include "settings_fields.h"
 #include "engine_renderer.h"
 #include "image_io.h"
 #include "output_set.h"
@@ -112,16 +113,18 @@ fs::path stripPath(const fs::path& out, const bench::BenchRun& run, const std::s
 // Runs the benchmark passes over without a word: a light or scene its method has nothing to
 // measure on.
 bool skipped(const bench::BenchRun& run, const SceneDesc& scene) {
-    // Seed 001's closed form takes unshadowed point and spot lights only.
-    const bool unshadowedPointLike =
-        scene.light.type == lightscatter::LightType::Point ||
-        (scene.light.type == lightscatter::LightType::Spot && scene.light.shadowMapSize == 0);
-    if (run.method == lightscatter::Method::Analytic && !unshadowedPointLike) return true;
-    // Seed 004's beam tree is built from a point or spot light.
-    if ((run.method == lightscatter::Method::BeamTreeAnalytic ||
-         run.method == lightscatter::Method::BeamTreeSampling) &&
-        scene.light.type == lightscatter::LightType::Directional)
-        return true;
+    // A method that does not take the scene's light (its type, its shadow map: methodInfo()).
+    for (const lightscatter::MethodInfo& m : lightscatter::methodInfo()) {
+        if (m.method != run.method) continue;
+        const lightscatter::LightType type = scene.light.type;
+        if (!(type == lightscatter::LightType::Directional ? m.directional
+              : type == lightscatter::LightType::Spot      ? m.spot
+                                                           : m.point))
+            return true;
+        if (scene.light.shadowMapSize > 0 &&
+            !(type == lightscatter::LightType::Point ? m.cubeShadow : m.shadowMap))
+            return true;
+    }
     // A shadow-map sweep resizes the light's map; a light without one (point_fog's) keeps none:
     // a point light given a size would get a cube map, which is another scene, not a size.
     return run.shadowMapSize && scene.light.shadowMapSize == 0;
@@ -131,13 +134,8 @@ RenderOptions runOptions(const bench::BenchRun& run) {
     RenderOptions options;
     options.method = run.method;
     options.profile = run.custom ? lightscatter::Profile::Custom : run.profile;
-    if (run.custom) options.custom = run.settings;
-    // The froxel grid is read from custom with every profile (a preset's, or the default).
-    options.custom.froxelTile = run.settings.froxelTile;
-    options.custom.froxelSlices = run.settings.froxelSlices;
-    options.custom.froxelFarDistance = run.settings.froxelFarDistance;
-    options.custom.froxelTemporal = run.settings.froxelTemporal;
-    options.custom.froxelHistoryWeight = run.settings.froxelHistoryWeight;
+    // With a profile, it decides its fields over these (a preset's settings, or the defaults).
+    options.custom = run.settings;
     return options;
 }
 
@@ -260,8 +258,8 @@ int runBench(Args& args) {
             rendererKey = key;
         }
         const RenderOptions options = runOptions(run);
-        const lightscatter::Settings used =
-            run.custom ? run.settings : lightscatter::profileSettings(run.profile);
+        const lightscatter::Settings used = lightscatter::profileSettings(
+            run.custom ? lightscatter::Profile::Custom : run.profile, run.settings);
 
         // The reference for the renderer's scene as it stands, once per pose in memory, and on
         // disk across runs of the benchmark.
@@ -344,17 +342,20 @@ int runBench(Args& args) {
             row["methodRan"] = last.plugin.method;  // with auto, the method it picked
             // Which nodes ran and why, and what the last frame placed (its sampling planes).
             row["reason"] = last.plugin.reason;
-            row["coneSamples"] = used.coneSamples;
-            row["coneLimited"] = used.coneLimited;
+            // Every setting the run used, as a settings file gives them; and, under the names
+            // the report's scripts read, the ones they tabulate.
+            row["settings"] = nlohmann::json::parse(settingsFileText(used));
+            row["coneSamples"] = used.coneMarch.samples;
+            row["coneLimited"] = used.coneMarch.limited;
             row["shadowSampling"] = used.shadowSampling;
             row["lightModel"] =
                 used.lightModel == lightscatter::LightModel::Simplified ? "simplified" : "full";
             row["profile"] = run.custom ? "custom" : lightscatter::profileName(run.profile);
             row["size"] = {run.size.width, run.size.height};
-            row["slices"] = used.slices;
-            row["samples"] = used.samplesPerSlice;
-            row["initialStep"] = used.initialSampleStep;
-            row["minMaxTrees"] = used.minMaxTrees;
+            row["slices"] = used.epipolar.slices;
+            row["samples"] = used.epipolar.samplesPerSlice;
+            row["initialStep"] = used.epipolar.initialSampleStep;
+            row["minMaxTrees"] = used.epipolar.minMaxTrees;
             row["shadowMapSize"] = sceneForRun.light.shadowMapSize;
             row["shadowMapFrom"] = profileMap          ? run.shadowMapFrom
                                    : run.shadowMapSize ? std::string("sweep")
@@ -380,7 +381,7 @@ int runBench(Args& args) {
             if (run.method == lightscatter::Method::Epipolar || last.plugin.method == "epipolar") {
                 row["marchedSamples"] = marched;
                 row["refinedSamples"] = refined;
-                row["inscatterRefinementThreshold"] = used.inscatterRefinementThreshold;
+                row["inscatterRefinementThreshold"] = used.epipolar.inscatterRefinementThreshold;
             }
             // The plugin's CPU work per frame (the beam tree), outside the GPU time above.
             row["cpuTime"] = spreadJson(cpu);
@@ -448,8 +449,9 @@ int runBench(Args& args) {
                 ".6f,%zu,%zu,%s",
                 row["scene"].get<std::string>().c_str(), run.label.c_str(), run.family.c_str(),
                 lightscatter::methodName(run.method), row["profile"].get<std::string>().c_str(),
-                run.size.width, run.size.height, used.slices, used.samplesPerSlice,
-                used.initialSampleStep, used.minMaxTrees ? 1 : 0, sceneForRun.light.shadowMapSize,
+                run.size.width, run.size.height, used.epipolar.slices,
+                used.epipolar.samplesPerSlice, used.epipolar.initialSampleStep,
+                used.epipolar.minMaxTrees ? 1 : 0, sceneForRun.light.shadowMapSize,
                 frames, t.median, t.p10, t.p90, t.min, t.max, errorColumns.c_str(), nonFinite,
                 device.name().c_str(), device.isCpu() ? 1 : 0, cpu.median,
                 renderer->occluderCount(), scene.lightCount(), motionColumns.c_str());

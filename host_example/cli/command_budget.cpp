@@ -1,6 +1,6 @@
-// lightscatter budget [--method epipolar|planes|beam-tree-analytic|beam-tree-sampling|froxels]
-// [--profile NAME|all] [--settings FILE.json]
+// lightscatter budget [--method NAME] [--profile NAME|all] [--settings FILE.json]
 //   [--size WxH] [--shadow-map N] [--lights sun,spot:unshadowed,point:brute-force,...] [--json]
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -11,6 +11,7 @@
 #include <lightscatter/lightscatter.h>
 #include "command_options.h"
 #include "commands.h"
+#include "settings_fields.h"
 #include "settings_file.h"
 
 namespace host {
@@ -20,21 +21,26 @@ double mib(uint64_t bytes) {
     return static_cast<double>(bytes) / (1024.0 * 1024.0);
 }
 
-// The methods whose textures depend on the profile or the grid, the ones lightscatter::budget
-// knows; a froxel preset sets its grid in `settings`.
+// A method or a preset's (MethodInfo::presets), whose settings go into `settings`.
 lightscatter::Method budgetMethod(const std::string& name, lightscatter::Settings& settings) {
-    if (lightscatter::applyFroxelPreset(name, settings)) return lightscatter::Method::Froxels;
-    const auto m = lightscatter::parseMethod(name);
-    if (m == lightscatter::Method::Epipolar || m == lightscatter::Method::Planes ||
-        m == lightscatter::Method::BeamTreeAnalytic ||
-        m == lightscatter::Method::BeamTreeSampling || m == lightscatter::Method::Froxels)
+    if (const auto preset = lightscatter::applyMethodPreset(name, settings)) return *preset;
+    if (const auto m = lightscatter::parseMethod(name); m && *m != lightscatter::Method::Auto)
         return *m;
-    const char* known =
-        "epipolar, planes, beam-tree-analytic, beam-tree-sampling, froxels (froxels-hdrp, "
-        "froxels-unreal)";
-    if (!m) throw std::runtime_error("unknown method '" + name + "' (budget knows: " + known + ")");
-    throw std::runtime_error("--method " + name + ": budget knows " + known +
-                             " only, the methods whose textures depend on the profile or grid");
+    std::vector<std::string> known = methodAndPresetNames();
+    known.erase(std::remove(known.begin(), known.end(), "auto"), known.end());
+    throw std::runtime_error("unknown method '" + name + "' (budget knows: " + joined(known) + ")");
+}
+
+// The method's own settings a budget shows: those the profile decides, or all of them.
+std::vector<const SettingField*> shownFields(lightscatter::Method method) {
+    std::vector<const SettingField*> own, sized;
+    for (const lightscatter::MethodInfo& m : lightscatter::methodInfo())
+        if (m.method == method)
+            for (const SettingField& f : m.settings) {
+                own.push_back(findSettingField(f.name));
+                if (f.profileSized) sized.push_back(own.back());
+            }
+    return sized.empty() ? own : sized;
 }
 
 // --lights: a comma-separated list of lights, each TYPE[:shadowed|:unshadowed][:METHOD], TYPE one
@@ -112,27 +118,12 @@ std::string lightsName(const std::vector<lightscatter::BudgetLight>& lights,
 
 int runBudget(Args& args) {
     const std::string methodName = args.take("--method", "");
-    lightscatter::Settings preset;  // a froxel preset's grid
-    const bool froxelPreset = lightscatter::applyFroxelPreset(methodName, preset);
-    const lightscatter::Method method =
-        budgetMethod(methodName.empty() ? "epipolar" : methodName, preset);
-    const bool froxels = method == lightscatter::Method::Froxels;
-    // planes and the beam trees sample with planes
-    const bool planes = method != lightscatter::Method::Epipolar && !froxels;
     const std::string settingsPath = args.take("--settings", "");
     const std::string profileName =
         args.take("--profile", settingsPath.empty() ? "all" : "balanced");
     const VkExtent2D size = parseSize(args.take("--size", "2560x1600"), "--size");
     const std::string sm = args.take("--shadow-map", "");
     const LightList lightList = parseLights(args.take("--lights", "spot"));
-    // A light that says whether it is shadowed or its method budgets the set light by light:
-    // each light's method its own, else --method where given, else auto.
-    std::vector<lightscatter::BudgetLight> set = lightList.lights;
-    std::vector<lightscatter::LightType> lights;
-    for (auto& l : set) {
-        lights.push_back(l.type);
-        if (l.method == lightscatter::Method::Auto && !methodName.empty()) l.method = method;
-    }
     const bool json = args.flag("--json");
     args.finish();
     std::vector<lightscatter::Profile> profiles;
@@ -141,10 +132,8 @@ int runBudget(Args& args) {
         if (!settingsPath.empty())
             throw std::runtime_error(
                 "--settings overlays one profile: give --profile NAME, not all");
-        profiles = {
-            lightscatter::Profile::HighQuality,     lightscatter::Profile::Balanced,
-            lightscatter::Profile::HighPerformance, lightscatter::Profile::LowHighQuality,
-            lightscatter::Profile::LowBalanced,     lightscatter::Profile::LowHighPerformance};
+        for (const std::string& n : lightscatter::profileNames())
+            if (n != "custom") profiles.push_back(*lightscatter::parseProfile(n));
     } else if (!lightscatter::parseProfile(profileName)) {
         std::string known = "all";
         for (const auto& n : lightscatter::profileNames()) known += ", " + n;
@@ -154,43 +143,39 @@ int runBudget(Args& args) {
         profiles = {chosen.profile};
         custom = chosen.custom;
     }
+    // A preset's settings go over --settings'.
+    const lightscatter::Method method =
+        budgetMethod(methodName.empty() ? "epipolar" : methodName, custom);
+    // A light that says whether it is shadowed or its method budgets the set light by light:
+    // each light's method its own, else --method where given, else auto. A light of the plain
+    // list has a shadow map where the method samples one.
+    std::vector<lightscatter::BudgetLight> set = lightList.lights;
+    const lightscatter::MethodInfo& info = lightscatter::methodInfo()[static_cast<size_t>(method)];
+    for (auto& l : set) {
+        if (!lightList.perLight) {
+            l.method = method;
+            l.shadowed = l.type == lightscatter::LightType::Point ? info.cubeShadow : info.shadowMap;
+        } else if (l.method == lightscatter::Method::Auto && !methodName.empty()) {
+            l.method = method;
+        }
+    }
     const uint32_t shadowOverride = sm.empty() ? 0 : parseWhole(sm, "--shadow-map", 1, 16384);
 
     nlohmann::json all = nlohmann::json::array();
     for (lightscatter::Profile p : profiles) {
-        auto s = p == lightscatter::Profile::Custom ? custom : lightscatter::profileSettings(p);
-        if (froxelPreset) {
-            s.froxelTile = preset.froxelTile;
-            s.froxelSlices = preset.froxelSlices;
-            s.froxelTemporal = preset.froxelTemporal;
-        } else if (p != lightscatter::Profile::Custom) {
-            s.froxelTile = custom.froxelTile;  // the grid is read from --settings with any profile
-            s.froxelSlices = custom.froxelSlices;
-            s.froxelFarDistance = custom.froxelFarDistance;
-            s.froxelTemporal = custom.froxelTemporal;
-        }
+        const lightscatter::Settings s = lightscatter::profileSettings(p, custom);
         const uint32_t shadow = shadowOverride ? shadowOverride : s.shadowMapSize;
         const lightscatter::Budget b =
-            lightList.perLight
-                ? lightscatter::budget(p, size.width, size.height, shadow, set, &s)
-                : lightscatter::budget(p, size.width, size.height, shadow, lights, &s, method);
+            lightscatter::budget(p, size.width, size.height, shadow, set, &custom);
         const std::string lightsText = lightsName(set, b.lightMethods, lightList.perLight);
         if (json) {
             nlohmann::json j;
             j["method"] = lightscatter::methodName(method);
             j["profile"] = lightscatter::profileName(p);
             j["screen"] = {size.width, size.height};
-            if (froxels) {
-                j["froxelTile"] = s.froxelTile;
-                j["froxelSlices"] = s.froxelSlices;
-            } else if (planes) {
-                j["planeCount"] = s.planeCount;
-                j["planeTarget"] = planeTargetName(s.planeTarget);
-                j["planeBlur"] = s.planeBlur;
-            } else {
-                j["slices"] = s.slices;
-                j["samplesPerSlice"] = s.samplesPerSlice;
-            }
+            j["settings"] = nlohmann::json::object();
+            for (const SettingField* f : shownFields(method))
+                j["settings"][f->name] = fieldJson(s, *f);
             j["shadowMapSize"] = shadow;
             j["lights"] = lightsText;
             j["lightMethods"] = b.lightMethods;
@@ -208,33 +193,24 @@ int runBudget(Args& args) {
             j["resources"] = entries;
             j["totalBytes"] = b.totalBytes;
             j["peakBytes"] = b.peakBytes;
-            if (b.seed &&
-                method == lightscatter::Method::Epipolar)  // seed 000's figures are epipolar's
+            if (b.seed)
                 j["seed"] = {{"screen", {b.seed->screenWidth, b.seed->screenHeight}},
                              {"megabytes", b.seed->megabytes},
                              {"milliseconds", b.seed->milliseconds}};
             all.push_back(j);
             continue;
         }
-        const std::string what =
-            froxels
-                ? "froxel columns of " + std::to_string(s.froxelTile) + "x" +
-                      std::to_string(s.froxelTile) + " pixels, " + std::to_string(s.froxelSlices) +
-                      " depth slices" + (s.froxelTemporal ? ", temporal" : "")
-            : method == lightscatter::Method::BeamTreeAnalytic
-                ? std::to_string(s.planeCount) + " sampling planes where uncertain, float32 target"
-            : method == lightscatter::Method::BeamTreeSampling
-                ? std::to_string(s.planeCount) +
-                      " sampling planes where lit or uncertain, float32 target"
-            : planes
-                ? std::to_string(s.planeCount) + " planes into " + planeTargetName(s.planeTarget) +
-                      (s.planeBlur ? ", blur " + std::to_string(s.planeBlur) : "")
-                : std::to_string(s.slices) + " slices x " + std::to_string(s.samplesPerSlice) +
-                      " samples";
-        std::printf("%s, %s: %s, %u^2 shadow map, %ux%u screen, light%s %s (sizes %s)\n",
+        std::string what;
+        for (const SettingField* f : shownFields(method))
+        {
+            const nlohmann::json v = fieldJson(s, *f);
+            what += (what.empty() ? "" : ", ") + f->name + " " +
+                    (v.is_string() ? v.get<std::string>() : v.dump());
+        }
+        std::printf("%s, %s: %s%s%u^2 shadow map, %ux%u screen, light%s %s (sizes %s)\n",
                     lightList.perLight ? "a method per light" : lightscatter::methodName(method),
-                    lightscatter::profileName(p), what.c_str(), shadow, size.width, size.height,
-                    lights.size() > 1 ? "s" : "", lightsText.c_str(),
+                    lightscatter::profileName(p), what.c_str(), what.empty() ? "" : ", ", shadow,
+                    size.width, size.height, set.size() > 1 ? "s" : "", lightsText.c_str(),
                     b.estimated ? "estimated without a device" : "from the device");
         for (const auto& e : b.entries)
             std::printf("  %-40s %-22s %5u x %-5u%s %10.2f MiB%s\n", e.name.c_str(),
@@ -243,7 +219,7 @@ int runBudget(Args& args) {
                         e.transient ? "" : "  (kept across frames)");
         std::printf("  total without aliasing %.1f MiB, peak with aliasing %.1f MiB",
                     mib(b.totalBytes), mib(b.peakBytes));
-        if (b.seed && method == lightscatter::Method::Epipolar)
+        if (b.seed)
             std::printf("; seed 000: %.1f MB at %ux%u", b.seed->megabytes, b.seed->screenWidth,
                         b.seed->screenHeight);
         std::printf("\n\n");

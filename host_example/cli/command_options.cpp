@@ -6,13 +6,14 @@
 #include "settings_file.h"
 
 namespace host {
-namespace {
 
 std::string joined(const std::vector<std::string>& names) {
     std::string s;
     for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
     return s;
 }
+
+namespace {
 
 // The way nlohmann writes a float read from JSON: 0.5, not 0.500000.
 std::string shortNumber(float x) {
@@ -23,13 +24,28 @@ std::string shortNumber(float x) {
 
 }  // namespace
 
-bool honoursNoise(lightscatter::Method method) {
-    return method == lightscatter::Method::Planes || method == lightscatter::Method::Auto;
+bool honours(lightscatter::Method method, bool lightscatter::MethodInfo::*what) {
+    if (method == lightscatter::Method::Auto) return true;  // it picks one that does
+    for (const lightscatter::MethodInfo& m : lightscatter::methodInfo())
+        if (m.method == method) return m.*what;
+    return false;
 }
 
-bool honoursLightModel(lightscatter::Method method) {
-    return method == lightscatter::Method::BeamTreeAnalytic ||
-           method == lightscatter::Method::Analytic || method == lightscatter::Method::Auto;
+std::string methodsHonouring(bool lightscatter::MethodInfo::*what) {
+    std::vector<std::string> names;
+    for (const lightscatter::MethodInfo& m : lightscatter::methodInfo())
+        if (m.*what) names.push_back(m.name);
+    std::string s;
+    for (size_t i = 0; i < names.size(); ++i)
+        s += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+    return s;
+}
+
+std::vector<std::string> methodAndPresetNames() {
+    std::vector<std::string> known = lightscatter::methodNames();
+    for (const lightscatter::MethodInfo& m : lightscatter::methodInfo())
+        for (const lightscatter::MethodPreset& p : m.presets) known.push_back(p.name);
+    return known;
 }
 
 RenderOptions profileOptions(const std::string& profile, const std::string& settingsPath) {
@@ -41,7 +57,7 @@ RenderOptions profileOptions(const std::string& profile, const std::string& sett
     if (*p == lightscatter::Profile::Custom && settingsPath.empty())
         throw std::runtime_error(
             "--profile custom needs --settings FILE.json, a JSON object of lightscatter::Settings "
-            "fields by name (e.g. {\"slices\": 512, \"samplesPerSlice\": 256}; see "
+            "fields by name (e.g. {\"epipolar\": {\"slices\": 512}}; see "
             "docs/host_example.md)");
     o.profile = *p;
     if (!settingsPath.empty()) {
@@ -55,40 +71,33 @@ RenderOptions profileOptions(const std::string& profile, const std::string& sett
 SceneOptions takeSceneOptions(Args& args, const char* defaultSize) {
     SceneOptions o;
     const std::string method = args.take("--method", "auto");
-    // A froxel preset ("froxels-hdrp", "froxels-unreal") is froxels with the preset's grid.
-    lightscatter::Settings preset;
-    const bool froxelPreset = lightscatter::applyFroxelPreset(method, preset);
-    const auto m = froxelPreset ? lightscatter::Method::Froxels : lightscatter::parseMethod(method);
-    if (!m) {
-        std::vector<std::string> known = lightscatter::methodNames();
-        for (const auto& p : lightscatter::froxelPresets()) known.emplace_back(p.name);
-        throw std::runtime_error("unknown method '" + method + "' (known: " + joined(known) + ")");
-    }
     const std::string profile = args.take("--profile", "balanced");
     o.settingsPath = args.take("--settings", "");
     o.render = profileOptions(profile, o.settingsPath);
+    // A method's preset ("froxels-unreal") is its method with the preset's settings.
+    const auto preset = lightscatter::applyMethodPreset(method, o.render.custom);
+    const auto m = preset ? preset : lightscatter::parseMethod(method);
+    if (!m)
+        throw std::runtime_error("unknown method '" + method +
+                                 "' (known: " + joined(methodAndPresetNames()) + ")");
     o.render.method = *m;
-    if (froxelPreset) {
-        o.render.custom.froxelTile = preset.froxelTile;
-        o.render.custom.froxelSlices = preset.froxelSlices;
-        o.render.custom.froxelTemporal = preset.froxelTemporal;
-    }
-    // Known before any device exists: seed 002's noise is a density only seed 002's planes sample
-    // (auto picks them when it is on); the plugin would refuse every other method's frame.
+    // Known before any device exists: the plugin would refuse a frame whose method does not
+    // honour these (auto picks one that does).
     const float noise = o.render.custom.noiseAmplitude;
-    if (noise > 0.0f && !honoursNoise(*m))
+    if (noise > 0.0f && !honours(*m, &lightscatter::MethodInfo::noise))
         throw std::runtime_error(
             o.settingsPath + ": noiseAmplitude = " + shortNumber(noise) +
-            ": seed 002's scrolling noise is honoured by method planes only; --method " + method +
-            " integrates the model's homogeneous medium (use --method planes or auto, or "
+            ": seed 002's scrolling noise is honoured by " +
+            methodsHonouring(&lightscatter::MethodInfo::noise) + " only; --method " + method +
+            " integrates the model's homogeneous medium (use one of them or auto, or "
             "noiseAmplitude 0)");
     if (o.render.custom.lightModel == lightscatter::LightModel::Simplified &&
-        !honoursLightModel(*m))
+        !honours(*m, &lightscatter::MethodInfo::simplifiedModel))
         throw std::runtime_error(
             o.settingsPath + ": lightModel = \"simplified\": seed 004's simplified light model " +
-            "is honoured by methods beam-tree-analytic and analytic only; --method " + method +
-            " integrates the full model (use --method beam-tree-analytic, analytic or auto, or " +
-            "lightModel \"full\")");
+            "is honoured by " + methodsHonouring(&lightscatter::MethodInfo::simplifiedModel) +
+            " only; --method " + method +
+            " integrates the full model (use one of them or auto, or lightModel \"full\")");
     const std::string size = args.take("--size", defaultSize ? defaultSize : "");
     if (!size.empty()) o.size = parseSize(size, "--size");
     o.device.deviceName = args.take("--device", "");

@@ -26,12 +26,14 @@ VkExtent2D sceneSize(const SceneOptions& o, VkExtent2D fallback);
 // `settingsPath` is "" when --settings was not given.
 RenderOptions profileOptions(const std::string& profile, const std::string& settingsPath);
 
-// Whether `method` samples Settings::noiseAmplitude (planes, and auto, which then picks planes);
-// the plugin refuses a non-zero amplitude with any other method.
-bool honoursNoise(lightscatter::Method method);
-
-// Whether `method` honours Settings::lightModel = Simplified (seed 004's light model):
-// beam-tree-analytic, analytic, and auto, which then picks one of them.
-bool honoursLightModel(lightscatter::Method method);
+// Whether a method honours a setting MethodInfo names (`what`: &MethodInfo::noise, ...); Auto
+// picks one that does.
+bool honours(lightscatter::Method method, bool lightscatter::MethodInfo::*what);
+// The names of the methods that honour it: "a, b and c".
+std::string methodsHonouring(bool lightscatter::MethodInfo::*what);
+// Names joined by ", ".
+std::string joined(const std::vector<std::string>& names);
+// Every method's name and every preset's (MethodInfo::presets), as --method takes them.
+std::vector<std::string> methodAndPresetNames();
 
 }  // namespace host

@@ -292,12 +292,24 @@ VkExtent2D soakSize(VkExtent2D base, int k) {
             std::max(16u, static_cast<uint32_t>(static_cast<float>(base.height) * f))};
 }
 
+// Whether a method takes the light as the scene has it: its type, its shadow map, its cookie.
+bool takesLight(const lightscatter::MethodInfo& m, const LightDesc& l) {
+    using lightscatter::LightType;
+    if (!(l.type == LightType::Directional ? m.directional
+          : l.type == LightType::Spot      ? m.spot
+                                           : m.point))
+        return false;
+    const bool shadowed = l.shadowMapSize > 0;
+    if (shadowed && !(l.type == LightType::Point ? m.cubeShadow : m.shadowMap)) return false;
+    return !l.cookie || (shadowed ? m.lightColor : m.unshadowedLightColor);
+}
+
 // The title's word on the noise: nothing when it is off.
 std::string noiseTitle(float amplitude, lightscatter::Method method) {
     if (amplitude <= 0.0f) return "";
     char buf[64];
     std::snprintf(buf, sizeof buf, " / noise %g%s", static_cast<double>(amplitude),
-                  honoursNoise(method) ? "" : " (planes and auto only: off)");
+                  honours(method, &lightscatter::MethodInfo::noise) ? "" : " (off: not honoured)");
     return buf;
 }
 
@@ -477,21 +489,10 @@ int runView(Args& args) {
         if (pressed(GLFW_KEY_L, keyL))
             selectedLight = (selectedLight + 1) % renderer.scene().lightCount();
         if (pressed(GLFW_KEY_M, keyM)) {
-            // analytic only where seed 001 applies (an unshadowed point or spot light), and
-            // neither it nor beam-tree-analytic with a cookie (their closed forms refuse it).
-            std::vector<lightscatter::Method> methods{
-                lightscatter::Method::Auto, lightscatter::Method::Epipolar,
-                lightscatter::Method::BruteForce, lightscatter::Method::ConeMarch,
-                lightscatter::Method::Planes};
-            const LightDesc& l = renderer.scene().light;
-            if (!l.cookie && (l.type == lightscatter::LightType::Point ||
-                              (l.type == lightscatter::LightType::Spot && l.shadowMapSize == 0)))
-                methods.push_back(lightscatter::Method::Analytic);
-            if (l.type != lightscatter::LightType::Directional) {
-                if (!l.cookie) methods.push_back(lightscatter::Method::BeamTreeAnalytic);
-                methods.push_back(lightscatter::Method::BeamTreeSampling);
-            }
-            methods.push_back(lightscatter::Method::Froxels);  // what engines ship, to compare
+            // Auto, then every method that takes the scene's light (methodInfo()).
+            std::vector<lightscatter::Method> methods{lightscatter::Method::Auto};
+            for (const lightscatter::MethodInfo& m : lightscatter::methodInfo())
+                if (takesLight(m, renderer.scene().light)) methods.push_back(m.method);
             auto it = std::find(methods.begin(), methods.end(), options.method);
             options.method =
                 it == methods.end() || it + 1 == methods.end() ? methods[0] : *(it + 1);
@@ -501,7 +502,8 @@ int runView(Args& args) {
             options.profile =
                 it == profiles.end() || it + 1 == profiles.end() ? profiles[0] : *(it + 1);
         }
-        if (pressed(GLFW_KEY_T, keyT)) options.custom.minMaxTrees = !options.custom.minMaxTrees;
+        if (pressed(GLFW_KEY_T, keyT))
+            options.custom.epipolar.minMaxTrees = !options.custom.epipolar.minMaxTrees;
         if (pressed(GLFW_KEY_N, keyN)) {
             const float noise = options.custom.noiseAmplitude;
             const auto next = std::upper_bound(kNoiseSteps.begin(), kNoiseSteps.end(), noise);
@@ -569,10 +571,10 @@ int runView(Args& args) {
                 status.report = lastReport.frame ? &lastReport : nullptr;
                 status.cpuDevice = device.isCpu();
                 status.deviceBytes = rg::deviceMemoryInUse();
-                if (options.custom.noiseAmplitude > 0.0f && !honoursNoise(options.method))
+                if (options.custom.noiseAmplitude > 0.0f && !honours(options.method, &lightscatter::MethodInfo::noise))
                     status.note = "the noise: planes and auto only (this method runs without)";
                 if (options.custom.lightModel == lightscatter::LightModel::Simplified &&
-                    !honoursLightModel(options.method))
+                    !honours(options.method, &lightscatter::MethodInfo::simplifiedModel))
                     status.note += std::string(status.note.empty() ? "" : "; ") +
                                    "the simplified model: analytic, beam-tree-analytic and auto "
                                    "only (this method runs the full one)";
@@ -597,8 +599,9 @@ int runView(Args& args) {
         // Only the planes method samples the noise (auto then picks it), and only some methods
         // seed 004's simplified model: the others run without them.
         auto runnable = [&](RenderOptions r) {
-            if (!honoursNoise(r.method)) r.custom.noiseAmplitude = 0.0f;
-            if (!honoursLightModel(r.method)) r.custom.lightModel = lightscatter::LightModel::Full;
+            if (!honours(r.method, &lightscatter::MethodInfo::noise)) r.custom.noiseAmplitude = 0.0f;
+            if (!honours(r.method, &lightscatter::MethodInfo::simplifiedModel))
+                r.custom.lightModel = lightscatter::LightModel::Full;
             return r;
         };
         RenderOptions run = runnable(options);

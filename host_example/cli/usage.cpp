@@ -2,37 +2,67 @@
 
 #include <array>
 #include <utility>
+#include <vector>
+
+#include <lightscatter/lightscatter.h>
 
 namespace host {
 namespace {
 
-const char* kCommon =
-    "common options: --device NAME (or LS_DEVICE), --validation, --help (-h)\n"
-    "methods: auto (default), epipolar, brute-force, analytic, cone-march, planes (or its\n"
-    "former name slices), beam-tree-analytic, beam-tree-sampling, froxels (or a grid\n"
-    "preset: froxels-hdrp, the default, froxels-unreal, each with -temporal after it\n"
-    "for the temporal mode); profiles:\n"
-    "high-quality, balanced (default), high-performance, low-high-quality, low-balanced,\n"
-    "low-high-performance, custom (with --settings)\n";
+// Words wrapped at 88 columns, every line after the first indented by `indent` spaces.
+std::string wrapped(const std::vector<std::string>& words, size_t indent, size_t first) {
+    std::string text, line;
+    size_t room = 88 - first;
+    for (const std::string& w : words) {
+        if (!line.empty() && line.size() + 1 + w.size() > room) {
+            text += line + "\n" + std::string(indent, ' ');
+            line.clear();
+            room = 88 - indent;
+        }
+        line += (line.empty() ? "" : " ") + w;
+    }
+    return text + line + "\n";
+}
 
-const char* kSettings =
-    "  --settings FILE.json  every field of lightscatter::Settings by name (slices,\n"
-    "                        samplesPerSlice, initialSampleStep, refinementThreshold,\n"
-    "                        inscatterRefinementThreshold, bilateralThreshold, minMaxTrees,\n"
-    "                        shadowFilter, fixup, fixupMaxSteps,\n"
-    "                        shadowDepthBias, interpolation, shadowMapSize; cone-march's\n"
-    "                        coneSamples, coneLimited, coneJitter, shadowSampling; planes'\n"
-    "                        planeCount, planeSpacing, planeTarget (float16, float32, rgba8),\n"
-    "                        planeScaling, planeRange, planeDither, planeBlur, planeAmbient\n"
-    "                        (read under their former names too: slicePlanes, sliceTarget,\n"
-    "                        slicePlaneScaling, sliceRange, sliceDither, sliceBlur,\n"
-    "                        sliceAmbient),\n"
-    "                        noiseAmplitude, noiseScale, noiseVelocity [4 numbers]; seed 004's\n"
-    "                        lightModel (full, simplified), simplifiedA0, simplifiedA1;\n"
-    "                        froxels' froxelTile, froxelSlices, froxelFarDistance,\n"
-    "                        froxelTemporal, froxelHistoryWeight); fields\n"
-    "                        it leaves out keep the values of --profile, and the frame runs as\n"
-    "                        the custom profile\n";
+// The methods and presets and the profiles, from the plugin (methodInfo(), profileNames()).
+std::string common() {
+    std::vector<std::string> words{"methods:", "auto (default),"};
+    for (const lightscatter::MethodInfo& m : lightscatter::methodInfo()) {
+        std::string presets;
+        for (const lightscatter::MethodPreset& p : m.presets)
+            presets += (presets.empty() ? " (or its presets: " : ", ") + p.name;
+        words.push_back(m.name + presets + (presets.empty() ? "," : "),"));
+    }
+    words.push_back("(planes' former name slices is still read); profiles:");
+    const std::vector<std::string> profiles = lightscatter::profileNames();
+    for (size_t i = 0; i < profiles.size(); ++i)
+        words.push_back(profiles[i] + (profiles[i] == "balanced" ? " (default)" : "") +
+                        (i + 1 < profiles.size() ? "," : " (with --settings)"));
+    return "common options: --device NAME (or LS_DEVICE), --validation, --help (-h)\n" +
+           wrapped(words, 0, 0);
+}
+
+// Every field of lightscatter::Settings, from the plugin's tables (settingsFields()).
+std::string settingsHelp() {
+    std::vector<std::string> words{
+        "JSON object of lightscatter::Settings' fields by name, each method's nested under its",
+        "member ({\"epipolar\": {\"slices\": 512}}) or named in full (\"epipolar.slices\");",
+        "fields it leaves out keep the values of --profile, and the frame runs as the custom",
+        "profile. The fields:"};
+    for (const lightscatter::SettingsField& f : lightscatter::settingsFields()) {
+        std::string w = f.name;
+        if (!f.choices.empty()) {
+            w += " (";
+            for (size_t i = 0; i < f.choices.size(); ++i) w += (i ? "|" : "") + f.choices[i];
+            w += ")";
+        }
+        if (f.kind == lightscatter::SettingsField::Kind::Vector4) w += " [4 numbers]";
+        words.push_back(w + ",");
+    }
+    words.back().pop_back();
+    words.push_back("(read under their names before 0.4 too: slices, planeCount, ...)");
+    return "  --settings FILE.json  " + wrapped(words, 24, 24);
+}
 
 struct Command {
     const char* name;
@@ -57,23 +87,19 @@ const std::array kCommands{
         "Outputs are written all or nothing: each must be its own file and none may be an "
         "input.\n"},
     Command{"budget",
-            "budget [--method epipolar|planes|beam-tree-analytic|beam-tree-sampling|froxels]\n"
-            "                    [--profile NAME|all]\n"
+            "budget [--method NAME] [--profile NAME|all]\n"
             "                    [--settings FILE.json]\n"
             "                    [--size WxH] [--shadow-map N] [--lights LIST]\n"
             "                    [--json]\n",
             "Prints a method's GPU memory per profile without a GPU.\n"
-            "  --method NAME       epipolar (default), planes, beam-tree-analytic,\n"
-            "                      beam-tree-sampling or froxels (froxels-hdrp,\n"
-            "                      froxels-unreal), the methods whose textures depend on the\n"
-            "                      profile or the grid\n"
+            "  --method NAME       any method or preset (default epipolar)\n"
             "  --profile NAME|all  one profile, or all of them (default)\n"
             "  --size WxH          the screen, 1 to 16384 each (default 2560x1600)\n"
             "  --shadow-map N      the shadow map's size, 1 to 16384 (default: the profile's)\n"
             "  --lights LIST       the frame's lights, comma-separated: sun, spot, point\n"
-            "                      (default spot); sun and spot have a shadow map, point\n"
-            "                      a cube map of six (epipolar; none with the other\n"
-            "                      methods). Each may add :shadowed or :unshadowed and\n"
+            "                      (default spot); each has a shadow map where the method\n"
+            "                      samples one (a point light a cube map of six). Each\n"
+            "                      may add :shadowed or :unshadowed and\n"
             "                      :METHOD (any method, auto by default, or --method\n"
             "                      where given): the set is then budgeted light by light,\n"
             "                      e.g. sun,spot:brute-force,point:unshadowed\n"
@@ -96,7 +122,7 @@ const std::array kCommands{
         "An edit the plugin refuses shows its message and is undone. F1 hides the panel.\n"
         "WASD/QE move, left-drag looks, arrow keys move the selected light (L selects the next\n"
         "of several), M cycles the methods, P cycles profiles, T toggles the min/max trees, N\n"
-        "steps the scrolling noise's amplitude (0, 0.25, 0.5, 1; planes and auto only), Esc\n"
+        "steps the scrolling noise's amplitude (0, 0.25, 0.5, 1; the methods that honour it), Esc\n"
         "quits.\n"
         "  --size WxH          1 to 16384 each (default 960x540)\n"
         "  --frames N          close after N frames (1 to 100000)\n"
@@ -133,15 +159,15 @@ std::string usage() {
     std::string text =
         "usage: lightscatter <command> [options]   (lightscatter <command> --help for more)\n";
     for (const Command& c : kCommands) text += std::string("  ") + c.synopsis;
-    return text + kCommon;
+    return text + common();
 }
 
 std::string commandUsage(const std::string& name) {
     for (const Command& c : kCommands) {
         if (name != c.name) continue;
         std::string text = std::string("usage: lightscatter ") + c.synopsis + c.details;
-        if (takesSettings(name)) text += kSettings;
-        return text + kCommon;
+        if (takesSettings(name)) text += settingsHelp();
+        return text + common();
     }
     return "";
 }

@@ -19,26 +19,10 @@ using nlohmann::json;
 
 constexpr uint64_t kSettingsFileCap = 1 * kMiB;
 
-// The planes method's fields were named after "slice" until the word came to mean only an
-// epipolar line; files written with those names still read.
-constexpr std::pair<const char*, const char*> kFormerNames[] = {
-    {"slicePlanes", "planeCount"},         {"sliceTarget", "planeTarget"},
-    {"slicePlaneScaling", "planeScaling"}, {"sliceRange", "planeRange"},
-    {"sliceDither", "planeDither"},        {"sliceBlur", "planeBlur"},
-    {"sliceAmbient", "planeAmbient"}};
-
-// The field a key names: itself, or the field of its former name.
-std::string currentName(const std::string& key) {
-    for (const auto& [former, current] : kFormerNames)
-        if (key == former) return current;
-    return key;
-}
-
-std::string knownFields() {
-    std::string s;
+bool isGroup(const std::string& key) {
     for (const SettingField& f : settingFields())
-        s += (s.empty() ? "" : ", ") + std::string(f.name);
-    return s;
+        if (fieldGroup(f) == key) return true;
+    return false;
 }
 
 class SettingsReader {
@@ -48,38 +32,33 @@ class SettingsReader {
     lightscatter::Settings read(lightscatter::Settings s) const {
         const json root = parse();
         if (!root.is_object()) fail("the top level must be a JSON object of settings");
-        for (const auto& item : root.items()) {
-            const std::string& key = item.key();  // as written, for the messages
-            const std::string field = currentName(key);
-            if (field != key && root.contains(field))
-                fail(key + " and " + field + " are one field (" + key +
-                     " is its former name): give it once");
-            const json& v = item.value();
-            const SettingField* f = findSettingField(field);
-            if (!f) fail("unknown key '" + echoText(key) + "' (known keys: " + knownFields() + ")");
-            switch (f->kind) {
-                case SettingField::Kind::Whole:
-                    setFieldValue(s, *f, whole(v, key));
-                    break;
-                case SettingField::Kind::Number:
-                    setFieldValue(s, *f, number(v, key));
-                    break;
-                case SettingField::Kind::Boolean:
-                    setFieldValue(s, *f, boolean(v, key) ? 1.0 : 0.0);
-                    break;
-                case SettingField::Kind::Choice:
-                    setFieldValue(s, *f, static_cast<double>(oneOf(v, key, f->choices)));
-                    break;
-                case SettingField::Kind::Vector4: {
-                    const std::array<float, 4> a = numbers<4>(v, key);
-                    for (int c = 0; c < 4; ++c) setFieldValue(s, *f, a[c], c);
-                    break;
-                }
+        // Each field given, with its key as written (a method's fields nested under its member,
+        // or named in full, or by a former flat name).
+        std::vector<std::pair<const SettingField*, std::string>> given;
+        auto take = [&](const std::string& key, const json& v) {
+            const SettingField* f = findSettingField(key);
+            if (!f)
+                fail("unknown key '" + echoText(key) + "' (known keys: " + knownFieldNames() + ")");
+            for (const auto& [other, written] : given)
+                if (other == f)
+                    fail(written + " and " + key + " are one field (" + f->name +
+                         "; the other a former name or a nested one): give it once");
+            given.emplace_back(f, key);
+            try {
+                setFieldFromJson(s, *f, v, key);
+            } catch (const std::runtime_error& e) {
+                fail(e.what());
             }
-            if (field == "shadowMapSize" && (s.shadowMapSize < 1 || s.shadowMapSize > 16384))
-                fail(key + " = " + echo(v) + ": must be from 1 to 16384");
+        };
+        for (const auto& item : root.items()) {
+            if (item.value().is_object() && isGroup(item.key())) {
+                for (const auto& inner : item.value().items())
+                    take(item.key() + "." + inner.key(), inner.value());
+            } else {
+                take(item.key(), item.value());
+            }
         }
-        checkWithThePlugin(s, root);
+        checkWithThePlugin(s, given);
         return s;
     }
 
@@ -96,61 +75,20 @@ class SettingsReader {
         }
     }
 
-    uint32_t whole(const json& v, const std::string& key) const {
-        const bool negative =
-            v.is_number_integer() && !v.is_number_unsigned() && v.get<int64_t>() < 0;
-        if (!v.is_number_integer() || negative ||
-            v.get<uint64_t>() > std::numeric_limits<uint32_t>::max())
-            fail(key + " = " + echo(v) + ": must be a whole number from 0 to 4294967295");
-        return static_cast<uint32_t>(v.get<uint64_t>());
-    }
-
-    float number(const json& v, const std::string& key) const {
-        if (!v.is_number()) fail(key + " = " + echo(v) + ": must be a number");
-        const double d = v.get<double>();
-        if (!std::isfinite(d) || std::fabs(d) > double(std::numeric_limits<float>::max()))
-            fail(key + " = " + echo(v) + ": must be a finite number");
-        return static_cast<float>(d);
-    }
-
-    template <size_t N>
-    std::array<float, N> numbers(const json& v, const std::string& key) const {
-        if (!v.is_array() || v.size() != N)
-            fail(key + " = " + echo(v) + ": must be an array of " + std::to_string(N) + " numbers");
-        std::array<float, N> out{};
-        for (size_t i = 0; i < N; ++i) out[i] = number(v[i], key + "[" + std::to_string(i) + "]");
-        return out;
-    }
-
-    bool boolean(const json& v, const std::string& key) const {
-        if (!v.is_boolean()) fail(key + " = " + echo(v) + ": must be true or false");
-        return v.get<bool>();
-    }
-
-    // The index of the choice `v` names.
-    size_t oneOf(const json& v, const std::string& key,
-                 const std::vector<const char*>& choices) const {
-        std::string names;
-        for (size_t i = 0; i < choices.size(); ++i) {
-            if (v.is_string() && v.get<std::string>() == choices[i]) return i;
-            names += (names.empty() ? "" : ", ") + std::string(choices[i]);
-        }
-        fail(key + " = " + echo(v) + ": must be one of " + names);
-    }
-
-    // The plugin's own rules (multiples, powers of two, ranges), applied without a GPU through
-    // its budget, and reported in this file's terms: under the name `root` gave the field.
-    void checkWithThePlugin(const lightscatter::Settings& s, const json& root) const {
+    // The plugin's own rules (multiples, powers of two, ranges), reported in this file's terms:
+    // under the name the file gave the field.
+    void checkWithThePlugin(const lightscatter::Settings& s,
+                            const std::vector<std::pair<const SettingField*, std::string>>& given)
+        const {
         try {
-            (void)lightscatter::budget(lightscatter::Profile::Custom, 64, 64, 64,
-                                       lightscatter::LightType::Spot, &s);
+            lightscatter::checkSettings(s, "");
         } catch (const lightscatter::InvalidInput& e) {
             std::string why = e.what();
-            for (const char* prefix : {"lightscatter: ", "custom."})
-                if (why.rfind(prefix, 0) == 0) why.erase(0, std::char_traits<char>::length(prefix));
-            for (const auto& [former, current] : kFormerNames)
-                if (root.contains(former) && why.rfind(std::string(current) + " ", 0) == 0)
-                    why.replace(0, std::char_traits<char>::length(current), former);
+            const std::string lead = "lightscatter: ";
+            if (why.rfind(lead, 0) == 0) why.erase(0, lead.size());
+            for (const auto& [f, written] : given)
+                if (why.rfind(f->name + " ", 0) == 0 || why.rfind(f->name + "[", 0) == 0)
+                    why.replace(0, f->name.size(), written);
             fail(why);
         }
     }

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <fstream>
 #include <utility>
+#include <vector>
 
 namespace host {
 namespace {
@@ -16,10 +17,12 @@ using lightscatter::LightType;
 using lightscatter::Method;
 using lightscatter::Profile;
 
-constexpr std::array kMethods{
-    Method::Auto,      Method::Epipolar, Method::BruteForce,       Method::Analytic,
-    Method::ConeMarch, Method::Planes,   Method::BeamTreeAnalytic, Method::BeamTreeSampling,
-    Method::Froxels};
+// Auto, then every method (methodInfo()).
+std::vector<Method> panelMethods() {
+    std::vector<Method> m{Method::Auto};
+    for (const lightscatter::MethodInfo& info : lightscatter::methodInfo()) m.push_back(info.method);
+    return m;
+}
 constexpr std::array kProfiles{Profile::HighQuality,     Profile::Balanced,
                                Profile::HighPerformance, Profile::LowHighQuality,
                                Profile::LowBalanced,     Profile::LowHighPerformance,
@@ -96,14 +99,7 @@ bool SettingsPanel::rebuildTargets() {
 }
 
 lightscatter::Settings SettingsPanel::effective(const RenderOptions& o) {
-    if (o.profile == Profile::Custom) return o.custom;
-    lightscatter::Settings s = o.custom;
-    const lightscatter::Settings sized = lightscatter::profileSettings(o.profile);
-    for (const SettingField& f : settingFields())
-        if (f.profileSized)
-            for (int c = 0; c < (f.kind == SettingField::Kind::Vector4 ? 4 : 1); ++c)
-                setFieldValue(s, f, fieldValue(sized, f, c), c);
-    return s;
+    return lightscatter::profileSettings(o.profile, o.custom);
 }
 
 std::string SettingsPanel::save(const RenderOptions& o, const std::string& path) const {
@@ -131,12 +127,9 @@ void SettingsPanel::draw(RenderOptions& o, SceneDesc& scene, const PanelStatus& 
         ImGui::End();
         return;
     }
-    int method =
-        static_cast<int>(std::find(kMethods.begin(), kMethods.end(), o.method) - kMethods.begin());
     if (ImGui::BeginCombo("method", lightscatter::methodName(o.method))) {
-        for (size_t i = 0; i < kMethods.size(); ++i)
-            if (ImGui::Selectable(lightscatter::methodName(kMethods[i]), method == int(i)))
-                setMethod(o, kMethods[i]);
+        for (Method m : panelMethods())
+            if (ImGui::Selectable(lightscatter::methodName(m), m == o.method)) setMethod(o, m);
         ImGui::EndCombo();
     }
     if (ImGui::BeginCombo("profile", lightscatter::profileName(o.profile))) {
@@ -184,57 +177,69 @@ void SettingsPanel::drawTimings(const PanelStatus& status) const {
     ImGui::EndChild();
 }
 
+void SettingsPanel::drawField(RenderOptions& o, const lightscatter::Settings& shown,
+                              const SettingField& f) {
+    ImGui::PushID(f.name.c_str());
+    const double v = fieldValue(shown, f);
+    const std::string label = fieldKey(f);
+    const float lo = static_cast<float>(f.sliderMin), hi = static_cast<float>(f.sliderMax);
+    switch (f.kind) {
+        case SettingField::Kind::Whole: {
+            int i = static_cast<int>(std::min(v, 2147483647.0));
+            if (ImGui::SliderInt(label.c_str(), &i, static_cast<int>(f.sliderMin),
+                                 static_cast<int>(f.sliderMax), "%d",
+                                 f.sliderMax > 64 ? ImGuiSliderFlags_Logarithmic
+                                                  : ImGuiSliderFlags_None))
+                setField(o, f, i);
+            break;
+        }
+        case SettingField::Kind::Number: {
+            float x = static_cast<float>(v);
+            const ImGuiSliderFlags flags =
+                f.logarithmic ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None;
+            if (ImGui::SliderFloat(label.c_str(), &x, lo, hi, "%.4g", flags)) setField(o, f, x);
+            break;
+        }
+        case SettingField::Kind::Boolean: {
+            bool b = v != 0.0;
+            if (ImGui::Checkbox(label.c_str(), &b)) setField(o, f, b ? 1.0 : 0.0);
+            break;
+        }
+        case SettingField::Kind::Choice: {
+            const int c = static_cast<int>(v);
+            const size_t n = f.choices.size();
+            if (ImGui::BeginCombo(label.c_str(),
+                                  c >= 0 && size_t(c) < n ? f.choices[size_t(c)].c_str() : "?")) {
+                for (size_t k = 0; k < n; ++k)
+                    if (ImGui::Selectable(f.choices[k].c_str(), int(k) == c))
+                        setField(o, f, double(k));
+                ImGui::EndCombo();
+            }
+            break;
+        }
+        case SettingField::Kind::Vector4: {
+            float a[4];
+            for (int c = 0; c < 4; ++c) a[c] = static_cast<float>(fieldValue(shown, f, c));
+            if (ImGui::SliderFloat4(label.c_str(), a, lo, hi, "%.3f"))
+                for (int c = 0; c < 4; ++c) setField(o, f, a[c], c);
+            break;
+        }
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("%s%s", f.doc.c_str(),
+                          f.profileSized ? " (the profile's; editing it selects custom)" : "");
+    ImGui::PopID();
+}
+
+// Settings' own fields, then each method's under its name (methodInfo()).
 void SettingsPanel::drawSettings(RenderOptions& o) {
     const lightscatter::Settings shown = effective(o);
-    for (const SettingField& f : settingFields()) {
-        ImGui::PushID(f.name);
-        const double v = fieldValue(shown, f);
-        switch (f.kind) {
-            case SettingField::Kind::Whole: {
-                int i = static_cast<int>(std::min(v, 2147483647.0));
-                if (ImGui::SliderInt(
-                        f.name, &i, static_cast<int>(f.min), static_cast<int>(f.max), "%d",
-                        f.max > 64 ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None))
-                    setField(o, f, i);
-                break;
-            }
-            case SettingField::Kind::Number: {
-                float x = static_cast<float>(v);
-                const ImGuiSliderFlags flags =
-                    f.logarithmic ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None;
-                if (ImGui::SliderFloat(f.name, &x, static_cast<float>(f.min),
-                                       static_cast<float>(f.max), "%.4g", flags))
-                    setField(o, f, x);
-                break;
-            }
-            case SettingField::Kind::Boolean: {
-                bool b = v != 0.0;
-                if (ImGui::Checkbox(f.name, &b)) setField(o, f, b ? 1.0 : 0.0);
-                break;
-            }
-            case SettingField::Kind::Choice: {
-                int c = static_cast<int>(v);
-                const size_t n = f.choices.size();
-                if (ImGui::BeginCombo(f.name, c >= 0 && size_t(c) < n ? f.choices[c] : "?")) {
-                    for (size_t k = 0; k < n; ++k)
-                        if (ImGui::Selectable(f.choices[k], int(k) == c)) setField(o, f, double(k));
-                    ImGui::EndCombo();
-                }
-                break;
-            }
-            case SettingField::Kind::Vector4: {
-                float a[4];
-                for (int c = 0; c < 4; ++c) a[c] = static_cast<float>(fieldValue(shown, f, c));
-                if (ImGui::SliderFloat4(f.name, a, static_cast<float>(f.min),
-                                        static_cast<float>(f.max), "%.3f"))
-                    for (int c = 0; c < 4; ++c) setField(o, f, a[c], c);
-                break;
-            }
-        }
-        if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("%s%s", f.help,
-                              f.profileSized ? " (the profile's; editing it selects custom)" : "");
-        ImGui::PopID();
+    for (const SettingField& f : settingFields())
+        if (fieldGroup(f).empty()) drawField(o, shown, f);
+    for (const lightscatter::MethodInfo& m : lightscatter::methodInfo()) {
+        if (m.settings.empty() || !ImGui::TreeNode(m.name.c_str())) continue;
+        for (const SettingField& own : m.settings) drawField(o, shown, *findSettingField(own.name));
+        ImGui::TreePop();
     }
     ImGui::InputText("file", savePath_.data(), savePath_.size());
     if (ImGui::Button("save settings")) saved_ = save(o, savePath_.data());

@@ -53,6 +53,7 @@ class SettingsPanel {
 
   private:
     void drawSettings(RenderOptions& o);
+    void drawField(RenderOptions& o, const lightscatter::Settings& shown, const SettingField& f);
     void drawLights(SceneDesc& scene);
     void drawMedium(SceneDesc& scene);
     void drawTimings(const PanelStatus& status) const;

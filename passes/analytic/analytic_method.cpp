@@ -6,30 +6,27 @@
 
 namespace ls {
 
+const MethodUnit& methodUnitAnalytic() {
+    static const AnalyticMethod unit;
+    return unit;
+}
+
+std::string AnalyticMethod::description() const {
+    return "seed 001's arctangent closed form per pixel (unshadowed point and spot lights)";
+}
+
 MethodCaps AnalyticMethod::caps() const {
     MethodCaps c;
     c.directional = false;
+    c.shadowMap = false;
+    c.unshadowedLightColor = false;  // one closed form over the whole ray
+    c.simplifiedModel = true;        // seed 004's model is seed 001's form
     return c;
-}
-
-std::string AnalyticMethod::refusal(const LightSetup& s) const {
-    if (std::string r = refuseCubeShadow(s, name()); !r.empty()) return r;
-    if (!pointLike(s))
-        return "method analytic (seed 001) is a closed form for point and spot lights; this "
-               "frame's "
-               "light is directional (use auto, epipolar or cone-march)";
-    if (s.shadowed)
-        return "method analytic (seed 001) cannot cast shadows; this frame has a shadow map (use "
-               "auto, epipolar, brute-force or cone-march)";
-    return firstRefusal(
-        {refuseNoise(s, name()),
-         refuseUnshadowedLightColor(s, name(),
-                                    "(seed 001) integrates an unshadowed light in closed form")});
 }
 
 std::string AnalyticMethod::notice(const LightSetup& s) const {
     // The simplified model is seed 001's form by definition: nothing to warn about.
-    if (s.simplified) return {};
+    if (simplifiedModel(s)) return {};
     std::string notice;
     if (!isotropicMedium(s))
         notice = "analytic assumes isotropic scattering, but the medium has " +

@@ -9,8 +9,8 @@ namespace ls {
 class AnalyticMethod final : public MethodUnit {
   public:
     const char* name() const override { return "analytic"; }
+    std::string description() const override;
     MethodCaps caps() const override;
-    std::string refusal(const LightSetup& light) const override;
     std::string notice(const LightSetup& light) const override;
     ChainOptions options(const LightSetup&, const LightData*, const ChainOptions*) const override;
     ChainOutputs addChain(rg::RenderGraph& graph, const ChainInputs& in, const ChainConfig& config,

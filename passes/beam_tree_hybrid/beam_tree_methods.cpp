@@ -14,32 +14,46 @@ constexpr uint32_t kFirstCapacity = 3 * 4096;
 
 }  // namespace
 
+const MethodUnit& methodUnitBeamTreeAnalytic() {
+    static const BeamTreeAnalyticMethod unit;
+    return unit;
+}
+
+const MethodUnit& methodUnitBeamTreeSampling() {
+    static const BeamTreeSamplingMethod unit;
+    return unit;
+}
+
 MethodCaps BeamTreeMethod::caps() const {
     MethodCaps c;
-    c.directional = false;
+    c.directional = false;  // the beam tree is built from a point
     c.readsOccluders = true;
     c.cubeShadow = true;  // the sampling planes look up the face each point lies in
-    c.budgeted = true;
+    c.profileSized = true;
     return c;
 }
 
+// The lit pyramids integrate the light in closed form, shadowed or not: a color that varies along
+// the ray cannot enter them (beam-tree-sampling's planes look the color up), and seed 004's
+// simplified model is their other closed form.
+MethodCaps BeamTreeAnalyticMethod::caps() const {
+    MethodCaps c = BeamTreeMethod::caps();
+    c.lightColor = c.unshadowedLightColor = false;
+    c.simplifiedModel = true;
+    return c;
+}
+
+std::string BeamTreeAnalyticMethod::description() const {
+    return "seed 004's beam tree: lit space in closed form, uncertain space sampled by planes";
+}
+
+std::string BeamTreeSamplingMethod::description() const {
+    return "seed 004's beam tree clipping seed 002's planes, shadow look-ups in uncertain space";
+}
+
 std::string BeamTreeMethod::refusal(const LightSetup& s) const {
-    const std::string n = name();
-    if (!pointLike(s))
-        return "method " + n +
-               " (seed 004) builds its beam tree from a point or spot light; this frame's light is "
-               "directional (use auto, epipolar, planes or cone-march)";
-    // The lit pyramids integrate the light in closed form, shadowed or not: a color that varies
-    // along the ray cannot enter them. beam-tree-sampling's planes look the color up.
-    if (litSpace() == LitSpace::ClosedForm && s.lightColor)
-        return "method " + n +
-               " (seed 004) integrates its lit space in closed form and cannot vary the light's "
-               "color along the ray: " +
-               s.lightPath +
-               "Color needs epipolar, brute-force, cone-march, planes, beam-tree-sampling or auto";
-    return firstRefusal(
-        {refuseNoise(s, n), refuseNoDepthAttachment(
-                                s, "method " + n + " (seed 004) depth-tests its sampling planes")});
+    return refuseNoDepthAttachment(
+        s, "method " + std::string(name()) + " (seed 004) depth-tests its sampling planes");
 }
 
 std::string BeamTreeMethod::notice(const LightSetup& s) const {
@@ -65,8 +79,8 @@ std::vector<CpuWork> BeamTreeMethod::prepare(LightData* data, LightFrame&,
                                              const LightSetup& s) const {
     PlaneSettings planes;
     // Only the count or spacing: the other settings are the planes method's.
-    planes.planes = s.planes.planes;
-    planes.spacing = s.planes.spacing;
+    planes.planes = s.settings.planes.count;
+    planes.spacing = s.settings.planes.spacing;
     BeamTreeFrame& frame = static_cast<BeamTreeData*>(data)->frame;
     frame = buildBeamTreeFrame(s.camera, s.light, s.medium, s.beamOccluders, planes, litSpace());
     return {{"beam tree (CPU, seed 004)", frame.buildMilliseconds}};

@@ -24,7 +24,7 @@ class BeamTreeMethod : public MethodUnit {
                                  const LightSetup& light) const override;
     ChainOptions options(const LightSetup& light, const LightData* data,
                          const ChainOptions* previous) const override;
-    // The sampling planes this frame placed (with Settings::planeSpacing their count varies).
+    // The sampling planes this frame placed (with Settings::planes.spacing their count varies).
     std::string frameNote(const LightFrame& frame, const ChainConfig& config) const override;
 
   protected:
@@ -34,6 +34,8 @@ class BeamTreeMethod : public MethodUnit {
 class BeamTreeAnalyticMethod final : public BeamTreeMethod {
   public:
     const char* name() const override { return "beam-tree-analytic"; }
+    std::string description() const override;
+    MethodCaps caps() const override;
     bool readsTable(const LightSetup&) const override { return true; }
     ChainOutputs addChain(rg::RenderGraph& graph, const ChainInputs& in, const ChainConfig& config,
                           const CompositeTarget& target) const override;
@@ -46,6 +48,7 @@ class BeamTreeAnalyticMethod final : public BeamTreeMethod {
 class BeamTreeSamplingMethod final : public BeamTreeMethod {
   public:
     const char* name() const override { return "beam-tree-sampling"; }
+    std::string description() const override;
     ChainOutputs addChain(rg::RenderGraph& graph, const ChainInputs& in, const ChainConfig& config,
                           const CompositeTarget& target) const override;
     std::string summary(const ChainConfig& config) const override;

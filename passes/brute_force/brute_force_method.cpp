@@ -7,15 +7,19 @@
 
 namespace ls {
 
+const MethodUnit& methodUnitBruteForce() {
+    static const BruteForceMethod unit;
+    return unit;
+}
+
+std::string BruteForceMethod::description() const {
+    return "every pixel marches its ray through every shadow-map texel (the GPU reference)";
+}
+
 MethodCaps BruteForceMethod::caps() const {
     MethodCaps c;
     c.cubeShadow = true;
     return c;
-}
-
-std::string BruteForceMethod::refusal(const LightSetup& s) const {
-    return firstRefusal(
-        {refuseSkippedShadows(s, name()), refuseNoise(s, name()), refuseSimplified(s, name())});
 }
 
 bool BruteForceMethod::readsTable(const LightSetup& s) const {

@@ -8,8 +8,8 @@ namespace ls {
 class BruteForceMethod final : public MethodUnit {
   public:
     const char* name() const override { return "brute-force"; }
+    std::string description() const override;
     MethodCaps caps() const override;
-    std::string refusal(const LightSetup& light) const override;
     bool readsTable(const LightSetup& light) const override;
     ChainOptions options(const LightSetup&, const LightData*, const ChainOptions*) const override;
     ChainOutputs addChain(rg::RenderGraph& graph, const ChainInputs& in, const ChainConfig& config,

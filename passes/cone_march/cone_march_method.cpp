@@ -2,17 +2,29 @@
 
 #include "cone_march_node.h"
 #include "shared/chain_inputs.h"
-#include "shared/refusals.h"
 
 namespace ls {
 
-std::string ConeMarchMethod::refusal(const LightSetup& s) const {
-    return firstRefusal({refuseNoise(s, name()), refuseSimplified(s, name())});
+const MethodUnit& methodUnitConeMarch() {
+    static const ConeMarchMethod unit;
+    return unit;
+}
+
+std::string ConeMarchMethod::description() const {
+    return "seed 003's march of a fixed number of samples per pixel within the light's cone";
+}
+
+MethodCaps ConeMarchMethod::caps() const {
+    MethodCaps c;
+    c.cubeShadow = true;           // each sample looks up the face it lies in
+    c.skipsShadowSampling = true;  // the seed's low-end mode
+    return c;
 }
 
 ChainOptions ConeMarchMethod::options(const LightSetup& s, const LightData*,
                                       const ChainOptions*) const {
-    return ChainOptions(Options{s.cone, s.shadowSampling});
+    const lightscatter::ConeMarchSettings& c = s.settings.coneMarch;
+    return ChainOptions(Options{{c.samples, c.limited, c.jitter}, s.settings.shadowSampling});
 }
 
 ChainOutputs ConeMarchMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,

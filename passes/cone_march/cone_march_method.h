@@ -2,6 +2,7 @@
 // Seed 003's fixed-count march as a method of the frame graph (method_unit.h), with its low-end
 // mode that skips the shadow map.
 #include "shared/method_unit.h"
+#include "shared/settings_table.h"
 
 namespace ls {
 
@@ -13,12 +14,9 @@ class ConeMarchMethod final : public MethodUnit {
         bool operator==(const Options&) const = default;
     };
     const char* name() const override { return "cone-march"; }
-    MethodCaps caps() const override {
-        MethodCaps c;
-        c.cubeShadow = true;  // each sample looks up the face it lies in
-        return c;
-    }
-    std::string refusal(const LightSetup& light) const override;
+    std::string description() const override;
+    MethodCaps caps() const override;
+    std::vector<SettingsField> settingsFields() const override;
     ChainOptions options(const LightSetup& light, const LightData*,
                          const ChainOptions*) const override;
     ChainOutputs addChain(rg::RenderGraph& graph, const ChainInputs& in, const ChainConfig& config,

@@ -3,22 +3,50 @@
 #include "epipolar_nodes.h"
 #include "shared/chain_inputs.h"
 #include "shared/refusals.h"
+#include "shared/scattering_params.h"
 #include "shared/shared_nodes.h"
 #include "shared/view_reach.h"
 
 namespace ls {
 
+const MethodUnit& methodUnitEpipolar() {
+    static const EpipolarMethod unit;
+    return unit;
+}
+
+std::string EpipolarMethod::description() const {
+    return "seed 000's epipolar sampling with 1D min/max trees (the main method)";
+}
+
 MethodCaps EpipolarMethod::caps() const {
     MethodCaps c;
     c.cubeShadow = true;
     c.countsSteps = true;
-    c.budgeted = true;
+    c.profileSized = true;
     return c;
 }
 
-std::string EpipolarMethod::refusal(const LightSetup& s) const {
-    return firstRefusal(
-        {refuseSkippedShadows(s, name()), refuseNoise(s, name()), refuseSimplified(s, name())});
+// Seed 000, "Performance": 2560x1600 on a GeForce GTX 680 for the three main profiles, 1366x768
+// (the Quadro 1000M) for the weaker-device set (the Intel HD table at 1024x768 repeats the same
+// memory figures).
+std::optional<lightscatter::SeedFigure> EpipolarMethod::seedFigure(lightscatter::Profile p) const {
+    using lightscatter::Profile;
+    switch (p) {
+        case Profile::HighQuality:
+            return lightscatter::SeedFigure{2560, 1600, 88.0, 5.986};
+        case Profile::Balanced:
+            return lightscatter::SeedFigure{2560, 1600, 44.0, 3.269};
+        case Profile::HighPerformance:
+            return lightscatter::SeedFigure{2560, 1600, 18.0, 2.267};
+        case Profile::LowHighQuality:
+            return lightscatter::SeedFigure{1366, 768, 44.0, 18.9};
+        case Profile::LowBalanced:
+            return lightscatter::SeedFigure{1366, 768, 11.0, 8.37};
+        case Profile::LowHighPerformance:
+            return lightscatter::SeedFigure{1366, 768, 4.5, 5.38};
+        default:
+            return std::nullopt;
+    }
 }
 
 bool EpipolarMethod::readsTable(const LightSetup& s) const {
@@ -41,12 +69,13 @@ std::vector<CpuWork> EpipolarMethod::prepare(LightData*, LightFrame& frame,
 
 ChainOptions EpipolarMethod::options(const LightSetup& s, const LightData*,
                                      const ChainOptions*) const {
+    const lightscatter::EpipolarSettings& e = s.settings.epipolar;
     Options o;
-    o.slices = s.epipolar.slices;
-    o.samples = s.epipolar.samples;
-    o.minMaxTrees = s.epipolar.minMaxTrees;
-    o.fixup = s.epipolar.fixup;
-    o.inscatterRefinement = s.epipolar.inscatterRefinementThreshold > 0.0f;
+    o.slices = e.slices;
+    o.samples = e.samplesPerSlice;
+    o.minMaxTrees = e.minMaxTrees && treesFit(s.light.shadowMapSize);
+    o.fixup = e.fixup;
+    o.inscatterRefinement = e.inscatterRefinementThreshold > 0.0f;
     return ChainOptions(o);
 }
 

@@ -3,6 +3,7 @@
 // epipolar_nodes.h per shadowed light, a point light's cube map face by face, and the closed form
 // for an unshadowed one.
 #include "shared/method_unit.h"
+#include "shared/settings_table.h"
 
 namespace ls {
 
@@ -16,8 +17,10 @@ class EpipolarMethod final : public MethodUnit {
         bool operator==(const Options&) const = default;
     };
     const char* name() const override { return "epipolar"; }
+    std::string description() const override;
     MethodCaps caps() const override;
-    std::string refusal(const LightSetup& light) const override;
+    std::vector<SettingsField> settingsFields() const override;
+    std::optional<lightscatter::SeedFigure> seedFigure(lightscatter::Profile p) const override;
     bool readsTable(const LightSetup& light) const override;
     std::vector<CpuWork> prepare(LightData*, LightFrame& frame,
                                  const LightSetup& light) const override;

@@ -83,6 +83,10 @@ glm::vec3 froxelJitter(uint32_t index) {
     return {halton(i, 2), halton(i, 3), halton(i, 5)};
 }
 
+FroxelSettings froxelSettings(const lightscatter::FroxelsSettings& s) {
+    return {s.tile, s.slices, s.farDistance, s.temporal, s.historyWeight};
+}
+
 FroxelGrid froxelGrid(VkExtent2D screen, const FroxelSettings& s) {
     FroxelGrid g;
     g.tile = std::max(s.tile, 1u);

@@ -7,6 +7,7 @@
 #include "shared/composite_target.h"
 #include "shared/frame_context.h"
 #include "shared/frame_history.h"
+#include "lightscatter/methods/froxels.h"
 #include "shared/scattering_params.h"
 
 namespace ls {
@@ -18,6 +19,8 @@ struct FroxelGrid {
     float farDistance = 0.0f;  // FroxelSettings::farDistance
 };
 FroxelGrid froxelGrid(VkExtent2D screen, const FroxelSettings& settings);
+// The grid's settings as the nodes take them, from Settings::froxels.
+FroxelSettings froxelSettings(const lightscatter::FroxelsSettings& s);
 
 // The view-axis distances (metres) where the first slice starts, the camera's near plane, and where
 // the last one ends: the far distance, or where no ray goes further (the medium's maxDistance, a

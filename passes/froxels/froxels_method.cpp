@@ -5,22 +5,58 @@
 
 namespace ls {
 
+const MethodUnit& methodUnitFroxels() {
+    static const FroxelsMethod unit;
+    return unit;
+}
+
+std::string FroxelsMethod::description() const {
+    return "the froxel volumetric fog engines ship: every light injected into one view-frustum "
+           "grid";
+}
+
 MethodCaps FroxelsMethod::caps() const {
     MethodCaps c;
     c.cubeShadow = true;
-    c.budgeted = true;
-    c.frameWide = true;
+    c.profileSized = true;
+    c.onePerFrame = true;
     c.exportsVolume = true;
+    c.keepsHistory = true;  // the temporal mode
     return c;
+}
+
+// The grids engines ship: Unity HDRP's (the screen / 8 on x and y, 64 slices; the default) and
+// Unreal's volumetric fog (the screen / 16, 64 slices), each also in the temporal mode.
+std::vector<lightscatter::MethodPreset> FroxelsMethod::presets() const {
+    struct Grid {
+        const char* name;
+        const char* engine;
+        uint32_t tile, slices;
+    };
+    std::vector<lightscatter::MethodPreset> out;
+    for (const Grid& g : {Grid{"froxels-hdrp", "Unity HDRP", 8, 64},
+                          Grid{"froxels-unreal", "Unreal's volumetric fog", 16, 64}})
+        for (const bool temporal : {false, true})
+            out.push_back({std::string(g.name) + (temporal ? "-temporal" : ""),
+                           std::string(g.engine) + "'s grid, " + std::to_string(g.tile) + "x" +
+                               std::to_string(g.tile) + "-pixel columns and " +
+                               std::to_string(g.slices) + " slices" +
+                               (temporal ? ", blended with the frame before's" : ""),
+                           [g, temporal](lightscatter::Settings& s) {
+                               s.froxels.tile = g.tile;
+                               s.froxels.slices = g.slices;
+                               s.froxels.temporal = temporal;
+                           }});
+    return out;
 }
 
 namespace {
 
 // The slices run from the near plane to the far distance, within the medium's reach.
 std::string refuseFarDistance(const LightSetup& s) {
-    const float far = s.froxels.farDistance;
+    const float far = s.settings.froxels.farDistance;
     if (far == 0.0f) return {};
-    const std::string field = s.settingsPath + ".froxelFarDistance = " + twoDigits(far);
+    const std::string field = s.settingsPath + ".froxels.farDistance = " + twoDigits(far);
     if (far > s.medium.maxDistance)
         return field + ": must be at most medium.maxDistance (" + twoDigits(s.medium.maxDistance) +
                "), where every ray ends";
@@ -33,13 +69,12 @@ std::string refuseFarDistance(const LightSetup& s) {
 }  // namespace
 
 std::string FroxelsMethod::refusal(const LightSetup& s) const {
-    return firstRefusal({refuseSkippedShadows(s, name()), refuseNoise(s, name()),
-                         refuseSimplified(s, name()), refuseFarDistance(s)});
+    return refuseFarDistance(s);
 }
 
 ChainOptions FroxelsMethod::options(const LightSetup& s, const LightData*,
                                     const ChainOptions*) const {
-    return ChainOptions(Options{s.froxels});
+    return ChainOptions(Options{froxelSettings(s.settings.froxels)});
 }
 
 ChainOutputs FroxelsMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,

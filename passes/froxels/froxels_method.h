@@ -4,6 +4,7 @@
 // is injected into one grid, integrated once and applied once.
 #include "froxel_nodes.h"
 #include "shared/method_unit.h"
+#include "shared/settings_table.h"
 
 namespace ls {
 
@@ -14,7 +15,10 @@ class FroxelsMethod final : public MethodUnit {
         FroxelSettings grid;
     };
     const char* name() const override { return "froxels"; }
+    std::string description() const override;
     MethodCaps caps() const override;
+    std::vector<SettingsField> settingsFields() const override;
+    std::vector<lightscatter::MethodPreset> presets() const override;
     std::string refusal(const LightSetup& light) const override;
     ChainOptions options(const LightSetup& light, const LightData*,
                          const ChainOptions*) const override;

@@ -124,6 +124,21 @@ std::string planesNote(uint32_t planes, float spacing) {
     return buf;
 }
 
+PlaneSettings planeSettings(const lightscatter::Settings& s) {
+    PlaneSettings p;
+    p.planes = s.planes.count;
+    p.spacing = s.planes.spacing;
+    p.planeScaling = s.planes.scaling;
+    p.eightBitTarget = s.planes.target == PlaneTarget::Rgba8Channels;
+    p.range = s.planes.range;
+    p.ambient = s.planes.ambient;
+    p.noiseAmplitude = s.noiseAmplitude;
+    p.noiseScale = s.noiseScale;
+    p.noiseVelocity = {s.noiseVelocity[0], s.noiseVelocity[1], s.noiseVelocity[2],
+                       s.noiseVelocity[3]};
+    return p;
+}
+
 PlanePlacement placePlanes(const CameraParams& camera, const LightParams& light,
                            const MediumParams& medium, const PlaneSettings& settings, double time) {
     PlanePlacement out;

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <string>
 
+#include "lightscatter/settings.h"
 #include "shared/scattering_params.h"
 
 namespace ls {
@@ -37,6 +38,9 @@ struct PlanePlacement {
     uint32_t planes = 0;  // 0: the light's volume misses the view, nothing to draw
 };
 
+// The placement's settings: Settings::planes' and the noise's.
+PlaneSettings planeSettings(const lightscatter::Settings& s);
+
 PlanePlacement placePlanes(const CameraParams& camera, const LightParams& light,
                            const MediumParams& medium, const PlaneSettings& settings, double time);
 
@@ -48,7 +52,7 @@ std::string planesNote(uint32_t planes, float spacing);
 // planes' span) over 81 rays on a grid across the screen, each marched with 256 midpoint samples
 // on the CPU. Unshadowed and to the end of the span, it bounds what those rays receive; a peak
 // between them (beside a point light) can saturate, and where shadows darken most of the view the
-// channels' steps are coarse: such scenes set Settings::planeRange.
+// channels' steps are coarse: such scenes set Settings::planes.range.
 float estimatedPlaneRange(const CameraParams& camera, const LightParams& light,
                           const MediumParams& medium, float front, float back);
 

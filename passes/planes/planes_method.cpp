@@ -6,17 +6,26 @@
 
 namespace ls {
 
+const MethodUnit& methodUnitPlanes() {
+    static const PlanesMethod unit;
+    return unit;
+}
+
+std::string PlanesMethod::description() const {
+    return "seed 002's view-aligned planes blended across the light's volume";
+}
+
 MethodCaps PlanesMethod::caps() const {
     MethodCaps c;
     c.cubeShadow = true;  // each plane's point looks up the face it lies in
-    c.budgeted = true;
+    c.profileSized = true;
+    c.noise = true;
+    c.skipsShadowSampling = true;
     return c;
 }
 
 std::string PlanesMethod::refusal(const LightSetup& s) const {
-    return firstRefusal(
-        {refuseNoDepthAttachment(s, "method planes (seed 002) depth-tests its planes"),
-         refuseSimplified(s, name())});
+    return refuseNoDepthAttachment(s, "method planes (seed 002) depth-tests its planes");
 }
 
 std::unique_ptr<LightData> PlanesMethod::makeData() const {
@@ -26,14 +35,15 @@ std::unique_ptr<LightData> PlanesMethod::makeData() const {
 std::vector<CpuWork> PlanesMethod::prepare(LightData* data, LightFrame&,
                                            const LightSetup& s) const {
     static_cast<PlaneData*>(data)->placement =
-        placePlanes(s.camera, s.light, s.medium, s.planes, s.timeSeconds);
+        placePlanes(s.camera, s.light, s.medium, planeSettings(s.settings), s.timeSeconds);
     return {};
 }
 
 ChainOptions PlanesMethod::options(const LightSetup& s, const LightData*,
                                    const ChainOptions*) const {
-    return ChainOptions(Options{s.planeTarget, s.planeBlur, s.planeDither, s.noise,
-                                s.shadowSampling, s.camera.reversedZ});
+    const lightscatter::PlanesSettings& p = s.settings.planes;
+    return ChainOptions(Options{p.target, p.blur, p.dither, noisy(s), s.settings.shadowSampling,
+                                s.camera.reversedZ});
 }
 
 ChainOutputs PlanesMethod::addChain(rg::RenderGraph& g, const ChainInputs& in, const ChainConfig& c,

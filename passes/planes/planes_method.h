@@ -5,6 +5,7 @@
 
 #include "plane_geometry.h"
 #include "shared/method_unit.h"
+#include "shared/settings_table.h"
 
 namespace ls {
 
@@ -20,9 +21,11 @@ class PlanesMethod final : public MethodUnit {
         bool operator==(const Options&) const = default;
     };
     const char* name() const override { return "planes"; }
+    std::string description() const override;
     MethodCaps caps() const override;
+    std::vector<SettingsField> settingsFields() const override;
     std::string refusal(const LightSetup& light) const override;
-    bool readsNoise(const LightSetup& light) const override { return light.noise; }
+    bool readsNoise(const LightSetup& light) const override { return noisy(light); }
     std::unique_ptr<LightData> makeData() const override;
     std::vector<CpuWork> prepare(LightData* data, LightFrame&,
                                  const LightSetup& light) const override;
@@ -31,7 +34,7 @@ class PlanesMethod final : public MethodUnit {
     ChainOutputs addChain(rg::RenderGraph& graph, const ChainInputs& in, const ChainConfig& config,
                           const CompositeTarget& target) const override;
     std::string summary(const ChainConfig& config) const override;
-    // The planes this frame placed (with Settings::planeSpacing their count varies).
+    // The planes this frame placed (with Settings::planes.spacing their count varies).
     std::string frameNote(const LightFrame& frame, const ChainConfig& config) const override;
 };
 

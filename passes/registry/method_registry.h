@@ -1,7 +1,6 @@
 #pragma once
-// Every method of the frame graph, in the order of lightscatter::Method (the public enum lists
-// them in the same order; tests hold the two together by name).
-#include <string>
+// Every method of the frame graph, in lightscatter/methods.inc's order: the public enum's, from the
+// same list.
 #include <vector>
 
 #include "shared/method_unit.h"
@@ -9,7 +8,5 @@
 namespace ls {
 
 const std::vector<const MethodUnit*>& methodRegistry();
-// The method of that name; null when there is none.
-const MethodUnit* findMethod(const std::string& name);
 
 }  // namespace ls

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "beam_tree/occluders.h"
+#include "lightscatter/settings.h"
 #include "shared/scattering_params.h"
 
 namespace ls {
@@ -16,14 +17,9 @@ struct LightSetup {
     CameraParams camera;
     LightParams light;
     MediumParams medium;
-    EpipolarSettings epipolar;
-    PlaneSettings planes;  // the planes method's and the beam trees' sampling planes
-    PlaneTarget planeTarget = PlaneTarget::Float16;
-    uint32_t planeBlur = 0;
-    bool planeDither = false;
-    ConeMarchOptions cone;
-    FroxelSettings froxels;
-    bool shadowSampling = true;  // false: seed 003's low-end mode
+    // The light's settings, checked: the profile's values over the frame's custom (or the light's
+    // own). Each method reads its own group (settings.epipolar, ...) and Settings' shared fields.
+    lightscatter::Settings settings;
     VkExtent2D screen{0, 0};
     // The pixels whose rays may cross the light's volume (lightScreenRect); the whole screen
     // where it is not known (the budget).
@@ -31,9 +27,7 @@ struct LightSetup {
     bool shadowed = false;
     bool lightColor = false;
     bool inscatterOut = false;
-    bool noise = false;            // seed 002's scrolling noise (an amplitude above 0)
     bool engineNoise = false;      // the engine gives the noise image
-    bool simplified = false;       // seed 004's light model
     bool depthAttachment = false;  // the engine's depth may be a depth attachment
     double timeSeconds = 0.0;
     float preExposure = 1.0f;  // the factor the composite scales Lin by in the engine's color
@@ -45,5 +39,13 @@ struct LightSetup {
     std::string lightPath = "light";
     std::string settingsPath = "custom";
 };
+
+// Settings the light's frame asks of its method beyond docs/model.md.
+inline bool noisy(const LightSetup& s) {
+    return s.settings.noiseAmplitude > 0.0f;  // seed 002's scrolling noise
+}
+inline bool simplifiedModel(const LightSetup& s) {
+    return s.settings.lightModel == lightscatter::LightModel::Simplified;  // seed 004's
+}
 
 }  // namespace ls

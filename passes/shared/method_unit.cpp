@@ -8,10 +8,11 @@ ScatterSpec scatterSpec(const LightSetup& light) {
     ScatterSpec spec;
     spec.light = light.light.kind;
     spec.phase = light.medium.phase;
-    spec.minMaxTrees = light.epipolar.minMaxTrees;
+    // Trees need a shadow map of 4 texels or more (treesFit).
+    spec.minMaxTrees = light.settings.epipolar.minMaxTrees && treesFit(light.light.shadowMapSize);
     spec.lightColor = light.lightColor;
-    spec.bilinearShadow = light.epipolar.bilinearShadow;
-    spec.simplifiedModel = light.simplified;
+    spec.bilinearShadow = light.settings.shadowFilter == lightscatter::ShadowFilter::Bilinear;
+    spec.simplifiedModel = simplifiedModel(light);
     spec.cubeShadow = cubeShadowed(light);
     return spec;
 }

@@ -5,11 +5,13 @@
 // (registry.cpp); the plugin API validates the frame, chooses the method, loops over the lights and
 // keeps the frame history, and knows no method's nodes.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "chain_options.h"
 #include "light_setup.h"
+#include "lightscatter/settings.h"
 #include "rendergraph/render_graph.h"
 #include "shared/composite_target.h"
 #include "shared/frame_history.h"
@@ -18,17 +20,26 @@
 
 namespace ls {
 
+// What a method takes (the plugin's refusals and MethodInfo are made from it).
 struct MethodCaps {
     bool directional = true, spot = true, point = true;
-    bool cubeShadow = false;      // samples a point light's six-face shadow map
+    bool shadowMap = true;     // casts shadows from a light's shadow map
+    bool cubeShadow = false;   // samples a point light's six-face shadow map
+    bool lightColor = true;    // a light color (cookie) with a shadow map
+    bool unshadowedLightColor = true;  // ... and without one
+    // Settings beyond docs/model.md it honours (Settings' comments).
+    bool noise = false;
+    bool simplifiedModel = false;
+    bool skipsShadowSampling = false;
     bool readsOccluders = false;  // FrameDescription::occluders (the beam trees)
     bool countsSteps = false;     // DebugOptions::countSteps: a counting variant of its march
     // Its textures depend on the profile's sizes: budget() reports it.
-    bool budgeted = false;
+    bool profileSized = false;
     // Every light of the frame goes through one chain (addFrameChain): the froxel grid.
-    bool frameWide = false;
-    // A frame-wide chain that writes its 3D result into ChainInputs::volumeOut when given.
+    bool onePerFrame = false;
+    // A one-per-frame chain that writes its 3D result into ChainInputs::volumeOut when given.
     bool exportsVolume = false;
+    bool keepsHistory = false;  // a frame's output may depend on earlier frames'
 };
 
 // One light's chain in the frame graph's configuration: what decides its nodes, their textures
@@ -89,10 +100,20 @@ class MethodUnit {
   public:
     virtual ~MethodUnit() = default;
     virtual const char* name() const = 0;  // the CLI's and the report's name
+    virtual std::string description() const = 0;  // one line
     virtual MethodCaps caps() const = 0;
-    // Why the method cannot honour this light, in one line naming the field and the rule (the
-    // API adds "lightscatter: "); empty when it can.
-    virtual std::string refusal(const LightSetup& light) const = 0;
+    // Its own settings' field table (Settings::<its member>), or none.
+    virtual std::vector<lightscatter::SettingsField> settingsFields() const { return {}; }
+    // Named settings of it, as engines ship it (froxels' "froxels-unreal"), or none.
+    virtual std::vector<lightscatter::MethodPreset> presets() const { return {}; }
+    // Seed 000's published memory and time for a profile, where the method has them.
+    virtual std::optional<lightscatter::SeedFigure> seedFigure(lightscatter::Profile) const {
+        return std::nullopt;
+    }
+    // Why the method cannot honour this light beyond what its caps say (the plugin refuses what
+    // they rule out), in one line naming the field and the rule (the API adds "lightscatter: ");
+    // empty when it can.
+    virtual std::string refusal(const LightSetup&) const { return {}; }
     // An assumption of the method the light or medium breaks, and what it costs; empty if none.
     virtual std::string notice(const LightSetup&) const { return {}; }
     // Whether the chain samples the light's point-light table (made and kept by the plugin).
@@ -115,13 +136,13 @@ class MethodUnit {
     virtual ChainOutputs addChain(rg::RenderGraph& graph, const ChainInputs& in,
                                   const ChainConfig& config,
                                   const CompositeTarget& target) const = 0;
-    // A frame-wide method's chain (caps().frameWide), in place of one addChain per light: every
+    // A one-per-frame method's chain (caps().onePerFrame), in place of one addChain per light: every
     // light reaching the view, in the frame's order (the inputs and configurations of each).
     // `target` is never add-only: the chain is the frame's only one.
     virtual ChainOutputs addFrameChain(rg::RenderGraph& graph, const std::vector<ChainInputs>& in,
                                        const std::vector<ChainConfig>& configs,
                                        const CompositeTarget& target) const;
-    // The state a frame-wide chain carries to the next frame on the GPU (frame_history.h), for a
+    // The state a one-per-frame chain carries to the next frame on the GPU (frame_history.h), for a
     // screen of `screen` texels; none by default.
     virtual HistoryShape history(const ChainConfig&, VkExtent2D) const { return {}; }
     // Which nodes the chain was built from, and why, in one line.
@@ -130,5 +151,10 @@ class MethodUnit {
     // reaching the view); empty if nothing.
     virtual std::string frameNote(const LightFrame&, const ChainConfig&) const { return {}; }
 };
+
+// Each method's unit, defined in its own folder; the registry lists them in methods.inc's order.
+#define LIGHTSCATTER_METHOD(Enum, Type, member) const MethodUnit& methodUnit##Enum();
+#define LIGHTSCATTER_METHOD_WITHOUT_SETTINGS(Enum) const MethodUnit& methodUnit##Enum();
+#include "lightscatter/methods.inc"
 
 }  // namespace ls

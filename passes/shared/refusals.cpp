@@ -5,59 +5,10 @@
 
 namespace ls {
 
-std::string refuseCubeShadow(const LightSetup& s, const std::string& method) {
-    if (!cubeShadowed(s)) return {};
-    return "method " + method + " cannot sample a point light's cube shadow map (" + s.lightPath +
-           ".shadowMapSize > 0 with a point light): use epipolar, brute-force or auto";
-}
-
-std::string refuseNoise(const LightSetup& s, const std::string& method) {
-    if (!s.noise) return {};
-    return s.settingsPath +
-           ".noiseAmplitude > 0 (seed 002's scrolling noise) is honoured by planes only; method " +
-           method +
-           " integrates the model's homogeneous medium (use planes or auto, or amplitude 0)";
-}
-
-std::string refuseSimplified(const LightSetup& s, const std::string& method) {
-    if (!s.simplified) return {};
-    return s.settingsPath +
-           ".lightModel = simplified (seed 004's light model) is honoured by beam-tree-analytic "
-           "and "
-           "analytic only; method " +
-           method +
-           " integrates docs/model.md's full model (use beam-tree-analytic, analytic or auto, or "
-           "lightModel full)";
-}
-
-std::string refuseSkippedShadows(const LightSetup& s, const std::string& method) {
-    if (!skipsShadows(s)) return {};
-    return s.settingsPath +
-           ".shadowSampling = false (seed 003's low-end mode) is honoured by cone-march only; "
-           "method " +
-           method + " samples the shadow map (use cone-march or auto)";
-}
-
 std::string refuseNoDepthAttachment(const LightSetup& s, const std::string& what) {
     if (s.depthAttachment) return {};
     return what +
            " against the engine's depth: depth.usage needs DEPTH_STENCIL_ATTACHMENT beside SAMPLED";
-}
-
-std::string refuseUnshadowedLightColor(const LightSetup& s, const std::string& method,
-                                       const std::string& how) {
-    if (!s.lightColor || s.shadowed) return {};
-    // lightPath is "light" or "lights[i].light": the color is its sibling field.
-    return "method " + method + " " + how +
-           " and cannot vary its color along the ray: " + s.lightPath +
-           "Color without a shadow map needs epipolar, brute-force, cone-march, " +
-           "planes or auto";
-}
-
-std::string firstRefusal(std::initializer_list<std::string> refusals) {
-    for (const std::string& r : refusals)
-        if (!r.empty()) return r;
-    return {};
 }
 
 namespace {

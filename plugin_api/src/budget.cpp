@@ -1,4 +1,4 @@
-// The memory budget of the epipolar method for a profile, computed without a GPU: the frame graph
+// The memory budget of a frame's methods for a profile, computed without a GPU: the frame graph
 // is built and compiled against the offline device model, so the numbers are the compiler's own
 // (per-resource sizes, the sum without aliasing, the peak with it).
 #include <string>
@@ -9,34 +9,12 @@
 #include "method_choice.h"
 #include "method_units.h"
 #include "planes/tiling_noise.h"
-#include "registry/method_registry.h"
 #include "rendergraph/compile.h"
 #include "rendergraph/format_info.h"
 #include "shared/point_table.h"
 
 namespace lightscatter {
 namespace {
-
-// Seed 000's memory column: 2560x1600 (GTX 680) for the three main profiles, 1366x768 for the
-// weaker-device set (the Intel HD table at 1024x768 repeats the same figures).
-std::optional<SeedFigure> seedFigure(Profile p) {
-    switch (p) {
-        case Profile::HighQuality:
-            return SeedFigure{2560, 1600, 88.0, 5.986};
-        case Profile::Balanced:
-            return SeedFigure{2560, 1600, 44.0, 3.269};
-        case Profile::HighPerformance:
-            return SeedFigure{2560, 1600, 18.0, 2.267};
-        case Profile::LowHighQuality:
-            return SeedFigure{1366, 768, 44.0, 18.9};
-        case Profile::LowBalanced:
-            return SeedFigure{1366, 768, 11.0, 8.37};
-        case Profile::LowHighPerformance:
-            return SeedFigure{1366, 768, 4.5, 5.38};
-        default:
-            return std::nullopt;
-    }
-}
 
 // The engine's images as a typical engine hands them over (D32 depth, RGBA16F color).
 void describeEngineImages(detail::FrameImports& f, VkExtent2D screen) {
@@ -45,18 +23,6 @@ void describeEngineImages(detail::FrameImports& f, VkExtent2D screen) {
                VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, ro, ro};
     f.color = {VK_FORMAT_R16G16B16A16_SFLOAT, screen, VK_IMAGE_USAGE_STORAGE_BIT,
                VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL};
-}
-
-// The methods whose caps say `which`, by name ("epipolar, planes and beam-tree-analytic").
-template <typename F>
-std::string methodsWhere(F which) {
-    std::vector<std::string> names;
-    for (const ls::MethodUnit* m : ls::methodRegistry())
-        if (which(m->caps())) names.push_back(m->name());
-    std::string s;
-    for (size_t i = 0; i < names.size(); ++i)
-        s += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
-    return s;
 }
 
 uint64_t persistentBytes(const rg::OfflineDeviceCaps& caps, VkFormat format, VkExtent2D extent,
@@ -68,60 +34,10 @@ uint64_t persistentBytes(const rg::OfflineDeviceCaps& caps, VkFormat format, VkE
     return caps.imageRequirements(info).size;
 }
 
-Budget setBudget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
-                 uint32_t shadowMapSize, const std::vector<BudgetLight>& lights,
-                 const Settings* custom, bool refusals);
-
-// Auto for a light of a budgeted set, which has no geometry or medium: as a frame's Auto for a
-// light that covers the screen in a medium that needs the point-light table.
-Method budgetAuto(const detail::FrameSetup& l) {
-    if (!l.shadowed) return Method::Epipolar;  // its closed form per pixel
-    const uint64_t pixels = uint64_t{l.screen.width} * l.screen.height;
-    const uint64_t samples = uint64_t{l.epipolar.slices} * l.epipolar.samples;
-    return pixels * detail::kEpipolarSamplesPerPixel >= samples ? Method::Epipolar
-                                                                : Method::BruteForce;
-}
-
 }  // namespace
 
 Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint32_t shadowMapSize,
-              LightType light, const Settings* custom, Method method) {
-    return budget(profile, screenWidth, screenHeight, shadowMapSize, std::vector<LightType>{light},
-                  custom, method);
-}
-
-Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint32_t shadowMapSize,
-              const std::vector<LightType>& lights, const Settings* custom, Method method) {
-    const ls::MethodUnit* unit = detail::methodUnit(method);
-    if (!unit || !unit->caps().budgeted)
-        throw InvalidInput(std::string("lightscatter: budget method ") + methodName(method) +
-                           ": only " +
-                           methodsWhere([](const ls::MethodCaps& c) { return c.budgeted; }) +
-                           " have textures that depend on the profile");
-    const ls::MethodCaps caps = unit->caps();
-    std::vector<BudgetLight> set;
-    for (LightType light : lights) {
-        if (light == LightType::Directional && !caps.directional)
-            throw InvalidInput(std::string("lightscatter: budget method ") + methodName(method) +
-                               ": needs a point or spot light");
-        // A point light is budgeted with its cube map where the method samples one.
-        set.push_back({light, light != LightType::Point || caps.cubeShadow, method});
-    }
-    // One method for every light, as before a light had its own: a setting the method does not
-    // honour (noise for epipolar) is budgeted as if it did, not refused.
-    return setBudget(profile, screenWidth, screenHeight, shadowMapSize, set, custom, false);
-}
-
-Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint32_t shadowMapSize,
               const std::vector<BudgetLight>& lights, const Settings* custom) {
-    return setBudget(profile, screenWidth, screenHeight, shadowMapSize, lights, custom, true);
-}
-
-namespace {
-
-Budget setBudget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
-                 uint32_t shadowMapSize, const std::vector<BudgetLight>& lights,
-                 const Settings* custom, bool refusals) {
     if (lights.empty()) throw InvalidInput("lightscatter: budget lights: the list is empty");
     if (lights.size() > kMaxLights)
         throw InvalidInput("lightscatter: budget lights: " + std::to_string(lights.size()) +
@@ -133,19 +49,9 @@ Budget setBudget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
     if (shadowMapSize < 1 || shadowMapSize > 16384)
         throw InvalidInput("lightscatter: budget shadow-map size " + std::to_string(shadowMapSize) +
                            ": must be in [1, 16384]");
-    Settings s =
-        profile == Profile::Custom ? (custom ? *custom : Settings{}) : profileSettings(profile);
-    // Read from custom with every profile, as a frame does: it adds the refinement's passes.
-    if (custom) s.inscatterRefinementThreshold = custom->inscatterRefinementThreshold;
-    // So is the froxel grid (its presets are settings, not profiles).
-    if (custom) {
-        s.froxelTile = custom->froxelTile;
-        s.froxelSlices = custom->froxelSlices;
-        s.froxelFarDistance = custom->froxelFarDistance;
-        s.froxelTemporal = custom->froxelTemporal;
-        s.froxelHistoryWeight = custom->froxelHistoryWeight;
-    }
-    detail::checkSettings(s);
+    // The settings a frame of this profile and custom runs with.
+    const Settings s = profileSettings(profile, custom ? *custom : Settings{});
+    checkSettings(s);
 
     // The frame budget() describes: each light reaching the view, with a shadow map of
     // shadowMapSize (a point light's a cube of six faces, where the method samples one).
@@ -156,24 +62,22 @@ Budget setBudget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
     std::vector<const ls::MethodUnit*> methods;
     for (size_t i = 0; i < lights.size(); ++i) {
         const LightType type = lights[i].type;
-        detail::FrameSetup l;
+        ls::LightSetup l;
         l.light.kind = type;
         l.shadowed = lights[i].shadowed;
         l.light.shadowMapSize = l.shadowed ? shadowMapSize : 0;
-        detail::applySettings(l, s, l.light.shadowMapSize);
-        // Read from custom with every profile, as a frame does: it adds the plugin's tiling noise.
-        l.noise = custom && custom->noiseAmplitude > 0.0f;
         l.screen = screen;
         l.depthAttachment = true;
         l.settings = s;
-        const Method method = lights[i].method == Method::Auto ? budgetAuto(l) : lights[i].method;
-        const ls::MethodUnit* unit = detail::methodUnit(method);
-        if (!unit)
-            throw InvalidInput("lightscatter: budget lights[" + std::to_string(i) +
-                               "].method is not a Method value");
-        if (const std::string r = refusals ? unit->refusal(l) : ""; !r.empty())
-            throw InvalidInput("lightscatter: budget lights[" + std::to_string(i) + "]: " + r);
-        methods.push_back(unit);
+        // No geometry: the light's screen rectangle is unknown (empty), so auto weighs the screen.
+        const detail::MethodChoice choice = [&] {
+            try {
+                return detail::chooseMethod(lights[i].method, l, true);
+            } catch (const InvalidInput& e) {
+                throw detail::aboutLight(e, i, "budget lights");
+            }
+        }();
+        methods.push_back(&choice.unit());
         frame.lights.push_back(l);
         frame.touchesView.push_back(true);
         const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
@@ -187,9 +91,9 @@ Budget setBudget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
                                         : detail::ImportState{});
         images.lightColors.push_back({});
     }
-    // A frame-wide method (froxels) takes every light, as in a frame.
+    // A one-per-frame method (froxels) takes every light, as in a frame.
     for (size_t i = 0; i < methods.size(); ++i)
-        if (methods[i]->caps().frameWide && methods != std::vector(methods.size(), methods[i]))
+        if (methods[i]->caps().onePerFrame && methods != std::vector(methods.size(), methods[i]))
             throw InvalidInput("lightscatter: budget lights[" + std::to_string(i) +
                                "].method = " + methods[i]->name() +
                                " takes every light of the frame into one grid: give it to every "
@@ -210,7 +114,8 @@ Budget setBudget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
     b.screenHeight = screenHeight;
     b.estimated = !compiled.exactSizes;
     b.depthStencilFormat = rg::formatName(c.depthStencil);
-    if (lights.size() == 1) b.seed = seedFigure(profile);  // seed 000's figures are for one light
+    // Seed 000's figures are for one light.
+    if (lights.size() == 1) b.seed = methods[0]->seedFigure(profile);
     for (const ls::MethodUnit* m : methods) b.lightMethods.push_back(m->name());
     for (uint32_t id = 0; id < fg.graph->resources().size(); ++id) {
         const auto& r = fg.graph->resource(id);
@@ -233,7 +138,7 @@ Budget setBudget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
         b.peakBytes += bytes;
     };
     if (c.ownNoise) persistent("tiling noise", ls::kNoiseFormat, ls::kNoiseExtent);
-    // The frame-wide method's history: two images, alternated (froxels' temporal mode).
+    // The one-per-frame method's history: two images, alternated (froxels' temporal mode).
     if (c.history.given())
         for (const char* name : {"frame history A", "frame history B"})
             persistent(name, c.history.format, c.history.extent, c.history.depth);
@@ -244,7 +149,5 @@ Budget setBudget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
                        VK_FORMAT_R32G32B32A32_SFLOAT, {ls::kTableWidth, ls::kTableHeight});
     return b;
 }
-
-}  // namespace
 
 }  // namespace lightscatter

@@ -115,7 +115,7 @@ std::string frameSummary(const GraphConfig& c, size_t chains) {
                    : "the light reaches no view ray (or nothing scatters): extinction only";
     std::string s = std::to_string(c.lights.size()) + " lights, " + std::to_string(chains) +
                     " reaching the view";
-    if (c.lights[0].method->caps().frameWide)
+    if (c.lights[0].method->caps().onePerFrame)
         return s + ", in one chain (" + c.lights[0].method->name() +
                "): " + c.lights[0].method->summary(c.lights[0].chain);
     for (size_t i = 0; i < c.lights.size(); ++i)
@@ -220,7 +220,7 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
             counts = ls::addClearStepCounts(g, {fg.stepCounts});
         }
         in.stepCounts = counts;
-        if (l.method->caps().frameWide) {
+        if (l.method->caps().onePerFrame) {
             // Its lights go into one chain, added once they are all known.
             frameWide.push_back(in);
             frameWideConfigs.push_back(l.chain);

@@ -14,16 +14,10 @@
 
 namespace lightscatter::detail {
 
-// One light of a frame, checked: what the methods see (ls::LightSetup) and the settings it was
-// translated from (the profile's, merged with the frame's or the light's own custom).
-struct FrameSetup : ls::LightSetup {
-    Settings settings;
-};
-
 // A frame, checked: one setup per light (a frame that gives `light` has one, lights[0]), and what
 // of the engine's images decides the frame's graph.
 struct ValidatedFrame {
-    std::vector<FrameSetup> lights;
+    std::vector<ls::LightSetup> lights;
     std::vector<bool> touchesView;  // each light's volume reaches a view ray
     bool list = false;              // the engine gave FrameDescription::lights
 };
@@ -36,20 +30,17 @@ ValidatedFrame validateFrame(const FrameDescription& frame, bool withImages = tr
 // gives no list.
 std::vector<LightInput> lightInputs(const FrameDescription& frame);
 
-// A refusal of lights[i] of the list, saying which light it is about before naming the field.
-InvalidInput aboutLight(const InvalidInput& e, size_t i);
-
-// The settings' part the methods read, in their terms, into `s` (a light with a shadow map of
-// `shadowMapSize`, 0 without one).
-void applySettings(ls::LightSetup& s, const Settings& settings, uint32_t shadowMapSize);
+// A refusal of lights[i] of the list (`list`), saying which light it is about before naming the
+// field.
+InvalidInput aboutLight(const InvalidInput& e, size_t i, const std::string& list = "lights");
 
 // Checks everything; `withImages` false skips the image handles (the budget has none).
-FrameSetup setupFrame(const FrameDescription& frame, bool withImages = true);
+ls::LightSetup setupFrame(const FrameDescription& frame, bool withImages = true);
 
 // Several lights (FrameDescription::lights): refuses a frame that gives both the list and the
 // single light's fields, checks the frame's part once, then each light (errors name
 // lights[i].field). Returns each light's setup, in order.
-std::vector<FrameSetup> setupLights(const FrameDescription& frame, bool withImages = true);
+std::vector<ls::LightSetup> setupLights(const FrameDescription& frame, bool withImages = true);
 // How the engine named a light's fields: `light`, `shadowMap`, `lightColor` and `custom` for a
 // frame that gave `light`, lights[i].light ... lights[i].settings (or `custom` without own
 // settings) for the list.
@@ -59,17 +50,10 @@ struct LightPaths {
 };
 // The frame's part (settings, time, camera, medium, the engine's depth, color, noise and output),
 // and a light's part added to it (the light, its images and its own settings), each checked.
-FrameSetup setupFrameWide(const FrameDescription& frame, bool withImages = true);
-void setupLight(FrameSetup& setup, const LightInput& light, const LightPaths& paths,
+ls::LightSetup setupFrameWide(const FrameDescription& frame, bool withImages = true);
+void setupLight(ls::LightSetup& setup, const LightInput& light, const LightPaths& paths,
                 bool withImages = true);
 
-// The settings a frame runs with: `custom`, with the profile's sizes where the profile is not
-// Custom (Settings' comments say which fields those are).
-Settings mergedSettings(Profile profile, const Settings& custom);
-// `s` with the profile's sizes (its slices, samplesPerSlice, shadowMapSize, planeCount and
-// planeTarget); Custom leaves it as it is.
-Settings withProfileSizes(Settings s, Profile profile);
-void checkSettings(const Settings& s, const std::string& at = "custom");
 void checkOccluders(const std::vector<Occluder>& occluders);
 // The occluders checked (at most kMaxOccluders, each box valid) and in double, for the beam tree.
 std::vector<ls::beam::Occluder> beamOccluders(const std::vector<Occluder>& occluders);

@@ -23,7 +23,7 @@ GraphConfig graphConfig(const ValidatedFrame& frame,
                         const FrameImports& images, const GraphOptions& options,
                         const std::vector<const ls::LightData*>& data,
                         const GraphConfig* previous) {
-    const FrameSetup& first = frame.lights[0];
+    const ls::LightSetup& first = frame.lights[0];
     GraphConfig c;
     c.screen = first.screen;
     c.depthStencil = options.depthStencil;
@@ -42,7 +42,7 @@ GraphConfig graphConfig(const ValidatedFrame& frame,
     c.poisonTransients = options.poisonTransients;
     bool noise = false;
     for (size_t i = 0; i < frame.lights.size(); ++i) {
-        const FrameSetup& s = frame.lights[i];
+        const ls::LightSetup& s = frame.lights[i];
         const bool touches = frame.touchesView[i];
         const ls::MethodUnit& method = *methods[i];
         LightGraphConfig l;
@@ -64,7 +64,7 @@ GraphConfig graphConfig(const ValidatedFrame& frame,
         // The step counter holds the most slices of any light that marches.
         if (options.countSteps && method.caps().countsSteps && touches && s.shadowed) {
             c.countSteps = true;
-            c.stepCountSlices = std::max(c.stepCountSlices, s.epipolar.slices);
+            c.stepCountSlices = std::max(c.stepCountSlices, s.settings.epipolar.slices);
         }
         c.lights.push_back(l);
     }
@@ -73,7 +73,7 @@ GraphConfig graphConfig(const ValidatedFrame& frame,
     for (size_t i = 0; i < c.lights.size(); ++i)
         if (c.lights[i].touchesView) {
             const ls::MethodUnit& m = *c.lights[i].method;
-            if (m.caps().frameWide) {
+            if (m.caps().onePerFrame) {
                 const ls::HistoryShape shape = m.history(c.lights[i].chain, c.screen);
                 if (shape.given()) c.history = historyState(shape);
                 if (m.caps().exportsVolume) c.volumeOut = images.volumeOut;

@@ -22,7 +22,7 @@ double miePeak(const ls::MediumParams& m) {
 
 }  // namespace
 
-float linStorageScale(const FrameSetup& s) {
+float linStorageScale(const ls::LightSetup& s) {
     const ls::MediumParams& m = s.medium;
     const double pR = 3.0 / (8.0 * kPi), pM = miePeak(m);
     // Light reaching the camera from a point or spot light has travelled at least the distance
@@ -38,7 +38,7 @@ float linStorageScale(const FrameSetup& s) {
         if (!(scatter > 0.0)) continue;
         const double I = s.light.intensity[c];
         double lin = 0.0;
-        if (s.simplified) {
+        if (ls::simplifiedModel(s)) {
             const double a1 = s.settings.simplifiedA1;
             const double w = std::sqrt(std::max(double(s.settings.simplifiedA0) / a1, 1e-12));
             lin = I * (betaR + betaM) * kPi / (4.0 * kPi * a1 * w);
@@ -46,9 +46,9 @@ float linStorageScale(const FrameSetup& s) {
             lin = I * scatter / betaT;
         } else {
             const double r0 = std::max(double(s.light.radius), 1e-6);
-            lin = I * scatter * (kPi / r0 + double(s.settings.planeAmbient) / betaT);
+            lin = I * scatter * (kPi / r0 + double(s.settings.planes.ambient) / betaT);
         }
-        if (!s.simplified) lin *= std::exp(-betaT * apart);
+        if (!ls::simplifiedModel(s)) lin *= std::exp(-betaT * apart);
         bound = std::max(bound, lin);
     }
     if (!(bound > kStoredPeak)) return 1.0f;

@@ -19,6 +19,6 @@ namespace lightscatter::detail {
 // brightness stores Lin exactly as before), else the power of two that brings it to 16384: a
 // factor of four under float16's largest value for a sampled method's overshoot at a light, which
 // storedLin clamps. A light-color texture is taken to hold values of at most 1.
-float linStorageScale(const FrameSetup& setup);
+float linStorageScale(const ls::LightSetup& setup);
 
 }  // namespace lightscatter::detail

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "method_units.h"
+#include "registry/method_registry.h"
 #include "shared/refusals.h"
 
 namespace lightscatter::detail {
@@ -30,12 +31,93 @@ MethodChoice closedForm(std::string reason) {
     return pick(Method::Analytic, std::move(reason));
 }
 
+// The names of the methods whose caps pass `which`, in the registry's order: "a, b or c".
+template <typename F>
+std::string methodsWhere(F which, const char* last = "or") {
+    std::vector<std::string> names;
+    for (const ls::MethodUnit* m : ls::methodRegistry())
+        if (which(m->caps())) names.emplace_back(m->name());
+    std::string s;
+    for (size_t i = 0; i < names.size(); ++i)
+        s += (i == 0 ? "" : i + 1 == names.size() ? std::string(" ") + last + " " : ", ") + names[i];
+    return s;
+}
+
+const char* kindName(ls::LightType t) {
+    return t == ls::LightType::Directional ? "directional" : t == ls::LightType::Spot ? "spot" : "point";
+}
+
+bool takesKind(const ls::MethodCaps& c, ls::LightType t) {
+    return t == ls::LightType::Directional ? c.directional
+           : t == ls::LightType::Spot      ? c.spot
+                                           : c.point;
+}
+
+}  // namespace
+
+// What the method's caps rule out for this light, in one line naming the field, and the methods
+// that take it instead; empty when they rule out nothing.
+std::string capsRefusal(const ls::MethodUnit& unit, const ls::LightSetup& s) {
+    const ls::MethodCaps c = unit.caps();
+    const std::string method = "method " + std::string(unit.name());
+    const std::string& set = s.settingsPath;
+    const ls::LightType kind = s.light.kind;
+    if (!takesKind(c, kind)) {
+        std::string kinds;
+        for (ls::LightType t : {ls::LightType::Directional, ls::LightType::Spot, ls::LightType::Point})
+            if (takesKind(c, t)) kinds += std::string(kinds.empty() ? "" : " and ") + kindName(t);
+        return method + " takes " + kinds + " lights only; this frame's light is " + kindName(kind) +
+               " (use auto, " + methodsWhere([&](const ls::MethodCaps& o) { return takesKind(o, kind); }) +
+               ")";
+    }
+    if (ls::cubeShadowed(s) && !c.cubeShadow)
+        return method + " cannot sample a point light's cube shadow map (" + s.lightPath +
+               ".shadowMapSize > 0 with a point light): use " +
+               methodsWhere([](const ls::MethodCaps& o) { return o.cubeShadow; }, "") + "or auto";
+    if (s.shadowed && !c.shadowMap)
+        return method + " cannot cast shadows; this frame has a shadow map (use auto, " +
+               methodsWhere([](const ls::MethodCaps& o) { return o.shadowMap; }) + ")";
+    if (s.lightColor && !c.lightColor)
+        return method + " cannot vary the light's color along the ray: " + s.lightPath +
+               "Color needs " +
+               methodsWhere([](const ls::MethodCaps& o) { return o.lightColor; }, "") + "or auto";
+    if (s.lightColor && !s.shadowed && !c.unshadowedLightColor)
+        return method + " cannot vary the light's color along the ray: " + s.lightPath +
+               "Color without a shadow map needs " +
+               methodsWhere([](const ls::MethodCaps& o) { return o.unshadowedLightColor; }, "") +
+               "or auto";
+    if (ls::skipsShadows(s) && !c.skipsShadowSampling) {
+        const std::string honour =
+            methodsWhere([](const ls::MethodCaps& o) { return o.skipsShadowSampling; }, "and");
+        return set + ".shadowSampling = false (seed 003's low-end mode) is honoured by " + honour +
+               " only; " + method + " samples the shadow map (use " +
+               methodsWhere([](const ls::MethodCaps& o) { return o.skipsShadowSampling; }) +
+               " or auto)";
+    }
+    if (ls::noisy(s) && !c.noise)
+        return set + ".noiseAmplitude > 0 (seed 002's scrolling noise) is honoured by " +
+               methodsWhere([](const ls::MethodCaps& o) { return o.noise; }, "and") + " only; " +
+               method + " integrates the model's homogeneous medium (use " +
+               methodsWhere([](const ls::MethodCaps& o) { return o.noise; }) +
+               " or auto, or amplitude 0)";
+    if (ls::simplifiedModel(s) && !c.simplifiedModel)
+        return set + ".lightModel = simplified (seed 004's light model) is honoured by " +
+               methodsWhere([](const ls::MethodCaps& o) { return o.simplifiedModel; }, "and") +
+               " only; " + method + " integrates docs/model.md's full model (use " +
+               methodsWhere([](const ls::MethodCaps& o) { return o.simplifiedModel; }) +
+               " or auto, or lightModel full)";
+    return {};
+}
+
+namespace {
+
 // Epipolar sampling for a shadowed light, unless the screen is too small for it to pay, or the
 // light covers so little of it that marching its pixels costs less than epipolar's samples and
 // full-screen passes.
-MethodChoice epipolarOrBruteForce(const FrameSetup& s, const std::string& light) {
+MethodChoice epipolarOrBruteForce(const ls::LightSetup& s, const std::string& light) {
     const uint64_t pixels = uint64_t{s.screen.width} * s.screen.height;
-    const uint64_t samples = uint64_t{s.settings.slices} * s.settings.samplesPerSlice;
+    const uint64_t samples =
+        uint64_t{s.settings.epipolar.slices} * s.settings.epipolar.samplesPerSlice;
     const uint64_t covered = uint64_t{s.screenRect.extent.width} * s.screenRect.extent.height;
     const uint64_t texels = std::max(1u, s.light.shadowMapSize);
     if (covered != 0 && covered * texels <= pixels * kMarchTexelsPerPixel) {
@@ -54,62 +136,66 @@ MethodChoice epipolarOrBruteForce(const FrameSetup& s, const std::string& light)
                     std::to_string(kEpipolarSamplesPerPixel) + "): per-pixel marching is cheaper");
 }
 
-// Auto: the cheapest method that meets the frame's needs, and why.
-MethodChoice autoChoice(const FrameSetup& s, bool lightReachesView) {
-    const bool pointLike = ls::pointLike(s);
-    const bool skipShadows = ls::skipsShadows(s);
+// A setting beyond docs/model.md the light's frame asks for, and the methods that honour it.
+struct Extra {
+    std::string what;  // the field, as the engine set it
+    bool (*honours)(const ls::MethodCaps&);
+};
+
+std::vector<Extra> extrasAsked(const ls::LightSetup& s) {
     const std::string& set = s.settingsPath;  // "custom", or the light's own settings
+    std::vector<Extra> asked;
+    if (ls::simplifiedModel(s))
+        asked.push_back({set + ".lightModel = simplified (seed 004's light model)",
+                         [](const ls::MethodCaps& c) { return c.simplifiedModel; }});
+    if (ls::noisy(s))
+        asked.push_back({set + ".noiseAmplitude > 0 (seed 002's scrolling noise)",
+                         [](const ls::MethodCaps& c) { return c.noise; }});
+    if (ls::skipsShadows(s))
+        asked.push_back({set + ".shadowSampling = false (seed 003's low-end mode)",
+                         [](const ls::MethodCaps& c) { return c.skipsShadowSampling; }});
+    return asked;
+}
+
+// The first method that honours every extra the frame asks for and takes the light.
+MethodChoice honouring(const ls::LightSetup& s, const std::vector<Extra>& asked) {
+    std::string what;
+    for (const Extra& e : asked) what += (what.empty() ? "" : " and ") + e.what;
+    const auto all = [&](const ls::MethodCaps& c) {
+        for (const Extra& e : asked)
+            if (!e.honours(c)) return false;
+        return true;
+    };
+    if (methodsWhere(all).empty()) {
+        std::string each;
+        for (const Extra& e : asked)
+            each += (each.empty() ? "" : "; ") + e.what + ": " + methodsWhere(e.honours);
+        refuse(what + ": no method honours both (" + each + ")");
+    }
+    std::string last;
+    const auto& units = ls::methodRegistry();
+    for (size_t i = 0; i < units.size(); ++i) {
+        if (!all(units[i]->caps())) continue;
+        std::string r = refusal(*units[i], s);
+        if (r.empty())
+            return pick(static_cast<Method>(i), what + ": " + units[i]->name() +
+                                                    ", the first method that honours it and "
+                                                    "takes this light");
+        last = std::move(r);
+    }
+    refuse(what + ": no method that honours it takes this light (" + last + ")");
+}
+
+// Auto: the cheapest method that meets the frame's needs, and why.
+MethodChoice autoChoice(const ls::LightSetup& s, bool lightReachesView) {
+    const bool pointLike = ls::pointLike(s);
     if (!lightReachesView)
         return sampled("the light reaches no view ray (or nothing scatters): extinction only");
-    // A point light's cube map, with none of the settings below (which pick the method that
-    // honours them; each samples the cube map too).
-    if (ls::cubeShadowed(s) && !s.simplified && !s.noise && !skipShadows)
+    if (const std::vector<Extra> asked = extrasAsked(s); !asked.empty())
+        return honouring(s, asked);
+    if (ls::cubeShadowed(s))
         return epipolarOrBruteForce(
             s, "shadowed point light (a cube shadow map, marched face by face)");
-    if (s.simplified) {
-        // Seed 004's light model: only its closed forms integrate it.
-        if (!pointLike)
-            refuse(set +
-                   ".lightModel = simplified (seed 004's light model) needs a point or spot light; "
-                   "this frame's light is directional (use lightModel full)");
-        if (s.noise)
-            refuse(set + ".lightModel = simplified and " + set +
-                   ".noiseAmplitude > 0: no method honours both (the noise is planes', the "
-                   "simplified model beam-tree-analytic's and analytic's)");
-        if (skipShadows)
-            refuse(set + ".lightModel = simplified and " + set +
-                   ".shadowSampling = false: no method honours both (use shadowSampling true, or "
-                   "no shadow map, which analytic then integrates)");
-        if (s.lightColor)
-            refuse(set + ".lightModel = simplified and " + s.lightPath +
-                   "Color: no method honours both (the simplified model's closed forms cannot "
-                   "vary the light's color along a ray)");
-        if (!s.shadowed)
-            return closedForm(
-                "unshadowed point light, seed 004's simplified light model: its closed form (2.17) "
-                "per pixel");
-        if (!s.depthAttachment)
-            refuse(set +
-                   ".lightModel = simplified with a shadow map needs method beam-tree-analytic, "
-                   "which depth-tests its planes against the engine's depth: depth.usage needs "
-                   "DEPTH_STENCIL_ATTACHMENT beside SAMPLED");
-        return pick(
-            Method::BeamTreeAnalytic,
-            "shadowed light, seed 004's simplified light model: beam-tree-analytic, its closed "
-            "form in the lit space and sampling planes elsewhere");
-    }
-    if (s.noise) {
-        if (!s.depthAttachment)
-            refuse(set +
-                   ".noiseAmplitude > 0 needs method planes, which depth-tests against the "
-                   "engine's depth: depth.usage needs DEPTH_STENCIL_ATTACHMENT beside SAMPLED");
-        return pick(Method::Planes, "scrolling noise (" + set +
-                                        ".noiseAmplitude > 0): seed 002's planes, the only "
-                                        "method that samples it");
-    }
-    if (skipShadows)
-        return pick(Method::ConeMarch,
-                    "shadow sampling is off: seed 003's low-end mode, which only cone-march has");
     // A light color without a shadow map varies the light along each ray: no closed form carries
     // it, so the light is marched per pixel through the color (epipolar's unshadowed form).
     if (!s.shadowed && s.lightColor)
@@ -135,11 +221,16 @@ MethodChoice autoChoice(const FrameSetup& s, bool lightReachesView) {
 
 }  // namespace
 
+std::string refusal(const ls::MethodUnit& unit, const ls::LightSetup& s) {
+    const std::string r = capsRefusal(unit, s);
+    return r.empty() ? unit.refusal(s) : r;
+}
+
 const ls::MethodUnit& MethodChoice::unit() const {
     return *methodUnit(method);
 }
 
-MethodChoice chooseMethod(Method requested, const FrameSetup& s, bool lightReachesView) {
+MethodChoice chooseMethod(Method requested, const ls::LightSetup& s, bool lightReachesView) {
     MethodChoice c;
     if (requested == Method::Auto) {
         c = autoChoice(s, lightReachesView);
@@ -149,7 +240,7 @@ MethodChoice chooseMethod(Method requested, const FrameSetup& s, bool lightReach
     }
     const ls::MethodUnit* unit = methodUnit(requested);
     if (!unit) refuse("method is not a Method value");
-    if (const std::string r = unit->refusal(s); !r.empty()) refuse(r);
+    if (const std::string r = refusal(*unit, s); !r.empty()) refuse(r);
     c.method = requested;
     c.notice = unit->notice(s);
     return c;
@@ -176,7 +267,7 @@ std::vector<MethodChoice> chooseLightMethods(Method frameMethod, ValidatedFrame&
     // it, the lights that follow the frame's method go with it, and one that names another
     // method is refused.
     for (size_t i = 0; i < n; ++i) {
-        if (!choices[i].unit().caps().frameWide) continue;
+        if (!choices[i].unit().caps().onePerFrame) continue;
         const Method wide = choices[i].method;
         for (size_t j = 0; j < n; ++j) {
             if (choices[j].method == wide) continue;

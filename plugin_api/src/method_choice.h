@@ -35,8 +35,14 @@ struct MethodChoice {
     std::string notice;  // an assumption of the method that the frame breaks
 };
 
+// Why the method cannot honour the light, in one line naming the field and the methods that can
+// (what its caps rule out, then its own refusal); empty when it can.
+std::string refusal(const ls::MethodUnit& unit, const ls::LightSetup& s);
+// What its caps alone rule out.
+std::string capsRefusal(const ls::MethodUnit& unit, const ls::LightSetup& s);
+
 // Throws InvalidInput naming the method and the rule when it cannot honour the frame.
-MethodChoice chooseMethod(Method requested, const FrameSetup& setup, bool lightReachesView);
+MethodChoice chooseMethod(Method requested, const ls::LightSetup& setup, bool lightReachesView);
 // Each light's method: LightInput::method where it is not Auto, else the frame's `frameMethod`
 // (Auto choosing for each light on its own). A refusal names lights[i] in a list. Converts the
 // occluders into the setup of each light whose method reads them.

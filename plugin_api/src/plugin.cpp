@@ -191,11 +191,22 @@ struct Plugin::Impl {
     void check(const FrameDescription& frame) const { choose(frame); }
 
     // One light's constants.
-    ls::FrameConstants frameConstants(const detail::FrameSetup& setup) const {
+    ls::FrameConstants frameConstants(const ls::LightSetup& setup) const {
         const ls::TableLayout table =
             ls::tableLayoutFor(setup.medium, setup.light.radius, ls::kTableWidth, ls::kTableHeight);
+        const EpipolarSettings& e = setup.settings.epipolar;
+        ls::EpipolarSettings epipolar;
+        epipolar.slices = e.slices;
+        epipolar.samples = e.samplesPerSlice;
+        epipolar.initialStep = e.initialSampleStep;
+        epipolar.refinementThreshold = e.refinementThreshold;
+        epipolar.inscatterRefinementThreshold = e.inscatterRefinementThreshold;
+        epipolar.bilateralThreshold = e.bilateralThreshold;
+        epipolar.fixupMaxSteps = e.fixupMaxSteps;
+        epipolar.shadowDepthBias = setup.settings.shadowDepthBias;
+        epipolar.interpolateFraction = e.interpolation == Interpolation::ShadowedFraction;
         ls::FrameConstants c = ls::makeFrameConstants(setup.camera, setup.light, setup.medium,
-                                                      setup.epipolar, setup.screen, table);
+                                                      epipolar, setup.screen, table);
         // Seed 004's I / (a1 r^2 + a0) as (I / a1) / (r^2 + a0 / a1); the floor keeps a ray through
         // the light finite when a0 is 0, as the floor on r0 does for the full model; the ceilings
         // keep a denormal a1 from making them infinite.
@@ -336,7 +347,7 @@ struct Plugin::Impl {
         const size_t n = v.lights.size();
         Prepared p;
         p.choices = chosen.choices;
-        for (const detail::FrameSetup& s : v.lights) p.settings.push_back(s.settings);
+        for (const ls::LightSetup& s : v.lights) p.settings.push_back(s.settings);
         std::vector<const ls::MethodUnit*> methods(n);
         for (size_t i = 0; i < n; ++i) methods[i] = &chosen.choices[i].unit();
         p.screen = screen;
@@ -348,7 +359,7 @@ struct Plugin::Impl {
         }
         std::vector<const ls::LightData*> data(n, nullptr);
         for (size_t i = 0; i < n; ++i) {
-            const detail::FrameSetup& s = v.lights[i];
+            const ls::LightSetup& s = v.lights[i];
             const ls::MethodUnit& method = *methods[i];
             p.values[i].constants = frameConstants(s);
             p.values[i].screenRect = s.screenRect;

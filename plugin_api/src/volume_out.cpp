@@ -13,11 +13,11 @@ size_t gridLight(const ValidatedFrame& frame) {
 }
 
 FroxelVolume volumeLayout(const ValidatedFrame& frame, VkExtent2D screen) {
-    const FrameSetup& s = frame.lights[gridLight(frame)];
-    const ls::FroxelGrid grid = ls::froxelGrid(screen, s.froxels);
+    const ls::LightSetup& s = frame.lights[gridLight(frame)];
+    const ls::FroxelGrid grid = ls::froxelGrid(screen, ls::froxelSettings(s.settings.froxels));
     const ls::FroxelDepthRange z =
         ls::froxelDepthRange(s.camera.nearPlane, s.camera.farPlane, s.camera.infiniteFar,
-                             s.medium.maxDistance, s.froxels.farDistance);
+                             s.medium.maxDistance, s.settings.froxels.farDistance);
     return {grid.columns, grid.rows, grid.slices, grid.tile, z.nearZ, z.farZ};
 }
 
@@ -37,7 +37,7 @@ void checkVolumeOut(const ImageInput& volumeOut, const ValidatedFrame& frame,
             std::to_string(volumeOut.extent.height) + "x" + std::to_string(volumeOut.depth) +
             " differs from the froxel grid's " + std::to_string(v.width) + "x" +
             std::to_string(v.height) + "x" + std::to_string(v.depth) +
-            " (froxelVolume(): the screen over Settings::froxelTile, and froxelSlices)");
+            " (froxelVolume(): the screen over Settings::froxels.tile, and froxels.slices)");
 }
 
 }  // namespace lightscatter::detail

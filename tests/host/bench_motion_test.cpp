@@ -287,11 +287,11 @@ TEST(BenchConfigMotion, EachBadValueIsOneLineNamingTheField) {
 TEST(BenchConfigMotion, TheRefinementThresholdSweepFollowsThePluginsRule) {
     EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"],
                               "sweeps": {"refinementThreshold": [0.01, 0]}})"),
-              "sweeps.refinementThreshold (run 'refinementThreshold=0'): refinementThreshold = 0: "
+              "sweeps.epipolar.refinementThreshold (run 'refinementThreshold=0'): refinementThreshold = 0: "
               "must be > 0");
     EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"],
                               "sweeps": {"refinementThreshold": ["small"]}})"),
-              "sweeps.refinementThreshold[] = \"small\": must be a number");
+              "sweeps.epipolar.refinementThreshold[] = \"small\": must be a number");
 }
 
 TEST(BenchConfigMotion, DefaultsAndBothMotions) {
@@ -414,9 +414,9 @@ TEST(BenchConfigInput, FormerNamesOfThePlanesMethodAndItsSweeps) {
         std::vector<std::string> out;
         for (const auto& r : host::bench::loadBenchConfig(file.string(), LS_SOURCE_DIR).runs)
             out.push_back(r.label + " / " + r.family + " / " + lightscatter::methodName(r.method) +
-                          " / " + std::to_string(r.settings.planeCount) + " " +
-                          (r.settings.planeTarget == lightscatter::PlaneTarget::Rgba8Channels
-                               ? (r.settings.planeDither ? "rgba8-dither" : "rgba8")
+                          " / " + std::to_string(r.settings.planes.count) + " " +
+                          (r.settings.planes.target == lightscatter::PlaneTarget::Rgba8Channels
+                               ? (r.settings.planes.dither ? "rgba8-dither" : "rgba8")
                                : "float"));
         return out;
     };
@@ -438,7 +438,7 @@ TEST(BenchConfigInput, FormerNamesOfThePlanesMethodAndItsSweeps) {
     EXPECT_EQ(former, expected);
     EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"],
                               "sweeps": {"planeCount": [64], "slicePlanes": [128]}})"),
-              "sweeps.slicePlanes and sweeps.planeCount are one sweep (slicePlanes is its former "
+              "sweeps.slicePlanes and sweeps.planes.count are one sweep (slicePlanes is its former "
               "name): give it once");
     EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"], "sweeps": {"planeCount": [64],
                               "planeTargets": ["rgba8"], "sliceTargets": ["float32"]}})"),

@@ -174,7 +174,7 @@ TEST_F(HardSuite, EveryCaseIsFiniteAndWithinItsBound) {
             options.method = method;
             // Froxels of 2 pixels: 32 columns across 64, the density of froxels-hdrp's 240 across
             // 1920.
-            options.custom.froxelTile = 2;
+            options.custom.froxels.tile = 2;
             const host::FrameOutput out = renderer.render(options);
             const auto e =
                 host::bench::compareToReference(out.inscatter, reference.rgb, scene.exposure);
@@ -203,7 +203,7 @@ TEST_F(HardSuite, EveryCaseIsFiniteAndWithinItsBound) {
             // and never worse than without it (measured: 8 cases better, the others unchanged).
             // The profile (balanced) takes the threshold from `custom`.
             host::RenderOptions refined = options;
-            refined.custom.inscatterRefinementThreshold = 0.1f;
+            refined.custom.epipolar.inscatterRefinementThreshold = 0.1f;
             const auto r = host::bench::compareToReference(renderer.render(refined).inscatter,
                                                            reference.rgb, scene.exposure);
             std::printf("%-26s %-12s %8.4f (refinement 0.1)\n", name.c_str(), "epipolar",

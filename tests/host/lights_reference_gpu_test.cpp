@@ -179,7 +179,7 @@ TEST_F(LightsReferenceGpu, ASunAndTwoSpotsMatchTheReference) {
     host::RenderOptions dense = methodOptions(lightscatter::Method::Epipolar);
     dense.profile = lightscatter::Profile::Custom;
     dense.custom = lightscatter::profileSettings(lightscatter::Profile::Balanced);
-    dense.custom.initialSampleStep = 1;
+    dense.custom.epipolar.initialSampleStep = 1;
     expectWithin(judge(dev(), scene, mesh, ref, dense, "atrium_lights, initial step 1"), kBound);
     expectTheBoundsSeeEveryLight(dev(), scene, mesh, ref, kBound, "atrium_lights");
 }
@@ -226,7 +226,7 @@ host::RenderOptions refinedOptions(float threshold) {
     host::RenderOptions options = methodOptions(lightscatter::Method::Epipolar);
     options.profile = lightscatter::Profile::Custom;
     options.custom = lightscatter::profileSettings(lightscatter::Profile::Balanced);
-    options.custom.inscatterRefinementThreshold = threshold;
+    options.custom.epipolar.inscatterRefinementThreshold = threshold;
     return options;
 }
 
@@ -274,7 +274,7 @@ namespace {
 // 1920-pixel screen has 240 at froxels-hdrp's 8).
 host::RenderOptions froxelOptions(uint32_t tile) {
     host::RenderOptions options = methodOptions(lightscatter::Method::Froxels);
-    options.custom.froxelTile = tile;
+    options.custom.froxels.tile = tile;
     return options;
 }
 
@@ -364,7 +364,7 @@ TEST_F(LightsReferenceGpu, FroxelsTemporalModeSettlesOnAStillSceneAndResets) {
     const double plain =
         judge(dev(), scene, mesh, ref, froxelOptions(2), "atrium_lights, froxels, plain").error;
     host::RenderOptions temporal = froxelOptions(2);
-    temporal.custom.froxelTemporal = true;
+    temporal.custom.froxels.temporal = true;
     host::EngineRenderer renderer(dev(), scene, mesh, kLightsSize);
     const host::FrameOutput first = renderer.render(temporal);
     EXPECT_NE(first.plugin.reason.find("blended with the frame before's grid"), std::string::npos)

@@ -187,8 +187,8 @@ TEST_F(PointCageGpu, AutoFollowsTheScreenAndAnalyticRefusesTheCubeMap) {
     EXPECT_NE(small.plugin.reason.find("cube shadow map"), std::string::npos)
         << small.plugin.reason;
     options.profile = lightscatter::Profile::Custom;
-    options.custom.slices = 16;
-    options.custom.samplesPerSlice = 16;
+    options.custom.epipolar.slices = 16;
+    options.custom.epipolar.samplesPerSlice = 16;
     const host::FrameOutput larger = tiny.render(options);
     EXPECT_EQ(larger.plugin.method, "epipolar") << larger.plugin.reason;
     options.profile = lightscatter::Profile::Balanced;

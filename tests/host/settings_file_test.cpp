@@ -52,38 +52,38 @@ TEST_F(HostSettingsFile, EveryFieldByName) {
         "inscatterRefinementThreshold": 0.1, "bilateralThreshold": 0.2, "minMaxTrees": false, "shadowFilter": "nearest", "fixup": false,
         "fixupMaxSteps": 64, "shadowDepthBias": -0.001, "interpolation": "inscattering",
         "shadowMapSize": 1024})");
-    EXPECT_EQ(s.slices, 512u);
-    EXPECT_EQ(s.samplesPerSlice, 256u);
-    EXPECT_EQ(s.initialSampleStep, 8u);
-    EXPECT_FLOAT_EQ(s.refinementThreshold, 0.05f);
-    EXPECT_FLOAT_EQ(s.inscatterRefinementThreshold, 0.1f);
-    EXPECT_FLOAT_EQ(s.bilateralThreshold, 0.2f);
-    EXPECT_FALSE(s.minMaxTrees);
+    EXPECT_EQ(s.epipolar.slices, 512u);
+    EXPECT_EQ(s.epipolar.samplesPerSlice, 256u);
+    EXPECT_EQ(s.epipolar.initialSampleStep, 8u);
+    EXPECT_FLOAT_EQ(s.epipolar.refinementThreshold, 0.05f);
+    EXPECT_FLOAT_EQ(s.epipolar.inscatterRefinementThreshold, 0.1f);
+    EXPECT_FLOAT_EQ(s.epipolar.bilateralThreshold, 0.2f);
+    EXPECT_FALSE(s.epipolar.minMaxTrees);
     EXPECT_EQ(s.shadowFilter, lightscatter::ShadowFilter::Nearest);
-    EXPECT_FALSE(s.fixup);
-    EXPECT_EQ(s.fixupMaxSteps, 64u);
+    EXPECT_FALSE(s.epipolar.fixup);
+    EXPECT_EQ(s.epipolar.fixupMaxSteps, 64u);
     EXPECT_FLOAT_EQ(s.shadowDepthBias, -0.001f);
-    EXPECT_EQ(s.interpolation, lightscatter::Interpolation::Inscattering);
+    EXPECT_EQ(s.epipolar.interpolation, lightscatter::Interpolation::Inscattering);
     EXPECT_EQ(s.shadowMapSize, 1024u);
 
     const lightscatter::Settings c = load(R"({"coneSamples": 64, "coneLimited": false,
         "coneJitter": true, "shadowSampling": false})");
-    EXPECT_EQ(c.coneSamples, 64u);
-    EXPECT_FALSE(c.coneLimited);
-    EXPECT_TRUE(c.coneJitter);
+    EXPECT_EQ(c.coneMarch.samples, 64u);
+    EXPECT_FALSE(c.coneMarch.limited);
+    EXPECT_TRUE(c.coneMarch.jitter);
     EXPECT_FALSE(c.shadowSampling);
 
     const lightscatter::Settings p = load(R"({"planeCount": 200, "planeTarget": "rgba8",
         "planeScaling": true, "planeRange": 0.5, "planeDither": false, "planeBlur": 3,
         "planeAmbient": 0.02, "noiseAmplitude": 0.75, "noiseScale": 2.5,
         "noiseVelocity": [0.1, -0.2, 0.3, -0.4]})");
-    EXPECT_EQ(p.planeCount, 200u);
-    EXPECT_EQ(p.planeTarget, lightscatter::PlaneTarget::Rgba8Channels);
-    EXPECT_TRUE(p.planeScaling);
-    EXPECT_FLOAT_EQ(p.planeRange, 0.5f);
-    EXPECT_FALSE(p.planeDither);
-    EXPECT_EQ(p.planeBlur, 3u);
-    EXPECT_FLOAT_EQ(p.planeAmbient, 0.02f);
+    EXPECT_EQ(p.planes.count, 200u);
+    EXPECT_EQ(p.planes.target, lightscatter::PlaneTarget::Rgba8Channels);
+    EXPECT_TRUE(p.planes.scaling);
+    EXPECT_FLOAT_EQ(p.planes.range, 0.5f);
+    EXPECT_FALSE(p.planes.dither);
+    EXPECT_EQ(p.planes.blur, 3u);
+    EXPECT_FLOAT_EQ(p.planes.ambient, 0.02f);
     EXPECT_FLOAT_EQ(p.noiseAmplitude, 0.75f);
     EXPECT_FLOAT_EQ(p.noiseScale, 2.5f);
     EXPECT_EQ(p.noiseVelocity, (std::array<float, 4>{0.1f, -0.2f, 0.3f, -0.4f}));
@@ -93,17 +93,17 @@ TEST_F(HostSettingsFile, EveryFieldByName) {
     EXPECT_FLOAT_EQ(m.simplifiedA0, 0.04f);
     EXPECT_FLOAT_EQ(m.simplifiedA1, 0.5f);
     EXPECT_EQ(load(R"({"lightModel": "full"})").lightModel, lightscatter::LightModel::Full);
-    EXPECT_EQ(load(R"({"planeTarget": "float16"})").planeTarget,
+    EXPECT_EQ(load(R"({"planeTarget": "float16"})").planes.target,
               lightscatter::PlaneTarget::Float16);
-    EXPECT_EQ(load(R"({"planeTarget": "float32"})").planeTarget,
+    EXPECT_EQ(load(R"({"planeTarget": "float32"})").planes.target,
               lightscatter::PlaneTarget::Float32);
     const lightscatter::Settings f = load(R"({"froxelTile": 16, "froxelSlices": 128,
         "froxelFarDistance": 50, "froxelTemporal": true, "froxelHistoryWeight": 0.8})");
-    EXPECT_EQ(f.froxelTile, 16u);
-    EXPECT_EQ(f.froxelSlices, 128u);
-    EXPECT_FLOAT_EQ(f.froxelFarDistance, 50.0f);
-    EXPECT_TRUE(f.froxelTemporal);
-    EXPECT_FLOAT_EQ(f.froxelHistoryWeight, 0.8f);
+    EXPECT_EQ(f.froxels.tile, 16u);
+    EXPECT_EQ(f.froxels.slices, 128u);
+    EXPECT_FLOAT_EQ(f.froxels.farDistance, 50.0f);
+    EXPECT_TRUE(f.froxels.temporal);
+    EXPECT_FLOAT_EQ(f.froxels.historyWeight, 0.8f);
 }
 
 // The froxel presets by name: the grid's sizes, and "-temporal" for the temporal mode.
@@ -111,14 +111,14 @@ TEST_F(HostSettingsFile, EveryFieldByName) {
 // of Settings the list leaves out would keep its default on the way back and fail here.
 TEST_F(HostSettingsFile, AWrittenFileReadsBackToTheSameSettings) {
     lightscatter::Settings s;
-    s.slices = 512;
-    s.refinementThreshold = 0.07f;
-    s.minMaxTrees = false;
+    s.epipolar.slices = 512;
+    s.epipolar.refinementThreshold = 0.07f;
+    s.epipolar.minMaxTrees = false;
     s.shadowFilter = lightscatter::ShadowFilter::Nearest;
-    s.planeTarget = lightscatter::PlaneTarget::Rgba8Channels;
+    s.planes.target = lightscatter::PlaneTarget::Rgba8Channels;
     s.noiseVelocity = {0.25f, -0.5f, 0.125f, 1.0f};
     s.lightModel = lightscatter::LightModel::Simplified;
-    s.froxelHistoryWeight = 0.3f;
+    s.froxels.historyWeight = 0.3f;
     const lightscatter::Settings back = load(host::settingsFileText(s));
     for (const host::SettingField& f : host::settingFields())
         for (int c = 0; c < (f.kind == host::SettingField::Kind::Vector4 ? 4 : 1); ++c)
@@ -131,19 +131,20 @@ TEST_F(HostSettingsFile, AWrittenFileReadsBackToTheSameSettings) {
 
 TEST_F(HostSettingsFile, FroxelPresetsSetTheGrid) {
     lightscatter::Settings s;
-    s.froxelTemporal = true;
-    ASSERT_TRUE(lightscatter::applyFroxelPreset("froxels-unreal", s));
-    EXPECT_EQ(s.froxelTile, 16u);
-    EXPECT_EQ(s.froxelSlices, 64u);
-    EXPECT_FALSE(s.froxelTemporal);
-    ASSERT_TRUE(lightscatter::applyFroxelPreset("froxels-hdrp-temporal", s));
-    EXPECT_EQ(s.froxelTile, 8u);
-    EXPECT_TRUE(s.froxelTemporal);
+    s.froxels.temporal = true;
+    ASSERT_EQ(lightscatter::applyMethodPreset("froxels-unreal", s), lightscatter::Method::Froxels);
+    EXPECT_EQ(s.froxels.tile, 16u);
+    EXPECT_EQ(s.froxels.slices, 64u);
+    EXPECT_FALSE(s.froxels.temporal);
+    ASSERT_EQ(lightscatter::applyMethodPreset("froxels-hdrp-temporal", s),
+              lightscatter::Method::Froxels);
+    EXPECT_EQ(s.froxels.tile, 8u);
+    EXPECT_TRUE(s.froxels.temporal);
     const lightscatter::Settings before = s;
     for (const char* name : {"froxels", "froxels-", "-temporal", "froxels-hdrp-temporal-temporal"})
-        EXPECT_FALSE(lightscatter::applyFroxelPreset(name, s)) << name;
-    EXPECT_EQ(s.froxelTile, before.froxelTile);
-    EXPECT_EQ(s.froxelTemporal, before.froxelTemporal);
+        EXPECT_FALSE(lightscatter::applyMethodPreset(name, s)) << name;
+    EXPECT_EQ(s.froxels.tile, before.froxels.tile);
+    EXPECT_EQ(s.froxels.temporal, before.froxels.temporal);
 }
 
 // The planes method's fields under their former names (named after "slice" until the word came
@@ -153,17 +154,17 @@ TEST_F(HostSettingsFile, FormerNamesOfThePlaneFieldsStillRead) {
     const lightscatter::Settings p = load(R"({"slicePlanes": 200, "sliceTarget": "rgba8",
         "slicePlaneScaling": true, "sliceRange": 0.5, "sliceDither": false, "sliceBlur": 3,
         "sliceAmbient": 0.02})");
-    EXPECT_EQ(p.planeCount, 200u);
-    EXPECT_EQ(p.planeTarget, lightscatter::PlaneTarget::Rgba8Channels);
-    EXPECT_TRUE(p.planeScaling);
-    EXPECT_FLOAT_EQ(p.planeRange, 0.5f);
-    EXPECT_FALSE(p.planeDither);
-    EXPECT_EQ(p.planeBlur, 3u);
-    EXPECT_FLOAT_EQ(p.planeAmbient, 0.02f);
+    EXPECT_EQ(p.planes.count, 200u);
+    EXPECT_EQ(p.planes.target, lightscatter::PlaneTarget::Rgba8Channels);
+    EXPECT_TRUE(p.planes.scaling);
+    EXPECT_FLOAT_EQ(p.planes.range, 0.5f);
+    EXPECT_FALSE(p.planes.dither);
+    EXPECT_EQ(p.planes.blur, 3u);
+    EXPECT_FLOAT_EQ(p.planes.ambient, 0.02f);
     // Old and new names mix, one name per field.
     const lightscatter::Settings mixed = load(R"({"slicePlanes": 64, "planeTarget": "float32"})");
-    EXPECT_EQ(mixed.planeCount, 64u);
-    EXPECT_EQ(mixed.planeTarget, lightscatter::PlaneTarget::Float32);
+    EXPECT_EQ(mixed.planes.count, 64u);
+    EXPECT_EQ(mixed.planes.target, lightscatter::PlaneTarget::Float32);
 
     struct Names {
         const char *former, *current, *value;
@@ -189,10 +190,10 @@ TEST_F(HostSettingsFile, FormerNamesOfThePlaneFieldsStillRead) {
 TEST_F(HostSettingsFile, FieldsLeftOutKeepTheProfilesValues) {
     const auto base = lightscatter::profileSettings(lightscatter::Profile::LowHighPerformance);
     const lightscatter::Settings s = load(R"({"minMaxTrees": false})", base);
-    EXPECT_EQ(s.slices, base.slices);
-    EXPECT_EQ(s.samplesPerSlice, base.samplesPerSlice);
+    EXPECT_EQ(s.epipolar.slices, base.epipolar.slices);
+    EXPECT_EQ(s.epipolar.samplesPerSlice, base.epipolar.samplesPerSlice);
     EXPECT_EQ(s.shadowMapSize, base.shadowMapSize);
-    EXPECT_FALSE(s.minMaxTrees);
+    EXPECT_FALSE(s.epipolar.minMaxTrees);
 }
 
 TEST_F(HostSettingsFile, BadFieldsAreNamed) {

@@ -170,15 +170,15 @@ TEST_F(PluginApiGpu, CheckRefusesWhatRecordRefusesAndBuildsNothing) {
 }
 
 TEST_F(PluginApiGpu, ZeroSlicesAreRefused) {
-    expectRefused([](auto& d) { d.custom.slices = 0; }, "custom.slices");
+    expectRefused([](auto& d) { d.custom.epipolar.slices = 0; }, "custom.epipolar.slices");
 }
 
 TEST_F(PluginApiGpu, SlicesNotAMultipleOfFourAreRefused) {
-    expectRefused([](auto& d) { d.custom.slices = 30; }, "multiple of 4");
+    expectRefused([](auto& d) { d.custom.epipolar.slices = 30; }, "multiple of 4");
 }
 
 TEST_F(PluginApiGpu, InitialStepMustBeAPowerOfTwo) {
-    expectRefused([](auto& d) { d.custom.initialSampleStep = 12; }, "custom.initialSampleStep");
+    expectRefused([](auto& d) { d.custom.epipolar.initialSampleStep = 12; }, "custom.epipolar.initialSampleStep");
 }
 
 // Seed 004's simplified light model: I / (a1 r^2 + a0) needs a1 > 0 and a0 >= 0, both finite.
@@ -343,10 +343,10 @@ TEST_F(PluginApiGpu, GraphIsReusedUntilItsShapeChanges) {
     run(frame, Method::Epipolar);
     const std::string first = plugin().graphJson();
     auto settings = smallSettings(frame.spec().screen);
-    settings.refinementThreshold = 0.2f;  // a constant, not a shape
+    settings.epipolar.refinementThreshold = 0.2f;  // a constant, not a shape
     run(frame, Method::Epipolar, settings);
     EXPECT_EQ(plugin().graphJson(), first);
-    settings.slices += 4;  // a texture size: a new graph
+    settings.epipolar.slices += 4;  // a texture size: a new graph
     run(frame, Method::Epipolar, settings);
     EXPECT_NE(plugin().graphJson(), first);
     EXPECT_NE(plugin().graphDot().find("digraph"), std::string::npos);

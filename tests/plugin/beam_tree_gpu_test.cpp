@@ -171,8 +171,8 @@ FrameSpec shadowedGrille() {
 
 lightscatter::Settings planeSettings(uint32_t planes) {
     lightscatter::Settings s = smallSettings();
-    s.planeCount = planes;
-    s.planeTarget = lightscatter::PlaneTarget::Float32;
+    s.planes.count = planes;
+    s.planes.target = lightscatter::PlaneTarget::Float32;
     return s;
 }
 
@@ -259,7 +259,7 @@ TEST_F(BeamTreeGpu, SamplingWithClippingIsThePlanesMethodWithTheSamePlanes) {
 TEST_F(BeamTreeGpu, BothMethodsConvergeToBruteForceAsPlanesGrow) {
     TestFrame frame(dev(), shadowedGrille());
     lightscatter::Settings fine = smallSettings();
-    fine.samplesPerSlice = 1024;
+    fine.epipolar.samplesPerSlice = 1024;
     const std::vector<float> brute = render(plugin(), frame, Method::BruteForce, fine);
     for (Method method : {Method::BeamTreeSampling, Method::BeamTreeAnalytic}) {
         double previous = 1e30;
@@ -359,9 +359,9 @@ TEST_F(BeamTreeGpu, SimplifiedModelInTheSamplingPlanes) {
         return frame.inscatter();
     };
     auto simplified = simplifiedSettings(frame.spec().screen);
-    simplified.planeCount = 256;
+    simplified.planes.count = 256;
     auto full = smallSettings(frame.spec().screen);
-    full.planeCount = 256;
+    full.planes.count = 256;
     const std::vector<float> want = float64Simplified(frame, kA0, kA1);
     const ErrorStats s = compare(render(simplified), want);
     const ErrorStats f = compare(render(full), float64Unshadowed(frame));

@@ -20,7 +20,7 @@ TEST(Budget, SeedProfilesAt2560x1600) {
         const auto s = lightscatter::profileSettings(p);
         const auto b = lightscatter::budget(p, 2560, 1600, s.shadowMapSize);
         std::printf("%-18s %7u %7u %5u %12.1f %12.1f %10.1f\n", lightscatter::profileName(p),
-                    s.slices, s.samplesPerSlice, s.shadowMapSize,
+                    s.epipolar.slices, s.epipolar.samplesPerSlice, s.shadowMapSize,
                     static_cast<double>(b.totalBytes) / 1048576.0,
                     static_cast<double>(b.peakBytes) / 1048576.0, b.seed ? b.seed->megabytes : 0.0);
         EXPECT_TRUE(b.estimated);
@@ -82,11 +82,28 @@ TEST(Budget, EntriesHaveTheSeedsSizes) {
     }
 }
 
+namespace {
+
+// Lights of these types, all with `method`, each with its shadow map where the method samples one
+// (a point light's cube map).
+std::vector<lightscatter::BudgetLight> lightsOf(
+    std::vector<lightscatter::LightType> types,
+    lightscatter::Method method = lightscatter::Method::Epipolar) {
+    const lightscatter::MethodInfo& info = lightscatter::methodInfo()[static_cast<size_t>(method)];
+    std::vector<lightscatter::BudgetLight> lights;
+    for (lightscatter::LightType t : types)
+        lights.push_back(
+            {t, t == lightscatter::LightType::Point ? info.cubeShadow : info.shadowMap, method});
+    return lights;
+}
+
+}  // namespace
+
 TEST(Budget, DirectionalLightNeedsNoTable) {
-    const auto spot =
-        lightscatter::budget(Profile::Balanced, 640, 480, 1024, lightscatter::LightType::Spot);
+    const auto spot = lightscatter::budget(Profile::Balanced, 640, 480, 1024,
+                                           lightsOf({lightscatter::LightType::Spot}));
     const auto sun = lightscatter::budget(Profile::Balanced, 640, 480, 1024,
-                                          lightscatter::LightType::Directional);
+                                          lightsOf({lightscatter::LightType::Directional}));
     auto hasTable = [](const lightscatter::Budget& b) {
         for (const auto& e : b.entries)
             if (e.name == "point-light table") return !e.transient;
@@ -102,13 +119,13 @@ TEST(Budget, BadRequestsAreRefused) {
     EXPECT_THROW(lightscatter::budget(Profile::Balanced, 1920, 1080, 0),
                  lightscatter::InvalidInput);
     lightscatter::Settings bad;
-    bad.slices = 0;
+    bad.epipolar.slices = 0;
     try {
-        lightscatter::budget(Profile::Custom, 1920, 1080, 2048, lightscatter::LightType::Spot,
-                             &bad);
+        lightscatter::budget(Profile::Custom, 1920, 1080, 2048,
+                             lightsOf({lightscatter::LightType::Spot}), &bad);
         ADD_FAILURE() << "zero slices accepted";
     } catch (const lightscatter::InvalidInput& e) {
-        EXPECT_NE(std::string(e.what()).find("custom.slices"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("custom.epipolar.slices"), std::string::npos);
     }
 }
 
@@ -117,13 +134,13 @@ TEST(Budget, BadRequestsAreRefused) {
 TEST(Budget, LightsAliasEachOther) {
     using lightscatter::LightType;
     const auto s = lightscatter::profileSettings(Profile::Balanced);
-    const auto one =
-        lightscatter::budget(Profile::Balanced, 2560, 1600, s.shadowMapSize, LightType::Spot);
+    const auto one = lightscatter::budget(Profile::Balanced, 2560, 1600, s.shadowMapSize,
+                                          lightsOf({lightscatter::LightType::Spot}));
     const auto two = lightscatter::budget(Profile::Balanced, 2560, 1600, s.shadowMapSize,
-                                          std::vector<LightType>{LightType::Spot, LightType::Spot});
-    const auto three = lightscatter::budget(
-        Profile::Balanced, 2560, 1600, s.shadowMapSize,
-        std::vector<LightType>{LightType::Directional, LightType::Spot, LightType::Point});
+                                          lightsOf({LightType::Spot, LightType::Spot}));
+    const auto three =
+        lightscatter::budget(Profile::Balanced, 2560, 1600, s.shadowMapSize,
+                             lightsOf({LightType::Directional, LightType::Spot, LightType::Point}));
     std::printf(
         "balanced 2560x1600: one spot peak %.1f MiB (total %.1f), two spots %.1f (total %.1f), "
         "sun+spot+point %.1f (total %.1f)\n",
@@ -138,10 +155,10 @@ TEST(Budget, LightsAliasEachOther) {
     EXPECT_GT(two.totalBytes, two.peakBytes);  // aliasing saves something
     // One light in the list is the single light's budget.
     EXPECT_EQ(lightscatter::budget(Profile::Balanced, 2560, 1600, s.shadowMapSize,
-                                   std::vector<LightType>{LightType::Spot})
+                                   lightsOf({LightType::Spot}))
                   .peakBytes,
               one.peakBytes);
-    EXPECT_THROW(lightscatter::budget(Profile::Balanced, 256, 256, 256, std::vector<LightType>{}),
+    EXPECT_THROW(lightscatter::budget(Profile::Balanced, 256, 256, 256, lightsOf({})),
                  lightscatter::InvalidInput);
     // A light its method refuses is refused, naming it.
     try {
@@ -163,8 +180,10 @@ TEST(Budget, CubeFacesAliasEachOther) {
     using lightscatter::LightType;
     for (Profile p : {Profile::HighQuality, Profile::Balanced, Profile::HighPerformance}) {
         const auto s = lightscatter::profileSettings(p);
-        const auto spot = lightscatter::budget(p, 2560, 1600, s.shadowMapSize, LightType::Spot);
-        const auto point = lightscatter::budget(p, 2560, 1600, s.shadowMapSize, LightType::Point);
+        const auto spot = lightscatter::budget(p, 2560, 1600, s.shadowMapSize,
+                                               lightsOf({lightscatter::LightType::Spot}));
+        const auto point = lightscatter::budget(p, 2560, 1600, s.shadowMapSize,
+                                                lightsOf({lightscatter::LightType::Point}));
         uint64_t trees = 0;
         size_t faceTrees = 0;
         for (const auto& e : point.entries)
@@ -193,11 +212,12 @@ TEST(Budget, InscatterRefinementAddsNoMemory) {
     using lightscatter::LightType;
     for (Profile p : {Profile::HighQuality, Profile::Balanced, Profile::HighPerformance}) {
         lightscatter::Settings refined = lightscatter::profileSettings(p);
-        refined.inscatterRefinementThreshold = 0.1f;
+        refined.epipolar.inscatterRefinementThreshold = 0.1f;
         for (LightType light : {LightType::Spot, LightType::Directional, LightType::Point}) {
-            const auto off = lightscatter::budget(p, 2560, 1600, refined.shadowMapSize, light);
-            const auto on =
-                lightscatter::budget(p, 2560, 1600, refined.shadowMapSize, light, &refined);
+            const auto off =
+                lightscatter::budget(p, 2560, 1600, refined.shadowMapSize, lightsOf({light}));
+            const auto on = lightscatter::budget(p, 2560, 1600, refined.shadowMapSize,
+                                                 lightsOf({light}), &refined);
             std::printf("%s 2560x1600, light %d: peak %.1f MiB without refinement, %.1f with\n",
                         lightscatter::profileName(p), static_cast<int>(light),
                         static_cast<double>(off.peakBytes) / 1048576.0,
@@ -223,8 +243,9 @@ TEST(Names, MethodsAndProfilesRoundTrip) {
         EXPECT_EQ(lightscatter::profileName(*p), n);
     }
     EXPECT_FALSE(lightscatter::parseMethod("raytraced").has_value());
-    EXPECT_EQ(lightscatter::profileSettings(Profile::HighQuality).slices, 2048u);
-    EXPECT_EQ(lightscatter::profileSettings(Profile::HighPerformance).samplesPerSlice, 512u);
+    EXPECT_EQ(lightscatter::profileSettings(Profile::HighQuality).epipolar.slices, 2048u);
+    EXPECT_EQ(lightscatter::profileSettings(Profile::HighPerformance).epipolar.samplesPerSlice,
+              512u);
 }
 
 // The planes method was "slices" until the word came to mean only an epipolar line: the former name
@@ -277,9 +298,9 @@ TEST(Budget, PlanesListsItsTargetPerProfile) {
          {Row{Profile::HighQuality, "planes' sum R32G32B32A32_SFLOAT", false},
           Row{Profile::Balanced, "planes' sum R16G16B16A16_SFLOAT", false},
           Row{Profile::HighPerformance, "planes' sum (8-bit channels) R8G8B8A8_UNORM", true}}) {
-        const auto b =
-            lightscatter::budget(row.profile, 1920, 1080, 2048, lightscatter::LightType::Spot,
-                                 nullptr, lightscatter::Method::Planes);
+        const auto b = lightscatter::budget(
+            row.profile, 1920, 1080, 2048,
+            lightsOf({lightscatter::LightType::Spot}, lightscatter::Method::Planes), nullptr);
         std::set<std::string> seen;
         for (const auto& e : b.entries) seen.insert(e.name + " " + e.format);
         std::string all;
@@ -294,21 +315,18 @@ TEST(Budget, PlanesListsItsTargetPerProfile) {
     }
     lightscatter::Settings noisy;
     noisy.noiseAmplitude = 0.5f;
-    const auto withNoise =
-        lightscatter::budget(Profile::Balanced, 1920, 1080, 2048, lightscatter::LightType::Spot,
-                             &noisy, lightscatter::Method::Planes);
-    const auto without =
-        lightscatter::budget(Profile::Balanced, 1920, 1080, 2048, lightscatter::LightType::Spot,
-                             nullptr, lightscatter::Method::Planes);
+    const auto withNoise = lightscatter::budget(
+        Profile::Balanced, 1920, 1080, 2048,
+        lightsOf({lightscatter::LightType::Spot}, lightscatter::Method::Planes), &noisy);
+    const auto without = lightscatter::budget(
+        Profile::Balanced, 1920, 1080, 2048,
+        lightsOf({lightscatter::LightType::Spot}, lightscatter::Method::Planes), nullptr);
     EXPECT_EQ(withNoise.peakBytes - without.peakBytes, 256u * 256u * 2u);
-    try {
-        (void)lightscatter::budget(Profile::Balanced, 1920, 1080, 2048,
-                                   lightscatter::LightType::Spot, nullptr,
-                                   lightscatter::Method::BruteForce);
-        ADD_FAILURE() << "a budget for brute-force";
-    } catch (const lightscatter::InvalidInput& e) {
-        EXPECT_NE(std::string(e.what()).find("brute-force"), std::string::npos) << e.what();
-    }
+    // A method whose textures do not depend on the profile is budgeted as any other.
+    const auto brute = lightscatter::budget(
+        Profile::Balanced, 1920, 1080, 2048,
+        lightsOf({lightscatter::LightType::Spot}, lightscatter::Method::BruteForce), nullptr);
+    EXPECT_EQ(brute.lightMethods, std::vector<std::string>{"brute-force"});
 }
 
 // Seed 004's methods: a float32 Lin and the triangle buffer; the point-light table only for the
@@ -324,8 +342,9 @@ TEST(Budget, BeamTreeMethodsListTheirBufferAndTarget) {
                            Row{lightscatter::Method::BeamTreeSampling,
                                "in-scattering (lit and uncertain planes)", false}}) {
         const char* name = lightscatter::methodName(row.method);
-        const auto b = lightscatter::budget(Profile::Balanced, 1920, 1080, 2048,
-                                            lightscatter::LightType::Spot, nullptr, row.method);
+        const auto b =
+            lightscatter::budget(Profile::Balanced, 1920, 1080, 2048,
+                                 lightsOf({lightscatter::LightType::Spot}, row.method), nullptr);
         std::set<std::string> seen;
         for (const auto& e : b.entries) seen.insert(e.name + " " + e.format);
         std::string all;
@@ -337,10 +356,10 @@ TEST(Budget, BeamTreeMethodsListTheirBufferAndTarget) {
             << name << ": " << all;
         EXPECT_EQ(seen.count("point-light table R32G32B32A32_SFLOAT") == 1, row.table)
             << name << ": " << all;
-        EXPECT_THROW(
-            (void)lightscatter::budget(Profile::Balanced, 1920, 1080, 2048,
-                                       lightscatter::LightType::Directional, nullptr, row.method),
-            lightscatter::InvalidInput)
+        EXPECT_THROW((void)lightscatter::budget(
+                         Profile::Balanced, 1920, 1080, 2048,
+                         lightsOf({lightscatter::LightType::Directional}, row.method), nullptr),
+                     lightscatter::InvalidInput)
             << name;
     }
 }

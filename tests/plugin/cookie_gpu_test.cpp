@@ -67,9 +67,9 @@ FrameSpec cookieSun(std::vector<float> cookie) {
 // 256 planes into a float32 target.
 lightscatter::Settings accurate(const FrameSpec& spec) {
     lightscatter::Settings s = smallSettings(spec.screen);
-    s.coneSamples = 256;
-    s.planeCount = 256;
-    s.planeTarget = lightscatter::PlaneTarget::Float32;
+    s.coneMarch.samples = 256;
+    s.planes.count = 256;
+    s.planes.target = lightscatter::PlaneTarget::Float32;
     return s;
 }
 

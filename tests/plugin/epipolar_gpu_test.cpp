@@ -79,10 +79,10 @@ TEST_F(EpipolarGpu, MinMaxTreesOnAndOffGiveTheSameImage) {
     for (const auto& light : {spotOverGrille(), sunThroughGrille()}) {
         TestFrame frame(dev(), sceneWith(light));
         auto settings = smallSettings(frame.spec().screen);
-        settings.initialSampleStep = 4;
+        settings.epipolar.initialSampleStep = 4;
         lightscatter::FrameReport withTrees, without;
         const auto a = render(frame, Method::Epipolar, settings, &withTrees);
-        settings.minMaxTrees = false;
+        settings.epipolar.minMaxTrees = false;
         const auto b = render(frame, Method::Epipolar, settings, &without);
         EXPECT_TRUE(ranPass(withTrees, "min/max trees level 1"));
         EXPECT_FALSE(ranPass(without, "min/max trees level 1"));
@@ -103,7 +103,7 @@ TEST_F(EpipolarGpu, TinyShadowMapsAreMarchedWithoutTrees) {
         TestFrame frame(dev(), sceneWith(light));
         auto settings = smallSettings(frame.spec().screen);
         settings.shadowMapSize = n;
-        ASSERT_TRUE(settings.minMaxTrees);
+        ASSERT_TRUE(settings.epipolar.minMaxTrees);
         lightscatter::FrameReport report;
         const auto epi = render(frame, Method::Epipolar, settings, &report);
         const auto brute = render(frame, Method::BruteForce, settings);
@@ -119,7 +119,7 @@ TEST_F(EpipolarGpu, SeedInterpolationOfLinMatchesAwayFromTheLight) {
     TestFrame frame(dev(), sceneWith(sunThroughGrille()));
     auto settings = smallSettings(frame.spec().screen);
     const auto brute = render(frame, Method::BruteForce, settings);
-    settings.interpolation = lightscatter::Interpolation::Inscattering;
+    settings.epipolar.interpolation = lightscatter::Interpolation::Inscattering;
     const auto epi = render(frame, Method::Epipolar, settings);
     const ErrorStats e = compare(epi, brute);
     EXPECT_EQ(e.nonFinite, 0u);
@@ -137,7 +137,7 @@ TEST_P(EpipolarComposite, AttenuatesTheEngineColorAndAddsLin) {
     TestFrame frame(dev(), spec);
     frame.resetColor();
     auto settings = smallSettings(spec.screen);
-    settings.fixup = GetParam();
+    settings.epipolar.fixup = GetParam();
     const auto report = run(frame, Method::Epipolar, settings);
     EXPECT_EQ(std::count(report.passNames.begin(), report.passNames.end(), "composite"), 0);
     EXPECT_EQ(std::count(report.passNames.begin(), report.passNames.end(), "fix-up ray march"),
@@ -173,7 +173,7 @@ TEST_F(EpipolarGpu, ColoredShaftsMatchBruteForceWithTreesOnAndOff) {
     lightscatter::FrameReport report;
     const auto brute = render(frame, Method::BruteForce, settings);
     const auto withTrees = render(frame, Method::Epipolar, settings, &report);
-    settings.minMaxTrees = false;
+    settings.epipolar.minMaxTrees = false;
     const auto without = render(frame, Method::Epipolar, settings);
     const ErrorStats e = compare(withTrees, brute);
     EXPECT_GT(e.peak, 0.0);

@@ -205,7 +205,7 @@ TEST_F(HardCasesGpu, EveryCaseGivesFinitePixelsWithEveryMethod) {
             frame.resetColor();
             auto settings = smallSettings(frame.spec().screen);
             settings.shadowMapSize = frame.light().shadowMapSize;
-            settings.inscatterRefinementThreshold = refinement;
+            settings.epipolar.inscatterRefinementThreshold = refinement;
             const auto report = run(frame, method, settings);
             const auto lin = frame.inscatter();
             const auto color = frame.color();
@@ -244,7 +244,7 @@ TEST_F(HardCasesGpu, EpipolarStaysCloseToBruteForce) {
         const auto brute = frame.inscatter();
         // The bound holds with refinement on in-scattering differences too.
         for (float refinement : {0.0f, kRefinement}) {
-            settings.inscatterRefinementThreshold = refinement;
+            settings.epipolar.inscatterRefinementThreshold = refinement;
             frame.resetColor();
             run(frame, Method::Epipolar, settings);
             const ErrorStats e = compare(frame.inscatter(), brute);

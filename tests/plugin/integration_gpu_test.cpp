@@ -353,16 +353,16 @@ TEST_F(PluginIntegrationGpu, RecordingIntoANullCommandBufferIsRefused) {
 }
 
 TEST_F(PluginIntegrationGpu, CustomSettingsErrorsNameTheFieldTheEngineSets) {
-    expectRefused([](auto& d) { d.custom.slices = 30; }, "custom.slices = 30");
+    expectRefused([](auto& d) { d.custom.epipolar.slices = 30; }, "custom.epipolar.slices = 30");
     TestFrame frame(dev(), spotFrame());
     auto desc = frame.description(Method::Epipolar, lightscatter::Profile::Custom,
                                   smallSettings(frame.spec().screen));
-    desc.custom.samplesPerSlice = 1;
+    desc.custom.epipolar.samplesPerSlice = 1;
     try {
         plugin().render(desc);
         ADD_FAILURE() << "accepted";
     } catch (const lightscatter::InvalidInput& e) {
-        EXPECT_TRUE(contains(e.what(), "custom.samplesPerSlice")) << e.what();
+        EXPECT_TRUE(contains(e.what(), "custom.epipolar.samplesPerSlice")) << e.what();
         EXPECT_FALSE(contains(e.what(), "settings.")) << e.what();
     }
 }
@@ -447,7 +447,7 @@ TEST_F(PluginIntegrationGpu, ReportsOfFramesNoLongerHeldAreRefused) {
     // A frame of a graph no longer in use keeps its times (its queries go when it leaves the
     // history, issue #24).
     const lightscatter::FrameReport before = plugin().report();
-    desc.custom.slices += 4;  // a new graph
+    desc.custom.epipolar.slices += 4;  // a new graph
     plugin().render(desc);
     const lightscatter::FrameReport again = plugin().report(before.frame);
     EXPECT_TRUE(again.timed);

@@ -192,10 +192,10 @@ TEST_F(LightsGpu, EachLightTakesItsOwnSettings) {
     TestFrame b(dev(), sceneWith(secondSpot()));
     const auto fine = smallSettings(a.spec().screen);
     lightscatter::Settings coarse = fine;
-    coarse.slices = 32;
-    coarse.samplesPerSlice = 24;
-    coarse.initialSampleStep = 16;
-    coarse.fixup = false;
+    coarse.epipolar.slices = 32;
+    coarse.epipolar.samplesPerSlice = 24;
+    coarse.epipolar.initialSampleStep = 16;
+    coarse.epipolar.fixup = false;
     const auto da = a.description(Method::Epipolar, lightscatter::Profile::Custom, fine);
     const auto db = b.description(Method::Epipolar, lightscatter::Profile::Custom, coarse);
     const auto linA = linOf(a, da);
@@ -328,9 +328,9 @@ TEST_F(LightsGpu, RefusalsNameTheFields) {
     // A light's own settings are checked like the frame's custom, and named as the light's.
     auto ownBad = withLights(da, {input(da), input(da)});
     ownBad.lights[1].settings = settings;
-    ownBad.lights[1].settings->slices = 6;
+    ownBad.lights[1].settings->epipolar.slices = 6;
     const std::string o = refusal(ownBad);
-    EXPECT_NE(o.find("lights[1].settings.slices"), std::string::npos) << o;
+    EXPECT_NE(o.find("lights[1].settings.epipolar.slices"), std::string::npos) << o;
     // A method that cannot honour a light of the list refuses it, naming the light and itself.
     auto analytic = withLights(da, {input(da), input(da)});
     analytic.method = Method::Analytic;

@@ -58,7 +58,7 @@ TEST_F(LinStorageGpu, ABrightLightsLinIsScaledNotClamped) {
         for (Method method : k.methods) {
             lightscatter::Settings s = smallSettings(kStorageScreen);
             s.shadowMapSize = 64;
-            s.planeCount = 32;
+            s.planes.count = 32;
             auto d = frame.description(method, lightscatter::Profile::Custom, s);
             plugin().render(d);
             const std::vector<float> unit = frame.inscatter();

@@ -75,8 +75,8 @@ FrameSpec baseSpec(Base b) {
 lightscatter::Settings testSettings() {
     lightscatter::Settings s = smallSettings(kScreen);
     s.shadowMapSize = 64;
-    s.planeCount = 32;
-    s.coneSamples = 16;
+    s.planes.count = 32;
+    s.coneMarch.samples = 16;
     return s;
 }
 
@@ -217,12 +217,12 @@ std::vector<Field> fields() {
         "medium.maxDistance", {L}, [](double v) { return v < 10.0; },
         [](auto& m, double v) { m.maxDistance = f32(v); });
     // Settings, with the methods that read each.
-    custom("custom.refinementThreshold", spot, {Method::Epipolar}, {},
-           [](auto& s, double v) { s.refinementThreshold = f32(v); });
-    custom("custom.inscatterRefinementThreshold", spot, {Method::Epipolar}, {},
-           [](auto& s, double v) { s.inscatterRefinementThreshold = f32(v); });
-    custom("custom.bilateralThreshold", spot, {Method::Epipolar}, {},
-           [](auto& s, double v) { s.bilateralThreshold = f32(v); });
+    custom("custom.epipolar.refinementThreshold", spot, {Method::Epipolar}, {},
+           [](auto& s, double v) { s.epipolar.refinementThreshold = f32(v); });
+    custom("custom.epipolar.inscatterRefinementThreshold", spot, {Method::Epipolar}, {},
+           [](auto& s, double v) { s.epipolar.inscatterRefinementThreshold = f32(v); });
+    custom("custom.epipolar.bilateralThreshold", spot, {Method::Epipolar}, {},
+           [](auto& s, double v) { s.epipolar.bilateralThreshold = f32(v); });
     // A bias of half the depth range and more puts every point in shadow.
     f.push_back({"custom.shadowDepthBias",
                  spot,
@@ -233,19 +233,19 @@ std::vector<Field> fields() {
                  [](FrameDescription& d, double v) { d.custom.shadowDepthBias = f32(v); }});
     // A range far from Lin's (about 0.1 here) saturates the 8-bit target or rounds every share to
     // 0.
-    f.push_back({"custom.planeRange",
+    f.push_back({"custom.planes.range",
                  spot,
                  {Method::Planes},
                  {1e-30},
                  [](double v) { return v < 1e-3 || v > 1e3; },
                  {},
                  [](FrameDescription& d, double v) {
-                     d.custom.planeTarget = lightscatter::PlaneTarget::Rgba8Channels;
-                     d.custom.planeRange = f32(v);
+                     d.custom.planes.target = lightscatter::PlaneTarget::Rgba8Channels;
+                     d.custom.planes.range = f32(v);
                  }});
-    custom("custom.planeAmbient", {Base::Spot, Base::Point},
+    custom("custom.planes.ambient", {Base::Spot, Base::Point},
            {Method::Planes, Method::BeamTreeSampling}, {limits::kMaxAmbient},
-           [](auto& s, double v) { s.planeAmbient = f32(v); });
+           [](auto& s, double v) { s.planes.ambient = f32(v); });
     custom("custom.noiseAmplitude", spot, {Method::Planes}, {1.0},
            [](auto& s, double v) { s.noiseAmplitude = f32(v); });
     custom("custom.noiseScale", spot, {Method::Planes},
@@ -288,17 +288,17 @@ std::vector<Field> fields() {
                      [g](FrameDescription& d, double v) { g(d.custom, static_cast<uint32_t>(v)); },
                      counts});
     };
-    whole("custom.slices", {Method::Epipolar}, [](auto& s, uint32_t v) { s.slices = v; });
-    whole("custom.samplesPerSlice", {Method::Epipolar},
-          [](auto& s, uint32_t v) { s.samplesPerSlice = v; });
-    whole("custom.initialSampleStep", {Method::Epipolar},
-          [](auto& s, uint32_t v) { s.initialSampleStep = v; });
-    whole("custom.fixupMaxSteps", {Method::Epipolar},
-          [](auto& s, uint32_t v) { s.fixupMaxSteps = v; });
-    whole("custom.coneSamples", {Method::ConeMarch},
-          [](auto& s, uint32_t v) { s.coneSamples = v; });
-    whole("custom.planeCount", {Method::Planes}, [](auto& s, uint32_t v) { s.planeCount = v; });
-    whole("custom.planeBlur", {Method::Planes}, [](auto& s, uint32_t v) { s.planeBlur = v; });
+    whole("custom.epipolar.slices", {Method::Epipolar}, [](auto& s, uint32_t v) { s.epipolar.slices = v; });
+    whole("custom.epipolar.samplesPerSlice", {Method::Epipolar},
+          [](auto& s, uint32_t v) { s.epipolar.samplesPerSlice = v; });
+    whole("custom.epipolar.initialSampleStep", {Method::Epipolar},
+          [](auto& s, uint32_t v) { s.epipolar.initialSampleStep = v; });
+    whole("custom.epipolar.fixupMaxSteps", {Method::Epipolar},
+          [](auto& s, uint32_t v) { s.epipolar.fixupMaxSteps = v; });
+    whole("custom.coneMarch.samples", {Method::ConeMarch},
+          [](auto& s, uint32_t v) { s.coneMarch.samples = v; });
+    whole("custom.planes.count", {Method::Planes}, [](auto& s, uint32_t v) { s.planes.count = v; });
+    whole("custom.planes.blur", {Method::Planes}, [](auto& s, uint32_t v) { s.planes.blur = v; });
     // The camera's optional planes must agree with the projection (0: taken from it).
     f.push_back({"camera.nearPlane",
                  spot,
@@ -473,7 +473,7 @@ TEST_F(NumericRangesGpu, TheBrightestFrameTheRangesAllowIsFinite) {
                 s.simplifiedA0 = 0.0f;
                 s.simplifiedA1 = limits::kMinSimplifiedA1;
                 if (method == Method::Planes || method == Method::BeamTreeSampling)
-                    s.planeAmbient = limits::kMaxAmbient;
+                    s.planes.ambient = limits::kMaxAmbient;
                 const auto d = frame.description(method, lightscatter::Profile::Custom, s);
                 judge(frame, d, "",
                       std::string(baseName(base)) + ", " + lightscatter::methodName(method) +

@@ -18,8 +18,8 @@ namespace {
 
 lightscatter::Settings planeSettings(uint32_t planes, PlaneTarget target) {
     lightscatter::Settings s = smallSettings();
-    s.planeCount = planes;
-    s.planeTarget = target;
+    s.planes.count = planes;
+    s.planes.target = target;
     return s;
 }
 
@@ -80,12 +80,12 @@ TEST_F(PlanesGpu, EightBitChannelsHoldTheFloatTargetWithinTheirQuantisation) {
     for (size_t i = 0; i < full.size(); i += 4) peak = std::max(peak, luminance(&full[i]));
     for (bool dither : {false, true}) {
         auto s = planeSettings(planes, PlaneTarget::Rgba8Channels);
-        s.planeRange = static_cast<float>(4.4 * peak);
-        s.planeDither = dither;
+        s.planes.range = static_cast<float>(4.4 * peak);
+        s.planes.dither = dither;
         frame.resetColor();
         run(frame, Method::Planes, s);
         const std::vector<float> eight = frame.inscatter();
-        const double step = s.planeRange / 4.0 / 255.0;
+        const double step = s.planes.range / 4.0 / 255.0;
         // Rounding to nearest loses at most half a step per plane; stochastic rounding at most one.
         const double bound = planes * step * (dither ? 1.0 : 0.5) + 1e-3 * peak;
         double worst = 0, sumDiff = 0;
@@ -222,7 +222,7 @@ TEST_F(PlanesGpu, DirectionalLightAndBlurStayCloseToBruteForce) {
     const std::vector<float> brute = frame.inscatter();
     for (uint32_t blur : {0u, 2u}) {
         auto s = planeSettings(256, PlaneTarget::Float32);
-        s.planeBlur = blur;
+        s.planes.blur = blur;
         frame.resetColor();
         run(frame, Method::Planes, s);
         const ErrorStats e = compare(frame.inscatter(), brute);

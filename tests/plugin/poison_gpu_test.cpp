@@ -28,13 +28,13 @@ std::vector<PoisonCase> poisonCases() {
     return {
         {"spot epipolar", spotOverGrille(), Method::Epipolar},
         {"spot epipolar without trees", spotOverGrille(), Method::Epipolar,
-         [](lightscatter::Settings& s) { s.minMaxTrees = false; }},
+         [](lightscatter::Settings& s) { s.epipolar.minMaxTrees = false; }},
         {"spot epipolar interpolating Lin", spotOverGrille(), Method::Epipolar,
          [](lightscatter::Settings& s) {
-             s.interpolation = lightscatter::Interpolation::Inscattering;
+             s.epipolar.interpolation = lightscatter::Interpolation::Inscattering;
          }},
         {"spot epipolar without fix-up", spotOverGrille(), Method::Epipolar,
-         [](lightscatter::Settings& s) { s.fixup = false; }},
+         [](lightscatter::Settings& s) { s.epipolar.fixup = false; }},
         {"spot brute force", spotOverGrille(), Method::BruteForce},
         {"colored spot epipolar", spotOverGrille(), Method::Epipolar, nullptr, true},
         {"directional epipolar", sunThroughGrille(), Method::Epipolar},

@@ -62,11 +62,11 @@ TEST_F(RefinementGpu, ShadowEdgesWithoutDepthBreaksAreMarched) {
         const char* what = "spot";
         TestFrame frame(dev(), sceneWith(light));
         auto settings = smallSettings(frame.spec().screen);
-        settings.initialSampleStep = 16;
+        settings.epipolar.initialSampleStep = 16;
         const auto brute = render(frame, Method::BruteForce, settings);
         lightscatter::FrameReport off, on;
         const ErrorStats plain = compare(render(frame, Method::Epipolar, settings, &off), brute);
-        settings.inscatterRefinementThreshold = kThreshold;
+        settings.epipolar.inscatterRefinementThreshold = kThreshold;
         const ErrorStats refined = compare(render(frame, Method::Epipolar, settings, &on), brute);
         std::printf(
             "%s, initial step 16: mean error %.2e without refinement, %.2e with (max %.2e, %.2e)\n",
@@ -80,8 +80,8 @@ TEST_F(RefinementGpu, ShadowEdgesWithoutDepthBreaksAreMarched) {
         EXPECT_LT(refined.maxRelative, plain.maxRelative) << what;
         // The refinement marches only what it adds: the first march is the same, and the two
         // together march fewer samples than an initial step of 1, which marches every valid one.
-        settings.initialSampleStep = 1;
-        settings.inscatterRefinementThreshold = 0.0f;
+        settings.epipolar.initialSampleStep = 1;
+        settings.epipolar.inscatterRefinementThreshold = 0.0f;
         lightscatter::FrameReport every;
         render(frame, Method::Epipolar, settings, &every);
         const Marched a = marched(off), b = marched(on), all = marched(every);
@@ -121,11 +121,11 @@ TEST_F(RefinementGpu, EpipolarBoundsHoldWithRefinement) {
         spec.coloredLight = c.colored;
         TestFrame frame(dev(), spec);
         auto settings = smallSettings(spec.screen);
-        settings.interpolation = c.interpolation;
+        settings.epipolar.interpolation = c.interpolation;
         const auto brute = render(frame, Method::BruteForce, settings);
-        settings.inscatterRefinementThreshold = kThreshold;
+        settings.epipolar.inscatterRefinementThreshold = kThreshold;
         for (bool trees : {true, false}) {
-            settings.minMaxTrees = trees;
+            settings.epipolar.minMaxTrees = trees;
             lightscatter::FrameReport report;
             const ErrorStats e = compare(render(frame, Method::Epipolar, settings, &report), brute);
             std::printf("%s, trees %s, refined: mean %.2e max %.2e\n", c.name, trees ? "on" : "off",
@@ -144,9 +144,9 @@ TEST_F(RefinementGpu, EpipolarBoundsHoldWithRefinement) {
 TEST_F(RefinementGpu, AThresholdNothingExceedsChangesNothing) {
     TestFrame frame(dev(), sceneWith(spotOverGrille()));
     auto settings = smallSettings(frame.spec().screen);
-    settings.initialSampleStep = 16;
+    settings.epipolar.initialSampleStep = 16;
     const auto plain = render(frame, Method::Epipolar, settings);
-    settings.inscatterRefinementThreshold = 1e30f;
+    settings.epipolar.inscatterRefinementThreshold = 1e30f;
     const auto refined = render(frame, Method::Epipolar, settings);
     // Outside a spot's cone a source carries no light (alpha 0) and its neighbour inside does: that
     // still refines, whatever the threshold. Elsewhere the images agree.
@@ -159,12 +159,12 @@ TEST_F(RefinementGpu, BadThresholdsAreRefused) {
     for (float bad :
          {-0.1f, std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
         auto settings = smallSettings(frame.spec().screen);
-        settings.inscatterRefinementThreshold = bad;
+        settings.epipolar.inscatterRefinementThreshold = bad;
         try {
             run(frame, Method::Epipolar, settings);
             ADD_FAILURE() << "threshold " << bad << " was accepted";
         } catch (const lightscatter::InvalidInput& e) {
-            EXPECT_NE(std::string(e.what()).find("custom.inscatterRefinementThreshold"),
+            EXPECT_NE(std::string(e.what()).find("custom.epipolar.inscatterRefinementThreshold"),
                       std::string::npos)
                 << e.what();
             EXPECT_NE(std::string(e.what()).find("must be finite and >= 0"), std::string::npos)

@@ -121,7 +121,7 @@ TEST_F(SeedMethodsGpu, ConeMarchConvergesToBruteForce) {
     const auto brute = frame.inscatter();
     double previous = 1e30;
     for (uint32_t n : {4u, 16u, 64u, 256u}) {
-        settings.coneSamples = n;
+        settings.coneMarch.samples = n;
         frame.resetColor();
         const auto report = run(frame, Method::ConeMarch, settings);
         EXPECT_EQ(report.method, "cone-march");
@@ -145,7 +145,7 @@ TEST_F(SeedMethodsGpu, NoShadowSamplingMatchesTheUnshadowedClosedForm) {
     TestFrame shadowed(dev(), spec);
     auto settings = smallSettings(spec.screen);
     settings.shadowSampling = false;
-    settings.coneSamples = 256;
+    settings.coneMarch.samples = 256;
     shadowed.resetColor();
     const auto report = run(shadowed, Method::ConeMarch, settings);
     EXPECT_NE(report.reason.find("no shadow-map sampling"), std::string::npos) << report.reason;
@@ -199,8 +199,8 @@ TEST_F(SeedMethodsGpu, AutoPicksByWhatTheFrameHolds) {
     {
         Row r{"shadowed spot, small screen", base(), smallSettings({48, 32}), "brute-force",
               "per-pixel marching is cheaper"};
-        r.settings.slices = 1024;
-        r.settings.samplesPerSlice = 1024;
+        r.settings.epipolar.slices = 1024;
+        r.settings.epipolar.samplesPerSlice = 1024;
         rows.push_back(r);
     }
     rows.push_back({"shadowed spot, few epipolar samples", base(), smallSettings({48, 32}),

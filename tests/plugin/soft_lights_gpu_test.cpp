@@ -50,7 +50,7 @@ FrameSpec windowedPoint(lightscatter::Medium medium) {
 ErrorStats errorOf(Method method, const FrameSpec& spec, const std::vector<float>& want) {
     TestFrame frame(testing_support::device(), spec);
     lightscatter::Settings settings = smallSettings(spec.screen);
-    settings.planeCount = 256;  // the planes' own error well below the edges'
+    settings.planes.count = 256;  // the planes' own error well below the edges'
     plugin().render(frame.description(method, Profile::Custom, settings));
     return compare(frame.inscatter(), want);
 }

@@ -21,7 +21,7 @@ FrameSpec longLitRuns(lightscatter::Light light) {
 lightscatter::Settings countingSettings(VkExtent2D screen, bool trees) {
     auto s = smallSettings(screen);
     s.shadowMapSize = 512;
-    s.minMaxTrees = trees;
+    s.epipolar.minMaxTrees = trees;
     return s;
 }
 

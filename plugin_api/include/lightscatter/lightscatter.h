@@ -23,12 +23,15 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "lightscatter/limits.h"      // the ranges of a frame's numbers
+#include "lightscatter/settings.h"    // Settings, Profile, each method's settings
 #include "lightscatter/vocabulary.h"  // LightType, MiePhase, PlaneTarget
 
 // The library's version. 0.x: a minor version may change the API, so an engine compiles against the
@@ -36,7 +39,7 @@
 // header and a library of different major.minor versions do not link (Plugin's constructor takes
 // a tag named for the header's version, which only the library of that version defines).
 #define LIGHTSCATTER_VERSION_MAJOR 0
-#define LIGHTSCATTER_VERSION_MINOR 3
+#define LIGHTSCATTER_VERSION_MINOR 4
 #define LIGHTSCATTER_VERSION_PATCH 0
 
 // What the library exports: everything declared with LIGHTSCATTER_API (a shared build exports
@@ -64,126 +67,29 @@ LIGHTSCATTER_API Version version();
 using Vec3 = std::array<float, 3>;
 using Mat4 = std::array<float, 16>;  // column-major (GLM's layout), maps column vectors
 
-// The ranges of a frame's numbers. The plugin computes in single precision: FLT_MAX is about
-// 3.4e38, the smallest normal float 1.2e-38, and a GPU may flush smaller (subnormal) values to 0.
-// Each numeric field's comment states its range, and record() refuses a value outside it
-// (InvalidInput naming the field and the range). The bounds are chosen so that no shader
-// overflows: the largest product one forms is Lin's integrand times the length of ray it stands
-// for,
-//       intensity     1e9 W/sr or W/m^2           kMaxIntensity
-//     x irradiance    2e6 1/m^2                   1 / r0^2 with r0 >= kMinRadius, plus planes'
-//                                                 ambient term, at most kMaxAmbient
-//     x coefficient   1e3 1/m                     kMaxCoefficient
-//     x phase         2e5 1/sr                    Cornette-Shanks' peak, 0.16 / (1 - g)^2 under
-//                                                 the shaders' floor of 1e-6 on its denominator,
-//                                                 for any g in (-1, 1)
-//     x length        6e9 m                       kMaxLength over the cosine of a ray at the
-//                                                 corner of the widest field of view
-//     = 2.4e33, a factor of 1e5 below FLT_MAX; a sum of samples along a ray is never more than
-// its largest term times the ray's length. Seed 004's simplified model (Settings::lightModel)
-// replaces the last three by betaS / (4 pi) <= 80 times the length, and 1 / r0^2 by its falloff,
-// at most 1e12 / a1 <= 1e15 (the plugin floors a0 / a1 at 1e-12 m^2): 5e35, a factor of 600 below.
-// Lower ends: a length or angle below its bound is one single precision cannot resolve (each
-// bound says how); everything else may be 0 or subnormal, which renders as 0 would. A Lin below
-// 6e-8 W/(m^2 sr), float16's smallest value, which the methods' screen targets hold, reads as 0
-// (plugin_api/src/lin_storage.h scales a bright frame's Lin into float16's range).
-namespace limits {
-// Coordinates (light.position, the camera's position in camera.view), the far plane, the sky
-// distance and the light's radius, in metres: 1e8 m, a quarter of the way to the Moon. Squares
-// of distances (up to 4e19 between two points) stay far below FLT_MAX.
-inline constexpr float kMaxLength = 1e8f;
-// Light.intensity: W/m^2 (directional) or W/sr (point, spot). The Sun gives 1.4e3 W/m^2.
-inline constexpr float kMaxIntensity = 1e9f;
-// Medium::betaR, betaM, sigmaA, per channel, 1/m: a mean free path of a millimetre (milk is
-// about 1e3 /m, thick fog 0.1 /m).
-inline constexpr float kMaxCoefficient = 1e3f;
-// Light::radius r0 (m): keeps 1 / (r^2 + r0^2) at most 1e6 /m^2.
-inline constexpr float kMinRadius = 1e-3f;
-// Settings::planeAmbient (1/m^2): no more than the inverse square at kMinRadius.
-inline constexpr float kMaxAmbient = 1e6f;
-// Light::innerConeAngleDegrees and outerConeAngleDegrees: the cone test compares cosines, whose
-// float32 step near 1 (6e-8) moves the edge of a 0.1-degree cone by 2% of its angle and swallows
-// cones under 0.02 degree whole.
-inline constexpr float kMinConeAngleDegrees = 0.1f;
-[[deprecated("use kMinConeAngleDegrees")]] inline constexpr float kMinHalfAngleDegrees = 0.1f;
-// Settings::simplifiedA1 (a1 of I / (a1 r^2 + a0)): seed 004's a1 is 1; 1e-3 to 1e3 keeps its
-// falloff within the budget above. simplifiedA0 (m^2) up to kMaxLength^2.
-inline constexpr float kMinSimplifiedA1 = 1e-3f, kMaxSimplifiedA1 = 1e3f;
-inline constexpr float kMaxSimplifiedA0 = 1e16f;
-// Settings::noiseScale: a tile from 1e-6 (m, or the tangent of the angle it spans) to
-// kMaxLength; noise coordinates (position / scale) stay below 1e14.
-inline constexpr float kMinNoiseScale = 1e-6f, kMaxNoiseScale = 1e8f;
-// The camera's field of view, on each axis (from camera.projection: 2 atan(1 / |P[0][0]|) and
-// 2 atan(1 / |P[1][1]|)). Measured against the float64 model on 32x18 and 256x4 screens under an
-// unshadowed sun (mean relative error of Lin): brute-force, epipolar and cone-march within 0.05%,
-// planes within 2.4% (its planes' sampling), from 1e-6 degrees to 177 across; below 1e-7 degrees
-// the planes degenerate (0.87 off), and at 178.9 degrees across every method is 9% off. 1e-4
-// degrees keeps a margin of 100, and spans 29 float32 steps of a unit vector's component.
-// tests/plugin/camera_limits_gpu_test.cpp holds the ends.
-inline constexpr float kMinFovDegrees = 1e-4f, kMaxFovDegrees = 177.0f;
-// The near plane (m). A reversed float32 depth buffer stores near / distance, a normal float out
-// to kMaxLength for a near plane down to 1e-29 m. Measured on a 32x18 spot against the float64
-// model: with reversed depth, finite or infinite, every method's error at near 1e-30 m is its
-// error at 1e-4 m (brute-force 0.0003, planes 0.064).
-inline constexpr float kMinNearPlane = 1e-29f;
-// Standard depth (near plane at 0) and 16- or 24-bit depth formats either way round step by 2^-b
-// (b = 24 bits for D24 and, near 1, for D32_SFLOAT; 16 for D16): at distance z the step is z^2 /
-// near 2^-b. The far plane (with an infinite one: the sky distance, Medium::maxDistance) may be
-// at most 2^b / 16 times the near plane, where one step is 1/16 of the distance; beyond 2^b the
-// far part of the view collapses onto depth 1 and reads as sky. Reversed depth in D32_SFLOAT has
-// no such limit.
-inline constexpr float kDepthStepsPerDistance = 16.0f;
-// FrameDescription::preExposure: the bound above leaves Lin a factor of 1e5 below FLT_MAX; an
-// exposure of up to 1e4 keeps a factor of 10.
-inline constexpr float kMaxPreExposure = 1e4f;
-}  // namespace limits
+// The ranges of a frame's numbers: lightscatter/limits.h.
 
-// The methods (docs/methods.md): epipolar sampling (seed 000), brute-force per-pixel marching (the
-// GPU reference), seed 001's arctangent closed form (unshadowed point and spot lights), seed 003's
-// cone-limited fixed-count march, seed 002's view-aligned planes, seed 004's two methods (a
-// beam tree of FrameDescription::occluders, built on the CPU each frame, splits a point or spot
-// light's volume into lit, uncertain and dark space; dark space is never drawn. BeamTreeAnalytic
-// integrates lit space in closed form and samples uncertain space with seed 002's planes and the
-// shadow map; BeamTreeSampling samples both with the planes, skipping the shadow map in lit
-// space), and Auto, which picks one per frame from what the frame holds and says which and why in
-// the FrameReport.
+// The methods (docs/methods.md), one per line of lightscatter/methods.inc, in its order: epipolar
+// sampling (seed 000), brute-force per-pixel marching (the GPU reference), seed 001's arctangent
+// closed form (unshadowed point and spot lights), seed 003's cone-limited fixed-count march, seed
+// 002's view-aligned planes, seed 004's two methods (a beam tree of FrameDescription::occluders,
+// built on the CPU each frame, splits a point or spot light's volume into lit, uncertain and dark
+// space; dark space is never drawn. BeamTreeAnalytic integrates lit space in closed form and
+// samples uncertain space with seed 002's planes and the shadow map; BeamTreeSampling samples both
+// with the planes, skipping the shadow map in lit space), and the froxel volumetric fog engines
+// ship (Unreal, Frostbite, HDRP, Godot), for comparison on the same frame: every light of the frame
+// injected into one view-frustum grid (Settings::froxels), integrated front to back, applied at
+// each pixel's depth. methodInfo() says what each takes. Auto picks one per light and frame from
+// what the frame holds and says which and why in the FrameReport.
 enum class Method {
-    Epipolar,
-    BruteForce,
-    Analytic,
-    ConeMarch,
-    Planes,
-    BeamTreeAnalytic,
-    BeamTreeSampling,
-    // The froxel volumetric fog engines ship (Unreal, Frostbite, HDRP, Godot), for comparison on
-    // the same frame: every light of the frame injected into one view-frustum grid
-    // (Settings::froxel*), integrated front to back, applied at each pixel's depth. Frame-wide:
-    // when a frame's lights resolve to it, every light goes through the grid.
-    Froxels,
+#define LIGHTSCATTER_METHOD(Enum, Type, member) Enum,
+#define LIGHTSCATTER_METHOD_WITHOUT_SETTINGS(Enum) Enum,
+#include "lightscatter/methods.inc"
     Auto,
     // The planes method's former name ("slices" too is still parsed), kept so that engines
     // written against it compile; "slice" now means only an epipolar line.
     Slices [[deprecated("use Method::Planes")]] = Planes,
 };
-enum class Profile {
-    HighQuality,         // 2048 slices x 1024 samples, 4096^2 shadow map (seed 000)
-    Balanced,            // 1024 x 1024, 2048^2
-    HighPerformance,     // 1024 x 512, 1024^2
-    LowHighQuality,      // the seed's set for weaker devices: 1024 x 1024, 2048^2
-    LowBalanced,         // 512 x 512, 1024^2
-    LowHighPerformance,  // 512 x 256, 512^2
-    Custom,              // Settings as given
-};
-enum class ShadowFilter { Nearest, Bilinear };
-// What epipolar samples carry between ray marching and the screen. Seed 000 interpolates Lin
-// itself; interpolating the shadowed fraction of the closed-form unshadowed Lin instead keeps the
-// glow around a light (which no sparse sampling resolves) exact, and changes nothing where there is
-// no glow.
-enum class Interpolation { ShadowedFraction, Inscattering };
-// The light model the in-scattering integrates (Settings::lightModel). Full: docs/model.md's, with
-// transmittance and the phase functions. Simplified: seed 004's (eqs. 2.12-2.17), irradiance
-// I / (a1 r^2 + a0) with no transmittance anywhere and an isotropic phase.
-enum class LightModel { Full, Simplified };
 
 LIGHTSCATTER_API const char* methodName(Method m);    // "epipolar", "brute-force", "analytic", ...
 LIGHTSCATTER_API const char* profileName(Profile p);  // "high-quality", "balanced", ... "custom"
@@ -193,122 +99,56 @@ LIGHTSCATTER_API std::optional<Profile> parseProfile(const std::string& name);
 LIGHTSCATTER_API std::vector<std::string> methodNames();
 LIGHTSCATTER_API std::vector<std::string> profileNames();
 
-// Every choice seed 000 leaves open.
-struct Settings {
-    uint32_t slices = 1024;           // epipolar lines; a multiple of 4 (one quarter per edge)
-    uint32_t samplesPerSlice = 1024;  // samples along each line
-    uint32_t initialSampleStep = 16;  // ray-marching samples every N samples (power of two, <= 128)
-    float refinementThreshold = 0.03f;  // relative camera-z jump that is a depth break; > 0
-                                        // and finite (only compared: any such value is safe)
-    // Epipolar refinement on what the samples carry (docs/epipolar.md, "Refinement on in-scattering
-    // differences"). 0 (the default): off. Above 0: after the first march, wherever the two
-    // ray-marching samples an interpolated sample lies between differ in some channel by more than
-    // this fraction of the larger (the shadowed fraction, or Lin with Interpolation::Inscattering),
-    // or one carries light and the other none, every sample between them is marched too (a second,
-    // stencil-limited march), so a shadow edge no depth break marks is not interpolated across.
-    // Finite (only compared).
-    float inscatterRefinementThreshold = 0.0f;
-    float bilateralThreshold = 0.1f;  // relative camera-z difference accepted when unwarping;
-                                      // > 0 and finite (only compared)
-    bool minMaxTrees = true;          // 1D min/max binary trees per slice
-    ShadowFilter shadowFilter = ShadowFilter::Bilinear;  // 2x2 PCF or nearest texel
-    bool fixup = true;             // ray-march pixels the unwarp cannot interpolate
-    uint32_t fixupMaxSteps = 0;    // 0: every shadow-map texel; else at most this many
-    float shadowDepthBias = 0.0f;  // added to the ray's light-space depth before comparing;
-                                   // in [-1, 1], the depth range (beyond it every ray is
-                                   // lit, or shadowed, all the same)
-    Interpolation interpolation = Interpolation::ShadowedFraction;
-    uint32_t shadowMapSize = 2048;  // the profile's recommendation (the light's own size rules)
-    // cone-march (seed 003), taken from `custom` with every profile:
-    uint32_t coneSamples = 32;  // samples per pixel, 1 to 4096
-    bool coneLimited = true;    // only the ray's part in the cone and range; false: the
-                                // seed's naive baseline over the whole ray
-    bool coneJitter = false;    // per-pixel jittered sample offsets instead of midpoints
-    // false: seed 003's low-end mode, no shadow-map look-ups (shafts without shadows). Only
-    // cone-march honours it; the other methods refuse it (Auto picks cone-march).
-    bool shadowSampling = true;
-    // planes (seed 002). The plane count and target follow the profile (docs/methods.md); the rest
-    // is taken from `custom` with every profile.
-    uint32_t planeCount = 128;  // view-aligned planes across the light's volume, 2 to 4096
-    // Seed 004's dz: the planes set at most this many metres apart along the view axis instead of
-    // planeCount of them (their count then follows the light's depth extent each frame, 2 to 4096,
-    // the spacing shrinking where 4096 do not reach); 0: planeCount. Planes and the beam trees'
-    // sampling planes. With every profile, from `custom`.
-    float planeSpacing = 0.0f;
-    PlaneTarget planeTarget = PlaneTarget::Float16;
-    // The seed's scaling of the count: fewer planes, down to an eighth, as the light's volume
-    // shrinks on screen (its depth extent over its distance from the camera).
-    bool planeScaling = false;
-    // Rgba8Channels only: the luminance of Lin, in Lin's units, that fills the four channels.
-    // 0: from the light and medium (docs/methods.md). Above it the target saturates. 0, or in
-    // [1e-30, 1e30]: the shader scales by 4 / planeRange, which must stay finite and non-zero.
-    float planeRange = 0.0f;
-    // Rgba8Channels: round each plane's share up or down at random in proportion (stochastic
-    // rounding, after the seed's suggestion of interleaved sampling), so that shares under half an
-    // 8-bit step still add up; false is the seed's plain rounding, which loses them (banding).
-    bool planeDither = true;
-    uint32_t planeBlur = 0;  // seed 002's blur at composite: radius in pixels, 0 off
-    // The seed's ambient term beside the inverse square (point and spot lights, 1/m^2): art
-    // direction outside docs/model.md, 0 by default. In [0, limits::kMaxAmbient].
-    float planeAmbient = 0.0f;
-    // Scrolling noise (seed 002): a density multiplier 1 + a (4 n1 n2 - 1), mean 1, from two
-    // samples of a tiling noise texture projected from the light (FrameDescription::noise, or the
-    // plugin's own). Art direction the model does not have; amplitude 0 turns it off. Honoured by
-    // planes only; the other methods refuse a non-zero amplitude.
-    float noiseAmplitude = 0.0f;  // a in [0, 1]
-    float noiseScale = 1.0f;      // a tile's size: metres (directional) or, for point and
-                                  // spot lights, the tangent of the angle it spans; in
-                                  // [limits::kMinNoiseScale, limits::kMaxNoiseScale]
-    // Tiles per second, two layers; any finite value (the scroll is taken modulo one tile in
-    // double precision).
-    std::array<float, 4> noiseVelocity{0.05f, 0.02f, -0.03f, 0.04f};
-    // Seed 004's simplified light model (eqs. 2.12-2.17), taken from `custom` with every profile.
-    // It drops the transmittance from the light to each point and from each point to the camera,
-    // replaces the phase functions by 1/(4 pi) (scattering betaR + betaM) and the light's falloff
-    // 1 / (r^2 + r0^2) by 1 / (a1 r^2 + a0); a spot still lights only its cone within its range,
-    // and shadows still apply. Its integral along a ray is one arctangent (2.17), cheaper than the
-    // model's table, and it is the seed's own model: close to the full one in thin media over short
-    // distances, brighter where the medium is dense or the light far (docs/methods.md measures it).
-    // The composite still attenuates the engine's color by exp(-betaT S); only Lin changes.
-    // Honoured by beam-tree-analytic and analytic (and auto, which picks one of them); the other
-    // methods refuse Simplified. a1 = 1 and a0 = light.radius^2 is seed 001's closed form.
-    LightModel lightModel = LightModel::Full;
-    // a0 in [0, limits::kMaxSimplifiedA0] (m^2): the default light radius 0.05 m, squared.
-    float simplifiedA0 = 0.0025f;
-    float simplifiedA1 = 1.0f;  // a1 in [limits::kMinSimplifiedA1, limits::kMaxSimplifiedA1]
-    // froxels, taken from `custom` with every profile: the grid's columns are froxelTile x
-    // froxelTile pixels (2 to 64; 8 is froxelPresets()'s "froxels-hdrp", 240x135 columns at
-    // 1920x1080, 16 its "froxels-unreal"), cut into froxelSlices depth slices (4 to 512) whose
-    // camera-space z grows geometrically from the near plane to froxelFarDistance (metres; 0: the
-    // medium's maxDistance, or the far plane where it is nearer; else above the near plane and at
-    // most maxDistance). Beyond it the grid's last slice holds: in-scattering further away is lost.
-    uint32_t froxelTile = 8;
-    uint32_t froxelSlices = 64;
-    float froxelFarDistance = 0.0f;
-    // The temporal mode engines run froxels in: each frame samples every froxel at another point
-    // within it (a 16-frame Halton sequence) and blends its in-scattering with the frame before's,
-    // reprojected to where that froxel was: new = lerp(this frame's, history, froxelHistoryWeight)
-    // where the history covers the froxel. The one case where a frame's output depends on earlier
-    // frames; FrameDescription::resetHistory starts it anew (a camera cut). The history is two
-    // grid-sized float32 3D images kept by the plugin. Weight in [0, 0.99].
-    bool froxelTemporal = false;
-    float froxelHistoryWeight = 0.9f;
+// What a method is and takes (a tool lists the methods, their settings and their capabilities from
+// it; the plugin's refusals name methods from it).
+struct MethodInfo {
+    Method method = Method::Auto;
+    std::string name;         // methodName(method)
+    std::string description;  // one line
+    // The lights it takes, and what of them.
+    bool directional = true, spot = true, point = true;
+    bool shadowMap = true;    // casts shadows from a light's shadow map
+    bool cubeShadow = false;  // samples a point light's six-face shadow map
+    bool lightColor = true;   // a light-space color (cookie) with a shadow map
+    bool unshadowedLightColor = true;  // ... and without one
+    // Settings it honours beyond docs/model.md (the others refuse them).
+    bool noise = false;                // Settings::noiseAmplitude > 0
+    bool simplifiedModel = false;      // Settings::lightModel = Simplified
+    bool skipsShadowSampling = false;  // Settings::shadowSampling = false
+    bool readsOccluders = false;       // FrameDescription::occluders
+    // Every light of the frame goes into one chain of its nodes (froxels' grid): it mixes with no
+    // other method in a frame.
+    bool onePerFrame = false;
+    bool exportsVolume = false;  // writes FrameDescription::volumeOut
+    bool keepsHistory = false;   // a frame's output may depend on earlier frames'
+    bool countsSteps = false;    // DebugOptions::countSteps counts its march
+    // Its textures depend on the profile (its budget() is worth comparing across profiles).
+    bool profileSized = false;
+    std::vector<SettingsField> settings;  // its own fields (Settings::<member>), or none
+    std::vector<MethodPreset> presets;    // named settings of it, or none
 };
+// Every method, in the enum's order (Auto is none of them).
+LIGHTSCATTER_API const std::vector<MethodInfo>& methodInfo();
+// Every field of Settings: its own first (the shared ones), then each method's, in methodInfo()'s
+// order.
+LIGHTSCATTER_API const std::vector<SettingsField>& settingsFields();
+// The field of that name (SettingsField::name) or former name; null when there is none.
+LIGHTSCATTER_API const SettingsField* findSettingsField(const std::string& name);
+// A preset's method and settings (MethodInfo::presets): sets its fields in `settings` and returns
+// its method; nothing for a name that is no preset.
+LIGHTSCATTER_API std::optional<Method> applyMethodPreset(const std::string& name,
+                                                        Settings& settings);
 
-// The froxel grid's named presets as engines ship them: "froxels-hdrp" (Unity HDRP: the screen / 8
-// on x and y, 64 slices; the default) and "froxels-unreal" (Unreal's volumetric fog: the screen /
-// 16, 64 slices). applyFroxelPreset() sets a preset's fields in `s` (a name with "-temporal" after
-// it, "froxels-unreal-temporal", sets froxelTemporal too, else clears it); false for an unknown
-// name.
-struct FroxelPreset {
-    const char* name;
-    uint32_t tile, slices;
-};
-LIGHTSCATTER_API std::vector<FroxelPreset> froxelPresets();
-LIGHTSCATTER_API bool applyFroxelPreset(const std::string& name, Settings& s);
+// Checks settings against their fields' rules (settingsFields()), as record() does: throws
+// InvalidInput naming the first field outside its rule, as `at`.name ("custom.epipolar.slices";
+// the name alone when `at` is empty), and the rule.
+LIGHTSCATTER_API void checkSettings(const Settings& settings, const std::string& at = "custom");
 
 // The settings of a profile (Custom returns the defaults).
 LIGHTSCATTER_API Settings profileSettings(Profile profile);
+// The settings a frame with this profile and `custom` runs with: `custom`, with the profile's
+// values of the fields it decides (SettingsField::profileSized) where the profile is not Custom.
+LIGHTSCATTER_API Settings profileSettings(Profile profile, const Settings& custom);
 
 // The camera that rendered `depth`. The projection is the one authority on the depth buffer: the
 // plugin reads the near and far planes from it (the view-space distances it maps to depth 0 and 1),
@@ -498,6 +338,14 @@ struct LightInput {
     // frame's method for this light alone, and is refused, naming lights[i], where it cannot honour
     // the light.
     Method method = Method::Auto;
+    // The light's identity, chosen by the engine (a key of its own that stays with the light, such
+    // as an entity id): the plugin keeps the light's state across frames under it (its point-light
+    // table, its method's data) and orders the frame's lights by it, so that the same lights in
+    // another order render the same frame and compile nothing, and a light leaving the list takes
+    // its state with it and leaves the others'. Absent: the light's position in the list. The
+    // lights of a frame have different ids. A light's state absent from framesInFlight + 60 frames
+    // is released.
+    std::optional<uint64_t> id;
 };
 
 struct FrameDescription {
@@ -545,12 +393,13 @@ struct FrameDescription {
     Method method = Method::Epipolar;
     Profile profile = Profile::Balanced;
     // The engine's settings. With Profile::Custom all of them; with any other profile all but the
-    // profile's sizes (slices, samplesPerSlice, shadowMapSize, planeCount, planeTarget), which the
+    // fields the profile decides (SettingsField::profileSized: epipolar.slices and
+    // samplesPerSlice, shadowMapSize, planes.count and planes.target), which the
     // profile decides. A light's own LightInput::settings replace them for its chain.
     Settings custom;
     DebugOptions debug;
     // A camera cut: the frame ignores what earlier frames left (froxels' temporal history,
-    // Settings::froxelTemporal), renders as a new plugin's first frame would, and starts the
+    // Settings::froxels.temporal), renders as a new plugin's first frame would, and starts the
     // history anew. Only a method that keeps history reads it.
     bool resetHistory = false;
 };
@@ -567,7 +416,7 @@ struct FrameDescription {
 //     within the first slice (u < 1): g = mix((0, 0, 0, 1), g, min(z / z1, 1)), z1 its far end
 //     fogged = color g.a + g.rgb (times FrameDescription::preExposure for a pre-exposed color).
 // That is how the plugin applies the grid to the depth buffer's pixels. nearZ is the camera's near
-// plane; farZ the smallest of Settings::froxelFarDistance (when not 0), medium.maxDistance and a
+// plane; farZ the smallest of Settings::froxels.farDistance (when not 0), medium.maxDistance and a
 // finite far plane. Beyond farZ the last slice holds.
 struct FroxelVolume {
     uint32_t width = 0, height = 0, depth = 0;  // volumeOut's extent: columns, rows, slices
@@ -582,7 +431,7 @@ LIGHTSCATTER_API FroxelVolume froxelVolume(const FrameDescription& frame,
                                            VkExtent2D maxRenderSize = {0, 0});
 
 // Thrown before anything is recorded when a description breaks a rule; the message names the field
-// (as a path from FrameDescription: "custom.slices", "depth.layout"; or from VulkanContext:
+// (as a path from FrameDescription: "custom.epipolar.slices", "depth.layout"; or from VulkanContext:
 // "context.enabledFeatures") and the rule. The engine's images and command buffer are untouched.
 class LIGHTSCATTER_API InvalidInput : public std::invalid_argument {
   public:
@@ -600,7 +449,7 @@ struct PassTime {
     std::string name;
     double milliseconds = 0;
     // The samples an epipolar ray march marched (the first march, and with
-    // Settings::inscatterRefinementThreshold the refinement's, which marches only the samples it
+    // Settings::epipolar.inscatterRefinementThreshold the refinement's, which marches only the samples it
     // adds), counted by an occlusion query; -1 for the other passes.
     int64_t samples = -1;
 };
@@ -665,13 +514,6 @@ struct BudgetEntry {
     uint32_t depth = 1;     // a 3D texture's slices (froxels' grids)
 };
 
-// A figure seed 000 publishes for a profile: its screen, memory (MB) and time (ms) on its GPU.
-struct SeedFigure {
-    uint32_t screenWidth = 0, screenHeight = 0;
-    double megabytes = 0;
-    double milliseconds = 0;
-};
-
 struct Budget {
     Profile profile = Profile::Balanced;
     Settings settings;
@@ -685,40 +527,27 @@ struct Budget {
     std::vector<std::string> lightMethods;  // the method of each light, in the list's order
 };
 
-// A method's memory for a profile, screen and shadow-map size; needs no GPU. Epipolar, planes and
-// beam-tree-analytic (its triangle buffer at its first size, 12288 points). `custom` gives the
-// settings of the Custom profile, and with every profile the ones read from `custom` (epipolar:
-// inscatterRefinementThreshold above 0 adds the refinement's passes; planes: a noise amplitude
-// above 0 adds the plugin's tiling noise). Epipolar budgets a point light with a cube shadow map of
-// six shadowMapSize faces (its per-face lines and trees alias each other), the other methods
-// without.
-LIGHTSCATTER_API Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
-                               uint32_t shadowMapSize, LightType light = LightType::Spot,
-                               const Settings* custom = nullptr, Method method = Method::Epipolar);
-
-// The budget of a frame of several lights, one entry of `lights` per light (a directional or spot
-// light with a shadow map of shadowMapSize, a point light with a cube map of six such faces where
-// the method samples one), all with `method` (one of the methods above).
-// Transients of the lights' chains alias each other (the chains run one after the other); each
-// point or spot light adds its own point-light table.
-LIGHTSCATTER_API Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
-                               uint32_t shadowMapSize, const std::vector<LightType>& lights,
-                               const Settings* custom = nullptr, Method method = Method::Epipolar);
-
-// One light of a budgeted set: its type, whether it has a shadow map (shadowMapSize; a point
-// light's a cube of six faces), and its method. Auto picks as a frame's Auto does for a light that
-// covers the screen in a medium that needs the point-light table: epipolar for a shadowed light
-// (brute force on a screen too small for it), the closed form per pixel without a shadow map.
+// One light of a budgeted frame: its type, whether it has a shadow map (budget()'s shadowMapSize;
+// a point light's a cube of six such faces where its method samples one), and its method. Auto
+// picks as a frame's Auto does for a light that covers the screen in a medium that needs the
+// point-light table: epipolar for a shadowed light (brute force on a screen too small for it), the
+// closed form per pixel without a shadow map.
 struct BudgetLight {
     LightType type = LightType::Spot;
     bool shadowed = true;
     Method method = Method::Auto;
 };
 
-// The memory of a frame of these lights, each with its own method (any method; a light its method
-// refuses is refused naming lights[i]). Budget::lightMethods says the method each light got.
+// The memory of a frame of these lights for a profile, screen and shadow-map size, as a frame with
+// that profile and `custom` (null: the defaults) builds it; needs no GPU. The transients of the
+// lights' chains alias each other (the chains run one after the other); each point or spot light
+// whose method reads one adds its own point-light table. Refused (InvalidInput) where a frame
+// would be: a light its method cannot honour names lights[i]. Budget::lightMethods says the
+// method each light got. Seed 000's figures (Budget::seed) come with a frame of one light.
 LIGHTSCATTER_API Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
-                               uint32_t shadowMapSize, const std::vector<BudgetLight>& lights,
+                               uint32_t shadowMapSize,
+                               const std::vector<BudgetLight>& lights = {BudgetLight{
+                                   LightType::Spot, true, Method::Epipolar}},
                                const Settings* custom = nullptr);
 
 // The device extensions the plugin needs; add them to VkDeviceCreateInfo::ppEnabledExtensionNames.

@@ -1,0 +1,28 @@
+#pragma once
+// The froxel grid's own settings, Settings::froxels (ranges and docs: its field table,
+// lightscatter::settingsFields(), names "froxels.*"), taken from `custom` with every profile. A
+// "slice" here is a depth slice of the grid.
+#include <cstdint>
+
+namespace lightscatter {
+
+struct FroxelsSettings {
+    // The grid's columns are tile x tile pixels (8 is froxelPresets()'s "froxels-hdrp", 240x135
+    // columns at 1920x1080, 16 its "froxels-unreal"), cut into `slices` depth slices whose
+    // camera-space z grows geometrically from the near plane to farDistance (metres; 0: the
+    // medium's maxDistance, or the far plane where it is nearer; else above the near plane and at
+    // most maxDistance). Beyond it the grid's last slice holds: in-scattering further away is lost.
+    uint32_t tile = 8;
+    uint32_t slices = 64;
+    float farDistance = 0.0f;
+    // The temporal mode engines run froxels in: each frame samples every froxel at another point
+    // within it (a 16-frame Halton sequence) and blends its in-scattering with the frame before's,
+    // reprojected to where that froxel was: new = lerp(this frame's, history, historyWeight) where
+    // the history covers the froxel. The one case where a frame's output depends on earlier
+    // frames; FrameDescription::resetHistory starts it anew (a camera cut). The history is two
+    // grid-sized float32 3D images kept by the plugin.
+    bool temporal = false;
+    float historyWeight = 0.9f;
+};
+
+}  // namespace lightscatter
