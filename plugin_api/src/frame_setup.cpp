@@ -1,39 +1,17 @@
 #include "frame_setup.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
-#include <cstdio>
 #include <glm/gtc/type_ptr.hpp>
 #include <limits>
 #include <string>
 
+#include "field_checks.h"
 #include "rendergraph/format_info.h"
 
 namespace lightscatter::detail {
 
 namespace {
-
-[[noreturn]] void fail(const std::string& message) {
-    throw InvalidInput("lightscatter: " + message);
-}
-
-std::string num(double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-}
-
-// A distance for a message: four figures (the planes read from a float32 matrix are not exact).
-std::string metres(double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.4g m", v);
-    return buf;
-}
-
-bool finite(float v) {
-    return std::isfinite(v);
-}
 
 glm::mat4 matrix(const Mat4& m, const std::string& field) {
     for (size_t i = 0; i < 16; ++i)
@@ -41,33 +19,6 @@ glm::mat4 matrix(const Mat4& m, const std::string& field) {
             fail(field + " element " + std::to_string(i) + " is " + num(m[i]) +
                  ": matrices must be finite");
     return glm::make_mat4(m.data());
-}
-
-glm::vec3 vec(const Vec3& v, const std::string& field, bool nonNegative) {
-    for (size_t i = 0; i < 3; ++i) {
-        if (!finite(v[i])) fail(field + " has a non-finite component (" + num(v[i]) + ")");
-        if (nonNegative && v[i] < 0.0f)
-            fail(field + " = " + num(v[i]) + " in a channel: must be >= 0");
-    }
-    return {v[0], v[1], v[2]};
-}
-
-// The bounds of lightscatter.h's limits, in the one message every range check gives.
-std::string rangeText(double lo, double hi) {
-    return "[" + num(lo) + ", " + num(hi) + "]";
-}
-
-float inRange(float v, const std::string& field, double lo, double hi, const std::string& why) {
-    if (!(v >= lo && v <= hi))
-        fail(field + " = " + num(v) + ": must be in " + rangeText(lo, hi) + " (" + why + ")");
-    return v;
-}
-
-glm::vec3 vecInRange(const Vec3& v, const std::string& field, double lo, double hi,
-                     const std::string& why) {
-    for (size_t i = 0; i < 3; ++i)
-        inRange(v[i], field + "[" + std::to_string(i) + "]", lo, hi, why);
-    return {v[0], v[1], v[2]};
 }
 
 // A world -> clip matrix's scale: products with points within limits::kMaxLength must stay far
@@ -475,8 +426,8 @@ glm::mat4 checkCubeFace(const Mat4& given, size_t i, const glm::vec3& light, boo
 namespace {
 
 void checkBox(const OccluderBox& b, const std::string& field) {
-    const glm::vec3 c = vec(b.center, field + ".center", false);
-    const glm::vec3 h = vec(b.halfExtents, field + ".halfExtents", false);
+    const glm::vec3 c = vec(b.center, field + ".center");
+    const glm::vec3 h = vec(b.halfExtents, field + ".halfExtents");
     for (int i = 0; i < 3; ++i) {
         if (!(h[i] > 0.0f))
             fail(field + ".halfExtents[" + std::to_string(i) + "] = " + num(h[i]) +
@@ -490,8 +441,7 @@ void checkBox(const OccluderBox& b, const std::string& field) {
     }
     glm::vec3 a[3];
     for (int i = 0; i < 3; ++i) {
-        a[i] =
-            vec(b.axes[static_cast<size_t>(i)], field + ".axes[" + std::to_string(i) + "]", false);
+        a[i] = vec(b.axes[static_cast<size_t>(i)], field + ".axes[" + std::to_string(i) + "]");
         if (std::fabs(glm::length(a[i]) - 1.0f) > 1e-3f)
             fail(field + ".axes[" + std::to_string(i) + "] has length " + num(glm::length(a[i])) +
                  ": must be unit");
@@ -751,7 +701,7 @@ void setupLight(FrameSetup& s, const LightInput& light, const LightPaths& at, bo
     s.light.kind = l.type;
     s.light.position = vecInRange(l.position, at.light + ".position", -limits::kMaxLength,
                                   limits::kMaxLength, "metres; lightscatter.h, limits::kMaxLength");
-    const glm::vec3 dir = vec(l.direction, at.light + ".direction", false);
+    const glm::vec3 dir = vec(l.direction, at.light + ".direction");
     // A float's square overflows from 1.8e19 and underflows below 1e-19: such lengths are
     // normalised in double (ordinary ones as they always were, to the bit).
     const glm::dvec3 dirD(dir);
