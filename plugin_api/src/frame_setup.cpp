@@ -2,35 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <glm/gtc/type_ptr.hpp>
 #include <limits>
 #include <string>
 
 #include "field_checks.h"
+#include "matrix_checks.h"
 #include "rendergraph/format_info.h"
 
 namespace lightscatter::detail {
 
 namespace {
-
-glm::mat4 matrix(const Mat4& m, const std::string& field) {
-    for (size_t i = 0; i < 16; ++i)
-        if (!finite(m[i]))
-            fail(field + " element " + std::to_string(i) + " is " + num(m[i]) +
-                 ": matrices must be finite");
-    return glm::make_mat4(m.data());
-}
-
-// A world -> clip matrix's scale: products with points within limits::kMaxLength must stay far
-// from FLT_MAX, and its largest element far from the subnormals.
-void checkMatrixScale(const glm::mat4& m, const std::string& field) {
-    float largest = 0.0f;
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r) largest = std::max(largest, std::fabs(m[c][r]));
-    if (!(largest >= 1e-20f && largest <= 1e20f))
-        fail(field + " has its largest element at " + num(largest) +
-             ": must be within [1e-20, 1e+20] (a clip matrix may be scaled freely: scale it)");
-}
 
 const char* layoutName(VkImageLayout l) {
     switch (l) {
@@ -171,30 +152,6 @@ void checkDepthFormat(VkFormat f, const std::string& field) {
         fail(field + ".format " + rg::formatName(f) +
              " is not a depth format (D16_UNORM, X8_D24_UNORM_PACK32, D32_SFLOAT, or one of these "
              "with stencil)");
-}
-
-// How far a matrix is from singular: |det| over the product of its rows' lengths (Hadamard's
-// bound), 1 for orthogonal rows, 0 for a singular matrix; scale-free, so metres or kilometres do
-// not matter.
-double conditioning(const glm::dmat4& d) {
-    double rows = 1.0;
-    for (int r = 0; r < 4; ++r) rows *= glm::length(glm::dvec4(d[0][r], d[1][r], d[2][r], d[3][r]));
-    if (!(rows > 0.0)) return 0.0;
-    return std::fabs(glm::determinant(d)) / rows;
-}
-
-// The same about the point at the centre of the matrix's clip volume (a translation scales no
-// direction): a light or camera a hundred kilometres from the origin has a large last column, not
-// a singular matrix.
-double conditioning(const glm::mat4& m) {
-    const glm::dmat4 d(m);
-    const double det = glm::determinant(d);
-    if (!(std::fabs(det) > 0.0) || !std::isfinite(det)) return 0.0;
-    const glm::dvec4 c = glm::inverse(d) * glm::dvec4(0.0, 0.0, 0.5, 1.0);
-    if (!(std::fabs(c.w) > 0.0) || !std::isfinite(c.w)) return conditioning(d);
-    glm::dmat4 centred(1.0);
-    centred[3] = glm::dvec4(glm::dvec3(c) / c.w, 1.0);
-    return conditioning(d * centred);
 }
 
 // The planes the projection puts at depth 0 and 1, read from its z and w rows on the view axis
