@@ -6,153 +6,13 @@
 #include <string>
 
 #include "field_checks.h"
+#include "image_checks.h"
 #include "matrix_checks.h"
 #include "rendergraph/format_info.h"
 
 namespace lightscatter::detail {
 
 namespace {
-
-const char* layoutName(VkImageLayout l) {
-    switch (l) {
-        case VK_IMAGE_LAYOUT_UNDEFINED:
-            return "UNDEFINED";
-        case VK_IMAGE_LAYOUT_GENERAL:
-            return "GENERAL";
-        case VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL:
-            return "COLOR_ATTACHMENT_OPTIMAL";
-        case VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL:
-            return "DEPTH_STENCIL_ATTACHMENT_OPTIMAL";
-        case VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL:
-            return "DEPTH_STENCIL_READ_ONLY_OPTIMAL";
-        case VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL:
-            return "SHADER_READ_ONLY_OPTIMAL";
-        case VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL:
-            return "TRANSFER_SRC_OPTIMAL";
-        case VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL:
-            return "TRANSFER_DST_OPTIMAL";
-        case VK_IMAGE_LAYOUT_PREINITIALIZED:
-            return "PREINITIALIZED";
-        case VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL:
-            return "DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL";
-        case VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL:
-            return "DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL";
-        case VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL:
-            return "DEPTH_ATTACHMENT_OPTIMAL";
-        case VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL:
-            return "DEPTH_READ_ONLY_OPTIMAL";
-        case VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL:
-            return "STENCIL_ATTACHMENT_OPTIMAL";
-        case VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL:
-            return "STENCIL_READ_ONLY_OPTIMAL";
-        case VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL:
-            return "READ_ONLY_OPTIMAL";
-        case VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL:
-            return "ATTACHMENT_OPTIMAL";
-        case VK_IMAGE_LAYOUT_PRESENT_SRC_KHR:
-            return "PRESENT_SRC_KHR";
-        default:
-            return nullptr;
-    }
-}
-
-// Why an image of this format and usage cannot be in `layout` (Vulkan's rules for the layouts of
-// an image barrier), or empty when it can. `initial`: the layout the frame starts in; `read`: the
-// plugin reads what the image holds.
-std::string layoutProblem(VkImageLayout layout, VkFormat format, VkImageUsageFlags usage,
-                          bool initial, bool read) {
-    const bool depth = rg::hasDepth(format);
-    const bool color = !rg::isDepthStencil(format);
-    const VkImageUsageFlags attachment = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
-    const VkImageUsageFlags readable =
-        VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_INPUT_ATTACHMENT_BIT;
-    auto needs = [&](VkImageUsageFlags any, const char* what) -> std::string {
-        if (usage & any) return {};
-        return std::string("needs an image created with ") + what + " usage";
-    };
-    switch (layout) {
-        case VK_IMAGE_LAYOUT_UNDEFINED:
-            if (!initial) return "is not a layout an image can be left in";
-            if (read) return "discards what the image holds, and the plugin reads it";
-            return {};
-        case VK_IMAGE_LAYOUT_PREINITIALIZED:
-            if (!initial) return "is not a layout an image can be left in";
-            if (!color) return "is for linear color images written by the host";
-            return {};
-        case VK_IMAGE_LAYOUT_GENERAL:
-            return {};
-        case VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL:
-            if (!color) return "is a color layout, and the format is depth/stencil";
-            return needs(VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, "COLOR_ATTACHMENT");
-        case VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL:
-        case VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL:
-        case VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL:
-        case VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL:
-        case VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL:
-            if (!depth) return "is a depth layout, and the format has no depth";
-            return needs(attachment, "DEPTH_STENCIL_ATTACHMENT");
-        case VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL:
-            if (!depth) return "is a depth layout, and the format has no depth";
-            return needs(attachment | readable,
-                         "DEPTH_STENCIL_ATTACHMENT, SAMPLED or INPUT_ATTACHMENT");
-        case VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL:
-        case VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL:
-            return "is a layout of the stencil aspect alone, and the plugin uses color or depth";
-        case VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL:
-            return needs(readable, "SAMPLED or INPUT_ATTACHMENT");
-        case VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL:
-            return needs(VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "TRANSFER_SRC");
-        case VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL:
-            return needs(VK_IMAGE_USAGE_TRANSFER_DST_BIT, "TRANSFER_DST");
-        case VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL:
-            return needs(attachment | readable,
-                         "DEPTH_STENCIL_ATTACHMENT, SAMPLED or INPUT_ATTACHMENT");
-        case VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL:
-            return color ? needs(VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, "COLOR_ATTACHMENT")
-                         : needs(attachment, "DEPTH_STENCIL_ATTACHMENT");
-        case VK_IMAGE_LAYOUT_PRESENT_SRC_KHR:
-            if (!color) return "is a swapchain layout, and the format is depth/stencil";
-            return {};
-        default:
-            return "is not a layout the plugin takes";
-    }
-}
-
-void checkLayout(VkImageLayout layout, const ImageInput& img, const std::string& field,
-                 bool initial, bool read) {
-    const std::string why = layoutProblem(layout, img.format, img.usage, initial, read);
-    if (why.empty()) return;
-    const char* name = layoutName(layout);
-    fail(field + " " +
-         (name ? std::string(name) : "#" + std::to_string(static_cast<int64_t>(layout))) +
-         " cannot hold this " + rg::formatName(img.format) + " image: the layout " + why);
-}
-
-// `volume`: a 3D image (volumeOut); the others are 2D, depth 1.
-void checkImage(const ImageInput& img, const std::string& field, VkImageUsageFlags usage,
-                const char* usageName, bool read = true, bool volume = false) {
-    if (!img.image) fail(field + ".image is VK_NULL_HANDLE");
-    if (img.extent.width == 0 || img.extent.height == 0 || (volume && img.depth == 0))
-        fail(field + ".extent is " + std::to_string(img.extent.width) + "x" +
-             std::to_string(img.extent.height) +
-             (volume ? "x" + std::to_string(img.depth) : std::string()) + ": must not be empty");
-    if (!volume && img.depth != 1)
-        fail(field + ".depth = " + std::to_string(img.depth) +
-             ": must be 1 (a 2D image; only volumeOut is a 3D one)");
-    if ((img.usage & usage) != usage)
-        fail(field + ".usage lacks " + usageName + ", which the plugin needs to read or write it");
-    if (img.finalLayout == VK_IMAGE_LAYOUT_UNDEFINED)
-        fail(field + ".finalLayout is UNDEFINED: say which layout the image must be left in");
-    checkLayout(img.layout, img, field + ".layout", true, read);
-    checkLayout(img.finalLayout, img, field + ".finalLayout", false, read);
-}
-
-void checkDepthFormat(VkFormat f, const std::string& field) {
-    if (!rg::hasDepth(f))
-        fail(field + ".format " + rg::formatName(f) +
-             " is not a depth format (D16_UNORM, X8_D24_UNORM_PACK32, D32_SFLOAT, or one of these "
-             "with stencil)");
-}
 
 // The planes the projection puts at depth 0 and 1, read from its z and w rows on the view axis
 // (the point (0, 0, -t) lands at depth (a (-t) + b) / (c (-t) + d)): distances in front of the
@@ -536,16 +396,6 @@ void checkSettings(const Settings& s, const std::string& at) {
             "m^2, seed 004's falloff I / (a1 r^2 + a0); lightscatter.h, limits::kMaxSimplifiedA0");
 }
 
-namespace {
-
-void oneLayer(const ImageInput* img, const std::string& field) {
-    if (img && img->arrayLayers != 1)
-        fail(field + ".arrayLayers = " + std::to_string(img->arrayLayers) +
-             ": must be 1 (only a point light's shadow map has layers: 6)");
-}
-
-}  // namespace
-
 Settings mergedSettings(Profile profile, const Settings& custom) {
     // Everything is the engine's (custom) but what the profile decides: a field added to Settings
     // is the engine's without a word here.
@@ -604,9 +454,9 @@ FrameSetup setupFrameWide(const FrameDescription& f, bool withImages) {
         !withImages || (f.depth.usage & VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT) != 0;
     s.inscatterOut = f.inscatterOut.has_value();
     if (withImages) {
-        checkImage(f.depth, "depth", VK_IMAGE_USAGE_SAMPLED_BIT, "SAMPLED");
+        checkImage(f.depth, "depth", VK_IMAGE_USAGE_SAMPLED_BIT);
         checkDepthFormat(f.depth.format, "depth");
-        checkImage(f.color, "color", VK_IMAGE_USAGE_STORAGE_BIT, "STORAGE");
+        checkImage(f.color, "color", VK_IMAGE_USAGE_STORAGE_BIT);
         if (f.color.format != VK_FORMAT_R16G16B16A16_SFLOAT &&
             f.color.format != VK_FORMAT_R32G32B32A32_SFLOAT)
             fail("color.format " + rg::formatName(f.color.format) +
@@ -622,10 +472,9 @@ FrameSetup setupFrameWide(const FrameDescription& f, bool withImages) {
         oneLayer(&f.color, "color");
         oneLayer(f.noise ? &*f.noise : nullptr, "noise");
         oneLayer(f.inscatterOut ? &*f.inscatterOut : nullptr, "inscatterOut");
-        if (f.noise) checkImage(*f.noise, "noise", VK_IMAGE_USAGE_SAMPLED_BIT, "SAMPLED");
+        if (f.noise) checkImage(*f.noise, "noise", VK_IMAGE_USAGE_SAMPLED_BIT);
         if (f.inscatterOut) {
-            checkImage(*f.inscatterOut, "inscatterOut", VK_IMAGE_USAGE_STORAGE_BIT, "STORAGE",
-                       false);
+            checkImage(*f.inscatterOut, "inscatterOut", VK_IMAGE_USAGE_STORAGE_BIT, false);
             if (f.inscatterOut->format != VK_FORMAT_R32G32B32A32_SFLOAT)
                 fail("inscatterOut.format " + rg::formatName(f.inscatterOut->format) +
                      ": must be R32G32B32A32_SFLOAT");
@@ -637,8 +486,7 @@ FrameSetup setupFrameWide(const FrameDescription& f, bool withImages) {
             // Its extent is the froxel grid's, checked once the frame's method is known
             // (checkVolumeOut).
             oneLayer(&*f.volumeOut, "volumeOut");
-            checkImage(*f.volumeOut, "volumeOut", VK_IMAGE_USAGE_STORAGE_BIT, "STORAGE", false,
-                       true);
+            checkImage(*f.volumeOut, "volumeOut", VK_IMAGE_USAGE_STORAGE_BIT, false, true);
             if (f.volumeOut->format != VK_FORMAT_R16G16B16A16_SFLOAT)
                 fail("volumeOut.format " + rg::formatName(f.volumeOut->format) +
                      ": must be R16G16B16A16_SFLOAT");
@@ -739,7 +587,7 @@ void setupLight(FrameSetup& s, const LightInput& light, const LightPaths& at, bo
                           : std::string("1 for a ") +
                                 (l.type == LightType::Spot ? "spot" : "directional") +
                                 " light (6 only for a point light's cube map)"));
-            checkImage(map, at.shadowMap, VK_IMAGE_USAGE_SAMPLED_BIT, "SAMPLED");
+            checkImage(map, at.shadowMap, VK_IMAGE_USAGE_SAMPLED_BIT);
             checkDepthFormat(map.format, at.shadowMap);
             if (map.extent.width != l.shadowMapSize || map.extent.height != l.shadowMapSize)
                 fail(at.shadowMap + ".extent " + std::to_string(map.extent.width) + "x" +
@@ -747,7 +595,7 @@ void setupLight(FrameSetup& s, const LightInput& light, const LightPaths& at, bo
                      ".shadowMapSize " + std::to_string(l.shadowMapSize));
         }
         if (light.lightColor)
-            checkImage(*light.lightColor, at.lightColor, VK_IMAGE_USAGE_SAMPLED_BIT, "SAMPLED");
+            checkImage(*light.lightColor, at.lightColor, VK_IMAGE_USAGE_SAMPLED_BIT);
     }
     // Without a shadow map the color is marched at its own resolution (a piece per texel row or
     // column crossed).
