@@ -7,7 +7,6 @@
 #include <vector>
 
 #include <lightscatter/lightscatter.h>
-#include "beam_tree/occluders.h"
 #include "shared/light_setup.h"
 #include "shared/scattering_params.h"
 #include "shared/view_reach.h"
@@ -70,9 +69,6 @@ Settings mergedSettings(Profile profile, const Settings& custom);
 // planeTarget); Custom leaves it as it is.
 Settings withProfileSizes(Settings s, Profile profile);
 void checkSettings(const Settings& s, const std::string& at = "custom");
-void checkOccluders(const std::vector<Occluder>& occluders);
-// The occluders checked (at most kMaxOccluders, each box valid) and in double, for the beam tree.
-std::vector<ls::beam::Occluder> beamOccluders(const std::vector<Occluder>& occluders);
 
 // Throws InvalidInput naming every feature the plugin needs that `enabled` (the chain an engine
 // created its device with) does not turn on.

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "method_units.h"
+#include "occluder_input.h"
 #include "shared/refusals.h"
 
 namespace lightscatter::detail {
