@@ -12,6 +12,7 @@
 #include "registry/method_registry.h"
 #include "rendergraph/compile.h"
 #include "rendergraph/format_info.h"
+#include "settings_checks.h"
 #include "shared/point_table.h"
 
 namespace lightscatter {

@@ -38,10 +38,6 @@ std::vector<LightInput> lightInputs(const FrameDescription& frame);
 // A refusal of lights[i] of the list, saying which light it is about before naming the field.
 InvalidInput aboutLight(const InvalidInput& e, size_t i);
 
-// The settings' part the methods read, in their terms, into `s` (a light with a shadow map of
-// `shadowMapSize`, 0 without one).
-void applySettings(ls::LightSetup& s, const Settings& settings, uint32_t shadowMapSize);
-
 // Checks everything; `withImages` false skips the image handles (the budget has none).
 FrameSetup setupFrame(const FrameDescription& frame, bool withImages = true);
 
@@ -61,14 +57,6 @@ struct LightPaths {
 FrameSetup setupFrameWide(const FrameDescription& frame, bool withImages = true);
 void setupLight(FrameSetup& setup, const LightInput& light, const LightPaths& paths,
                 bool withImages = true);
-
-// The settings a frame runs with: `custom`, with the profile's sizes where the profile is not
-// Custom (Settings' comments say which fields those are).
-Settings mergedSettings(Profile profile, const Settings& custom);
-// `s` with the profile's sizes (its slices, samplesPerSlice, shadowMapSize, planeCount and
-// planeTarget); Custom leaves it as it is.
-Settings withProfileSizes(Settings s, Profile profile);
-void checkSettings(const Settings& s, const std::string& at = "custom");
 
 // Throws InvalidInput naming every feature the plugin needs that `enabled` (the chain an engine
 // created its device with) does not turn on.

@@ -1,8 +1,8 @@
 // Method and profile names (the command line's contract) and the seed's quality profiles.
 #include <lightscatter/lightscatter.h>
-#include "frame_setup.h"
 #include "method_units.h"
 #include "registry/method_registry.h"
+#include "settings_checks.h"
 
 namespace lightscatter {
 namespace {

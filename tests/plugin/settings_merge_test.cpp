@@ -7,7 +7,7 @@
 #include <type_traits>
 
 #include <lightscatter/lightscatter.h>
-#include "frame_setup.h"
+#include "settings_checks.h"
 
 using lightscatter::Profile;
 using lightscatter::Settings;
