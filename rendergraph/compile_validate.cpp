@@ -7,6 +7,7 @@
 
 #include "compile.h"
 #include "format_info.h"
+#include "layout_rules.h"
 
 namespace rg::detail {
 namespace {
@@ -113,7 +114,11 @@ void checkDescriptions(const RenderGraph& graph) {
             throw GraphError(
                 Rule::BadDescription,
                 "image " + name + " is 3D: it takes one layer, one mip level and an absolute size");
-        if (r.imported && r.importedImage.finalLayout == VK_IMAGE_LAYOUT_UNDEFINED)
+        // Of the layout rules, the one the final barrier cannot do without: an import's layouts
+        // are otherwise taken as its owner gives them.
+        if (r.imported && layoutVerdict(r.importedImage.finalLayout, r.image.format,
+                                        r.importedImage.usage, LayoutEnd::Final, false)
+                                  .fault == LayoutFault::NoFinalLayout)
             throw GraphError(Rule::ImportWithoutFinalLayout,
                              "imported image " + name +
                                  " does not say the layout it must be left in (finalLayout is "

@@ -5,15 +5,15 @@
 #include <cstdio>
 #include <filesystem>
 #include <limits>
-#include <optional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
 #include "cli_args.h"
-#include "settings_fields.h"
 #include "scene/input_file.h"
 #include "scene/json_input.h"
+#include "settings_fields.h"
 
 namespace host::bench {
 namespace {
@@ -379,8 +379,8 @@ class ConfigReader {
             if (!o.is_object()) fail(at + " must be an object");
             // The run's own keys, then settings fields (a method's nested under its member, or
             // named in full, or by a former name).
-            static const char* const kKeys[] = {"label", "method", "from", "sizes",
-                                                "shadowMapSize", "family"};
+            static const char* const kKeys[] = {"label", "method",        "from",
+                                                "sizes", "shadowMapSize", "family"};
             struct Given {
                 const SettingField* field;
                 std::string key;
@@ -402,9 +402,8 @@ class ConfigReader {
             };
             for (const auto& item : o.items()) {
                 const std::string& key = item.key();
-                if (std::find_if(std::begin(kKeys), std::end(kKeys), [&key](const char* k) {
-                        return key == k;
-                    }) != std::end(kKeys))
+                if (std::find_if(std::begin(kKeys), std::end(kKeys),
+                                 [&key](const char* k) { return key == k; }) != std::end(kKeys))
                     continue;
                 if (item.value().is_object())
                     for (const auto& inner : item.value().items())
@@ -498,9 +497,7 @@ class ConfigReader {
                 add(c, r);
             }
         }
-        auto values = [&](const std::string& key) {
-            return list(sweeps[key], "sweeps." + key);
-        };
+        auto values = [&](const std::string& key) { return list(sweeps[key], "sweeps." + key); };
         // One-parameter sweeps of a settings field from one profile (balanced unless
         // sweepProfile says otherwise): a run per value, of the method whose field it is (the
         // configuration's first method for Settings' shared fields), labelled KEY=VALUE under
@@ -544,8 +541,8 @@ class ConfigReader {
         sweep("size", [&](BenchRun& r, const json& v, const MethodName& m) {
             r.size = size(v, "sweeps.size[]");
             r.label = m.name + " size=" + v.get<std::string>();
-            r.measureError = c.measureError && r.size.width == c.size.width &&
-                             r.size.height == c.size.height;
+            r.measureError =
+                c.measureError && r.size.width == c.size.width && r.size.height == c.size.height;
         });
     }
 

@@ -25,10 +25,10 @@
 #include "bench/metrics.h"
 #include "bench/reference_cache.h"
 #include "commands.h"
-#include "settings_fields.h"
 #include "engine_renderer.h"
 #include "image_io.h"
 #include "output_set.h"
+#include "settings_fields.h"
 #include "temp_files.h"
 
 namespace host {
@@ -451,8 +451,8 @@ int runBench(Args& args) {
                 lightscatter::methodName(run.method), row["profile"].get<std::string>().c_str(),
                 run.size.width, run.size.height, used.epipolar.slices,
                 used.epipolar.samplesPerSlice, used.epipolar.initialSampleStep,
-                used.epipolar.minMaxTrees ? 1 : 0, sceneForRun.light.shadowMapSize,
-                frames, t.median, t.p10, t.p90, t.min, t.max, errorColumns.c_str(), nonFinite,
+                used.epipolar.minMaxTrees ? 1 : 0, sceneForRun.light.shadowMapSize, frames,
+                t.median, t.p10, t.p90, t.min, t.max, errorColumns.c_str(), nonFinite,
                 device.name().c_str(), device.isCpu() ? 1 : 0, cpu.median,
                 renderer->occluderCount(), scene.lightCount(), motionColumns.c_str());
             csv << line << "\n" << std::flush;

@@ -154,7 +154,8 @@ int runBudget(Args& args) {
     for (auto& l : set) {
         if (!lightList.perLight) {
             l.method = method;
-            l.shadowed = l.type == lightscatter::LightType::Point ? info.cubeShadow : info.shadowMap;
+            l.shadowed =
+                l.type == lightscatter::LightType::Point ? info.cubeShadow : info.shadowMap;
         } else if (l.method == lightscatter::Method::Auto && !methodName.empty()) {
             l.method = method;
         }
@@ -201,8 +202,7 @@ int runBudget(Args& args) {
             continue;
         }
         std::string what;
-        for (const SettingField* f : shownFields(method))
-        {
+        for (const SettingField* f : shownFields(method)) {
             const nlohmann::json v = fieldJson(s, *f);
             what += (what.empty() ? "" : ", ") + f->name + " " +
                     (v.is_string() ? v.get<std::string>() : v.dump());

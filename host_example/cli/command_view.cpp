@@ -571,7 +571,8 @@ int runView(Args& args) {
                 status.report = lastReport.frame ? &lastReport : nullptr;
                 status.cpuDevice = device.isCpu();
                 status.deviceBytes = rg::deviceMemoryInUse();
-                if (options.custom.noiseAmplitude > 0.0f && !honours(options.method, &lightscatter::MethodInfo::noise))
+                if (options.custom.noiseAmplitude > 0.0f &&
+                    !honours(options.method, &lightscatter::MethodInfo::noise))
                     status.note = "the noise: planes and auto only (this method runs without)";
                 if (options.custom.lightModel == lightscatter::LightModel::Simplified &&
                     !honours(options.method, &lightscatter::MethodInfo::simplifiedModel))
@@ -599,7 +600,8 @@ int runView(Args& args) {
         // Only the planes method samples the noise (auto then picks it), and only some methods
         // seed 004's simplified model: the others run without them.
         auto runnable = [&](RenderOptions r) {
-            if (!honours(r.method, &lightscatter::MethodInfo::noise)) r.custom.noiseAmplitude = 0.0f;
+            if (!honours(r.method, &lightscatter::MethodInfo::noise))
+                r.custom.noiseAmplitude = 0.0f;
             if (!honours(r.method, &lightscatter::MethodInfo::simplifiedModel))
                 r.custom.lightModel = lightscatter::LightModel::Full;
             return r;

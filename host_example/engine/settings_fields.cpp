@@ -72,8 +72,9 @@ void setFieldFromJson(lightscatter::Settings& s, const SettingField& f, const nl
         case Kind::Vector4: {
             if (!v.is_array() || v.size() != 4) refuse(key, v, "an array of 4 numbers");
             for (int c = 0; c < 4; ++c)
-                setFieldValue(s, f, number(v[static_cast<size_t>(c)], key + "[" + std::to_string(c) + "]"),
-                              c);
+                setFieldValue(
+                    s, f, number(v[static_cast<size_t>(c)], key + "[" + std::to_string(c) + "]"),
+                    c);
             return;
         }
     }
@@ -82,9 +83,7 @@ void setFieldFromJson(lightscatter::Settings& s, const SettingField& f, const nl
 std::string knownFieldNames() {
     std::string s;
     for (const SettingField& f : settingFields()) s += (s.empty() ? "" : ", ") + f.name;
-    for (const SettingField& f : settingFields())
-        for (const std::string& former : f.formerNames) s += ", " + former;
-    return s;
+    return s + "; or a field's flat name before 0.4";
 }
 
 const std::vector<SettingField>& settingFields() {

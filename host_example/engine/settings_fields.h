@@ -36,7 +36,7 @@ void setFieldValue(lightscatter::Settings& s, const SettingField& f, double valu
 void setFieldFromJson(lightscatter::Settings& s, const SettingField& f, const nlohmann::json& v,
                       const std::string& key);
 // The names a settings file, a benchmark's configuration or a panel script may give fields: each
-// field's, then its former names.
+// field's (and, said in a word, their former names).
 std::string knownFieldNames();
 
 // The field as a settings file writes it (a number, true or false, a choice's name, an array).

@@ -42,7 +42,7 @@ class SettingsReader {
             for (const auto& [other, written] : given)
                 if (other == f)
                     fail(written + " and " + key + " are one field (" + f->name +
-                         "; the other a former name or a nested one): give it once");
+                         "): give it once");
             given.emplace_back(f, key);
             try {
                 setFieldFromJson(s, *f, v, key);
@@ -77,9 +77,9 @@ class SettingsReader {
 
     // The plugin's own rules (multiples, powers of two, ranges), reported in this file's terms:
     // under the name the file gave the field.
-    void checkWithThePlugin(const lightscatter::Settings& s,
-                            const std::vector<std::pair<const SettingField*, std::string>>& given)
-        const {
+    void checkWithThePlugin(
+        const lightscatter::Settings& s,
+        const std::vector<std::pair<const SettingField*, std::string>>& given) const {
         try {
             lightscatter::checkSettings(s, "");
         } catch (const lightscatter::InvalidInput& e) {

@@ -20,7 +20,8 @@ using lightscatter::Profile;
 // Auto, then every method (methodInfo()).
 std::vector<Method> panelMethods() {
     std::vector<Method> m{Method::Auto};
-    for (const lightscatter::MethodInfo& info : lightscatter::methodInfo()) m.push_back(info.method);
+    for (const lightscatter::MethodInfo& info : lightscatter::methodInfo())
+        m.push_back(info.method);
     return m;
 }
 constexpr std::array kProfiles{Profile::HighQuality,     Profile::Balanced,
@@ -186,10 +187,9 @@ void SettingsPanel::drawField(RenderOptions& o, const lightscatter::Settings& sh
     switch (f.kind) {
         case SettingField::Kind::Whole: {
             int i = static_cast<int>(std::min(v, 2147483647.0));
-            if (ImGui::SliderInt(label.c_str(), &i, static_cast<int>(f.sliderMin),
-                                 static_cast<int>(f.sliderMax), "%d",
-                                 f.sliderMax > 64 ? ImGuiSliderFlags_Logarithmic
-                                                  : ImGuiSliderFlags_None))
+            if (ImGui::SliderInt(
+                    label.c_str(), &i, static_cast<int>(f.sliderMin), static_cast<int>(f.sliderMax),
+                    "%d", f.sliderMax > 64 ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None))
                 setField(o, f, i);
             break;
         }

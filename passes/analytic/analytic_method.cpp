@@ -19,8 +19,10 @@ MethodCaps AnalyticMethod::caps() const {
     MethodCaps c;
     c.directional = false;
     c.shadowMap = false;
-    c.unshadowedLightColor = false;  // one closed form over the whole ray
-    c.simplifiedModel = true;        // seed 004's model is seed 001's form
+    // One closed form over the whole ray cannot vary a light color along it (and without a shadow
+    // map it never has one with a shadow map).
+    c.lightColor = c.unshadowedLightColor = false;
+    c.simplifiedModel = true;  // seed 004's model is seed 001's form
     return c;
 }
 

@@ -7,9 +7,7 @@ namespace ls {
 std::vector<SettingsField> ConeMarchMethod::settingsFields() const {
     using C = lightscatter::ConeMarchSettings;
     FieldsOf<C> f("coneMarch", &Settings::coneMarch);
-    f.whole("samples", &C::samples, 1, 4096, "samples per pixel")
-        .former({"coneSamples"})
-        .doc("samples per pixel");
+    f.whole("samples", &C::samples, 1, 4096, "").former({"coneSamples"}).doc("samples per pixel");
     f.boolean("limited", &C::limited)
         .former({"coneLimited"})
         .doc("only the ray's part in the cone and range (false: the whole ray)");

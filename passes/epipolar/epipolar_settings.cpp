@@ -8,19 +8,18 @@ std::vector<SettingsField> EpipolarMethod::settingsFields() const {
     using lightscatter::EpipolarSettings;
     using E = EpipolarSettings;
     FieldsOf<E> f("epipolar", &Settings::epipolar);
-    f.whole("slices", &E::slices, 4, 16384, "a quarter of the lines per screen edge")
+    f.whole("slices", &E::slices, 4, 16384, "a quarter per screen edge")
         .multipleOf(4)
         .slider(4, 4096)
         .profiles({2048, 1024, 1024, 1024, 512, 512})
         .former({"slices"})
         .doc("epipolar lines, a multiple of 4");
-    f.whole("samplesPerSlice", &E::samplesPerSlice, 2, 16384, "samples along each line")
+    f.whole("samplesPerSlice", &E::samplesPerSlice, 2, 16384, "")
         .slider(2, 4096)
         .profiles({1024, 1024, 512, 1024, 512, 256})
         .former({"samplesPerSlice"})
         .doc("samples along each line");
-    f.whole("initialSampleStep", &E::initialSampleStep, 1, 128,
-            "the first ray-marching samples' spacing")
+    f.whole("initialSampleStep", &E::initialSampleStep, 1, 128, "")
         .powerOfTwo()
         .former({"initialSampleStep"})
         .doc("ray-marching samples every N samples (a power of two)");

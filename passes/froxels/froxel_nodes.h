@@ -4,10 +4,10 @@
 // columns, and one pass that fetches the integrated grid at each pixel's depth and composites.
 #include <vector>
 
+#include "lightscatter/methods/froxels.h"
 #include "shared/composite_target.h"
 #include "shared/frame_context.h"
 #include "shared/frame_history.h"
-#include "lightscatter/methods/froxels.h"
 #include "shared/scattering_params.h"
 
 namespace ls {

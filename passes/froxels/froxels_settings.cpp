@@ -10,11 +10,8 @@ std::vector<SettingsField> FroxelsMethod::settingsFields() const {
     namespace L = lightscatter::limits;
     FieldsOf<F> f("froxels", &Settings::froxels);
     f.whole("tile", &F::tile, 2, 64, "pixels").former({"froxelTile"}).doc("a column's pixels");
-    f.whole("slices", &F::slices, 4, 512, "depth slices")
-        .former({"froxelSlices"})
-        .doc("depth slices");
-    f.number("farDistance", &F::farDistance, 1e-6, L::kMaxLength,
-             "or 0: the medium's maxDistance")
+    f.whole("slices", &F::slices, 4, 512, "").former({"froxelSlices"}).doc("depth slices");
+    f.number("farDistance", &F::farDistance, 1e-6, L::kMaxLength, "or 0: the medium's maxDistance")
         .zeroIsOff()
         .slider(0, 1000)
         .former({"froxelFarDistance"})

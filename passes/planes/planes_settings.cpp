@@ -9,7 +9,7 @@ std::vector<SettingsField> PlanesMethod::settingsFields() const {
     using P = lightscatter::PlanesSettings;
     namespace L = lightscatter::limits;
     FieldsOf<P> f("planes", &Settings::planes);
-    f.whole("count", &P::count, 2, 4096, "view-aligned planes across the light's volume")
+    f.whole("count", &P::count, 2, 4096, "")
         .profiles({256, 128, 100, 128, 64, 48})
         .former({"planeCount", "slicePlanes"})
         .doc("planes across the light's volume");

@@ -23,9 +23,9 @@ namespace ls {
 // What a method takes (the plugin's refusals and MethodInfo are made from it).
 struct MethodCaps {
     bool directional = true, spot = true, point = true;
-    bool shadowMap = true;     // casts shadows from a light's shadow map
-    bool cubeShadow = false;   // samples a point light's six-face shadow map
-    bool lightColor = true;    // a light color (cookie) with a shadow map
+    bool shadowMap = true;             // casts shadows from a light's shadow map
+    bool cubeShadow = false;           // samples a point light's six-face shadow map
+    bool lightColor = true;            // a light color (cookie) with a shadow map
     bool unshadowedLightColor = true;  // ... and without one
     // Settings beyond docs/model.md it honours (Settings' comments).
     bool noise = false;
@@ -99,7 +99,7 @@ struct ChainOutputs {
 class MethodUnit {
   public:
     virtual ~MethodUnit() = default;
-    virtual const char* name() const = 0;  // the CLI's and the report's name
+    virtual const char* name() const = 0;         // the CLI's and the report's name
     virtual std::string description() const = 0;  // one line
     virtual MethodCaps caps() const = 0;
     // Its own settings' field table (Settings::<its member>), or none.
@@ -136,8 +136,8 @@ class MethodUnit {
     virtual ChainOutputs addChain(rg::RenderGraph& graph, const ChainInputs& in,
                                   const ChainConfig& config,
                                   const CompositeTarget& target) const = 0;
-    // A one-per-frame method's chain (caps().onePerFrame), in place of one addChain per light: every
-    // light reaching the view, in the frame's order (the inputs and configurations of each).
+    // A one-per-frame method's chain (caps().onePerFrame), in place of one addChain per light:
+    // every light reaching the view, in the frame's order (the inputs and configurations of each).
     // `target` is never add-only: the chain is the frame's only one.
     virtual ChainOutputs addFrameChain(rg::RenderGraph& graph, const std::vector<ChainInputs>& in,
                                        const std::vector<ChainConfig>& configs,

@@ -5,8 +5,8 @@
 // written once, beside its accessors.
 #include <cmath>
 #include <memory>
-#include <type_traits>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -76,7 +76,8 @@ class FieldRow {
 template <class Group>
 class FieldsOf {
   public:
-    FieldsOf(std::string group, Group Settings::*member) : group_(std::move(group)), member_(member) {}
+    FieldsOf(std::string group, Group Settings::*member)
+        : group_(std::move(group)), member_(member) {}
     FieldsOf() = default;
 
     FieldRow whole(const char* name, uint32_t Group::*m, double lo, double hi, const char* rule) {
@@ -85,7 +86,8 @@ class FieldsOf {
             return static_cast<double>(of(g, s).*m);
         };
         f.set = [g = member_, m](Settings& s, double v, int) {
-            of(g, s).*m = static_cast<uint32_t>(std::fmin(std::fmax(std::round(v), 0.0), 4294967295.0));
+            of(g, s).*m =
+                static_cast<uint32_t>(std::fmin(std::fmax(std::round(v), 0.0), 4294967295.0));
         };
         return FieldRow(f);
     }
@@ -161,7 +163,8 @@ class FieldsOf {
 
     std::string group_;
     Member member_ = nullptr;
-    std::shared_ptr<std::vector<SettingsField>> rows_ = std::make_shared<std::vector<SettingsField>>();
+    std::shared_ptr<std::vector<SettingsField>> rows_ =
+        std::make_shared<std::vector<SettingsField>>();
 };
 
 }  // namespace ls

@@ -9,8 +9,8 @@ std::vector<SettingsField> sharedSettingsFields() {
     using lightscatter::LightModel;
     using lightscatter::ShadowFilter;
     FieldsOf<Settings> f;
-    f.whole("shadowMapSize", &Settings::shadowMapSize, 1, 16384,
-            "texels on a side; a light's own shadowMapSize decides its map")
+    f.whole("shadowMapSize", &Settings::shadowMapSize, 1, 16384, "")
+        .zeroIsOff()
         .profiles({4096, 2048, 1024, 2048, 1024, 512})
         .doc("the profile's recommended shadow map");
     f.choice("shadowFilter", &Settings::shadowFilter, {"nearest", "bilinear"})
@@ -21,7 +21,7 @@ std::vector<SettingsField> sharedSettingsFields() {
         .doc("added to the ray's light-space depth");
     f.boolean("shadowSampling", &Settings::shadowSampling)
         .doc("false: seed 003's mode without shadow look-ups");
-    f.number("noiseAmplitude", &Settings::noiseAmplitude, 0, 1, "a density multiplier's swing")
+    f.number("noiseAmplitude", &Settings::noiseAmplitude, 0, 1, "")
         .doc("seed 002's scrolling noise");
     f.number("noiseScale", &Settings::noiseScale, L::kMinNoiseScale, L::kMaxNoiseScale,
              "a tile's size; lightscatter.h, limits::kMinNoiseScale")

@@ -7,7 +7,6 @@
 #include <vector>
 
 #include <lightscatter/lightscatter.h>
-#include "beam_tree/occluders.h"
 #include "shared/light_setup.h"
 #include "shared/scattering_params.h"
 #include "shared/view_reach.h"
@@ -41,22 +40,9 @@ ls::LightSetup setupFrame(const FrameDescription& frame, bool withImages = true)
 // single light's fields, checks the frame's part once, then each light (errors name
 // lights[i].field). Returns each light's setup, in order.
 std::vector<ls::LightSetup> setupLights(const FrameDescription& frame, bool withImages = true);
-// How the engine named a light's fields: `light`, `shadowMap`, `lightColor` and `custom` for a
-// frame that gave `light`, lights[i].light ... lights[i].settings (or `custom` without own
-// settings) for the list.
-struct LightPaths {
-    std::string light = "light", shadowMap = "shadowMap", lightColor = "lightColor",
-                settings = "custom";
-};
 // The frame's part (settings, time, camera, medium, the engine's depth, color, noise and output),
-// and a light's part added to it (the light, its images and its own settings), each checked.
+// checked; setupLight (light_checks.h) adds a light's part to it.
 ls::LightSetup setupFrameWide(const FrameDescription& frame, bool withImages = true);
-void setupLight(ls::LightSetup& setup, const LightInput& light, const LightPaths& paths,
-                bool withImages = true);
-
-void checkOccluders(const std::vector<Occluder>& occluders);
-// The occluders checked (at most kMaxOccluders, each box valid) and in double, for the beam tree.
-std::vector<ls::beam::Occluder> beamOccluders(const std::vector<Occluder>& occluders);
 
 // Throws InvalidInput naming every feature the plugin needs that `enabled` (the chain an engine
 // created its device with) does not turn on.

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "method_units.h"
+#include "occluder_input.h"
 #include "registry/method_registry.h"
 #include "shared/refusals.h"
 
@@ -31,20 +32,27 @@ MethodChoice closedForm(std::string reason) {
     return pick(Method::Analytic, std::move(reason));
 }
 
-// The names of the methods whose caps pass `which`, in the registry's order: "a, b or c".
+// The names of the methods whose caps pass `which`, in the registry's order, and with `orAuto`
+// auto after them: "a, b or c".
 template <typename F>
-std::string methodsWhere(F which, const char* last = "or") {
+std::string methodsWhere(F which, const char* last = "or", bool orAuto = false) {
     std::vector<std::string> names;
     for (const ls::MethodUnit* m : ls::methodRegistry())
         if (which(m->caps())) names.emplace_back(m->name());
+    if (orAuto) names.emplace_back("auto");
     std::string s;
     for (size_t i = 0; i < names.size(); ++i)
-        s += (i == 0 ? "" : i + 1 == names.size() ? std::string(" ") + last + " " : ", ") + names[i];
+        s += (i == 0                  ? ""
+              : i + 1 == names.size() ? std::string(" ") + last + " "
+                                      : ", ") +
+             names[i];
     return s;
 }
 
 const char* kindName(ls::LightType t) {
-    return t == ls::LightType::Directional ? "directional" : t == ls::LightType::Spot ? "spot" : "point";
+    return t == ls::LightType::Directional ? "directional"
+           : t == ls::LightType::Spot      ? "spot"
+                                           : "point";
 }
 
 bool takesKind(const ls::MethodCaps& c, ls::LightType t) {
@@ -64,28 +72,29 @@ std::string capsRefusal(const ls::MethodUnit& unit, const ls::LightSetup& s) {
     const ls::LightType kind = s.light.kind;
     if (!takesKind(c, kind)) {
         std::string kinds;
-        for (ls::LightType t : {ls::LightType::Directional, ls::LightType::Spot, ls::LightType::Point})
+        for (ls::LightType t :
+             {ls::LightType::Directional, ls::LightType::Spot, ls::LightType::Point})
             if (takesKind(c, t)) kinds += std::string(kinds.empty() ? "" : " and ") + kindName(t);
-        return method + " takes " + kinds + " lights only; this frame's light is " + kindName(kind) +
-               " (use auto, " + methodsWhere([&](const ls::MethodCaps& o) { return takesKind(o, kind); }) +
-               ")";
+        return method + " takes " + kinds + " lights only; this frame's light is " +
+               kindName(kind) + " (use auto, " +
+               methodsWhere([&](const ls::MethodCaps& o) { return takesKind(o, kind); }) + ")";
     }
     if (ls::cubeShadowed(s) && !c.cubeShadow)
         return method + " cannot sample a point light's cube shadow map (" + s.lightPath +
                ".shadowMapSize > 0 with a point light): use " +
-               methodsWhere([](const ls::MethodCaps& o) { return o.cubeShadow; }, "") + "or auto";
+               methodsWhere([](const ls::MethodCaps& o) { return o.cubeShadow; }, "or", true);
     if (s.shadowed && !c.shadowMap)
         return method + " cannot cast shadows; this frame has a shadow map (use auto, " +
                methodsWhere([](const ls::MethodCaps& o) { return o.shadowMap; }) + ")";
-    if (s.lightColor && !c.lightColor)
+    if (s.lightColor && s.shadowed && !c.lightColor)
         return method + " cannot vary the light's color along the ray: " + s.lightPath +
                "Color needs " +
-               methodsWhere([](const ls::MethodCaps& o) { return o.lightColor; }, "") + "or auto";
+               methodsWhere([](const ls::MethodCaps& o) { return o.lightColor; }, "or", true);
     if (s.lightColor && !s.shadowed && !c.unshadowedLightColor)
         return method + " cannot vary the light's color along the ray: " + s.lightPath +
                "Color without a shadow map needs " +
-               methodsWhere([](const ls::MethodCaps& o) { return o.unshadowedLightColor; }, "") +
-               "or auto";
+               methodsWhere([](const ls::MethodCaps& o) { return o.unshadowedLightColor; }, "or",
+                            true);
     if (ls::skipsShadows(s) && !c.skipsShadowSampling) {
         const std::string honour =
             methodsWhere([](const ls::MethodCaps& o) { return o.skipsShadowSampling; }, "and");
@@ -191,8 +200,7 @@ MethodChoice autoChoice(const ls::LightSetup& s, bool lightReachesView) {
     const bool pointLike = ls::pointLike(s);
     if (!lightReachesView)
         return sampled("the light reaches no view ray (or nothing scatters): extinction only");
-    if (const std::vector<Extra> asked = extrasAsked(s); !asked.empty())
-        return honouring(s, asked);
+    if (const std::vector<Extra> asked = extrasAsked(s); !asked.empty()) return honouring(s, asked);
     if (ls::cubeShadowed(s))
         return epipolarOrBruteForce(
             s, "shadowed point light (a cube shadow map, marched face by face)");

@@ -287,7 +287,8 @@ TEST(BenchConfigMotion, EachBadValueIsOneLineNamingTheField) {
 TEST(BenchConfigMotion, TheRefinementThresholdSweepFollowsThePluginsRule) {
     EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"],
                               "sweeps": {"refinementThreshold": [0.01, 0]}})"),
-              "sweeps.epipolar.refinementThreshold (run 'refinementThreshold=0'): refinementThreshold = 0: "
+              "sweeps.epipolar.refinementThreshold (run 'refinementThreshold=0'): "
+              "refinementThreshold = 0: "
               "must be > 0");
     EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"],
                               "sweeps": {"refinementThreshold": ["small"]}})"),

@@ -75,13 +75,13 @@ TEST(CliOptions, SettingsFileMakesTheCustomProfile) {
     const auto budget = nlohmann::json::parse(b.out);
     ASSERT_EQ(budget.size(), 1u);
     EXPECT_EQ(budget[0]["profile"], "custom");
-    EXPECT_EQ(budget[0]["slices"], 256);
-    EXPECT_EQ(budget[0]["samplesPerSlice"], 128);
+    EXPECT_EQ(budget[0]["settings"]["epipolar.slices"], 256);
+    EXPECT_EQ(budget[0]["settings"]["epipolar.samplesPerSlice"], 128);
     EXPECT_EQ(budget[0]["shadowMapSize"], 1024);
 
     writeFile("bad.json", R"({"slices": 3})");
     expectFailure(run("graph " + scene("atrium") + " --json --settings bad.json"),
-                  "bad.json: slices = 3: must be a positive multiple of 4");
+                  "bad.json: slices = 3: must be a multiple of 4 in [4, 16384]");
     writeFile("typo.json", R"({"slice": 256})");
     expectFailure(run("view " + scene("atrium") + " --settings typo.json"),
                   "typo.json: unknown key 'slice'");

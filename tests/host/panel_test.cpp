@@ -24,42 +24,42 @@ const char* kXvfb = "xvfb-run -a -s '-screen 0 640x480x24'";
 // to cone-march.
 const std::map<std::string, json>& testValues() {
     static const std::map<std::string, json> v = {
-        {"slices", 256},
-        {"samplesPerSlice", 128},
-        {"initialSampleStep", 8},
-        {"refinementThreshold", 0.05},
-        {"inscatterRefinementThreshold", 0.1},
-        {"bilateralThreshold", 0.2},
-        {"minMaxTrees", false},
+        {"epipolar.slices", 256},
+        {"epipolar.samplesPerSlice", 128},
+        {"epipolar.initialSampleStep", 8},
+        {"epipolar.refinementThreshold", 0.05},
+        {"epipolar.inscatterRefinementThreshold", 0.1},
+        {"epipolar.bilateralThreshold", 0.2},
+        {"epipolar.minMaxTrees", false},
         {"shadowFilter", "nearest"},
-        {"fixup", false},
-        {"fixupMaxSteps", 64},
+        {"epipolar.fixup", false},
+        {"epipolar.fixupMaxSteps", 64},
         {"shadowDepthBias", 0.001},
-        {"interpolation", "inscattering"},
+        {"epipolar.interpolation", "inscattering"},
         {"shadowMapSize", 1024},
-        {"coneSamples", 16},
-        {"coneLimited", false},
-        {"coneJitter", true},
+        {"coneMarch.samples", 16},
+        {"coneMarch.limited", false},
+        {"coneMarch.jitter", true},
         {"shadowSampling", false},
-        {"planeCount", 64},
-        {"planeSpacing", 0.5},
-        {"planeTarget", "float32"},
-        {"planeScaling", true},
-        {"planeRange", 10.0},
-        {"planeDither", false},
-        {"planeBlur", 2},
-        {"planeAmbient", 0.5},
+        {"planes.count", 64},
+        {"planes.spacing", 0.5},
+        {"planes.target", "float32"},
+        {"planes.scaling", true},
+        {"planes.range", 10.0},
+        {"planes.dither", false},
+        {"planes.blur", 2},
+        {"planes.ambient", 0.5},
         {"noiseAmplitude", 0.5},
         {"noiseScale", 2.0},
         {"noiseVelocity", {0.1, 0.2, 0.3, 0.4}},
         {"lightModel", "simplified"},
         {"simplifiedA0", 0.01},
         {"simplifiedA1", 2.0},
-        {"froxelTile", 4},
-        {"froxelSlices", 32},
-        {"froxelFarDistance", 50.0},
-        {"froxelTemporal", true},
-        {"froxelHistoryWeight", 0.5},
+        {"froxels.tile", 4},
+        {"froxels.slices", 32},
+        {"froxels.farDistance", 50.0},
+        {"froxels.temporal", true},
+        {"froxels.historyWeight", 0.5},
     };
     return v;
 }
@@ -87,7 +87,7 @@ TEST(Panel, SetsEverySettingAndTheNextReportShowsIt) {
     ASSERT_EQ(std::system("command -v xvfb-run > /dev/null"), 0)
         << "xvfb-run is missing (Debian package xvfb)";
     const auto& fields = host::settingFields();
-    // A field added to Settings (and to settings_fields.cpp) needs a value here.
+    // A field added to a method's table needs a value here.
     for (const host::SettingField& f : fields)
         ASSERT_TRUE(testValues().count(f.name)) << f.name << " has no test value";
     ASSERT_EQ(testValues().size(), fields.size());
@@ -142,8 +142,9 @@ TEST(Panel, SetsEverySettingAndTheNextReportShowsIt) {
 TEST(Panel, ARefusedEditIsShownUndoneAndTheWindowRunsOn) {
     ASSERT_EQ(std::system("command -v xvfb-run > /dev/null"), 0)
         << "xvfb-run is missing (Debian package xvfb)";
-    cli_test::writeFile("script.json", R"([{"profile": "custom", "settings": {"slices": 256}},
-                                           {"settings": {"slices": 6}}, {}])");
+    cli_test::writeFile("script.json",
+                        R"([{"profile": "custom", "settings": {"epipolar.slices": 256}},
+                            {"settings": {"epipolar.slices": 6}}, {}])");
     const auto r = cli_test::run("view " + cli_test::scene("engine_spot") +
                                      " --size 64x36 --frames 3 --panel-script script.json"
                                      " --report-log log.json --validation",
@@ -154,9 +155,9 @@ TEST(Panel, ARefusedEditIsShownUndoneAndTheWindowRunsOn) {
     for (const json& e : log) {
         if (e["step"] != 1) continue;
         seen = true;
-        EXPECT_NE(e["refused"].get<std::string>().find("slices = 6"), std::string::npos)
+        EXPECT_NE(e["refused"].get<std::string>().find("epipolar.slices = 6"), std::string::npos)
             << e["refused"];
-        EXPECT_EQ(e["lights"][0]["settings"]["slices"], 256);  // the last accepted
+        EXPECT_EQ(e["lights"][0]["settings"]["epipolar.slices"], 256);  // the last accepted
     }
     EXPECT_TRUE(seen) << log.dump();
 }
@@ -165,7 +166,7 @@ TEST(Panel, SaveSettingsWritesAFileTheCommandLineReadsBack) {
     ASSERT_EQ(std::system("command -v xvfb-run > /dev/null"), 0)
         << "xvfb-run is missing (Debian package xvfb)";
     cli_test::writeFile("script.json", R"([{"profile": "custom", "method": "epipolar",
-        "settings": {"slices": 128, "planeBlur": 3, "shadowFilter": "nearest"},
+        "settings": {"epipolar.slices": 128, "planeBlur": 3, "shadowFilter": "nearest"},
         "save": "saved.json"}])");
     const auto r = cli_test::run("view " + cli_test::scene("engine_spot") +
                                      " --size 64x36 --frames 1 --panel-script script.json"
@@ -174,15 +175,18 @@ TEST(Panel, SaveSettingsWritesAFileTheCommandLineReadsBack) {
     ASSERT_EQ(r.exitCode, 0) << r.out;
     std::ifstream in(cli_test::path("saved.json"));
     const json saved = json::parse(in);
-    EXPECT_EQ(saved["slices"], 128);
-    EXPECT_EQ(saved["planeBlur"], 3);
+    // Each method's fields nested under its member, Settings' own at the top.
+    EXPECT_EQ(saved["epipolar"]["slices"], 128);
+    EXPECT_EQ(saved["planes"]["blur"], 3);
     EXPECT_EQ(saved["shadowFilter"], "nearest");
-    EXPECT_EQ(saved.size(), host::settingFields().size());
+    size_t written = 0;
+    for (const auto& [key, value] : saved.items()) written += value.is_object() ? value.size() : 1;
+    EXPECT_EQ(written, host::settingFields().size());
     // The budget reads it as a --settings file: the saved slices are what it lays out.
     const auto b = cli_test::run(
         "budget --method epipolar --profile custom --settings saved.json"
         " --size 64x36 --json");
     ASSERT_EQ(b.exitCode, 0) << b.out;
     const json budget = json::parse(b.out.substr(b.out.find('[')));
-    EXPECT_EQ(budget[0]["slices"], 128) << b.out;
+    EXPECT_EQ(budget[0]["settings"]["epipolar.slices"], 128) << b.out;
 }

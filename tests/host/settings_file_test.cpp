@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 
 #include <filesystem>
@@ -123,7 +124,7 @@ TEST_F(HostSettingsFile, AWrittenFileReadsBackToTheSameSettings) {
     for (const host::SettingField& f : host::settingFields())
         for (int c = 0; c < (f.kind == host::SettingField::Kind::Vector4 ? 4 : 1); ++c)
             EXPECT_EQ(host::fieldValue(back, f, c), host::fieldValue(s, f, c)) << f.name;
-    // 36 fields today: a member added to Settings is added to settings_fields.cpp, then here.
+    // 36 fields today: a member added to a method's settings is added to its table, then here.
     EXPECT_EQ(host::settingFields().size(), 36u);
     EXPECT_EQ(host::settingsFileText(s).find("0.07000000"), std::string::npos)
         << "floats are written as their shortest decimal";
@@ -176,15 +177,24 @@ TEST_F(HostSettingsFile, FormerNamesOfThePlaneFieldsStillRead) {
           Names{"sliceRange", "planeRange", "0.5"}, Names{"sliceDither", "planeDither", "false"},
           Names{"sliceBlur", "planeBlur", "2"}, Names{"sliceAmbient", "planeAmbient", "0.01"}}) {
         const std::string former = n.former, current = n.current, value = n.value;
+        // Read in the keys' order (nlohmann sorts an object's keys).
+        const auto [first, second] = std::minmax(former, current);
+        const lightscatter::SettingsField* f = lightscatter::findSettingsField(current);
+        ASSERT_NE(f, nullptr) << current;
         EXPECT_EQ(
             errorFor("{\"" + current + "\": " + value + ", \"" + former + "\": " + value + "}"),
-            former + " and " + current + " are one field (" + former +
-                " is its former name): give it once");
+            first + " and " + second + " are one field (" + f->name + "): give it once");
     }
     EXPECT_EQ(errorFor(R"({"sliceTarget": "rgba16"})"),
               "sliceTarget = \"rgba16\": must be one of float16, float32, rgba8");
-    EXPECT_EQ(errorFor(R"({"slicePlanes": 1})"), "slicePlanes = 1: must be between 2 and 4096");
-    EXPECT_EQ(errorFor(R"({"sliceBlur": 9})"), "sliceBlur = 9: at most 8 pixels");
+    EXPECT_EQ(errorFor(R"({"slicePlanes": 1})"), "slicePlanes = 1: must be in [2, 4096]");
+    EXPECT_EQ(errorFor(R"({"sliceBlur": 9})"), "sliceBlur = 9: must be in [0, 8] (pixels)");
+    // A field nested under its method's member, or named in full, and a former name of it: one
+    // field given twice.
+    EXPECT_EQ(errorFor(R"({"planes": {"count": 64}, "planeCount": 64})"),
+              "planeCount and planes.count are one field (planes.count): give it once");
+    EXPECT_EQ(load(R"({"planes": {"count": 64}, "epipolar.slices": 256})").planes.count, 64u);
+    EXPECT_EQ(load(R"({"planes": {"count": 64}, "epipolar.slices": 256})").epipolar.slices, 256u);
 }
 
 TEST_F(HostSettingsFile, FieldsLeftOutKeepTheProfilesValues) {
@@ -198,21 +208,28 @@ TEST_F(HostSettingsFile, FieldsLeftOutKeepTheProfilesValues) {
 
 TEST_F(HostSettingsFile, BadFieldsAreNamed) {
     EXPECT_EQ(errorFor(R"({"slice": 4})").substr(0, 62),
-              "unknown key 'slice' (known keys: slices, samplesPerSlice, init");
+              "unknown key 'slice' (known keys: shadowMapSize, shadowFilter, ");
+    EXPECT_NE(errorFor(R"({"slice": 4})").find("epipolar.slices, epipolar.samplesPerSlice"),
+              std::string::npos);
+    EXPECT_EQ(errorFor(R"({"epipolar": {"slice": 4}})").substr(0, 40),
+              "unknown key 'epipolar.slice' (known keys");
     EXPECT_EQ(errorFor(R"({"slices": 512, "slices": 256})"),
               "key 'slices' appears twice in one object");
     EXPECT_EQ(errorFor(R"({"slices": -4})"),
               "slices = -4: must be a whole number from 0 to 4294967295");
     EXPECT_EQ(errorFor(R"({"slices": 4294967296})"),
               "slices = 4294967296: must be a whole number from 0 to 4294967295");
-    EXPECT_EQ(
-        errorFor(R"({"slices": 3})"),
-        "slices = 3: must be a positive multiple of 4 (a quarter per screen edge), at most 16384");
+    EXPECT_EQ(errorFor(R"({"slices": 3})"),
+              "slices = 3: must be a multiple of 4 in [4, 16384] (a quarter per screen edge)");
+    EXPECT_EQ(errorFor(R"({"epipolar": {"slices": 3}})"),
+              "epipolar.slices = 3: must be a multiple of 4 in [4, 16384] (a quarter per screen "
+              "edge)");
     EXPECT_EQ(errorFor(R"({"initialSampleStep": 3})"),
-              "initialSampleStep = 3: must be a power of two between 1 and 128");
-    EXPECT_EQ(errorFor(R"({"refinementThreshold": 0})"), "refinementThreshold = 0: must be > 0");
+              "initialSampleStep = 3: must be a power of two in [1, 128]");
+    EXPECT_EQ(errorFor(R"({"refinementThreshold": 0})"),
+              "refinementThreshold = 0: must be > 0 and finite (only compared)");
     EXPECT_EQ(errorFor(R"({"inscatterRefinementThreshold": -1})"),
-              "inscatterRefinementThreshold = -1: must be finite and >= 0 (0: off)");
+              "inscatterRefinementThreshold = -1: must be >= 0 and finite (0: off)");
     EXPECT_EQ(errorFor(R"({"shadowDepthBias": 1e39})"),
               "shadowDepthBias = 1e+39: must be a finite number");
     EXPECT_EQ(errorFor(R"({"minMaxTrees": 1})"), "minMaxTrees = 1: must be true or false");
@@ -220,14 +237,15 @@ TEST_F(HostSettingsFile, BadFieldsAreNamed) {
               "shadowFilter = \"trilinear\": must be one of nearest, bilinear");
     EXPECT_EQ(errorFor(R"({"interpolation": 2})"),
               "interpolation = 2: must be one of shadowed-fraction, inscattering");
-    EXPECT_EQ(errorFor(R"({"shadowMapSize": 0})"), "shadowMapSize = 0: must be from 1 to 16384");
+    EXPECT_EQ(errorFor(R"({"shadowMapSize": 16385})"),
+              "shadowMapSize = 16385: must be 0 or in [1, 16384]");
     EXPECT_EQ(errorFor(R"({"planeTarget": "rgba16"})"),
               "planeTarget = \"rgba16\": must be one of float16, float32, rgba8");
     EXPECT_EQ(errorFor(R"({"noiseAmplitude": 2})"), "noiseAmplitude = 2: must be in [0, 1]");
     EXPECT_EQ(errorFor(R"({"noiseAmplitude": "loud"})"),
               "noiseAmplitude = \"loud\": must be a number");
-    EXPECT_EQ(errorFor(R"({"planeCount": 1})"), "planeCount = 1: must be between 2 and 4096");
-    EXPECT_EQ(errorFor(R"({"planeBlur": 9})"), "planeBlur = 9: at most 8 pixels");
+    EXPECT_EQ(errorFor(R"({"planeCount": 1})"), "planeCount = 1: must be in [2, 4096]");
+    EXPECT_EQ(errorFor(R"({"planeBlur": 9})"), "planeBlur = 9: must be in [0, 8] (pixels)");
     EXPECT_EQ(errorFor(R"({"planeDither": "yes"})"),
               "planeDither = \"yes\": must be true or false");
     EXPECT_EQ(errorFor(R"({"noiseScale": 0})"),

@@ -104,7 +104,7 @@ TEST(ShadowFit, TheWholeSceneInViewKeepsTheWholeSceneInTheMap) {
 
 namespace {
 
-// How far from singular a world -> clip matrix is, as the plugin judges it (frame_setup.cpp):
+// How far from singular a world -> clip matrix is, as the plugin judges it (matrix_checks.cpp):
 // |det| over the product of its rows' lengths, about the centre of its clip volume.
 double centredConditioning(const glm::mat4& m) {
     const glm::dmat4 d(m);

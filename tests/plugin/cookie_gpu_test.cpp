@@ -196,18 +196,22 @@ std::string refusalOf(Method method, const FrameSpec& spec,
 TEST_F(CookieGpu, MethodsThatCannotVaryTheColorRefuseItAndAutoPicksOneThatCan) {
     const FrameSpec spot = cookieSpot(stainedGlass());
     const lightscatter::Settings settings = accurate(spot);
+    // The methods that take it instead come from their caps (lightscatter::methodInfo()).
     EXPECT_EQ(refusalOf(Method::Analytic, spot, settings),
-              "lightscatter: method analytic (seed 001) integrates an unshadowed light in closed "
-              "form and cannot vary its color along the ray: lightColor without a shadow map "
-              "needs epipolar, brute-force, cone-march, planes or auto");
+              "lightscatter: method analytic cannot vary the light's color along the ray: "
+              "lightColor without a shadow map needs epipolar, brute-force, cone-march, planes, "
+              "beam-tree-sampling, froxels or auto");
     const std::string tree =
-        "lightscatter: method beam-tree-analytic (seed 004) integrates its lit space in closed "
-        "form and cannot vary the light's color along the ray: lightColor needs epipolar, "
-        "brute-force, cone-march, planes, beam-tree-sampling or auto";
+        "lightscatter: method beam-tree-analytic cannot vary the light's color along the ray: "
+        "lightColor without a shadow map needs epipolar, brute-force, cone-march, planes, "
+        "beam-tree-sampling, froxels or auto";
     EXPECT_EQ(refusalOf(Method::BeamTreeAnalytic, spot, settings), tree);
     FrameSpec shadowed = spot;
     shadowed.shadowed = true;
-    EXPECT_EQ(refusalOf(Method::BeamTreeAnalytic, shadowed, settings), tree);
+    EXPECT_EQ(refusalOf(Method::BeamTreeAnalytic, shadowed, settings),
+              "lightscatter: method beam-tree-analytic cannot vary the light's color along the "
+              "ray: lightColor needs epipolar, brute-force, cone-march, planes, "
+              "beam-tree-sampling, froxels or auto");
 
     // A point light has no single projection.
     FrameSpec point = spot;
@@ -227,8 +231,9 @@ TEST_F(CookieGpu, MethodsThatCannotVaryTheColorRefuseItAndAutoPicksOneThatCan) {
     lightscatter::Settings simplified = settings;
     simplified.lightModel = lightscatter::LightModel::Simplified;
     EXPECT_EQ(refusalOf(Method::Auto, spot, simplified),
-              "lightscatter: custom.lightModel = simplified and lightColor: no method honours both "
-              "(the simplified model's closed forms cannot vary the light's color along a ray)");
+              "lightscatter: custom.lightModel = simplified (seed 004's light model): no method "
+              "that honours it takes this light (" +
+                  tree.substr(std::string("lightscatter: ").size()) + ")");
 }
 
 // The projection is required: without a shadow map the default all-zero matrix is refused.

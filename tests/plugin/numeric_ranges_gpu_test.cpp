@@ -288,7 +288,8 @@ std::vector<Field> fields() {
                      [g](FrameDescription& d, double v) { g(d.custom, static_cast<uint32_t>(v)); },
                      counts});
     };
-    whole("custom.epipolar.slices", {Method::Epipolar}, [](auto& s, uint32_t v) { s.epipolar.slices = v; });
+    whole("custom.epipolar.slices", {Method::Epipolar},
+          [](auto& s, uint32_t v) { s.epipolar.slices = v; });
     whole("custom.epipolar.samplesPerSlice", {Method::Epipolar},
           [](auto& s, uint32_t v) { s.epipolar.samplesPerSlice = v; });
     whole("custom.epipolar.initialSampleStep", {Method::Epipolar},

@@ -161,7 +161,8 @@ View defaultView(VkExtent2D screen) {
 lightscatter::Settings smallSettings(VkExtent2D screen) {
     lightscatter::Settings s;
     s.epipolar.slices = (2 * (screen.width + screen.height) + 3) / 4 * 4;
-    s.epipolar.samplesPerSlice = std::max(std::max(screen.width, screen.height) + screen.height / 2, 16u);
+    s.epipolar.samplesPerSlice =
+        std::max(std::max(screen.width, screen.height) + screen.height / 2, 16u);
     s.epipolar.initialSampleStep = 8;
     s.shadowMapSize = 128;
     return s;

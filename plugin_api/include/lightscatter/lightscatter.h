@@ -107,9 +107,9 @@ struct MethodInfo {
     std::string description;  // one line
     // The lights it takes, and what of them.
     bool directional = true, spot = true, point = true;
-    bool shadowMap = true;    // casts shadows from a light's shadow map
-    bool cubeShadow = false;  // samples a point light's six-face shadow map
-    bool lightColor = true;   // a light-space color (cookie) with a shadow map
+    bool shadowMap = true;             // casts shadows from a light's shadow map
+    bool cubeShadow = false;           // samples a point light's six-face shadow map
+    bool lightColor = true;            // a light-space color (cookie) with a shadow map
     bool unshadowedLightColor = true;  // ... and without one
     // Settings it honours beyond docs/model.md (the others refuse them).
     bool noise = false;                // Settings::noiseAmplitude > 0
@@ -137,7 +137,7 @@ LIGHTSCATTER_API const SettingsField* findSettingsField(const std::string& name)
 // A preset's method and settings (MethodInfo::presets): sets its fields in `settings` and returns
 // its method; nothing for a name that is no preset.
 LIGHTSCATTER_API std::optional<Method> applyMethodPreset(const std::string& name,
-                                                        Settings& settings);
+                                                         Settings& settings);
 
 // Checks settings against their fields' rules (settingsFields()), as record() does: throws
 // InvalidInput naming the first field outside its rule, as `at`.name ("custom.epipolar.slices";
@@ -431,8 +431,9 @@ LIGHTSCATTER_API FroxelVolume froxelVolume(const FrameDescription& frame,
                                            VkExtent2D maxRenderSize = {0, 0});
 
 // Thrown before anything is recorded when a description breaks a rule; the message names the field
-// (as a path from FrameDescription: "custom.epipolar.slices", "depth.layout"; or from VulkanContext:
-// "context.enabledFeatures") and the rule. The engine's images and command buffer are untouched.
+// (as a path from FrameDescription: "custom.epipolar.slices", "depth.layout"; or from
+// VulkanContext: "context.enabledFeatures") and the rule. The engine's images and command buffer
+// are untouched.
 class LIGHTSCATTER_API InvalidInput : public std::invalid_argument {
   public:
     using std::invalid_argument::invalid_argument;
@@ -449,8 +450,8 @@ struct PassTime {
     std::string name;
     double milliseconds = 0;
     // The samples an epipolar ray march marched (the first march, and with
-    // Settings::epipolar.inscatterRefinementThreshold the refinement's, which marches only the samples it
-    // adds), counted by an occlusion query; -1 for the other passes.
+    // Settings::epipolar.inscatterRefinementThreshold the refinement's, which marches only the
+    // samples it adds), counted by an occlusion query; -1 for the other passes.
     int64_t samples = -1;
 };
 

@@ -14,9 +14,9 @@ namespace lightscatter {
 enum class Interpolation { ShadowedFraction, Inscattering };
 
 struct EpipolarSettings {
-    uint32_t slices = 1024;           // epipolar lines; a multiple of 4 (one quarter per edge)
-    uint32_t samplesPerSlice = 1024;  // samples along each line
-    uint32_t initialSampleStep = 16;  // ray-marching samples every N samples (a power of two)
+    uint32_t slices = 1024;             // epipolar lines; a multiple of 4 (one quarter per edge)
+    uint32_t samplesPerSlice = 1024;    // samples along each line
+    uint32_t initialSampleStep = 16;    // ray-marching samples every N samples (a power of two)
     float refinementThreshold = 0.03f;  // relative camera-z jump that is a depth break
     // Refinement on what the samples carry (docs/epipolar.md, "Refinement on in-scattering
     // differences"). 0 (the default): off. Above 0: after the first march, wherever the two
