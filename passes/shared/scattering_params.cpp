@@ -84,7 +84,8 @@ glm::mat4 rayBasisOf(const glm::mat4& projection, const glm::mat4& view) {
 
 FrameConstants makeFrameConstants(const CameraParams& camera, const LightParams& light,
                                   const MediumParams& medium, const EpipolarSettings& settings,
-                                  VkExtent2D screen, const TableLayout& table) {
+                                  const FrameParams& params, const TableLayout& table) {
+    const VkExtent2D screen = params.screen;
     FrameConstants f{};
     f.viewProj = camera.projection * camera.view;
     f.rayBasis = rayBasisOf(camera.projection, camera.view);
@@ -125,6 +126,17 @@ FrameConstants makeFrameConstants(const CameraParams& camera, const LightParams&
     f.epipolar3 = {settings.inscatterRefinementThreshold, 0.0f, 0.0f, 0.0f};
     f.lutInfo = {table.logRange, static_cast<float>(table.width), static_cast<float>(table.height),
                  0.0f};
+    // Seed 004's I / (a1 r^2 + a0) as (I / a1) / (r^2 + a0 / a1); the floor keeps a ray through
+    // the light finite when a0 is 0, as the floor on r0 does for the full model; the ceilings
+    // keep a denormal a1 from making them infinite.
+    const float a1 = params.simplifiedA1;
+    f.simplified = {std::clamp(params.simplifiedA0 / a1, 1e-12f, 1e30f), std::min(1.0f / a1, 1e30f),
+                    0.0f, 0.0f};
+    const VkExtent2D texels = params.maxScreen.width != 0 ? params.maxScreen : screen;
+    f.screenTexels = {static_cast<float>(texels.width), static_cast<float>(texels.height),
+                      static_cast<float>(screen.width) / static_cast<float>(texels.width),
+                      static_cast<float>(screen.height) / static_cast<float>(texels.height)};
+    f.linStorage = {params.linStorage, 1.0f / params.linStorage, params.preExposure, 0.0f};
     return f;
 }
 

@@ -124,9 +124,22 @@ struct LightOnScreen {
 };
 LightOnScreen projectLight(const CameraParams& camera, const LightParams& light);
 
+// What the frame constants hold besides the camera, the light, the medium and the table, as plain
+// values the plugin has: the screen and its textures' size, and how Lin is stored and scaled.
+struct FrameParams {
+    VkExtent2D screen{0, 0};
+    // The size of the screen-sized textures, the plugin's maxRenderSize; 0: the screen's.
+    VkExtent2D maxScreen{0, 0};
+    // Seed 004's simplified light model, I / (a1 r^2 + a0) (read with kSimplifiedModel only).
+    float simplifiedA0 = 0.0f;
+    float simplifiedA1 = 1.0f;
+    float linStorage = 1.0f;   // the power of two Lin is stored with (plugin_api/src/lin_storage.h)
+    float preExposure = 1.0f;  // the engine's: the composite adds preExposure Lin to its color
+};
+
 FrameConstants makeFrameConstants(const CameraParams& camera, const LightParams& light,
                                   const MediumParams& medium, const EpipolarSettings& settings,
-                                  VkExtent2D screen, const TableLayout& table);
+                                  const FrameParams& params, const TableLayout& table);
 
 // A point light's cube face by its layer (Vulkan's order +X, -X, +Y, -Y, +Z, -Z), for names.
 const char* cubeFaceName(int face);
