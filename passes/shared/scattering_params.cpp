@@ -115,8 +115,7 @@ FrameConstants makeFrameConstants(const CameraParams& camera, const LightParams&
                    camera.nearPlane, camera.farPlane};
     const float size = static_cast<float>(
         std::max(light.shadowMapSize > 0 ? light.shadowMapSize : light.lightColorSize, 1u));
-    f.shadowInfo = {size, 1.0f / size, light.shadowReversedZ ? 1.0f : 0.0f,
-                    settings.shadowDepthBias};
+    f.shadowInfo = {size, 1.0f / size, light.shadowReversedZ ? 1.0f : 0.0f, light.shadowDepthBias};
     f.epipolar = {static_cast<float>(settings.slices), static_cast<float>(settings.samples),
                   static_cast<float>(settings.initialStep), settings.refinementThreshold};
     f.epipolar2 = {settings.bilateralThreshold, static_cast<float>(settings.fixupMaxSteps),

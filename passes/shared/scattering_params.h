@@ -46,6 +46,7 @@ struct LightParams {
     // texel of it, as a shadowed one takes one per shadow-map texel.
     uint32_t lightColorSize = 0;
     bool shadowReversedZ = false;
+    float shadowDepthBias = 0.0f;  // added to the ray's light-space depth before comparing
 };
 
 struct MediumParams {
@@ -69,7 +70,6 @@ struct EpipolarSettings {
     bool bilinearShadow = true;
     bool fixup = true;
     uint32_t fixupMaxSteps = 0;
-    float shadowDepthBias = 0.0f;
     bool interpolateFraction = true;  // samples carry Lin / unshadowed Lin instead of Lin
 };
 

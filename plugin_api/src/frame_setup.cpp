@@ -873,7 +873,6 @@ void applySettings(ls::LightSetup& s, const Settings& st, uint32_t shadowMapSize
     s.epipolar.bilinearShadow = st.shadowFilter == ShadowFilter::Bilinear;
     s.epipolar.fixup = st.fixup;
     s.epipolar.fixupMaxSteps = st.fixupMaxSteps;
-    s.epipolar.shadowDepthBias = st.shadowDepthBias;
     s.epipolar.interpolateFraction = st.interpolation == Interpolation::ShadowedFraction;
     s.planes.planes = st.planeCount;
     s.planes.spacing = st.planeSpacing;
@@ -892,6 +891,7 @@ void applySettings(ls::LightSetup& s, const Settings& st, uint32_t shadowMapSize
     s.froxels = {st.froxelTile, st.froxelSlices, st.froxelFarDistance, st.froxelTemporal,
                  st.froxelHistoryWeight};
     s.shadowSampling = st.shadowSampling;
+    s.light.shadowDepthBias = st.shadowDepthBias;
     s.noise = st.noiseAmplitude > 0.0f;
     s.simplified = st.lightModel == LightModel::Simplified;
 }
