@@ -19,7 +19,8 @@ class EpipolarMethod final : public MethodUnit {
     MethodCaps caps() const override;
     std::string refusal(const LightSetup& light) const override;
     bool readsTable(const LightSetup& light) const override;
-    std::vector<CpuWork> prepare(LightData*, LightFrame& frame,
+    std::unique_ptr<LightData> makeData() const override;
+    std::vector<CpuWork> prepare(LightData* data, LightFrame& frame,
                                  const LightSetup& light) const override;
     ChainOptions options(const LightSetup& light, const LightData*,
                          const ChainOptions*) const override;

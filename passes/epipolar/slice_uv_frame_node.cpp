@@ -10,13 +10,13 @@ rg::ImageRef addSliceUvFrame(rg::RenderGraph& g, const SliceUvFrameInputs& in,
         g.createImage("slice uv origin and direction",
                       rg::ImageDesc::absolute(VK_FORMAT_R32G32B32A32_SFLOAT, s.slices, 1));
     auto pass = g.addPass("slice uv origin and direction", rg::PassType::Compute);
-    rg::BindingTable table = frameTable(pass, in.frame.constants);
+    rg::BindingTable table = epipolarTable(pass, in.frame, in.epipolar);
     table.sampled(LS_BINDING_UV_FRAME_END_POINTS, in.sliceEndPoints,
                   samplersOf(in.frame.shared).nearest());
     uvFrame = table.storageWrite(LS_BINDING_UV_FRAME_OUT, uvFrame);
-    pass.execute([frame = in.frame, table, s](rg::PassContext& ctx) {
+    pass.execute([frame = in.frame, face = in.epipolar.face, table, s](rg::PassContext& ctx) {
         // A cube face out of view: no ray reads its lines.
-        if (!ctx.data(frame.values).inView(frame.face)) return;
+        if (!epipolarFrameOf(ctx.data(frame.values)).inView(face)) return;
         const Shared& shared = frame.shared;
         const auto& p = shared->pipelines.compute("slice uv origin and direction",
                                                   rg::spirv(ls_spirv::slice_uv_frame_comp),

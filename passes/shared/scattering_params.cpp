@@ -83,8 +83,8 @@ glm::mat4 rayBasisOf(const glm::mat4& projection, const glm::mat4& view) {
 }  // namespace
 
 FrameConstants makeFrameConstants(const CameraParams& camera, const LightParams& light,
-                                  const MediumParams& medium, const EpipolarSettings& settings,
-                                  const FrameParams& params, const TableLayout& table) {
+                                  const MediumParams& medium, const FrameParams& params,
+                                  const TableLayout& table) {
     const VkExtent2D screen = params.screen;
     FrameConstants f{};
     f.viewProj = camera.projection * camera.view;
@@ -116,13 +116,6 @@ FrameConstants makeFrameConstants(const CameraParams& camera, const LightParams&
     const float size = static_cast<float>(
         std::max(light.shadowMapSize > 0 ? light.shadowMapSize : light.lightColorSize, 1u));
     f.shadowInfo = {size, 1.0f / size, light.shadowReversedZ ? 1.0f : 0.0f, light.shadowDepthBias};
-    f.epipolar = {static_cast<float>(settings.slices), static_cast<float>(settings.samples),
-                  static_cast<float>(settings.initialStep), settings.refinementThreshold};
-    f.epipolar2 = {settings.bilateralThreshold, static_cast<float>(settings.fixupMaxSteps),
-                   static_cast<float>(treeLevels(light.shadowMapSize)),
-                   settings.interpolateFraction ? 1.0f : 0.0f};
-    f.cubeFace = {0.0f, 1.0f, 0.0f, 0.0f};  // no per-face pass: in view
-    f.epipolar3 = {settings.inscatterRefinementThreshold, 0.0f, 0.0f, 0.0f};
     f.lutInfo = {table.logRange, static_cast<float>(table.width), static_cast<float>(table.height),
                  0.0f};
     // Seed 004's I / (a1 r^2 + a0) as (I / a1) / (r^2 + a0 / a1); the floor keeps a ray through

@@ -138,8 +138,8 @@ struct FrameParams {
 };
 
 FrameConstants makeFrameConstants(const CameraParams& camera, const LightParams& light,
-                                  const MediumParams& medium, const EpipolarSettings& settings,
-                                  const FrameParams& params, const TableLayout& table);
+                                  const MediumParams& medium, const FrameParams& params,
+                                  const TableLayout& table);
 
 // A point light's cube face by its layer (Vulkan's order +X, -X, +Y, -Y, +Z, -Z), for names.
 const char* cubeFaceName(int face);

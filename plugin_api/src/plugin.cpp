@@ -200,8 +200,7 @@ struct Plugin::Impl {
                                      .simplifiedA1 = setup.settings.simplifiedA1,
                                      .linStorage = detail::linStorageScale(setup),
                                      .preExposure = setup.preExposure};
-        return ls::makeFrameConstants(setup.camera, setup.light, setup.medium, setup.epipolar,
-                                      params, table);
+        return ls::makeFrameConstants(setup.camera, setup.light, setup.medium, params, table);
     }
 
     // The frame N - framesInFlight and everything before it have completed (the engine's promise

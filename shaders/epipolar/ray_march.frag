@@ -11,6 +11,7 @@
 // With LS_COUNT_STEPS (DebugOptions::countSteps) each invocation adds what it did into its slice's
 // row of a storage buffer (kCount* below); without it the variant has no buffer and no atomics.
 #include "camera.glsl"
+#include "epipolar_constants.glsl"
 #include "min_max_tree.glsl"
 layout(binding = LS_BINDING_MARCH_COORDINATES) uniform sampler2D coordinates;
 layout(binding = LS_BINDING_MARCH_EPIPOLAR_Z) uniform sampler2D epipolarZ;
@@ -112,7 +113,7 @@ int climb(int i, int level, int last, int n, int levels) {
 
 void marchLine(inout Inscatter acc, LineRay r, int slice) {
     int n = int(frame.shadowInfo.x);
-    int levels = int(frame.epipolar2.z);
+    int levels = int(epipolar.marching.x);
     int i = int(ceil(r.ta));
     int last = int(ceil(r.tb));
     int level = climb(i, 0, last, n, levels);
@@ -150,7 +151,7 @@ vec3 marchSample(vec3 C, vec3 v, float S, int slice) {
 #if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
     clipToCubeFaceRegion(C, v, shadowFace, t0, t1);
     // The first face's pass runs even out of view, for the alpha of every sample.
-    if (frame.cubeFace.y < 0.5) t1 = t0;
+    if (epipolar.cubeFace.y < 0.5) t1 = t0;
 #endif
     if (!(t0 < t1)) return vec3(0.0);
     Inscatter acc = beginInscatter(C, v, t0);
@@ -191,7 +192,7 @@ vec3 marchSample(vec3 C, vec3 v, float S, int slice) {
 
 void main() {
 #if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
-    shadowFace = int(frame.cubeFace.x);
+    shadowFace = int(epipolar.cubeFace.x);
 #endif
     ivec2 p = ivec2(gl_FragCoord.xy);
     vec2 ndc = texelFetch(coordinates, p, 0).xy * 2.0 - 1.0;
@@ -209,7 +210,7 @@ void main() {
     flushCounts(p.y);
 #endif
     float defined = 1.0;
-    if (frame.epipolar2.w > 0.5) {
+    if (epipolar.marching.y > 0.5) {
         float t0, t1;
         lightInterval(C, v, S, t0, t1);
         vec3 unshadowed = unshadowedInscatter(C, v, t0, t1);

@@ -15,7 +15,7 @@ layout(binding = LS_BINDING_UV_FRAME_OUT, rgba32f) uniform writeonly image2D sli
 
 void main() {
     int slice = int(gl_GlobalInvocationID.x);
-    if (slice >= int(frame.epipolar.x)) return;
+    if (slice >= int(epipolar.sampling.x)) return;
     vec4 ends = texelFetch(sliceEndPoints, ivec2(slice, 0), 0);
     if (ends.x <= INVALID_SLICE + 1.0) {
         imageStore(sliceUvFrame, ivec2(slice, 0), vec4(0.0));
