@@ -30,18 +30,13 @@ std::unique_ptr<LightData> EpipolarMethod::makeData() const {
     return std::make_unique<EpipolarFrame>();
 }
 
-std::vector<CpuWork> EpipolarMethod::prepare(LightData* data, LightFrame& frame,
+std::vector<CpuWork> EpipolarMethod::prepare(LightData* data, LightFrame&,
                                              const LightSetup& light) const {
     EpipolarFrame& e = *static_cast<EpipolarFrame*>(data);
     e.constants = makeEpipolarConstants(light.epipolar, light.light.shadowMapSize);
     if (!cubeShadowed(light)) return {};
-    // A cube map is marched face by face, each as a spot light's map with its own matrix.
-    for (int face = 0; face < 6; ++face) {
-        FrameConstants& f = frame.faces[face];
-        f = frame.constants;
-        f.lightViewProj = frame.constants.cubeFaceViewProj[face];
+    for (int face = 0; face < 6; ++face)
         e.faceInView[face] = cubeFaceTouchesView(light.camera, light.light, light.medium, face);
-    }
     return {};
 }
 

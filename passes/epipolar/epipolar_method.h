@@ -20,7 +20,7 @@ class EpipolarMethod final : public MethodUnit {
     std::string refusal(const LightSetup& light) const override;
     bool readsTable(const LightSetup& light) const override;
     std::unique_ptr<LightData> makeData() const override;
-    std::vector<CpuWork> prepare(LightData* data, LightFrame& frame,
+    std::vector<CpuWork> prepare(LightData* data, LightFrame&,
                                  const LightSetup& light) const override;
     ChainOptions options(const LightSetup& light, const LightData*,
                          const ChainOptions*) const override;

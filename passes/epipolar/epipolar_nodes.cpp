@@ -3,8 +3,6 @@
 #include <array>
 #include <string>
 
-#include "shared/shared_nodes.h"
-
 namespace ls {
 
 EpipolarOutputs addEpipolarNodes(rg::RenderGraph& g, const EpipolarInputs& in,
@@ -24,44 +22,34 @@ EpipolarOutputs addEpipolarNodes(rg::RenderGraph& g, const EpipolarInputs& in,
     struct Lines {
         rg::ImageRef uvFrame, trees;
     };
-    // The light's passes, or one cube face's.
-    struct Face {
-        FrameContext frame;
-        EpipolarContext epipolar;
+    // Each takes the light's epipolar constants, or a cube face's.
+    auto lines = [&](const EpipolarContext& e) {
+        const rg::ImageRef uvFrame = addSliceUvFrame(g, {frame, e, endPoints}, sizes);
+        return Lines{uvFrame, options.minMaxTrees
+                                  ? addMinMaxTrees(g, {frame, e, in.light, uvFrame}, sizes)
+                                  : rg::ImageRef{}};
     };
-    auto lines = [&](const Face& f) {
-        const rg::ImageRef uvFrame = addSliceUvFrame(g, {f.frame, f.epipolar, endPoints}, sizes);
-        return Lines{uvFrame,
-                     options.minMaxTrees
-                         ? addMinMaxTrees(g, {f.frame, f.epipolar, in.light, uvFrame}, sizes)
-                         : rg::ImageRef{}};
-    };
-    auto march = [&](const Face& f, const Lines& l, rg::ImageRef accumulate, bool overwrite) {
-        const EpipolarRayMarch m = addEpipolarRayMarch(
-            g,
-            {f.frame, f.epipolar, in.light, samples.coordinates, samples.epipolarZ, l.uvFrame,
-             marking, l.trees, accumulate, counts},
-            {sizes, overwrite});
+    auto march = [&](const EpipolarContext& e, const Lines& l, rg::ImageRef accumulate,
+                     bool overwrite) {
+        const EpipolarRayMarch m =
+            addEpipolarRayMarch(g,
+                                {frame, e, in.light, samples.coordinates, samples.epipolarZ,
+                                 l.uvFrame, marking, l.trees, accumulate, counts},
+                                {sizes, overwrite});
         counts = m.stepCounts;
         return m.marched;
     };
     rg::ImageRef marched;
-    const Face light{frame, epipolar};
     Lines single;
-    std::array<Face, 6> faces;
+    std::array<EpipolarContext, 6> faces;
     const std::string suffix = g.nameSuffix();
     if (!options.cubeShadow) {
-        single = lines(light);
-        marched = march(light, single, {}, false);
+        single = lines(epipolar);
+        marched = march(epipolar, single, {}, false);
     } else {
         for (uint32_t face = 0; face < 6; ++face) {
             g.setNameSuffix(suffix + " (cube face " + cubeFaceName(static_cast<int>(face)) + ")");
-            faces[face].frame = frame;
-            faces[face].frame.face = static_cast<int>(face);
-            faces[face].frame.constants =
-                addUploadConstants(g, {frame.values, faces[face].frame.face});
-            faces[face].epipolar =
-                addUploadEpipolarConstants(g, {frame.values, static_cast<int>(face)});
+            faces[face] = addUploadEpipolarConstants(g, {frame.values, static_cast<int>(face)});
             marched = march(faces[face], lines(faces[face]), marched, false);
         }
         g.setNameSuffix(suffix);
@@ -77,7 +65,7 @@ EpipolarOutputs addEpipolarNodes(rg::RenderGraph& g, const EpipolarInputs& in,
         marking = refined.epipolarStencil;
         if (!options.cubeShadow) {
             g.setNameSuffix(suffix + " (refinement)");
-            marched = march(light, single, marched, true);
+            marched = march(epipolar, single, marched, true);
         } else {
             for (uint32_t face = 0; face < 6; ++face) {
                 g.setNameSuffix(suffix + " (refinement, cube face " +

@@ -60,8 +60,8 @@ rg::ImageRef addRefineSamples(rg::RenderGraph& g, const RefineSamplesInputs& in,
 
 // Each slice's line in the shadow map, origin and direction: RGBA32F, slices x 1.
 struct SliceUvFrameInputs {
-    FrameContext frame;  // the light's (or the cube face's) constants
-    EpipolarContext epipolar;
+    FrameContext frame;
+    EpipolarContext epipolar;  // the light's (or the cube face's) constants
     rg::ImageRef sliceEndPoints;
 };
 rg::ImageRef addSliceUvFrame(rg::RenderGraph& g, const SliceUvFrameInputs& in,
@@ -87,7 +87,7 @@ rg::ImageRef addMarkRayMarchSamples(rg::RenderGraph& g, const MarkRayMarchInputs
 
 // Lin (or the shadowed fraction) of the ray-marching samples (stencil 2): RGBA16F, samples x
 // slices. Reads the light's images; without trees every sample is marched texel by texel.
-// A point light's cube map is marched one face per pass (frame.shared is the face's state): the
+// A point light's cube map is marched one face per pass (epipolar: the face's constants): the
 // first face's pass writes a new texture, each later one adds its part of every ray to `accumulate`
 // (and returns its new version); alpha, the sample's validity, is the first face's. The refinement
 // march (overwrite) writes its samples into `accumulate`, keeping the first march's samples.
@@ -167,8 +167,8 @@ CompositeOutputs addFixup(rg::RenderGraph& g, const FixupInputs& in);
 
 // The whole chain, from the engine's depth to the composited color. With
 // cubeShadow (a point light's six-layer shadow map) the samples are shared by the six faces and
-// each face adds its own line frames, trees and march (frame.shared->cubeFaces; each face's
-// constants are uploaded by the chain); the fix-up marches the whole cube.
+// each face adds its own line frames, trees and march (each reading its face's epipolar constants,
+// uploaded by the chain); the fix-up marches the whole cube.
 struct EpipolarInputs {
     FrameContext frame;
     LightImages light;
