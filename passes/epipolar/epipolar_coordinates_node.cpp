@@ -15,7 +15,7 @@ EpipolarCoordinates addEpipolarCoordinates(rg::RenderGraph& g, const EpipolarCoo
     out.epipolarStencil = g.createImage("epipolar depth-stencil", perSample(in.frame.depthStencil));
     auto pass = g.addPass("coordinates and epipolar z", rg::PassType::Graphics);
     const auto& sm = samplersOf(in.frame.shared);
-    rg::BindingTable table = frameTable(pass, in.frame.constants);
+    rg::BindingTable table = epipolarTable(pass, in.frame, in.epipolar);
     table.sampled(LS_BINDING_COORDINATES_END_POINTS, in.sliceEndPoints, sm.nearest())
         .sampled(LS_BINDING_COORDINATES_DEPTH, in.frame.depth, sm.nearest(),
                  VK_IMAGE_ASPECT_DEPTH_BIT);

@@ -1,5 +1,6 @@
 #include "epipolar_method.h"
 
+#include "epipolar_constants.h"
 #include "epipolar_nodes.h"
 #include "shared/chain_inputs.h"
 #include "shared/refusals.h"
@@ -53,17 +54,17 @@ bool EpipolarMethod::readsTable(const LightSetup& s) const {
     return pointLike(s);
 }
 
-std::vector<CpuWork> EpipolarMethod::prepare(LightData*, LightFrame& frame,
+std::unique_ptr<LightData> EpipolarMethod::makeData() const {
+    return std::make_unique<EpipolarFrame>();
+}
+
+std::vector<CpuWork> EpipolarMethod::prepare(LightData* data, LightFrame&,
                                              const LightSetup& light) const {
+    EpipolarFrame& e = *static_cast<EpipolarFrame*>(data);
+    e.constants = makeEpipolarConstants(light.settings.epipolar, light.light.shadowMapSize);
     if (!cubeShadowed(light)) return {};
-    // A cube map is marched face by face, each as a spot light's map with its own matrix.
-    for (int face = 0; face < 6; ++face) {
-        FrameConstants& f = frame.faces[face];
-        f = frame.constants;
-        f.lightViewProj = frame.constants.cubeFaceViewProj[face];
-        const bool inView = cubeFaceTouchesView(light.camera, light.light, light.medium, face);
-        f.cubeFace = {static_cast<float>(face), inView ? 1.0f : 0.0f, 0.0f, 0.0f};
-    }
+    for (int face = 0; face < 6; ++face)
+        e.faceInView[face] = cubeFaceTouchesView(light.camera, light.light, light.medium, face);
     return {};
 }
 
@@ -112,10 +113,11 @@ std::string EpipolarMethod::summary(const ChainConfig& c) const {
 }
 
 std::string EpipolarMethod::frameNote(const LightFrame& frame, const ChainConfig& c) const {
-    if (!c.shadowed || c.light != LightType::Point) return {};
+    if (!frame.data || !c.shadowed || c.light != LightType::Point) return {};
+    const EpipolarFrame& e = epipolarFrameOf(frame);
     std::string list;
     for (int f = 0; f < 6; ++f)
-        if (frame.inView(f)) list += std::string(list.empty() ? "" : ", ") + cubeFaceName(f);
+        if (e.inView(f)) list += std::string(list.empty() ? "" : ", ") + cubeFaceName(f);
     return "cube faces reaching the view: " + (list.empty() ? std::string("none") : list) +
            " (the others' passes record no work)";
 }

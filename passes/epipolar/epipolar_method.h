@@ -22,7 +22,8 @@ class EpipolarMethod final : public MethodUnit {
     std::vector<SettingsField> settingsFields() const override;
     std::optional<lightscatter::SeedFigure> seedFigure(lightscatter::Profile p) const override;
     bool readsTable(const LightSetup& light) const override;
-    std::vector<CpuWork> prepare(LightData*, LightFrame& frame,
+    std::unique_ptr<LightData> makeData() const override;
+    std::vector<CpuWork> prepare(LightData* data, LightFrame&,
                                  const LightSetup& light) const override;
     ChainOptions options(const LightSetup& light, const LightData*,
                          const ChainOptions*) const override;

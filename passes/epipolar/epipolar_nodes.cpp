@@ -3,17 +3,17 @@
 #include <array>
 #include <string>
 
-#include "shared/shared_nodes.h"
-
 namespace ls {
 
 EpipolarOutputs addEpipolarNodes(rg::RenderGraph& g, const EpipolarInputs& in,
                                  const EpipolarOptions& options) {
     const EpipolarSizes& sizes = options.sizes;
     const FrameContext& frame = in.frame;
-    const rg::ImageRef endPoints = addSliceEndPoints(g, {frame}, sizes);
-    const EpipolarCoordinates samples = addEpipolarCoordinates(g, {frame, endPoints}, sizes);
-    rg::ImageRef sources = addRefineSamples(g, {frame, samples.epipolarZ}, sizes);
+    const EpipolarContext epipolar = addUploadEpipolarConstants(g, {frame.values});
+    const rg::ImageRef endPoints = addSliceEndPoints(g, {frame, epipolar}, sizes);
+    const EpipolarCoordinates samples =
+        addEpipolarCoordinates(g, {frame, epipolar, endPoints}, sizes);
+    rg::ImageRef sources = addRefineSamples(g, {frame, epipolar, samples.epipolarZ}, sizes);
     rg::ImageRef marking = addMarkRayMarchSamples(g, {frame, sources, samples.epipolarStencil});
     // The shadow map's part: the line of every slice in it, the trees along those lines and the
     // march. A point light's cube map repeats it per face, each face adding its part of every ray
@@ -22,35 +22,34 @@ EpipolarOutputs addEpipolarNodes(rg::RenderGraph& g, const EpipolarInputs& in,
     struct Lines {
         rg::ImageRef uvFrame, trees;
     };
-    auto lines = [&](const FrameContext& light) {
-        const rg::ImageRef uvFrame = addSliceUvFrame(g, {light, endPoints}, sizes);
+    // Each takes the light's epipolar constants, or a cube face's.
+    auto lines = [&](const EpipolarContext& e) {
+        const rg::ImageRef uvFrame = addSliceUvFrame(g, {frame, e, endPoints}, sizes);
         return Lines{uvFrame, options.minMaxTrees
-                                  ? addMinMaxTrees(g, {light, in.light, uvFrame}, sizes)
+                                  ? addMinMaxTrees(g, {frame, e, in.light, uvFrame}, sizes)
                                   : rg::ImageRef{}};
     };
-    auto march = [&](const FrameContext& light, const Lines& l, rg::ImageRef accumulate,
+    auto march = [&](const EpipolarContext& e, const Lines& l, rg::ImageRef accumulate,
                      bool overwrite) {
         const EpipolarRayMarch m =
             addEpipolarRayMarch(g,
-                                {light, in.light, samples.coordinates, samples.epipolarZ, l.uvFrame,
-                                 marking, l.trees, accumulate, counts},
+                                {frame, e, in.light, samples.coordinates, samples.epipolarZ,
+                                 l.uvFrame, marking, l.trees, accumulate, counts},
                                 {sizes, overwrite});
         counts = m.stepCounts;
         return m.marched;
     };
     rg::ImageRef marched;
     Lines single;
-    std::array<FrameContext, 6> faces;
+    std::array<EpipolarContext, 6> faces;
     const std::string suffix = g.nameSuffix();
     if (!options.cubeShadow) {
-        single = lines(frame);
-        marched = march(frame, single, {}, false);
+        single = lines(epipolar);
+        marched = march(epipolar, single, {}, false);
     } else {
         for (uint32_t face = 0; face < 6; ++face) {
             g.setNameSuffix(suffix + " (cube face " + cubeFaceName(static_cast<int>(face)) + ")");
-            faces[face] = frame;
-            faces[face].face = static_cast<int>(face);
-            faces[face].constants = addUploadConstants(g, {frame.values, faces[face].face});
+            faces[face] = addUploadEpipolarConstants(g, {frame.values, static_cast<int>(face)});
             marched = march(faces[face], lines(faces[face]), marched, false);
         }
         g.setNameSuffix(suffix);
@@ -61,12 +60,12 @@ EpipolarOutputs addEpipolarNodes(rg::RenderGraph& g, const EpipolarInputs& in,
         // again, so that the six faces' trees still alias (the second build costs the trees' time
         // again, not their memory).
         const RefinedSamples refined =
-            addRefineOnInscattering(g, {frame, sources, marched, marking});
+            addRefineOnInscattering(g, {frame, epipolar, sources, marched, marking});
         sources = refined.interpolationSource;
         marking = refined.epipolarStencil;
         if (!options.cubeShadow) {
             g.setNameSuffix(suffix + " (refinement)");
-            marched = march(frame, single, marched, true);
+            marched = march(epipolar, single, marched, true);
         } else {
             for (uint32_t face = 0; face < 6; ++face) {
                 g.setNameSuffix(suffix + " (refinement, cube face " +
@@ -77,9 +76,9 @@ EpipolarOutputs addEpipolarNodes(rg::RenderGraph& g, const EpipolarInputs& in,
         g.setNameSuffix(suffix);
     }
     const rg::ImageRef interpolated = addInterpolate(g, {frame, sources, marched, marking}, sizes);
-    const UnwarpOutputs screen =
-        addUnwarp(g, {frame, in.light, endPoints, samples.epipolarZ, interpolated, in.target},
-                  {options.fixup});
+    const UnwarpOutputs screen = addUnwarp(
+        g, {frame, epipolar, in.light, endPoints, samples.epipolarZ, interpolated, in.target},
+        {options.fixup});
     if (!options.fixup) return {screen.composited, counts};
     return {
         addFixup(g, {frame,

@@ -4,8 +4,9 @@
 // declares the auxiliary textures of the seed's table with their formats (the stencil textures
 // with the depth-stencil format the device offers) and the stencil writes and tests as uses, so
 // the runtime orders the passes, derives their barriers and aliases what it can. Every node also
-// reads the frame's constants (FrameContext) and, where it says so, the light's images
-// (LightImages).
+// reads the frame's constants (FrameContext), and where it says so epipolar's own
+// (EpipolarContext) and the light's images (LightImages).
+#include "epipolar_constants.h"
 #include "shared/composite_target.h"
 #include "shared/frame_context.h"
 
@@ -16,9 +17,19 @@ struct EpipolarSizes {
     uint32_t samples = 1024;
 };
 
+// Copies this frame's epipolar constants, the light's or a cube face's (EpipolarFrame::of), into a
+// graph buffer (vkCmdUpdateBuffer, recorded per frame).
+struct UploadEpipolarConstantsInputs {
+    rg::HostDataRef<LightFrame> values;  // whose constants (its data: the EpipolarFrame)
+    int face = -1;                       // the light's own, or a cube face's (0-5)
+};
+EpipolarContext addUploadEpipolarConstants(rg::RenderGraph& g,
+                                           const UploadEpipolarConstantsInputs& in);
+
 // Entry and exit of each slice's line in NDC: RGBA32F, slices x 1.
 struct SliceEndPointsInputs {
     FrameContext frame;
+    EpipolarContext epipolar;
 };
 rg::ImageRef addSliceEndPoints(rg::RenderGraph& g, const SliceEndPointsInputs& in,
                                const EpipolarSizes& s);
@@ -27,6 +38,7 @@ rg::ImageRef addSliceEndPoints(rg::RenderGraph& g, const SliceEndPointsInputs& i
 // stencil 1.
 struct EpipolarCoordinatesInputs {
     FrameContext frame;
+    EpipolarContext epipolar;
     rg::ImageRef sliceEndPoints;
 };
 struct EpipolarCoordinates {
@@ -40,6 +52,7 @@ EpipolarCoordinates addEpipolarCoordinates(rg::RenderGraph& g, const EpipolarCoo
 // Each sample's two interpolation sources: RG16UI, samples x slices.
 struct RefineSamplesInputs {
     FrameContext frame;
+    EpipolarContext epipolar;
     rg::ImageRef epipolarZ;
 };
 rg::ImageRef addRefineSamples(rg::RenderGraph& g, const RefineSamplesInputs& in,
@@ -47,7 +60,8 @@ rg::ImageRef addRefineSamples(rg::RenderGraph& g, const RefineSamplesInputs& in,
 
 // Each slice's line in the shadow map, origin and direction: RGBA32F, slices x 1.
 struct SliceUvFrameInputs {
-    FrameContext frame;  // the light's (or the cube face's) constants
+    FrameContext frame;
+    EpipolarContext epipolar;  // the light's (or the cube face's) constants
     rg::ImageRef sliceEndPoints;
 };
 rg::ImageRef addSliceUvFrame(rg::RenderGraph& g, const SliceUvFrameInputs& in,
@@ -57,6 +71,7 @@ rg::ImageRef addSliceUvFrame(rg::RenderGraph& g, const SliceUvFrameInputs& in,
 // RG16F, light.shadowMapSize x slices.
 struct MinMaxTreesInputs {
     FrameContext frame;
+    EpipolarContext epipolar;
     LightImages light;  // its shadow map and size
     rg::ImageRef sliceUvFrame;
 };
@@ -72,12 +87,13 @@ rg::ImageRef addMarkRayMarchSamples(rg::RenderGraph& g, const MarkRayMarchInputs
 
 // Lin (or the shadowed fraction) of the ray-marching samples (stencil 2): RGBA16F, samples x
 // slices. Reads the light's images; without trees every sample is marched texel by texel.
-// A point light's cube map is marched one face per pass (frame.shared is the face's state): the
+// A point light's cube map is marched one face per pass (epipolar: the face's constants): the
 // first face's pass writes a new texture, each later one adds its part of every ray to `accumulate`
 // (and returns its new version); alpha, the sample's validity, is the first face's. The refinement
 // march (overwrite) writes its samples into `accumulate`, keeping the first march's samples.
 struct EpipolarRayMarchInputs {
     FrameContext frame;
+    EpipolarContext epipolar;
     LightImages light;
     rg::ImageRef coordinates, epipolarZ, sliceUvFrame;
     rg::ImageRef epipolarStencil;  // after the marking
@@ -98,11 +114,12 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const EpipolarRayMarchI
                                      const EpipolarRayMarchOptions& options);
 
 // Refinement on in-scattering differences: every sample whose two interpolation sources differ in
-// `marched` by more than frame.epipolar3.x (relative, per channel) or in validity becomes a
+// `marched` by more than epipolar.marching.z (relative, per channel) or in validity becomes a
 // ray-marching sample (its own source, stencil 1 -> 2), and the samples already marched leave the
 // march's stencil value (2 -> 3), so a second march at stencil 2 costs only the new samples.
 struct RefineOnInscatteringInputs {
     FrameContext frame;
+    EpipolarContext epipolar;
     rg::ImageRef interpolationSource, marched, epipolarStencil;
 };
 struct RefinedSamples {
@@ -124,7 +141,8 @@ rg::ImageRef addInterpolate(rg::RenderGraph& g, const InterpolateInputs& in,
 // every served pixel wrote 1.
 struct UnwarpInputs {
     FrameContext frame;  // its constants and depth
-    LightImages light;   // its table, where given
+    EpipolarContext epipolar;
+    LightImages light;  // its table, where given
     rg::ImageRef sliceEndPoints, epipolarZ, interpolated;
     CompositeTarget target;
 };
@@ -149,8 +167,8 @@ CompositeOutputs addFixup(rg::RenderGraph& g, const FixupInputs& in);
 
 // The whole chain, from the engine's depth to the composited color. With
 // cubeShadow (a point light's six-layer shadow map) the samples are shared by the six faces and
-// each face adds its own line frames, trees and march (frame.shared->cubeFaces; each face's
-// constants are uploaded by the chain); the fix-up marches the whole cube.
+// each face adds its own line frames, trees and march (each reading its face's epipolar constants,
+// uploaded by the chain); the fix-up marches the whole cube.
 struct EpipolarInputs {
     FrameContext frame;
     LightImages light;
@@ -163,7 +181,7 @@ struct EpipolarOptions {
     bool fixup = true;
     bool cubeShadow = false;
     // A second, stencil-limited march of the samples between two marched ones that differ
-    // (frame.epipolar3.x), before interpolation.
+    // (EpipolarConstants::marching.z), before interpolation.
     bool inscatterRefinement = false;
 };
 // The target's new versions (the chain composites its Lin where the unwarp and the fix-up make

@@ -12,5 +12,6 @@ rg::ShaderCode rayMarchShader(const ScatterSpec& spec, bool countSteps);
 // table: the point-light table is read (any light but a directional one).
 rg::ShaderCode unwarpShader(bool table, VkFormat color, bool withOutput);
 rg::ShaderCode minMaxFirstLevelShader(bool cubeShadow);
+rg::ShaderCode sliceUvFrameShader(bool cubeShadow);
 
 }  // namespace ls

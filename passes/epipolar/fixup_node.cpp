@@ -14,7 +14,7 @@ CompositeOutputs addFixup(rg::RenderGraph& g, const FixupInputs& in) {
     pass.execute([frame = in.frame, table, written, addOnly](rg::PassContext& ctx) {
         // The cap is a setting, read per frame like the other constants.
         const auto maxSteps =
-            static_cast<uint32_t>(ctx.data(frame.values).of(frame.face).epipolar2.y);
+            static_cast<uint32_t>(epipolarFrameOf(ctx.data(frame.values)).constants.marching.w);
         drawPixelMarch(ctx, frame.shared, frame.spec, table,
                        {.pipeline = "fix-up",
                         .maxSteps = maxSteps,

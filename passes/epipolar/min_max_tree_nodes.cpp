@@ -29,19 +29,21 @@ rg::ImageRef addMinMaxTrees(rg::RenderGraph& g, const MinMaxTreesInputs& in,
                             const EpipolarSizes& s) {
     const uint32_t n = in.light.shadowMapSize;
     const uint32_t levels = treeLevels(n);
+    const int face = in.epipolar.face;
     rg::ImageRef tree = g.createImage(
         "1D min/max trees", rg::ImageDesc::absolute(VK_FORMAT_R16G16_SFLOAT, n, s.slices));
     {
         auto pass = g.addPass("min/max trees level 1", rg::PassType::Compute);
         const auto& sm = samplersOf(in.frame.shared);
-        rg::BindingTable table = frameTable(pass, in.frame.constants);
+        rg::BindingTable table = epipolarTable(pass, in.frame, in.epipolar);
         table
             .sampled(LS_BINDING_TREE_SHADOW_MAP, in.light.shadowMap, sm.nearest(),
                      VK_IMAGE_ASPECT_DEPTH_BIT)
             .sampled(LS_BINDING_TREE_UV_FRAME, in.sliceUvFrame, sm.nearest());
         tree = table.storageWrite(LS_BINDING_TREE_FIRST_LEVEL, tree);
-        pass.execute([frame = in.frame, table, s, n](rg::PassContext& ctx) {
-            if (!ctx.data(frame.values).inView(frame.face)) return;  // a cube face out of view
+        pass.execute([frame = in.frame, face, table, s, n](rg::PassContext& ctx) {
+            // A cube face out of view.
+            if (!epipolarFrameOf(ctx.data(frame.values)).inView(face)) return;
             const Shared& shared = frame.shared;
             // A point light's cube map: the face's layer of the 2D array.
             const bool cube = frame.spec.cubeShadow;
@@ -58,8 +60,8 @@ rg::ImageRef addMinMaxTrees(rg::RenderGraph& g, const MinMaxTreesInputs& in,
             g.addPass("min/max trees level " + std::to_string(level), rg::PassType::Compute);
         rg::BindingTable table(pass);
         tree = table.storageReadWrite(LS_BINDING_TREE_LEVEL, tree);
-        pass.execute([frame = in.frame, table, level, n, s](rg::PassContext& ctx) {
-            if (!ctx.data(frame.values).inView(frame.face)) return;
+        pass.execute([frame = in.frame, face, table, level, n, s](rg::PassContext& ctx) {
+            if (!epipolarFrameOf(ctx.data(frame.values)).inView(face)) return;
             const Shared& shared = frame.shared;
             const auto& p = shared->pipelines.compute("min/max trees next level",
                                                       rg::spirv(ls_spirv::min_max_next_level_comp),

@@ -31,7 +31,7 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const EpipolarRayMarchI
     auto pass =
         g.addPass(trees ? "ray march with min/max trees" : "ray march", rg::PassType::Graphics);
     const auto& sm = samplersOf(in.frame.shared);
-    rg::BindingTable table = frameTable(pass, in.frame.constants);
+    rg::BindingTable table = epipolarTable(pass, in.frame, in.epipolar);
     table.sampled(LS_BINDING_MARCH_COORDINATES, in.coordinates, sm.nearest())
         .sampled(LS_BINDING_MARCH_EPIPOLAR_Z, in.epipolarZ, sm.nearest())
         .sampled(LS_BINDING_MARCH_UV_FRAME, in.sliceUvFrame, sm.nearest())
@@ -43,9 +43,10 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const EpipolarRayMarchI
     pass.countSamples();  // the samples marched (FrameReport's PassTime::samples)
     marched =
         pass.colorAttachment(marched, in.accumulate.valid() ? rg::LoadOp::Load : rg::LoadOp::Clear);
-    pass.execute([frame = in.frame, table, trees, color, adds, counts](rg::PassContext& ctx) {
+    pass.execute([frame = in.frame, face = in.epipolar.face, table, trees, color, adds,
+                  counts](rg::PassContext& ctx) {
         // A cube face out of view adds nothing (the first face's pass writes every sample's alpha).
-        if (adds && !ctx.data(frame.values).inView(frame.face)) return;
+        if (adds && !epipolarFrameOf(ctx.data(frame.values)).inView(face)) return;
         const Shared& shared = frame.shared;
         ScatterSpec spec = frame.spec;
         spec.minMaxTrees = trees;

@@ -8,7 +8,7 @@ namespace ls {
 // must rise (see refine_on_inscattering.frag) and discards the rest.
 RefinedSamples addRefineOnInscattering(rg::RenderGraph& g, const RefineOnInscatteringInputs& in) {
     auto pass = g.addPass("refine on in-scattering differences", rg::PassType::Graphics);
-    rg::BindingTable table = frameTable(pass, in.frame.constants);
+    rg::BindingTable table = epipolarTable(pass, in.frame, in.epipolar);
     table.sampled(LS_BINDING_REFINE_MARCHED, in.marched, samplersOf(in.frame.shared).nearest());
     RefinedSamples out;
     out.interpolationSource =

@@ -12,7 +12,7 @@ rg::ImageRef addRefineSamples(rg::RenderGraph& g, const RefineSamplesInputs& in,
         g.createImage("interpolation source",
                       rg::ImageDesc::absolute(VK_FORMAT_R16G16_UINT, s.samples, s.slices));
     auto pass = g.addPass("refine sample locations", rg::PassType::Compute);
-    rg::BindingTable table = frameTable(pass, in.frame.constants);
+    rg::BindingTable table = epipolarTable(pass, in.frame, in.epipolar);
     table.sampled(LS_BINDING_REFINE_EPIPOLAR_Z, in.epipolarZ,
                   samplersOf(in.frame.shared).nearest());
     sources = table.storageWrite(LS_BINDING_REFINE_SOURCES, sources);

@@ -9,7 +9,7 @@ rg::ImageRef addSliceEndPoints(rg::RenderGraph& g, const SliceEndPointsInputs& i
     const rg::ImageRef endPoints = g.createImage(
         "slice end points", rg::ImageDesc::absolute(VK_FORMAT_R32G32B32A32_SFLOAT, s.slices, 1));
     auto pass = g.addPass("slice end points", rg::PassType::Compute);
-    rg::BindingTable table = frameTable(pass, in.frame.constants);
+    rg::BindingTable table = epipolarTable(pass, in.frame, in.epipolar);
     const rg::ImageRef out = table.storageWrite(LS_BINDING_SLICE_END_POINTS_OUT, endPoints);
     pass.execute([shared = in.frame.shared, table, s](rg::PassContext& ctx) {
         const auto& p = shared->pipelines.compute(

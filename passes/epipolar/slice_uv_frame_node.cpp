@@ -1,8 +1,15 @@
 #include "epipolar_nodes.h"
+#include "epipolar_shaders.h"
 #include "shared/pass_helpers.h"
-#include "slice_uv_frame_comp.h"
+#include "shared/shader_variant.h"
+#include "slice_uv_frame_comp_variants.h"
 
 namespace ls {
+
+// A point light's cube map: the build that takes the face's matrix from the frame's six.
+rg::ShaderCode sliceUvFrameShader(bool cubeShadow) {
+    return pickShader(ls_spirv::slice_uv_frame_comp_variants, {{"LS_CUBE_SHADOW", cubeShadow}});
+}
 
 rg::ImageRef addSliceUvFrame(rg::RenderGraph& g, const SliceUvFrameInputs& in,
                              const EpipolarSizes& s) {
@@ -10,17 +17,18 @@ rg::ImageRef addSliceUvFrame(rg::RenderGraph& g, const SliceUvFrameInputs& in,
         g.createImage("slice uv origin and direction",
                       rg::ImageDesc::absolute(VK_FORMAT_R32G32B32A32_SFLOAT, s.slices, 1));
     auto pass = g.addPass("slice uv origin and direction", rg::PassType::Compute);
-    rg::BindingTable table = frameTable(pass, in.frame.constants);
+    rg::BindingTable table = epipolarTable(pass, in.frame, in.epipolar);
     table.sampled(LS_BINDING_UV_FRAME_END_POINTS, in.sliceEndPoints,
                   samplersOf(in.frame.shared).nearest());
     uvFrame = table.storageWrite(LS_BINDING_UV_FRAME_OUT, uvFrame);
-    pass.execute([frame = in.frame, table, s](rg::PassContext& ctx) {
+    pass.execute([frame = in.frame, face = in.epipolar.face, table, s](rg::PassContext& ctx) {
         // A cube face out of view: no ray reads its lines.
-        if (!ctx.data(frame.values).inView(frame.face)) return;
+        if (!epipolarFrameOf(ctx.data(frame.values)).inView(face)) return;
         const Shared& shared = frame.shared;
-        const auto& p = shared->pipelines.compute("slice uv origin and direction",
-                                                  rg::spirv(ls_spirv::slice_uv_frame_comp),
-                                                  table.layout(), 0, {});
+        const bool cube = frame.spec.cubeShadow;
+        const auto& p = shared->pipelines.compute(
+            cube ? "slice uv origin and direction (cube face)" : "slice uv origin and direction",
+            sliceUvFrameShader(cube), table.layout(), 0, {});
         p.bind(ctx.cmd());
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         ctx.vk().CmdDispatch(ctx.cmd(), groupCount(s.slices, 64), 1, 1);

@@ -31,7 +31,7 @@ UnwarpOutputs addUnwarp(rg::RenderGraph& g, const UnwarpInputs& in, const Unwarp
     UnwarpOutputs out;
     auto pass = g.addPass("unwarp epipolar to screen", rg::PassType::Graphics);
     const auto& sm = samplersOf(in.frame.shared);
-    rg::BindingTable table = frameTable(pass, in.frame.constants);
+    rg::BindingTable table = epipolarTable(pass, in.frame, in.epipolar);
     table.sampled(LS_BINDING_UNWARP_END_POINTS, in.sliceEndPoints, sm.nearest())
         .sampled(LS_BINDING_UNWARP_EPIPOLAR_Z, in.epipolarZ, sm.nearest())
         .sampled(LS_BINDING_UNWARP_INSCATTER, in.interpolated, sm.nearest())

@@ -7,8 +7,8 @@
 namespace ls {
 
 inline FrameContext frameContext(const ChainInputs& in, const ChainConfig& c) {
-    return {in.shared, c.spec,          in.values,          -1, in.constants, in.depth,
-            in.screen, in.depthStencil, in.coordinateFormat};
+    return {in.shared, c.spec,    in.values,       in.constants,
+            in.depth,  in.screen, in.depthStencil, in.coordinateFormat};
 }
 
 inline LightImages lightImages(const ChainInputs& in, const ChainConfig& c) {

@@ -19,6 +19,6 @@ struct FrameConstants {
 // Only vec4 and mat4 members: std140 packs them as C++ does, so the sizes agree exactly when no
 // member has padding of its own.
 static_assert(sizeof(glm::vec4) == 16 && alignof(glm::vec4) <= 16 && sizeof(glm::mat4) == 64);
-static_assert(sizeof(FrameConstants) == 3 * 64 + 21 * 16 + 6 * 64, "std140 layout of frame.glsl");
+static_assert(sizeof(FrameConstants) == 3 * 64 + 17 * 16 + 6 * 64, "std140 layout of frame.glsl");
 
 }  // namespace ls

@@ -14,12 +14,9 @@ namespace ls {
 struct FrameContext {
     Shared shared;     // the device's samplers and pipelines (null for the budget's graph)
     ScatterSpec spec;  // the light's shader options
-    // The light's values of the frame being recorded, and which of them: -1 the light's own, 0-5
-    // a cube face's (epipolar's per-face chains).
-    rg::HostDataRef<LightFrame> values;
-    int face = -1;
-    rg::BufferRef constants;  // the light's (or the face's) constants, uploaded by an earlier pass
-    rg::ImageRef depth;       // the engine's depth buffer
+    rg::HostDataRef<LightFrame> values;  // the light's values of the frame being recorded
+    rg::BufferRef constants;             // the light's constants, uploaded by an earlier pass
+    rg::ImageRef depth;                  // the engine's depth buffer
     VkExtent2D screen{0, 0};
     VkFormat depthStencil = VK_FORMAT_UNDEFINED;  // for the stencil textures
     // Epipolar's coordinate texture: R16G16_UNORM (NDC * 0.5 + 0.5) or R32G32_SFLOAT (NDC); the

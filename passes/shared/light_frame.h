@@ -5,8 +5,6 @@
 // across frames, or frames recorded ahead, never read values someone changed since.
 #include <vulkan/vulkan.h>
 
-#include <array>
-
 #include "frame_constants.h"
 
 namespace ls {
@@ -21,20 +19,11 @@ struct LightData {
 
 struct LightFrame {
     FrameConstants constants{};
-    // A point light's cube shadow map under epipolar: the constants as seen through each face
-    // (+X, -X, +Y, -Y, +Z, -Z), lightViewProj the face's matrix and cubeFace.x its index, and
-    // cubeFace.y 1 where the face's frustum reaches the view: a face out of view keeps its passes
-    // in the graph (a face moving into view rebuilds nothing) and they record no work.
-    std::array<FrameConstants, 6> faces{};
     const LightData* data = nullptr;  // the method's prepare() of this frame (null: none)
     // The pixels whose rays may cross the light's volume this frame (lightScreenRect): the
     // per-pixel marches draw only there.
     VkRect2D screenRect{{0, 0}, {0, 0}};
     bool fillTable = false;  // the light's point-light table is (re)filled this frame
-
-    // face < 0: the light's own constants.
-    const FrameConstants& of(int face) const { return face < 0 ? constants : faces[face]; }
-    bool inView(int face) const { return face < 0 || faces[face].cubeFace.y > 0.5f; }
 };
 
 // The frame-wide value the plugin's tiling noise node reads: the noise is made in the first frame

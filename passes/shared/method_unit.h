@@ -122,8 +122,8 @@ class MethodUnit {
     virtual bool readsNoise(const LightSetup&) const { return false; }
     // The light's state across frames; null when the method keeps none.
     virtual std::unique_ptr<LightData> makeData() const { return nullptr; }
-    // This frame's CPU work for the light, into `data` (made by makeData()) and `frame` (whose
-    // constants are filled already; a cube-shadowed light's faces).
+    // This frame's CPU work for the light, into `data` (made by makeData()); `frame`'s constants
+    // are filled already.
     virtual std::vector<CpuWork> prepare(LightData*, LightFrame&, const LightSetup&) const {
         return {};
     }

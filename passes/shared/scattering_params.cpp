@@ -83,8 +83,9 @@ glm::mat4 rayBasisOf(const glm::mat4& projection, const glm::mat4& view) {
 }  // namespace
 
 FrameConstants makeFrameConstants(const CameraParams& camera, const LightParams& light,
-                                  const MediumParams& medium, const EpipolarSettings& settings,
-                                  VkExtent2D screen, const TableLayout& table) {
+                                  const MediumParams& medium, const FrameParams& params,
+                                  const TableLayout& table) {
+    const VkExtent2D screen = params.screen;
     FrameConstants f{};
     f.viewProj = camera.projection * camera.view;
     f.rayBasis = rayBasisOf(camera.projection, camera.view);
@@ -114,17 +115,20 @@ FrameConstants makeFrameConstants(const CameraParams& camera, const LightParams&
                    camera.nearPlane, camera.farPlane};
     const float size = static_cast<float>(
         std::max(light.shadowMapSize > 0 ? light.shadowMapSize : light.lightColorSize, 1u));
-    f.shadowInfo = {size, 1.0f / size, light.shadowReversedZ ? 1.0f : 0.0f,
-                    settings.shadowDepthBias};
-    f.epipolar = {static_cast<float>(settings.slices), static_cast<float>(settings.samples),
-                  static_cast<float>(settings.initialStep), settings.refinementThreshold};
-    f.epipolar2 = {settings.bilateralThreshold, static_cast<float>(settings.fixupMaxSteps),
-                   static_cast<float>(treeLevels(light.shadowMapSize)),
-                   settings.interpolateFraction ? 1.0f : 0.0f};
-    f.cubeFace = {0.0f, 1.0f, 0.0f, 0.0f};  // no per-face pass: in view
-    f.epipolar3 = {settings.inscatterRefinementThreshold, 0.0f, 0.0f, 0.0f};
+    f.shadowInfo = {size, 1.0f / size, light.shadowReversedZ ? 1.0f : 0.0f, light.shadowDepthBias};
     f.lutInfo = {table.logRange, static_cast<float>(table.width), static_cast<float>(table.height),
                  0.0f};
+    // Seed 004's I / (a1 r^2 + a0) as (I / a1) / (r^2 + a0 / a1); the floor keeps a ray through
+    // the light finite when a0 is 0, as the floor on r0 does for the full model; the ceilings
+    // keep a denormal a1 from making them infinite.
+    const float a1 = params.simplifiedA1;
+    f.simplified = {std::clamp(params.simplifiedA0 / a1, 1e-12f, 1e30f), std::min(1.0f / a1, 1e30f),
+                    0.0f, 0.0f};
+    const VkExtent2D texels = params.maxScreen.width != 0 ? params.maxScreen : screen;
+    f.screenTexels = {static_cast<float>(texels.width), static_cast<float>(texels.height),
+                      static_cast<float>(screen.width) / static_cast<float>(texels.width),
+                      static_cast<float>(screen.height) / static_cast<float>(texels.height)};
+    f.linStorage = {params.linStorage, 1.0f / params.linStorage, params.preExposure, 0.0f};
     return f;
 }
 

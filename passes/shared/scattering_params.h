@@ -46,6 +46,7 @@ struct LightParams {
     // texel of it, as a shadowed one takes one per shadow-map texel.
     uint32_t lightColorSize = 0;
     bool shadowReversedZ = false;
+    float shadowDepthBias = 0.0f;  // added to the ray's light-space depth before comparing
 };
 
 struct MediumParams {
@@ -56,21 +57,6 @@ struct MediumParams {
     MiePhase phase = MiePhase::CornetteShanks;
     float maxDistance = 1000.0f;
     glm::vec3 betaT() const { return betaR + betaM + sigmaA; }
-};
-
-struct EpipolarSettings {
-    uint32_t slices = 1024;
-    uint32_t samples = 1024;
-    uint32_t initialStep = 16;
-    float refinementThreshold = 0.03f;
-    float inscatterRefinementThreshold = 0.0f;  // 0: no refinement on the marched samples
-    float bilateralThreshold = 0.1f;
-    bool minMaxTrees = true;
-    bool bilinearShadow = true;
-    bool fixup = true;
-    uint32_t fixupMaxSteps = 0;
-    float shadowDepthBias = 0.0f;
-    bool interpolateFraction = true;  // samples carry Lin / unshadowed Lin instead of Lin
 };
 
 // Seed 002's view-aligned planes (the planes method; the beam trees sample with them too).
@@ -124,9 +110,22 @@ struct LightOnScreen {
 };
 LightOnScreen projectLight(const CameraParams& camera, const LightParams& light);
 
+// What the frame constants hold besides the camera, the light, the medium and the table, as plain
+// values the plugin has: the screen and its textures' size, and how Lin is stored and scaled.
+struct FrameParams {
+    VkExtent2D screen{0, 0};
+    // The size of the screen-sized textures, the plugin's maxRenderSize; 0: the screen's.
+    VkExtent2D maxScreen{0, 0};
+    // Seed 004's simplified light model, I / (a1 r^2 + a0) (read with kSimplifiedModel only).
+    float simplifiedA0 = 0.0f;
+    float simplifiedA1 = 1.0f;
+    float linStorage = 1.0f;   // the power of two Lin is stored with (plugin_api/src/lin_storage.h)
+    float preExposure = 1.0f;  // the engine's: the composite adds preExposure Lin to its color
+};
+
 FrameConstants makeFrameConstants(const CameraParams& camera, const LightParams& light,
-                                  const MediumParams& medium, const EpipolarSettings& settings,
-                                  VkExtent2D screen, const TableLayout& table);
+                                  const MediumParams& medium, const FrameParams& params,
+                                  const TableLayout& table);
 
 // A point light's cube face by its layer (Vulkan's order +X, -X, +Y, -Y, +Z, -Z), for names.
 const char* cubeFaceName(int face);

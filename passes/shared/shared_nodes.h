@@ -9,7 +9,6 @@ namespace ls {
 // Copies this frame's constants into a graph buffer (vkCmdUpdateBuffer, recorded per frame).
 struct UploadConstantsInputs {
     rg::HostDataRef<LightFrame> values;  // whose constants
-    int face = -1;                       // the light's own, or a cube face's (0-5)
 };
 rg::BufferRef addUploadConstants(rg::RenderGraph& graph, const UploadConstantsInputs& in);
 

@@ -60,6 +60,7 @@ void setupLight(ls::LightSetup& s, const LightInput& light, const LightPaths& at
     s.light.radius = l.radius;
     s.light.shadowMapSize = l.shadowMapSize;
     s.light.shadowReversedZ = l.shadowReversedZ;
+    s.light.shadowDepthBias = s.settings.shadowDepthBias;
     if (l.type == LightType::Point && l.shadowMapSize > 0) {
         for (size_t i = 0; i < 6; ++i)
             s.light.cubeFaceViewProj[i] = checkCubeFace(

@@ -194,34 +194,13 @@ struct Plugin::Impl {
     ls::FrameConstants frameConstants(const ls::LightSetup& setup) const {
         const ls::TableLayout table =
             ls::tableLayoutFor(setup.medium, setup.light.radius, ls::kTableWidth, ls::kTableHeight);
-        const EpipolarSettings& e = setup.settings.epipolar;
-        ls::EpipolarSettings epipolar;
-        epipolar.slices = e.slices;
-        epipolar.samples = e.samplesPerSlice;
-        epipolar.initialStep = e.initialSampleStep;
-        epipolar.refinementThreshold = e.refinementThreshold;
-        epipolar.inscatterRefinementThreshold = e.inscatterRefinementThreshold;
-        epipolar.bilateralThreshold = e.bilateralThreshold;
-        epipolar.fixupMaxSteps = e.fixupMaxSteps;
-        epipolar.shadowDepthBias = setup.settings.shadowDepthBias;
-        epipolar.interpolateFraction = e.interpolation == Interpolation::ShadowedFraction;
-        ls::FrameConstants c = ls::makeFrameConstants(setup.camera, setup.light, setup.medium,
-                                                      epipolar, setup.screen, table);
-        // Seed 004's I / (a1 r^2 + a0) as (I / a1) / (r^2 + a0 / a1); the floor keeps a ray through
-        // the light finite when a0 is 0, as the floor on r0 does for the full model; the ceilings
-        // keep a denormal a1 from making them infinite.
-        const float a1 = setup.settings.simplifiedA1;
-        c.simplified = {std::clamp(setup.settings.simplifiedA0 / a1, 1e-12f, 1e30f),
-                        std::min(1.0f / a1, 1e30f), 0.0f, 0.0f};
-        // Screen-sized textures are maxRenderSize's, when there is one.
-        const VkExtent2D texels = maxRenderSize.width != 0 ? maxRenderSize : setup.screen;
-        c.screenTexels = {
-            static_cast<float>(texels.width), static_cast<float>(texels.height),
-            static_cast<float>(setup.screen.width) / static_cast<float>(texels.width),
-            static_cast<float>(setup.screen.height) / static_cast<float>(texels.height)};
-        const float storage = detail::linStorageScale(setup);
-        c.linStorage = {storage, 1.0f / storage, setup.preExposure, 0.0f};
-        return c;
+        const ls::FrameParams params{.screen = setup.screen,
+                                     .maxScreen = maxRenderSize,
+                                     .simplifiedA0 = setup.settings.simplifiedA0,
+                                     .simplifiedA1 = setup.settings.simplifiedA1,
+                                     .linStorage = detail::linStorageScale(setup),
+                                     .preExposure = setup.preExposure};
+        return ls::makeFrameConstants(setup.camera, setup.light, setup.medium, params, table);
     }
 
     // The frame N - framesInFlight and everything before it have completed (the engine's promise

@@ -14,7 +14,7 @@ void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     vec4 ends = texelFetch(sliceEndPoints, ivec2(p.y, 0), 0);
     if (ends.x <= INVALID_SLICE + 1.0) discard;
-    float t = float(p.x) / max(frame.epipolar.y - 1.0, 1.0);
+    float t = float(p.x) / max(epipolar.sampling.y - 1.0, 1.0);
     vec2 pos = mix(ends.xy, ends.zw, t);
     if (!insideBoundary(pos, 1e-5)) discard;
     ivec2 pixel = clamp(ivec2(floor(ndcToPixel(pos))), ivec2(0), ivec2(frame.screenSize.xy) - 1);

@@ -2,6 +2,7 @@
 // it, and the inverse (which slice a pixel lies on).
 #ifndef LS_EPIPOLAR_GEOMETRY_GLSL
 #define LS_EPIPOLAR_GEOMETRY_GLSL
+#include "epipolar_constants.glsl"
 #include "frame.glsl"
 
 // Pixel centres span [-1 + 1/W, 1 - 1/W] x [-1 + 1/H, 1 - 1/H] (seed 000, optimised placement).
@@ -30,7 +31,7 @@ vec2 edgeOutwardNormal(int edge) {
 
 // Where the line of slice `slice` meets the boundary: an equal share of the slices per edge.
 vec2 sliceExitPoint(float slice, out int edge) {
-    float u = (slice + 0.5) / frame.epipolar.x * 4.0;
+    float u = (slice + 0.5) / epipolar.sampling.x * 4.0;
     edge = min(int(u), 3);
     return mix(boundaryCorner(edge), boundaryCorner((edge + 1) & 3), u - float(edge));
 }
@@ -43,7 +44,7 @@ float sliceOfExitPoint(vec2 e, int edge) {
     else if (edge == 1) f = (e.y - lo.y) / (hi.y - lo.y);
     else if (edge == 2) f = (hi.x - e.x) / (hi.x - lo.x);
     else f = (hi.y - e.y) / (hi.y - lo.y);
-    return (float(edge) + clamp(f, 0.0, 1.0)) / 4.0 * frame.epipolar.x - 0.5;
+    return (float(edge) + clamp(f, 0.0, 1.0)) / 4.0 * epipolar.sampling.x - 0.5;
 }
 
 // The parameter range where o + t d is inside the boundary (tNear > tFar when it misses).

@@ -4,10 +4,11 @@
 // along the slice's line and keeps the min and max of every texel their filtering can read, so the
 // accelerated march decides exactly as visiting every texel would.
 #include "min_max_tree.glsl"
+#include "epipolar_constants.glsl"
 #include "frame.glsl"
 layout(local_size_x = 64) in;
 #if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
-layout(binding = LS_BINDING_TREE_SHADOW_MAP) uniform sampler2DArray shadowMap;  // a point light's cube: the face cubeFace.x
+layout(binding = LS_BINDING_TREE_SHADOW_MAP) uniform sampler2DArray shadowMap;  // a point light's cube: the face epipolar.cubeFace.x
 #else
 layout(binding = LS_BINDING_TREE_SHADOW_MAP) uniform sampler2D shadowMap;
 #endif
@@ -17,7 +18,7 @@ layout(binding = LS_BINDING_TREE_FIRST_LEVEL, rg16f) uniform writeonly image2D l
 
 void main() {
 #if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
-    shadowFace = int(frame.cubeFace.x);
+    shadowFace = int(epipolar.cubeFace.x);
 #endif
     int node = int(gl_GlobalInvocationID.x);
     int slice = int(gl_GlobalInvocationID.y);

@@ -5,12 +5,13 @@
 // (uv = origin + i dir) decides the visibility of the ray over (i - 1, i], split where the ray's
 // depth passes one of its texels' (march.glsl); the ray's light-space depth is affine in i, its
 // distance is perspective-correct (1/w and d/w are affine in i).
-// With LS_CUBE_SHADOW (a point light's cube map) the pass marches one face: lightViewProj is the
-// face's matrix, the look-ups read its layer, and each ray keeps only the part of it where that face
+// With LS_CUBE_SHADOW (a point light's cube map) the pass marches one face: shadowViewProj() is
+// the face's matrix, the look-ups read its layer, and each ray keeps only the part where that face
 // is the major axis, so that the six faces' passes add up to the whole ray without overlap or gap.
 // With LS_COUNT_STEPS (DebugOptions::countSteps) each invocation adds what it did into its slice's
 // row of a storage buffer (kCount* below); without it the variant has no buffer and no atomics.
 #include "camera.glsl"
+#include "epipolar_constants.glsl"
 #include "min_max_tree.glsl"
 layout(binding = LS_BINDING_MARCH_COORDINATES) uniform sampler2D coordinates;
 layout(binding = LS_BINDING_MARCH_EPIPOLAR_Z) uniform sampler2D epipolarZ;
@@ -112,7 +113,7 @@ int climb(int i, int level, int last, int n, int levels) {
 
 void marchLine(inout Inscatter acc, LineRay r, int slice) {
     int n = int(frame.shadowInfo.x);
-    int levels = int(frame.epipolar2.z);
+    int levels = int(epipolar.marching.x);
     int i = int(ceil(r.ta));
     int last = int(ceil(r.tb));
     int level = climb(i, 0, last, n, levels);
@@ -150,17 +151,17 @@ vec3 marchSample(vec3 C, vec3 v, float S, int slice) {
 #if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
     clipToCubeFaceRegion(C, v, shadowFace, t0, t1);
     // The first face's pass runs even out of view, for the alpha of every sample.
-    if (frame.cubeFace.y < 0.5) t1 = t0;
+    if (epipolar.cubeFace.y < 0.5) t1 = t0;
 #endif
     if (!(t0 < t1)) return vec3(0.0);
     Inscatter acc = beginInscatter(C, v, t0);
     float f0 = t0, f1 = t1;
-    clipToShadowFrustum(C, v, f0, f1);
+    clipToFrustum(shadowViewProj(), C, v, f0, f1);
     vec4 frameUv = texelFetch(sliceUvFrame, ivec2(slice, 0), 0);
     if (f0 < f1 && dot(frameUv.zw, frameUv.zw) > 0.0) {
         advance(acc, f0, vec3(1.0));
-        vec4 X0 = frame.lightViewProj * vec4(C + f0 * v, 1.0);
-        vec4 X1 = frame.lightViewProj * vec4(C + f1 * v, 1.0);
+        vec4 X0 = shadowViewProj() * vec4(C + f0 * v, 1.0);
+        vec4 X1 = shadowViewProj() * vec4(C + f1 * v, 1.0);
         vec2 uv0 = X0.xy / X0.w * 0.5 + 0.5, uv1 = X1.xy / X1.w * 0.5 + 0.5;
         LineRay r;
         r.origin = frameUv.xy;
@@ -180,7 +181,7 @@ vec3 marchSample(vec3 C, vec3 v, float S, int slice) {
         if (r.tb >= r.ta && offLine * frame.shadowInfo.x <= 0.5) {
             marchLine(acc, r, slice);
         } else {
-            marchFrustumSegment(acc, C, v, f0, f1, 0u, true);
+            marchFrustumSegmentOf(shadowViewProj(), acc, C, v, f0, f1, 0u, true);
             COUNT(++counted[kCountDegenerateRays]);
             COUNT(counted[kCountDegenerateSteps] += countedLookups);
         }
@@ -191,7 +192,7 @@ vec3 marchSample(vec3 C, vec3 v, float S, int slice) {
 
 void main() {
 #if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
-    shadowFace = int(frame.cubeFace.x);
+    shadowFace = int(epipolar.cubeFace.x);
 #endif
     ivec2 p = ivec2(gl_FragCoord.xy);
     vec2 ndc = texelFetch(coordinates, p, 0).xy * 2.0 - 1.0;
@@ -209,7 +210,7 @@ void main() {
     flushCounts(p.y);
 #endif
     float defined = 1.0;
-    if (frame.epipolar2.w > 0.5) {
+    if (epipolar.marching.y > 0.5) {
         float t0, t1;
         lightInterval(C, v, S, t0, t1);
         vec3 unshadowed = unshadowedInscatter(C, v, t0, t1);

@@ -11,6 +11,7 @@
 // The whole run between two differing sources is marched (not a halved step, recursively): one
 // extra march instead of log2(initial step) mark-and-march rounds, and every sample of the run
 // then reads its own value, so the edge is where the march puts it.
+#include "epipolar_constants.glsl"
 #include "frame.glsl"
 layout(binding = LS_BINDING_REFINE_MARCHED) uniform sampler2D marched;
 layout(binding = LS_BINDING_REFINE_LIN_SOURCES, rg16ui) uniform uimage2D interpolationSource;
@@ -32,6 +33,6 @@ void main() {
     if (src.x == uint(p.x) && src.y == uint(p.x)) return;  // marched already: 2 -> 3
     vec4 a = texelFetch(marched, ivec2(src.x, p.y), 0);
     vec4 b = texelFetch(marched, ivec2(src.y, p.y), 0);
-    if (!differ(a, b, frame.epipolar3.x)) discard;
+    if (!differ(a, b, epipolar.marching.z)) discard;
     imageStore(interpolationSource, p, uvec4(uint(p.x), uint(p.x), 0u, 0u));  // 1 -> 2
 }

@@ -6,6 +6,7 @@
 // bit per break in shared memory, then finds its two sources with findMSB/findLSB on the masks.
 // Near a point or spot light's screen position the first section of each line is cut geometrically
 // (below).
+#include "epipolar_constants.glsl"
 #include "frame.glsl"
 layout(local_size_x = 128) in;
 layout(binding = LS_BINDING_REFINE_EPIPOLAR_Z) uniform sampler2D epipolarZ;
@@ -43,8 +44,8 @@ void main() {
     int local = int(gl_LocalInvocationID.x);
     int base = int(gl_WorkGroupID.x) * 128;
     int slice = int(gl_WorkGroupID.y);
-    int samples = int(frame.epipolar.y);
-    int step = int(frame.epipolar.z);
+    int samples = int(epipolar.sampling.y);
+    int step = int(epipolar.sampling.z);
     int s = base + local;
     if (local < 4) breaks[local] = 0u;
     barrier();
@@ -54,7 +55,7 @@ void main() {
     bool valid = validZ(z), validNext = validZ(zNext);
     // A change of validity is a break too, so no sample interpolates from outside the screen.
     bool brk = valid != validNext ||
-               (valid && abs(zNext - z) > frame.epipolar.w * min(z, zNext));
+               (valid && abs(zNext - z) > epipolar.sampling.w * min(z, zNext));
     if (brk) atomicOr(breaks[local >> 5], 1u << (local & 31));
     barrier();
     if (s >= samples) return;

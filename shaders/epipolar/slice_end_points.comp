@@ -9,7 +9,7 @@ layout(binding = LS_BINDING_SLICE_END_POINTS_OUT, rgba32f) uniform writeonly ima
 
 void main() {
     int slice = int(gl_GlobalInvocationID.x);
-    if (slice >= int(frame.epipolar.x)) return;
+    if (slice >= int(epipolar.sampling.x)) return;
     int edge;
     vec2 exitPoint = sliceExitPoint(float(slice), edge);
     vec2 light = frame.lightScreen.xy;
@@ -27,7 +27,7 @@ void main() {
         }
         entry = light + max(tNear, 0.0) * d;
     }
-    float samples = frame.epipolar.y;
+    float samples = epipolar.sampling.y;
     float pixels = length((exitPoint - entry) * frame.screenSize.xy * 0.5);
     float stretch = max((samples - 1.0) / max(pixels, 1e-3), 1.0);
     exitPoint = entry + (exitPoint - entry) * stretch;

@@ -7,6 +7,7 @@
 // projected direction is Xv.xy Xc.w - Xc.xy Xv.w at every d, the same up to a positive factor for
 // every ray of the slice. The origin is where that line enters the [0,1]^2 square; the direction is
 // scaled to one texel per step along its major axis. (0,0,0,0) marks a slice that misses the map.
+// With LS_CUBE_SHADOW the map is one face of a point light's cube (shadowViewProj()).
 #include "epipolar_geometry.glsl"
 #include "camera.glsl"
 layout(local_size_x = 64) in;
@@ -15,7 +16,7 @@ layout(binding = LS_BINDING_UV_FRAME_OUT, rgba32f) uniform writeonly image2D sli
 
 void main() {
     int slice = int(gl_GlobalInvocationID.x);
-    if (slice >= int(frame.epipolar.x)) return;
+    if (slice >= int(epipolar.sampling.x)) return;
     vec4 ends = texelFetch(sliceEndPoints, ivec2(slice, 0), 0);
     if (ends.x <= INVALID_SLICE + 1.0) {
         imageStore(sliceUvFrame, ivec2(slice, 0), vec4(0.0));
@@ -23,8 +24,8 @@ void main() {
     }
     vec3 C = frame.cameraPos.xyz;
     vec3 v = rayDirection(ends.zw);
-    vec4 Xc = frame.lightViewProj * vec4(C, 1.0);
-    vec4 Xv = frame.lightViewProj * vec4(v, 0.0);
+    vec4 Xc = shadowViewProj() * vec4(C, 1.0);
+    vec4 Xv = shadowViewProj() * vec4(v, 0.0);
     vec2 dir = Xv.xy * Xc.w - Xc.xy * Xv.w;  // clip xy; uv = xy / 2 + 1/2 keeps its sign
     float size = frame.shadowInfo.x;
     if (dot(dir, dir) < 1e-24) dir = vec2(1.0, 0.0);  // the slice projects to a point

@@ -38,8 +38,8 @@ void main() {
     int edge;
     boundaryRange(light, d, tNear, tFar, edge);
     float sliceF = sliceOfExitPoint(light + tFar * d, edge);
-    int slices = int(frame.epipolar.x);
-    int samples = int(frame.epipolar.y);
+    int slices = int(epipolar.sampling.x);
+    int samples = int(epipolar.sampling.y);
     float j0f = floor(sliceF);
     float sliceW = sliceF - j0f;
 
@@ -64,7 +64,7 @@ void main() {
             if (sz <= 0.0 || w <= 0.0) continue;  // not a valid sample
             plain += w * value;
             plainWeight += w;
-            if (abs(sz - z) <= frame.epipolar2.x * z) {
+            if (abs(sz - z) <= epipolar.unwarp.x * z) {
                 sum += w * value;
                 weight += w;
             }
@@ -76,7 +76,7 @@ void main() {
     vec4 value = resolved ? sum / weight : (plainWeight > 0.0 ? plain / plainWeight : vec4(0.0));
     vec3 v = rayDirection(p);
     float S = rayLength(z, v);
-    if (frame.epipolar2.w > 0.5) {
+    if (epipolar.marching.y > 0.5) {
         vec3 C = frame.cameraPos.xyz;
         float t0, t1;
         lightInterval(C, v, S, t0, t1);

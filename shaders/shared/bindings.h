@@ -16,6 +16,8 @@
 #define LS_BINDING_NOISE 9          // the planes' tiling noise (repeating)
 #define LS_BINDING_ENGINE_COLOR 10  // composite_into.glsl: the engine's color, read-modify-written
 #define LS_BINDING_LIN_OUT 11       // composite_into.glsl: the Lin output image
+// Bindings every epipolar shader that reads them uses (shaders/epipolar/).
+#define LS_BINDING_EPIPOLAR 5  // EpipolarConstants (epipolar_constants.glsl)
 
 // Bindings of one shader each.
 #define LS_BINDING_POINT_TABLE_OUT 1       // point_table.comp

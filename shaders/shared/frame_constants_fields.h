@@ -26,15 +26,8 @@ LS_VEC4 betaM;        // rgb; w: max distance (sky)
 LS_VEC4 betaT;        // rgb; w: r0
 LS_VEC4 depthInfo;    // x: reversed z, y: infinite far, z: near, w: far
 LS_VEC4 shadowInfo;   // x: shadow-map size, y: 1/size, z: reversed z, w: depth bias
-LS_VEC4 epipolar;     // x: slices, y: samples per slice, z: initial step, w: refinement threshold
-LS_VEC4 epipolar2;    // x: bilateral threshold, y: fix-up max steps (0: all), z: tree levels,
-                      // w: 1 when samples carry the shadowed fraction instead of Lin
 LS_VEC4 lutInfo;      // x: log range of hEff / r0, y: table width, z: table height, w: -
 LS_VEC4 simplified;   // kSimplifiedModel: x: a0 / a1 (at least 1e-12), y: 1 / a1, zw: -
-LS_VEC4 cubeFace;     // x: the cube face (layer) an epipolar per-face pass marches, in the
-                      // order below (lightViewProj is then that face's matrix); y: 1 when the
-                      // face's frustum reaches the view (always 1 outside per-face passes)
-LS_VEC4 epipolar3;    // x: in-scattering refinement threshold (0: off), yzw: -
 // x: the power of two Lin is stored with between a method's passes and the composite (float16
 // targets hold at most 65504), y: 1 / x, z: the engine's pre-exposure (the composite adds z Lin)
 LS_VEC4 linStorage LS_DEFAULT(1.0f, 1.0f, 1.0f, 0.0f);

@@ -20,6 +20,7 @@
 #include "planes_frag_variants.h"
 #include "ray_march_frag_variants.h"
 #include "shared/shared_shaders.h"
+#include "slice_uv_frame_comp_variants.h"
 #include "unshadowed_frag_variants.h"
 #include "unwarp_frag_variants.h"
 
@@ -61,7 +62,7 @@ void forEachSpec(F&& f) {
 constexpr VkFormat kColors[] = {VK_FORMAT_R16G16B16A16_SFLOAT, VK_FORMAT_R32G32B32A32_SFLOAT};
 
 TEST(ShaderVariants, EpipolarNodesAskForBuiltVariants) {
-    Reached rayMarch, pixelMarch, unwarp, minMax;
+    Reached rayMarch, pixelMarch, unwarp, minMax, uvFrame;
     forEachSpec([&](const ScatterSpec& spec) {
         for (bool count : {false, true}) reach(rayMarch, rayMarchShader(spec, count));
         reach(pixelMarch, pixelMarchShader(spec));
@@ -73,11 +74,15 @@ TEST(ShaderVariants, EpipolarNodesAskForBuiltVariants) {
     for (bool table : {false, true})
         for (VkFormat color : kColors)
             for (bool out : {false, true}) reach(unwarp, unwarpShader(table, color, out));
-    for (bool cube : {false, true}) reach(minMax, minMaxFirstLevelShader(cube));
+    for (bool cube : {false, true}) {
+        reach(minMax, minMaxFirstLevelShader(cube));
+        reach(uvFrame, sliceUvFrameShader(cube));
+    }
     expectAllReached(ls_spirv::ray_march_frag_variants, rayMarch);
     expectAllReached(ls_spirv::pixel_march_frag_variants, pixelMarch);
     expectAllReached(ls_spirv::unwarp_frag_variants, unwarp);
     expectAllReached(ls_spirv::min_max_first_level_comp_variants, minMax);
+    expectAllReached(ls_spirv::slice_uv_frame_comp_variants, uvFrame);
 }
 
 TEST(ShaderVariants, ScreenLinNodesAskForBuiltVariants) {

@@ -1,0 +1,37 @@
+#include "epipolar_constants.h"
+
+#include "shared/pass_helpers.h"
+
+namespace ls {
+
+EpipolarConstants makeEpipolarConstants(const lightscatter::EpipolarSettings& s,
+                                        uint32_t shadowMapSize) {
+    const bool fraction = s.interpolation == lightscatter::Interpolation::ShadowedFraction;
+    EpipolarConstants c{};
+    c.sampling = {static_cast<float>(s.slices), static_cast<float>(s.samplesPerSlice),
+                  static_cast<float>(s.initialSampleStep), s.refinementThreshold};
+    c.marching = {static_cast<float>(treeLevels(shadowMapSize)), fraction ? 1.0f : 0.0f,
+                  s.inscatterRefinementThreshold, static_cast<float>(s.fixupMaxSteps)};
+    c.unwarp = {s.bilateralThreshold, 0.0f, 0.0f, 0.0f};
+    c.cubeFace = {-1.0f, 1.0f, 0.0f, 0.0f};
+    return c;
+}
+
+EpipolarConstants EpipolarFrame::of(int face) const {
+    EpipolarConstants c = constants;
+    if (face >= 0) c.cubeFace = {static_cast<float>(face), inView(face) ? 1.0f : 0.0f, 0.0f, 0.0f};
+    return c;
+}
+
+const EpipolarFrame& epipolarFrameOf(const LightFrame& frame) {
+    return static_cast<const EpipolarFrame&>(*frame.data);
+}
+
+rg::BindingTable epipolarTable(rg::PassBuilder& pass, const FrameContext& frame,
+                               const EpipolarContext& epipolar) {
+    rg::BindingTable table = frameTable(pass, frame.constants);
+    table.uniform(LS_BINDING_EPIPOLAR, epipolar.constants);
+    return table;
+}
+
+}  // namespace ls

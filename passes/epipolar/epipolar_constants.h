@@ -1,0 +1,54 @@
+#pragma once
+// The constants only epipolar's passes read (shaders/epipolar/epipolar_constants.glsl, std140),
+// kept out of the frame constants every method reads. The fields are written once, in
+// shaders/epipolar/epipolar_constants_fields.h, for this struct and the shaders' uniform block.
+// The method keeps a light's constants of the frame being recorded in its LightData
+// (EpipolarFrame), which its chain uploads (addUploadEpipolarConstants) once for the light and
+// once per cube face.
+#include <array>
+#include <glm/glm.hpp>
+
+#include "lightscatter/methods/epipolar.h"
+#include "rendergraph/binding_table.h"
+#include "shared/frame_context.h"
+#include "shared/scattering_params.h"
+
+namespace ls {
+
+struct EpipolarConstants {
+#define LS_VEC4 glm::vec4
+#include "shaders/epipolar/epipolar_constants_fields.h"
+#undef LS_VEC4
+};
+// Only vec4 members, as frame_constants.h's: std140 packs them as C++ does.
+static_assert(sizeof(EpipolarConstants) == 4 * 16, "std140 layout of epipolar_constants.glsl");
+
+// The light's own block (no cube face) for its settings and shadow map.
+EpipolarConstants makeEpipolarConstants(const lightscatter::EpipolarSettings& settings,
+                                        uint32_t shadowMapSize);
+
+// A light's epipolar values of one frame (EpipolarMethod::prepare): its constants, and for a cube
+// shadow map which faces reach the view. A face out of view keeps its passes in the graph (a face
+// moving into view rebuilds nothing) and they record no work.
+struct EpipolarFrame final : LightData {
+    EpipolarConstants constants;
+    std::array<bool, 6> faceInView{};
+    // The block the passes of `face` read: -1 the light's own, 0-5 a cube face's.
+    EpipolarConstants of(int face) const;
+    bool inView(int face) const { return face < 0 || faceInView[face]; }
+};
+const EpipolarFrame& epipolarFrameOf(const LightFrame& frame);
+
+// Epipolar's constants as a chain's passes read them: the light's, or a cube face's in the passes
+// that read the shadow map once per face.
+struct EpipolarContext {
+    rg::BufferRef constants;  // uploaded by an earlier pass
+    int face = -1;            // -1: the light's own; 0-5: the cube face
+};
+
+// A binding table whose first rows are the frame constants and epipolar's (LS_BINDING_FRAME,
+// LS_BINDING_EPIPOLAR).
+rg::BindingTable epipolarTable(rg::PassBuilder& pass, const FrameContext& frame,
+                               const EpipolarContext& epipolar);
+
+}  // namespace ls

@@ -1,0 +1,22 @@
+// Epipolar's own constants (epipolar_constants_fields.h, std140), beside the frame's (frame.glsl):
+// the light's, or in a cube face's passes the face's.
+#ifndef LS_EPIPOLAR_CONSTANTS_GLSL
+#define LS_EPIPOLAR_CONSTANTS_GLSL
+#include "bindings.h"
+#include "frame.glsl"
+
+layout(std140, set = 0, binding = LS_BINDING_EPIPOLAR) uniform EpipolarConstants {
+#define LS_VEC4 vec4
+#include "epipolar_constants_fields.h"
+#undef LS_VEC4
+} epipolar;
+
+// World -> clip of the shadow map the pass reads. With LS_CUBE_SHADOW the pass reads one face of a
+// point light's cube, as a spot light's map: the face's matrix, from the frame's six.
+#if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
+mat4 shadowViewProj() { return frame.cubeFaceViewProj[int(epipolar.cubeFace.x)]; }
+#else
+mat4 shadowViewProj() { return frame.lightViewProj; }
+#endif
+
+#endif

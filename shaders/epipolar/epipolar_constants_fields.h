@@ -1,0 +1,14 @@
+// The fields of EpipolarConstants, the constants only epipolar's passes read, written once for both
+// languages as the frame constants' are (shaders/shared/frame_constants_fields.h):
+// epipolar_constants.glsl declares its std140 uniform block with them,
+// passes/epipolar/epipolar_constants.h its C++ struct, each defining LS_VEC4 before including this.
+// Only vec4 members: std140 then places every member where the C++ struct does, and
+// epipolar_constants.h checks the size of the whole.
+LS_VEC4 sampling;  // x: slices, y: samples per slice, z: initial step, w: refinement threshold
+// x: min/max tree levels, y: 1 when samples carry the shadowed fraction instead of Lin, z: the
+// in-scattering refinement threshold (0: off), w: the fix-up's max steps (0: all)
+LS_VEC4 marching;
+LS_VEC4 unwarp;  // x: bilateral threshold, yzw: -
+// x: the cube face (layer) a per-face pass marches, in Vulkan's order +X, -X, +Y, -Y, +Z, -Z, -1
+// in the light's own block; y: 1 when that face's frustum reaches the view (1 in the light's own)
+LS_VEC4 cubeFace;
