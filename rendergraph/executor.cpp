@@ -39,8 +39,8 @@ VkQueryPool createQueryPool(const Device& device, VkQueryType type, uint32_t cou
 }  // namespace
 
 GraphExecutor::GraphExecutor(const Device& device, RenderGraph& graph, CompiledGraph compiled,
-                             const TransientHeap* heap)
-    : device_(device), graph_(graph), compiled_(std::move(compiled)), heap_(heap) {
+                             const TransientHeap* heap, PersistentStore* store)
+    : device_(device), graph_(graph), compiled_(std::move(compiled)), heap_(heap), store_(store) {
     const VkDevice dev = device_.device();
     images_.resize(graph_.resources().size());
     buffers_.resize(graph_.resources().size(), VK_NULL_HANDLE);
@@ -496,6 +496,8 @@ uint64_t GraphExecutor::record(VkCommandBuffer cmd, uint64_t frame, const FrameD
         throw VulkanError("the transient heap was replaced since this graph was placed in it");
     if (frame == 0) frame = lastFrame_ + 1;
     const uint32_t slot = static_cast<uint32_t>(frame % kTimingSlots);
+    // Before any command: what it makes (a new persistent image) may fail, leaving `cmd` as given.
+    bindPersistent(data, frame);
     refreshImports(slot);
     frameData_ = &data;
     firstQuery_ = slot * queriesPerFrame_;
@@ -553,6 +555,7 @@ uint64_t GraphExecutor::record(VkCommandBuffer cmd, uint64_t frame, const FrameD
     }
     recordBarriers(cmd, finals);
     device_.endLabel(cmd);
+    if (!rehearsing_) commitPersistent(frame);
     return frame;
 }
 
@@ -568,14 +571,17 @@ void GraphExecutor::rehearse(const FrameData& data, VkExtent2D screen) {
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     RG_VK(device_.vk().BeginCommandBuffer(cmd_, &begin));
+    rehearsing_ = true;
     try {
         record(cmd_, 0, data, nullptr, screen);
     } catch (...) {
+        rehearsing_ = false;
         device_.vk().ResetCommandBuffer(
             cmd_, 0);  // possibly inside a rendering scope: not ended, dropped
         restore();
         throw;
     }
+    rehearsing_ = false;
     RG_VK(device_.vk().EndCommandBuffer(cmd_));
     RG_VK(device_.vk().ResetCommandBuffer(cmd_, 0));
     restore();

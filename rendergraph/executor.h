@@ -51,8 +51,10 @@ class GraphExecutor {
     // With a heap, the transients are placed in its memory (TransientHeap::reserve must have made
     // room for compiled.blocks) instead of blocks of the executor's own; the heap must outlive
     // the executor, and an executor placed before the heap's generation changed must not record.
+    // With a store, the graph's persistent images and histories are its (the store must outlive
+    // the executor); a graph that declares some needs one.
     GraphExecutor(const Device& device, RenderGraph& graph, CompiledGraph compiled,
-                  const TransientHeap* heap = nullptr);
+                  const TransientHeap* heap = nullptr, PersistentStore* store = nullptr);
     ~GraphExecutor();
     GraphExecutor(const GraphExecutor&) = delete;
     GraphExecutor& operator=(const GraphExecutor&) = delete;
@@ -80,6 +82,8 @@ class GraphExecutor {
     static constexpr uint32_t kTimingSlots = 8;
     uint64_t record(VkCommandBuffer cmd, uint64_t frame = 0, const FrameData& data = {},
                     const TransientScope* before = nullptr, VkExtent2D screen = {0, 0});
+    // The passes of the last frame recorded that filled a persistent image (PassContext::wrote).
+    const std::vector<std::string>& lastFilled() const { return lastFilled_; }
     // Destroys the views of imported images made for frames up to `completed`, which the GPU
     // has finished.
     void releaseCompleted(uint64_t completed);
@@ -114,6 +118,20 @@ class GraphExecutor {
         VkImageView stencil = VK_NULL_HANDLE;
     };
 
+    // The graph's persistent images for this frame, from the store under this frame's keys (made
+    // there where new); and, once the frame is recorded, what it left in them.
+    void bindPersistent(const FrameData& data, uint64_t frame);
+    void commitPersistent(uint64_t frame);
+    struct Bound {
+        PersistentStore::Entry* entry = nullptr;
+        uint32_t image = 0;  // which of the entry's images
+        HistoryState history;
+        bool wrote = false;
+        uint64_t stamp = 0;
+        std::string writer;  // the pass that filled it
+    };
+    Bound& bound(ImageRef ref, const char* asking);
+
     void destroy();
     void createMemory();
     void createResource(uint32_t resource);
@@ -130,6 +148,10 @@ class GraphExecutor {
     RenderGraph& graph_;
     CompiledGraph compiled_;
     const TransientHeap* heap_ = nullptr;
+    PersistentStore* store_ = nullptr;
+    std::vector<Bound> bound_;  // by resource: this frame's persistent images
+    bool rehearsing_ = false;
+    std::vector<std::string> lastFilled_;
     uint64_t heapGeneration_ = 0;
     std::vector<VkDeviceMemory> blocks_;  // the heap's, or the executor's own
     std::vector<ImageObjects> images_;    // by resource; imported ones refreshed per frame

@@ -43,6 +43,16 @@ class FrameData {
     }
     // The value for (graph, id), or null where none was given or its type differs.
     const void* find(uint32_t graph, uint32_t id, const void* tag) const;
+    template <typename T>
+    const T* find(HostDataRef<T> ref) const {
+        return static_cast<const T*>(find(ref.graph, ref.id, detail::hostDataTag<T>()));
+    }
+    // A camera cut: every history the frame reads is taken as holding nothing (HistoryState).
+    FrameData& discardHistories(bool discard) {
+        discardHistories_ = discard;
+        return *this;
+    }
+    bool discardsHistories() const { return discardHistories_; }
 
   private:
     struct Entry {
@@ -52,6 +62,7 @@ class FrameData {
     };
     void put(uint32_t graph, uint32_t id, const void* tag, const void* value);
     std::vector<Entry> entries_;
+    bool discardHistories_ = false;
 };
 
 }  // namespace rg

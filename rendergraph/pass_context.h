@@ -8,6 +8,7 @@
 
 #include "device.h"
 #include "host_data.h"
+#include "persistent_store.h"
 #include "resources.h"
 
 namespace rg {
@@ -50,6 +51,15 @@ class PassContext {
     const T& data(HostDataRef<T> ref) const {
         return *static_cast<const T*>(hostData(ref.graph, ref.id, detail::hostDataTag<T>()));
     }
+
+    // A persistent image's state as the frames recorded before this one left it
+    // (RenderGraph::persistentImage), and what this frame leaves in it: a pass that fills the image
+    // says so, with what it filled it from (a stamp the next frames compare).
+    PersistentState persistent(ImageRef ref) const;
+    void wrote(ImageRef ref, uint64_t stamp);
+    // Whether a history's previous image holds the frame just before's, and for how many frames
+    // (RenderGraph::historyImages; either of its two images).
+    HistoryState history(ImageRef ref) const;
 
     VkExtent2D renderExtent() const;                   // graphics passes
     const RenderingFormats& renderingFormats() const;  // for pipeline creation

@@ -56,6 +56,41 @@ ImageRef RenderGraph::importImage(std::string name, const ImportedImage& image, 
     return ImageRef{id_, static_cast<uint32_t>(resources_.size() - 1), 0};
 }
 
+namespace {
+
+ImportedImage persistentImport(const PersistentImageDesc& d) {
+    ImportedImage i;
+    i.format = d.format;
+    i.extent = d.extent;
+    i.depth = d.depth;
+    i.usage = d.usage;
+    i.initialLayout = i.finalLayout = d.layout;
+    i.initialStages = i.finalStages = d.stages;
+    i.initialAccess = d.waitAccess;
+    i.finalAccess = d.handAccess;
+    return i;
+}
+
+}  // namespace
+
+ImageRef RenderGraph::persistentImage(std::string name, const PersistentImageDesc& desc,
+                                      HostDataRef<PersistentKey> key) {
+    const ImageRef ref = importImage(name, persistentImport(desc));
+    resources_[ref.id].persistent = ResourceDecl::Persistent{std::move(name), key, desc, 0};
+    return ref;
+}
+
+RenderGraph::HistoryImages RenderGraph::historyImages(std::string name,
+                                                      const PersistentImageDesc& desc,
+                                                      HostDataRef<PersistentKey> key) {
+    HistoryImages h;
+    h.previous = importImage(name, persistentImport(desc));
+    resources_[h.previous.id].persistent = ResourceDecl::Persistent{name, key, desc, 1};
+    h.current = importImage(name + " (next)", persistentImport(desc));
+    resources_[h.current.id].persistent = ResourceDecl::Persistent{std::move(name), key, desc, 2};
+    return h;
+}
+
 BufferRef RenderGraph::importBuffer(std::string name, const ImportedBuffer& buffer) {
     ResourceDecl r;
     r.name = std::move(name) + nameSuffix_;

@@ -10,6 +10,7 @@
 
 #include "host_data.h"
 #include "pass_decl.h"
+#include "persistent_store.h"
 #include "resources.h"
 
 namespace rg {
@@ -26,6 +27,17 @@ struct ResourceDecl {
     VkExtent2D declaredExtent{0, 0};  // the import's extent when the graph was compiled
     bool extentVaries = false;        // a frame's image may be smaller (RenderGraph::importImage)
     ImportedBuffer importedBuffer;
+    // An image the graph keeps across frames (RenderGraph::persistentImage, historyImages): an
+    // import whose image the executor takes from its PersistentStore under `storeName` and this
+    // frame's key. role: 0 a persistent image; 1 a history's image the frame reads (the frame
+    // before's), 2 the one it writes.
+    struct Persistent {
+        std::string storeName;
+        HostDataRef<PersistentKey> key;
+        PersistentImageDesc desc;
+        uint8_t role = 0;
+    };
+    std::optional<Persistent> persistent;
     bool output = false;  // marked as a result: its producers are never culled
     uint32_t versionCount = 1;
 };
@@ -98,6 +110,21 @@ class RenderGraph {
     }
     const std::vector<HostDataDecl>& hostDataDecls() const { return hostData_; }
 
+    // An image the graph keeps across frames and graphs (persistent_store.h), one per name and
+    // key: `key` is given to each record(). Its first frame finds it undefined (the pass that
+    // fills it asks PassContext::persistent() whether it must), later ones find what the frames
+    // before them left, in desc.layout.
+    ImageRef persistentImage(std::string name, const PersistentImageDesc& desc,
+                             HostDataRef<PersistentKey> key);
+    // A history: two images of `desc` kept across frames, the one the frame before wrote
+    // (`previous`, read) and the one this frame writes (`current`), swapped by each frame that
+    // records it. PassContext::history() says whether `previous` holds the frame just before's.
+    struct HistoryImages {
+        ImageRef previous, current;
+    };
+    HistoryImages historyImages(std::string name, const PersistentImageDesc& desc,
+                                HostDataRef<PersistentKey> key);
+
     // Keeps the passes that produce this version (and what they need) from being culled.
     void markOutput(ImageRef image);
     void markOutput(BufferRef buffer);
@@ -121,6 +148,7 @@ class RenderGraph {
 
     uint32_t id() const { return id_; }
     const std::vector<ResourceDecl>& resources() const { return resources_; }
+    std::vector<ResourceDecl>& resources() { return resources_; }
     const std::vector<PassDecl>& passes() const { return passes_; }
     std::vector<PassDecl>& passes() { return passes_; }
     const ResourceDecl& resource(uint32_t id) const { return resources_.at(id); }

@@ -11,8 +11,11 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-COLORS = {"brute-force": "tab:red", "profiles": "tab:blue", "slices": "tab:green", "samples": "tab:olive",
-          "initialStep": "tab:purple", "trees": "tab:orange", "shadowMapSize": "tab:brown", "size": "tab:gray",
+# A sweep's colour under its family's current name and the one of runs recorded before ("samples",
+# "initialStep", "trees").
+COLORS = {"brute-force": "tab:red", "profiles": "tab:blue", "slices": "tab:green", "samplesPerSlice": "tab:olive",
+          "samples": "tab:olive", "initialSampleStep": "tab:purple", "initialStep": "tab:purple",
+          "minMaxTrees": "tab:orange", "trees": "tab:orange", "shadowMapSize": "tab:brown", "size": "tab:gray",
           "planes": "tab:cyan"}
 
 
@@ -153,8 +156,10 @@ def main():
     made.append(screen_scaling(runs, out))
     made.append(scaling(runs, "shadowMapSize", lambda r: r["shadowMapSize"], "shadow-map size (texels per side)",
                         "scaling_shadow_map.png", out))
-    made.append(scaling([dict(r, family="ss") for r in runs if r["family"] in ("slices", "samples")], "ss",
-                        lambda r: r["slices"] * r["samples"], "slices x samples", "scaling_slices_samples.png", out))
+    # "samples": samplesPerSlice's family in runs recorded before it took the field's name.
+    ss = [dict(r, family="ss") for r in runs if r["family"] in ("slices", "samplesPerSlice", "samples")]
+    made.append(scaling(ss, "ss", lambda r: r["slices"] * r["samples"], "slices x samples",
+                        "scaling_slices_samples.png", out))
     for m in made:
         if m:
             print(m)

@@ -83,6 +83,20 @@ glm::vec3 froxelJitter(uint32_t index) {
     return {halton(i, 2), halton(i, 3), halton(i, 5)};
 }
 
+rg::PersistentImageDesc froxelHistoryDesc(const FroxelGrid& grid) {
+    rg::PersistentImageDesc d;
+    d.format = kFroxelScatteringFormat;
+    d.extent = {grid.columns, grid.rows};
+    d.depth = grid.slices;
+    d.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    // Compute passes read and write the two images, each frame in the other role: a frame waits
+    // for the frame before's writes (to read them) and reads (to overwrite them).
+    d.stages = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+    d.waitAccess = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+    d.handAccess = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT;
+    return d;
+}
+
 FroxelSettings froxelSettings(const lightscatter::FroxelsSettings& s) {
     return {s.tile, s.slices, s.farDistance, s.temporal, s.historyWeight};
 }
@@ -129,7 +143,7 @@ rg::ImageRef addFroxelInjection(rg::RenderGraph& graph, const FroxelInjectInputs
                   history = in.history](rg::PassContext& ctx) {
         const LightFrame& values = ctx.data(frame.values);
         FroxelPush push = froxelPush(values.constants, grid, 1.0f);
-        if (history.valid()) push.jitter = glm::vec4(froxelJitter(ctx.data(history).index), 0.0f);
+        if (history.valid()) push.jitter = glm::vec4(froxelJitter(ctx.history(history).age), 0.0f);
         // The columns the light's volume may reach (its screen rectangle, in froxels).
         const VkRect2D r = values.screenRect;
         const uint32_t x0 = uint32_t(r.offset.x) / grid.tile, y0 = uint32_t(r.offset.y) / grid.tile;
@@ -162,16 +176,17 @@ FroxelTemporalOutputs addFroxelTemporalBlend(rg::RenderGraph& graph, const Froxe
     out.scattering = table.storageReadWrite(LS_BINDING_FROXEL_SCATTERING, in.scattering);
     table.storageRead(LS_BINDING_FROXEL_HISTORY, in.history);
     out.historyOut = table.storageWrite(LS_BINDING_FROXEL_HISTORY_OUT, in.historyOut);
-    pass.execute([frame = in.frame, values = in.values, weight = in.weight, table,
-                  grid](rg::PassContext& ctx) {
-        const HistoryFrame& h = ctx.data(values);
+    pass.execute([frame = in.frame, previous = in.previous, history = in.history,
+                  weight = in.weight, table, grid](rg::PassContext& ctx) {
+        const FrameConstants& then = ctx.data(previous).constants;
+        const bool valid = ctx.history(history).valid;
         const FroxelPush now = froxelPush(ctx.data(frame.values).constants, grid, 1.0f);
-        const FroxelPush before = froxelPush(h.previous, grid, 1.0f);
+        const FroxelPush before = froxelPush(then, grid, 1.0f);
         FroxelTemporalPush push{};
         push.grid = now.grid;
         push.slices = now.slices;
-        push.previousViewProj = h.previous.viewProj;
-        push.previousSlices = glm::vec4(glm::vec3(before.slices), h.valid ? 1.0f : 0.0f);
+        push.previousViewProj = then.viewProj;
+        push.previousSlices = glm::vec4(glm::vec3(before.slices), valid ? 1.0f : 0.0f);
         push.blend = {weight, 0.0f, 0.0f, 0.0f};
         const auto& p = frame.shared->pipelines.compute(
             "froxel temporal blend", rg::spirv(ls_spirv::temporal_comp), table.layout(),

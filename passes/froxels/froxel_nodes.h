@@ -44,10 +44,13 @@ struct FroxelInjectInputs {
     // every froxel, the new grid (froxelScatteringImage()).
     rg::ImageRef scattering;
     bool first = false;
-    // The temporal mode's frame (its jitter follows the frame's index); invalid: the froxels'
-    // centres.
-    rg::HostDataRef<HistoryFrame> history;
+    // The temporal mode's history (the frame before's grid): the jitter follows its age;
+    // invalid: the froxels' centres.
+    rg::ImageRef history;
 };
+// The temporal mode's history of the grid: float32 in-scattering, read and written by compute
+// passes, kept read-only between frames.
+rg::PersistentImageDesc froxelHistoryDesc(const FroxelGrid& grid);
 // The in-scattering grid, declared (kFroxelScatteringFormat, the grid's size) for the first
 // light's injection.
 rg::ImageRef froxelScatteringImage(rg::RenderGraph& graph, const FroxelGrid& grid);
@@ -64,7 +67,7 @@ struct FroxelTemporalInputs {
     FrameContext frame;                // the first light's: this frame's camera
     rg::ImageRef scattering;           // every light's, injected at this frame's jittered points
     rg::ImageRef history, historyOut;  // the frame before's grid, and this frame's
-    rg::HostDataRef<HistoryFrame> values;
+    rg::HostDataRef<PreviousFrame> previous;
     float weight = 0.9f;  // the history's
 };
 struct FroxelTemporalOutputs {

@@ -89,16 +89,21 @@ ChainOutputs FroxelsMethod::addFrameChain(rg::RenderGraph& g, const std::vector<
                                           const CompositeTarget& target) const {
     const FroxelSettings& settings = configs.at(0).options.get<Options>()->grid;
     const FroxelGrid grid = froxelGrid(in.at(0).screen, settings);
-    const bool temporal = settings.temporal && in[0].history.valid();
+    const bool temporal = settings.temporal;
+    // The temporal mode's history, kept by the graph under the frame's key: the frame before's
+    // grid, read, and this frame's, written.
+    rg::RenderGraph::HistoryImages history;
+    if (temporal)
+        history = g.historyImages("froxel history", froxelHistoryDesc(grid), in[0].frameKey);
     rg::ImageRef scattering = froxelScatteringImage(g, grid);
     std::vector<rg::HostDataRef<LightFrame>> lights;
     for (size_t i = 0; i < in.size(); ++i) {
         if (in.size() > 1) g.setNameSuffix(" (light " + std::to_string(i) + ")");
-        scattering = addFroxelInjection(
-            g,
-            {frameContext(in[i], configs[i]), lightImages(in[i], configs[i]), scattering, i == 0,
-             temporal ? in[i].historyValues : rg::HostDataRef<HistoryFrame>{}},
-            grid);
+        scattering =
+            addFroxelInjection(g,
+                               {frameContext(in[i], configs[i]), lightImages(in[i], configs[i]),
+                                scattering, i == 0, temporal ? history.previous : rg::ImageRef{}},
+                               grid);
         lights.push_back(in[i].values);
     }
     g.setNameSuffix({});
@@ -107,26 +112,19 @@ ChainOutputs FroxelsMethod::addFrameChain(rg::RenderGraph& g, const std::vector<
     if (temporal) {
         const FroxelTemporalOutputs t =
             addFroxelTemporalBlend(g,
-                                   {frame, scattering, in[0].history, in[0].historyOut,
-                                    in[0].historyValues, settings.historyWeight},
+                                   {frame, scattering, history.previous, history.current,
+                                    in[0].previous, settings.historyWeight},
                                    grid);
         scattering = t.scattering;
-        out.historyOut = t.historyOut;
+        g.markOutput(t.historyOut);  // the next frame reads it
     }
     const rg::ImageRef integrated = addFroxelIntegration(g, {frame, scattering, lights}, grid);
     if (in[0].volumeOut.valid())
-        out.volumeOut = addFroxelExport(g, {frame, integrated, lights, in[0].volumeOut}, grid);
+        g.markOutput(addFroxelExport(g, {frame, integrated, lights, in[0].volumeOut}, grid));
     out.composited = true;
     out.target = addFroxelApply(
         g, {frame, integrated, lights, {target.color, target.inscatterOut, false}}, grid);
     return out;
-}
-
-HistoryShape FroxelsMethod::history(const ChainConfig& c, VkExtent2D screen) const {
-    const FroxelSettings& s = c.options.get<Options>()->grid;
-    if (!s.temporal) return {};
-    const FroxelGrid g = froxelGrid(screen, s);
-    return {kFroxelScatteringFormat, g.columns, g.rows, g.slices};
 }
 
 std::string FroxelsMethod::summary(const ChainConfig& c) const {

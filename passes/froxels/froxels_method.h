@@ -27,7 +27,6 @@ class FroxelsMethod final : public MethodUnit {
     ChainOutputs addFrameChain(rg::RenderGraph& graph, const std::vector<ChainInputs>& in,
                                const std::vector<ChainConfig>& configs,
                                const CompositeTarget& target) const override;
-    HistoryShape history(const ChainConfig& config, VkExtent2D screen) const override;
     std::string summary(const ChainConfig& config) const override;
 };
 

@@ -2,8 +2,12 @@
 
 namespace ls {
 
-TilingNoise::TilingNoise(const rg::Device& device)
-    : image_(device, kNoiseFormat, kNoiseExtent,
-             VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, "tiling noise") {}
+rg::PersistentImageDesc tilingNoiseDesc() {
+    rg::PersistentImageDesc d;
+    d.format = kNoiseFormat;
+    d.extent = kNoiseExtent;
+    d.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT;
+    return d;
+}
 
 }  // namespace ls

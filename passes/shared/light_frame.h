@@ -23,13 +23,6 @@ struct LightFrame {
     // The pixels whose rays may cross the light's volume this frame (lightScreenRect): the
     // per-pixel marches draw only there.
     VkRect2D screenRect{{0, 0}, {0, 0}};
-    bool fillTable = false;  // the light's point-light table is (re)filled this frame
-};
-
-// The frame-wide value the plugin's tiling noise node reads: the noise is made in the first frame
-// that samples it.
-struct NoiseFrame {
-    bool make = false;
 };
 
 }  // namespace ls

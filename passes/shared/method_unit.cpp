@@ -20,7 +20,7 @@ ScatterSpec scatterSpec(const LightSetup& light) {
 ChainOutputs MethodUnit::addFrameChain(rg::RenderGraph& graph, const std::vector<ChainInputs>& in,
                                        const std::vector<ChainConfig>& configs,
                                        const CompositeTarget& target) const {
-    // Only a frame-wide method is asked for one; one light is its own chain otherwise.
+    // Only a one-per-frame method is asked for one; one light is its own chain otherwise.
     return addChain(graph, in.at(0), configs.at(0), target);
 }
 

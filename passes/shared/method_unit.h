@@ -76,10 +76,12 @@ struct ChainInputs {
     VkFormat depthStencil = VK_FORMAT_UNDEFINED;  // the stencil textures' format
     VkFormat coordinateFormat = VK_FORMAT_R32G32_SFLOAT;
     rg::BufferRef stepCounts;  // cleared, when the frame counts epipolar's steps; else invalid
-    // The frame's history (MethodUnit::history()): the image the frame before wrote, the one this
-    // frame writes, and what the frame knows of it; invalid where the method keeps none.
-    rg::ImageRef history, historyOut;
-    rg::HostDataRef<HistoryFrame> historyValues;
+    // The keys the graph keeps what outlives a frame under (RenderGraph::persistentImage,
+    // historyImages): the light's own (its table, its method's images), and the frame's (a
+    // one-per-frame method's history), each given to every record().
+    rg::HostDataRef<rg::PersistentKey> key, frameKey;
+    // The frame before's constants, for a method that reprojects its history.
+    rg::HostDataRef<PreviousFrame> previous;
     // The engine's 3D image for the chain's 3D result (FrameDescription::volumeOut), for a method
     // that exportsVolume; else invalid.
     rg::ImageRef volumeOut;
@@ -92,8 +94,6 @@ struct ChainOutputs {
     bool composited = false;
     CompositeOutputs target;
     rg::BufferRef stepCounts;  // the counter's new version, when the chain counted
-    rg::ImageRef historyOut;   // the history's new version, when the chain keeps one
-    rg::ImageRef volumeOut;    // ChainInputs::volumeOut written, when it was given
 };
 
 class MethodUnit {
@@ -142,9 +142,6 @@ class MethodUnit {
     virtual ChainOutputs addFrameChain(rg::RenderGraph& graph, const std::vector<ChainInputs>& in,
                                        const std::vector<ChainConfig>& configs,
                                        const CompositeTarget& target) const;
-    // The state a one-per-frame chain carries to the next frame on the GPU (frame_history.h), for a
-    // screen of `screen` texels; none by default.
-    virtual HistoryShape history(const ChainConfig&, VkExtent2D) const { return {}; }
     // Which nodes the chain was built from, and why, in one line.
     virtual std::string summary(const ChainConfig& config) const = 0;
     // What changed this frame without a rebuild, appended to the report's reason (the cube faces

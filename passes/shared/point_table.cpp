@@ -1,41 +1,35 @@
 #include "point_table.h"
 
+#include <array>
+#include <cstring>
+
 namespace ls {
 
-PointTable::PointTable(const rg::Device& device, uint32_t width, uint32_t height)
-    : width_(width),
-      height_(height),
-      image_(device, VK_FORMAT_R32G32B32A32_SFLOAT, {width, height},
-             VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, "point-light table") {}
-
-// What the table depends on (shaders/shared/point_table.comp): the medium, the phase, the light's
-// radius and the table's scale.
-PointTable::Key PointTable::keyOf(const FrameConstants& c, MiePhase phase) {
-    return {c.betaR.x,
-            c.betaR.y,
-            c.betaR.z,
-            c.betaR.w /* g */,
-            c.betaM.x,
-            c.betaM.y,
-            c.betaM.z,
-            c.betaT.x,
-            c.betaT.y,
-            c.betaT.z,
-            c.betaT.w /* r0 */,
-            c.lutInfo.x,
-            c.lutInfo.y,
-            c.lutInfo.z,
-            static_cast<float>(phase),
-            0.0f};
+rg::PersistentImageDesc pointTableDesc() {
+    rg::PersistentImageDesc d;
+    d.format = VK_FORMAT_R32G32B32A32_SFLOAT;
+    d.extent = {kTableWidth, kTableHeight};
+    d.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    return d;
 }
 
-bool PointTable::needsFill(const FrameConstants& constants, MiePhase phase) const {
-    return !filled_ || keyOf(constants, phase) != key_;
-}
-
-void PointTable::recordedFill(const FrameConstants& constants, MiePhase phase) {
-    key_ = keyOf(constants, phase);
-    filled_ = true;
+uint64_t pointTableStamp(const FrameConstants& c, MiePhase phase) {
+    const std::array<float, 15> key{
+        c.betaR.x,          c.betaR.y,   c.betaR.z,   c.betaR.w /* g */, c.betaM.x,
+        c.betaM.y,          c.betaM.z,   c.betaT.x,   c.betaT.y,         c.betaT.z,
+        c.betaT.w /* r0 */, c.lutInfo.x, c.lutInfo.y, c.lutInfo.z,       static_cast<float>(phase)};
+    // FNV-1a over the values' bits: a change in any of them changes the stamp (a collision would
+    // need two media 2^-64 apart in likelihood).
+    uint64_t h = 1469598103934665603ull;
+    for (float v : key) {
+        uint32_t bits = 0;
+        std::memcpy(&bits, &v, sizeof bits);
+        for (int b = 0; b < 4; ++b) {
+            h ^= (bits >> (8 * b)) & 0xffu;
+            h *= 1099511628211ull;
+        }
+    }
+    return h;
 }
 
 }  // namespace ls

@@ -1,14 +1,14 @@
 #pragma once
-// A light's point-light table: a plugin-owned image that outlives frames, filled by the frame
-// graph's table pass (addPointTable) in a frame whose medium, light radius or table scale differ
-// from those of the frame that filled it last. Frames run on the GPU in the order they were
-// recorded, so each finds the table as the frames recorded before it left it: a frame recorded
-// ahead with another medium fills it for itself, and no frame waits for another.
-#include <array>
+// A light's point-light table: an image the frame graph keeps for the light across frames
+// (rg::RenderGraph::persistentImage, under the light's key), filled by the table pass
+// (addPointTable) in a frame whose medium, light radius or table scale differ from those of the
+// frame that filled it last. Frames run on the GPU in the order they were recorded, so each finds
+// the table as the frames recorded before it left it: a frame recorded ahead with another medium
+// fills it for itself, and no frame waits for another.
+#include <cstdint>
 
 #include "frame_constants.h"
-#include "rendergraph/device.h"
-#include "rendergraph/owned_image.h"
+#include "rendergraph/persistent_store.h"
 #include "scattering_params.h"
 
 namespace ls {
@@ -17,31 +17,12 @@ namespace ls {
 inline constexpr uint32_t kTableWidth = 512;
 inline constexpr uint32_t kTableHeight = 256;
 
-class PointTable {
-  public:
-    PointTable(const rg::Device& device, uint32_t width, uint32_t height);
-    PointTable(const PointTable&) = delete;
-    PointTable& operator=(const PointTable&) = delete;
+// The table as the graph keeps it: sampled by fragment and compute shaders between frames.
+rg::PersistentImageDesc pointTableDesc();
 
-    // Whether a frame with these constants must fill the table before reading it.
-    bool needsFill(const FrameConstants& constants, MiePhase phase) const;
-    // A frame that fills the table was recorded: the frames recorded after it find it filled.
-    void recordedFill(const FrameConstants& constants, MiePhase phase);
-    // Some recorded frame filled it: a frame finds it in SHADER_READ_ONLY_OPTIMAL (else its
-    // contents are undefined, UNDEFINED).
-    bool filled() const { return filled_; }
-    VkImage image() const { return image_.image(); }
-    uint32_t width() const { return width_; }
-    uint32_t height() const { return height_; }
-
-  private:
-    using Key = std::array<float, 16>;
-    static Key keyOf(const FrameConstants& c, MiePhase phase);
-
-    uint32_t width_, height_;
-    rg::OwnedImage image_;
-    bool filled_ = false;
-    Key key_{};
-};
+// What a table filled with these constants depends on (shaders/shared/point_table.comp: the
+// medium, the phase, the light's radius and the table's scale), as one number: equal constants,
+// equal stamps.
+uint64_t pointTableStamp(const FrameConstants& constants, MiePhase phase);
 
 }  // namespace ls

@@ -41,14 +41,17 @@ CompositeOutputs addComposite(rg::RenderGraph& graph, const CompositeInputs& in)
 CompositeOutputs addInscatter(rg::RenderGraph& graph, const CompositeInputs& in);
 
 // Fills the point-light table (R32G32B32A32_SFLOAT) for the current medium and light radius, in the
-// frames whose LightFrame::fillTable says so; the others record nothing and leave it as it was.
+// frames that find it empty or made for another medium; the others record nothing and leave it as
+// it was.
 struct PointTableInputs {
     Shared shared;
     ScatterSpec spec;
     rg::HostDataRef<LightFrame> values;
     rg::BufferRef constants;
-    rg::ImageRef table;  // the table to fill
+    rg::HostDataRef<rg::PersistentKey> key;  // the light's: the graph keeps its table under it
 };
+// The light's table (point_table.h), filled where the frames before left it empty or made for
+// another medium; returns it as the chain's passes read it.
 rg::ImageRef addPointTable(rg::RenderGraph& graph, const PointTableInputs& in);
 
 }  // namespace ls

@@ -8,10 +8,8 @@
 #include "graph_config.h"
 #include "method_choice.h"
 #include "method_units.h"
-#include "planes/tiling_noise.h"
 #include "rendergraph/compile.h"
 #include "rendergraph/format_info.h"
-#include "shared/point_table.h"
 
 namespace lightscatter {
 namespace {
@@ -70,14 +68,17 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
         l.depthAttachment = true;
         l.settings = s;
         // No geometry: the light's screen rectangle is unknown (empty), so auto weighs the screen.
+        detail::LightPaths paths;
+        paths.about = "budget lights[" + std::to_string(i) + "]";
         const detail::MethodChoice choice = [&] {
             try {
                 return detail::chooseMethod(lights[i].method, l, true);
             } catch (const InvalidInput& e) {
-                throw detail::aboutLight(e, i, "budget lights");
+                throw detail::aboutLight(e, paths);
             }
         }();
         methods.push_back(&choice.unit());
+        frame.given.push_back({LightInput{}, paths, i, i});
         frame.lights.push_back(l);
         frame.touchesView.push_back(true);
         const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
@@ -117,36 +118,27 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
     // Seed 000's figures are for one light.
     if (lights.size() == 1) b.seed = methods[0]->seedFigure(profile);
     for (const ls::MethodUnit* m : methods) b.lightMethods.push_back(m->name());
+    b.totalBytes = compiled.unaliasedBytes;
+    b.peakBytes = compiled.aliasedBytes;
     for (uint32_t id = 0; id < fg.graph->resources().size(); ++id) {
         const auto& r = fg.graph->resource(id);
         const auto& p = compiled.resources[id];
+        if (r.persistent) {
+            // What the graph keeps across frames, outside its aliased memory: each point or spot
+            // light's table, the plugin's own tiling noise, a history's two images.
+            const rg::PersistentImageDesc& d = r.persistent->desc;
+            const uint64_t bytes = persistentBytes(device, d.format, d.extent, d.depth);
+            b.entries.push_back({r.name, rg::formatName(d.format), d.extent.width, d.extent.height,
+                                 bytes, false, d.depth});
+            b.totalBytes += bytes;
+            b.peakBytes += bytes;
+            continue;
+        }
         if (r.imported || !p.used) continue;
         b.entries.push_back({r.name, r.buffer ? "buffer" : rg::formatName(r.image.format),
                              p.extent.width, p.extent.height, p.memory.size, true,
                              r.buffer ? 1u : r.image.depth});
     }
-    b.totalBytes = compiled.unaliasedBytes;
-    b.peakBytes = compiled.aliasedBytes;
-    // What lives across frames, outside the graph's aliased memory: the plugin's own tiling noise
-    // (an engine's noise image replaces it) and each point or spot light's table.
-    auto persistent = [&](const std::string& name, VkFormat format, VkExtent2D extent,
-                          uint32_t depth = 1) {
-        const uint64_t bytes = persistentBytes(device, format, extent, depth);
-        b.entries.push_back(
-            {name, rg::formatName(format), extent.width, extent.height, bytes, false, depth});
-        b.totalBytes += bytes;
-        b.peakBytes += bytes;
-    };
-    if (c.ownNoise) persistent("tiling noise", ls::kNoiseFormat, ls::kNoiseExtent);
-    // The one-per-frame method's history: two images, alternated (froxels' temporal mode).
-    if (c.history.given())
-        for (const char* name : {"frame history A", "frame history B"})
-            persistent(name, c.history.format, c.history.extent, c.history.depth);
-    for (size_t i = 0; i < c.lights.size(); ++i)
-        if (c.lights[i].table.given())
-            persistent(lights.size() == 1 ? "point-light table"
-                                          : "point-light table (light " + std::to_string(i) + ")",
-                       VK_FORMAT_R32G32B32A32_SFLOAT, {ls::kTableWidth, ls::kTableHeight});
     return b;
 }
 

@@ -4,8 +4,6 @@
 
 #include "epipolar/step_counts.h"
 #include "planes/plane_nodes.h"
-#include "planes/tiling_noise.h"
-#include "shared/point_table.h"
 #include "shared/shared_nodes.h"
 
 namespace lightscatter::detail {
@@ -44,53 +42,6 @@ rg::ImportedImage importDescription(const ImageInput& in) {
     d.finalStages = in.finalStages;
     d.finalAccess = in.finalAccess;
     return d;
-}
-
-rg::ImportedImage persistentImport(const ImportState& s, VkImage image, bool filled) {
-    rg::ImportedImage d = importDescription(s);
-    d.image = image;
-    if (!filled) d.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    d.initialStages = d.finalStages =
-        VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-    d.initialAccess = VK_ACCESS_2_NONE;
-    d.finalAccess = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
-    return d;
-}
-
-rg::ImportedImage historyImport(const ImportState& s, VkImage image, bool filled) {
-    rg::ImportedImage d = persistentImport(s, image, filled);
-    // Compute passes read and write the two images, each frame in the other role: a frame waits
-    // for the frame before's writes (to read them) and reads (to overwrite them).
-    d.initialStages = d.finalStages = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-    d.initialAccess = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-    d.finalAccess = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT;
-    return d;
-}
-
-ImportState ownNoiseState() {
-    return {ls::kNoiseFormat, ls::kNoiseExtent,
-            VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_STORAGE_BIT,
-            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-}
-
-ImportState tableState() {
-    return {VK_FORMAT_R32G32B32A32_SFLOAT,
-            {ls::kTableWidth, ls::kTableHeight},
-            VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-}
-
-ImportState historyState(const ls::HistoryShape& shape) {
-    // Read-only between frames: each frame's uses (storage, GENERAL) then have a barrier before
-    // them, which a frame that finds an image new (UNDEFINED) needs.
-    ImportState s{shape.format,
-                  {shape.width, shape.height},
-                  VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    s.depth = shape.depth;
-    return s;
 }
 
 rg::ImportedImage importDescription(const ImportState& s) {
@@ -152,10 +103,13 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
     // A light's shadow map and color are imported whenever given, so that they are left in the
     // layouts the engine asked for even where no node reads them.
     fg.lights.resize(c.lights.size());
+    fg.frameKey = g.hostData<rg::PersistentKey>("frame key");
+    fg.previous = g.hostData<ls::PreviousFrame>("previous frame constants");
     bool anyTouches = false;
     for (size_t i = 0; i < c.lights.size(); ++i) {
         const LightGraphConfig& l = c.lights[i];
         fg.lights[i].values = g.hostData<ls::LightFrame>("light values" + which(i));
+        fg.lights[i].key = g.hostData<rg::PersistentKey>("light key" + which(i));
         if (l.shadowMap.given())
             fg.lights[i].shadowMap =
                 g.importImage("engine shadow map" + which(i), importDescription(l.shadowMap));
@@ -183,8 +137,8 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
     rg::ImageRef noise;  // the noise as the chains read it (made first, when it is the plugin's)
     rg::BufferRef counts;
     size_t chains = 0;
-    std::vector<ls::ChainInputs> frameWide;  // the lights of a frame-wide method
-    std::vector<ls::ChainConfig> frameWideConfigs;
+    std::vector<ls::ChainInputs> onePerFrame;  // the lights of a one-per-frame method
+    std::vector<ls::ChainConfig> onePerFrameConfigs;
     for (size_t i = 0; i < c.lights.size(); ++i) {
         const LightGraphConfig& l = c.lights[i];
         if (!l.touchesView) continue;  // a light whose volume misses the view costs nothing
@@ -196,17 +150,18 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
         in.depth = fg.depth;
         in.shadowMap = fg.lights[i].shadowMap;
         in.lightColor = fg.lights[i].lightColor;
-        if (l.table.given()) {
-            fg.lights[i].table = g.importImage("point-light table", importDescription(l.table));
+        in.key = fg.lights[i].key;
+        in.frameKey = fg.frameKey;
+        in.previous = fg.previous;
+        if (l.table)
             in.table = ls::addPointTable(
-                g, {shared, l.chain.spec, in.values, in.constants, fg.lights[i].table});
-        }
-        if (l.noise && !fg.noise.valid()) {
-            fg.noise = noise = g.importImage(c.ownNoise ? "tiling noise" : "engine noise",
-                                             importDescription(c.noise));
+                g, {shared, l.chain.spec, in.values, in.constants, fg.lights[i].key});
+        if (l.noise && !noise.valid()) {
+            // The engine's, or the plugin's own, made once and kept by the graph.
             if (c.ownNoise) {
-                fg.makeNoise = g.hostData<ls::NoiseFrame>("tiling noise to make");
-                noise = ls::addTilingNoise(g, {shared, fg.makeNoise, fg.noise});
+                noise = ls::addTilingNoise(g, {shared, fg.frameKey});
+            } else {
+                fg.noise = noise = g.importImage("engine noise", importDescription(c.noise));
             }
         }
         if (l.noise) in.noise = noise;
@@ -222,8 +177,8 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
         in.stepCounts = counts;
         if (l.method->caps().onePerFrame) {
             // Its lights go into one chain, added once they are all known.
-            frameWide.push_back(in);
-            frameWideConfigs.push_back(l.chain);
+            onePerFrame.push_back(in);
+            onePerFrameConfigs.push_back(l.chain);
             continue;
         }
         // The first chain's composite applies the extinction; the others add their Lin.
@@ -244,30 +199,17 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
         ++chains;
     }
     g.setNameSuffix({});
-    if (!frameWide.empty()) {
-        if (c.history.given()) {
-            // The frame before's state, and this frame's, in the plugin's two images.
-            fg.history = g.importImage("frame history", importDescription(c.history));
-            fg.historyOut = g.importImage("frame history (next)", importDescription(c.history));
-            fg.historyValues = g.hostData<ls::HistoryFrame>("frame history values");
-            for (ls::ChainInputs& in : frameWide) {
-                in.history = fg.history;
-                in.historyOut = fg.historyOut;
-                in.historyValues = fg.historyValues;
-            }
-        }
+    if (!onePerFrame.empty()) {
         if (c.volumeOut.given()) {
             fg.volumeOut = g.importImage("froxel volume output", importDescription(c.volumeOut));
-            frameWide[0].volumeOut = fg.volumeOut;
+            onePerFrame[0].volumeOut = fg.volumeOut;
         }
-        // A frame-wide method takes every light (the method choice mixes it with no other).
-        const ls::ChainOutputs o = c.lights[0].method->addFrameChain(g, frameWide, frameWideConfigs,
-                                                                     {color, linOut, false});
+        // A one-per-frame method takes every light (the method choice mixes it with no other).
+        const ls::ChainOutputs o = c.lights[0].method->addFrameChain(
+            g, onePerFrame, onePerFrameConfigs, {color, linOut, false});
         color = o.target.color;
         linOut = o.target.inscatterOut;
-        if (o.historyOut.valid()) g.markOutput(o.historyOut);
-        if (o.volumeOut.valid()) g.markOutput(o.volumeOut);
-        chains = frameWide.size();
+        chains = onePerFrame.size();
     }
     if (chains == 0) ls::addComposite(g, {frame, color, {}, linOut});  // extinction only
     if (counts.valid()) g.markOutput(counts);

@@ -36,7 +36,8 @@ struct LightGraphConfig {
     ls::ChainConfig chain;
     bool touchesView = true;  // false: no chain (its images are still imported)
     bool noise = false;       // its chain samples the frame's tiling noise
-    ImportState shadowMap, lightColor, table;
+    bool table = false;       // its chain samples its point-light table
+    ImportState shadowMap, lightColor;
     bool operator==(const LightGraphConfig&) const = default;
 };
 
@@ -49,18 +50,15 @@ struct GraphConfig {
     VkFormat coordinates =
         VK_FORMAT_R32G32_SFLOAT;  // epipolar's coordinate texture (coordinateFormat)
     ImportState depth, color, inscatterOut;
-    ImportState noise;  // the engine's noise or the plugin's own; absent when no chain samples it
-    bool ownNoise = false;   // `noise` is the plugin's own tiling noise
+    ImportState noise;       // the engine's noise, where a chain samples it
+    bool ownNoise = false;   // a chain samples the plugin's own tiling noise instead
     bool extinction = true;  // betaT > 0 in some channel: the composite has work
     bool poisonTransients = false;
     // Epipolar's step counter (DebugOptions::countSteps): the marches' counting variant, adding
     // into FrameGraph::stepCounts, which holds stepCountSlices slices (the most of any light).
     bool countSteps = false;
     uint32_t stepCountSlices = 0;
-    // The frame-wide method's history (MethodUnit::history()), two images of this state the
-    // plugin alternates; absent when the frame keeps none.
-    ImportState history;
-    // The engine's image for the frame-wide method's 3D result (FrameDescription::volumeOut).
+    // The engine's image for a one-per-frame method's 3D result (FrameDescription::volumeOut).
     ImportState volumeOut;
     std::vector<LightGraphConfig> lights;  // in the frame's order
     bool operator==(const GraphConfig&) const = default;
@@ -69,20 +67,20 @@ struct GraphConfig {
 struct FrameGraph {
     std::unique_ptr<rg::RenderGraph> graph;
     rg::ImageRef depth, color, inscatterOut, noise;
-    // The plugin's own noise, made in the frame the value says (invalid without ownNoise).
-    rg::HostDataRef<ls::NoiseFrame> makeNoise;
     struct LightImages {
-        rg::ImageRef shadowMap, lightColor, table;
+        rg::ImageRef shadowMap, lightColor;
         rg::HostDataRef<ls::LightFrame> values;  // the light's values, given to each record()
+        rg::HostDataRef<rg::PersistentKey> key;  // its identity: what the graph keeps for it
     };
     std::vector<LightImages> lights;  // each light's imports (GraphConfig::lights)
     std::string summary;              // which nodes were chosen, and why
     // The step counter the plugin imports (one buffer per frame in flight); invalid without
     // GraphConfig::countSteps.
     rg::BufferRef stepCounts;
-    // The history the frame reads and the one it writes, and its values (GraphConfig::history).
-    rg::ImageRef history, historyOut;
-    rg::HostDataRef<ls::HistoryFrame> historyValues;
+    // The frame's key, under which the graph keeps what is the frame's rather than a light's (the
+    // plugin's noise, a one-per-frame method's history), and the frame before's constants.
+    rg::HostDataRef<rg::PersistentKey> frameKey;
+    rg::HostDataRef<ls::PreviousFrame> previous;
     rg::ImageRef volumeOut;  // GraphConfig::volumeOut's import
 };
 
@@ -91,18 +89,6 @@ rg::ImportedBuffer stepCountImport(VkBuffer buffer, uint32_t slices);
 
 rg::ImportedImage importDescription(const ImageInput& in);
 rg::ImportedImage importDescription(const ImportState& s);
-// An image the plugin owns across frames (the point-light table, the tiling noise): filled by a
-// pass of the frame that needs it filled, sampled by fragment and compute shaders, left
-// read-only. `filled`: an earlier frame filled it (else its contents are undefined).
-rg::ImportedImage persistentImport(const ImportState& s, VkImage image, bool filled);
-// The plugin's own tiling noise and a light's point-light table, as the frame graph imports them.
-ImportState ownNoiseState();
-ImportState tableState();
-// A frame history of `shape` as the frame graph imports it (storage, read-only between frames), and
-// one of the plugin's two images of it (`filled`: an earlier frame wrote it).
-ImportState historyState(const ls::HistoryShape& shape);
-rg::ImportedImage historyImport(const ImportState& s, VkImage image, bool filled);
-
 // The format of the stencil textures (epipolar's sample marking, the fix-up's pixel marking),
 // which hold stencil only: S8 where the device renders to it (a quarter of a depth-stencil texel),
 // else D24S8, else D32S8; UNDEFINED when none is an attachment format.

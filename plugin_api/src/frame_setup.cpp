@@ -1,5 +1,7 @@
 #include "frame_setup.h"
 
+#include <algorithm>
+
 #include <cmath>
 #include <string>
 
@@ -11,7 +13,7 @@
 
 namespace lightscatter::detail {
 
-ls::LightSetup setupFrameWide(const FrameDescription& f, bool withImages) {
+ls::LightSetup setupFramePart(const FrameDescription& f, bool withImages) {
     ls::LightSetup s;
     s.settings = profileSettings(f.profile, f.custom);
     checkSettings(s.settings);
@@ -98,13 +100,6 @@ ls::LightSetup setupFrameWide(const FrameDescription& f, bool withImages) {
     return s;
 }
 
-ls::LightSetup setupFrame(const FrameDescription& f, bool withImages) {
-    ls::LightSetup s = setupFrameWide(f, withImages);
-    setupLight(s, LightInput{f.light, f.shadowMap, f.lightColor, std::nullopt}, LightPaths{},
-               withImages);
-    return s;
-}
-
 namespace {
 
 bool defaultLight(const Light& l) {
@@ -120,7 +115,13 @@ bool defaultLight(const Light& l) {
 
 }  // namespace
 
-std::vector<ls::LightSetup> setupLights(const FrameDescription& frame, bool withImages) {
+std::vector<EdgeLight> edgeLights(const FrameDescription& frame) {
+    std::vector<EdgeLight> lights;
+    if (frame.lights.empty()) {
+        lights.push_back(
+            {LightInput{frame.light, frame.shadowMap, frame.lightColor}, LightPaths{}, 0, 0});
+        return lights;
+    }
     std::string both;
     if (!defaultLight(frame.light)) both = "light";
     if (frame.shadowMap) both += both.empty() ? "shadowMap" : ", shadowMap";
@@ -134,50 +135,55 @@ std::vector<ls::LightSetup> setupLights(const FrameDescription& frame, bool with
         fail("lights holds " + std::to_string(frame.lights.size()) + " lights: at most " +
              std::to_string(kMaxLights) +
              " (kMaxLights; each light is a chain of passes and a table of its own)");
-    // The frame's own part once; whatever fails there is not about a light.
-    const ls::LightSetup frameWide = setupFrameWide(frame, withImages);
-    std::vector<ls::LightSetup> setups;
-    setups.reserve(frame.lights.size());
+    lights.reserve(frame.lights.size());
     for (size_t i = 0; i < frame.lights.size(); ++i) {
         const std::string at = "lights[" + std::to_string(i) + "]";
-        LightPaths paths{at + ".light", at + ".shadowMap", at + ".lightColor",
-                         frame.lights[i].settings ? at + ".settings" : "custom"};
-        ls::LightSetup s = frameWide;
-        s.lightPath = paths.light;
-        s.settingsPath = paths.settings;
-        try {
-            setupLight(s, frame.lights[i], paths, withImages);
-        } catch (const InvalidInput& e) {
-            throw aboutLight(e, i);
-        }
-        setups.push_back(std::move(s));
+        const LightInput& in = frame.lights[i];
+        lights.push_back({in,
+                          {at + ".light", at + ".shadowMap", at + ".lightColor",
+                           in.settings ? at + ".settings" : "custom", at},
+                          i,
+                          in.id ? *in.id : i});
     }
-    return setups;
+    // In the order of their ids: the same lights in another order are the same frame.
+    std::stable_sort(lights.begin(), lights.end(),
+                     [](const EdgeLight& a, const EdgeLight& b) { return a.id < b.id; });
+    for (size_t k = 1; k < lights.size(); ++k)
+        if (lights[k].id == lights[k - 1].id) {
+            const auto [first, second] = std::minmax(lights[k - 1].given, lights[k].given);
+            fail("lights[" + std::to_string(second) + "].id = " + std::to_string(lights[k].id) +
+                 " is lights[" + std::to_string(first) +
+                 "]'s too (a light without an id has its position): each light's id must differ");
+        }
+    return lights;
 }
 
-InvalidInput aboutLight(const InvalidInput& e, size_t i, const std::string& list) {
+InvalidInput aboutLight(const InvalidInput& e, const LightPaths& paths) {
+    if (paths.about.empty()) return e;
     const std::string lead = "lightscatter: ";
     std::string m = e.what();
     if (m.rfind(lead, 0) == 0) m = m.substr(lead.size());
-    return InvalidInput(lead + list + "[" + std::to_string(i) + "]: " + m);
-}
-
-std::vector<LightInput> lightInputs(const FrameDescription& frame) {
-    if (!frame.lights.empty()) return frame.lights;
-    return {LightInput{frame.light, frame.shadowMap, frame.lightColor, std::nullopt}};
+    return InvalidInput(lead + paths.about + ": " + m);
 }
 
 ValidatedFrame validateFrame(const FrameDescription& frame, bool withImages) {
     ValidatedFrame v;
-    v.list = !frame.lights.empty();
-    if (v.list) {
-        v.lights = setupLights(frame, withImages);
-    } else {
-        v.lights.push_back(setupFrame(frame, withImages));
-    }
-    for (ls::LightSetup& s : v.lights) {
+    v.given = edgeLights(frame);
+    // The frame's own part once; whatever fails there is not about a light.
+    const ls::LightSetup framePart = setupFramePart(frame, withImages);
+    v.lights.reserve(v.given.size());
+    for (const EdgeLight& l : v.given) {
+        ls::LightSetup s = framePart;
+        s.lightPath = l.paths.light;
+        s.settingsPath = l.paths.settings;
+        try {
+            setupLight(s, l.input, l.paths, withImages);
+        } catch (const InvalidInput& e) {
+            throw aboutLight(e, l.paths);
+        }
         v.touchesView.push_back(ls::lightTouchesView(s.camera, s.light, s.medium));
         s.screenRect = ls::lightScreenRect(s.camera, s.light, s.medium, s.screen);
+        v.lights.push_back(std::move(s));
     }
     return v;
 }

@@ -13,36 +13,43 @@
 
 namespace lightscatter::detail {
 
-// A frame, checked: one setup per light (a frame that gives `light` has one, lights[0]), and what
-// of the engine's images decides the frame's graph.
-struct ValidatedFrame {
-    std::vector<ls::LightSetup> lights;
-    std::vector<bool> touchesView;  // each light's volume reaches a view ray
-    bool list = false;              // the engine gave FrameDescription::lights
+// How the engine named a light's fields: `light`, `shadowMap`, `lightColor` and `custom` for a
+// frame that gave `light`, lights[i].light ... lights[i].settings (or `custom` without own
+// settings) for the list; `about` ("lights[i]", or empty) leads a refusal about the light.
+struct LightPaths {
+    std::string light = "light", shadowMap = "shadowMap", lightColor = "lightColor",
+                settings = "custom", about;
 };
 
-// Checks everything (setupFrame for a frame of one light, setupLights for the list); `withImages`
-// false skips the image handles (the budget has none).
+// One light as the engine gave it: FrameDescription::light (with shadowMap and lightColor), the
+// one light of a frame that gives no list, or lights[i]. From here on nothing tells the two apart:
+// a frame is a list of lights, in the order of their ids.
+struct EdgeLight {
+    LightInput input;
+    LightPaths paths;  // its fields' names, for refusals
+    size_t given = 0;  // its position in the engine's list
+    uint64_t id = 0;   // LightInput::id, or its position
+};
+// The frame's lights in the order of their ids. Refuses a frame that gives both the list and the
+// single light's fields, more than kMaxLights, or one id twice.
+std::vector<EdgeLight> edgeLights(const FrameDescription& frame);
+
+// A refusal about a light, saying which light it is (paths.about) before naming the field.
+InvalidInput aboutLight(const InvalidInput& e, const LightPaths& paths);
+
+// A frame, checked: each light as given and its setup, in the order of their ids.
+struct ValidatedFrame {
+    std::vector<EdgeLight> given;
+    std::vector<ls::LightSetup> lights;
+    std::vector<bool> touchesView;  // each light's volume reaches a view ray
+};
+
+// Checks everything: the frame's part once, then each light (errors name lights[i].field, or
+// light.field); `withImages` false skips the image handles (the budget has none).
 ValidatedFrame validateFrame(const FrameDescription& frame, bool withImages = true);
-
-// The frame's lights as a list: `light`, `shadowMap` and `lightColor` as lights[0] when the frame
-// gives no list.
-std::vector<LightInput> lightInputs(const FrameDescription& frame);
-
-// A refusal of lights[i] of the list (`list`), saying which light it is about before naming the
-// field.
-InvalidInput aboutLight(const InvalidInput& e, size_t i, const std::string& list = "lights");
-
-// Checks everything; `withImages` false skips the image handles (the budget has none).
-ls::LightSetup setupFrame(const FrameDescription& frame, bool withImages = true);
-
-// Several lights (FrameDescription::lights): refuses a frame that gives both the list and the
-// single light's fields, checks the frame's part once, then each light (errors name
-// lights[i].field). Returns each light's setup, in order.
-std::vector<ls::LightSetup> setupLights(const FrameDescription& frame, bool withImages = true);
 // The frame's part (settings, time, camera, medium, the engine's depth, color, noise and output),
 // checked; setupLight (light_checks.h) adds a light's part to it.
-ls::LightSetup setupFrameWide(const FrameDescription& frame, bool withImages = true);
+ls::LightSetup setupFramePart(const FrameDescription& frame, bool withImages = true);
 
 // Throws InvalidInput naming every feature the plugin needs that `enabled` (the chain an engine
 // created its device with) does not turn on.

@@ -4,14 +4,15 @@
 
 namespace lightscatter::detail {
 
-FrameImports frameImports(const FrameDescription& frame) {
+FrameImports frameImports(const FrameDescription& frame, const ValidatedFrame& v) {
     FrameImports f;
     f.depth = importState(frame.depth);
     f.color = importState(frame.color);
     if (frame.inscatterOut) f.inscatterOut = importState(*frame.inscatterOut);
     if (frame.noise) f.noise = importState(*frame.noise);
     if (frame.volumeOut) f.volumeOut = importState(*frame.volumeOut);
-    for (const LightInput& l : lightInputs(frame)) {
+    for (const EdgeLight& e : v.given) {
+        const LightInput& l = e.input;
         f.shadowMaps.push_back(l.shadowMap ? importState(*l.shadowMap) : ImportState{});
         f.lightColors.push_back(l.lightColor ? importState(*l.lightColor) : ImportState{});
     }
@@ -22,7 +23,7 @@ GraphConfig graphConfig(const ValidatedFrame& frame,
                         const std::vector<const ls::MethodUnit*>& methods,
                         const FrameImports& images, const GraphOptions& options,
                         const std::vector<const ls::LightData*>& data,
-                        const GraphConfig* previous) {
+                        const std::vector<const ls::ChainOptions*>& previous) {
     const ls::LightSetup& first = frame.lights[0];
     GraphConfig c;
     c.screen = first.screen;
@@ -51,15 +52,13 @@ GraphConfig graphConfig(const ValidatedFrame& frame,
         l.chain.shadowed = s.shadowed;
         l.chain.shadowMapSize = s.light.shadowMapSize;
         l.chain.spec = ls::scatterSpec(s);
-        const bool sameMethod =
-            previous && i < previous->lights.size() && previous->lights[i].method == &method;
         l.chain.options = method.options(s, i < data.size() ? data[i] : nullptr,
-                                         sameMethod ? &previous->lights[i].chain.options : nullptr);
+                                         i < previous.size() ? previous[i] : nullptr);
         l.touchesView = touches;
         l.noise = touches && method.readsNoise(s);
         l.shadowMap = images.shadowMaps[i];
         l.lightColor = images.lightColors[i];
-        if (touches && method.readsTable(s)) l.table = tableState();
+        l.table = touches && method.readsTable(s);
         noise = noise || l.noise;
         // The step counter holds the most slices of any light that marches.
         if (options.countSteps && method.caps().countsSteps && touches && s.shadowed) {
@@ -68,21 +67,17 @@ GraphConfig graphConfig(const ValidatedFrame& frame,
         }
         c.lights.push_back(l);
     }
-    // A frame-wide method's history, for the graph's screen (the frame-wide method takes every
-    // light, so the first light reaching the view names it).
+    // The engine's 3D image for a one-per-frame method's result (it takes every light, so the
+    // first light reaching the view names it).
     for (size_t i = 0; i < c.lights.size(); ++i)
         if (c.lights[i].touchesView) {
-            const ls::MethodUnit& m = *c.lights[i].method;
-            if (m.caps().onePerFrame) {
-                const ls::HistoryShape shape = m.history(c.lights[i].chain, c.screen);
-                if (shape.given()) c.history = historyState(shape);
-                if (m.caps().exportsVolume) c.volumeOut = images.volumeOut;
-            }
+            const ls::MethodCaps caps = c.lights[i].method->caps();
+            if (caps.onePerFrame && caps.exportsVolume) c.volumeOut = images.volumeOut;
             break;
         }
     if (noise) {
         c.ownNoise = !images.noise.given();
-        c.noise = c.ownNoise ? ownNoiseState() : images.noise;
+        if (!c.ownNoise) c.noise = images.noise;
     }
     return c;
 }

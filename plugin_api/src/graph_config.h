@@ -14,7 +14,8 @@ struct FrameImports {
     ImportState depth, color, inscatterOut, noise, volumeOut;
     std::vector<ImportState> shadowMaps, lightColors;  // one per light
 };
-FrameImports frameImports(const FrameDescription& frame);
+// Its lights' in `v`'s order.
+FrameImports frameImports(const FrameDescription& frame, const ValidatedFrame& v);
 
 struct GraphOptions {
     VkFormat depthStencil = VK_FORMAT_UNDEFINED;
@@ -27,12 +28,12 @@ struct GraphOptions {
 };
 
 // `methods`: each light's; `data`: each light's method state after prepare() (empty for the
-// budget); `previous`: the last graph's configuration, whose options a method may grow from (the
-// beam tree's buffer).
+// budget); `previous`: each light's chain options in the last frame that ran it with the same
+// method (null: none), which a method may grow from (the beam tree's buffer).
 GraphConfig graphConfig(const ValidatedFrame& frame,
                         const std::vector<const ls::MethodUnit*>& methods,
                         const FrameImports& images, const GraphOptions& options,
                         const std::vector<const ls::LightData*>& data = {},
-                        const GraphConfig* previous = nullptr);
+                        const std::vector<const ls::ChainOptions*>& previous = {});
 
 }  // namespace lightscatter::detail

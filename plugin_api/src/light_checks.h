@@ -8,15 +8,7 @@
 
 namespace lightscatter::detail {
 
-// How the engine named a light's fields: `light`, `shadowMap`, `lightColor` and `custom` for a
-// frame that gave `light`, lights[i].light ... lights[i].settings (or `custom` without own
-// settings) for the list.
-struct LightPaths {
-    std::string light = "light", shadowMap = "shadowMap", lightColor = "lightColor",
-                settings = "custom";
-};
-
-// `setup` holds the frame's part (setupFrameWide); `withImages` false skips the image handles.
+// `setup` holds the frame's part (setupFramePart); `withImages` false skips the image handles.
 void setupLight(ls::LightSetup& setup, const LightInput& light, const LightPaths& paths,
                 bool withImages = true);
 

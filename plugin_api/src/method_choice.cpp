@@ -257,44 +257,42 @@ MethodChoice chooseMethod(Method requested, const ls::LightSetup& s, bool lightR
 std::vector<MethodChoice> chooseLightMethods(Method frameMethod, ValidatedFrame& v,
                                              const FrameDescription& frame) {
     const size_t n = v.lights.size();
-    const std::vector<LightInput> inputs = lightInputs(frame);
     std::vector<MethodChoice> choices(n);
     bool occluders = false;
+    // A light's own method overrides the frame's; its Auto follows the frame's.
+    auto requested = [&](size_t i) {
+        const Method own = v.given[i].input.method;
+        return own != Method::Auto ? own : frameMethod;
+    };
     for (size_t i = 0; i < n; ++i) {
-        // A light's own method overrides the frame's; its Auto follows the frame's.
-        const Method requested =
-            v.list && inputs[i].method != Method::Auto ? inputs[i].method : frameMethod;
         try {
-            choices[i] = chooseMethod(requested, v.lights[i], v.touchesView[i]);
+            choices[i] = chooseMethod(requested(i), v.lights[i], v.touchesView[i]);
         } catch (const InvalidInput& e) {
-            if (!v.list) throw;
-            throw aboutLight(e, i);
+            throw aboutLight(e, v.given[i].paths);
         }
     }
-    // A frame-wide method (froxels) takes every light into one chain: once one light resolves to
-    // it, the lights that follow the frame's method go with it, and one that names another
+    // A one-per-frame method (froxels) takes every light into one chain: once one light resolves
+    // to it, the lights that follow the frame's method go with it, and one that names another
     // method is refused.
     for (size_t i = 0; i < n; ++i) {
         if (!choices[i].unit().caps().onePerFrame) continue;
         const Method wide = choices[i].method;
         for (size_t j = 0; j < n; ++j) {
             if (choices[j].method == wide) continue;
-            const bool own = v.list && inputs[j].method != Method::Auto;
-            if (own)
-                refuse("lights[" + std::to_string(j) +
-                       "].method = " + methodName(inputs[j].method) + ": " + methodName(wide) +
-                       " (lights[" + std::to_string(i) +
+            const std::string at = "lights[" + std::to_string(v.given[j].given) + "]";
+            if (v.given[j].input.method != Method::Auto)
+                refuse(at + ".method = " + methodName(v.given[j].input.method) + ": " +
+                       methodName(wide) + " (lights[" + std::to_string(v.given[i].given) +
                        "]'s) takes every light of the frame into one grid and mixes with no "
-                       "other method; leave lights[" +
-                       std::to_string(j) + "].method auto, or choose no " + methodName(wide));
+                       "other method; leave " +
+                       at + ".method auto, or choose no " + methodName(wide));
             try {
                 choices[j] = chooseMethod(wide, v.lights[j], v.touchesView[j]);
                 choices[j].reason = methodName(wide) +
                                     std::string(" takes every light of the frame (lights[") +
-                                    std::to_string(i) + "] resolved to it)";
+                                    std::to_string(v.given[i].given) + "] resolved to it)";
             } catch (const InvalidInput& e) {
-                if (!v.list) throw;
-                throw aboutLight(e, j);
+                throw aboutLight(e, v.given[j].paths);
             }
         }
         break;

@@ -9,8 +9,8 @@
 
 namespace lightscatter::detail {
 
-// The light whose settings decide a frame-wide method's grid: the first reaching the view (the
-// frame-wide chain's first), else the first of the frame.
+// The light whose settings decide a one-per-frame method's grid: the first reaching the view (the
+// chain's first), else the first of the frame.
 size_t gridLight(const ValidatedFrame& frame);
 
 // The grid of `frame` for a screen of `screen` texels (the graph's: maxRenderSize's when there is

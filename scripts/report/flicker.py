@@ -11,7 +11,7 @@ import shutil
 from datetime import date
 from pathlib import Path
 
-from .common import fmt
+from .common import FORMER_SWEEPS, fmt
 
 FLICKER_HEADING = "## Temporal stability"
 
@@ -24,8 +24,10 @@ def load(bench_dir):
     return [r for r in json.loads((Path(bench_dir) / "bench.json").read_text())["runs"] if "flicker" in r]
 
 
-# Sweep families that start from epipolar's balanced profile (bench_config.cpp: balanced()).
-EPIPOLAR_SWEEPS = ("slices", "samples", "initialStep", "refinementThreshold", "trees")
+# Sweep families that start from epipolar's balanced profile (bench_config.cpp: balanced()), under
+# their current names and those of runs recorded before (common.FORMER_SWEEPS).
+EPIPOLAR_SWEEPS = ("slices", "samplesPerSlice", "initialSampleStep", "refinementThreshold", "minMaxTrees",
+                   *FORMER_SWEEPS)
 
 
 def label(r):
@@ -63,7 +65,10 @@ def epipolar_findings(runs, scenes, w, h):
     """Where epipolar's flicker beyond brute force's comes from, from the sweep rows of the run."""
     out = []
     p = out.append
-    sweeps = ["initialStep=1", "refinementThreshold=0.01", "refinementThreshold=0.003", "slices=128"]
+    # Marching every sample: "initialStep=1" in runs recorded before the sweep took the field's name.
+    every = next((s for s in ("initialSampleStep=1", "initialStep=1") if any(r["label"] == s for r in runs)),
+                 "initialSampleStep=1")
+    sweeps = [every, "refinementThreshold=0.01", "refinementThreshold=0.003", "slices=128"]
     have = [s for s in sweeps if any(r["label"] == s for r in runs)]
     if not any(r["label"] == "epipolar balanced" for r in runs) or not have or \
             not any(r["method"] == "brute-force" for r in runs):
@@ -95,9 +100,9 @@ def epipolar_findings(runs, scenes, w, h):
     p("")
     mean = lambda v: sum(v) / len(v) if v else None
     share = {sw: mean(v) for sw, v in closed.items()}
-    if "initialStep=1" in share and share["initialStep=1"] is not None:
-        p(f"Marching every sample (initialStep=1, no interpolation along the lines) removes on average "
-          f"{fmt(100 * share['initialStep=1'], 2)}% of epipolar's part (the gap to brute force), so most of it is "
+    if share.get(every) is not None:
+        p(f"Marching every sample ({every}, no interpolation along the lines) removes on average "
+          f"{fmt(100 * share[every], 2)}% of epipolar's part (the gap to brute force), so most of it is "
           "interpolation between ray-marching samples. The cause: depth-break refinement looks at camera depth "
           "alone. Where a shadow edge crosses an epipolar line without a depth step above `refinementThreshold` "
           "(3% by default), in the open medium or on a surface whose depth steps a little (a window's recess, "

@@ -1,6 +1,6 @@
 """The 'Which profile for which budget' section: the profiles on the Pareto front and the sweeps'
 reach."""
-from .common import fmt
+from .common import fmt, sweep_family
 
 
 def profiles_section(runs, scenes):
@@ -24,15 +24,17 @@ def profiles_section(runs, scenes):
     p("How far each one-parameter sweep moves the error (largest minus smallest mean relative error over the "
       "sweep, averaged over the scenes), largest first:\n")
     spans = {}
-    for family in ("slices", "samples", "initialStep", "shadowMapSize", "trees"):
-        per_scene = []
+    for family in ("slices", "samplesPerSlice", "initialSampleStep", "shadowMapSize", "minMaxTrees"):
+        per_scene, named = [], family
         for scene in scenes:
-            errs = [r["error"]["meanRelative"] for r in runs if r["scene"] == scene and r["family"] == family
+            rows = [r for r in runs if r["scene"] == scene and sweep_family(r) == family
                     and r["method"] == "epipolar" and "error" in r]
+            errs = [r["error"]["meanRelative"] for r in rows]
             if len(errs) > 1:
                 per_scene.append(max(errs) - min(errs))
+                named = rows[0]["family"]  # as the run recorded it ("samples" before samplesPerSlice)
         if per_scene:
-            spans[family] = sum(per_scene) / len(per_scene)
+            spans[named] = sum(per_scene) / len(per_scene)
     for family, span in sorted(spans.items(), key=lambda kv: -kv[1]):
         p(f"- {family}: {100 * span:.2f} percentage points")
     if any(r["family"] == "size" for r in runs):

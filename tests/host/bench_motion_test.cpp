@@ -287,12 +287,11 @@ TEST(BenchConfigMotion, EachBadValueIsOneLineNamingTheField) {
 TEST(BenchConfigMotion, TheRefinementThresholdSweepFollowsThePluginsRule) {
     EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"],
                               "sweeps": {"refinementThreshold": [0.01, 0]}})"),
-              "sweeps.epipolar.refinementThreshold (run 'refinementThreshold=0'): "
-              "refinementThreshold = 0: "
-              "must be > 0");
+              "sweeps.refinementThreshold (run 'refinementThreshold=0'): "
+              "epipolar.refinementThreshold = 0: must be > 0 and finite (only compared)");
     EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"],
                               "sweeps": {"refinementThreshold": ["small"]}})"),
-              "sweeps.epipolar.refinementThreshold[] = \"small\": must be a number");
+              "sweeps.refinementThreshold[] = \"small\": must be a number");
 }
 
 TEST(BenchConfigMotion, DefaultsAndBothMotions) {
@@ -332,7 +331,9 @@ TEST(BenchConfigInput, DeepNestingIsRefusedInEveryKey) {
         {"size", "{" + scenes + R"(, "size": %})"},
         {"scenes", R"({"scenes": %})"},
         {"sweeps.slices", "{" + scenes + R"(, "sweeps": {"slices": %}})"},
-        {"sweeps.coneModes", "{" + scenes + R"(, "sweeps": {"coneSamples": [8], "coneModes": %}})"},
+        {"sweeps.planes.target", "{" + scenes + R"(, "sweeps": {"planes.target": %}})"},
+        {"configurations[0].coneMarch.samples",
+         "{" + scenes + R"(, "configurations": [{"label": "a", "coneMarch": {"samples": %}}]})"},
     };
     for (size_t levels : {size_t{30000}, size_t{100000}}) {
         for (const auto& [field, text] : cases) {
@@ -351,7 +352,7 @@ TEST(BenchConfigInput, DeepNestingIsRefusedInEveryKey) {
 // Runs grow as scenes x sweep values, the square of the file: a 30 KB file made a million runs
 // (hundreds of MB, a minute of checks). Refused at 10,000, 24 times the largest shipped one.
 TEST(BenchConfigInput, AConfigurationOfTooManyRunsIsRefused) {
-    // Each scene: one epipolar balanced run and 100 tree sweeps (which need no budget check), 101.
+    // Each scene: one epipolar balanced run and 100 of the trees' sweep, 101.
     auto config = [](int sceneCount) {
         std::string scenes, trees;
         for (int i = 0; i < sceneCount; ++i)
@@ -383,12 +384,10 @@ TEST(BenchConfigInput, RepeatedKeysAndLongValues) {
     EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"],
                               "sweeps": {"slices": [64], "slices": [128]}})"),
               "sweeps: key 'slices' appears twice in one object");
-    std::string many =
-        R"({"scenes": ["scenes/atrium.json"], "sweeps": {"coneSamples": [8], "coneModes": [)";
+    std::string many = R"({"scenes": ["scenes/atrium.json"], "sweeps": {"planes.target": [)";
     for (int i = 0; i < 100000; ++i) many += "[1],";
     const std::string m = configError(many + "[1]]}}");
-    EXPECT_EQ(m.rfind("sweeps.coneModes[] = [1]: must be cone, naive or no-shadow-sampling", 0), 0u)
-        << m;
+    EXPECT_EQ(m, "sweeps.planes.target[] = [1]: must be one of float16, float32, rgba8");
     const std::string size = configError(R"({"scenes": ["scenes/atrium.json"], "size": ")" +
                                          std::string(100000, '9') + "\"}");
     EXPECT_EQ(size.rfind("size '9999", 0), 0u) << size;
@@ -402,10 +401,11 @@ TEST(BenchConfigInput, RepeatedKeysAndLongValues) {
     EXPECT_LE(method.size(), 400u) << method;  // the known methods follow
 }
 
-// "slices", the planes method's former name, in the method lists, and its sweeps' former keys
-// (sweeps.slicePlanes, sweeps.sliceTargets) expand to the runs the current names do, which say
-// "planes"; one sweep under both names is refused, naming both.
-TEST(BenchConfigInput, FormerNamesOfThePlanesMethodAndItsSweeps) {
+// "slices", the planes method's former name, in the method lists, and the planes' fields under
+// their former flat names (slicePlanes, sliceTarget, sliceDither) in sweeps and configurations
+// expand to the runs their current names do (a sweep's label and family are its key as the file
+// gave it); a field under two of its names is refused, naming both.
+TEST(BenchConfigInput, FormerNamesOfThePlanesMethodAndItsFields) {
     const auto dir = std::filesystem::temp_directory_path() /
                      ("ls_bench_motion_test_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
@@ -424,34 +424,73 @@ TEST(BenchConfigInput, FormerNamesOfThePlanesMethodAndItsSweeps) {
     // A scene's own method list, and the configuration's.
     const auto former = runs(R"({"scenes": ["scenes/atrium.json", {"scene":
         "scenes/window_room.json", "methods": ["slices"]}], "methods": ["epipolar", "slices"],
-        "sweeps": {"slicePlanes": [64], "sliceTargets": ["rgba8", "rgba8-dither"]}})");
+        "sweeps": {"slicePlanes": [64]}, "configurations": [{"label": "8-bit", "method": "slices",
+        "slicePlanes": 64, "sliceTarget": "rgba8", "sliceDither": false}]})");
     const auto current = runs(R"({"scenes": ["scenes/atrium.json", {"scene":
         "scenes/window_room.json", "methods": ["planes"]}], "methods": ["epipolar", "planes"],
-        "sweeps": {"planeCount": [64], "planeTargets": ["rgba8", "rgba8-dither"]}})");
-    EXPECT_EQ(former, current);
-    const std::vector<std::string> planes{"planes / profiles / planes / 128 float",
-                                          "planes 64 rgba8 / planes / planes / 64 rgba8",
-                                          "planes 64 rgba8-dither / planes / planes / 64 "
-                                          "rgba8-dither"};
-    std::vector<std::string> expected{"epipolar balanced / profiles / epipolar / 128 float"};
-    expected.insert(expected.end(), planes.begin(), planes.end());  // atrium
-    expected.insert(expected.end(), planes.begin(), planes.end());  // window_room
-    EXPECT_EQ(former, expected);
+        "sweeps": {"planes.count": [64]}, "configurations": [{"label": "8-bit", "method": "planes",
+        "planes": {"count": 64, "target": "rgba8", "dither": false}}]})");
+    auto expected = [](const std::string& key) {
+        const std::vector<std::string> planes{
+            "planes / profiles / planes / 128 float",
+            key + "=64 / " + key + " / planes / 64 float",
+            "8-bit / configurations / planes / 64 rgba8",
+        };
+        std::vector<std::string> all{"epipolar balanced / profiles / epipolar / 128 float"};
+        all.insert(all.end(), planes.begin(), planes.end());  // atrium
+        all.insert(all.end(), planes.begin(), planes.end());  // window_room
+        return all;
+    };
+    EXPECT_EQ(former, expected("slicePlanes"));
+    EXPECT_EQ(current, expected("planes.count"));
     EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"],
                               "sweeps": {"planeCount": [64], "slicePlanes": [128]}})"),
-              "sweeps.slicePlanes and sweeps.planes.count are one sweep (slicePlanes is its former "
-              "name): give it once");
-    EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"], "sweeps": {"planeCount": [64],
-                              "planeTargets": ["rgba8"], "sliceTargets": ["float32"]}})"),
-              "sweeps.sliceTargets and sweeps.planeTargets are one sweep (sliceTargets is its "
-              "former name): give it once");
+              "sweeps.slicePlanes sweeps planes.count a second time (under another of its names): "
+              "give it once");
+    EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"], "configurations": [{"label": "a",
+                              "planeCount": 64, "planes": {"count": 128}}]})"),
+              "configurations[0].planes.count sets planes.count a second time (as planeCount): "
+              "give it once");
     // The messages name the key as the file gave it.
     EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"], "sweeps": {"slicePlanes": [1]}})"),
-              "sweeps.slicePlanes[] = 1: must be a whole number from 2 to 4096");
-    EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"], "sweeps": {"slicePlanes": [64],
-                              "sliceTargets": ["rgba16"]}})"),
-              "sweeps.sliceTargets[] = \"rgba16\": must be float16, float32, rgba8 (the seed's "
-              "rounding) or rgba8-dither");
+              "sweeps.slicePlanes (run 'slicePlanes=1'): planes.count = 1: must be in [2, 4096]");
+    EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"], "sweeps": {"sliceTarget":
+                              ["rgba16"]}})"),
+              "sweeps.sliceTarget[] = \"rgba16\": must be one of float16, float32, rgba8");
+}
+
+// The benchmark's own keys for settings are gone (#37): the compound sweeps (coneModes,
+// planeTargets and its former name sliceTargets), samples and initialStep, and the configurations'
+// samples, initialStep and coneMode are unknown keys, named in the refusal; planeTarget is
+// planes.target's former name, which takes the field's values (rgba8-dither is rgba8 with
+// planes.dither).
+TEST(BenchConfigInput, TheBenchmarksOwnSettingsKeysAreGone) {
+    const std::string scenes = R"({"scenes": ["scenes/atrium.json"], )";
+    for (const std::string key :
+         {"coneModes", "planeTargets", "sliceTargets", "samples", "initialStep"}) {
+        const std::string m = configError(scenes + R"("sweeps": {")" + key + R"(": [1]}})");
+        EXPECT_EQ(m.rfind("sweeps: unknown key '" + key +
+                              "' (known: shadowMapSize, size, and every settings field: ",
+                          0),
+                  0u)
+            << m;
+    }
+    for (const std::string key : {"samples", "initialStep", "coneMode"}) {
+        const std::string m =
+            configError(scenes + R"("configurations": [{"label": "a", ")" + key + R"(": 1}]})");
+        EXPECT_EQ(m.rfind("configurations[0]: unknown key '" + key +
+                              "' (known: label, method, from, sizes, shadowMapSize, family, and "
+                              "every settings field: ",
+                          0),
+                  0u)
+            << m;
+    }
+    EXPECT_EQ(configError(scenes + R"("configurations": [{"label": "a", "method": "planes",
+                                      "planeTarget": "rgba8-dither"}]})"),
+              "configurations[0].planeTarget = \"rgba8-dither\": must be one of float16, float32, "
+              "rgba8");
+    EXPECT_EQ(configError(scenes + R"("sweeps": {"planeTarget": ["rgba8", "rgba8-dither"]}})"),
+              "sweeps.planeTarget[] = \"rgba8-dither\": must be one of float16, float32, rgba8");
 }
 
 }  // namespace

@@ -18,12 +18,12 @@ TEST(CliBench, EveryRunIsCheckedBeforeAnyRenders) {
     // came up, after all the others.
     writeFile("late.json",
               R"({"frames": 1, "warmup": 0, "size": "32x18", "scenes": ["scenes/atrium.json"],
-        "profiles": ["balanced", "high-quality"], "sweeps": {"initialStep": [4, 3]}})");
+        "profiles": ["balanced", "high-quality"], "sweeps": {"initialSampleStep": [4, 3]}})");
     const auto r = run("bench --config late.json --out late");
-    expectFailure(
-        r,
-        "late.json: sweeps.initialStep (run 'initialStep=3'): initialSampleStep = 3: must be a "
-        "power of two between 1 and 128");
+    expectFailure(r,
+                  "late.json: sweeps.initialSampleStep (run 'initialSampleStep=3'): "
+                  "epipolar.initialSampleStep = 3: must be a power of two in [1, 128] (the first "
+                  "ray-marching samples' spacing)");
     EXPECT_FALSE(cli_test::exists("late/bench.csv")) << "rendered before checking";
 
     writeFile("wrap.json", R"({"frames": 4294967297, "scenes": ["scenes/atrium.json"]})");
@@ -162,14 +162,17 @@ TEST(CliBench, ProfileShadowMapGivesEachProfileItsMap) {
 }
 
 // "configurations" are named runs of settings no profile gives, on every scene, checked before
-// anything renders; every row times the host's frame beside the plugin's (seed 003's baseline).
+// anything renders; every row times the host's frame beside the plugin's (seed 003's baseline). A
+// configuration sets settings fields nested under their method's member, by their dotted names or
+// by their former flat names.
 TEST(CliBench, ConfigurationsRunNamedSettingsOnEveryScene) {
     writeFile("named.json", R"({"frames": 2, "warmup": 0, "size": "16x9", "measureError": false,
         "scenes": ["scenes/engine_spot.json"], "methods": ["brute-force"],
         "configurations": [
-          {"label": "seed low", "slices": 512, "samples": 256, "shadowMapSize": 512},
+          {"label": "seed low", "epipolar": {"slices": 512, "samplesPerSlice": 256},
+           "shadowMapSize": 512},
           {"label": "no sampling 16", "method": "cone-march", "coneSamples": 16,
-           "coneMode": "no-shadow-sampling"}]})");
+           "shadowSampling": false}]})");
     const auto r = run("bench --config named.json --out named --validation");
     ASSERT_EQ(r.exitCode, 0) << r.out;
     std::ifstream j(cli_test::path("named/bench.json"));
@@ -196,7 +199,8 @@ TEST(CliBench, ConfigurationsRunNamedSettingsOnEveryScene) {
     // With configurations the methods' list may be empty: they are the runs.
     writeFile("only.json", R"({"frames": 1, "warmup": 0, "size": "16x9", "measureError": false,
         "scenes": ["scenes/engine_spot.json"], "methods": [],
-        "configurations": [{"label": "seed low", "slices": 512, "samples": 256}]})");
+        "configurations": [{"label": "seed low", "epipolar.slices": 512,
+                            "epipolar.samplesPerSlice": 256}]})");
     const auto only = run("bench --config only.json --out only --validation");
     ASSERT_EQ(only.exitCode, 0) << only.out;
     std::ifstream oj(cli_test::path("only/bench.json"));

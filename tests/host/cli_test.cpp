@@ -345,7 +345,7 @@ TEST(Cli, BudgetOfFroxelsFollowsThePreset) {
     const auto t =
         run("budget --method froxels-unreal-temporal --profile balanced --size 1920x1080");
     ASSERT_EQ(t.exitCode, 0) << t.out;
-    for (const char* line : {"frame history A", "frame history B", "120 x 68    x 64",
+    for (const char* line : {"froxel history", "froxel history (next)", "120 x 68    x 64",
                              "(kept across frames)", "froxels.slices 64", "froxels.temporal true"})
         EXPECT_NE(t.out.find(line), std::string::npos) << line << "\n" << t.out;
     expectFailure(run("budget --method froxels --lights sun,spot:epipolar"),

@@ -1,0 +1,13 @@
+#pragma once
+// The pipelines and samplers of one device, shared by every plugin on it (views of one engine, or
+// plugins on several threads).
+#include "rendergraph/device.h"
+#include "shared/shared_state.h"
+
+namespace lightscatter::detail {
+
+// The device's shared state, made for the first plugin on it and kept while one lives. Plugins
+// that load Vulkan differently, or allocate differently, keep theirs apart.
+ls::Shared sharedFor(const rg::ExternalDevice& device);
+
+}  // namespace lightscatter::detail
