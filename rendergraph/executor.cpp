@@ -299,9 +299,15 @@ void GraphExecutor::refreshImports(uint32_t slot) {
         const VkImage img = r.importedImage.image;
         if (!img) throw VulkanError("imported image '" + r.name + "' has no VkImage to run with");
         // The image and its debug name are the engine's; only the views are the runtime's, and an
-        // image only copied to and from has none (Vulkan forbids one).
+        // image only copied to and from has none (Vulkan forbids one). A persistent image's view
+        // is kept with it (persistent_store.h).
         ImageObjects o{img};
-        if (r.importedImage.usage & kViewUsages) {
+        if (r.persistent) {
+            Bound& b = bound_[id];
+            VkImageView& kept = b.entry->views[b.image];
+            if (!kept) kept = makeViews(id, img).full;
+            o.full = kept;
+        } else if (r.importedImage.usage & kViewUsages) {
             o = makeViews(id, img);
             views.push_back(o);
         }

@@ -24,10 +24,20 @@ PersistentStore::Entry& PersistentStore::acquire(const std::string& name, uint64
     return e;
 }
 
+PersistentStore::~PersistentStore() {
+    for (auto& [key, e] : entries_)
+        for (VkImageView v : e.views)
+            if (v) device_.vk().DestroyImageView(device_.device(), v, device_.allocator());
+}
+
 void PersistentStore::retireEntry(Entry& e, uint64_t lastRecorded) {
     if (!e.images[0]) return;
     auto old = std::make_shared<std::array<std::unique_ptr<OwnedImage>, 2>>(std::move(e.images));
-    retired_.retire(lastRecorded, [old] {});
+    retired_.retire(lastRecorded, [old, views = e.views, &device = device_] {
+        for (VkImageView v : views)
+            if (v) device.vk().DestroyImageView(device.device(), v, device.allocator());
+    });
+    e.views = {};
 }
 
 void PersistentStore::release(uint64_t unusedBefore, uint64_t lastRecorded) {

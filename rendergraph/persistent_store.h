@@ -60,6 +60,8 @@ class PersistentStore {
     // Images it lets go (a new shape, an entry released) are retired into `retired`.
     PersistentStore(const Device& device, RetireList& retired)
         : device_(device), retired_(retired) {}
+    // Every frame that used its images must have completed.
+    ~PersistentStore();
     PersistentStore(const PersistentStore&) = delete;
     PersistentStore& operator=(const PersistentStore&) = delete;
 
@@ -68,6 +70,9 @@ class PersistentStore {
     struct Entry {
         PersistentImageDesc desc;
         std::array<std::unique_ptr<OwnedImage>, 2> images;
+        // Their views, made by the first executor that binds each (the images are the store's:
+        // their identity is known, unlike an engine's handle, so the views outlive frames).
+        std::array<VkImageView, 2> views{};
         std::array<bool, 2> written{};
         uint64_t stamp = 0;
         int latest = -1;         // a history's image the last frame that used it wrote

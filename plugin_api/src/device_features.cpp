@@ -5,7 +5,7 @@
 #include <vector>
 
 #include <lightscatter/lightscatter.h>
-#include "frame_setup.h"
+#include "device_features.h"
 
 namespace lightscatter {
 namespace {

@@ -1,5 +1,7 @@
 #include "device_shared.h"
 
+#include "device_features.h"
+
 #include <map>
 #include <memory>
 #include <mutex>
@@ -15,7 +17,31 @@ struct DeviceShared {
     ls::SharedState state;
 };
 
+// Refuses a creation before anything is made from it.
+const PluginCreateInfo& checked(const PluginCreateInfo& info) {
+    const VulkanContext& c = info.context;
+    auto null = [](const char* field) {
+        throw InvalidInput(std::string("lightscatter: context.") + field + " is VK_NULL_HANDLE");
+    };
+    if (info.framesInFlight < 1 || info.framesInFlight > kMaxFramesInFlight)
+        throw InvalidInput("lightscatter: framesInFlight is " +
+                           std::to_string(info.framesInFlight) + "; it must be 1 to " +
+                           std::to_string(kMaxFramesInFlight));
+    if (!c.instance) null("instance");
+    if (!c.physicalDevice) null("physicalDevice");
+    if (!c.device) null("device");
+    if (!c.queue) null("queue");
+    detail::checkEnabledFeatures(c.enabledFeatures);
+    return info;
+}
+
 }  // namespace
+
+rg::ExternalDevice externalDevice(const PluginCreateInfo& info) {
+    const VulkanContext& c = checked(info).context;
+    return {c.instance,    c.physicalDevice,         c.device,      c.queue,
+            c.queueFamily, info.getInstanceProcAddr, info.allocator};
+}
 
 ls::Shared sharedFor(const rg::ExternalDevice& d) {
     using Key = std::tuple<VkDevice, PFN_vkGetInstanceProcAddr, const VkAllocationCallbacks*>;

@@ -1,10 +1,15 @@
 #pragma once
 // The pipelines and samplers of one device, shared by every plugin on it (views of one engine, or
 // plugins on several threads).
+#include <lightscatter/lightscatter.h>
 #include "rendergraph/device.h"
 #include "shared/shared_state.h"
 
 namespace lightscatter::detail {
+
+// The engine's device as the runtime takes it, from a creation checked before anything is made
+// from it (InvalidInput for a missing handle or feature, or framesInFlight out of its range).
+rg::ExternalDevice externalDevice(const PluginCreateInfo& info);
 
 // The device's shared state, made for the first plugin on it and kept while one lives. Plugins
 // that load Vulkan differently, or allocate differently, keep theirs apart.

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "rendergraph/format_info.h"
+
 namespace lightscatter::detail {
 namespace {
 
@@ -64,6 +66,30 @@ void describeMethods(RecordedFrame& f, const GraphConfig& c, const std::string& 
                 f.notice += (f.notice.empty() ? "" : "; ") + l.notice;
     }
     f.reason += frameNotes(c, values);
+}
+
+FrameReport reportOf(const RecordedFrame& f, const std::string& device, VkFormat depthStencil,
+                     const StepCounters& steps) {
+    const rg::FrameTimings t = f.graph->executor->readTimings(f.frame);
+    FrameReport r;
+    r.frame = f.frame;
+    r.timed = t.valid;
+    r.device = device;
+    r.depthStencilFormat = rg::formatName(depthStencil);
+    if (t.valid) {
+        for (const auto& p : t.passes) r.passes.push_back({p.name, p.milliseconds, p.samples});
+        r.totalMilliseconds = t.totalMilliseconds;
+        if (f.countedSteps) r.steps = steps.read(f.frame, f.stepSlices);
+    }
+    r.passNames = f.passNames;
+    r.method = f.method;
+    r.reason = f.reason;
+    r.notice = f.notice;
+    r.lights = f.lights;
+    r.setupPasses = f.setupPasses;
+    r.graphCompiled = f.graphCompiled;
+    r.cpuWork = f.cpuWork;
+    return r;
 }
 
 }  // namespace lightscatter::detail

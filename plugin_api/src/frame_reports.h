@@ -8,6 +8,7 @@
 #include <lightscatter/lightscatter.h>
 #include "graph_cache.h"
 #include "method_choice.h"
+#include "step_counters.h"
 
 namespace lightscatter::detail {
 
@@ -31,5 +32,9 @@ void describeMethods(RecordedFrame& f, const GraphConfig& c, const std::string& 
                      const std::vector<MethodChoice>& choices,
                      const std::vector<Settings>& settings,
                      const std::vector<ls::LightFrame>& values, const std::vector<size_t>& given);
+
+// The report of a recorded frame, with its times once the GPU has finished it.
+FrameReport reportOf(const RecordedFrame& f, const std::string& device, VkFormat depthStencil,
+                     const StepCounters& steps);
 
 }  // namespace lightscatter::detail

@@ -51,8 +51,4 @@ ValidatedFrame validateFrame(const FrameDescription& frame, bool withImages = tr
 // checked; setupLight (light_checks.h) adds a light's part to it.
 ls::LightSetup setupFramePart(const FrameDescription& frame, bool withImages = true);
 
-// Throws InvalidInput naming every feature the plugin needs that `enabled` (the chain an engine
-// created its device with) does not turn on.
-void checkEnabledFeatures(const VkPhysicalDeviceFeatures2* enabled);
-
 }  // namespace lightscatter::detail

@@ -15,7 +15,6 @@
 #include "light_states.h"
 #include "lin_storage.h"
 #include "method_choice.h"
-#include "rendergraph/format_info.h"
 #include "rendergraph/report.h"
 #include "rendergraph/vk_error.h"
 #include "shared/point_table.h"
@@ -35,30 +34,6 @@ bool poisonFromEnvironment() {
     return v && *v && std::string(v) != "0";
 }
 
-// Refuses a creation before anything is made from it.
-const PluginCreateInfo& checked(const PluginCreateInfo& info) {
-    const VulkanContext& c = info.context;
-    auto null = [](const char* field) {
-        throw InvalidInput(std::string("lightscatter: context.") + field + " is VK_NULL_HANDLE");
-    };
-    if (info.framesInFlight < 1 || info.framesInFlight > kMaxFramesInFlight)
-        throw InvalidInput("lightscatter: framesInFlight is " +
-                           std::to_string(info.framesInFlight) + "; it must be 1 to " +
-                           std::to_string(kMaxFramesInFlight));
-    if (!c.instance) null("instance");
-    if (!c.physicalDevice) null("physicalDevice");
-    if (!c.device) null("device");
-    if (!c.queue) null("queue");
-    detail::checkEnabledFeatures(c.enabledFeatures);
-    return info;
-}
-
-rg::ExternalDevice externalDevice(const PluginCreateInfo& info) {
-    const VulkanContext& c = checked(info).context;
-    return {c.instance,    c.physicalDevice,         c.device,      c.queue,
-            c.queueFamily, info.getInstanceProcAddr, info.allocator};
-}
-
 // A light's state lives this many frames past its last frame (beyond the frames in flight), so
 // that a light leaving the view for a moment comes back to its table and data.
 constexpr uint64_t kAbsentFramesKept = 60;
@@ -67,12 +42,12 @@ constexpr uint64_t kAbsentFramesKept = 60;
 
 struct Plugin::Impl {
     explicit Impl(const PluginCreateInfo& info)
-        : device(externalDevice(info)),
+        : device(detail::externalDevice(info)),
           caps(device),
           framesInFlight(info.framesInFlight),
           maxRenderSize(info.maxRenderSize),
           store(device, retired),
-          graphs(device, caps, detail::sharedFor(externalDevice(info)), retired, store),
+          graphs(device, caps, detail::sharedFor(detail::externalDevice(info)), retired, store),
           steps(device) {
         depthStencil = detail::stencilFormat(caps);
         coordinates = detail::coordinateFormat(caps);
@@ -296,26 +271,7 @@ struct Plugin::Impl {
             throw InvalidInput("lightscatter: " + which + "the times of only the last " +
                                std::to_string(kTimedFrames) + " frames are kept (the last is " +
                                std::to_string(lastFrame) + ")");
-        const rg::FrameTimings t = f->graph->executor->readTimings(frame);
-        FrameReport r;
-        r.frame = frame;
-        r.timed = t.valid;
-        r.device = device.name();
-        r.depthStencilFormat = rg::formatName(depthStencil);
-        if (t.valid) {
-            for (const auto& p : t.passes) r.passes.push_back({p.name, p.milliseconds, p.samples});
-            r.totalMilliseconds = t.totalMilliseconds;
-            if (f->countedSteps) r.steps = steps.read(frame, f->stepSlices);
-        }
-        r.passNames = f->passNames;
-        r.method = f->method;
-        r.reason = f->reason;
-        r.notice = f->notice;
-        r.lights = f->lights;
-        r.setupPasses = f->setupPasses;
-        r.graphCompiled = f->graphCompiled;
-        r.cpuWork = f->cpuWork;
-        return r;
+        return detail::reportOf(*f, device.name(), depthStencil, steps);
     }
 
     rg::Device device;

@@ -23,6 +23,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <random>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -48,6 +49,9 @@ std::string gPhase = "setup";  // where the loop is, for the messages
 // --driver-handles: the layer's unique handles off, so that the plugin sees the driver's handles
 // as engines ship (a destroyed image's handle may come back); two frames in flight only.
 bool gDriverHandles = false;
+// --no-validation: the instance without the validation layer, for record()'s CPU time as an engine
+// ships (the layer checks every command record() records); the loop asserts the rest as always.
+bool gNoValidation = false;
 
 void setPhase(std::string phase) {
     std::lock_guard lock(gLogMutex);
@@ -160,11 +164,11 @@ void createGpu(Gpu& g) {
     app.pApplicationName = "lightscatter frame loop";
     app.apiVersion = VK_API_VERSION_1_3;
     VkInstanceCreateInfo instanceInfo{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
-    instanceInfo.pNext = &validation;
+    instanceInfo.pNext = gNoValidation ? static_cast<const void*>(&messengerInfo) : &validation;
     instanceInfo.pApplicationInfo = &app;
-    instanceInfo.enabledLayerCount = 1;
+    instanceInfo.enabledLayerCount = gNoValidation ? 0 : 1;
     instanceInfo.ppEnabledLayerNames = &layer;
-    instanceInfo.enabledExtensionCount = 2;
+    instanceInfo.enabledExtensionCount = gNoValidation ? 1 : 2;
     instanceInfo.ppEnabledExtensionNames = extensions;
     VK(vkCreateInstance(&instanceInfo, nullptr, &g.instance));
     auto createMessenger = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
@@ -1207,6 +1211,142 @@ void printTable(const RunResult& r) {
                 r.checkpointsIdentical, r.checkpointsCompared);
 }
 
+// ---- Many lights --------------------------------------------------------------------------------
+
+// Up to eight spots over the floor, each with its own id (LightInput::id): they enter, leave from
+// the middle of the list, come back in other orders, and six of them stay away long enough to be
+// forgotten. Each phase is the lights of `order`, from its first frame to the next phase's.
+struct LightPhase {
+    uint32_t frame;
+    const char* what;
+    std::vector<int> order;  // the lights, by index, in the list's order; empty: shuffled all 8
+    bool builds;             // its first frame may compile a graph and allocate
+};
+const LightPhase kLightPhases[] = {
+    {1, "4 lights enter", {0, 1, 2, 3}, true},
+    {11, "8 lights", {0, 1, 2, 3, 4, 5, 6, 7}, true},
+    {21, "8 lights, reversed", {7, 6, 5, 4, 3, 2, 1, 0}, false},
+    {31, "8 lights, shuffled each frame", {}, false},
+    {41, "2 leave the middle", {0, 1, 3, 4, 6, 7}, true},
+    {51, "they come back, shuffled", {}, false},
+    {61, "6 leave for 80 frames", {0, 1}, true},
+    {141, "all 8 back, shuffled", {}, true},
+};
+constexpr uint32_t kLightFrames = 150;
+
+lightscatter::LightInput spotLight(int k) {
+    lightscatter::LightInput in;
+    lightscatter::Light& l = in.light;
+    l.type = lightscatter::LightType::Spot;
+    const float a = 0.785f * float(k);
+    l.position = {2.5f * std::cos(a), 5.0f, 2.5f * std::sin(a)};
+    l.direction = {-0.2f * std::cos(a), -1.0f, -0.2f * std::sin(a)};
+    l.intensity = {10.0f + 4.0f * float(k), 30.0f, 45.0f - 4.0f * float(k)};
+    l.innerConeAngleDegrees = l.outerConeAngleDegrees = 25.0f;
+    in.id = 100 + uint64_t(k);
+    return in;
+}
+
+// The loop over kLightPhases with one view: no wait, no submit; a graph compiled and memory
+// allocated only in a phase's first frame that `builds`; record()'s CPU time per phase.
+void runManyLights(Engine& e, View& view, uint32_t framesInFlight) {
+    Gpu& g = e.gpu;
+    lightscatter::PluginCreateInfo info;
+    info.framesInFlight = framesInFlight;
+    info.context = g.context();
+    info.getInstanceProcAddr = &frame_loop::countingGetInstanceProcAddr;
+    view.plugin = std::make_unique<lightscatter::Plugin>(info);
+    struct LightSlot {
+        VkCommandBuffer cmd = VK_NULL_HANDLE;
+        VkFence fence = VK_NULL_HANDLE;
+        uint64_t number = 0;
+        uint32_t phase = 0;
+    };
+    std::vector<LightSlot> slots(framesInFlight);
+    const std::vector<VkCommandBuffer> cmds = e.allocateCommandBuffers(e.pool, framesInFlight);
+    for (uint32_t i = 0; i < framesInFlight; ++i) {
+        slots[i].cmd = cmds[i];
+        slots[i].fence = e.createFence(false);
+    }
+    const size_t phases = std::size(kLightPhases);
+    std::vector<std::vector<double>> ms(phases);
+    std::vector<uint32_t> compiled(phases, 0), pipelines(phases, 0), allocations(phases, 0);
+    std::mt19937 shuffle(7);
+    auto completed = [&](LightSlot& slot) {
+        if (slot.number == 0) return;
+        if (view.plugin->report(slot.number).graphCompiled) ++compiled[slot.phase];
+        slot.number = 0;
+    };
+    size_t phase = 0;
+    for (uint32_t frame = 1; frame <= kLightFrames; ++frame) {
+        LightSlot& slot = slots[(frame - 1) % framesInFlight];
+        if (slot.number != 0) {
+            VK(vkWaitForFences(g.device, 1, &slot.fence, VK_TRUE, UINT64_MAX));
+            VK(vkResetFences(g.device, 1, &slot.fence));
+            completed(slot);
+        }
+        while (phase + 1 < phases && kLightPhases[phase + 1].frame <= frame) ++phase;
+        const LightPhase& p = kLightPhases[phase];
+        setPhase("many lights, F=" + std::to_string(framesInFlight) + ", frame " +
+                 std::to_string(frame) + ", " + p.what);
+        std::vector<int> order = p.order;
+        if (order.empty()) {
+            order = {0, 1, 2, 3, 4, 5, 6, 7};
+            std::shuffle(order.begin(), order.end(), shuffle);
+        }
+        Scene scene;
+        lightscatter::FrameDescription d =
+            describe(view, scene, e.shadowMap.image, ShadowState::Uploaded);
+        d.light = {};
+        for (int k : order) d.lights.push_back(spotLight(k));
+        Engine::begin(slot.cmd);
+        e.recordScene(slot.cmd, {&view}, nullptr);
+        const CallCounts before = callCounts();
+        const auto t0 = std::chrono::steady_clock::now();
+        slot.number = view.plugin->record(slot.cmd, d);
+        const auto t1 = std::chrono::steady_clock::now();
+        const CallCounts calls = callCounts() - before;
+        ms[phase].push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+        pipelines[phase] += uint32_t(calls.pipelines);
+        allocations[phase] += uint32_t(calls.allocations);
+        if (calls.waits() != 0 || calls.submits() != 0)
+            fail("record() called " + describeCounts(calls));
+        const bool mayBuild = p.builds && frame == p.frame;
+        if (!mayBuild && (calls.pipelines != 0 || calls.allocations != 0))
+            fail("record() created " + std::to_string(calls.pipelines) +
+                 " pipeline(s) and allocated " + std::to_string(calls.allocations) +
+                 " block(s) outside a phase's first frame that may build");
+        VK(vkEndCommandBuffer(slot.cmd));
+        e.submit({slot.cmd}, slot.fence);
+        slot.phase = uint32_t(phase);
+    }
+    for (LightSlot& slot : slots) {
+        if (slot.number != 0) VK(vkWaitForFences(g.device, 1, &slot.fence, VK_TRUE, UINT64_MAX));
+        completed(slot);
+        vkDestroyFence(g.device, slot.fence, nullptr);
+    }
+    vkFreeCommandBuffers(g.device, e.pool, framesInFlight, cmds.data());
+    std::printf("\nmany lights, frames in flight: %u (one view, spots with ids, %u frames)\n",
+                framesInFlight, kLightFrames);
+    std::printf("%-32s %6s %6s %9s %6s %17s\n", "phase", "frames", "graphs", "pipelines", "allocs",
+                "record ms med/max");
+    for (size_t k = 0; k < phases; ++k) {
+        char timing[32];
+        std::snprintf(timing, sizeof timing, "%.2f/%.2f", median(ms[k]),
+                      *std::max_element(ms[k].begin(), ms[k].end()));
+        std::printf("%-32s %6zu %6u %9u %6u %17s\n", kLightPhases[k].what, ms[k].size(),
+                    compiled[k], pipelines[k], allocations[k], timing);
+        if (compiled[k] > (kLightPhases[k].builds ? 1u : 0u))
+            fail(std::string("many lights: phase '") + kLightPhases[k].what + "' compiled " +
+                 std::to_string(compiled[k]) + " graph(s)");
+    }
+    if (allocations[phases - 1] == 0)
+        fail(
+            "many lights: the lights forgotten after 80 frames away came back to memory they "
+            "kept");
+    view.plugin.reset();
+}
+
 // A graph compiled other than at an event's first frame the first time: the plugin keeps the last
 // 8 graphs it used, and this loop needs fewer configurations than that.
 void checkGraphsReused(const RunResult& r) {
@@ -1261,6 +1401,14 @@ int run() {
         e.graveyard.collectAll();
     }
 
+    for (uint32_t framesInFlight : {2u, 3u}) {
+        e.makeViewImages(views[0], kSmall);
+        runManyLights(e, views[0], framesInFlight);
+        VK(vkDeviceWaitIdle(e.gpu.device));
+        e.buryViewImages(views[0], 0, true);
+        e.graveyard.collectAll();
+    }
+
     for (View& v : views) e.makeViewImages(v, kSmall);
     constexpr uint32_t kThreadFrames = 20;
     const CallCounts threaded = runTwoThreads(e, views, kThreadFrames);
@@ -1288,6 +1436,8 @@ int main(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--driver-handles") == 0) {
             gDriverHandles = true;
+        } else if (std::strcmp(argv[i], "--no-validation") == 0) {
+            gNoValidation = true;
         } else {
             std::fprintf(stderr, "consumer_frame_loop: unknown option %s\n", argv[i]);
             return 2;
