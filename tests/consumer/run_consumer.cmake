@@ -41,6 +41,8 @@ if(MODE STREQUAL "package")
   string(REPLACE ";" "\n  " listing "${installed}")
   message(STATUS "installed:\n  ${listing}")
   foreach(expected include/lightscatter/lightscatter.h include/lightscatter/vocabulary.h
+                   include/lightscatter/settings.h include/lightscatter/methods.inc
+                   include/lightscatter/methods/epipolar.h
                    pkgconfig/lightscatter.pc lightscatterConfig.cmake
                    lightscatterConfigVersion.cmake lightscatterTargets.cmake liblightscatter.a)
     if(NOT installed MATCHES "(^|;|/)${expected}(;|$)")
@@ -48,9 +50,12 @@ if(MODE STREQUAL "package")
     endif()
   endforeach()
   foreach(file IN LISTS installed)
-    if(file MATCHES "\\.(spv|h|hpp)$" AND NOT file MATCHES "^include/lightscatter/(lightscatter|vocabulary)\\.h$")
-      message(FATAL_ERROR "cmake --install installed ${file}: only lightscatter.h and vocabulary.h are public, and "
-                          "the shaders live inside the library")
+    # The public header and what it includes: the settings, the limits, the list of methods and
+    # each method's settings; the shaders live inside the library.
+    if(file MATCHES "\\.(spv|h|hpp|inc)$" AND NOT file MATCHES
+       "^include/lightscatter/((lightscatter|vocabulary|settings|limits)\\.h|methods\\.inc|methods/[a-z_]+\\.h)$")
+      message(FATAL_ERROR "cmake --install installed ${file}: only lightscatter.h and the headers it "
+                          "includes are public, and the shaders live inside the library")
     endif()
     if(file MATCHES "\\.a$" AND NOT file MATCHES "/liblightscatter\\.a$")
       message(FATAL_ERROR "cmake --install installed ${file}: the package is one library")
