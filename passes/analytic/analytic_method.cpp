@@ -55,7 +55,7 @@ ChainOptions AnalyticMethod::options(const LightSetup&, const LightData*,
 ChainOutputs AnalyticMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,
                                       const ChainConfig& c, const CompositeTarget&) const {
     ChainOutputs out;
-    out.lin = addAnalytic(g, {frameContext(in, c)});
+    out.lin = addAnalytic(g, {chainContext(in, c)});
     return out;
 }
 

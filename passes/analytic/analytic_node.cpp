@@ -7,11 +7,11 @@ namespace ls {
 
 rg::ImageRef addAnalytic(rg::RenderGraph& graph, const AnalyticInputs& in) {
     return addScreenLinNode(
-        graph, in.frame.shared, in.frame.spec,
+        graph, in.chain.shared, in.chain.spec,
         {.name = "analytic in-scattering (seed 001)",
-         .constants = in.frame.constants,
-         .depth = in.frame.depth,
-         .values = in.frame.values,
+         .constants = in.chain.constants,
+         .depth = in.chain.depth,
+         .values = in.chain.values,
          .rows = {},
          .shader = [](const ScatterSpec&) { return rg::spirv(ls_spirv::analytic_frag); },
          .specialize = {}});

@@ -1,11 +1,11 @@
 #pragma once
 // Seed 001 as a node: Lin of an unshadowed point or spot light in closed form, per pixel.
-#include "shared/frame_context.h"
+#include "shared/chain_context.h"
 
 namespace ls {
 
 struct AnalyticInputs {
-    FrameContext frame;  // its constants, and the depth: where each pixel's ray ends
+    ChainContext chain;  // its constants, and the depth: where each pixel's ray ends
 };
 
 // Returns Lin (R16G16B16A16_SFLOAT, screen).

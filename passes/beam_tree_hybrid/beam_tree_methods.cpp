@@ -101,7 +101,7 @@ ChainOptions BeamTreeMethod::options(const LightSetup& s, const LightData* data,
 ChainOutputs BeamTreeAnalyticMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,
                                               const ChainConfig& c, const CompositeTarget&) const {
     const Options& o = *c.options.get<Options>();
-    const BeamTreeInputs beam{frameContext(in, c), lightImages(in, c)};
+    const BeamTreeInputs beam{chainContext(in, c), lightImages(in, c)};
     ChainOutputs out;
     out.lin = addBeamTreeHybrid(g, beam, {o.capacityPoints, o.reversedZ});
     return out;
@@ -118,7 +118,7 @@ ChainOutputs BeamTreeSamplingMethod::addChain(rg::RenderGraph& g, const ChainInp
     const Options& o = *c.options.get<Options>();
     LightImages light = lightImages(in, c);
     light.table = {};  // the sampling planes read no table
-    const BeamTreeSamplingInputs beam{frameContext(in, c), light};
+    const BeamTreeSamplingInputs beam{chainContext(in, c), light};
     ChainOutputs out;
     out.lin = addBeamTreeSampling(g, beam, {o.capacityPoints, o.reversedZ});
     return out;

@@ -92,17 +92,17 @@ void drawPlaneParts(rg::PassContext& ctx, const Shared& shared, const ScatterSpe
 
 // The plane pass's declarations: the frame's constants, the triangles, the engine's depth as a
 // read-only depth attachment, and the shadow map and cookie where given.
-rg::BindingTable declarePlaneReads(rg::PassBuilder& pass, const FrameContext& frame,
+rg::BindingTable declarePlaneReads(rg::PassBuilder& pass, const ChainContext& chain,
                                    const LightImages& light, rg::BufferRef triangles) {
-    const auto& s = samplersOf(frame.shared);
+    const auto& s = samplersOf(chain.shared);
     rg::BindingTable table(pass);
-    table.uniform(LS_BINDING_FRAME, frame.constants, kVertexAndFragment)
+    table.uniform(LS_BINDING_FRAME, chain.constants, kVertexAndFragment)
         .storageBufferRead(LS_BINDING_BEAM_TRIANGLES, triangles,
                            VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT)
         .sampledIfValid(LS_BINDING_SHADOW_MAP, light.shadowMap, s.nearest(),
                         VK_IMAGE_ASPECT_DEPTH_BIT)
         .sampledIfValid(LS_BINDING_LIGHT_COLOR, light.lightColor, s.linear());
-    pass.depthTest(frame.depth);
+    pass.depthTest(chain.depth);
     return table;
 }
 
@@ -110,9 +110,9 @@ rg::BindingTable declarePlaneReads(rg::PassBuilder& pass, const FrameContext& fr
 
 rg::ImageRef addBeamTreeHybrid(rg::RenderGraph& graph, const BeamTreeInputs& in,
                                const BeamTreeOptions& options) {
-    const Shared& shared = in.frame.shared;
-    const ScatterSpec& spec = in.frame.spec;
-    const rg::HostDataRef<LightFrame> values = in.frame.values;
+    const Shared& shared = in.chain.shared;
+    const ScatterSpec& spec = in.chain.spec;
+    const rg::HostDataRef<LightFrame> values = in.chain.values;
     const rg::BufferRef triangles = addTriangleUpload(graph, values, options.capacityPoints);
     rg::ImageRef lin = graph.createImage("in-scattering (lit pyramids and uncertain planes)",
                                          rg::ImageDesc::screen(VK_FORMAT_R32G32B32A32_SFLOAT));
@@ -120,10 +120,10 @@ rg::ImageRef addBeamTreeHybrid(rg::RenderGraph& graph, const BeamTreeInputs& in,
         auto pass = graph.addPass("lit pyramids in closed form (seed 004)", rg::PassType::Graphics);
         const auto& s = samplersOf(shared);
         rg::BindingTable table(pass);
-        table.uniform(LS_BINDING_FRAME, in.frame.constants, kVertexAndFragment)
+        table.uniform(LS_BINDING_FRAME, in.chain.constants, kVertexAndFragment)
             .storageBufferRead(LS_BINDING_BEAM_TRIANGLES, triangles,
                                VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT)
-            .sampled(LS_BINDING_DEPTH, in.frame.depth, s.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
+            .sampled(LS_BINDING_DEPTH, in.chain.depth, s.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
             .sampled(LS_BINDING_POINT_TABLE, in.light.table, s.nearest());
         lin = pass.colorAttachment(lin, rg::LoadOp::Clear);
         pass.execute([shared, spec, values, table](rg::PassContext& ctx) {
@@ -148,7 +148,7 @@ rg::ImageRef addBeamTreeHybrid(rg::RenderGraph& graph, const BeamTreeInputs& in,
         // Without a shadow map (a point light) the uncertain space is sampled as lit: then only the
         // inner boxes cast shadows.
         auto pass = graph.addPass("uncertain sampling planes (seed 004)", rg::PassType::Graphics);
-        const rg::BindingTable table = declarePlaneReads(pass, in.frame, in.light, triangles);
+        const rg::BindingTable table = declarePlaneReads(pass, in.chain, in.light, triangles);
         lin = pass.colorAttachment(lin, rg::LoadOp::Load);
         const bool reversedZ = options.reversedZ, shadow = in.light.shadowMap.valid();
         pass.execute([shared, spec, values, shadow, table, reversedZ](rg::PassContext& ctx) {
@@ -162,16 +162,16 @@ rg::ImageRef addBeamTreeHybrid(rg::RenderGraph& graph, const BeamTreeInputs& in,
 
 rg::ImageRef addBeamTreeSampling(rg::RenderGraph& graph, const BeamTreeSamplingInputs& in,
                                  const BeamTreeOptions& options) {
-    const Shared& shared = in.frame.shared;
-    const ScatterSpec& spec = in.frame.spec;
-    const rg::HostDataRef<LightFrame> values = in.frame.values;
+    const Shared& shared = in.chain.shared;
+    const ScatterSpec& spec = in.chain.spec;
+    const rg::HostDataRef<LightFrame> values = in.chain.values;
     const rg::BufferRef triangles = addTriangleUpload(graph, values, options.capacityPoints);
     rg::ImageRef lin = graph.createImage("in-scattering (lit and uncertain planes)",
                                          rg::ImageDesc::screen(VK_FORMAT_R32G32B32A32_SFLOAT));
     // One pass, two draws: the lit parts skip the shadow map, the uncertain parts look it up.
     auto pass =
         graph.addPass("clipped sampling planes (seed 004 method 1)", rg::PassType::Graphics);
-    const rg::BindingTable table = declarePlaneReads(pass, in.frame, in.light, triangles);
+    const rg::BindingTable table = declarePlaneReads(pass, in.chain, in.light, triangles);
     lin = pass.colorAttachment(lin, rg::LoadOp::Clear);
     const bool reversedZ = options.reversedZ, shadow = in.light.shadowMap.valid();
     pass.execute([shared, spec, values, shadow, table, reversedZ](rg::PassContext& ctx) {

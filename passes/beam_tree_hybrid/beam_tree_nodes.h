@@ -5,7 +5,7 @@
 // `beam-tree-sampling` (5.3) samples the lit parts of the planes without shadow look-ups and the
 // uncertain parts with them.
 #include "beam_tree_frame.h"
-#include "shared/frame_context.h"
+#include "shared/chain_context.h"
 
 namespace ls {
 
@@ -19,14 +19,14 @@ const BeamTreeFrame& beamTreeOf(const LightFrame& frame);
 struct BeamTreeInputs {
     // Its constants, and the depth: where each pixel's ray ends, and a read-only depth attachment
     // for the planes.
-    FrameContext frame;
+    ChainContext chain;
     // The point-light table (the lit pyramids'); the shadow map, invalid: the uncertain parts are
     // sampled as lit (a point light); the light color, invalid without one.
     LightImages light;  // its beam tree is built with LitSpace::ClosedForm
 };
 
 struct BeamTreeSamplingInputs {
-    FrameContext frame;  // its constants, and the depth: a read-only depth attachment for planes
+    ChainContext chain;  // its constants, and the depth: a read-only depth attachment for planes
     // The shadow map, invalid: the uncertain parts are sampled as lit (a point light); the light
     // color, invalid without one. The table is not read.
     LightImages light;  // its beam tree is built with LitSpace::Planes

@@ -33,10 +33,10 @@ ChainOptions BruteForceMethod::options(const LightSetup&, const LightData*,
 
 ChainOutputs BruteForceMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,
                                         const ChainConfig& c, const CompositeTarget&) const {
-    const FrameContext frame = frameContext(in, c);
+    const ChainContext chain = chainContext(in, c);
     const LightImages light = lightImages(in, c);
     ChainOutputs out;
-    out.lin = c.shadowed ? addBruteForce(g, {frame, light}) : addUnshadowed(g, {frame, light});
+    out.lin = c.shadowed ? addBruteForce(g, {chain, light}) : addUnshadowed(g, {chain, light});
     return out;
 }
 

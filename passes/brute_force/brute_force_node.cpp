@@ -9,11 +9,11 @@ rg::ImageRef addBruteForce(rg::RenderGraph& graph, const BruteForceInputs& in) {
     rg::ImageRef lin = graph.createImage("in-scattering (screen)",
                                          rg::ImageDesc::screen(VK_FORMAT_R16G16B16A16_SFLOAT));
     auto pass = graph.addPass("brute-force ray march", rg::PassType::Graphics);
-    const rg::BindingTable table = declarePixelMarch(pass, in.frame, in.light);
+    const rg::BindingTable table = declarePixelMarch(pass, in.chain, in.light);
     // Cleared, and marched only within the light's screen rectangle: a small spot costs its
     // pixels, not the screen's.
     lin = pass.colorAttachment(lin, rg::LoadOp::Clear);
-    pass.execute([shared = in.frame.shared, spec = in.frame.spec, values = in.frame.values,
+    pass.execute([shared = in.chain.shared, spec = in.chain.spec, values = in.chain.values,
                   table](rg::PassContext& ctx) {
         if (!scissorToLight(ctx, values)) return;
         drawPixelMarch(ctx, shared, spec, table, {.pipeline = "brute-force ray march"});

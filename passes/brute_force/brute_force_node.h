@@ -1,12 +1,12 @@
 #pragma once
 // Brute force: every pixel marches its own ray through the shadow map, one step per texel. The
 // on-GPU reference the other methods are compared with.
-#include "shared/frame_context.h"
+#include "shared/chain_context.h"
 
 namespace ls {
 
 struct BruteForceInputs {
-    FrameContext frame;  // its constants and depth
+    ChainContext chain;  // its constants and depth
     LightImages light;   // marched: the shadow map, and the table and light color where given
 };
 

@@ -35,7 +35,7 @@ ChainOutputs ConeMarchMethod::addChain(rg::RenderGraph& g, const ChainInputs& in
     light.lightColor = in.lightColor;
     light.shadowMapSize = c.shadowMapSize;
     ChainOutputs out;
-    out.lin = addConeMarch(g, {frameContext(in, c), light}, o.march);
+    out.lin = addConeMarch(g, {chainContext(in, c), light}, o.march);
     return out;
 }
 

@@ -20,13 +20,13 @@ rg::ShaderCode coneMarchShader(bool shadowMap, bool lightColor, bool cube) {
 rg::ImageRef addConeMarch(rg::RenderGraph& graph, const ConeMarchInputs& in,
                           const ConeMarchOptions& options) {
     const bool shadow = in.light.shadowMap.valid(), color = in.light.lightColor.valid();
-    const Shared& shared = in.frame.shared;
-    return addScreenLinNode(graph, shared, in.frame.spec,
+    const Shared& shared = in.chain.shared;
+    return addScreenLinNode(graph, shared, in.chain.spec,
                             {.name = options.coneLimited ? "cone-limited ray march (seed 003)"
                                                          : "naive ray march (seed 003's baseline)",
-                             .constants = in.frame.constants,
-                             .depth = in.frame.depth,
-                             .values = in.frame.values,
+                             .constants = in.chain.constants,
+                             .depth = in.chain.depth,
+                             .values = in.chain.values,
                              .rows =
                                  [light = in.light, shared](rg::BindingTable& table) {
                                      const auto& s = samplersOf(shared);

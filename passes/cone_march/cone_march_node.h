@@ -1,12 +1,12 @@
 #pragma once
 // Seed 003 as a node: a fixed number of samples per pixel along the part of its ray the light can
 // reach (the spot's cone within its range), or along the whole ray (the seed's naive baseline).
-#include "shared/frame_context.h"
+#include "shared/chain_context.h"
 
 namespace ls {
 
 struct ConeMarchInputs {
-    FrameContext frame;  // its constants, and the depth: where each pixel's ray ends
+    ChainContext chain;  // its constants, and the depth: where each pixel's ray ends
     // light.shadowMap invalid: no shadow sampling (the low-end mode); light.lightColor invalid
     // without one. The table is not read.
     LightImages light;

@@ -27,9 +27,9 @@ const EpipolarFrame& epipolarFrameOf(const LightFrame& frame) {
     return static_cast<const EpipolarFrame&>(*frame.data);
 }
 
-rg::BindingTable epipolarTable(rg::PassBuilder& pass, const FrameContext& frame,
+rg::BindingTable epipolarTable(rg::PassBuilder& pass, const ChainContext& chain,
                                const EpipolarContext& epipolar) {
-    rg::BindingTable table = frameTable(pass, frame.constants);
+    rg::BindingTable table = frameTable(pass, chain.constants);
     table.uniform(LS_BINDING_EPIPOLAR, epipolar.constants);
     return table;
 }

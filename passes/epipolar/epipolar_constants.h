@@ -10,7 +10,7 @@
 
 #include "lightscatter/methods/epipolar.h"
 #include "rendergraph/binding_table.h"
-#include "shared/frame_context.h"
+#include "shared/chain_context.h"
 #include "shared/scattering_params.h"
 
 namespace ls {
@@ -48,7 +48,7 @@ struct EpipolarContext {
 
 // A binding table whose first rows are the frame constants and epipolar's (LS_BINDING_FRAME,
 // LS_BINDING_EPIPOLAR).
-rg::BindingTable epipolarTable(rg::PassBuilder& pass, const FrameContext& frame,
+rg::BindingTable epipolarTable(rg::PassBuilder& pass, const ChainContext& chain,
                                const EpipolarContext& epipolar);
 
 }  // namespace ls

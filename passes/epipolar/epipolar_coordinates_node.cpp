@@ -10,14 +10,14 @@ EpipolarCoordinates addEpipolarCoordinates(rg::RenderGraph& g, const EpipolarCoo
         return rg::ImageDesc::absolute(format, s.samples, s.slices);
     };
     EpipolarCoordinates out;
-    out.coordinates = g.createImage("coordinate texture", perSample(in.frame.coordinateFormat));
+    out.coordinates = g.createImage("coordinate texture", perSample(in.chain.coordinateFormat));
     out.epipolarZ = g.createImage("epipolar camera-space z", perSample(VK_FORMAT_R32_SFLOAT));
-    out.epipolarStencil = g.createImage("epipolar depth-stencil", perSample(in.frame.depthStencil));
+    out.epipolarStencil = g.createImage("epipolar depth-stencil", perSample(in.chain.depthStencil));
     auto pass = g.addPass("coordinates and epipolar z", rg::PassType::Graphics);
-    const auto& sm = samplersOf(in.frame.shared);
-    rg::BindingTable table = epipolarTable(pass, in.frame, in.epipolar);
+    const auto& sm = samplersOf(in.chain.shared);
+    rg::BindingTable table = epipolarTable(pass, in.chain, in.epipolar);
     table.sampled(LS_BINDING_COORDINATES_END_POINTS, in.sliceEndPoints, sm.nearest())
-        .sampled(LS_BINDING_COORDINATES_DEPTH, in.frame.depth, sm.nearest(),
+        .sampled(LS_BINDING_COORDINATES_DEPTH, in.chain.depth, sm.nearest(),
                  VK_IMAGE_ASPECT_DEPTH_BIT);
     // Invalid samples keep the clear values: epipolar z -1, which no valid sample has, tells them
     // apart besides the stencil (the coordinates of invalid samples are never read).
@@ -25,7 +25,7 @@ EpipolarCoordinates addEpipolarCoordinates(rg::RenderGraph& g, const EpipolarCoo
     out.epipolarZ =
         pass.colorAttachment(out.epipolarZ, rg::LoadOp::Clear, {{-1.0f, 0.0f, 0.0f, 0.0f}});
     out.epipolarStencil = pass.stencilWrite(out.epipolarStencil, rg::LoadOp::Clear, 0);
-    pass.execute([shared = in.frame.shared, table](rg::PassContext& ctx) {
+    pass.execute([shared = in.chain.shared, table](rg::PassContext& ctx) {
         auto desc =
             fullscreenPipeline(rg::spirv(ls_spirv::epipolar_coordinates_frag), ctx, table.layout());
         desc.stencilTest = true;

@@ -82,11 +82,11 @@ ChainOptions EpipolarMethod::options(const LightSetup& s, const LightData*,
 
 ChainOutputs EpipolarMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,
                                       const ChainConfig& c, const CompositeTarget& target) const {
-    const FrameContext frame = frameContext(in, c);
+    const ChainContext chain = chainContext(in, c);
     const LightImages light = lightImages(in, c);
     ChainOutputs out;
     if (!c.shadowed) {
-        out.lin = addUnshadowed(g, {frame, light});
+        out.lin = addUnshadowed(g, {chain, light});
         return out;
     }
     const Options& o = *c.options.get<Options>();
@@ -96,7 +96,7 @@ ChainOutputs EpipolarMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,
                                   .cubeShadow = c.light == LightType::Point,
                                   .inscatterRefinement = o.inscatterRefinement};
     // Composited in the chain's unwarp and fix-up: no composite pass.
-    const EpipolarOutputs e = addEpipolarNodes(g, {frame, light, target, in.stepCounts}, options);
+    const EpipolarOutputs e = addEpipolarNodes(g, {chain, light, target, in.stepCounts}, options);
     out.composited = true;
     out.target = e.composited;
     out.stepCounts = e.stepCounts;

@@ -8,13 +8,13 @@ namespace ls {
 EpipolarOutputs addEpipolarNodes(rg::RenderGraph& g, const EpipolarInputs& in,
                                  const EpipolarOptions& options) {
     const EpipolarSizes& sizes = options.sizes;
-    const FrameContext& frame = in.frame;
-    const EpipolarContext epipolar = addUploadEpipolarConstants(g, {frame.values});
-    const rg::ImageRef endPoints = addSliceEndPoints(g, {frame, epipolar}, sizes);
+    const ChainContext& chain = in.chain;
+    const EpipolarContext epipolar = addUploadEpipolarConstants(g, {chain.values});
+    const rg::ImageRef endPoints = addSliceEndPoints(g, {chain, epipolar}, sizes);
     const EpipolarCoordinates samples =
-        addEpipolarCoordinates(g, {frame, epipolar, endPoints}, sizes);
-    rg::ImageRef sources = addRefineSamples(g, {frame, epipolar, samples.epipolarZ}, sizes);
-    rg::ImageRef marking = addMarkRayMarchSamples(g, {frame, sources, samples.epipolarStencil});
+        addEpipolarCoordinates(g, {chain, epipolar, endPoints}, sizes);
+    rg::ImageRef sources = addRefineSamples(g, {chain, epipolar, samples.epipolarZ}, sizes);
+    rg::ImageRef marking = addMarkRayMarchSamples(g, {chain, sources, samples.epipolarStencil});
     // The shadow map's part: the line of every slice in it, the trees along those lines and the
     // march. A point light's cube map repeats it per face, each face adding its part of every ray
     // to the same samples; the faces' lines and trees die with their march, so they alias.
@@ -24,16 +24,16 @@ EpipolarOutputs addEpipolarNodes(rg::RenderGraph& g, const EpipolarInputs& in,
     };
     // Each takes the light's epipolar constants, or a cube face's.
     auto lines = [&](const EpipolarContext& e) {
-        const rg::ImageRef uvFrame = addSliceUvFrame(g, {frame, e, endPoints}, sizes);
+        const rg::ImageRef uvFrame = addSliceUvFrame(g, {chain, e, endPoints}, sizes);
         return Lines{uvFrame, options.minMaxTrees
-                                  ? addMinMaxTrees(g, {frame, e, in.light, uvFrame}, sizes)
+                                  ? addMinMaxTrees(g, {chain, e, in.light, uvFrame}, sizes)
                                   : rg::ImageRef{}};
     };
     auto march = [&](const EpipolarContext& e, const Lines& l, rg::ImageRef accumulate,
                      bool overwrite) {
         const EpipolarRayMarch m =
             addEpipolarRayMarch(g,
-                                {frame, e, in.light, samples.coordinates, samples.epipolarZ,
+                                {chain, e, in.light, samples.coordinates, samples.epipolarZ,
                                  l.uvFrame, marking, l.trees, accumulate, counts},
                                 {sizes, overwrite});
         counts = m.stepCounts;
@@ -49,7 +49,7 @@ EpipolarOutputs addEpipolarNodes(rg::RenderGraph& g, const EpipolarInputs& in,
     } else {
         for (uint32_t face = 0; face < 6; ++face) {
             g.setNameSuffix(suffix + " (cube face " + cubeFaceName(static_cast<int>(face)) + ")");
-            faces[face] = addUploadEpipolarConstants(g, {frame.values, static_cast<int>(face)});
+            faces[face] = addUploadEpipolarConstants(g, {chain.values, static_cast<int>(face)});
             marched = march(faces[face], lines(faces[face]), marched, false);
         }
         g.setNameSuffix(suffix);
@@ -60,7 +60,7 @@ EpipolarOutputs addEpipolarNodes(rg::RenderGraph& g, const EpipolarInputs& in,
         // again, so that the six faces' trees still alias (the second build costs the trees' time
         // again, not their memory).
         const RefinedSamples refined =
-            addRefineOnInscattering(g, {frame, epipolar, sources, marched, marking});
+            addRefineOnInscattering(g, {chain, epipolar, sources, marched, marking});
         sources = refined.interpolationSource;
         marking = refined.epipolarStencil;
         if (!options.cubeShadow) {
@@ -75,13 +75,13 @@ EpipolarOutputs addEpipolarNodes(rg::RenderGraph& g, const EpipolarInputs& in,
         }
         g.setNameSuffix(suffix);
     }
-    const rg::ImageRef interpolated = addInterpolate(g, {frame, sources, marched, marking}, sizes);
+    const rg::ImageRef interpolated = addInterpolate(g, {chain, sources, marched, marking}, sizes);
     const UnwarpOutputs screen = addUnwarp(
-        g, {frame, epipolar, in.light, endPoints, samples.epipolarZ, interpolated, in.target},
+        g, {chain, epipolar, in.light, endPoints, samples.epipolarZ, interpolated, in.target},
         {options.fixup});
     if (!options.fixup) return {screen.composited, counts};
     return {
-        addFixup(g, {frame,
+        addFixup(g, {chain,
                      in.light,
                      screen.cameraStencil,
                      {screen.composited.color, screen.composited.inscatterOut, in.target.addOnly}}),

@@ -4,11 +4,11 @@
 // declares the auxiliary textures of the seed's table with their formats (the stencil textures
 // with the depth-stencil format the device offers) and the stencil writes and tests as uses, so
 // the runtime orders the passes, derives their barriers and aliases what it can. Every node also
-// reads the frame's constants (FrameContext), and where it says so epipolar's own
+// reads its light's frame constants (ChainContext), and where it says so epipolar's own
 // (EpipolarContext) and the light's images (LightImages).
 #include "epipolar_constants.h"
+#include "shared/chain_context.h"
 #include "shared/composite_target.h"
-#include "shared/frame_context.h"
 
 namespace ls {
 
@@ -28,7 +28,7 @@ EpipolarContext addUploadEpipolarConstants(rg::RenderGraph& g,
 
 // Entry and exit of each slice's line in NDC: RGBA32F, slices x 1.
 struct SliceEndPointsInputs {
-    FrameContext frame;
+    ChainContext chain;
     EpipolarContext epipolar;
 };
 rg::ImageRef addSliceEndPoints(rg::RenderGraph& g, const SliceEndPointsInputs& in,
@@ -37,7 +37,7 @@ rg::ImageRef addSliceEndPoints(rg::RenderGraph& g, const SliceEndPointsInputs& i
 // Each sample's NDC position and the camera-space z under it (from frame.depth); valid samples get
 // stencil 1.
 struct EpipolarCoordinatesInputs {
-    FrameContext frame;
+    ChainContext chain;
     EpipolarContext epipolar;
     rg::ImageRef sliceEndPoints;
 };
@@ -51,7 +51,7 @@ EpipolarCoordinates addEpipolarCoordinates(rg::RenderGraph& g, const EpipolarCoo
 
 // Each sample's two interpolation sources: RG16UI, samples x slices.
 struct RefineSamplesInputs {
-    FrameContext frame;
+    ChainContext chain;
     EpipolarContext epipolar;
     rg::ImageRef epipolarZ;
 };
@@ -60,7 +60,7 @@ rg::ImageRef addRefineSamples(rg::RenderGraph& g, const RefineSamplesInputs& in,
 
 // Each slice's line in the shadow map, origin and direction: RGBA32F, slices x 1.
 struct SliceUvFrameInputs {
-    FrameContext frame;
+    ChainContext chain;
     EpipolarContext epipolar;  // the light's (or the cube face's) constants
     rg::ImageRef sliceEndPoints;
 };
@@ -70,7 +70,7 @@ rg::ImageRef addSliceUvFrame(rg::RenderGraph& g, const SliceUvFrameInputs& in,
 // The 1D min/max trees of light.shadowMap along each slice's line, every level in one texture:
 // RG16F, light.shadowMapSize x slices.
 struct MinMaxTreesInputs {
-    FrameContext frame;
+    ChainContext chain;
     EpipolarContext epipolar;
     LightImages light;  // its shadow map and size
     rg::ImageRef sliceUvFrame;
@@ -80,7 +80,7 @@ rg::ImageRef addMinMaxTrees(rg::RenderGraph& g, const MinMaxTreesInputs& in,
 
 // Raises the ray-marching samples to stencil 2; returns the stencil's new version.
 struct MarkRayMarchInputs {
-    FrameContext frame;
+    ChainContext chain;
     rg::ImageRef interpolationSource, epipolarStencil;
 };
 rg::ImageRef addMarkRayMarchSamples(rg::RenderGraph& g, const MarkRayMarchInputs& in);
@@ -92,7 +92,7 @@ rg::ImageRef addMarkRayMarchSamples(rg::RenderGraph& g, const MarkRayMarchInputs
 // (and returns its new version); alpha, the sample's validity, is the first face's. The refinement
 // march (overwrite) writes its samples into `accumulate`, keeping the first march's samples.
 struct EpipolarRayMarchInputs {
-    FrameContext frame;
+    ChainContext chain;
     EpipolarContext epipolar;
     LightImages light;
     rg::ImageRef coordinates, epipolarZ, sliceUvFrame;
@@ -118,7 +118,7 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const EpipolarRayMarchI
 // ray-marching sample (its own source, stencil 1 -> 2), and the samples already marched leave the
 // march's stencil value (2 -> 3), so a second march at stencil 2 costs only the new samples.
 struct RefineOnInscatteringInputs {
-    FrameContext frame;
+    ChainContext chain;
     EpipolarContext epipolar;
     rg::ImageRef interpolationSource, marched, epipolarStencil;
 };
@@ -130,7 +130,7 @@ RefinedSamples addRefineOnInscattering(rg::RenderGraph& g, const RefineOnInscatt
 
 // Every valid sample, interpolated between its two sources: RGBA16F, samples x slices.
 struct InterpolateInputs {
-    FrameContext frame;
+    ChainContext chain;
     rg::ImageRef interpolationSource, marched, epipolarStencil;
 };
 rg::ImageRef addInterpolate(rg::RenderGraph& g, const InterpolateInputs& in,
@@ -140,7 +140,7 @@ rg::ImageRef addInterpolate(rg::RenderGraph& g, const InterpolateInputs& in,
 // markForFixup the pixels no sample could serve left to the fix-up: 0 in a camera stencil where
 // every served pixel wrote 1.
 struct UnwarpInputs {
-    FrameContext frame;  // its constants and depth
+    ChainContext chain;  // its constants and depth
     EpipolarContext epipolar;
     LightImages light;  // its table, where given
     rg::ImageRef sliceEndPoints, epipolarZ, interpolated;
@@ -158,7 +158,7 @@ UnwarpOutputs addUnwarp(rg::RenderGraph& g, const UnwarpInputs& in, const Unwarp
 // Marches the pixels marked in cameraStencil on their own and composites them into the target
 // (the unwarp's new versions); returns the target's new versions. Reads the light's images.
 struct FixupInputs {
-    FrameContext frame;
+    ChainContext chain;
     LightImages light;
     rg::ImageRef cameraStencil;
     CompositeTarget target;
@@ -170,7 +170,7 @@ CompositeOutputs addFixup(rg::RenderGraph& g, const FixupInputs& in);
 // each face adds its own line frames, trees and march (each reading its face's epipolar constants,
 // uploaded by the chain); the fix-up marches the whole cube.
 struct EpipolarInputs {
-    FrameContext frame;
+    ChainContext chain;
     LightImages light;
     CompositeTarget target;
     rg::BufferRef stepCounts;  // the step counter, cleared, that the marches add to; invalid: none

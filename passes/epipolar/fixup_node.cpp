@@ -7,11 +7,11 @@ namespace ls {
 // own, without trees, and composited into the engine's color like the unwarp's.
 CompositeOutputs addFixup(rg::RenderGraph& g, const FixupInputs& in) {
     auto pass = g.addPass("fix-up ray march", rg::PassType::Graphics);
-    rg::BindingTable table = declarePixelMarch(pass, in.frame, in.light);
+    rg::BindingTable table = declarePixelMarch(pass, in.chain, in.light);
     pass.stencilTest(in.cameraStencil);
     const CompositeOutputs written = addCompositeTarget(table, in.target);
     const bool addOnly = in.target.addOnly;
-    pass.execute([frame = in.frame, table, written, addOnly](rg::PassContext& ctx) {
+    pass.execute([frame = in.chain, table, written, addOnly](rg::PassContext& ctx) {
         // The cap is a setting, read per frame like the other constants.
         const auto maxSteps =
             static_cast<uint32_t>(epipolarFrameOf(ctx.data(frame.values)).constants.marching.w);

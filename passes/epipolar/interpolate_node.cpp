@@ -13,11 +13,11 @@ rg::ImageRef addInterpolate(rg::RenderGraph& g, const InterpolateInputs& in,
     rg::BindingTable table(pass);
     table
         .sampled(LS_BINDING_INTERPOLATION_SOURCE, in.interpolationSource,
-                 samplersOf(in.frame.shared).nearest())
-        .sampled(LS_BINDING_INTERPOLATE_MARCHED, in.marched, samplersOf(in.frame.shared).nearest());
+                 samplersOf(in.chain.shared).nearest())
+        .sampled(LS_BINDING_INTERPOLATE_MARCHED, in.marched, samplersOf(in.chain.shared).nearest());
     pass.stencilTest(in.epipolarStencil);
     interpolated = pass.colorAttachment(interpolated, rg::LoadOp::Clear);
-    pass.execute([shared = in.frame.shared, table](rg::PassContext& ctx) {
+    pass.execute([shared = in.chain.shared, table](rg::PassContext& ctx) {
         auto desc = fullscreenPipeline(rg::spirv(ls_spirv::interpolate_frag), ctx, table.layout());
         desc.stencilTest = true;  // every valid sample: 1 <= stencil
         desc.stencil = {VK_STENCIL_OP_KEEP,

@@ -9,9 +9,9 @@ rg::ImageRef addMarkRayMarchSamples(rg::RenderGraph& g, const MarkRayMarchInputs
     auto pass = g.addPass("mark ray-marching samples", rg::PassType::Graphics);
     rg::BindingTable table(pass);
     table.sampled(LS_BINDING_INTERPOLATION_SOURCE, in.interpolationSource,
-                  samplersOf(in.frame.shared).nearest());
+                  samplersOf(in.chain.shared).nearest());
     const rg::ImageRef marked = pass.stencilWrite(in.epipolarStencil, rg::LoadOp::Load);
-    pass.execute([shared = in.frame.shared, table](rg::PassContext& ctx) {
+    pass.execute([shared = in.chain.shared, table](rg::PassContext& ctx) {
         rg::GraphicsPipelineDesc desc =
             fullscreenPipeline(rg::spirv(ls_spirv::mark_ray_march_frag), ctx, table.layout());
         desc.stencilTest = true;

@@ -34,14 +34,14 @@ rg::ImageRef addMinMaxTrees(rg::RenderGraph& g, const MinMaxTreesInputs& in,
         "1D min/max trees", rg::ImageDesc::absolute(VK_FORMAT_R16G16_SFLOAT, n, s.slices));
     {
         auto pass = g.addPass("min/max trees level 1", rg::PassType::Compute);
-        const auto& sm = samplersOf(in.frame.shared);
-        rg::BindingTable table = epipolarTable(pass, in.frame, in.epipolar);
+        const auto& sm = samplersOf(in.chain.shared);
+        rg::BindingTable table = epipolarTable(pass, in.chain, in.epipolar);
         table
             .sampled(LS_BINDING_TREE_SHADOW_MAP, in.light.shadowMap, sm.nearest(),
                      VK_IMAGE_ASPECT_DEPTH_BIT)
             .sampled(LS_BINDING_TREE_UV_FRAME, in.sliceUvFrame, sm.nearest());
         tree = table.storageWrite(LS_BINDING_TREE_FIRST_LEVEL, tree);
-        pass.execute([frame = in.frame, face, table, s, n](rg::PassContext& ctx) {
+        pass.execute([frame = in.chain, face, table, s, n](rg::PassContext& ctx) {
             // A cube face out of view.
             if (!epipolarFrameOf(ctx.data(frame.values)).inView(face)) return;
             const Shared& shared = frame.shared;
@@ -60,7 +60,7 @@ rg::ImageRef addMinMaxTrees(rg::RenderGraph& g, const MinMaxTreesInputs& in,
             g.addPass("min/max trees level " + std::to_string(level), rg::PassType::Compute);
         rg::BindingTable table(pass);
         tree = table.storageReadWrite(LS_BINDING_TREE_LEVEL, tree);
-        pass.execute([frame = in.frame, face, table, level, n, s](rg::PassContext& ctx) {
+        pass.execute([frame = in.chain, face, table, level, n, s](rg::PassContext& ctx) {
             if (!epipolarFrameOf(ctx.data(frame.values)).inView(face)) return;
             const Shared& shared = frame.shared;
             const auto& p = shared->pipelines.compute("min/max trees next level",

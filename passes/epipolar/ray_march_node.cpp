@@ -30,20 +30,20 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const EpipolarRayMarchI
     const bool trees = in.trees.valid(), color = in.light.lightColor.valid();
     auto pass =
         g.addPass(trees ? "ray march with min/max trees" : "ray march", rg::PassType::Graphics);
-    const auto& sm = samplersOf(in.frame.shared);
-    rg::BindingTable table = epipolarTable(pass, in.frame, in.epipolar);
+    const auto& sm = samplersOf(in.chain.shared);
+    rg::BindingTable table = epipolarTable(pass, in.chain, in.epipolar);
     table.sampled(LS_BINDING_MARCH_COORDINATES, in.coordinates, sm.nearest())
         .sampled(LS_BINDING_MARCH_EPIPOLAR_Z, in.epipolarZ, sm.nearest())
         .sampled(LS_BINDING_MARCH_UV_FRAME, in.sliceUvFrame, sm.nearest())
         .sampledIfValid(LS_BINDING_MARCH_TREES, in.trees, sm.nearest());
-    addMarchInputs(table, in.frame.shared, in.light);
+    addMarchInputs(table, in.chain.shared, in.light);
     const rg::BufferRef counts =
         table.storageBufferReadWriteIfValid(LS_BINDING_MARCH_STEP_COUNTS, in.stepCounts);
     pass.stencilTest(in.epipolarStencil);
     pass.countSamples();  // the samples marched (FrameReport's PassTime::samples)
     marched =
         pass.colorAttachment(marched, in.accumulate.valid() ? rg::LoadOp::Load : rg::LoadOp::Clear);
-    pass.execute([frame = in.frame, face = in.epipolar.face, table, trees, color, adds,
+    pass.execute([frame = in.chain, face = in.epipolar.face, table, trees, color, adds,
                   counts](rg::PassContext& ctx) {
         // A cube face out of view adds nothing (the first face's pass writes every sample's alpha).
         if (adds && !epipolarFrameOf(ctx.data(frame.values)).inView(face)) return;

@@ -8,13 +8,13 @@ namespace ls {
 // must rise (see refine_on_inscattering.frag) and discards the rest.
 RefinedSamples addRefineOnInscattering(rg::RenderGraph& g, const RefineOnInscatteringInputs& in) {
     auto pass = g.addPass("refine on in-scattering differences", rg::PassType::Graphics);
-    rg::BindingTable table = epipolarTable(pass, in.frame, in.epipolar);
-    table.sampled(LS_BINDING_REFINE_MARCHED, in.marched, samplersOf(in.frame.shared).nearest());
+    rg::BindingTable table = epipolarTable(pass, in.chain, in.epipolar);
+    table.sampled(LS_BINDING_REFINE_MARCHED, in.marched, samplersOf(in.chain.shared).nearest());
     RefinedSamples out;
     out.interpolationSource =
         table.storageReadWrite(LS_BINDING_REFINE_LIN_SOURCES, in.interpolationSource);
     out.epipolarStencil = pass.stencilWrite(in.epipolarStencil, rg::LoadOp::Load);
-    pass.execute([shared = in.frame.shared, table](rg::PassContext& ctx) {
+    pass.execute([shared = in.chain.shared, table](rg::PassContext& ctx) {
         rg::GraphicsPipelineDesc desc = fullscreenPipeline(
             rg::spirv(ls_spirv::refine_on_inscattering_frag), ctx, table.layout());
         desc.stencilTest = true;  // every valid sample: 0 != stencil

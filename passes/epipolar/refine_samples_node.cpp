@@ -12,12 +12,12 @@ rg::ImageRef addRefineSamples(rg::RenderGraph& g, const RefineSamplesInputs& in,
         g.createImage("interpolation source",
                       rg::ImageDesc::absolute(VK_FORMAT_R16G16_UINT, s.samples, s.slices));
     auto pass = g.addPass("refine sample locations", rg::PassType::Compute);
-    rg::BindingTable table = epipolarTable(pass, in.frame, in.epipolar);
+    rg::BindingTable table = epipolarTable(pass, in.chain, in.epipolar);
     table.sampled(LS_BINDING_REFINE_EPIPOLAR_Z, in.epipolarZ,
-                  samplersOf(in.frame.shared).nearest());
+                  samplersOf(in.chain.shared).nearest());
     sources = table.storageWrite(LS_BINDING_REFINE_SOURCES, sources);
     pass.execute(
-        [shared = in.frame.shared, light = in.frame.spec.light, table, s](rg::PassContext& ctx) {
+        [shared = in.chain.shared, light = in.chain.spec.light, table, s](rg::PassContext& ctx) {
             // The light type only: near a point or spot light the first section is cut
             // geometrically.
             rg::Specialization spec;

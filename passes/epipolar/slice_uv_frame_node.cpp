@@ -17,11 +17,11 @@ rg::ImageRef addSliceUvFrame(rg::RenderGraph& g, const SliceUvFrameInputs& in,
         g.createImage("slice uv origin and direction",
                       rg::ImageDesc::absolute(VK_FORMAT_R32G32B32A32_SFLOAT, s.slices, 1));
     auto pass = g.addPass("slice uv origin and direction", rg::PassType::Compute);
-    rg::BindingTable table = epipolarTable(pass, in.frame, in.epipolar);
+    rg::BindingTable table = epipolarTable(pass, in.chain, in.epipolar);
     table.sampled(LS_BINDING_UV_FRAME_END_POINTS, in.sliceEndPoints,
-                  samplersOf(in.frame.shared).nearest());
+                  samplersOf(in.chain.shared).nearest());
     uvFrame = table.storageWrite(LS_BINDING_UV_FRAME_OUT, uvFrame);
-    pass.execute([frame = in.frame, face = in.epipolar.face, table, s](rg::PassContext& ctx) {
+    pass.execute([frame = in.chain, face = in.epipolar.face, table, s](rg::PassContext& ctx) {
         // A cube face out of view: no ray reads its lines.
         if (!epipolarFrameOf(ctx.data(frame.values)).inView(face)) return;
         const Shared& shared = frame.shared;

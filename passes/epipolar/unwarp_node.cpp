@@ -30,24 +30,24 @@ UnwarpOutputs addUnwarp(rg::RenderGraph& g, const UnwarpInputs& in, const Unwarp
     const bool markForFixup = options.markForFixup;
     UnwarpOutputs out;
     auto pass = g.addPass("unwarp epipolar to screen", rg::PassType::Graphics);
-    const auto& sm = samplersOf(in.frame.shared);
-    rg::BindingTable table = epipolarTable(pass, in.frame, in.epipolar);
+    const auto& sm = samplersOf(in.chain.shared);
+    rg::BindingTable table = epipolarTable(pass, in.chain, in.epipolar);
     table.sampled(LS_BINDING_UNWARP_END_POINTS, in.sliceEndPoints, sm.nearest())
         .sampled(LS_BINDING_UNWARP_EPIPOLAR_Z, in.epipolarZ, sm.nearest())
         .sampled(LS_BINDING_UNWARP_INSCATTER, in.interpolated, sm.nearest())
-        .sampled(LS_BINDING_UNWARP_DEPTH, in.frame.depth, sm.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
+        .sampled(LS_BINDING_UNWARP_DEPTH, in.chain.depth, sm.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
         .sampledIfValid(LS_BINDING_POINT_TABLE, in.light.table, sm.nearest());
     out.composited = addCompositeTarget(table, in.target);
     if (markForFixup) {
         const rg::ImageRef stencil =
-            g.createImage("camera depth-stencil", rg::ImageDesc::screen(in.frame.depthStencil));
+            g.createImage("camera depth-stencil", rg::ImageDesc::screen(in.chain.depthStencil));
         out.cameraStencil = pass.stencilWrite(stencil, rg::LoadOp::Clear, 0);
     } else {
-        pass.renderArea(in.frame.screen);
+        pass.renderArea(in.chain.screen);
     }
     const CompositeOutputs written = out.composited;
     const bool addOnly = in.target.addOnly;
-    pass.execute([shared = in.frame.shared, spec = in.frame.spec, light = in.light, table, written,
+    pass.execute([shared = in.chain.shared, spec = in.chain.spec, light = in.light, table, written,
                   markForFixup, addOnly](rg::PassContext& ctx) {
         auto desc = fullscreenPipeline(unwarpShader(light.table.valid(), ctx.format(written.color),
                                                     written.inscatterOut.valid()),

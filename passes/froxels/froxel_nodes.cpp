@@ -129,8 +129,8 @@ rg::ImageRef addFroxelInjection(rg::RenderGraph& graph, const FroxelInjectInputs
                                 const FroxelGrid& grid) {
     const bool first = in.first;
     auto pass = graph.addPass("froxel light injection", rg::PassType::Compute);
-    const auto& s = samplersOf(in.frame.shared);
-    rg::BindingTable table = frameTable(pass, in.frame.constants);
+    const auto& s = samplersOf(in.chain.shared);
+    rg::BindingTable table = frameTable(pass, in.chain.constants);
     table
         .sampledIfValid(LS_BINDING_SHADOW_MAP, in.light.shadowMap, s.nearest(),
                         VK_IMAGE_ASPECT_DEPTH_BIT)
@@ -139,7 +139,7 @@ rg::ImageRef addFroxelInjection(rg::RenderGraph& graph, const FroxelInjectInputs
         first ? table.storageWrite(LS_BINDING_FROXEL_SCATTERING, in.scattering)
               : table.storageReadWrite(LS_BINDING_FROXEL_SCATTERING, in.scattering);
     const bool shadow = in.light.shadowMap.valid(), color = in.light.lightColor.valid();
-    pass.execute([frame = in.frame, table, grid, first, shadow, color,
+    pass.execute([frame = in.chain, table, grid, first, shadow, color,
                   history = in.history](rg::PassContext& ctx) {
         const LightFrame& values = ctx.data(frame.values);
         FroxelPush push = froxelPush(values.constants, grid, 1.0f);
@@ -171,12 +171,12 @@ rg::ImageRef addFroxelInjection(rg::RenderGraph& graph, const FroxelInjectInputs
 FroxelTemporalOutputs addFroxelTemporalBlend(rg::RenderGraph& graph, const FroxelTemporalInputs& in,
                                              const FroxelGrid& grid) {
     auto pass = graph.addPass("froxel temporal blend", rg::PassType::Compute);
-    rg::BindingTable table = frameTable(pass, in.frame.constants);
+    rg::BindingTable table = frameTable(pass, in.chain.constants);
     FroxelTemporalOutputs out;
     out.scattering = table.storageReadWrite(LS_BINDING_FROXEL_SCATTERING, in.scattering);
     table.storageRead(LS_BINDING_FROXEL_HISTORY, in.history);
     out.historyOut = table.storageWrite(LS_BINDING_FROXEL_HISTORY_OUT, in.historyOut);
-    pass.execute([frame = in.frame, previous = in.previous, history = in.history,
+    pass.execute([frame = in.chain, previous = in.previous, history = in.history,
                   weight = in.weight, table, grid](rg::PassContext& ctx) {
         const FrameConstants& then = ctx.data(previous).constants;
         const bool valid = ctx.history(history).valid;
@@ -203,14 +203,14 @@ FroxelTemporalOutputs addFroxelTemporalBlend(rg::RenderGraph& graph, const Froxe
 rg::ImageRef addFroxelIntegration(rg::RenderGraph& graph, const FroxelIntegrateInputs& in,
                                   const FroxelGrid& grid) {
     auto pass = graph.addPass("froxel integration", rg::PassType::Compute);
-    rg::BindingTable table = frameTable(pass, in.frame.constants);
+    rg::BindingTable table = frameTable(pass, in.chain.constants);
     table.storageRead(LS_BINDING_FROXEL_SCATTERING, in.scattering);
     const rg::ImageRef integrated = table.storageWrite(
         LS_BINDING_FROXEL_INTEGRATED,
         graph.createImage(
             "froxel integrated in-scattering",
             rg::ImageDesc::volume(kFroxelIntegratedFormat, grid.columns, grid.rows, grid.slices)));
-    pass.execute([frame = in.frame, lights = in.lights, table, grid](rg::PassContext& ctx) {
+    pass.execute([frame = in.chain, lights = in.lights, table, grid](rg::PassContext& ctx) {
         const FroxelPush push =
             froxelPush(ctx.data(frame.values).constants, grid, gridStorage(ctx, lights));
         const auto& p = frame.shared->pipelines.compute(
@@ -227,13 +227,13 @@ rg::ImageRef addFroxelIntegration(rg::RenderGraph& graph, const FroxelIntegrateI
 CompositeOutputs addFroxelApply(rg::RenderGraph& graph, const FroxelApplyInputs& in,
                                 const FroxelGrid& grid) {
     auto pass = graph.addPass("froxel apply", rg::PassType::Compute);
-    const auto& s = samplersOf(in.frame.shared);
-    rg::BindingTable table = frameTable(pass, in.frame.constants);
-    table.sampled(LS_BINDING_DEPTH, in.frame.depth, s.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
+    const auto& s = samplersOf(in.chain.shared);
+    rg::BindingTable table = frameTable(pass, in.chain.constants);
+    table.sampled(LS_BINDING_DEPTH, in.chain.depth, s.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
         .sampled(LS_BINDING_FROXEL_INTEGRATED, in.integrated, s.linear());
     const CompositeOutputs written = addCompositeTarget(table, in.target);
     pass.execute(
-        [frame = in.frame, lights = in.lights, table, grid, written](rg::PassContext& ctx) {
+        [frame = in.chain, lights = in.lights, table, grid, written](rg::PassContext& ctx) {
             const FroxelPush push =
                 froxelPush(ctx.data(frame.values).constants, grid, gridStorage(ctx, lights));
             const rg::ShaderCode shader =
@@ -252,10 +252,10 @@ CompositeOutputs addFroxelApply(rg::RenderGraph& graph, const FroxelApplyInputs&
 rg::ImageRef addFroxelExport(rg::RenderGraph& graph, const FroxelExportInputs& in,
                              const FroxelGrid& grid) {
     auto pass = graph.addPass("froxel volume export", rg::PassType::Compute);
-    rg::BindingTable table = frameTable(pass, in.frame.constants);
+    rg::BindingTable table = frameTable(pass, in.chain.constants);
     table.storageRead(LS_BINDING_FROXEL_INTEGRATED, in.integrated);
     const rg::ImageRef written = table.storageWrite(LS_BINDING_FROXEL_VOLUME_OUT, in.volumeOut);
-    pass.execute([frame = in.frame, lights = in.lights, table, grid](rg::PassContext& ctx) {
+    pass.execute([frame = in.chain, lights = in.lights, table, grid](rg::PassContext& ctx) {
         const FroxelPush push =
             froxelPush(ctx.data(frame.values).constants, grid, gridStorage(ctx, lights));
         const auto& p = frame.shared->pipelines.compute("froxel volume export",

@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "lightscatter/methods/froxels.h"
+#include "shared/chain_context.h"
 #include "shared/composite_target.h"
-#include "shared/frame_context.h"
 #include "shared/frame_history.h"
 #include "shared/scattering_params.h"
 
@@ -38,7 +38,7 @@ inline constexpr VkFormat kFroxelScatteringFormat = VK_FORMAT_R32G32B32A32_SFLOA
 inline constexpr VkFormat kFroxelIntegratedFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 
 struct FroxelInjectInputs {
-    FrameContext frame;  // the light's constants and values
+    ChainContext chain;  // the light's constants and values
     LightImages light;   // its shadow map and light color, where it has them
     // The grid the frame's earlier lights wrote, or for the first light (`first`), which writes
     // every froxel, the new grid (froxelScatteringImage()).
@@ -64,7 +64,7 @@ rg::ImageRef addFroxelInjection(rg::RenderGraph& graph, const FroxelInjectInputs
 glm::vec3 froxelJitter(uint32_t index);
 
 struct FroxelTemporalInputs {
-    FrameContext frame;                // the first light's: this frame's camera
+    ChainContext chain;                // the first light's: this frame's camera
     rg::ImageRef scattering;           // every light's, injected at this frame's jittered points
     rg::ImageRef history, historyOut;  // the frame before's grid, and this frame's
     rg::HostDataRef<PreviousFrame> previous;
@@ -78,7 +78,7 @@ FroxelTemporalOutputs addFroxelTemporalBlend(rg::RenderGraph& graph, const Froxe
                                              const FroxelGrid& grid);
 
 struct FroxelIntegrateInputs {
-    FrameContext frame;  // the first light's: the camera and the medium
+    ChainContext chain;  // the first light's: the camera and the medium
     rg::ImageRef scattering;
     // Every light's values: the integrated grid is stored at the smallest of their Lin scales.
     std::vector<rg::HostDataRef<LightFrame>> lights;
@@ -89,7 +89,7 @@ rg::ImageRef addFroxelIntegration(rg::RenderGraph& graph, const FroxelIntegrateI
                                   const FroxelGrid& grid);
 
 struct FroxelApplyInputs {
-    FrameContext frame;  // the first light's
+    ChainContext chain;  // the first light's
     rg::ImageRef integrated;
     std::vector<rg::HostDataRef<LightFrame>> lights;  // as the integration's
     CompositeTarget target;
@@ -99,7 +99,7 @@ CompositeOutputs addFroxelApply(rg::RenderGraph& graph, const FroxelApplyInputs&
                                 const FroxelGrid& grid);
 
 struct FroxelExportInputs {
-    FrameContext frame;  // the first light's
+    ChainContext chain;  // the first light's
     rg::ImageRef integrated;
     std::vector<rg::HostDataRef<LightFrame>> lights;  // as the integration's
     rg::ImageRef volumeOut;  // the engine's 3D image (R16G16B16A16_SFLOAT, the grid's size)

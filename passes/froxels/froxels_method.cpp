@@ -101,29 +101,29 @@ ChainOutputs FroxelsMethod::addFrameChain(rg::RenderGraph& g, const std::vector<
         if (in.size() > 1) g.setNameSuffix(" (light " + std::to_string(i) + ")");
         scattering =
             addFroxelInjection(g,
-                               {frameContext(in[i], configs[i]), lightImages(in[i], configs[i]),
+                               {chainContext(in[i], configs[i]), lightImages(in[i], configs[i]),
                                 scattering, i == 0, temporal ? history.previous : rg::ImageRef{}},
                                grid);
         lights.push_back(in[i].values);
     }
     g.setNameSuffix({});
-    const FrameContext frame = frameContext(in[0], configs[0]);
+    const ChainContext chain = chainContext(in[0], configs[0]);
     ChainOutputs out;
     if (temporal) {
         const FroxelTemporalOutputs t =
             addFroxelTemporalBlend(g,
-                                   {frame, scattering, history.previous, history.current,
+                                   {chain, scattering, history.previous, history.current,
                                     in[0].previous, settings.historyWeight},
                                    grid);
         scattering = t.scattering;
         g.markOutput(t.historyOut);  // the next frame reads it
     }
-    const rg::ImageRef integrated = addFroxelIntegration(g, {frame, scattering, lights}, grid);
+    const rg::ImageRef integrated = addFroxelIntegration(g, {chain, scattering, lights}, grid);
     if (in[0].volumeOut.valid())
-        g.markOutput(addFroxelExport(g, {frame, integrated, lights, in[0].volumeOut}, grid));
+        g.markOutput(addFroxelExport(g, {chain, integrated, lights, in[0].volumeOut}, grid));
     out.composited = true;
     out.target = addFroxelApply(
-        g, {frame, integrated, lights, {target.color, target.inscatterOut, false}}, grid);
+        g, {chain, integrated, lights, {target.color, target.inscatterOut, false}}, grid);
     return out;
 }
 

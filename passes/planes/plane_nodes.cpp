@@ -44,7 +44,7 @@ VkFormat accumulationFormat(PlaneTarget target) {
 
 rg::ImageRef addPlanes(rg::RenderGraph& graph, const PlanesInputs& in,
                        const PlanesOptions& options) {
-    const Shared& shared = in.frame.shared;
+    const Shared& shared = in.chain.shared;
     const bool channels = options.target == PlaneTarget::Rgba8Channels;
     rg::ImageRef sum = graph.createImage(channels ? "planes' sum (8-bit channels)" : "planes' sum",
                                          rg::ImageDesc::screen(accumulationFormat(options.target)));
@@ -52,17 +52,17 @@ rg::ImageRef addPlanes(rg::RenderGraph& graph, const PlanesInputs& in,
     const auto& s = samplersOf(shared);
     rg::BindingTable table(pass);
     table
-        .uniform(LS_BINDING_FRAME, in.frame.constants,
+        .uniform(LS_BINDING_FRAME, in.chain.constants,
                  VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT)
         .sampledIfValid(LS_BINDING_SHADOW_MAP, in.light.shadowMap, s.nearest(),
                         VK_IMAGE_ASPECT_DEPTH_BIT)
         .sampledIfValid(LS_BINDING_LIGHT_COLOR, in.light.lightColor, s.linear())
         .sampledIfValid(LS_BINDING_NOISE, in.noise, s.linearRepeat());
-    pass.depthTest(in.frame.depth);
+    pass.depthTest(in.chain.depth);
     sum = pass.colorAttachment(sum, rg::LoadOp::Clear);
     pass.execute(
-        [shared, spec = in.frame.spec, table, in, options, channels](rg::PassContext& ctx) {
-            const PlanePlacement& placement = placementOf(ctx.data(in.frame.values));
+        [shared, spec = in.chain.spec, table, in, options, channels](rg::PassContext& ctx) {
+            const PlanePlacement& placement = placementOf(ctx.data(in.chain.values));
             if (placement.planes == 0) return;  // cleared: the light's volume misses the view
             const bool shadow = in.light.shadowMap.valid(), cookie = in.light.lightColor.valid(),
                        noise = in.noise.valid();
@@ -97,17 +97,17 @@ bool planeResolveNeeded(const PlaneResolveOptions& options) {
 
 rg::ImageRef addPlaneResolve(rg::RenderGraph& graph, const PlaneResolveInputs& in,
                              const PlaneResolveOptions& options) {
-    const Shared& shared = in.frame.shared;
+    const Shared& shared = in.chain.shared;
     rg::ImageRef lin = graph.createImage("in-scattering (screen)",
                                          rg::ImageDesc::screen(VK_FORMAT_R16G16B16A16_SFLOAT));
     auto pass = graph.addPass("resolve planes", rg::PassType::Graphics);
-    rg::BindingTable table = frameTable(pass, in.frame.constants);
+    rg::BindingTable table = frameTable(pass, in.chain.constants);
     table
-        .sampled(LS_BINDING_DEPTH, in.frame.depth, samplersOf(shared).nearest(),
+        .sampled(LS_BINDING_DEPTH, in.chain.depth, samplersOf(shared).nearest(),
                  VK_IMAGE_ASPECT_DEPTH_BIT)
         .sampled(LS_BINDING_PLANE_SUM, in.planeSum, samplersOf(shared).linear());
     lin = pass.colorAttachment(lin, rg::LoadOp::DontCare);
-    pass.execute([shared, spec = in.frame.spec, values = in.frame.values, table,
+    pass.execute([shared, spec = in.chain.spec, values = in.chain.values, table,
                   options](rg::PassContext& ctx) {
         auto desc = fullscreenPipeline(rg::spirv(ls_spirv::plane_resolve_closed_form_frag), ctx,
                                        table.layout());

@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "plane_geometry.h"
-#include "shared/frame_context.h"
+#include "shared/chain_context.h"
 
 namespace ls {
 
@@ -17,7 +17,7 @@ struct PlaneData final : LightData {
 const PlanePlacement& placementOf(const LightFrame& frame);
 
 struct PlanesInputs {
-    FrameContext frame;  // its constants, and the depth: a read-only depth attachment
+    ChainContext chain;  // its constants, and the depth: a read-only depth attachment
     // light.shadowMap invalid: no shadow-map sampling; light.lightColor: the cookie, projected with
     // the light's shadowViewProjection (with a shadow map or without), invalid without one. The
     // table is not read.
@@ -37,7 +37,7 @@ rg::ImageRef addPlanes(rg::RenderGraph& graph, const PlanesInputs& in,
                        const PlanesOptions& options);
 
 struct PlaneResolveInputs {
-    FrameContext frame;     // its constants, and the depth: where each pixel's ray ends
+    ChainContext chain;     // its constants, and the depth: where each pixel's ray ends
     rg::ImageRef planeSum;  // addPlanes' result
 };
 

@@ -49,8 +49,8 @@ ChainOptions PlanesMethod::options(const LightSetup& s, const LightData*,
 ChainOutputs PlanesMethod::addChain(rg::RenderGraph& g, const ChainInputs& in, const ChainConfig& c,
                                     const CompositeTarget&) const {
     const Options& o = *c.options.get<Options>();
-    const FrameContext frame = frameContext(in, c);
-    PlanesInputs planes{frame, {}, {}};
+    const ChainContext chain = chainContext(in, c);
+    PlanesInputs planes{chain, {}, {}};
     if (c.shadowed && o.shadowSampling) planes.light.shadowMap = in.shadowMap;
     planes.light.lightColor = in.lightColor;  // projected like the shadow map, with one or not
     planes.light.shadowMapSize = c.shadowMapSize;
@@ -62,7 +62,7 @@ ChainOutputs PlanesMethod::addChain(rg::RenderGraph& g, const ChainInputs& in, c
     const rg::ImageRef sum = addPlanes(g, planes, planeOptions);
     const PlaneResolveOptions resolve{o.target, o.blur, c.light == LightType::Directional};
     ChainOutputs out;
-    out.lin = planeResolveNeeded(resolve) ? addPlaneResolve(g, {frame, sum}, resolve) : sum;
+    out.lin = planeResolveNeeded(resolve) ? addPlaneResolve(g, {chain, sum}, resolve) : sum;
     return out;
 }
 

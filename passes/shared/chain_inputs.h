@@ -1,12 +1,12 @@
 #pragma once
 // A light's chain inputs as the nodes take them: the frame's part, and the light's images (its
 // shadow map where it is shadowed, its light color wherever it is given).
-#include "frame_context.h"
+#include "chain_context.h"
 #include "method_unit.h"
 
 namespace ls {
 
-inline FrameContext frameContext(const ChainInputs& in, const ChainConfig& c) {
+inline ChainContext chainContext(const ChainInputs& in, const ChainConfig& c) {
     return {in.shared, c.spec,    in.values,       in.constants,
             in.depth,  in.screen, in.depthStencil, in.coordinateFormat};
 }

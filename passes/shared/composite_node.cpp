@@ -15,18 +15,18 @@ rg::ShaderCode compositeShader(bool addOnly, bool withLin, VkFormat color, bool 
 
 namespace {
 
-CompositeOutputs addCompositePass(rg::RenderGraph& graph, const FrameContext& frame,
+CompositeOutputs addCompositePass(rg::RenderGraph& graph, const ChainContext& chain,
                                   const char* name, const CompositeTarget& target,
                                   rg::ImageRef lin) {
     auto pass = graph.addPass(name, rg::PassType::Compute);
-    const auto& s = samplersOf(frame.shared);
-    rg::BindingTable table = frameTable(pass, frame.constants);
-    table.sampled(LS_BINDING_DEPTH, frame.depth, s.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
+    const auto& s = samplersOf(chain.shared);
+    rg::BindingTable table = frameTable(pass, chain.constants);
+    table.sampled(LS_BINDING_DEPTH, chain.depth, s.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
         .sampledIfValid(LS_BINDING_COMPOSITE_LIN, lin, s.nearest());
     const CompositeOutputs written = addCompositeTarget(table, target);
     const bool addOnly = target.addOnly, withLin = lin.valid();
     pass.execute(
-        [shared = frame.shared, table, written, addOnly, withLin, name](rg::PassContext& ctx) {
+        [shared = chain.shared, table, written, addOnly, withLin, name](rg::PassContext& ctx) {
             const rg::ShaderCode shader = compositeShader(
                 addOnly, withLin, ctx.format(written.color), written.inscatterOut.valid());
             const auto& p = shared->pipelines.compute(name, shader, table.layout(), 0, {});
@@ -41,12 +41,12 @@ CompositeOutputs addCompositePass(rg::RenderGraph& graph, const FrameContext& fr
 }  // namespace
 
 CompositeOutputs addComposite(rg::RenderGraph& graph, const CompositeInputs& in) {
-    return addCompositePass(graph, in.frame, "composite", {in.color, in.inscatterOut, false},
+    return addCompositePass(graph, in.chain, "composite", {in.color, in.inscatterOut, false},
                             in.lin);
 }
 
 CompositeOutputs addInscatter(rg::RenderGraph& graph, const CompositeInputs& in) {
-    return addCompositePass(graph, in.frame, "add in-scattering", {in.color, in.inscatterOut, true},
+    return addCompositePass(graph, in.chain, "add in-scattering", {in.color, in.inscatterOut, true},
                             in.lin);
 }
 

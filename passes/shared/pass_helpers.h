@@ -5,7 +5,7 @@
 // method's shader is built in. Binding numbers are shaders/shared/bindings.h's.
 #include <vector>
 
-#include "frame_context.h"
+#include "chain_context.h"
 #include "rendergraph/binding_table.h"
 #include "rendergraph/pass_context.h"
 #include "rendergraph/pipeline.h"

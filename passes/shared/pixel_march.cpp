@@ -49,12 +49,12 @@ rg::ShaderCode fixupShader(const ScatterSpec& spec, VkFormat color, bool withOut
                                color, withOutput);
 }
 
-rg::BindingTable declarePixelMarch(rg::PassBuilder& pass, const FrameContext& frame,
+rg::BindingTable declarePixelMarch(rg::PassBuilder& pass, const ChainContext& chain,
                                    const LightImages& light) {
-    rg::BindingTable table = frameTable(pass, frame.constants);
-    table.sampled(LS_BINDING_DEPTH, frame.depth, samplersOf(frame.shared).nearest(),
+    rg::BindingTable table = frameTable(pass, chain.constants);
+    table.sampled(LS_BINDING_DEPTH, chain.depth, samplersOf(chain.shared).nearest(),
                   VK_IMAGE_ASPECT_DEPTH_BIT);
-    addMarchInputs(table, frame.shared, light);
+    addMarchInputs(table, chain.shared, light);
     return table;
 }
 

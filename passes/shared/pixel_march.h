@@ -4,7 +4,7 @@
 // epipolar fix-up over the pixels its unwarp left unmarked in a stencil, with an optional step cap.
 // The caller adds the pass, its target and any stencil it tests; these add the march's reads and
 // draw.
-#include "frame_context.h"
+#include "chain_context.h"
 #include "rendergraph/binding_table.h"
 #include "rendergraph/pass_context.h"
 #include "rendergraph/render_graph.h"
@@ -14,7 +14,7 @@ namespace ls {
 
 // The march's reads: the frame constants, the engine's depth and the light's images. The caller
 // adds any rows of its own (the composite target) to the table before drawing with it.
-rg::BindingTable declarePixelMarch(rg::PassBuilder& pass, const FrameContext& frame,
+rg::BindingTable declarePixelMarch(rg::PassBuilder& pass, const ChainContext& chain,
                                    const LightImages& light);
 
 struct PixelMarchDraw {

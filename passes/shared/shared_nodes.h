@@ -2,7 +2,7 @@
 // Nodes every method shares: the frame constants, the point-light table, the
 // closed form for lights without a shadow map (whatever the method), and the composite. Each
 // function adds one pass to the graph, takes the handles it reads and returns those it writes.
-#include "frame_context.h"
+#include "chain_context.h"
 
 namespace ls {
 
@@ -16,7 +16,7 @@ rg::BufferRef addUploadConstants(rg::RenderGraph& graph, const UploadConstantsIn
 // light.table. With light.lightColor, a per-pixel march through the color instead (the color
 // varies along the ray, which the closed form cannot carry).
 struct UnshadowedInputs {
-    FrameContext frame;
+    ChainContext chain;
     LightImages light;
 };
 rg::ImageRef addUnshadowed(rg::RenderGraph& graph, const UnshadowedInputs& in);
@@ -28,7 +28,7 @@ struct CompositeOutputs {
     rg::ImageRef inscatterOut;  // invalid when none was given
 };
 struct CompositeInputs {
-    FrameContext frame;         // its constants and depth
+    ChainContext chain;         // its constants and depth
     rg::ImageRef color;         // the engine's color
     rg::ImageRef lin;           // invalid: extinction only
     rg::ImageRef inscatterOut;  // invalid: none

@@ -23,10 +23,10 @@ rg::ImageRef addColoredUnshadowed(rg::RenderGraph& graph, const UnshadowedInputs
     auto pass = graph.addPass("unshadowed light-color march", rg::PassType::Graphics);
     LightImages light = in.light;
     light.shadowMap = {};
-    const rg::BindingTable table = declarePixelMarch(pass, in.frame, light);
+    const rg::BindingTable table = declarePixelMarch(pass, in.chain, light);
     // Cleared, and marched only within the light's screen rectangle.
     lin = pass.colorAttachment(lin, rg::LoadOp::Clear);
-    pass.execute([shared = in.frame.shared, spec = in.frame.spec, values = in.frame.values,
+    pass.execute([shared = in.chain.shared, spec = in.chain.spec, values = in.chain.values,
                   table](rg::PassContext& ctx) {
         if (!scissorToLight(ctx, values)) return;
         drawPixelMarch(ctx, shared, spec, table, {.pipeline = "unshadowed light-color march"});
@@ -39,14 +39,14 @@ rg::ImageRef addColoredUnshadowed(rg::RenderGraph& graph, const UnshadowedInputs
 rg::ImageRef addUnshadowed(rg::RenderGraph& graph, const UnshadowedInputs& in) {
     if (in.light.lightColor.valid()) return addColoredUnshadowed(graph, in);
     return addScreenLinNode(
-        graph, in.frame.shared, in.frame.spec,
+        graph, in.chain.shared, in.chain.spec,
         {.name = "unshadowed in-scattering",
-         .constants = in.frame.constants,
-         .depth = in.frame.depth,
-         .values = in.frame.values,
+         .constants = in.chain.constants,
+         .depth = in.chain.depth,
+         .values = in.chain.values,
          // The table; an unshadowed frame has nothing else.
          .rows =
-             [in](rg::BindingTable& table) { addMarchInputs(table, in.frame.shared, in.light); },
+             [in](rg::BindingTable& table) { addMarchInputs(table, in.chain.shared, in.light); },
          .shader = unshadowedShader,
          .specialize = {}});
 }

@@ -123,7 +123,7 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
         return fg;
     }
     // The camera and the medium are every light's: light 0's constants serve the composite.
-    ls::FrameContext frame;
+    ls::ChainContext frame;
     frame.shared = shared;
     frame.spec = c.lights[0].chain.spec;
     frame.values = fg.lights[0].values;
@@ -187,7 +187,7 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
         if (o.stepCounts.valid()) counts = o.stepCounts;
         ls::CompositeOutputs written = o.target;
         if (!o.composited) {
-            ls::FrameContext composite = frame;
+            ls::ChainContext composite = frame;
             composite.spec = l.chain.spec;
             composite.values = in.values;
             composite.constants = in.constants;

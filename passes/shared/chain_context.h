@@ -1,8 +1,9 @@
 #pragma once
-// What the scattering nodes share, prepared by the plugin for one frame graph: the frame's state
-// (FrameContext) and one light's images (LightImages). A node's Inputs struct holds the parts it
-// reads; no node writes any of it. The textures the nodes make are returned by the nodes that
-// write them and passed to the nodes that read them.
+// What every node of one light's chain reads, prepared by the plugin for one frame graph: the
+// light's constants and values with the frame's depth and formats (ChainContext), and the light's
+// images (LightImages). A node's Inputs struct holds the parts it reads; no node writes any of it.
+// The textures the nodes make are returned by the nodes that write them and passed to the nodes
+// that read them.
 #include <vulkan/vulkan.h>
 
 #include "light_frame.h"
@@ -11,7 +12,8 @@
 
 namespace ls {
 
-struct FrameContext {
+// One light's chain: the frame's depth and screen, seen through that light's constants.
+struct ChainContext {
     Shared shared;     // the device's samplers and pipelines (null for the budget's graph)
     ScatterSpec spec;  // the light's shader options
     rg::HostDataRef<LightFrame> values;  // the light's values of the frame being recorded
