@@ -339,9 +339,6 @@ void Device::loadProperties() {
     vk_.GetPhysicalDeviceProperties2(physical_, &p2);
     maxAllocation_ = maintenance3.maxMemoryAllocationSize;
     driverName_ = std::string(driver.driverName) + " " + driver.driverInfo;
-    VkPhysicalDeviceFeatures supported;
-    vk_.GetPhysicalDeviceFeatures(physical_, &supported);
-    extendedFormats_ = supported.shaderStorageImageExtendedFormats;
     uint32_t n = 0;
     vk_.GetPhysicalDeviceQueueFamilyProperties(physical_, &n, nullptr);
     std::vector<VkQueueFamilyProperties> families(n);

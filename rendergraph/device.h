@@ -73,8 +73,6 @@ class Device {
     std::string name() const { return properties_.deviceName; }
     std::string driverName() const { return driverName_; }
     bool isCpu() const { return properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU; }
-    bool validationEnabled() const { return validation_; }
-    bool storageImageExtendedFormats() const { return extendedFormats_; }
     double timestampPeriodNs() const { return properties_.limits.timestampPeriod; }
     uint32_t timestampValidBits() const { return timestampBits_; }
 
@@ -142,7 +140,6 @@ class Device {
     bool validation_ = false;
     bool owns_ = true;
     bool debugUtils_ = false;
-    bool extendedFormats_ = false;
     bool echo_ = true;
     mutable std::mutex messagesMutex_;
     std::vector<std::string> messages_;

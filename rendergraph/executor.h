@@ -89,7 +89,6 @@ class GraphExecutor {
     void releaseCompleted(uint64_t completed);
     // Every stage and write access of the graph's passes on its transients.
     const TransientScope& transientScope() const { return transientScope_; }
-    uint64_t heapGeneration() const { return heapGeneration_; }
     // A recorded frame's timings, read without waiting (valid is false until the GPU has finished
     // it, and for a frame that is not among the last kTimingSlots recorded); readTimings() reads
     // the last frame recorded.

@@ -14,7 +14,6 @@
 #include "rendergraph/host_buffer.h"
 #include "rendergraph/image_readback.h"
 #include "rendergraph/pipeline.h"
-#include "rendergraph/report.h"
 #include "rendergraph/vk_error.h"
 #include "scene/bounding_boxes.h"
 #include "scene_to_plugin.h"
@@ -692,10 +691,6 @@ FrameOutput EngineRenderer::render(const RenderOptions& options) {
             out.volume[i] = glm::unpackHalf1x16(texels[i]);
     }
     return out;
-}
-
-std::string EngineRenderer::engineGraphDot() const {
-    return rg::reportDot(*graph_, executor_->compiled());
 }
 
 }  // namespace host

@@ -70,7 +70,6 @@ class EngineRenderer {
     lightscatter::Plugin& plugin() { return *plugin_; }
     const Bounds& bounds() const { return bounds_; }
     size_t occluderCount() const { return occluders_.size(); }  // seed 004's boxes, one a primitive
-    std::string engineGraphDot() const;
 
   private:
     std::vector<lightscatter::Occluder> occluders_;

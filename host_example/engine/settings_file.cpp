@@ -102,20 +102,4 @@ lightscatter::Settings loadSettingsFile(const std::string& path, lightscatter::S
     return SettingsReader(path).read(base);
 }
 
-const char* lightModelName(lightscatter::LightModel model) {
-    return model == lightscatter::LightModel::Simplified ? "simplified" : "full";
-}
-
-const char* planeTargetName(lightscatter::PlaneTarget target) {
-    switch (target) {
-        case lightscatter::PlaneTarget::Float16:
-            return "float16";
-        case lightscatter::PlaneTarget::Float32:
-            return "float32";
-        case lightscatter::PlaneTarget::Rgba8Channels:
-            return "rgba8";
-    }
-    return "unknown";
-}
-
 }  // namespace host

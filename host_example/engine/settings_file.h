@@ -11,10 +11,4 @@ namespace host {
 // wrong types and values the plugin would refuse throw one line naming the file and the field.
 lightscatter::Settings loadSettingsFile(const std::string& path, lightscatter::Settings base);
 
-// The name a settings file gives a plane target: "float16", "float32" or "rgba8".
-const char* planeTargetName(lightscatter::PlaneTarget target);
-
-// The name a settings file gives a light model: "full" or "simplified".
-const char* lightModelName(lightscatter::LightModel model);
-
 }  // namespace host

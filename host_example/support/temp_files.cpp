@@ -146,8 +146,4 @@ void TempFile::moveIntoPlace() {
     slot_ = -1;
 }
 
-void removeRegisteredTempFiles() {
-    unlinkLive();
-}
-
 }  // namespace host

@@ -26,7 +26,4 @@ class TempFile {
     bool moved_ = false;
 };
 
-// For tests: the signal handler's work without the signal (removes every registered temporary).
-void removeRegisteredTempFiles();
-
 }  // namespace host

@@ -52,8 +52,11 @@ ChainOptions AnalyticMethod::options(const LightSetup&, const LightData*,
     return {};
 }
 
-ChainOutputs AnalyticMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,
-                                      const ChainConfig& c, const CompositeTarget&) const {
+ChainOutputs AnalyticMethod::addChain(rg::RenderGraph& g, ChainLights lights,
+                                      const CompositeTarget&) const {
+    const ChainLight& only = onlyLight(lights, name());
+    const ChainInputs& in = only.in;
+    const ChainConfig& c = only.config;
     ChainOutputs out;
     out.lin = addAnalytic(g, {chainContext(in, c)});
     return out;

@@ -13,7 +13,7 @@ class AnalyticMethod final : public MethodUnit {
     MethodCaps caps() const override;
     std::string notice(const LightSetup& light) const override;
     ChainOptions options(const LightSetup&, const LightData*, const ChainOptions*) const override;
-    ChainOutputs addChain(rg::RenderGraph& graph, const ChainInputs& in, const ChainConfig& config,
+    ChainOutputs addChain(rg::RenderGraph& graph, ChainLights lights,
                           const CompositeTarget& target) const override;
     std::string summary(const ChainConfig&) const override;
 };

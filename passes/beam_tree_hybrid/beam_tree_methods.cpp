@@ -98,8 +98,11 @@ ChainOptions BeamTreeMethod::options(const LightSetup& s, const LightData* data,
     return ChainOptions(o);
 }
 
-ChainOutputs BeamTreeAnalyticMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,
-                                              const ChainConfig& c, const CompositeTarget&) const {
+ChainOutputs BeamTreeAnalyticMethod::addChain(rg::RenderGraph& g, ChainLights lights,
+                                              const CompositeTarget&) const {
+    const ChainLight& only = onlyLight(lights, name());
+    const ChainInputs& in = only.in;
+    const ChainConfig& c = only.config;
     const Options& o = *c.options.get<Options>();
     const BeamTreeInputs beam{chainContext(in, c), lightImages(in, c)};
     ChainOutputs out;
@@ -113,8 +116,11 @@ std::string BeamTreeAnalyticMethod::summary(const ChainConfig& c) const {
                        : ", uncertain space sampled by planes as lit (no shadow map)");
 }
 
-ChainOutputs BeamTreeSamplingMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,
-                                              const ChainConfig& c, const CompositeTarget&) const {
+ChainOutputs BeamTreeSamplingMethod::addChain(rg::RenderGraph& g, ChainLights lights,
+                                              const CompositeTarget&) const {
+    const ChainLight& only = onlyLight(lights, name());
+    const ChainInputs& in = only.in;
+    const ChainConfig& c = only.config;
     const Options& o = *c.options.get<Options>();
     LightImages light = lightImages(in, c);
     light.table = {};  // the sampling planes read no table

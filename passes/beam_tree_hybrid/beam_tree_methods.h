@@ -37,7 +37,7 @@ class BeamTreeAnalyticMethod final : public BeamTreeMethod {
     std::string description() const override;
     MethodCaps caps() const override;
     bool readsTable(const LightSetup&) const override { return true; }
-    ChainOutputs addChain(rg::RenderGraph& graph, const ChainInputs& in, const ChainConfig& config,
+    ChainOutputs addChain(rg::RenderGraph& graph, ChainLights lights,
                           const CompositeTarget& target) const override;
     std::string summary(const ChainConfig& config) const override;
 
@@ -49,7 +49,7 @@ class BeamTreeSamplingMethod final : public BeamTreeMethod {
   public:
     const char* name() const override { return "beam-tree-sampling"; }
     std::string description() const override;
-    ChainOutputs addChain(rg::RenderGraph& graph, const ChainInputs& in, const ChainConfig& config,
+    ChainOutputs addChain(rg::RenderGraph& graph, ChainLights lights,
                           const CompositeTarget& target) const override;
     std::string summary(const ChainConfig& config) const override;
 

@@ -31,8 +31,11 @@ ChainOptions BruteForceMethod::options(const LightSetup&, const LightData*,
     return {};  // nothing but the light's kind, shadow and shadow-map size
 }
 
-ChainOutputs BruteForceMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,
-                                        const ChainConfig& c, const CompositeTarget&) const {
+ChainOutputs BruteForceMethod::addChain(rg::RenderGraph& g, ChainLights lights,
+                                        const CompositeTarget&) const {
+    const ChainLight& only = onlyLight(lights, name());
+    const ChainInputs& in = only.in;
+    const ChainConfig& c = only.config;
     const ChainContext chain = chainContext(in, c);
     const LightImages light = lightImages(in, c);
     ChainOutputs out;

@@ -12,7 +12,7 @@ class BruteForceMethod final : public MethodUnit {
     MethodCaps caps() const override;
     bool readsTable(const LightSetup& light) const override;
     ChainOptions options(const LightSetup&, const LightData*, const ChainOptions*) const override;
-    ChainOutputs addChain(rg::RenderGraph& graph, const ChainInputs& in, const ChainConfig& config,
+    ChainOutputs addChain(rg::RenderGraph& graph, ChainLights lights,
                           const CompositeTarget& target) const override;
     std::string summary(const ChainConfig& config) const override;
 };

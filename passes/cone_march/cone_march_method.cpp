@@ -27,8 +27,11 @@ ChainOptions ConeMarchMethod::options(const LightSetup& s, const LightData*,
     return ChainOptions(Options{{c.samples, c.limited, c.jitter}, s.settings.shadowSampling});
 }
 
-ChainOutputs ConeMarchMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,
-                                       const ChainConfig& c, const CompositeTarget&) const {
+ChainOutputs ConeMarchMethod::addChain(rg::RenderGraph& g, ChainLights lights,
+                                       const CompositeTarget&) const {
+    const ChainLight& only = onlyLight(lights, name());
+    const ChainInputs& in = only.in;
+    const ChainConfig& c = only.config;
     const Options& o = *c.options.get<Options>();
     LightImages light;
     if (c.shadowed && o.shadowSampling) light.shadowMap = in.shadowMap;

@@ -19,7 +19,7 @@ class ConeMarchMethod final : public MethodUnit {
     std::vector<SettingsField> settingsFields() const override;
     ChainOptions options(const LightSetup& light, const LightData*,
                          const ChainOptions*) const override;
-    ChainOutputs addChain(rg::RenderGraph& graph, const ChainInputs& in, const ChainConfig& config,
+    ChainOutputs addChain(rg::RenderGraph& graph, ChainLights lights,
                           const CompositeTarget& target) const override;
     std::string summary(const ChainConfig& config) const override;
 };

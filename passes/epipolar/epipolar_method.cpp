@@ -80,8 +80,11 @@ ChainOptions EpipolarMethod::options(const LightSetup& s, const LightData*,
     return ChainOptions(o);
 }
 
-ChainOutputs EpipolarMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,
-                                      const ChainConfig& c, const CompositeTarget& target) const {
+ChainOutputs EpipolarMethod::addChain(rg::RenderGraph& g, ChainLights lights,
+                                      const CompositeTarget& target) const {
+    const ChainLight& only = onlyLight(lights, name());
+    const ChainInputs& in = only.in;
+    const ChainConfig& c = only.config;
     const ChainContext chain = chainContext(in, c);
     const LightImages light = lightImages(in, c);
     ChainOutputs out;

@@ -27,7 +27,7 @@ class EpipolarMethod final : public MethodUnit {
                                  const LightSetup& light) const override;
     ChainOptions options(const LightSetup& light, const LightData*,
                          const ChainOptions*) const override;
-    ChainOutputs addChain(rg::RenderGraph& graph, const ChainInputs& in, const ChainConfig& config,
+    ChainOutputs addChain(rg::RenderGraph& graph, ChainLights lights,
                           const CompositeTarget& target) const override;
     std::string summary(const ChainConfig& config) const override;
     std::string frameNote(const LightFrame& frame, const ChainConfig& config) const override;

@@ -19,7 +19,8 @@ std::vector<SettingsField> EpipolarMethod::settingsFields() const {
         .profiles({1024, 1024, 512, 1024, 512, 256})
         .former({"samplesPerSlice"})
         .doc("samples along each line");
-    f.whole("initialSampleStep", &E::initialSampleStep, 1, 128, "")
+    f.whole("initialSampleStep", &E::initialSampleStep, 1, 128,
+            "the first ray-marching samples' spacing")
         .powerOfTwo()
         .former({"initialSampleStep"})
         .doc("ray-marching samples every N samples (a power of two)");

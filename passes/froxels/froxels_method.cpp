@@ -77,53 +77,49 @@ ChainOptions FroxelsMethod::options(const LightSetup& s, const LightData*,
     return ChainOptions(Options{froxelSettings(s.settings.froxels)});
 }
 
-ChainOutputs FroxelsMethod::addChain(rg::RenderGraph& g, const ChainInputs& in,
-                                     const ChainConfig& c, const CompositeTarget& target) const {
-    return addFrameChain(g, {in}, {c}, target);
-}
-
 // One injection per light, in the frame's order, into one grid; then one integration and one
 // apply, with the first light's constants (the camera and the medium are every light's).
-ChainOutputs FroxelsMethod::addFrameChain(rg::RenderGraph& g, const std::vector<ChainInputs>& in,
-                                          const std::vector<ChainConfig>& configs,
-                                          const CompositeTarget& target) const {
-    const FroxelSettings& settings = configs.at(0).options.get<Options>()->grid;
-    const FroxelGrid grid = froxelGrid(in.at(0).screen, settings);
+ChainOutputs FroxelsMethod::addChain(rg::RenderGraph& g, ChainLights lights,
+                                     const CompositeTarget& target) const {
+    const ChainInputs& first = lights.front().in;
+    const FroxelSettings& settings = lights.front().config.options.get<Options>()->grid;
+    const FroxelGrid grid = froxelGrid(first.screen, settings);
     const bool temporal = settings.temporal;
     // The temporal mode's history, kept by the graph under the frame's key: the frame before's
     // grid, read, and this frame's, written.
     rg::RenderGraph::HistoryImages history;
     if (temporal)
-        history = g.historyImages("froxel history", froxelHistoryDesc(grid), in[0].frameKey);
+        history = g.historyImages("froxel history", froxelHistoryDesc(grid), first.frameKey);
     rg::ImageRef scattering = froxelScatteringImage(g, grid);
-    std::vector<rg::HostDataRef<LightFrame>> lights;
-    for (size_t i = 0; i < in.size(); ++i) {
-        if (in.size() > 1) g.setNameSuffix(" (light " + std::to_string(i) + ")");
+    std::vector<rg::HostDataRef<LightFrame>> values;
+    for (size_t i = 0; i < lights.size(); ++i) {
+        const ChainLight& l = lights[i];
+        if (lights.size() > 1) g.setNameSuffix(" (light " + std::to_string(i) + ")");
         scattering =
             addFroxelInjection(g,
-                               {chainContext(in[i], configs[i]), lightImages(in[i], configs[i]),
+                               {chainContext(l.in, l.config), lightImages(l.in, l.config),
                                 scattering, i == 0, temporal ? history.previous : rg::ImageRef{}},
                                grid);
-        lights.push_back(in[i].values);
+        values.push_back(l.in.values);
     }
     g.setNameSuffix({});
-    const ChainContext chain = chainContext(in[0], configs[0]);
+    const ChainContext chain = chainContext(first, lights.front().config);
     ChainOutputs out;
     if (temporal) {
         const FroxelTemporalOutputs t =
             addFroxelTemporalBlend(g,
                                    {chain, scattering, history.previous, history.current,
-                                    in[0].previous, settings.historyWeight},
+                                    first.previous, settings.historyWeight},
                                    grid);
         scattering = t.scattering;
         g.markOutput(t.historyOut);  // the next frame reads it
     }
-    const rg::ImageRef integrated = addFroxelIntegration(g, {chain, scattering, lights}, grid);
-    if (in[0].volumeOut.valid())
-        g.markOutput(addFroxelExport(g, {chain, integrated, lights, in[0].volumeOut}, grid));
+    const rg::ImageRef integrated = addFroxelIntegration(g, {chain, scattering, values}, grid);
+    if (first.volumeOut.valid())
+        g.markOutput(addFroxelExport(g, {chain, integrated, values, first.volumeOut}, grid));
     out.composited = true;
     out.target = addFroxelApply(
-        g, {chain, integrated, lights, {target.color, target.inscatterOut, false}}, grid);
+        g, {chain, integrated, values, {target.color, target.inscatterOut, false}}, grid);
     return out;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // Froxels as a method of the frame graph (method_unit.h): the froxel volumetric fog engines ship,
-// for comparison with the seeds' methods on the same frame. Frame-wide: every light of the frame
+// for comparison with the seeds' methods on the same frame. One per frame: every light of the frame
 // is injected into one grid, integrated once and applied once.
 #include "froxel_nodes.h"
 #include "shared/method_unit.h"
@@ -22,11 +22,8 @@ class FroxelsMethod final : public MethodUnit {
     std::string refusal(const LightSetup& light) const override;
     ChainOptions options(const LightSetup& light, const LightData*,
                          const ChainOptions*) const override;
-    ChainOutputs addChain(rg::RenderGraph& graph, const ChainInputs& in, const ChainConfig& config,
+    ChainOutputs addChain(rg::RenderGraph& graph, ChainLights lights,
                           const CompositeTarget& target) const override;
-    ChainOutputs addFrameChain(rg::RenderGraph& graph, const std::vector<ChainInputs>& in,
-                               const std::vector<ChainConfig>& configs,
-                               const CompositeTarget& target) const override;
     std::string summary(const ChainConfig& config) const override;
 };
 

@@ -46,8 +46,11 @@ ChainOptions PlanesMethod::options(const LightSetup& s, const LightData*,
                                 s.camera.reversedZ});
 }
 
-ChainOutputs PlanesMethod::addChain(rg::RenderGraph& g, const ChainInputs& in, const ChainConfig& c,
+ChainOutputs PlanesMethod::addChain(rg::RenderGraph& g, ChainLights lights,
                                     const CompositeTarget&) const {
+    const ChainLight& only = onlyLight(lights, name());
+    const ChainInputs& in = only.in;
+    const ChainConfig& c = only.config;
     const Options& o = *c.options.get<Options>();
     const ChainContext chain = chainContext(in, c);
     PlanesInputs planes{chain, {}, {}};

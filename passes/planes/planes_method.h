@@ -31,7 +31,7 @@ class PlanesMethod final : public MethodUnit {
                                  const LightSetup& light) const override;
     ChainOptions options(const LightSetup& light, const LightData*,
                          const ChainOptions*) const override;
-    ChainOutputs addChain(rg::RenderGraph& graph, const ChainInputs& in, const ChainConfig& config,
+    ChainOutputs addChain(rg::RenderGraph& graph, ChainLights lights,
                           const CompositeTarget& target) const override;
     std::string summary(const ChainConfig& config) const override;
     // The planes this frame placed (with Settings::planes.spacing their count varies).

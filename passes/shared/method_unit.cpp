@@ -1,5 +1,7 @@
 #include "method_unit.h"
 
+#include <stdexcept>
+
 #include "refusals.h"
 
 namespace ls {
@@ -17,11 +19,11 @@ ScatterSpec scatterSpec(const LightSetup& light) {
     return spec;
 }
 
-ChainOutputs MethodUnit::addFrameChain(rg::RenderGraph& graph, const std::vector<ChainInputs>& in,
-                                       const std::vector<ChainConfig>& configs,
-                                       const CompositeTarget& target) const {
-    // Only a one-per-frame method is asked for one; one light is its own chain otherwise.
-    return addChain(graph, in.at(0), configs.at(0), target);
+const ChainLight& onlyLight(ChainLights lights, const char* method) {
+    if (lights.size() != 1)
+        throw std::logic_error(std::string(method) + ": a per-light chain was given " +
+                               std::to_string(lights.size()) + " lights");
+    return lights[0];
 }
 
 }  // namespace ls

@@ -6,6 +6,7 @@
 // keeps the frame history, and knows no method's nodes.
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -35,7 +36,7 @@ struct MethodCaps {
     bool countsSteps = false;     // DebugOptions::countSteps: a counting variant of its march
     // Its textures depend on the profile's sizes: budget() reports it.
     bool profileSized = false;
-    // Every light of the frame goes through one chain (addFrameChain): the froxel grid.
+    // Every light of the frame goes through one chain (ChainLights): the froxel grid.
     bool onePerFrame = false;
     // A one-per-frame chain that writes its 3D result into ChainInputs::volumeOut when given.
     bool exportsVolume = false;
@@ -87,6 +88,19 @@ struct ChainInputs {
     rg::ImageRef volumeOut;
 };
 
+// One light's part of a chain: what it reads and how it is built.
+struct ChainLight {
+    ChainInputs in;
+    ChainConfig config;
+};
+
+// The lights of one chain: one light, or for a one-per-frame method (MethodCaps::onePerFrame)
+// every light reaching the view, in the frame's order.
+using ChainLights = std::span<const ChainLight>;
+
+// The one light of a per-light method's chain; a logic error for any other count.
+const ChainLight& onlyLight(ChainLights lights, const char* method);
+
 // What a chain leaves: a screen Lin for the composite, or the target's new versions where the
 // chain composited its Lin itself.
 struct ChainOutputs {
@@ -131,17 +145,12 @@ class MethodUnit {
     // the options the light's chain had in the last graph (null: none, or another method's).
     virtual ChainOptions options(const LightSetup& light, const LightData* data,
                                  const ChainOptions* previous) const = 0;
-    // Adds the light's chain. `target` is where a chain that composites itself writes; a chain
-    // that returns a screen Lin leaves the composite to the frame.
-    virtual ChainOutputs addChain(rg::RenderGraph& graph, const ChainInputs& in,
-                                  const ChainConfig& config,
+    // Adds a chain: one light's, or a one-per-frame method's for all its lights (ChainLights).
+    // `target` is where a chain that composites itself writes (never add-only for a one-per-frame
+    // chain, the frame's only one); a chain that returns a screen Lin leaves the composite to the
+    // frame.
+    virtual ChainOutputs addChain(rg::RenderGraph& graph, ChainLights lights,
                                   const CompositeTarget& target) const = 0;
-    // A one-per-frame method's chain (caps().onePerFrame), in place of one addChain per light:
-    // every light reaching the view, in the frame's order (the inputs and configurations of each).
-    // `target` is never add-only: the chain is the frame's only one.
-    virtual ChainOutputs addFrameChain(rg::RenderGraph& graph, const std::vector<ChainInputs>& in,
-                                       const std::vector<ChainConfig>& configs,
-                                       const CompositeTarget& target) const;
     // Which nodes the chain was built from, and why, in one line.
     virtual std::string summary(const ChainConfig& config) const = 0;
     // What changed this frame without a rebuild, appended to the report's reason (the cube faces

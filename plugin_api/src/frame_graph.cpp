@@ -137,8 +137,7 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
     rg::ImageRef noise;  // the noise as the chains read it (made first, when it is the plugin's)
     rg::BufferRef counts;
     size_t chains = 0;
-    std::vector<ls::ChainInputs> onePerFrame;  // the lights of a one-per-frame method
-    std::vector<ls::ChainConfig> onePerFrameConfigs;
+    std::vector<ls::ChainLight> onePerFrame;  // the lights of a one-per-frame method
     for (size_t i = 0; i < c.lights.size(); ++i) {
         const LightGraphConfig& l = c.lights[i];
         if (!l.touchesView) continue;  // a light whose volume misses the view costs nothing
@@ -177,13 +176,13 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
         in.stepCounts = counts;
         if (l.method->caps().onePerFrame) {
             // Its lights go into one chain, added once they are all known.
-            onePerFrame.push_back(in);
-            onePerFrameConfigs.push_back(l.chain);
+            onePerFrame.push_back({in, l.chain});
             continue;
         }
         // The first chain's composite applies the extinction; the others add their Lin.
         const ls::CompositeTarget target{color, linOut, chains != 0};
-        const ls::ChainOutputs o = l.method->addChain(g, in, l.chain, target);
+        const ls::ChainLight light{in, l.chain};
+        const ls::ChainOutputs o = l.method->addChain(g, {&light, 1}, target);
         if (o.stepCounts.valid()) counts = o.stepCounts;
         ls::CompositeOutputs written = o.target;
         if (!o.composited) {
@@ -202,11 +201,11 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
     if (!onePerFrame.empty()) {
         if (c.volumeOut.given()) {
             fg.volumeOut = g.importImage("froxel volume output", importDescription(c.volumeOut));
-            onePerFrame[0].volumeOut = fg.volumeOut;
+            onePerFrame[0].in.volumeOut = fg.volumeOut;
         }
         // A one-per-frame method takes every light (the method choice mixes it with no other).
-        const ls::ChainOutputs o = c.lights[0].method->addFrameChain(
-            g, onePerFrame, onePerFrameConfigs, {color, linOut, false});
+        const ls::ChainOutputs o =
+            c.lights[0].method->addChain(g, onePerFrame, {color, linOut, false});
         color = o.target.color;
         linOut = o.target.inscatterOut;
         chains = onePerFrame.size();

@@ -225,7 +225,8 @@ TEST_F(HostSettingsFile, BadFieldsAreNamed) {
               "epipolar.slices = 3: must be a multiple of 4 in [4, 16384] (a quarter per screen "
               "edge)");
     EXPECT_EQ(errorFor(R"({"initialSampleStep": 3})"),
-              "initialSampleStep = 3: must be a power of two in [1, 128]");
+              "initialSampleStep = 3: must be a power of two in [1, 128] (the first ray-marching "
+              "samples' spacing)");
     EXPECT_EQ(errorFor(R"({"refinementThreshold": 0})"),
               "refinementThreshold = 0: must be > 0 and finite (only compared)");
     EXPECT_EQ(errorFor(R"({"inscatterRefinementThreshold": -1})"),
