@@ -2,11 +2,13 @@
 
 #include "epipolar_constants.h"
 #include "epipolar_nodes.h"
+#include "lightscatter/lightscatter.h"
 #include "shared/chain_inputs.h"
 #include "shared/refusals.h"
 #include "shared/scattering_params.h"
 #include "shared/shared_nodes.h"
 #include "shared/view_reach.h"
+#include "step_counts.h"
 
 namespace ls {
 
@@ -48,6 +50,23 @@ std::optional<lightscatter::SeedFigure> EpipolarMethod::seedFigure(lightscatter:
         default:
             return std::nullopt;
     }
+}
+
+uint64_t EpipolarMethod::stepCountBytes(const LightSetup& s) const {
+    return ls::stepCountBytes(s.settings.epipolar.slices);
+}
+
+void EpipolarMethod::readStepCounts(const void* counters, uint64_t bytes,
+                                    lightscatter::StepCounts& out) const {
+    const auto rows = static_cast<uint32_t>(bytes / ls::stepCountBytes(1));
+    const auto sum = sumStepCounts(static_cast<const uint32_t*>(counters), rows);
+    auto at = [&](StepCount k) { return sum[static_cast<uint32_t>(k)]; };
+    out.samples = at(StepCount::Samples);
+    out.rays = at(StepCount::Rays);
+    out.lineSteps = at(StepCount::LineSteps);
+    out.treeNodes = at(StepCount::TreeNodes);
+    out.degenerateRays = at(StepCount::DegenerateRays);
+    out.degenerateSteps = at(StepCount::DegenerateSteps);
 }
 
 bool EpipolarMethod::readsTable(const LightSetup& s) const {

@@ -22,6 +22,9 @@ class EpipolarMethod final : public MethodUnit {
     std::vector<SettingsField> settingsFields() const override;
     std::optional<lightscatter::SeedFigure> seedFigure(lightscatter::Profile p) const override;
     bool readsTable(const LightSetup& light) const override;
+    uint64_t stepCountBytes(const LightSetup& light) const override;
+    void readStepCounts(const void* counters, uint64_t bytes,
+                        lightscatter::StepCounts& out) const override;
     std::unique_ptr<LightData> makeData() const override;
     std::vector<CpuWork> prepare(LightData* data, LightFrame&,
                                  const LightSetup& light) const override;

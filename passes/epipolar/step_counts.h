@@ -31,10 +31,4 @@ inline uint64_t stepCountBytes(uint32_t slices) {
 // The rows of `slices` slices added up, indexed by StepCount.
 std::array<uint64_t, kStepCounters> sumStepCounts(const uint32_t* rows, uint32_t slices);
 
-// Zeroes the counter before the frame's marches; returns its new version.
-struct ClearStepCountsInputs {
-    rg::BufferRef counts;
-};
-rg::BufferRef addClearStepCounts(rg::RenderGraph& g, const ClearStepCountsInputs& in);
-
 }  // namespace ls

@@ -123,6 +123,20 @@ ChainOutputs FroxelsMethod::addChain(rg::RenderGraph& g, ChainLights lights,
     return out;
 }
 
+VolumeLayout FroxelsMethod::exportedVolume(const LightSetup& s, VkExtent2D screen) const {
+    const FroxelGrid grid = froxelGrid(screen, froxelSettings(s.settings.froxels));
+    const FroxelDepthRange z =
+        froxelDepthRange(s.camera.nearPlane, s.camera.farPlane, s.camera.infiniteFar,
+                         s.medium.maxDistance, s.settings.froxels.farDistance);
+    return {grid.columns,
+            grid.rows,
+            grid.slices,
+            grid.tile,
+            z.nearZ,
+            z.farZ,
+            "the screen over Settings::froxels.tile, and froxels.slices"};
+}
+
 std::string FroxelsMethod::summary(const ChainConfig& c) const {
     const FroxelSettings& s = c.options.get<Options>()->grid;
     return "froxel grid of " + std::to_string(s.tile) + "x" + std::to_string(s.tile) +

@@ -24,6 +24,7 @@ class FroxelsMethod final : public MethodUnit {
                          const ChainOptions*) const override;
     ChainOutputs addChain(rg::RenderGraph& graph, ChainLights lights,
                           const CompositeTarget& target) const override;
+    VolumeLayout exportedVolume(const LightSetup& light, VkExtent2D screen) const override;
     std::string summary(const ChainConfig& config) const override;
 };
 

@@ -6,8 +6,6 @@
 #include "planes_vert.h"
 #include "shared/pass_helpers.h"
 #include "shared/shader_variant.h"
-#include "tiling_noise.h"
-#include "tiling_noise_comp.h"
 
 namespace ls {
 
@@ -127,24 +125,6 @@ rg::ImageRef addPlaneResolve(rg::RenderGraph& graph, const PlaneResolveInputs& i
         ctx.vk().CmdDraw(ctx.cmd(), 3, 1, 0, 0);
     });
     return lin;
-}
-
-rg::ImageRef addTilingNoise(rg::RenderGraph& graph, const TilingNoiseInputs& in) {
-    const rg::ImageRef kept = graph.persistentImage("tiling noise", tilingNoiseDesc(), in.key);
-    auto pass = graph.addPass("tiling noise (seed 002)", rg::PassType::Compute);
-    rg::BindingTable table(pass);
-    const rg::ImageRef noise = table.storageWrite(LS_BINDING_NOISE_OUT, kept);
-    pass.execute([shared = in.shared, table, noise](rg::PassContext& ctx) {
-        if (ctx.persistent(noise).written) return;  // made in an earlier frame
-        const auto& p = shared->pipelines.compute(
-            "tiling noise", rg::spirv(ls_spirv::tiling_noise_comp), table.layout(), 0, {});
-        p.bind(ctx.cmd());
-        table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
-        const VkExtent2D e = ctx.extent(noise);
-        ctx.vk().CmdDispatch(ctx.cmd(), groupCount(e.width, 8), groupCount(e.height, 8), 1);
-        ctx.wrote(noise, 1);
-    });
-    return noise;
 }
 
 }  // namespace ls

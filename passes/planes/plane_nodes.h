@@ -55,13 +55,4 @@ bool planeResolveNeeded(const PlaneResolveOptions& options);
 rg::ImageRef addPlaneResolve(rg::RenderGraph& graph, const PlaneResolveInputs& in,
                              const PlaneResolveOptions& options);
 
-// Fills the noise (R8G8_UNORM, storage) with two layers of tiling value noise in the first frame
-// that samples the plugin's own; the others record nothing.
-struct TilingNoiseInputs {
-    Shared shared;
-    rg::HostDataRef<rg::PersistentKey> key;  // the graph keeps the noise under it
-};
-// The plugin's own tiling noise (tiling_noise.h), made where no earlier frame made it.
-rg::ImageRef addTilingNoise(rg::RenderGraph& graph, const TilingNoiseInputs& in);
-
 }  // namespace ls

@@ -26,6 +26,7 @@ class PlanesMethod final : public MethodUnit {
     std::vector<SettingsField> settingsFields() const override;
     std::string refusal(const LightSetup& light) const override;
     bool readsNoise(const LightSetup& light) const override { return noisy(light); }
+    float ambient(const LightSetup& light) const override { return light.settings.planes.ambient; }
     std::unique_ptr<LightData> makeData() const override;
     std::vector<CpuWork> prepare(LightData* data, LightFrame&,
                                  const LightSetup& light) const override;

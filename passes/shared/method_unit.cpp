@@ -19,6 +19,14 @@ ScatterSpec scatterSpec(const LightSetup& light) {
     return spec;
 }
 
+void MethodUnit::readStepCounts(const void*, uint64_t, lightscatter::StepCounts&) const {
+    throw std::logic_error(std::string(name()) + " counts no steps");
+}
+
+VolumeLayout MethodUnit::exportedVolume(const LightSetup&, VkExtent2D) const {
+    throw std::logic_error(std::string(name()) + " exports no volume");
+}
+
 const ChainLight& onlyLight(ChainLights lights, const char* method) {
     if (lights.size() != 1)
         throw std::logic_error(std::string(method) + ": a per-light chain was given " +

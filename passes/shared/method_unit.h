@@ -19,6 +19,10 @@
 #include "shared/light_frame.h"
 #include "shared/shared_state.h"
 
+namespace lightscatter {
+struct StepCounts;
+}
+
 namespace ls {
 
 // What a method takes (the plugin's refusals and MethodInfo are made from it).
@@ -88,6 +92,15 @@ struct ChainInputs {
     rg::ImageRef volumeOut;
 };
 
+// The 3D image a method that exportsVolume writes into ChainInputs::volumeOut: its extent in
+// texels, the screen pixels a column covers, and the camera-space depths its slices span.
+struct VolumeLayout {
+    uint32_t width = 0, height = 0, depth = 0;
+    uint32_t tile = 0;
+    float nearZ = 0.0f, farZ = 0.0f;
+    std::string rule;  // how the extent follows from the screen and the settings, for a refusal
+};
+
 // One light's part of a chain: what it reads and how it is built.
 struct ChainLight {
     ChainInputs in;
@@ -134,6 +147,15 @@ class MethodUnit {
     virtual bool readsTable(const LightSetup&) const { return false; }
     // Whether the chain samples the frame's tiling noise (the engine's, or the plugin's own).
     virtual bool readsNoise(const LightSetup&) const { return false; }
+    // A method that countsSteps (DebugOptions::countSteps): the bytes of the counter its counting
+    // chain adds into for this light (the frame's one buffer holds the most any light needs,
+    // cleared before the chains), and once the GPU is done, the frame's counts from that buffer.
+    virtual uint64_t stepCountBytes(const LightSetup&) const { return 0; }
+    virtual void readStepCounts(const void* counters, uint64_t bytes,
+                                lightscatter::StepCounts& out) const;
+    // An ambient term the method adds beside a point or spot light's inverse square (1/m^2, seed
+    // 002's), for the bound Lin is stored under (plugin_api/src/lin_storage.h); 0: the model's.
+    virtual float ambient(const LightSetup&) const { return 0.0f; }
     // The light's state across frames; null when the method keeps none.
     virtual std::unique_ptr<LightData> makeData() const { return nullptr; }
     // This frame's CPU work for the light, into `data` (made by makeData()); `frame`'s constants
@@ -151,6 +173,9 @@ class MethodUnit {
     // frame.
     virtual ChainOutputs addChain(rg::RenderGraph& graph, ChainLights lights,
                                   const CompositeTarget& target) const = 0;
+    // A method that exportsVolume: the volume it writes for the light's settings on a screen of
+    // `screen` texels. Only asked of such a method.
+    virtual VolumeLayout exportedVolume(const LightSetup& light, VkExtent2D screen) const;
     // Which nodes the chain was built from, and why, in one line.
     virtual std::string summary(const ChainConfig& config) const = 0;
     // What changed this frame without a rebuild, appended to the report's reason (the cube faces

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
-#include "epipolar/step_counts.h"
-#include "planes/plane_nodes.h"
+#include "shared/clear_counters_node.h"
 #include "shared/shared_nodes.h"
+#include "shared/tiling_noise.h"
 
 namespace lightscatter::detail {
 
@@ -24,10 +24,10 @@ VkFormat coordinateFormat(const rg::DeviceCaps& caps) {
     return f == VK_FORMAT_UNDEFINED ? VK_FORMAT_R32G32_SFLOAT : f;
 }
 
-rg::ImportedBuffer stepCountImport(VkBuffer buffer, uint32_t slices) {
+rg::ImportedBuffer stepCountImport(VkBuffer buffer, uint64_t bytes) {
     rg::ImportedBuffer b;
     b.buffer = buffer;
-    b.size = ls::stepCountBytes(slices);
+    b.size = bytes;
     b.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
     b.initialStages = b.finalStages = VK_PIPELINE_STAGE_2_HOST_BIT;
     b.initialAccess = b.finalAccess = VK_ACCESS_2_HOST_READ_BIT;
@@ -170,8 +170,8 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
         if (c.countSteps && l.chain.shadowed && !counts.valid()) {
             // Imported and cleared once, before the first chain that marches.
             fg.stepCounts = g.importBuffer("ray-march step counts",
-                                           stepCountImport(VK_NULL_HANDLE, c.stepCountSlices));
-            counts = ls::addClearStepCounts(g, {fg.stepCounts});
+                                           stepCountImport(VK_NULL_HANDLE, c.stepCountBytes));
+            counts = ls::addClearCounters(g, {fg.stepCounts});
         }
         in.stepCounts = counts;
         if (l.method->caps().onePerFrame) {
@@ -200,7 +200,7 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
     g.setNameSuffix({});
     if (!onePerFrame.empty()) {
         if (c.volumeOut.given()) {
-            fg.volumeOut = g.importImage("froxel volume output", importDescription(c.volumeOut));
+            fg.volumeOut = g.importImage("engine volume output", importDescription(c.volumeOut));
             onePerFrame[0].in.volumeOut = fg.volumeOut;
         }
         // A one-per-frame method takes every light (the method choice mixes it with no other).

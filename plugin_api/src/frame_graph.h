@@ -54,10 +54,12 @@ struct GraphConfig {
     bool ownNoise = false;   // a chain samples the plugin's own tiling noise instead
     bool extinction = true;  // betaT > 0 in some channel: the composite has work
     bool poisonTransients = false;
-    // Epipolar's step counter (DebugOptions::countSteps): the marches' counting variant, adding
-    // into FrameGraph::stepCounts, which holds stepCountSlices slices (the most of any light).
+    // DebugOptions::countSteps: the counting chains (a method that countsSteps) add into
+    // FrameGraph::stepCounts, of stepCountBytes (the most of any light), and `stepCounter` reads
+    // it.
     bool countSteps = false;
-    uint32_t stepCountSlices = 0;
+    uint64_t stepCountBytes = 0;
+    const ls::MethodUnit* stepCounter = nullptr;
     // The engine's image for a one-per-frame method's 3D result (FrameDescription::volumeOut).
     ImportState volumeOut;
     std::vector<LightGraphConfig> lights;  // in the frame's order
@@ -85,7 +87,7 @@ struct FrameGraph {
 };
 
 // The step counter's import: written by the frame's passes, read by the host once it is done.
-rg::ImportedBuffer stepCountImport(VkBuffer buffer, uint32_t slices);
+rg::ImportedBuffer stepCountImport(VkBuffer buffer, uint64_t bytes);
 
 rg::ImportedImage importDescription(const ImageInput& in);
 rg::ImportedImage importDescription(const ImportState& s);

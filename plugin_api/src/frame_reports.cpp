@@ -79,7 +79,7 @@ FrameReport reportOf(const RecordedFrame& f, const std::string& device, VkFormat
     if (t.valid) {
         for (const auto& p : t.passes) r.passes.push_back({p.name, p.milliseconds, p.samples});
         r.totalMilliseconds = t.totalMilliseconds;
-        if (f.countedSteps) r.steps = steps.read(f.frame, f.stepSlices);
+        if (f.stepCounter) r.steps = steps.read(f.frame, f.stepBytes, *f.stepCounter);
     }
     r.passNames = f.passNames;
     r.method = f.method;

@@ -20,8 +20,9 @@ struct RecordedFrame {
     std::vector<std::string> passNames;
     std::vector<std::string> setupPasses;
     std::vector<PassTime> cpuWork;
-    bool countedSteps = false;  // its march added into its step counter
-    uint32_t stepSlices = 0;    // ... for this many slices
+    // The method whose chains added into its step counter, and how many bytes of it; null: none.
+    const ls::MethodUnit* stepCounter = nullptr;
+    uint64_t stepBytes = 0;
     bool graphCompiled = false;
 };
 

@@ -60,10 +60,11 @@ GraphConfig graphConfig(const ValidatedFrame& frame,
         l.lightColor = images.lightColors[i];
         l.table = touches && method.readsTable(s);
         noise = noise || l.noise;
-        // The step counter holds the most slices of any light that marches.
+        // The step counter holds what the most demanding light that counts adds into.
         if (options.countSteps && method.caps().countsSteps && touches && s.shadowed) {
             c.countSteps = true;
-            c.stepCountSlices = std::max(c.stepCountSlices, s.settings.epipolar.slices);
+            c.stepCountBytes = std::max(c.stepCountBytes, method.stepCountBytes(s));
+            c.stepCounter = &method;
         }
         c.lights.push_back(l);
     }

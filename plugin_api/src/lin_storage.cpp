@@ -22,7 +22,7 @@ double miePeak(const ls::MediumParams& m) {
 
 }  // namespace
 
-float linStorageScale(const ls::LightSetup& s) {
+float linStorageScale(const ls::LightSetup& s, const ls::MethodUnit& method) {
     const ls::MediumParams& m = s.medium;
     const double pR = 3.0 / (8.0 * kPi), pM = miePeak(m);
     // Light reaching the camera from a point or spot light has travelled at least the distance
@@ -46,7 +46,7 @@ float linStorageScale(const ls::LightSetup& s) {
             lin = I * scatter / betaT;
         } else {
             const double r0 = std::max(double(s.light.radius), 1e-6);
-            lin = I * scatter * (kPi / r0 + double(s.settings.planes.ambient) / betaT);
+            lin = I * scatter * (kPi / r0 + double(method.ambient(s)) / betaT);
         }
         if (!ls::simplifiedModel(s)) lin *= std::exp(-betaT * apart);
         bound = std::max(bound, lin);

@@ -2,6 +2,7 @@
 // The power of two a frame's Lin is stored with between a method's passes and the composite
 // (FrameConstants::linStorage, shaders/shared/frame.glsl's storedLin and loadedLin).
 #include "frame_setup.h"
+#include "shared/method_unit.h"
 
 namespace lightscatter::detail {
 
@@ -12,13 +13,13 @@ namespace lightscatter::detail {
 //   directional    E (betaR pR + betaM pM) / betaT  (the transmittance integrates to 1 / betaT)
 //   point, spot    I (betaR pR + betaM pM) (pi / r0 + ambient / betaT)
 //                  (1 / (r^2 + r0^2) integrates to at most pi / r0 along any line; the
-//                  planes' ambient term is constant)
+//                  ambient term a method adds (MethodUnit::ambient, the planes') is constant)
 //   simplified     I betaS pi / (4 pi a1 w), w = sqrt(max(a0 / a1, 1e-12)) (its arctangent)
 // times exp(-betaT d) for a point or spot light d away from the camera (its light has crossed at
 // least that much medium), and returns 1 while the bound is at most 16384 (a frame of ordinary
 // brightness stores Lin exactly as before), else the power of two that brings it to 16384: a
 // factor of four under float16's largest value for a sampled method's overshoot at a light, which
 // storedLin clamps. A light-color texture is taken to hold values of at most 1.
-float linStorageScale(const ls::LightSetup& setup);
+float linStorageScale(const ls::LightSetup& setup, const ls::MethodUnit& method);
 
 }  // namespace lightscatter::detail

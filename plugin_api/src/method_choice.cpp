@@ -32,23 +32,6 @@ MethodChoice closedForm(std::string reason) {
     return pick(Method::Analytic, std::move(reason));
 }
 
-// The names of the methods whose caps pass `which`, in the registry's order, and with `orAuto`
-// auto after them: "a, b or c".
-template <typename F>
-std::string methodsWhere(F which, const char* last = "or", bool orAuto = false) {
-    std::vector<std::string> names;
-    for (const ls::MethodUnit* m : ls::methodRegistry())
-        if (which(m->caps())) names.emplace_back(m->name());
-    if (orAuto) names.emplace_back("auto");
-    std::string s;
-    for (size_t i = 0; i < names.size(); ++i)
-        s += (i == 0                  ? ""
-              : i + 1 == names.size() ? std::string(" ") + last + " "
-                                      : ", ") +
-             names[i];
-    return s;
-}
-
 const char* kindName(ls::LightType t) {
     return t == ls::LightType::Directional ? "directional"
            : t == ls::LightType::Spot      ? "spot"
@@ -308,6 +291,21 @@ std::vector<MethodChoice> chooseLightMethods(Method frameMethod, ValidatedFrame&
                 v.lights[i].beamOccluders = converted;
     }
     return choices;
+}
+
+std::string methodsWhere(const std::function<bool(const ls::MethodCaps&)>& which, const char* last,
+                         bool orAuto) {
+    std::vector<std::string> names;
+    for (const ls::MethodUnit* m : ls::methodRegistry())
+        if (which(m->caps())) names.emplace_back(m->name());
+    if (orAuto) names.emplace_back("auto");
+    std::string s;
+    for (size_t i = 0; i < names.size(); ++i)
+        s += (i == 0                  ? ""
+              : i + 1 == names.size() ? std::string(" ") + last + " "
+                                      : ", ") +
+             names[i];
+    return s;
 }
 
 }  // namespace lightscatter::detail

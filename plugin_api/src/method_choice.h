@@ -2,6 +2,7 @@
 // Which method a frame runs: the one asked for, checked against what the frame holds (a method
 // that cannot honour the frame refuses it in one line), or for Method::Auto the cheapest that
 // meets the frame's needs, with the reason.
+#include <functional>
 #include <string>
 
 #include <lightscatter/lightscatter.h>
@@ -40,6 +41,11 @@ struct MethodChoice {
 std::string refusal(const ls::MethodUnit& unit, const ls::LightSetup& s);
 // What its caps alone rule out.
 std::string capsRefusal(const ls::MethodUnit& unit, const ls::LightSetup& s);
+
+// The names of the methods whose caps pass `which`, in the registry's order, and with `orAuto`
+// auto after them: "a, b or c".
+std::string methodsWhere(const std::function<bool(const ls::MethodCaps&)>& which,
+                         const char* last = "or", bool orAuto = false);
 
 // Throws InvalidInput naming the method and the rule when it cannot honour the frame.
 MethodChoice chooseMethod(Method requested, const ls::LightSetup& setup, bool lightReachesView);

@@ -90,14 +90,15 @@ struct Plugin::Impl {
     }
 
     // One light's constants.
-    ls::FrameConstants frameConstants(const ls::LightSetup& setup) const {
+    ls::FrameConstants frameConstants(const ls::LightSetup& setup,
+                                      const ls::MethodUnit& method) const {
         const ls::TableLayout table =
             ls::tableLayoutFor(setup.medium, setup.light.radius, ls::kTableWidth, ls::kTableHeight);
         const ls::FrameParams params{.screen = setup.screen,
                                      .maxScreen = maxRenderSize,
                                      .simplifiedA0 = setup.settings.simplifiedA0,
                                      .simplifiedA1 = setup.settings.simplifiedA1,
-                                     .linStorage = detail::linStorageScale(setup),
+                                     .linStorage = detail::linStorageScale(setup, method),
                                      .preExposure = setup.preExposure};
         return ls::makeFrameConstants(setup.camera, setup.light, setup.medium, params, table);
     }
@@ -148,7 +149,7 @@ struct Plugin::Impl {
             const ls::MethodUnit& method = p.choices[i].unit();
             methods[i] = &method;
             p.keys.push_back({v.given[i].id});
-            p.values[i].constants = frameConstants(s);
+            p.values[i].constants = frameConstants(s, method);
             p.values[i].screenRect = s.screenRect;
             detail::LightStates::State& state = lights.of(v.given[i].id, method, number);
             if (state.options) previous[i] = &*state.options;
@@ -175,7 +176,7 @@ struct Plugin::Impl {
         p.data.discardHistories(frame.resetHistory);
         for (size_t i = 0; i < n; ++i)
             p.data.set(fg.lights[i].values, p.values[i]).set(fg.lights[i].key, p.keys[i]);
-        steps.import(fg, number, c.stepCountSlices, lastFrame, retired);
+        steps.import(fg, number, c.stepCountBytes, lastFrame, retired);
         detail::Running& r = *p.graph->running;
         if (!r.rehearsed) {
             // Passes make their pipelines on first use: that happens here, on a command buffer of
@@ -226,8 +227,8 @@ struct Plugin::Impl {
             f.passNames.push_back(fg.graph->passes()[pass.pass].name);
         f.setupPasses = f.graph->executor->lastFilled();
         f.graphCompiled = p.graphCompiled;
-        f.countedSteps = fg.stepCounts.valid();
-        f.stepSlices = c.stepCountSlices;
+        f.stepCounter = fg.stepCounts.valid() ? c.stepCounter : nullptr;
+        f.stepBytes = c.stepCountBytes;
         f.cpuWork = p.cpuWork;
         std::vector<Settings> settings;
         std::vector<size_t> given;

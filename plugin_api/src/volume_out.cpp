@@ -2,9 +2,26 @@
 
 #include <string>
 
-#include "froxels/froxel_nodes.h"
+#include "registry/method_registry.h"
 
 namespace lightscatter::detail {
+
+namespace {
+
+// The method that writes the frame's volume: the grid light's where it exports one, else the
+// first that does (froxelVolume() asks before any method is chosen).
+const ls::MethodUnit& volumeMethod(const MethodChoice* chosen) {
+    if (chosen && chosen->unit().caps().exportsVolume) return chosen->unit();
+    for (const ls::MethodUnit* unit : ls::methodRegistry())
+        if (unit->caps().exportsVolume) return *unit;
+    throw std::logic_error("no method exports a volume");
+}
+
+FroxelVolume layoutOf(const ls::VolumeLayout& v) {
+    return {v.width, v.height, v.depth, v.tile, v.nearZ, v.farZ};
+}
+
+}  // namespace
 
 size_t gridLight(const ValidatedFrame& frame) {
     for (size_t i = 0; i < frame.touchesView.size(); ++i)
@@ -13,31 +30,28 @@ size_t gridLight(const ValidatedFrame& frame) {
 }
 
 FroxelVolume volumeLayout(const ValidatedFrame& frame, VkExtent2D screen) {
-    const ls::LightSetup& s = frame.lights[gridLight(frame)];
-    const ls::FroxelGrid grid = ls::froxelGrid(screen, ls::froxelSettings(s.settings.froxels));
-    const ls::FroxelDepthRange z =
-        ls::froxelDepthRange(s.camera.nearPlane, s.camera.farPlane, s.camera.infiniteFar,
-                             s.medium.maxDistance, s.settings.froxels.farDistance);
-    return {grid.columns, grid.rows, grid.slices, grid.tile, z.nearZ, z.farZ};
+    return layoutOf(volumeMethod(nullptr).exportedVolume(frame.lights[gridLight(frame)], screen));
 }
 
 void checkVolumeOut(const ImageInput& volumeOut, const ValidatedFrame& frame,
                     const std::vector<MethodChoice>& choices, VkExtent2D screen) {
     const MethodChoice& chosen = choices.at(gridLight(frame));
+    const std::string exporters =
+        methodsWhere([](const ls::MethodCaps& c) { return c.exportsVolume; });
     if (!chosen.unit().caps().exportsVolume)
         throw InvalidInput(std::string("lightscatter: volumeOut is given but the frame runs ") +
-                           methodName(chosen.method) +
-                           ", which keeps no 3D grid: only froxels export one (leave volumeOut "
-                           "empty, or choose froxels)");
-    const FroxelVolume v = volumeLayout(frame, screen);
+                           methodName(chosen.method) + ", which keeps no 3D grid: only " +
+                           exporters + " export one (leave volumeOut empty, or choose " +
+                           exporters + ")");
+    const ls::VolumeLayout v = chosen.unit().exportedVolume(frame.lights[gridLight(frame)], screen);
     if (volumeOut.extent.width != v.width || volumeOut.extent.height != v.height ||
         volumeOut.depth != v.depth)
         throw InvalidInput(
             "lightscatter: volumeOut.extent " + std::to_string(volumeOut.extent.width) + "x" +
             std::to_string(volumeOut.extent.height) + "x" + std::to_string(volumeOut.depth) +
-            " differs from the froxel grid's " + std::to_string(v.width) + "x" +
-            std::to_string(v.height) + "x" + std::to_string(v.depth) +
-            " (froxelVolume(): the screen over Settings::froxels.tile, and froxels.slices)");
+            " differs from the " + methodName(chosen.method) + " grid's " +
+            std::to_string(v.width) + "x" + std::to_string(v.height) + "x" +
+            std::to_string(v.depth) + " (froxelVolume(): " + v.rule + ")");
 }
 
 }  // namespace lightscatter::detail

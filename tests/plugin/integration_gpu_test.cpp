@@ -301,7 +301,7 @@ TEST_F(PluginIntegrationGpu, AVolumeOutputTheFrameCannotFillIsRefused) {
             volume(d);
             d.volumeOut->depth += 1;
         },
-        "volumeOut.extent", "differs from the froxel grid's");
+        "volumeOut.extent", "differs from the froxels grid's");
     expectRefused(
         [&](auto& d) {
             d.method = Method::Froxels;
