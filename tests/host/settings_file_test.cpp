@@ -332,3 +332,45 @@ TEST_F(HostSettingsFile, EchoedValuesAreCut) {
 }
 
 }  // namespace
+
+// The file the viewer's "save settings" wrote at version 0.3 (b27d13c: every field flat, under the
+// names of that release; settings/viewer_b27d13c.json, saved from a panel script that set a field
+// of every method away from its default) reads into the grouped fields.
+TEST(HostSettingsFileFormer, TheFileTheViewerWroteAtVersion03Reads) {
+    const std::string path = LS_SOURCE_DIR "/tests/host/settings/viewer_b27d13c.json";
+    const lightscatter::Settings s = host::loadSettingsFile(path, lightscatter::Settings{});
+    EXPECT_EQ(s.epipolar.slices, 512u);
+    EXPECT_EQ(s.epipolar.samplesPerSlice, 256u);
+    EXPECT_EQ(s.epipolar.initialSampleStep, 8u);
+    EXPECT_FLOAT_EQ(s.epipolar.refinementThreshold, 0.05f);
+    EXPECT_FLOAT_EQ(s.epipolar.bilateralThreshold, 0.2f);
+    EXPECT_FALSE(s.epipolar.minMaxTrees);
+    EXPECT_EQ(s.epipolar.fixupMaxSteps, 64u);
+    EXPECT_FLOAT_EQ(s.shadowDepthBias, 0.001f);
+    EXPECT_EQ(s.shadowMapSize, 2048u);
+    EXPECT_EQ(s.coneMarch.samples, 48u);
+    EXPECT_FALSE(s.coneMarch.limited);
+    EXPECT_TRUE(s.coneMarch.jitter);
+    EXPECT_EQ(s.planes.count, 96u);
+    EXPECT_EQ(s.planes.target, lightscatter::PlaneTarget::Float32);
+    EXPECT_TRUE(s.planes.scaling);
+    EXPECT_EQ(s.planes.blur, 2u);
+    EXPECT_FLOAT_EQ(s.planes.ambient, 0.5f);
+    EXPECT_FLOAT_EQ(s.noiseScale, 2.0f);
+    EXPECT_FLOAT_EQ(s.simplifiedA0, 0.01f);
+    EXPECT_EQ(s.froxels.tile, 16u);
+    EXPECT_EQ(s.froxels.slices, 32u);
+    EXPECT_FLOAT_EQ(s.froxels.farDistance, 40.0f);
+    EXPECT_TRUE(s.froxels.temporal);
+    EXPECT_FLOAT_EQ(s.froxels.historyWeight, 0.8f);
+    // Every field it holds is one of today's, so that nothing it set is dropped: it round-trips
+    // through today's writer to the same settings.
+    const std::string rewritten = host::settingsFileText(s);
+    const std::string copy =
+        (fs::temp_directory_path() / ("viewer_b27d13c_" + std::to_string(::getpid()) + ".json"))
+            .string();
+    std::ofstream(copy) << rewritten;
+    const lightscatter::Settings again = host::loadSettingsFile(copy, lightscatter::Settings{});
+    fs::remove(copy);
+    EXPECT_EQ(host::settingsFileText(again), rewritten);
+}
