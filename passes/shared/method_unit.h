@@ -1,9 +1,10 @@
 #pragma once
 // A method of the frame graph as one unit: what it can take, why it refuses a light, what it
 // prepares on the CPU, the nodes of one light's chain, and the line that says what it built. Every
-// method implements this in its own folder (passes/<method>/) and has one line in the registry
-// (registry.cpp); the plugin API validates the frame, chooses the method, loops over the lights and
-// keeps the frame history, and knows no method's nodes.
+// method implements this in its own folder (passes/<method>/) and has one line in
+// lightscatter/methods.inc, from which the registry and the public enum are made; the plugin API
+// validates the frame, chooses each light's method, keeps each light's state by its id and builds
+// the frame's graph from the chains, and knows no method's nodes.
 #include <memory>
 #include <optional>
 #include <span>

@@ -40,10 +40,10 @@ enum class MiePhase : int {
 // Float32: R32G32B32A32_SFLOAT, twice the memory, converges. Rgba8Channels: seed 002's trick for
 // 8-bit blending, monochrome: plane i goes into channel i mod 4 of an R8G8B8A8_UNORM target, the
 // four are summed at the end and tinted by the light's and medium's color; each channel holds a
-// quarter of Settings::planeRange, and each blend rounds to 1/255 of that.
+// quarter of Settings::planes.range, and each blend rounds to 1/255 of that.
 enum class PlaneTarget { Float16, Float32, Rgba8Channels };
-// Its former name, kept so that engines written against it compile; "slice" now means only an
-// epipolar line.
+// Its former name, kept so that engines written against it compile. "Slice" no longer names the
+// planes: it is an epipolar line in epipolar, a depth slice of the grid in froxels.
 using SliceTarget [[deprecated("use PlaneTarget")]] = PlaneTarget;
 
 }  // namespace lightscatter

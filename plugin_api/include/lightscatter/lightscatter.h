@@ -87,7 +87,9 @@ enum class Method {
 #include "lightscatter/methods.inc"
     Auto,
     // The planes method's former name ("slices" too is still parsed), kept so that engines
-    // written against it compile; "slice" now means only an epipolar line.
+    // written against it compile. "Slice" no longer names the planes: it is an epipolar line in
+    // epipolar (settings.epipolar.slices) and a depth slice of the grid in froxels
+    // (settings.froxels.slices).
     Slices [[deprecated("use Method::Planes")]] = Planes,
 };
 
@@ -242,10 +244,10 @@ struct Medium {
 // Within record(), the plugin's first command on the image is a barrier from (stages, access,
 // layout) to its own use, and its last a barrier from its own use to (finalStages, finalAccess,
 // finalLayout). So:
-//   usage         the VkImageUsageFlags the image was created with. The plugin needs SAMPLED
-//   (depth,
-//                 shadowMap, lightColor) or STORAGE (color, inscatterOut); layouts are checked
-//                 against these flags (COLOR_ATTACHMENT_OPTIMAL needs COLOR_ATTACHMENT, ...).
+//   usage         the VkImageUsageFlags the image was created with. The plugin needs
+//                 SAMPLED (depth, shadowMap, lightColor) or STORAGE (color, inscatterOut);
+//                 layouts are checked against these flags (COLOR_ATTACHMENT_OPTIMAL needs
+//                 COLOR_ATTACHMENT, ...).
 //   layout        the layout the image is in when the plugin's commands start. It must be a layout
 //                 the image's format and usage can hold (a depth image cannot be in
 //                 COLOR_ATTACHMENT_OPTIMAL). UNDEFINED only for inscatterOut, which the plugin
@@ -258,10 +260,11 @@ struct Medium {
 //                 `layout` at the start and left in `finalLayout`: 1 for every image but a point
 //                 light's shadow map, which has 6 (its cube faces, Light::cubeFaceViewProjections;
 //                 an image created cube-compatible or a plain 2D array, sampled as a 2D array).
-//   finalLayout   the layout the plugin leaves the image in (required; not
-//   UNDEFINED/PREINITIALIZED). finalStages/finalAccess  the engine's next use after the plugin: the
-//   plugin's last barrier makes
-//                 its work visible to them. The defaults make it visible to everything.
+//   finalLayout   the layout the plugin leaves the image in (required; not UNDEFINED or
+//                 PREINITIALIZED).
+//   finalStages/finalAccess
+//                 the engine's next use after the plugin: the plugin's last barrier makes its
+//                 work visible to them. The defaults make it visible to everything.
 // Stages and the VkImage handle may change from frame to frame at no cost. A different format,
 // extent (a resize), usage or layout selects another frame graph on the next record(): one
 // compiled the first time that configuration is met and kept after (the last 8), its textures in
@@ -301,10 +304,12 @@ struct Occluder {
     std::optional<OccluderBox> inner;
 };
 inline constexpr size_t kMaxOccluders = 4096;
-// FrameDescription::lights holds at most this many. Every light is a chain of its own: its passes,
-// its shadow map's trees, and for a point or spot light its 512x256 RGBA32F table (2 MiB, kept
-// across frames), so the cost grows with each light; more are refused rather than exhausting the
-// device (issue #22: 10,000 lights took the machine's memory).
+// FrameDescription::lights holds at most this many. Each light costs its own work and memory: a
+// chain of its own (its passes, its shadow map's trees; a one-per-frame method's lights share one
+// chain, but each is injected on its own), and for a point or spot light whose method reads one
+// its 512x256 RGBA32F table (2 MiB, kept across frames while the light is in use), so the cost
+// grows with each light; more are refused rather than exhausting the device (issue #22: 10,000
+// lights took the machine's memory).
 inline constexpr size_t kMaxLights = 64;
 
 // Debugging aids, off by default and free when off.
@@ -339,12 +344,15 @@ struct LightInput {
     // the light.
     Method method = Method::Auto;
     // The light's identity, chosen by the engine (a key of its own that stays with the light, such
-    // as an entity id): the plugin keeps the light's state across frames under it (its point-light
+    // as an entity id). The plugin keeps the light's state across frames under it (its point-light
     // table, its method's data) and orders the frame's lights by it, so that the same lights in
-    // another order render the same frame and compile nothing, and a light leaving the list takes
-    // its state with it and leaves the others'. Absent: the light's position in the list. The
-    // lights of a frame have different ids. A light's state absent from framesInFlight + 60 frames
-    // is released.
+    // another order render the same frame bit for bit and compile nothing, and a light leaving the
+    // list takes its state with it and leaves the others' untouched. Absent: the light's position
+    // in the list, so that without ids a reordered list is other lights to the plugin (their
+    // state moves with the positions, and the frame may compile). The lights of a frame have
+    // different ids (a frame giving one twice is refused naming both). The state of a light absent
+    // for framesInFlight + 60 frames is released: memory follows the lights in use, and a light
+    // that comes back after that starts anew, as on its first frame.
     std::optional<uint64_t> id;
 };
 
@@ -379,12 +387,18 @@ struct FrameDescription {
     // methods ignore them, however many there are.
     std::vector<Occluder> occluders;
     Camera camera;
+    // One light, with `shadowMap` and `lightColor` above. The plugin takes it as the list of that
+    // one light (lights = {light}, its id 0) at its edge, and nothing after that point tells the
+    // two apart: the same light given either way renders the same image and report. Only the
+    // names in refusals differ (light.field, not lights[0].light.field).
     Light light;
     // Several lights: when not empty, these replace `light`, `shadowMap` and `lightColor` (which
     // must then be left at their defaults; a frame giving both is refused naming the fields).
-    // Each light gets its own chain of nodes writing its own Lin; the Lins are summed and
-    // composited once: color = color * exp(-betaT S) + sum of Lin (inscatterOut receives the sum).
-    // A light whose volume misses the view adds no node. Errors name lights[i].field. Every
+    // Inside the plugin they are ordered by LightInput::id. Each light gets its own chain of nodes
+    // writing its own Lin (a one-per-frame method, MethodInfo::onePerFrame, injects them all into
+    // one chain); the extinction is applied once and the Lins are added: color = color *
+    // exp(-betaT S) + sum of Lin (inscatterOut receives the sum). A light whose volume misses the
+    // view adds no node. Errors name lights[i].field, i the light's position in this list. Every
     // method takes a list; a method that cannot honour one of its lights refuses the frame naming
     // lights[i]. At most kMaxLights.
     std::vector<LightInput> lights;
@@ -485,15 +499,17 @@ struct FrameReport {
     // table: its first frame, or a new medium; the tiling noise: its first frame).
     std::vector<std::string> setupPasses;
     // This frame compiled a frame graph: its configuration (sizes, formats, layouts, the method,
-    // the lights' kinds and settings) was met for the first time, or not among the graphs kept
-    // (the plugin keeps the last 8 it used). Other frames reuse a compiled graph.
+    // the lights' kinds and settings, in the order of their ids) was met for the first time, or not
+    // among the graphs kept (the plugin keeps the last 8 it used). Other frames reuse a compiled
+    // graph: the same lights with ids in another order among them.
     bool graphCompiled = false;
     std::string depthStencilFormat;  // what was chosen for the stencil textures
     // With DebugOptions::countSteps on an epipolar frame, once `timed` (the frame is done): what
     // its ray march did. Empty otherwise.
     std::optional<StepCounts> steps;
-    // One entry per light, in the frame's order: the method its chain ran ("none" for a light that
-    // reaches no view ray), why (with Auto, why that method), and the notice of its method.
+    // One entry per light, in the order the engine gave them (FrameDescription::lights, not the
+    // ids' order): the method its chain ran ("none" for a light that reaches no view ray), why
+    // (with Auto, why that method), and the notice of its method.
     struct Light {
         std::string method;
         std::string reason;

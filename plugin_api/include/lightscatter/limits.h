@@ -5,10 +5,10 @@ namespace lightscatter {
 
 // The ranges of a frame's numbers. The plugin computes in single precision: FLT_MAX is about
 // 3.4e38, the smallest normal float 1.2e-38, and a GPU may flush smaller (subnormal) values to 0.
-// Each numeric field's comment states its range, and record() refuses a value outside it
-// (InvalidInput naming the field and the range). The bounds are chosen so that no shader
-// overflows: the largest product one forms is Lin's integrand times the length of ray it stands
-// for,
+// Each numeric field's comment states its range (a Settings field's is in its field table,
+// settingsFields()), and record() refuses a value outside it (InvalidInput naming the field and
+// the range). The bounds are chosen so that no shader overflows: the largest product one forms is
+// Lin's integrand times the length of ray it stands for,
 //       intensity     1e9 W/sr or W/m^2           kMaxIntensity
 //     x irradiance    2e6 1/m^2                   1 / r0^2 with r0 >= kMinRadius, plus planes'
 //                                                 ambient term, at most kMaxAmbient

@@ -20,6 +20,10 @@
 
 namespace lightscatter {
 
+// A profile decides the fields whose SettingsField::profileSized is set, and only those: epipolar's
+// slices and samplesPerSlice, the recommended shadowMapSize, the planes' count and target. The
+// figures below are epipolar's slices x samples per slice and the shadow map; each field's table
+// holds every profile's value (SettingsField::profileValues).
 enum class Profile {
     HighQuality,         // 2048 slices x 1024 samples, 4096^2 shadow map (seed 000)
     Balanced,            // 1024 x 1024, 2048^2
@@ -39,8 +43,11 @@ enum class ShadowFilter { Nearest, Bilinear };
 enum class LightModel { Full, Simplified };
 
 struct Settings {
+    // The profile's recommended shadow map, 0 to 16384 texels on a side. Only a recommendation,
+    // which no method reads: each light's own Light::shadowMapSize decides its map, and a tool
+    // (the host's budget and benchmark) sizes its maps by this one.
+    uint32_t shadowMapSize = 2048;
     // What every method that samples a shadow map reads.
-    uint32_t shadowMapSize = 2048;  // the profile's recommendation (the light's own size rules)
     ShadowFilter shadowFilter = ShadowFilter::Bilinear;  // 2x2 PCF or nearest texel
     float shadowDepthBias = 0.0f;  // added to the ray's light-space depth before comparing
     // What a frame asks of its method, beyond docs/model.md. Each is honoured by the methods whose

@@ -7,11 +7,12 @@
 namespace lightscatter {
 
 struct FroxelsSettings {
-    // The grid's columns are tile x tile pixels (8 is froxelPresets()'s "froxels-hdrp", 240x135
-    // columns at 1920x1080, 16 its "froxels-unreal"), cut into `slices` depth slices whose
-    // camera-space z grows geometrically from the near plane to farDistance (metres; 0: the
-    // medium's maxDistance, or the far plane where it is nearer; else above the near plane and at
-    // most maxDistance). Beyond it the grid's last slice holds: in-scattering further away is lost.
+    // The grid's columns are tile x tile pixels (8 is the preset "froxels-hdrp", 240x135 columns
+    // at 1920x1080, 16 the preset "froxels-unreal": MethodInfo::presets, applyMethodPreset()),
+    // cut into `slices` depth slices whose camera-space z grows geometrically from the near plane
+    // to farDistance (metres; 0: the medium's maxDistance, or the far plane where it is nearer;
+    // else above the near plane and at most maxDistance). Beyond it the grid's last slice holds:
+    // in-scattering further away is lost.
     uint32_t tile = 8;
     uint32_t slices = 64;
     float farDistance = 0.0f;
@@ -20,7 +21,7 @@ struct FroxelsSettings {
     // reprojected to where that froxel was: new = lerp(this frame's, history, historyWeight) where
     // the history covers the froxel. The one case where a frame's output depends on earlier
     // frames; FrameDescription::resetHistory starts it anew (a camera cut). The history is two
-    // grid-sized float32 3D images kept by the plugin.
+    // grid-sized float32 3D images, the plugin's memory, kept across frames by its render graph.
     bool temporal = false;
     float historyWeight = 0.9f;
 };

@@ -2,7 +2,10 @@
 // Seed 002's view-aligned planes' own settings, Settings::planes (ranges and docs: its field
 // table, lightscatter::settingsFields(), names "planes.*"). The count and the target follow the
 // profile (docs/methods.md); the rest is taken from `custom` with every profile. The beam-tree
-// methods (seed 004) sample with planes too, placed by `count` and `spacing`.
+// methods (seed 004) sample with planes too, placed by `count` and `spacing`. Seed 002 calls its
+// planes "slices", and so did this method once (Method::Slices, "slices"; its fields' flat names
+// slicePlanes, sliceTarget, ..., then planeCount, planeTarget, ..., still read by settings files
+// for one release): "slice" is no word of this method now.
 #include <cstdint>
 
 #include "lightscatter/vocabulary.h"  // PlaneTarget
