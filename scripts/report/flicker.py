@@ -118,7 +118,7 @@ def epipolar_findings(runs, scenes, w, h):
         p(f"At {w}x{h} the lines are short, so every profile places one sample per pixel along them and the "
           "threshold is crossed by a pixel's depth step; on a larger screen a surface's step per sample is "
           "smaller and fewer samples are marched at the same threshold. Refinement on in-scattering "
-          "differences (`Settings::inscatterRefinementThreshold`, off by default: samples are added where two "
+          "differences (`Settings::epipolar.inscatterRefinementThreshold`, off by default: samples are added where two "
           "marched neighbours disagree in what they carry, not only in depth) adds samples at these edges "
           "whatever their depth; on the atrium under a moving light it removes 43% of epipolar's excess over "
           "brute force at 0.05 ([epipolar.md](epipolar.md)), and `refinementThreshold` trades ray-marching "

@@ -117,7 +117,7 @@ def froxels_motion_section(bench_dir):
         p(f"In motion the temporal mode gives back what it gains on a still scene (\"Against froxel fog\": 7% to 33% "
           f"less error after the same warm-up frames): its moving error is above the plain grid's in {worse_e} of "
           f"the {n} scene, motion and size cases, the history lagging the scene (ghosting: each froxel keeps "
-          f"`froxelHistoryWeight`, 0.9 here, of where the shafts were), and its excess flicker above the plain "
+          f"`froxels.historyWeight`, 0.9 here, of where the shafts were), and its excess flicker above the plain "
           f"grid's in {worse_x} of them: the plain grid samples each froxel at its fixed centre, which moves "
           f"little from one frame to the next under a slow motion, while the jitter moves every sample each frame "
           f"and the blend lets a tenth of that through. "

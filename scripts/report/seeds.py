@@ -369,7 +369,7 @@ def seed004_section(d):
       "line each and shows two pictures; ours are approximations built from those lines, labelled so: "
       "`scenes/seed004_parallel.json` (occluders_10's boxes, a spot behind the camera shining along the view), "
       "`scenes/seed004_toplight.json` (the same boxes, a spot straight above them, seen from the side) and "
-      "`scenes/occluders_100.json` for Multiple (100 boxes). `Settings::planeSpacing` is the seed's `dz`. "
+      "`scenes/occluders_100.json` for Multiple (100 boxes). `Settings::planes.spacing` is the seed's `dz`. "
       f"`bench/seed004.json` on {device_line(runs)}, generated on {date.today().isoformat()} by "
       "`scripts/make-report.sh --seeds-only`. Ours are frame rates of the plugin's passes alone (1000 / median ms; "
       "the beam tree's CPU build is not in them, as the seed's GPU figures do not say it is), the beam tree's part "
