@@ -12,10 +12,11 @@
 namespace host::bench {
 
 struct BenchRun {
-    std::string scene;   // path of SCENE.json
-    std::string label;   // e.g. "epipolar balanced", "slices=512"
-    std::string family;  // "profiles", "slices", "samples", "initialStep", "shadowMapSize", "size",
-                         // "trees", "cone" (cone-march's sample counts and modes)
+    std::string scene;  // path of SCENE.json
+    std::string label;  // e.g. "epipolar balanced", "epipolar.slices=512"
+    // "profiles", "configurations" (or a configuration's own "family"), or a sweep's key as
+    // written: "shadowMapSize", "size", a settings field ("epipolar.slices", "samplesPerSlice")
+    std::string family;
     lightscatter::Method method = lightscatter::Method::Epipolar;
     lightscatter::Profile profile = lightscatter::Profile::Balanced;
     // Used as Custom when custom is true; its froxel grid (a preset's) with every profile.

@@ -31,10 +31,11 @@ bool honours(lightscatter::Method method, bool lightscatter::MethodInfo::*what) 
     return false;
 }
 
-std::string methodsHonouring(bool lightscatter::MethodInfo::*what) {
+std::string methodsHonouring(bool lightscatter::MethodInfo::*what, bool andAuto) {
     std::vector<std::string> names;
     for (const lightscatter::MethodInfo& m : lightscatter::methodInfo())
         if (m.*what) names.push_back(m.name);
+    if (andAuto) names.emplace_back("auto");
     std::string s;
     for (size_t i = 0; i < names.size(); ++i)
         s += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];

@@ -29,8 +29,8 @@ RenderOptions profileOptions(const std::string& profile, const std::string& sett
 // Whether a method honours a setting MethodInfo names (`what`: &MethodInfo::noise, ...); Auto
 // picks one that does.
 bool honours(lightscatter::Method method, bool lightscatter::MethodInfo::*what);
-// The names of the methods that honour it: "a, b and c".
-std::string methodsHonouring(bool lightscatter::MethodInfo::*what);
+// The names of the methods that honour it, with auto last where `andAuto`: "a, b and c".
+std::string methodsHonouring(bool lightscatter::MethodInfo::*what, bool andAuto = false);
 // Names joined by ", ".
 std::string joined(const std::vector<std::string>& names);
 // Every method's name and every preset's (MethodInfo::presets), as --method takes them.

@@ -573,12 +573,15 @@ int runView(Args& args) {
                 status.deviceBytes = rg::deviceMemoryInUse();
                 if (options.custom.noiseAmplitude > 0.0f &&
                     !honours(options.method, &lightscatter::MethodInfo::noise))
-                    status.note = "the noise: planes and auto only (this method runs without)";
+                    status.note =
+                        "the noise: " + methodsHonouring(&lightscatter::MethodInfo::noise, true) +
+                        " only (this method runs without)";
                 if (options.custom.lightModel == lightscatter::LightModel::Simplified &&
                     !honours(options.method, &lightscatter::MethodInfo::simplifiedModel))
-                    status.note += std::string(status.note.empty() ? "" : "; ") +
-                                   "the simplified model: analytic, beam-tree-analytic and auto "
-                                   "only (this method runs the full one)";
+                    status.note +=
+                        std::string(status.note.empty() ? "" : "; ") + "the simplified model: " +
+                        methodsHonouring(&lightscatter::MethodInfo::simplifiedModel, true) +
+                        " only (this method runs the full one)";
                 panel.draw(options, renderer.scene(), status);
             }
         }
@@ -597,8 +600,8 @@ int runView(Args& args) {
             rebuildDisplay(lastFrame && !screenshotPath.empty());
         };
         if (panel.rebuildTargets()) rebuildTargets();
-        // Only the planes method samples the noise (auto then picks it), and only some methods
-        // seed 004's simplified model: the others run without them.
+        // Only some methods sample the noise and only some run seed 004's simplified model (auto
+        // then picks one): the others run without them.
         auto runnable = [&](RenderOptions r) {
             if (!honours(r.method, &lightscatter::MethodInfo::noise))
                 r.custom.noiseAmplitude = 0.0f;

@@ -12,7 +12,7 @@ std::vector<SettingsField> sharedSettingsFields() {
     f.whole("shadowMapSize", &Settings::shadowMapSize, 1, 16384, "")
         .zeroIsOff()
         .profiles({4096, 2048, 1024, 2048, 1024, 512})
-        .doc("the profile's recommended shadow map");
+        .doc("the profile's recommended shadow map (0: none)");
     f.choice("shadowFilter", &Settings::shadowFilter, {"nearest", "bilinear"})
         .doc("shadow-map look-ups: nearest texel or 2x2 PCF");
     f.number("shadowDepthBias", &Settings::shadowDepthBias, -1, 1,

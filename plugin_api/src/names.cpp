@@ -9,7 +9,8 @@ constexpr const char* kAutoName = "auto";
 
 // Names a method had before, still parsed so that command lines and files written with them keep
 // working; methodName() and methodNames() give only the current ones. "slices" was the planes
-// method's name until "slice" came to mean only an epipolar line.
+// method's name until "slice" came to mean an epipolar line (and, in froxels, a depth slice of the
+// grid), never a plane.
 struct FormerName {
     const char* name;
     Method method;

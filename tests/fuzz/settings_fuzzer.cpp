@@ -1,5 +1,5 @@
 // libFuzzer target: the --settings reader on any bytes, over the balanced profile, the plugin's own
-// rules (its budget) included. An input is read or refused with one std::runtime_error line; any
+// rules (checkSettings) included. An input is read or refused with one std::runtime_error line; any
 // other outcome is a finding (see scene_fuzzer.cpp).
 #include <stdexcept>
 

@@ -1,6 +1,6 @@
-// The public Method and the frame graph's registry of methods (passes/registry) list the same
-// methods in the same order, so that adding a method is a folder, a registry line and its enum
-// value: a method missing from either side, or out of order, fails here.
+// The public Method and the frame graph's registry of methods (passes/registry), both made from
+// lightscatter/methods.inc, list the same methods in the same order: a method missing from either
+// side, or out of order, fails here.
 #include <gtest/gtest.h>
 
 #include <set>

@@ -43,7 +43,8 @@ enum class ShadowFilter { Nearest, Bilinear };
 enum class LightModel { Full, Simplified };
 
 struct Settings {
-    // The profile's recommended shadow map, 0 to 16384 texels on a side. Only a recommendation,
+    // The profile's recommended shadow map, 0 to 16384 texels on a side (0: none, the lights
+    // unshadowed; budget() then needs a size of its own). Only a recommendation,
     // which no method reads: each light's own Light::shadowMapSize decides its map, and a tool
     // (the host's budget and benchmark) sizes its maps by this one.
     uint32_t shadowMapSize = 2048;
