@@ -494,7 +494,10 @@ struct FrameReport {
     std::vector<PassTime> cpuWork;  // CPU time the plugin spent preparing the frame (the beam tree)
     double totalMilliseconds = 0;
     std::string device;
-    std::vector<std::string> passNames;  // the nodes this frame was built from
+    // The nodes this frame was built from. With several lights a node's name ends in "(light N)",
+    // N its light's place in the plugin's order (by LightInput::id), not in the engine's list: a
+    // reordered list reuses the graph, names included.
+    std::vector<std::string> passNames;
     // Passes of the frame that fill what the plugin keeps across frames, this time (the point-light
     // table: its first frame, or a new medium; the tiling noise: its first frame).
     std::vector<std::string> setupPasses;
