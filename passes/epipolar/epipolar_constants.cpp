@@ -1,5 +1,6 @@
 #include "epipolar_constants.h"
 
+#include "shaders/epipolar/epipolar_bindings.h"
 #include "shared/pass_helpers.h"
 
 namespace ls {

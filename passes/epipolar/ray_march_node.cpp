@@ -1,6 +1,7 @@
 #include "epipolar_nodes.h"
 #include "epipolar_shaders.h"
 #include "ray_march_frag_variants.h"
+#include "shaders/epipolar/epipolar_bindings.h"
 #include "shared/pass_helpers.h"
 #include "shared/shader_variant.h"
 
