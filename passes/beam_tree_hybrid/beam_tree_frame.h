@@ -9,6 +9,7 @@
 
 #include "beam_tree/occluders.h"
 #include "planes/plane_geometry.h"
+#include "planes/plane_settings.h"
 #include "shared/scattering_params.h"
 
 namespace ls {

@@ -7,6 +7,7 @@
 #include "beam_tree_shaders.h"
 #include "lit_volume_table_frag.h"
 #include "planes_frag_variants.h"
+#include "shaders/beam_tree_hybrid/beam_tree_bindings.h"
 #include "shared/pass_helpers.h"
 #include "shared/shader_variant.h"
 #include "triangles_vert.h"

@@ -1,6 +1,7 @@
 #pragma once
 // Seed 003's fixed-count march as a method of the frame graph (method_unit.h), with its low-end
 // mode that skips the shadow map.
+#include "cone_march_options.h"
 #include "shared/method_unit.h"
 #include "shared/settings_table.h"
 

@@ -2,6 +2,7 @@
 
 #include "cone_march_frag_variants.h"
 #include "cone_march_shader.h"
+#include "shaders/cone_march/cone_march_bindings.h"
 #include "shared/screen_lin_node.h"
 #include "shared/shader_variant.h"
 

@@ -1,6 +1,7 @@
 #pragma once
 // Seed 003 as a node: a fixed number of samples per pixel along the part of its ray the light can
 // reach (the spot's cone within its range), or along the whole ray (the seed's naive baseline).
+#include "cone_march_options.h"
 #include "shared/chain_context.h"
 
 namespace ls {

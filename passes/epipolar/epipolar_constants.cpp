@@ -1,5 +1,7 @@
 #include "epipolar_constants.h"
 
+#include "min_max_trees.h"
+#include "shaders/epipolar/epipolar_bindings.h"
 #include "shared/pass_helpers.h"
 
 namespace ls {

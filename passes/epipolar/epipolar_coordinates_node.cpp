@@ -1,5 +1,6 @@
 #include "epipolar_coordinates_frag.h"
 #include "epipolar_nodes.h"
+#include "shaders/epipolar/epipolar_bindings.h"
 #include "shared/pass_helpers.h"
 
 namespace ls {

@@ -3,6 +3,7 @@
 #include "epipolar_constants.h"
 #include "epipolar_nodes.h"
 #include "lightscatter/lightscatter.h"
+#include "min_max_trees.h"
 #include "shared/chain_inputs.h"
 #include "shared/refusals.h"
 #include "shared/scattering_params.h"

@@ -7,8 +7,8 @@
 
 namespace ls {
 
-// spec.minMaxTrees says whether the trees are read; countSteps, the step-count buffer's build.
-rg::ShaderCode rayMarchShader(const ScatterSpec& spec, bool countSteps);
+// trees: the min/max trees are read; countSteps: the step-count buffer's build.
+rg::ShaderCode rayMarchShader(const ScatterSpec& spec, bool trees, bool countSteps);
 // table: the point-light table is read (any light but a directional one).
 rg::ShaderCode unwarpShader(bool table, VkFormat color, bool withOutput);
 rg::ShaderCode minMaxFirstLevelShader(bool cubeShadow);

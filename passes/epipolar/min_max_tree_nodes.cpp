@@ -2,6 +2,8 @@
 #include "epipolar_shaders.h"
 #include "min_max_first_level_comp_variants.h"
 #include "min_max_next_level_comp.h"
+#include "min_max_trees.h"
+#include "shaders/epipolar/epipolar_bindings.h"
 #include "shared/pass_helpers.h"
 #include "shared/shader_variant.h"
 

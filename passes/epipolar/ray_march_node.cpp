@@ -1,6 +1,7 @@
 #include "epipolar_nodes.h"
 #include "epipolar_shaders.h"
 #include "ray_march_frag_variants.h"
+#include "shaders/epipolar/epipolar_bindings.h"
 #include "shared/pass_helpers.h"
 #include "shared/shader_variant.h"
 
@@ -8,12 +9,12 @@ namespace ls {
 
 // The plain build has no counter and no atomics; a point light's cube map comes without light
 // color (refused with it).
-rg::ShaderCode rayMarchShader(const ScatterSpec& spec, bool countSteps) {
+rg::ShaderCode rayMarchShader(const ScatterSpec& spec, bool trees, bool countSteps) {
     return pickShader(ls_spirv::ray_march_frag_variants,
                       {{"LS_NEEDS_TABLE", spec.light != LightType::Directional},
                        {"LS_LIGHT_COLOR", spec.lightColor && !spec.cubeShadow},
                        {"LS_CUBE_SHADOW", spec.cubeShadow},
-                       {"LS_TREES", spec.minMaxTrees},
+                       {"LS_TREES", trees},
                        {"LS_COUNT_STEPS", countSteps}});
 }
 
@@ -49,9 +50,9 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const EpipolarRayMarchI
         if (adds && !epipolarFrameOf(ctx.data(frame.values)).inView(face)) return;
         const Shared& shared = frame.shared;
         ScatterSpec spec = frame.spec;
-        spec.minMaxTrees = trees;
         spec.lightColor = color;
-        auto desc = fullscreenPipeline(rayMarchShader(spec, counts.valid()), ctx, table.layout());
+        auto desc =
+            fullscreenPipeline(rayMarchShader(spec, trees, counts.valid()), ctx, table.layout());
         desc.specialization = spec.constants();
         desc.stencilTest = true;
         desc.stencil = {VK_STENCIL_OP_KEEP,

@@ -1,5 +1,6 @@
 #include "epipolar_nodes.h"
 #include "refine_on_inscattering_frag.h"
+#include "shaders/epipolar/epipolar_bindings.h"
 #include "shared/pass_helpers.h"
 
 namespace ls {

@@ -1,4 +1,5 @@
 #include "epipolar_nodes.h"
+#include "shaders/epipolar/epipolar_bindings.h"
 #include "shared/pass_helpers.h"
 #include "slice_end_points_comp.h"
 

@@ -1,5 +1,6 @@
 #include "epipolar_nodes.h"
 #include "epipolar_shaders.h"
+#include "shaders/epipolar/epipolar_bindings.h"
 #include "shared/composite_target.h"
 #include "shared/pass_helpers.h"
 #include "shared/shader_variant.h"

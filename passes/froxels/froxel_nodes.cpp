@@ -10,6 +10,7 @@
 #include "export_comp.h"
 #include "inject_comp_variants.h"
 #include "integrate_comp.h"
+#include "shaders/froxels/froxel_bindings.h"
 #include "shared/pass_helpers.h"
 #include "shared/shader_variant.h"
 #include "temporal_comp.h"

@@ -4,6 +4,7 @@
 // columns, and one pass that fetches the integrated grid at each pixel's depth and composites.
 #include <vector>
 
+#include "froxel_settings.h"
 #include "lightscatter/methods/froxels.h"
 #include "shared/chain_context.h"
 #include "shared/composite_target.h"

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "lightscatter/settings.h"
+#include "plane_settings.h"
 #include "shared/scattering_params.h"
 
 namespace ls {

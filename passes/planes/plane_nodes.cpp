@@ -4,6 +4,7 @@
 #include "plane_shaders.h"
 #include "planes_frag_variants.h"
 #include "planes_vert.h"
+#include "shaders/planes/planes_bindings.h"
 #include "shared/pass_helpers.h"
 #include "shared/shader_variant.h"
 

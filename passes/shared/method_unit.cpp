@@ -10,8 +10,6 @@ ScatterSpec scatterSpec(const LightSetup& light) {
     ScatterSpec spec;
     spec.light = light.light.kind;
     spec.phase = light.medium.phase;
-    // Trees need a shadow map of 4 texels or more (treesFit).
-    spec.minMaxTrees = light.settings.epipolar.minMaxTrees && treesFit(light.light.shadowMapSize);
     spec.lightColor = light.lightColor;
     spec.bilinearShadow = light.settings.shadowFilter == lightscatter::ShadowFilter::Bilinear;
     spec.simplifiedModel = simplifiedModel(light);

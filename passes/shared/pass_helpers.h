@@ -2,7 +2,8 @@
 // Small helpers the node builders share: binding tables that start with the frame constants,
 // full-screen pipelines, workgroup counts, and the light's images. Each node picks its own shader
 // variant (shaders/CMakeLists.txt): the light's kind and options choose among the variants a
-// method's shader is built in. Binding numbers are shaders/shared/bindings.h's.
+// method's shader is built in. Binding numbers are shaders/shared/bindings.h's, and a method's own
+// shaders/<method>/<method>_bindings.h's.
 #include <vector>
 
 #include "chain_context.h"

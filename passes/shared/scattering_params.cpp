@@ -40,19 +40,9 @@ LightOnScreen projectLight(const CameraParams& camera, const LightParams& light)
     return s;
 }
 
-uint32_t treeLevels(uint32_t shadowMapSize) {
-    uint32_t levels = 0;
-    while ((2u << levels) <= shadowMapSize) ++levels;
-    return levels;  // level l (1..levels) has shadowMapSize >> l nodes
-}
-
 const char* cubeFaceName(int face) {
     static const char* const kNames[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
     return face >= 0 && face < 6 ? kNames[face] : "?";
-}
-
-bool treesFit(uint32_t shadowMapSize) {
-    return treeLevels(shadowMapSize) >= 2;
 }
 
 namespace {

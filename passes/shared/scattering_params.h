@@ -59,38 +59,6 @@ struct MediumParams {
     glm::vec3 betaT() const { return betaR + betaM + sigmaA; }
 };
 
-// Seed 002's view-aligned planes (the planes method; the beam trees sample with them too).
-struct PlaneSettings {
-    bool operator==(const PlaneSettings&) const = default;
-    uint32_t planes = 128;
-    float spacing = 0.0f;         // seed 004's dz (metres, at most): the count follows; 0: planes
-    bool planeScaling = false;    // seed 002: fewer planes as the light's volume recedes
-    bool eightBitTarget = false;  // the range below only matters to the 8-bit channel target
-    float range = 0.0f;           // 8-bit target: Lin luminance at full scale; 0: estimated
-    float ambient = 0.0f;
-    float noiseAmplitude = 0.0f;
-    float noiseScale = 1.0f;
-    glm::vec4 noiseVelocity{0.0f};
-};
-
-// Seed 003's march.
-struct ConeMarchOptions {
-    bool operator==(const ConeMarchOptions&) const = default;
-    uint32_t samples = 32;    // per pixel
-    bool coneLimited = true;  // false: march all of [0, S] (seed 003's naive baseline)
-    bool jitter = false;      // a per-pixel offset of the samples instead of the midpoints
-};
-
-// The froxel grid (the method froxels): its size, and how far its slices reach.
-struct FroxelSettings {
-    bool operator==(const FroxelSettings&) const = default;
-    uint32_t tile = 8;           // pixels per froxel on x and y
-    uint32_t slices = 64;        // depth slices
-    float farDistance = 0.0f;    // metres; 0: the medium's maxDistance (and the camera's far plane)
-    bool temporal = false;       // jittered samples blended with the reprojected history
-    float historyWeight = 0.9f;  // the history's share
-};
-
 // The look-up table's shape and scale (shaders/shared/lut.glsl).
 // Rows are uniform in log(hEff / r0) from 0 (a ray through the light) to logRange, where
 // extinction has made the table negligible (or, without extinction, far beyond where it changes).
@@ -129,12 +97,5 @@ FrameConstants makeFrameConstants(const CameraParams& camera, const LightParams&
 
 // A point light's cube face by its layer (Vulkan's order +X, -X, +Y, -Y, +Z, -Z), for names.
 const char* cubeFaceName(int face);
-
-// Number of min/max tree levels built for a shadow map of this size (level 1 covers 2 samples).
-uint32_t treeLevels(uint32_t shadowMapSize);
-// Whether min/max trees can be built: the march climbs from level 1 to level 2 and reads both the
-// odd and the even texture, so a shadow map needs 4 texels or more. Smaller maps are marched
-// texel by texel, which at that size costs nothing.
-bool treesFit(uint32_t shadowMapSize);
 
 }  // namespace ls

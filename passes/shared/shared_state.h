@@ -16,12 +16,12 @@
 
 namespace ls {
 
-// Specialisation constants of shaders/shared/frame.glsl, and the options that choose a
-// shader variant (min/max trees). Fixed for a graph: a change builds (or finds) another.
+// Specialisation constants of shaders/shared/frame.glsl, and the light's options that choose a
+// shader variant (its light color, a point light's cube map). Fixed for a graph: a change builds
+// (or finds) another. A method's own variants are in its options (ChainConfig::options).
 struct ScatterSpec {
     LightType light = LightType::Directional;
     MiePhase phase = MiePhase::CornetteShanks;
-    bool minMaxTrees = true;
     bool lightColor = false;
     bool bilinearShadow = true;
     bool simplifiedModel = false;  // seed 004's light model (Settings::lightModel)

@@ -3,6 +3,7 @@
 // World-space triangles the CPU made this frame (seed 004: the lit pyramids' surfaces, or the
 // uncertain parts of sampling planes), pulled from a storage buffer (the draw's first vertex says where).
 #include "frame.glsl"
+#include "beam_tree_bindings.h"
 
 layout(std430, binding = LS_BINDING_BEAM_TRIANGLES) readonly buffer Triangles { vec4 points[]; };
 // The lit pyramids (drawn without a depth test): clipped by the sides of the view only. Their faces

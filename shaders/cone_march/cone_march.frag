@@ -9,6 +9,7 @@
 #include "camera.glsl"
 #include "light_volume.glsl"
 #include "math.glsl"
+#include "cone_march_bindings.h"
 layout(binding = LS_BINDING_DEPTH) uniform sampler2D depthBuffer;  // the engine's depth
 #if LS_SHADOW_MAP
 #if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW

@@ -2,7 +2,7 @@
 // the light's, or in a cube face's passes the face's.
 #ifndef LS_EPIPOLAR_CONSTANTS_GLSL
 #define LS_EPIPOLAR_CONSTANTS_GLSL
-#include "bindings.h"
+#include "epipolar_bindings.h"
 #include "frame.glsl"
 
 layout(std140, set = 0, binding = LS_BINDING_EPIPOLAR) uniform EpipolarConstants {

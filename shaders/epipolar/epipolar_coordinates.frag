@@ -5,6 +5,7 @@
 // Samples off the screen or on culled slices are discarded, so only valid ones reach the stencil.
 #include "epipolar_geometry.glsl"
 #include "camera.glsl"
+#include "epipolar_bindings.h"
 layout(binding = LS_BINDING_COORDINATES_END_POINTS) uniform sampler2D sliceEndPoints;
 layout(binding = LS_BINDING_COORDINATES_DEPTH) uniform sampler2D depthBuffer;  // the engine's depth
 layout(location = 0) out vec2 outCoordinate;

@@ -1,6 +1,6 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#include "bindings.h"
+#include "epipolar_bindings.h"
 // In-scattering (or shadowed fraction) of every valid sample, linearly interpolated between its two
 // ray-marching sources.
 layout(binding = LS_BINDING_INTERPOLATION_SOURCE) uniform usampler2D interpolationSource;

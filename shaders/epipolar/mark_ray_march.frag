@@ -1,6 +1,6 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#include "bindings.h"
+#include "epipolar_bindings.h"
 // Passes (and so increments the stencil of) the samples that are their own interpolation source:
 // the ray-marching samples.
 layout(binding = LS_BINDING_INTERPOLATION_SOURCE) uniform usampler2D interpolationSource;

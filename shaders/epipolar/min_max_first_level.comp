@@ -6,6 +6,7 @@
 #include "min_max_tree.glsl"
 #include "epipolar_constants.glsl"
 #include "frame.glsl"
+#include "epipolar_bindings.h"
 layout(local_size_x = 64) in;
 #if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
 layout(binding = LS_BINDING_TREE_SHADOW_MAP) uniform sampler2DArray shadowMap;  // a point light's cube: the face epipolar.cubeFace.x

@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 // A coarser tree level from the one below it, in the same texture (the levels' columns are
 // disjoint, so the pass reads one range and writes another).
-#include "bindings.h"
+#include "epipolar_bindings.h"
 #include "min_max_tree.glsl"
 layout(local_size_x = 64) in;
 layout(binding = LS_BINDING_TREE_LEVEL, rg16f) uniform image2D tree;

@@ -13,6 +13,7 @@
 #include "camera.glsl"
 #include "epipolar_constants.glsl"
 #include "min_max_tree.glsl"
+#include "epipolar_bindings.h"
 layout(binding = LS_BINDING_MARCH_COORDINATES) uniform sampler2D coordinates;
 layout(binding = LS_BINDING_MARCH_EPIPOLAR_Z) uniform sampler2D epipolarZ;
 layout(binding = LS_BINDING_MARCH_UV_FRAME) uniform sampler2D sliceUvFrame;

@@ -13,6 +13,7 @@
 // then reads its own value, so the edge is where the march puts it.
 #include "epipolar_constants.glsl"
 #include "frame.glsl"
+#include "epipolar_bindings.h"
 layout(binding = LS_BINDING_REFINE_MARCHED) uniform sampler2D marched;
 layout(binding = LS_BINDING_REFINE_LIN_SOURCES, rg16ui) uniform uimage2D interpolationSource;
 

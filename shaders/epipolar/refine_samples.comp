@@ -8,6 +8,7 @@
 // (below).
 #include "epipolar_constants.glsl"
 #include "frame.glsl"
+#include "epipolar_bindings.h"
 layout(local_size_x = 128) in;
 layout(binding = LS_BINDING_REFINE_EPIPOLAR_Z) uniform sampler2D epipolarZ;
 layout(binding = LS_BINDING_REFINE_SOURCES, rg16ui) uniform writeonly uimage2D interpolationSource;

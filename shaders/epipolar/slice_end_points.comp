@@ -4,6 +4,7 @@
 // exit points on the shrunk boundary, lines off screen culled, and lines shorter than one pixel per
 // sample stretched so that samples fall 1:1 on pixels (those past the screen are not valid).
 #include "epipolar_geometry.glsl"
+#include "epipolar_bindings.h"
 layout(local_size_x = 64) in;
 layout(binding = LS_BINDING_SLICE_END_POINTS_OUT, rgba32f) uniform writeonly image2D sliceEndPoints;
 

@@ -10,6 +10,7 @@
 // With LS_CUBE_SHADOW the map is one face of a point light's cube (shadowViewProj()).
 #include "epipolar_geometry.glsl"
 #include "camera.glsl"
+#include "epipolar_bindings.h"
 layout(local_size_x = 64) in;
 layout(binding = LS_BINDING_UV_FRAME_END_POINTS) uniform sampler2D sliceEndPoints;
 layout(binding = LS_BINDING_UV_FRAME_OUT, rgba32f) uniform writeonly image2D sliceUvFrame;

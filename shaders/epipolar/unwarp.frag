@@ -11,6 +11,7 @@
 // form) scales it back: the glow around a light, which no sparse sampling resolves, stays exact.
 #include "epipolar_geometry.glsl"
 #include "camera.glsl"
+#include "epipolar_bindings.h"
 layout(binding = LS_BINDING_UNWARP_END_POINTS) uniform sampler2D sliceEndPoints;
 layout(binding = LS_BINDING_UNWARP_EPIPOLAR_Z) uniform sampler2D epipolarZ;
 layout(binding = LS_BINDING_UNWARP_INSCATTER) uniform sampler2D inscatter;

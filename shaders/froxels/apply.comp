@@ -9,6 +9,7 @@
 // Beyond the far distance the grid's last froxel holds.
 #include "froxel_grid.glsl"
 #include "composite_into.glsl"
+#include "froxel_bindings.h"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = LS_BINDING_DEPTH) uniform sampler2D depthBuffer;  // the engine's depth
 layout(binding = LS_BINDING_FROXEL_INTEGRATED) uniform sampler3D integrated;

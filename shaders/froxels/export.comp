@@ -6,6 +6,7 @@
 // transmittance in a. Texel for texel: froxel k holds Lin and T from the camera to slice k's far
 // end.
 #include "froxel_grid.glsl"
+#include "froxel_bindings.h"
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 layout(binding = LS_BINDING_FROXEL_INTEGRATED, rgba16f) uniform readonly image3D integrated;
 layout(binding = LS_BINDING_FROXEL_VOLUME_OUT, rgba16f) uniform writeonly image3D volumeOut;

@@ -7,6 +7,7 @@
 // outside the columns it reaches); each later one adds within its own columns.
 #include "froxel_grid.glsl"
 #include "math.glsl"
+#include "froxel_bindings.h"
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 #if LS_SHADOW_MAP
 #if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW

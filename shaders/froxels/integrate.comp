@@ -8,6 +8,7 @@
 // three channels, as engines keep it. Slice 0 starts at the camera.
 #include "froxel_grid.glsl"
 #include "math.glsl"
+#include "froxel_bindings.h"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = LS_BINDING_FROXEL_SCATTERING, rgba32f) uniform readonly image3D scattering;
 layout(binding = LS_BINDING_FROXEL_INTEGRATED, rgba16f) uniform writeonly image3D integrated;

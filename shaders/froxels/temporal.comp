@@ -7,6 +7,7 @@
 // grid the integration reads and is the next frame's history.
 #define LS_FROXEL_TEMPORAL 1
 #include "froxel_grid.glsl"
+#include "froxel_bindings.h"
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 layout(binding = LS_BINDING_FROXEL_SCATTERING, rgba32f) uniform image3D scattering;
 // Read as storage (GENERAL), so that the plugin's images rest in SHADER_READ_ONLY_OPTIMAL between

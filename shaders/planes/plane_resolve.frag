@@ -6,6 +6,7 @@
 // reaches everywhere, and outside the shadow map's box nothing shadows it.
 #include "camera.glsl"
 #include "integrate.glsl"
+#include "planes_bindings.h"
 layout(binding = LS_BINDING_DEPTH) uniform sampler2D depthBuffer;  // the engine's depth
 layout(binding = LS_BINDING_PLANE_SUM) uniform sampler2D planeSum;  // linear, clamped
 

@@ -11,6 +11,7 @@
 #include "camera.glsl"
 #include "math.glsl"
 #include "plane_push.glsl"
+#include "planes_bindings.h"
 #if LS_SHADOW_MAP
 #if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
 layout(binding = LS_BINDING_SHADOW_MAP) uniform sampler2DArray shadowMap;  // six faces

@@ -47,16 +47,14 @@ template <typename F>
 void forEachSpec(F&& f) {
     for (LightType light : {LightType::Directional, LightType::Spot, LightType::Point})
         for (bool color : {false, true})
-            for (bool cube : {false, true})
-                for (bool trees : {false, true}) {
-                    if (cube && light != LightType::Point) continue;
-                    ScatterSpec spec;
-                    spec.light = light;
-                    spec.lightColor = color;
-                    spec.cubeShadow = cube;
-                    spec.minMaxTrees = trees;
-                    f(spec);
-                }
+            for (bool cube : {false, true}) {
+                if (cube && light != LightType::Point) continue;
+                ScatterSpec spec;
+                spec.light = light;
+                spec.lightColor = color;
+                spec.cubeShadow = cube;
+                f(spec);
+            }
 }
 
 constexpr VkFormat kColors[] = {VK_FORMAT_R16G16B16A16_SFLOAT, VK_FORMAT_R32G32B32A32_SFLOAT};
@@ -64,7 +62,8 @@ constexpr VkFormat kColors[] = {VK_FORMAT_R16G16B16A16_SFLOAT, VK_FORMAT_R32G32B
 TEST(ShaderVariants, EpipolarNodesAskForBuiltVariants) {
     Reached rayMarch, pixelMarch, unwarp, minMax, uvFrame;
     forEachSpec([&](const ScatterSpec& spec) {
-        for (bool count : {false, true}) reach(rayMarch, rayMarchShader(spec, count));
+        for (bool trees : {false, true})
+            for (bool count : {false, true}) reach(rayMarch, rayMarchShader(spec, trees, count));
         reach(pixelMarch, pixelMarchShader(spec));
         // An unshadowed light marched for its light color (no cube map: it has no shadow map).
         if (spec.lightColor && !spec.cubeShadow) reach(pixelMarch, pixelMarchShader(spec, false));
@@ -120,7 +119,7 @@ TEST(ShaderVariants, FroxelNodesAskForBuiltVariants) {
 
 TEST(ShaderVariants, CountingStepsIsAnotherBuild) {
     const ScatterSpec spec;
-    EXPECT_NE(rayMarchShader(spec, false).words, rayMarchShader(spec, true).words);
+    EXPECT_NE(rayMarchShader(spec, true, false).words, rayMarchShader(spec, true, true).words);
 }
 
 std::string pickError(const ls_spirv::ShaderVariants& shader,

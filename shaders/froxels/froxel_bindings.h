@@ -1,0 +1,16 @@
+// The froxel grid's own descriptor bindings and specialisation-constant id, written once for both
+// languages as shaders/shared/bindings.h's are: its shaders include it, passes/froxels/ includes
+// it as "shaders/froxels/froxel_bindings.h". Only #defines and comments.
+#ifndef LS_FROXEL_BINDINGS_H
+#define LS_FROXEL_BINDINGS_H
+
+#define LS_BINDING_FROXEL_SCATTERING 2   // inject.comp, integrate.comp: in-scattering per froxel
+#define LS_BINDING_FROXEL_INTEGRATED 3   // integrate.comp, apply.comp: Lin and T to each froxel
+#define LS_BINDING_FROXEL_HISTORY 4      // temporal.comp: the frame before's in-scattering grid
+#define LS_BINDING_FROXEL_HISTORY_OUT 5  // temporal.comp: this frame's, for the next
+#define LS_BINDING_FROXEL_VOLUME_OUT 12  // export.comp: the engine's 3D image (volumeOut)
+
+// From 10 up, past frame.glsl's.
+#define LS_SPEC_FROXEL_FIRST_LIGHT 10  // inject.comp
+
+#endif
