@@ -16,10 +16,17 @@ layout(binding = LS_BINDING_FROXEL_INTEGRATED) uniform sampler3D integrated;
 
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(p, imageSize(engineColor)))) return;
+    // The frame's extent, not the image's: under dynamic resolution the engine's images are larger
+    // than the frame, and what lies outside it is the engine's.
+    if (any(greaterThanEqual(p, ivec2(frame.screenSize.xy)))) return;
     float z = pixelCameraZ(depthBuffer, p);
     float u = clamp(sliceCoordinate(z), 0.0, pc.grid.z);
     vec2 xy = (vec2(p) + 0.5) / (pc.grid.xy * pc.grid.w);
+    // Under dynamic resolution the grid has columns and rows beyond the frame's: the frame's last
+    // half column reads its own last column alone, as the edge of a grid of the frame's size would
+    // (the clamp binds only then, so a grid of the frame's size reads what it always read).
+    const vec2 used = ceil(frame.screenSize.xy / pc.grid.w);
+    xy = mix(xy, min(xy, (used - 0.5) / pc.grid.xy), lessThan(used, pc.grid.xy));
     vec4 g = textureLod(integrated, vec3(xy, (max(u, 1.0) - 0.5) / pc.grid.z), 0.0);
     // The first slice starts at the camera (the integration's): linear in z from there.
     if (u < 1.0) g = mix(vec4(0.0, 0.0, 0.0, 1.0), g, clamp(z / sliceZ(1.0), 0.0, 1.0));

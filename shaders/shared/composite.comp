@@ -14,7 +14,9 @@ layout(binding = LS_BINDING_COMPOSITE_LIN) uniform sampler2D inscatter;
 
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(p, imageSize(engineColor)))) return;
+    // The frame's extent, not the image's: under dynamic resolution the engine's images are larger
+    // than the frame, and what lies outside it is the engine's.
+    if (any(greaterThanEqual(p, ivec2(frame.screenSize.xy)))) return;
 #if LS_WITH_LIN
     vec3 lin = loadedLin(texelFetch(inscatter, p, 0).rgb);
 #else

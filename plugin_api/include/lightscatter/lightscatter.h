@@ -645,8 +645,13 @@ struct PluginCreateInfo {
     // its graphs for this size, and each frame's engine images (depth, color, inscatterOut) may be
     // any size within it, changing every frame without building anything; a frame larger than it
     // is refused (InvalidInput naming depth.extent). The textures are this size's whatever the
-    // frame's. Without it, a frame of a new size builds (once) a graph for that size, while the
-    // old size's graph stays kept for when the size comes back.
+    // frame's. The engine's images may be larger than the frame (ImageInput::extent is the frame's,
+    // its top-left rectangle): no pass reads or writes them outside it. A frame within the maximum
+    // renders what a plugin without one renders at its size, bit for bit, but for froxels: their
+    // grid has the maximum's columns (froxelVolume()), sampled at coordinates that differ from a
+    // grid of the frame's size in their last bits, and so does the image (about 1e-7 relative).
+    // Without it, a frame of a new size builds (once) a graph for that size, while the old size's
+    // graph stays kept for when the size comes back.
     VkExtent2D maxRenderSize{0, 0};
 };
 
