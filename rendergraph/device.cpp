@@ -391,6 +391,7 @@ void Device::createDevice(const DeviceOptions& options) {
     features.features.samplerAnisotropy = supported.samplerAnisotropy;
     features.features.depthClamp = supported.depthClamp;
     features.features.fillModeNonSolid = supported.fillModeNonSolid;
+    features.features.dualSrcBlend = supported.dualSrcBlend;
 
     const float priority = 1.0f;
     VkDeviceQueueCreateInfo queue{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};

@@ -225,6 +225,14 @@ Pipeline Pipeline::makeGraphics(const Device& device, const std::string& name,
             b.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
             b.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
             b.colorBlendOp = b.alphaBlendOp = VK_BLEND_OP_ADD;
+        } else if (d.blend == BlendMode::Multiply || d.blend == BlendMode::DualSourceMultiplyAdd) {
+            const bool dual = d.blend == BlendMode::DualSourceMultiplyAdd;
+            b.blendEnable = VK_TRUE;
+            b.srcColorBlendFactor = dual ? VK_BLEND_FACTOR_ONE : VK_BLEND_FACTOR_ZERO;
+            b.dstColorBlendFactor = dual ? VK_BLEND_FACTOR_SRC1_COLOR : VK_BLEND_FACTOR_SRC_COLOR;
+            b.srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
+            b.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+            b.colorBlendOp = b.alphaBlendOp = VK_BLEND_OP_ADD;
         }
     }
     VkPipelineColorBlendStateCreateInfo blend{

@@ -42,7 +42,9 @@ struct Specialization {
     Specialization& set(uint32_t id, float v);
 };
 
-enum class BlendMode : uint8_t { None, Additive, Alpha };
+// Multiply: dst.rgb * src.rgb. DualSourceMultiplyAdd: src0.rgb + dst.rgb * src1.rgb (the
+// fragment's second output at index 1; needs the device's dualSrcBlend). Both keep dst.a.
+enum class BlendMode : uint8_t { None, Additive, Alpha, Multiply, DualSourceMultiplyAdd };
 
 struct GraphicsPipelineDesc {
     ShaderCode vertex;

@@ -80,12 +80,9 @@ EpipolarOutputs addEpipolarNodes(rg::RenderGraph& g, const EpipolarInputs& in,
         g, {chain, epipolar, in.light, endPoints, samples.epipolarZ, interpolated, in.target},
         {options.fixup});
     if (!options.fixup) return {screen.composited, counts};
-    return {
-        addFixup(g, {chain,
-                     in.light,
-                     screen.cameraStencil,
-                     {screen.composited.color, screen.composited.inscatterOut, in.target.addOnly}}),
-        counts};
+    return {addFixup(g, {chain, in.light, screen.cameraStencil,
+                         targetAfter(screen.composited, in.target.addOnly)}),
+            counts};
 }
 
 }  // namespace ls

@@ -3,6 +3,7 @@
 #include <vulkan/vulkan.h>
 
 #include "rendergraph/pipeline.h"
+#include "shared/composite_variant.h"
 #include "shared/shared_state.h"
 
 namespace ls {
@@ -10,7 +11,7 @@ namespace ls {
 // trees: the min/max trees are read; countSteps: the step-count buffer's build.
 rg::ShaderCode rayMarchShader(const ScatterSpec& spec, bool trees, bool countSteps);
 // table: the point-light table is read (any light but a directional one).
-rg::ShaderCode unwarpShader(bool table, VkFormat color, bool withOutput);
+rg::ShaderCode unwarpShader(bool table, const CompositeVariant& target);
 rg::ShaderCode minMaxFirstLevelShader(bool cubeShadow);
 rg::ShaderCode sliceUvFrameShader(bool cubeShadow);
 

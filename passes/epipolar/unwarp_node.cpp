@@ -18,9 +18,8 @@ struct UnwarpPush {
 
 }  // namespace
 
-rg::ShaderCode unwarpShader(bool table, VkFormat color, bool withOutput) {
-    return pickCompositeShader(ls_spirv::unwarp_frag_variants, {{"LS_NEEDS_TABLE", table}}, color,
-                               withOutput);
+rg::ShaderCode unwarpShader(bool table, const CompositeVariant& target) {
+    return pickCompositeShader(ls_spirv::unwarp_frag_variants, {{"LS_NEEDS_TABLE", table}}, target);
 }
 
 // One draw: the bilateral unwarp composites every pixel it can serve into the engine's color; with
@@ -50,9 +49,8 @@ UnwarpOutputs addUnwarp(rg::RenderGraph& g, const UnwarpInputs& in, const Unwarp
     const bool addOnly = in.target.addOnly;
     pass.execute([shared = in.chain.shared, spec = in.chain.spec, light = in.light, table, written,
                   markForFixup, addOnly](rg::PassContext& ctx) {
-        auto desc = fullscreenPipeline(unwarpShader(light.table.valid(), ctx.format(written.color),
-                                                    written.inscatterOut.valid()),
-                                       ctx, table.layout());
+        auto desc = fullscreenPipeline(
+            unwarpShader(light.table.valid(), compositeVariant(ctx, written)), ctx, table.layout());
         desc.pushConstantBytes = 8;
         desc.specialization = spec.constants();
         if (markForFixup) {

@@ -75,8 +75,8 @@ rg::ShaderCode froxelInjectShader(bool shadowMap, bool lightColor, bool cube) {
                        {"LS_LIGHT_COLOR", lightColor && !(shadowMap && cube)}});
 }
 
-rg::ShaderCode froxelApplyShader(VkFormat color, bool withOutput) {
-    return pickCompositeShader(ls_spirv::apply_comp_variants, {}, color, withOutput);
+rg::ShaderCode froxelApplyShader(const CompositeVariant& target) {
+    return pickCompositeShader(ls_spirv::apply_comp_variants, {}, target);
 }
 
 glm::vec3 froxelJitter(uint32_t index) {
@@ -237,8 +237,7 @@ CompositeOutputs addFroxelApply(rg::RenderGraph& graph, const FroxelApplyInputs&
         [frame = in.chain, lights = in.lights, table, grid, written](rg::PassContext& ctx) {
             const FroxelPush push =
                 froxelPush(ctx.data(frame.values).constants, grid, gridStorage(ctx, lights));
-            const rg::ShaderCode shader =
-                froxelApplyShader(ctx.format(written.color), written.inscatterOut.valid());
+            const rg::ShaderCode shader = froxelApplyShader(compositeVariant(ctx, written));
             const auto& p = frame.shared->pipelines.compute("froxel apply", shader, table.layout(),
                                                             sizeof(FroxelPush), {});
             p.bind(ctx.cmd());

@@ -3,12 +3,13 @@
 #include <vulkan/vulkan.h>
 
 #include "rendergraph/pipeline.h"
+#include "shared/composite_variant.h"
 
 namespace ls {
 
 // A light's injection: its shadow map (a point light's cube) and light color, where it has them.
 rg::ShaderCode froxelInjectShader(bool shadowMap, bool lightColor, bool cube);
 // The apply pass, compositing into an engine color of `color`'s format, and into the Lin output.
-rg::ShaderCode froxelApplyShader(VkFormat color, bool withOutput);
+rg::ShaderCode froxelApplyShader(const CompositeVariant& target);
 
 }  // namespace ls

@@ -118,8 +118,12 @@ ChainOutputs FroxelsMethod::addChain(rg::RenderGraph& g, ChainLights lights,
     if (first.volumeOut.valid())
         g.markOutput(addFroxelExport(g, {chain, integrated, values, first.volumeOut}, grid));
     out.composited = true;
-    out.target = addFroxelApply(
-        g, {chain, integrated, values, {target.color, target.inscatterOut, false}}, grid);
+    out.target = addFroxelApply(g,
+                                {chain,
+                                 integrated,
+                                 values,
+                                 {target.color, target.inscatterOut, false, target.transmittance}},
+                                grid);
     return out;
 }
 

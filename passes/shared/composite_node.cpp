@@ -7,10 +7,10 @@
 
 namespace ls {
 
-rg::ShaderCode compositeShader(bool addOnly, bool withLin, VkFormat color, bool withOutput) {
+rg::ShaderCode compositeShader(bool addOnly, bool withLin, const CompositeVariant& target) {
     return pickCompositeShader(ls_spirv::composite_comp_variants,
                                {{"LS_WITH_LIN", withLin || addOnly}, {"LS_ADD_ONLY", addOnly}},
-                               color, withOutput);
+                               target);
 }
 
 namespace {
@@ -27,8 +27,8 @@ CompositeOutputs addCompositePass(rg::RenderGraph& graph, const ChainContext& ch
     const bool addOnly = target.addOnly, withLin = lin.valid();
     pass.execute(
         [shared = chain.shared, table, written, addOnly, withLin, name](rg::PassContext& ctx) {
-            const rg::ShaderCode shader = compositeShader(
-                addOnly, withLin, ctx.format(written.color), written.inscatterOut.valid());
+            const rg::ShaderCode shader =
+                compositeShader(addOnly, withLin, compositeVariant(ctx, written));
             const auto& p = shared->pipelines.compute(name, shader, table.layout(), 0, {});
             p.bind(ctx.cmd());
             table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
@@ -41,13 +41,13 @@ CompositeOutputs addCompositePass(rg::RenderGraph& graph, const ChainContext& ch
 }  // namespace
 
 CompositeOutputs addComposite(rg::RenderGraph& graph, const CompositeInputs& in) {
-    return addCompositePass(graph, in.chain, "composite", {in.color, in.inscatterOut, false},
-                            in.lin);
+    return addCompositePass(graph, in.chain, "composite",
+                            {in.color, in.inscatterOut, false, in.transmittance}, in.lin);
 }
 
 CompositeOutputs addInscatter(rg::RenderGraph& graph, const CompositeInputs& in) {
-    return addCompositePass(graph, in.chain, "add in-scattering", {in.color, in.inscatterOut, true},
-                            in.lin);
+    return addCompositePass(graph, in.chain, "add in-scattering",
+                            {in.color, in.inscatterOut, true, in.transmittance}, in.lin);
 }
 
 }  // namespace ls

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "composite_variant.h"
 #include "rendergraph/binding_table.h"
 #include "rendergraph/pass_context.h"
 #include "rendergraph/pipeline.h"
@@ -14,14 +15,28 @@
 
 namespace ls {
 
+// Split: the engine's color is no storage image the passes can read-modify-write, or the frame
+// asks for its transmittance (FrameDescription::transmittanceOut). The passes then composite into
+// two images of the plugin's, `color` holding k Lin and `transmittance` T, and a last pass blends
+// them into the engine's color (addSplitComposite).
 struct CompositeTarget {
-    rg::ImageRef color;         // the engine's color: RGBA16F or RGBA32F, storage
+    rg::ImageRef color;         // the engine's color (RGBA16F or RGBA32F, storage) or the split Lin
     rg::ImageRef inscatterOut;  // RGBA32F; invalid: none
     bool addOnly = false;       // a frame's later light: add Lin, the first applied the extinction
+    rg::ImageRef transmittance;  // the split's transmittance; invalid: not split
 };
 
 // The pass's rows for the target's read-modify-written images (LS_BINDING_ENGINE_COLOR and, when
-// there is one, LS_BINDING_LIN_OUT); returns their new versions.
+// there are, LS_BINDING_LIN_OUT and LS_BINDING_COMPOSITE_T); returns their new versions.
 CompositeOutputs addCompositeTarget(rg::BindingTable& table, const CompositeTarget& target);
+
+// The target of a later pass that composites into what an earlier one `written` (epipolar's
+// fix-up after its unwarp), as the same light.
+inline CompositeTarget targetAfter(const CompositeOutputs& written, bool addOnly) {
+    return {written.color, written.inscatterOut, addOnly, written.transmittance};
+}
+
+// The shader variant that writes what the pass declared.
+CompositeVariant compositeVariant(const rg::PassContext& ctx, const CompositeOutputs& written);
 
 }  // namespace ls

@@ -36,17 +36,18 @@ rg::ShaderCode pixelMarchShader(const ScatterSpec& spec, bool shadowMap) {
                        {"LS_NO_SHADOW_MAP", !shadowMap},
                        {"LS_COMPOSITE", 0},
                        {"LS_COLOR_RGBA32F", 0},
-                       {"LS_WITH_OUTPUT", 0}});
+                       {"LS_WITH_OUTPUT", 0},
+                       {"LS_SPLIT", 0}});
 }
 
-rg::ShaderCode fixupShader(const ScatterSpec& spec, VkFormat color, bool withOutput) {
+rg::ShaderCode fixupShader(const ScatterSpec& spec, const CompositeVariant& target) {
     return pickCompositeShader(ls_spirv::pixel_march_frag_variants,
                                {{"LS_NEEDS_TABLE", spec.light != LightType::Directional},
                                 {"LS_LIGHT_COLOR", spec.lightColor && !spec.cubeShadow},
                                 {"LS_CUBE_SHADOW", spec.cubeShadow},
                                 {"LS_NO_SHADOW_MAP", 0},
                                 {"LS_COMPOSITE", 1}},
-                               color, withOutput);
+                               target);
 }
 
 rg::BindingTable declarePixelMarch(rg::PassBuilder& pass, const ChainContext& chain,
@@ -64,8 +65,7 @@ void drawPixelMarch(rg::PassContext& ctx, const Shared& shared, const ScatterSpe
     ScatterSpec spec = lightSpec;
     spec.lightColor = table.has(LS_BINDING_LIGHT_COLOR);
     auto desc = fullscreenPipeline(draw.composite
-                                       ? fixupShader(spec, ctx.format(draw.composite->color),
-                                                     draw.composite->inscatterOut.valid())
+                                       ? fixupShader(spec, compositeVariant(ctx, *draw.composite))
                                        : pixelMarchShader(spec, table.has(LS_BINDING_SHADOW_MAP)),
                                    ctx, table.layout());
     desc.pushConstantBytes = draw.composite ? sizeof(FixupPush) : sizeof(PixelMarchPush);

@@ -7,6 +7,7 @@
 #include <initializer_list>
 #include <vector>
 
+#include "composite_variant.h"
 #include "rendergraph/pipeline.h"
 #include "spirv_variants.h"
 
@@ -21,14 +22,14 @@ inline rg::ShaderCode pickShader(const ls_spirv::ShaderVariants& shader,
     return spirvOf(shader.pick(defines));
 }
 
-// A shader that composites into the engine's color (shaders/shared/composite_into.glsl): its own
-// defines, then the color's format and whether the Lin output image is written.
+// A shader that composites: its own defines, then its target's.
 inline rg::ShaderCode pickCompositeShader(const ls_spirv::ShaderVariants& shader,
                                           std::initializer_list<ls_spirv::Define> own,
-                                          VkFormat color, bool withOutput) {
+                                          const CompositeVariant& target) {
     std::vector<ls_spirv::Define> defines(own);
-    defines.push_back({"LS_COLOR_RGBA32F", color == VK_FORMAT_R32G32B32A32_SFLOAT});
-    defines.push_back({"LS_WITH_OUTPUT", withOutput});
+    defines.push_back({"LS_COLOR_RGBA32F", target.color == VK_FORMAT_R32G32B32A32_SFLOAT});
+    defines.push_back({"LS_WITH_OUTPUT", target.output});
+    defines.push_back({"LS_SPLIT", target.split});
     return spirvOf(shader.pick(defines));
 }
 

@@ -1,5 +1,8 @@
 #include "frame_graph.h"
 
+#include "color_target.h"
+#include "rendergraph/format_info.h"
+
 #include <algorithm>
 
 #include "shared/clear_counters_node.h"
@@ -96,10 +99,14 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
     };
 
     fg.depth = g.importImage("engine depth", importDescription(c.depth), c.dynamicScreen);
-    fg.color = g.importImage("engine color", importDescription(c.color), c.dynamicScreen);
+    if (c.color.given())
+        fg.color = g.importImage("engine color", importDescription(c.color), c.dynamicScreen);
     if (c.inscatterOut.given())
         fg.inscatterOut = g.importImage("in-scattering output", importDescription(c.inscatterOut),
                                         c.dynamicScreen);
+    if (c.transmittanceOut.given())
+        fg.transmittanceOut = g.importImage("transmittance output",
+                                            importDescription(c.transmittanceOut), c.dynamicScreen);
     // A light's shadow map and color are imported whenever given, so that they are left in the
     // layouts the engine asked for even where no node reads them.
     fg.lights.resize(c.lights.size());
@@ -118,7 +125,7 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
                 g.importImage("light color" + which(i), importDescription(l.lightColor));
         anyTouches = anyTouches || l.touchesView;
     }
-    if (!anyTouches && !c.extinction && !fg.inscatterOut.valid()) {
+    if (!anyTouches && !c.extinction && !fg.inscatterOut.valid() && !fg.transmittanceOut.valid()) {
         fg.summary = "no light scatters and nothing absorbs: no pass at all";
         return fg;
     }
@@ -133,7 +140,14 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
     frame.depthStencil = c.depthStencil;
     frame.coordinateFormat = c.coordinates;
 
-    rg::ImageRef color = fg.color, linOut = fg.inscatterOut;
+    // The composite's target: the engine's color, or the split's two textures (color_target.h).
+    rg::ImageRef color = fg.color, linOut = fg.inscatterOut, transmittance;
+    const bool split = splitComposite(c.color.format, c.color.usage, c.transmittanceOut.format);
+    if (split) {
+        const VkFormat f = splitFormat(c.color.format, c.transmittanceOut.format);
+        color = g.createImage("split composite in-scattering", rg::ImageDesc::screen(f));
+        transmittance = g.createImage("split composite transmittance", rg::ImageDesc::screen(f));
+    }
     rg::ImageRef noise;  // the noise as the chains read it (made first, when it is the plugin's)
     rg::BufferRef counts;
     size_t chains = 0;
@@ -180,7 +194,7 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
             continue;
         }
         // The first chain's composite applies the extinction; the others add their Lin.
-        const ls::CompositeTarget target{color, linOut, chains != 0};
+        const ls::CompositeTarget target{color, linOut, chains != 0, transmittance};
         const ls::ChainLight light{in, l.chain};
         const ls::ChainOutputs o = l.method->addChain(g, {&light, 1}, target);
         if (o.stepCounts.valid()) counts = o.stepCounts;
@@ -190,11 +204,12 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
             composite.spec = l.chain.spec;
             composite.values = in.values;
             composite.constants = in.constants;
-            written = chains == 0 ? ls::addComposite(g, {composite, color, o.lin, linOut})
-                                  : ls::addInscatter(g, {composite, color, o.lin, linOut});
+            const ls::CompositeInputs into{composite, color, o.lin, linOut, transmittance};
+            written = chains == 0 ? ls::addComposite(g, into) : ls::addInscatter(g, into);
         }
         color = written.color;
         linOut = written.inscatterOut;
+        transmittance = written.transmittance;
         ++chains;
     }
     g.setNameSuffix({});
@@ -205,14 +220,39 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
         }
         // A one-per-frame method takes every light (the method choice mixes it with no other).
         const ls::ChainOutputs o =
-            c.lights[0].method->addChain(g, onePerFrame, {color, linOut, false});
+            c.lights[0].method->addChain(g, onePerFrame, {color, linOut, false, transmittance});
         color = o.target.color;
         linOut = o.target.inscatterOut;
+        transmittance = o.target.transmittance;
         chains = onePerFrame.size();
     }
-    if (chains == 0) ls::addComposite(g, {frame, color, {}, linOut});  // extinction only
+    if (chains == 0) {  // extinction only
+        const ls::CompositeOutputs o =
+            ls::addComposite(g, {frame, color, {}, linOut, transmittance});
+        color = o.color;
+        transmittance = o.transmittance;
+    }
+    if (split) {
+        if (fg.color.valid())
+            ls::addSplitComposite(g, {.chain = frame,
+                                      .lin = color,
+                                      .transmittance = transmittance,
+                                      .color = fg.color,
+                                      .storage = storageColor(c.color.format, c.color.usage),
+                                      .dualSource = c.dualSourceBlend});
+        if (fg.transmittanceOut.valid())
+            ls::addTransmittanceExport(g, {frame, transmittance, fg.transmittanceOut});
+    }
     if (counts.valid()) g.markOutput(counts);
     fg.summary = frameSummary(c, chains);
+    if (split)
+        fg.summary += !c.color.given() ? "; no color: Lin and the transmittance out"
+                      : storageColor(c.color.format, c.color.usage)
+                          ? "; composited through two textures, for the transmittance output"
+                          : "; composited through two textures, blended into the " +
+                                rg::formatName(c.color.format) + " color" +
+                                (c.dualSourceBlend ? " in one dual-source draw"
+                                                   : " in two draws (no dualSrcBlend)");
     return fg;
 }
 

@@ -48,8 +48,12 @@ struct GraphConfig {
     bool dynamicScreen = false;
     VkFormat depthStencil = VK_FORMAT_UNDEFINED;
     VkFormat coordinates =
-        VK_FORMAT_R32G32_SFLOAT;  // epipolar's coordinate texture (coordinateFormat)
-    ImportState depth, color, inscatterOut;
+        VK_FORMAT_R32G32_SFLOAT;             // epipolar's coordinate texture (coordinateFormat)
+    ImportState depth, color, inscatterOut;  // color: absent where the engine composites itself
+    ImportState transmittanceOut;
+    // The device was created with dualSrcBlend: a split composite blends into an attachment color
+    // in one draw (passes/shared/shared_nodes.h, addSplitComposite).
+    bool dualSourceBlend = false;
     ImportState noise;       // the engine's noise, where a chain samples it
     bool ownNoise = false;   // a chain samples the plugin's own tiling noise instead
     bool extinction = true;  // betaT > 0 in some channel: the composite has work
@@ -68,7 +72,7 @@ struct GraphConfig {
 
 struct FrameGraph {
     std::unique_ptr<rg::RenderGraph> graph;
-    rg::ImageRef depth, color, inscatterOut, noise;
+    rg::ImageRef depth, color, inscatterOut, transmittanceOut, noise;
     struct LightImages {
         rg::ImageRef shadowMap, lightColor;
         rg::HostDataRef<ls::LightFrame> values;  // the light's values, given to each record()

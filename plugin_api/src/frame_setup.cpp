@@ -6,6 +6,7 @@
 #include <string>
 
 #include "camera_checks.h"
+#include "color_target.h"
 #include "field_checks.h"
 #include "image_checks.h"
 #include "light_checks.h"
@@ -61,32 +62,11 @@ ls::LightSetup setupFramePart(const FrameDescription& f, bool withImages) {
     if (withImages) {
         checkImage(f.depth, "depth", VK_IMAGE_USAGE_SAMPLED_BIT);
         checkDepthFormat(f.depth.format, "depth");
-        checkImage(f.color, "color", VK_IMAGE_USAGE_STORAGE_BIT);
-        if (f.color.format != VK_FORMAT_R16G16B16A16_SFLOAT &&
-            f.color.format != VK_FORMAT_R32G32B32A32_SFLOAT)
-            fail("color.format " + rg::formatName(f.color.format) +
-                 ": must be R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT (linear HDR)");
-        if (f.color.extent.width != f.depth.extent.width ||
-            f.color.extent.height != f.depth.extent.height)
-            fail("color.extent " + std::to_string(f.color.extent.width) + "x" +
-                 std::to_string(f.color.extent.height) + " differs from depth.extent " +
-                 std::to_string(f.depth.extent.width) + "x" +
-                 std::to_string(f.depth.extent.height));
         s.screen = f.depth.extent;
         oneLayer(&f.depth, "depth");
-        oneLayer(&f.color, "color");
+        checkColorTargets(f, s.screen);
         oneLayer(f.noise ? &*f.noise : nullptr, "noise");
-        oneLayer(f.inscatterOut ? &*f.inscatterOut : nullptr, "inscatterOut");
         if (f.noise) checkImage(*f.noise, "noise", VK_IMAGE_USAGE_SAMPLED_BIT);
-        if (f.inscatterOut) {
-            checkImage(*f.inscatterOut, "inscatterOut", VK_IMAGE_USAGE_STORAGE_BIT, false);
-            if (f.inscatterOut->format != VK_FORMAT_R32G32B32A32_SFLOAT)
-                fail("inscatterOut.format " + rg::formatName(f.inscatterOut->format) +
-                     ": must be R32G32B32A32_SFLOAT");
-            if (f.inscatterOut->extent.width != s.screen.width ||
-                f.inscatterOut->extent.height != s.screen.height)
-                fail("inscatterOut.extent differs from depth.extent");
-        }
         if (f.volumeOut) {
             // Its extent is the froxel grid's, checked once the frame's method is known
             // (checkVolumeOut).

@@ -7,8 +7,9 @@ namespace lightscatter::detail {
 FrameImports frameImports(const FrameDescription& frame, const ValidatedFrame& v) {
     FrameImports f;
     f.depth = importState(frame.depth);
-    f.color = importState(frame.color);
+    if (frame.color.format != VK_FORMAT_UNDEFINED) f.color = importState(frame.color);
     if (frame.inscatterOut) f.inscatterOut = importState(*frame.inscatterOut);
+    if (frame.transmittanceOut) f.transmittanceOut = importState(*frame.transmittanceOut);
     if (frame.noise) f.noise = importState(*frame.noise);
     if (frame.volumeOut) f.volumeOut = importState(*frame.volumeOut);
     for (const EdgeLight& e : v.given) {
@@ -32,11 +33,13 @@ GraphConfig graphConfig(const ValidatedFrame& frame,
     c.depth = images.depth;
     c.color = images.color;
     c.inscatterOut = images.inscatterOut;
+    c.transmittanceOut = images.transmittanceOut;
+    c.dualSourceBlend = options.dualSourceBlend;
     if (options.maxScreen.width != 0) {
         // Dynamic resolution: the graph is the maximum's, whatever this frame's size.
         c.screen = options.maxScreen;
         c.dynamicScreen = true;
-        for (ImportState* s : {&c.depth, &c.color, &c.inscatterOut})
+        for (ImportState* s : {&c.depth, &c.color, &c.inscatterOut, &c.transmittanceOut})
             if (s->given()) s->extent = options.maxScreen;
     }
     c.extinction = glm::any(glm::greaterThan(first.medium.betaT(), glm::vec3(0.0f)));

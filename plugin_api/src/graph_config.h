@@ -11,7 +11,7 @@ namespace lightscatter::detail {
 // What of the engine's images decides the graph: the frame's, and each light's (absent: format
 // UNDEFINED).
 struct FrameImports {
-    ImportState depth, color, inscatterOut, noise, volumeOut;
+    ImportState depth, color, inscatterOut, transmittanceOut, noise, volumeOut;
     std::vector<ImportState> shadowMaps, lightColors;  // one per light
 };
 // Its lights' in `v`'s order.
@@ -25,6 +25,7 @@ struct GraphOptions {
     // PluginCreateInfo::maxRenderSize (zero: none): the graph is built for it, and a frame's screen
     // may be any size within it.
     VkExtent2D maxScreen{0, 0};
+    bool dualSourceBlend = false;  // the device was created with dualSrcBlend
 };
 
 // `methods`: each light's; `data`: each light's method state after prepare() (empty for the

@@ -8,6 +8,7 @@
 #include <string>
 
 #include <lightscatter/lightscatter.h>
+#include "color_target.h"
 #include "device_shared.h"
 #include "frame_reports.h"
 #include "frame_setup.h"
@@ -51,6 +52,8 @@ struct Plugin::Impl {
           steps(device) {
         depthStencil = detail::stencilFormat(caps);
         coordinates = detail::coordinateFormat(caps);
+        // Checked by device(): the chain starts with a VkPhysicalDeviceFeatures2.
+        dualSourceBlend = info.context.enabledFeatures->features.dualSrcBlend == VK_TRUE;
         if (depthStencil == VK_FORMAT_UNDEFINED)
             throw std::runtime_error(
                 "lightscatter: the device has no depth-stencil format with stencil");
@@ -70,6 +73,7 @@ struct Plugin::Impl {
     };
     Chosen choose(const FrameDescription& frame) const {
         Chosen c{detail::validateFrame(frame)};
+        detail::checkColorBlend(frame, caps);
         c.choices = detail::chooseLightMethods(frame.method, c.frame, frame);
         if (frame.volumeOut) {
             const VkExtent2D screen =
@@ -164,6 +168,7 @@ struct Plugin::Impl {
         options.poisonTransients = frame.debug.poisonTransients || poisonFromEnvironment();
         options.countSteps = frame.debug.countSteps;
         options.maxScreen = maxRenderSize;
+        options.dualSourceBlend = dualSourceBlend;
         const GraphConfig c = detail::graphConfig(v, methods, detail::frameImports(frame, v),
                                                   options, data, previous);
         p.graph = &graphs.graphFor(c, lastFrame, p.graphCompiled);
@@ -197,9 +202,11 @@ struct Plugin::Impl {
     static void importImages(const Prepared& p, const FrameGraph& fg, const FrameDescription& f) {
         rg::RenderGraph& g = *fg.graph;
         g.updateImport(fg.depth, detail::importDescription(f.depth));
-        g.updateImport(fg.color, detail::importDescription(f.color));
+        if (fg.color.valid()) g.updateImport(fg.color, detail::importDescription(f.color));
         if (fg.inscatterOut.valid())
             g.updateImport(fg.inscatterOut, detail::importDescription(*f.inscatterOut));
+        if (fg.transmittanceOut.valid())
+            g.updateImport(fg.transmittanceOut, detail::importDescription(*f.transmittanceOut));
         if (fg.volumeOut.valid())
             g.updateImport(fg.volumeOut, detail::importDescription(*f.volumeOut));
         if (fg.noise.valid()) g.updateImport(fg.noise, detail::importDescription(*f.noise));
@@ -280,6 +287,7 @@ struct Plugin::Impl {
     uint32_t framesInFlight = 2;
     VkExtent2D maxRenderSize{0, 0};
     VkFormat depthStencil = VK_FORMAT_UNDEFINED;
+    bool dualSourceBlend = false;  // a split composite blends in one draw
     VkFormat coordinates = VK_FORMAT_R32G32_SFLOAT;
     // Declared before what retires into it, so that it is destroyed after them.
     rg::RetireList retired;

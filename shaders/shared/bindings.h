@@ -20,10 +20,16 @@
 #define LS_BINDING_NOISE 9          // the planes' tiling noise (repeating)
 #define LS_BINDING_ENGINE_COLOR 10  // composite_into.glsl: the engine's color, read-modify-written
 #define LS_BINDING_LIN_OUT 11       // composite_into.glsl: the Lin output image
+#define LS_BINDING_COMPOSITE_T 13   // composite_into.glsl (LS_SPLIT): the transmittance image
 // Bindings of one shader each.
 #define LS_BINDING_POINT_TABLE_OUT 1  // point_table.comp
 #define LS_BINDING_COMPOSITE_LIN 3    // composite.comp: Lin as a method left it
 #define LS_BINDING_NOISE_OUT 0        // tiling_noise.comp
+// composite_blend.frag, composite_apply.comp and transmittance_export.comp: the split composite's
+// images (composite_into.glsl's LS_SPLIT), and the engine's color or transmittance output.
+#define LS_BINDING_SPLIT_LIN 1
+#define LS_BINDING_SPLIT_T 2
+#define LS_BINDING_SPLIT_TARGET 3
 
 // The light types' and Mie phases' values (LIGHTSCATTER_LIGHT_*, LIGHTSCATTER_MIE_*) are the
 // vocabulary's, which C++ names lightscatter::LightType and lightscatter::MiePhase.

@@ -1,9 +1,15 @@
 // The composite, done where Lin is made: color = color * exp(-betaT S) + k Lin in the engine's
 // image (k the engine's pre-exposure, 1 by default), and Lin alone, unexposed, into the output
-// image when the frame asked for one. A frame's later lights
-// (addOnly) add their Lin to both: the first light's composite applied the extinction. Each
-// invocation touches its own pixel only. The engine color's format and the output image are
-// build-time variants (LS_COLOR_RGBA32F, LS_WITH_OUTPUT): a storage image read needs its format.
+// image when the frame asked for one. A frame's later lights (addOnly) add their Lin to both: the
+// first light's composite applied the extinction. Each invocation touches its own pixel only. The
+// color's format and the output image are build-time variants (LS_COLOR_RGBA32F, LS_WITH_OUTPUT):
+// a storage image read needs its format.
+// LS_SPLIT: the engine's color is not a storage image this shader can write (an attachment-only,
+// sRGB, packed or 8-bit target), or the frame asked for the transmittance: the composite goes
+// into two images of the plugin's instead, k Lin (LS_BINDING_ENGINE_COLOR) and the transmittance
+// (LS_BINDING_COMPOSITE_T), which the first light writes and later lights add to, and a last pass
+// blends them into the engine's color (composite_blend.frag, composite_apply.comp):
+// color * T + k Lin, the same sum.
 #ifndef LS_COMPOSITE_INTO_GLSL
 #define LS_COMPOSITE_INTO_GLSL
 #include "frame.glsl"
@@ -16,13 +22,30 @@ layout(binding = LS_BINDING_ENGINE_COLOR, rgba16f) uniform image2D engineColor;
 #if LS_WITH_OUTPUT
 layout(binding = LS_BINDING_LIN_OUT, rgba32f) uniform image2D inscatterOut;
 #endif
+#if defined(LS_SPLIT) && LS_SPLIT
+#if LS_COLOR_RGBA32F
+layout(binding = LS_BINDING_COMPOSITE_T, rgba32f) uniform writeonly image2D compositeT;
+#else
+layout(binding = LS_BINDING_COMPOSITE_T, rgba16f) uniform writeonly image2D compositeT;
+#endif
+#endif
 
 // With the transmittance given: color = color * transmittance + k Lin (froxels' grid holds it).
 void compositeWith(ivec2 p, vec3 lin, vec3 transmittance, bool addOnly) {
-    vec4 c = imageLoad(engineColor, p);
     const vec3 exposed = lin * frame.linStorage.z;
+#if defined(LS_SPLIT) && LS_SPLIT
+    // The first light writes every pixel of the frame: nothing earlier is read.
+    if (addOnly) {
+        imageStore(engineColor, p, vec4(imageLoad(engineColor, p).rgb + exposed, 1.0));
+    } else {
+        imageStore(engineColor, p, vec4(exposed, 1.0));
+        imageStore(compositeT, p, vec4(transmittance, 1.0));
+    }
+#else
+    vec4 c = imageLoad(engineColor, p);
     c.rgb = addOnly ? c.rgb + exposed : c.rgb * transmittance + exposed;
     imageStore(engineColor, p, c);
+#endif
 #if LS_WITH_OUTPUT
     vec3 earlier = addOnly ? imageLoad(inscatterOut, p).rgb : vec3(0.0);
     imageStore(inscatterOut, p, vec4(earlier + lin, 1.0));

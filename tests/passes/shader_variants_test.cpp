@@ -8,6 +8,8 @@
 
 #include "apply_comp_variants.h"
 #include "beam_tree_hybrid/beam_tree_shaders.h"
+#include "composite_apply_comp_variants.h"
+#include "composite_blend_frag_variants.h"
 #include "composite_comp_variants.h"
 #include "cone_march/cone_march_shader.h"
 #include "cone_march_frag_variants.h"
@@ -21,6 +23,7 @@
 #include "ray_march_frag_variants.h"
 #include "shared/shared_shaders.h"
 #include "slice_uv_frame_comp_variants.h"
+#include "transmittance_export_comp_variants.h"
 #include "unshadowed_frag_variants.h"
 #include "unwarp_frag_variants.h"
 
@@ -57,7 +60,13 @@ void forEachSpec(F&& f) {
             }
 }
 
-constexpr VkFormat kColors[] = {VK_FORMAT_R16G16B16A16_SFLOAT, VK_FORMAT_R32G32B32A32_SFLOAT};
+// Every target a compositing shader may write (cmake/CompositeTargets.cmake).
+template <typename F>
+void forEachTarget(F&& f) {
+    for (VkFormat color : {VK_FORMAT_R16G16B16A16_SFLOAT, VK_FORMAT_R32G32B32A32_SFLOAT})
+        for (bool out : {false, true})
+            for (bool split : {false, true}) f(CompositeVariant{color, out, split});
+}
 
 TEST(ShaderVariants, EpipolarNodesAskForBuiltVariants) {
     Reached rayMarch, pixelMarch, unwarp, minMax, uvFrame;
@@ -67,12 +76,10 @@ TEST(ShaderVariants, EpipolarNodesAskForBuiltVariants) {
         reach(pixelMarch, pixelMarchShader(spec));
         // An unshadowed light marched for its light color (no cube map: it has no shadow map).
         if (spec.lightColor && !spec.cubeShadow) reach(pixelMarch, pixelMarchShader(spec, false));
-        for (VkFormat color : kColors)
-            for (bool out : {false, true}) reach(pixelMarch, fixupShader(spec, color, out));
+        forEachTarget([&](const CompositeVariant& t) { reach(pixelMarch, fixupShader(spec, t)); });
     });
     for (bool table : {false, true})
-        for (VkFormat color : kColors)
-            for (bool out : {false, true}) reach(unwarp, unwarpShader(table, color, out));
+        forEachTarget([&](const CompositeVariant& t) { reach(unwarp, unwarpShader(table, t)); });
     for (bool cube : {false, true}) {
         reach(minMax, minMaxFirstLevelShader(cube));
         reach(uvFrame, sliceUvFrameShader(cube));
@@ -88,9 +95,9 @@ TEST(ShaderVariants, ScreenLinNodesAskForBuiltVariants) {
     Reached composite, unshadowed, coneMarch, planes;
     for (bool addOnly : {false, true})
         for (bool lin : {false, true})
-            for (VkFormat color : kColors)
-                for (bool out : {false, true})
-                    reach(composite, compositeShader(addOnly, lin, color, out));
+            forEachTarget([&](const CompositeVariant& t) {
+                reach(composite, compositeShader(addOnly, lin, t));
+            });
     forEachSpec([&](const ScatterSpec& spec) { reach(unshadowed, unshadowedShader(spec)); });
     for (bool shadow : {false, true})
         for (bool color : {false, true})
@@ -106,13 +113,24 @@ TEST(ShaderVariants, ScreenLinNodesAskForBuiltVariants) {
     expectAllReached(ls_spirv::planes_frag_variants, planes);
 }
 
+TEST(ShaderVariants, SplitCompositeNodesAskForBuiltVariants) {
+    Reached blend, apply, exportT;
+    for (bool dual : {false, true}) reach(blend, compositeBlendShader(dual));
+    for (VkFormat f : {VK_FORMAT_R16G16B16A16_SFLOAT, VK_FORMAT_R32G32B32A32_SFLOAT}) {
+        reach(apply, compositeApplyShader(f));
+        reach(exportT, transmittanceExportShader(f));
+    }
+    expectAllReached(ls_spirv::composite_blend_frag_variants, blend);
+    expectAllReached(ls_spirv::composite_apply_comp_variants, apply);
+    expectAllReached(ls_spirv::transmittance_export_comp_variants, exportT);
+}
+
 TEST(ShaderVariants, FroxelNodesAskForBuiltVariants) {
     Reached inject, apply;
     for (bool shadow : {false, true})
         for (bool color : {false, true})
             for (bool cube : {false, true}) reach(inject, froxelInjectShader(shadow, color, cube));
-    for (VkFormat color : kColors)
-        for (bool out : {false, true}) reach(apply, froxelApplyShader(color, out));
+    forEachTarget([&](const CompositeVariant& t) { reach(apply, froxelApplyShader(t)); });
     expectAllReached(ls_spirv::inject_comp_variants, inject);
     expectAllReached(ls_spirv::apply_comp_variants, apply);
 }
@@ -142,10 +160,11 @@ TEST(ShaderVariants, BuildNotMadeIsOneClearError) {
                                                         {"LS_NO_SHADOW_MAP", 1},
                                                         {"LS_COMPOSITE", 0},
                                                         {"LS_COLOR_RGBA32F", 0},
-                                                        {"LS_WITH_OUTPUT", 0}}),
+                                                        {"LS_WITH_OUTPUT", 0},
+                                                        {"LS_SPLIT", 0}}),
         "shader pixel_march.frag with [LS_NEEDS_TABLE=1,LS_LIGHT_COLOR=0,LS_CUBE_SHADOW=0,"
-        "LS_NO_SHADOW_MAP=1,LS_COMPOSITE=0,LS_COLOR_RGBA32F=0,LS_WITH_OUTPUT=0]: no build has "
-        "these defines (add it to shaders/CMakeLists.txt)");
+        "LS_NO_SHADOW_MAP=1,LS_COMPOSITE=0,LS_COLOR_RGBA32F=0,LS_WITH_OUTPUT=0,LS_SPLIT=0]: no "
+        "build has these defines (add it to shaders/CMakeLists.txt)");
     EXPECT_EQ(pickError(ls_spirv::cone_march_frag_variants, {{"LS_SHADOW_MAP", 1}}),
               "shader cone_march.frag with [LS_SHADOW_MAP=1]: the define LS_LIGHT_COLOR is not "
               "given");

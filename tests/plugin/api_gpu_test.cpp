@@ -216,8 +216,36 @@ TEST_F(PluginApiGpu, MissingFinalLayoutIsRefused) {
                   "color.finalLayout");
 }
 
-TEST_F(PluginApiGpu, ColorMustBeLinearHdr) {
-    expectRefused([](auto& d) { d.color.format = VK_FORMAT_R8G8B8A8_UNORM; }, "color.format");
+// The color is a storage image of a float format the shaders write in place, or a color attachment
+// of a format the device blends into (composite_gpu_test.cpp renders them); without one, the
+// engine composites itself from both outputs.
+TEST_F(PluginApiGpu, TheColorIsAStorageFloatImageOrABlendableAttachment) {
+    expectRefused([](auto& d) { d.color.format = VK_FORMAT_R8G8B8A8_UNORM; },
+                  "color.usage lacks COLOR_ATTACHMENT: the plugin blends into a R8G8B8A8_UNORM "
+                  "color as an attachment");
+    expectRefused(
+        [](auto& d) {
+            d.color.format = VK_FORMAT_R8G8B8A8_UINT;  // integer: no blending
+            d.color.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+            d.color.layout = d.color.finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        },
+        "color.format R8G8B8A8_UINT: this device cannot blend into it as a color attachment");
+    expectRefused([](auto& d) { d.color.format = VK_FORMAT_UNDEFINED; },
+                  "color.format is UNDEFINED (no color: the engine composites itself) and "
+                  "transmittanceOut is not given");
+    expectRefused(
+        [](auto& d) {
+            d.transmittanceOut = d.color;
+            d.transmittanceOut->format = VK_FORMAT_R16G16_SFLOAT;
+        },
+        "transmittanceOut.format R16G16_SFLOAT: must be R16G16B16A16_SFLOAT or "
+        "R32G32B32A32_SFLOAT");
+    expectRefused(
+        [](auto& d) {
+            d.transmittanceOut = d.color;
+            d.transmittanceOut->extent.width -= 1;
+        },
+        "transmittanceOut.extent");
 }
 
 // A point light's shadow map is a cube: six layers and six face matrices in Vulkan's order and

@@ -41,7 +41,13 @@ void TestImage::transition(VkCommandBuffer cmd, VkImageLayout from, VkImageLayou
 }
 
 void TestImage::upload(const std::vector<float>& texels) {
-    const VkDeviceSize bytes = texels.size() * sizeof(float);
+    std::vector<uint8_t> bytes(texels.size() * sizeof(float));
+    std::memcpy(bytes.data(), texels.data(), bytes.size());
+    uploadBytes(bytes);
+}
+
+void TestImage::uploadBytes(const std::vector<uint8_t>& texels) {
+    const VkDeviceSize bytes = texels.size();
     rg::HostBuffer staging(device_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, "test upload");
     std::memcpy(staging.data(), texels.data(), bytes);
     device_.submitAndWait([&](VkCommandBuffer cmd) {
@@ -86,9 +92,7 @@ void TestImage::clear(float value) {
     });
 }
 
-std::vector<float> TestImage::download() {
-    const bool half = format_ == VK_FORMAT_R16G16B16A16_SFLOAT;
-    const size_t channels = half ? 4 : rg::texelBytes(format_) / 4;
+std::vector<uint8_t> TestImage::downloadBytes() {
     const VkDeviceSize bytes = size_t{extent_.width} * extent_.height * rg::texelBytes(format_);
     rg::HostBuffer staging(device_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, "test download");
     device_.submitAndWait([&](VkCommandBuffer cmd) {
@@ -99,12 +103,21 @@ std::vector<float> TestImage::download() {
                                                  : VkImageAspectFlags{VK_IMAGE_ASPECT_COLOR_BIT});
         transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, resting_);
     });
+    std::vector<uint8_t> out(bytes);
+    std::memcpy(out.data(), staging.data(), bytes);
+    return out;
+}
+
+std::vector<float> TestImage::download() {
+    const bool half = format_ == VK_FORMAT_R16G16B16A16_SFLOAT;
+    const size_t channels = half ? 4 : rg::texelBytes(format_) / 4;
+    const std::vector<uint8_t> bytes = downloadBytes();
     std::vector<float> out(size_t{extent_.width} * extent_.height * channels);
     if (half) {
-        const auto* h = static_cast<const uint16_t*>(staging.data());
+        const auto* h = reinterpret_cast<const uint16_t*>(bytes.data());
         for (size_t i = 0; i < out.size(); ++i) out[i] = halfToFloat(h[i]);
     } else {
-        std::memcpy(out.data(), staging.data(), bytes);
+        std::memcpy(out.data(), bytes.data(), bytes.size());
     }
     return out;
 }

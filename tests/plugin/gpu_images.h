@@ -20,6 +20,9 @@ class TestImage {
 
     // Uploads tightly packed texels (float per depth texel, 4 floats per RGBA32F texel).
     void upload(const std::vector<float>& texels);
+    // Texels as the format packs them, tightly (rg::texelBytes each), either way.
+    void uploadBytes(const std::vector<uint8_t>& bytes);
+    std::vector<uint8_t> downloadBytes();
     std::vector<float> download();  // RGBA32F, RGBA16F or R32/D32 as floats
     void clear(float value);        // color images
     lightscatter::ImageInput input() const;

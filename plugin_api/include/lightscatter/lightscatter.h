@@ -237,6 +237,35 @@ struct Medium {
     float maxDistance = 1000.0f;
 };
 
+// Units for an engine whose lights carry none (a light of intensity 1 lights a white surface facing
+// it to 1, as N.L shading does): the intensity a light needs for a shaft of a chosen brightness.
+// The plugin's lights are physical (Light::intensity: W/sr, or W/m^2 for a directional light), and
+// a shaft is the light scattered towards the camera along the stretch of a view ray inside the
+// beam, so a light bright enough for a surface is often far too dim for its shaft: seen across a
+// 1 m wide beam through betaM = 0.01/m (g = 0.76), the shaft sends about 1e-4 of the irradiance it
+// crosses towards the camera, where a white surface returns 1/pi of it. Choose where a shaft
+// should be seen and how bright, and give the plugin's light this intensity (times the light's
+// color): the engine's own shading of the light stays as it is.
+struct ShaftGoal {
+    float brightness = 0.05f;    // Lin wanted at the shaft, in the engine's color units (> 0)
+    float beamWidth = 1.0f;      // metres of lit beam the view ray crosses (> 0)
+    float viewDistance = 10.0f;  // metres from the camera to the shaft (>= 0)
+    float lightDistance = 5.0f;  // point, spot: metres from the light to the shaft (> 0)
+    // docs/model.md's scattering angle t: 0 looking into the light, 90 across its beam.
+    float scatteringAngleDegrees = 90.0f;
+    float radius = 0.05f;  // point, spot: Light::radius (r0)
+};
+// Per channel: the intensity (I for a point or spot light, E for a directional one) that makes the
+// shaft's Lin equal goal.brightness under docs/model.md's single scattering, the irradiance taken
+// as constant across the beam:
+//     Lin = P(t) Irr exp(-betaT viewDistance) (1 - exp(-betaT beamWidth)) / betaT
+//     Irr = I exp(-betaT lightDistance) / (lightDistance^2 + radius^2)   (point, spot)
+//     Irr = E                                                           (directional)
+// A spot's cone falloff and a shadow are not in it: aim at the inside of the cone. Throws
+// InvalidInput naming the goal's field that breaks its rule, or when the medium scatters nothing or
+// the intensity needed is above limits::kMaxIntensity.
+LIGHTSCATTER_API Vec3 shaftIntensity(LightType type, const Medium& medium, const ShaftGoal& goal);
+
 // An engine image handed to the plugin for one frame: where it stands and where it must be left.
 // The plugin uses mip level 0 and array layers 0 to arrayLayers - 1; it never keeps the image
 // beyond the frame's commands, and never names it (the engine's debug name stays).
@@ -358,7 +387,21 @@ struct LightInput {
 
 struct FrameDescription {
     ImageInput depth;  // D16/D24/D32 (sampled); the camera's depth
-    ImageInput color;  // linear HDR color (storage, R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT)
+    // The engine's color, which the plugin composites into: color * exp(-betaT S) + k Lin (k the
+    // preExposure below). Two ways, chosen by its format and usage:
+    //   - R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT with STORAGE usage: the passes that make Lin
+    //     read-modify-write it where they make it (no pass of its own; the faster path).
+    //   - any other format the device blends into as a color attachment (COLOR_ATTACHMENT usage,
+    //     VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT): B10G11R11_UFLOAT_PACK32,
+    //     A2B10G10R10_UNORM_PACK32, the float formats without STORAGE, 8-bit UNORM and SRGB. The
+    //     passes write k Lin and the transmittance into two screen textures of the plugin's, and a
+    //     graphics pass of its own blends them in (one draw with dualSrcBlend enabled on the
+    //     device, two without), outside any render pass of the engine's. An SRGB target blends in
+    //     linear (the hardware converts); a UNORM target's values are taken as the engine's linear
+    //     values, and the format clamps the result to [0, 1] as it stores it.
+    // Absent (format VK_FORMAT_UNDEFINED): the engine composites itself from inscatterOut and
+    // transmittanceOut, which are then required.
+    ImageInput color;
     std::optional<ImageInput> shadowMap;  // the light's depth (sampled); 6 layers for a point light
     // Optional light-space color (a cookie, stained glass; sampled, linear values in [0, 1], e.g.
     // an R8G8B8A8_SRGB image): multiplies a spot's or directional light's irradiance where
@@ -367,6 +410,10 @@ struct FrameDescription {
     // beam-tree-analytic refuse it; docs/methods.md, "Cookies"). Refused with a point light.
     std::optional<ImageInput> lightColor;
     std::optional<ImageInput> inscatterOut;  // optional: Lin alone, R32G32B32A32_SFLOAT storage
+    // Optional: the transmittance from the camera to each pixel's depth, per channel (rgb; a = 1):
+    // exp(-betaT S), or froxels' grid's. With inscatterOut, what an engine that composites itself
+    // needs: color * T + k Lin. R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT, storage, depth.extent.
+    std::optional<ImageInput> transmittanceOut;
     // Optional, with froxels: the frame's integrated grid, for an engine to fog what the depth
     // buffer does not hold (forward transparents, particles). A 3D R16G16B16A16_SFLOAT storage
     // image of froxelVolume()'s width x height x depth; each texel holds Lin (rgb, unexposed,

@@ -1,0 +1,27 @@
+# The builds of a shader that composites (shaders/shared/composite_into.glsl), one list for every
+# such shader: the color's format (a storage image read needs it), the Lin output image and the
+# split composite (a pipeline never declares a descriptor it is not given). Each entry is
+# "<suffix>@<defines>", the suffix naming the build after the shader's own part.
+function(ls_composite_targets out_var)
+  set(entries)
+  foreach(fmt rgba16f rgba32f)
+    set(wide 0)
+    if(fmt STREQUAL rgba32f)
+      set(wide 1)
+    endif()
+    foreach(out "" _out)
+      set(o 0)
+      if(out STREQUAL _out)
+        set(o 1)
+      endif()
+      foreach(split "" _split)
+        set(s 0)
+        if(split STREQUAL _split)
+          set(s 1)
+        endif()
+        list(APPEND entries "${fmt}${out}${split}@LS_COLOR_RGBA32F=${wide},LS_WITH_OUTPUT=${o},LS_SPLIT=${s}")
+      endforeach()
+    endforeach()
+  endforeach()
+  set(${out_var} ${entries} PARENT_SCOPE)
+endfunction()
