@@ -42,8 +42,8 @@ rg::ImageRef addSplitCompute(rg::RenderGraph& graph, const ChainContext& chain, 
                                      ? table.storageReadWrite(LS_BINDING_SPLIT_TARGET, target)
                                      : table.storageWrite(LS_BINDING_SPLIT_TARGET, target);
     pass.execute([shared = chain.shared, table, written, shader, name](rg::PassContext& ctx) {
-        const auto& p = shared->pipelines.compute(name, shader(ctx.format(written)),
-                                                  table.layout(), sizeof(SizePush), {});
+        const auto& p = shared->pipelines.compute(name, shader(ctx.format(written)), table.layout(),
+                                                  sizeof(SizePush), {});
         p.bind(ctx.cmd());
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         // The frame's extent: under dynamic resolution the engine's image is larger.

@@ -60,8 +60,8 @@ Stored stored(VkFormat f, int c, double v) {
         return {v, srgbToLinear(std::min(1.0, e + 1.0 / 255.0)) - srgbToLinear(e)};
     }
     const int mantissa = f == VK_FORMAT_B10G11R11_UFLOAT_PACK32 ? (c == 2 ? 5 : 6)
-                         : f == VK_FORMAT_R16G16B16A16_SFLOAT ? 10
-                                                              : 23;
+                         : f == VK_FORMAT_R16G16B16A16_SFLOAT   ? 10
+                                                                : 23;
     if (f == VK_FORMAT_B10G11R11_UFLOAT_PACK32) v = std::max(v, 0.0);
     // Below the smallest normal value the step stays that of the smallest exponent.
     const double minNormal = f == VK_FORMAT_R32G32B32A32_SFLOAT ? 1.2e-38 : 6.1e-5;
@@ -81,7 +81,7 @@ uint16_t toHalf(float v) {
     if (a < 6.103515625e-05f)  // below the smallest normal: a multiple of 2^-24
         return uint16_t(sign | uint32_t(std::lround(std::ldexp(double(a), 24))));
     int e;
-    const double m = std::frexp(double(a), &e);  // a = m 2^e, m in [0.5, 1)
+    const double m = std::frexp(double(a), &e);                    // a = m 2^e, m in [0.5, 1)
     uint32_t mantissa = uint32_t(std::lround(std::ldexp(m, 11)));  // 1024..2048
     if (mantissa == 2048) {
         mantissa = 1024;
@@ -91,7 +91,8 @@ uint16_t toHalf(float v) {
 }
 double fromHalf(uint16_t h) {
     const uint32_t e = (h >> 10) & 0x1fu, m = h & 0x3ffu;
-    const double v = e == 0 ? std::ldexp(double(m), -24) : std::ldexp(double(m | 0x400u), int(e) - 25);
+    const double v =
+        e == 0 ? std::ldexp(double(m), -24) : std::ldexp(double(m | 0x400u), int(e) - 25);
     return (h & 0x8000u) ? -v : v;
 }
 // An unsigned float of `mantissa` bits and a 5-bit exponent (B10G11R11's channels).
@@ -142,7 +143,8 @@ std::vector<uint8_t> pack(VkFormat f, const std::vector<float>& rgba) {
             default: {  // 8-bit RGBA or BGRA, UNORM or sRGB
                 const bool bgra = f == VK_FORMAT_B8G8R8A8_UNORM || f == VK_FORMAT_B8G8R8A8_SRGB;
                 for (int c = 0; c < 4; ++c) {
-                    const double v = srgb(f) && c < 3 ? linearToSrgb(std::clamp(double(p[c]), 0.0, 1.0)) : p[c];
+                    const double v =
+                        srgb(f) && c < 3 ? linearToSrgb(std::clamp(double(p[c]), 0.0, 1.0)) : p[c];
                     o[bgra && c < 3 ? 2 - c : c] = uint8_t(toUnorm(v, 255));
                 }
                 continue;
@@ -259,9 +261,8 @@ TEST_F(CompositeGpu, EveryColorFormatCompositesAsTheStoragePathWithinItsPrecisio
         TestFrame frame(dev(), sceneWith(spotOverGrille(), kScreen));
         for (const float exposure : {1.0f, 40.0f})
             for (const VkFormat format : kTargets) {
-                auto target =
-                    imageOf(format, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT,
-                            VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, backdrop);
+                auto target = imageOf(format, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT,
+                                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, backdrop);
                 const std::vector<float> before = read(*target, format);
                 // The storage path's result from the same stored background.
                 auto reference = imageOf(VK_FORMAT_R16G16B16A16_SFLOAT, VK_IMAGE_USAGE_STORAGE_BIT,
@@ -270,20 +271,20 @@ TEST_F(CompositeGpu, EveryColorFormatCompositesAsTheStoragePathWithinItsPrecisio
                 desc.preExposure = exposure;
                 desc.color = reference->input();
                 plugin().render(desc);
-                const std::vector<float> expected =
-                    read(*reference, VK_FORMAT_R16G16B16A16_SFLOAT);
+                const std::vector<float> expected = read(*reference, VK_FORMAT_R16G16B16A16_SFLOAT);
                 for (const bool dual : {true, false}) {
                     SCOPED_TRACE(std::string(lightscatter::methodName(method)) + " into " +
                                  rg::formatName(format) + (dual ? ", dual-source" : ", two draws") +
                                  ", pre-exposure " + std::to_string(exposure));
-                    if (!dual) target = imageOf(format, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT,
-                                                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, backdrop);
+                    if (!dual)
+                        target = imageOf(format, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT,
+                                         VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, backdrop);
                     desc.color = target->input();
                     lightscatter::Plugin& p = dual ? plugin() : twoDrawPlugin();
                     const lightscatter::FrameReport r = p.render(desc);
-                    EXPECT_TRUE(ranPassStartingWith(
-                        r, dual ? "composite into color (dual-source blend)"
-                                : "composite into color (two blended draws)"));
+                    EXPECT_TRUE(
+                        ranPassStartingWith(r, dual ? "composite into color (dual-source blend)"
+                                                    : "composite into color (two blended draws)"));
                     const std::vector<float> got = read(*target, format);
                     size_t worse = 0, changed = 0;
                     double worst = 0;
