@@ -1,5 +1,5 @@
-// shaftIntensity(): the intensity it gives a light renders the shaft brightness asked for, on the
-// plugin's closed form (analytic), and what it cannot give is refused naming the goal's field.
+// shaftIntensity(): the intensity it gives a light renders the shaft brightness asked for, and what
+// it cannot give is refused naming the goal's field.
 #include <gtest/gtest.h>
 
 #include <cmath>
