@@ -8,6 +8,7 @@ from datetime import date
 from pathlib import Path
 
 from .common import fmt, load_note
+from .runs import code_commit
 
 FROXELS_HEADING = "## Against froxel fog"
 
@@ -41,11 +42,16 @@ def froxels_section(bench_dir, scaling_dir=None):
     r0 = runs[0]
     w, h = r0["size"]
     kind = "lavapipe CPU timings: compare ratios, not milliseconds" if r0["cpuDevice"] else "GPU timestamps"
-    p(f"Measured on {date.today().isoformat()} with `./build/host_example/lightscatter bench --config "
+    commit = code_commit()
+    at = f" (code at commit {commit})" if commit else ""
+    p(f"Measured on {date.today().isoformat()}{at} with `./build/host_example/lightscatter bench --config "
       f"bench/froxels.json`, at {w}x{h}, the median of {r0['frames']} frames after warm-up (the temporal mode "
       f"after the same frames, the scene still), on **{r0['device']}** ({kind}); memory is the plugin's peak "
       f"with aliasing at this size (`lightscatter budget`, estimated without a device; the temporal mode's two "
       f"history grids included).\n")
+    p("Its epipolar and brute-force rows repeat configurations of the page's main run on another day and code "
+      "(the index of runs above). Errors carry over; times, and their ratios to brute force, move from one run to "
+      "another, so compare a row with this section's rows, not with the main run's.\n")
     note = load_note(bench_dir)
     if note:
         p(note + "\n")
