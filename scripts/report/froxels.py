@@ -26,6 +26,16 @@ def memory_mib(bench_dir, label):
     return b["peakBytes"] / (1024.0 * 1024.0)
 
 
+def memory_cell(bench_dir, label, w, h):
+    """A configuration's peak MiB, followed by the `lightscatter budget` options that give it
+    (scripts/make-report.sh's) for tools/check_budget_figures.py; '-' without a budget."""
+    mib = memory_mib(bench_dir, label)
+    if mib is None:
+        return "-"
+    method, _, profile = label.partition(" ")
+    return f"{fmt(mib)}<!-- budget --method {method} --profile {profile or 'balanced'} --size {w}x{h}: peak -->"
+
+
 def froxels_section(bench_dir, scaling_dir=None):
     sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
     import plot_lights as pl
@@ -65,7 +75,7 @@ def froxels_section(bench_dir, scaling_dir=None):
         speed = brute.get(r["scene"], 0) / t["median"] if t["median"] else None
         p(f"| {r['scene']} | {r['label']} | {fmt(t['median'])} ({fmt(t['p10'])}-{fmt(t['p90'])}) | "
           f"{fmt(speed)} | {fmt(e.get('meanRelative'))} | {fmt(e.get('p99'))} | {fmt(e.get('psnrDb'))} | "
-          f"{fmt(memory_mib(bench_dir, r['label']))} |")
+          f"{memory_cell(bench_dir, r['label'], w, h)} |")
     p("")
     # Where each family wins: each froxel configuration against epipolar balanced on each scene.
     by = {(r["scene"], r["label"]): r for r in runs}
