@@ -50,7 +50,8 @@ def runs_lines(page):
            "run (the first line of the page). The runs were made on different days and code, and the device's "
            "speed varied between them (on lavapipe the CPU's load and clock decide it), so a time is compared "
            "only with times of the same run: ratios within a run carry over, milliseconds across runs do not. "
-           "Errors do not depend on the device's speed. This index is written from the sections each time the "
+           "Errors do not depend on the device's speed. Runs made before the `planes` method was renamed call it "
+           "`slices`, its former name. This index is written from the sections each time the "
            "page or one of its sections is generated (`scripts/report/runs.py`).", "",
            "| section | run | date | code at commit | device | command |",
            "|---|---|---|---|---|---|"]
