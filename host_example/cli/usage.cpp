@@ -24,8 +24,11 @@ std::string wrapped(const std::vector<std::string>& words, size_t indent, size_t
     return text + line + "\n";
 }
 
+constexpr const char* kCommonOptions =
+    "common options: --device NAME (or LS_DEVICE), --validation, --help (-h)\n";
+
 // The methods and presets and the profiles, from the plugin (methodInfo(), profileNames()).
-std::string common() {
+std::string methodsAndProfiles() {
     std::vector<std::string> words{"methods:", "auto (default),"};
     for (const lightscatter::MethodInfo& m : lightscatter::methodInfo()) {
         std::string presets;
@@ -38,8 +41,7 @@ std::string common() {
     for (size_t i = 0; i < profiles.size(); ++i)
         words.push_back(profiles[i] + (profiles[i] == "balanced" ? " (default)" : "") +
                         (i + 1 < profiles.size() ? "," : " (with --settings)"));
-    return "common options: --device NAME (or LS_DEVICE), --validation, --help (-h)\n" +
-           wrapped(words, 0, 0);
+    return wrapped(words, 0, 0);
 }
 
 // Every field of lightscatter::Settings, from the plugin's tables (settingsFields()).
@@ -149,8 +151,16 @@ const std::array kCommands{
             "  --size WxH          1 to 16384 each (default 512x512)\n"},
 };
 
+// The commands that take --settings get its block of every field; the others (bench, pattern) do
+// not, as they take no such option.
 bool takesSettings(const std::string& name) {
     return name == "render" || name == "graph" || name == "view" || name == "budget";
+}
+
+// The commands that name methods and profiles (on the command line, or in bench's configuration)
+// end with their list; pattern renders no light scattering and names neither.
+bool namesMethods(const std::string& name) {
+    return name != "pattern";
 }
 
 }  // namespace
@@ -159,7 +169,7 @@ std::string usage() {
     std::string text =
         "usage: lightscatter <command> [options]   (lightscatter <command> --help for more)\n";
     for (const Command& c : kCommands) text += std::string("  ") + c.synopsis;
-    return text + common();
+    return text + kCommonOptions + methodsAndProfiles();
 }
 
 std::string commandUsage(const std::string& name) {
@@ -167,7 +177,8 @@ std::string commandUsage(const std::string& name) {
         if (name != c.name) continue;
         std::string text = std::string("usage: lightscatter ") + c.synopsis + c.details;
         if (takesSettings(name)) text += settingsHelp();
-        return text + common();
+        text += kCommonOptions;
+        return namesMethods(name) ? text + methodsAndProfiles() : text;
     }
     return "";
 }

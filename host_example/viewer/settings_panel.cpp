@@ -120,9 +120,29 @@ std::string SettingsPanel::save(const RenderOptions& o, const std::string& path)
     return "wrote " + path + ": lightscatter view SCENE --profile custom --settings " + path;
 }
 
+SettingsPanel::Layout SettingsPanel::layout(float width, float height) {
+    constexpr float kMargin = 8.0f;
+    Layout l;
+    l.collapsed = width < kRoomWidth || height < kRoomHeight;
+    l.maxWidth = std::max(1.0f, 0.5f * width);
+    l.maxHeight = std::max(1.0f, height - 2.0f * kMargin);
+    return l;
+}
+
 void SettingsPanel::draw(RenderOptions& o, SceneDesc& scene, const PanelStatus& status) {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    const Layout l = layout(display.x, display.y);
+    // Collapsed or opened when the window crosses the size (and on the first frame), not every
+    // frame: between two crossings the user's click decides.
+    if (collapsedFor_ != static_cast<int>(l.collapsed)) {
+        ImGui::SetNextWindowCollapsed(l.collapsed, ImGuiCond_Always);
+        collapsedFor_ = static_cast<int>(l.collapsed);
+    }
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(480, 560), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(std::min(480.0f, l.maxWidth), std::min(560.0f, l.maxHeight)),
+                             ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(std::min(160.0f, l.maxWidth), 0.0f),
+                                        ImVec2(l.maxWidth, l.maxHeight));
     ImGui::SetNextWindowBgAlpha(0.85f);
     if (!ImGui::Begin("lightscatter (F1 hides)")) {
         ImGui::End();

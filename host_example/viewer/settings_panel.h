@@ -51,6 +51,18 @@ class SettingsPanel {
     // Draws the panel (inside an ImGui frame); edits `o` and `scene` through the functions above.
     void draw(RenderOptions& o, SceneDesc& scene, const PanelStatus& status);
 
+    // Where the panel stands on a window of width x height pixels. On a window under
+    // kRoomWidth x kRoomHeight it is collapsed to its title bar (the picture comes first there; a
+    // click on the title opens it), and it is never wider than half the window nor taller than the
+    // window less its margins. draw() collapses or opens it when the window crosses that size, and
+    // leaves it as the user set it in between.
+    static constexpr float kRoomWidth = 800.0f, kRoomHeight = 450.0f;
+    struct Layout {
+        bool collapsed = false;
+        float maxWidth = 0.0f, maxHeight = 0.0f;
+    };
+    static Layout layout(float width, float height);
+
   private:
     void drawSettings(RenderOptions& o);
     void drawField(RenderOptions& o, const lightscatter::Settings& shown, const SettingField& f);
@@ -59,6 +71,7 @@ class SettingsPanel {
     void drawTimings(const PanelStatus& status) const;
 
     bool rebuild_ = false;
+    int collapsedFor_ = -1;             // the layout's `collapsed` last applied (-1: none yet)
     std::string message_;               // the plugin's refusal, shown until the next accepted edit
     std::array<char, 512> savePath_{};  // the "file" field
     std::string saved_;                 // the line "save settings" gave

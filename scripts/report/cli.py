@@ -21,6 +21,7 @@ from .occluders import OCCLUDERS_HEADING, occluders_section
 from .page import page_lines
 from .planes import FORMER_HEADING, PLANES_HEADING, planes_section
 from .reference import REFERENCE_HEADING, reference_section
+from .runs import with_runs
 
 
 def flicker_lines(dirs, page):
@@ -111,7 +112,7 @@ def main(argv=None):
         page = Path(given[len(folders)]) if len(given) > len(folders) else None
         lines, heading = make(dirs, page)
         if page:
-            page.write_text(splice_section(page.read_text(), heading, lines))
+            page.write_text(with_runs(splice_section(page.read_text(), heading, lines)))
         else:
             print("\n".join(lines))
         return 0
@@ -122,6 +123,6 @@ def main(argv=None):
                                 **{f"{name}_dir": d for name, d in folders.items()}))
     # The sections this run does not write stay as they were (page_lines reads the same page).
     old = Path("docs/performance.md")
-    print(with_kept_sections(old.read_text(), text) if old.exists() else text)
+    print(with_runs(with_kept_sections(old.read_text(), text) if old.exists() else text))
     return 0
 

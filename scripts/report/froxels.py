@@ -8,6 +8,7 @@ from datetime import date
 from pathlib import Path
 
 from .common import fmt, load_note
+from .runs import code_commit
 
 FROXELS_HEADING = "## Against froxel fog"
 
@@ -23,6 +24,16 @@ def memory_mib(bench_dir, label):
         return None
     b = json.loads(f.read_text())[0]
     return b["peakBytes"] / (1024.0 * 1024.0)
+
+
+def memory_cell(bench_dir, label, w, h):
+    """A configuration's peak MiB, followed by the `lightscatter budget` options that give it
+    (scripts/make-report.sh's) for tools/check_budget_figures.py; '-' without a budget."""
+    mib = memory_mib(bench_dir, label)
+    if mib is None:
+        return "-"
+    method, _, profile = label.partition(" ")
+    return f"{fmt(mib)}<!-- budget --method {method} --profile {profile or 'balanced'} --size {w}x{h}: peak -->"
 
 
 def froxels_section(bench_dir, scaling_dir=None):
@@ -41,11 +52,16 @@ def froxels_section(bench_dir, scaling_dir=None):
     r0 = runs[0]
     w, h = r0["size"]
     kind = "lavapipe CPU timings: compare ratios, not milliseconds" if r0["cpuDevice"] else "GPU timestamps"
-    p(f"Measured on {date.today().isoformat()} with `./build/host_example/lightscatter bench --config "
+    commit = code_commit()
+    at = f" (code at commit {commit})" if commit else ""
+    p(f"Measured on {date.today().isoformat()}{at} with `./build/host_example/lightscatter bench --config "
       f"bench/froxels.json`, at {w}x{h}, the median of {r0['frames']} frames after warm-up (the temporal mode "
       f"after the same frames, the scene still), on **{r0['device']}** ({kind}); memory is the plugin's peak "
       f"with aliasing at this size (`lightscatter budget`, estimated without a device; the temporal mode's two "
       f"history grids included).\n")
+    p("Its epipolar and brute-force rows repeat configurations of the page's main run on another day and code "
+      "(the index of runs above). Errors carry over; times, and their ratios to brute force, move from one run to "
+      "another, so compare a row with this section's rows, not with the main run's.\n")
     note = load_note(bench_dir)
     if note:
         p(note + "\n")
@@ -59,7 +75,7 @@ def froxels_section(bench_dir, scaling_dir=None):
         speed = brute.get(r["scene"], 0) / t["median"] if t["median"] else None
         p(f"| {r['scene']} | {r['label']} | {fmt(t['median'])} ({fmt(t['p10'])}-{fmt(t['p90'])}) | "
           f"{fmt(speed)} | {fmt(e.get('meanRelative'))} | {fmt(e.get('p99'))} | {fmt(e.get('psnrDb'))} | "
-          f"{fmt(memory_mib(bench_dir, r['label']))} |")
+          f"{memory_cell(bench_dir, r['label'], w, h)} |")
     p("")
     # Where each family wins: each froxel configuration against epipolar balanced on each scene.
     by = {(r["scene"], r["label"]): r for r in runs}

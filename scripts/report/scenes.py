@@ -22,7 +22,9 @@ def scene_sections(runs, scenes):
               "one with a cube map, in [Several lights](#several-lights)): epipolar and brute force compute the "
               "same closed form (the point-light table), analytic seed 001's arctangent (which ignores the "
               "phase function's shape and extinction), cone-march samples the same integrand; the error is "
-              "mostly the shadows the reference has and the plugin lacks.\n")
+              "mostly the shadows the reference has and the plugin lacks. Epipolar's rows time the same per-pixel "
+              "computation as brute force's, so their speed-up over brute force is 1 within the run's noise (the "
+              "p10-p90 spread): below 1 in one run, above in another, it measures the run, not the method.\n")
         p(f"![time against error, {scene}](performance/time_vs_error_{scene}.png)\n")
         p("| configuration | slices x samples | median ms (p10-p90) | speed-up over brute force | mean rel. error | "
           "p99 | max | over 5% | PSNR dB | non-finite |")

@@ -67,6 +67,15 @@ def budget_mib(d, label):
     return json.loads(f.read_text())[0]["peakBytes"] / 2**20
 
 
+def budget_args(size, label, slices, samples, shadow_map):
+    """The `lightscatter budget` options that give a row's memory (scripts/make-report.sh's), as the
+    page's comment after each figure says them for tools/check_budget_figures.py."""
+    if label.startswith("epipolar "):
+        return f"--method epipolar --profile {label.split(' ', 1)[1]} --size {size}"
+    settings = json.dumps({"epipolar": {"slices": slices, "samplesPerSlice": samples}, "shadowMapSize": shadow_map})
+    return f"--profile custom --settings-json '{settings}' --shadow-map {shadow_map} --size {size}"
+
+
 def row_of(runs, scene, label):
     return next((r for r in runs if r["scene"] == scene and r["label"] == label), None)
 
@@ -108,6 +117,7 @@ def seed000_table(out, d, key, gpu, size, rows):
             if label != "brute-force" and speed is not None:
                 verdicts.append((s, speed, r))
         mib = budget_mib(d, label) if label != "brute-force" else None
+        source = f"<!-- budget {budget_args(size, label, slices, samples, sm)}: peak -->" if mib is not None else ""
         if label == "brute-force":
             verdict = "the reference row"
         else:
@@ -126,11 +136,11 @@ def seed000_table(out, d, key, gpu, size, rows):
                 parts.append(f"below on {s} ({fmt(x)}x against {seed_speed:.1f}x: {why})")
             if mib is not None and mb:
                 parts.append(f"memory {'holds' if mib <= mb * 1.05 else 'above the seed'} "
-                             f"({fmt(mib)} MiB against {mb} MB)")
+                             f"({fmt(mib)} MiB{source} against {mb} MB)")
             verdict = "; ".join(parts)
         p(f"| {name} | {f'{slices} x {samples}' if slices else '-'} | {sm}^2 | {ms} | "
           f"{'-' if label == 'brute-force' else f'{seed_speed:.1f}x'} | " + " | ".join(cells) +
-          f" | {mb if mb else '-'} | {fmt(mib)} | {verdict} |")
+          f" | {mb if mb else '-'} | {fmt(mib)}{source} | {verdict} |")
     p("")
 
 

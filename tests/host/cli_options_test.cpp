@@ -43,6 +43,18 @@ TEST(CliOptions, HelpAfterEachCommandPrintsItsUsage) {
             EXPECT_EQ(r.out.rfind(std::string("usage: lightscatter ") + command, 0), 0u) << r.out;
         }
     }
+    // The --settings block (every field of Settings) only for the commands that take the option,
+    // and the list of methods and profiles only for those that name them.
+    for (const char* command : {"render", "budget", "graph", "view", "bench", "pattern"}) {
+        SCOPED_TRACE(command);
+        const std::string out = run(std::string(command) + " --help").out;
+        const bool settings = std::string(command) != "bench" && std::string(command) != "pattern";
+        EXPECT_EQ(out.find("--settings FILE.json  JSON object") != std::string::npos, settings)
+            << out;
+        EXPECT_EQ(out.find("methods: auto") != std::string::npos, std::string(command) != "pattern")
+            << out;
+        EXPECT_NE(out.find("common options: --device NAME"), std::string::npos) << out;
+    }
     // Anywhere after the command, and with other options.
     const auto r = run("render " + scene("atrium") + " --size 8x8 --help");
     EXPECT_EQ(r.exitCode, 0) << r.out;

@@ -9,6 +9,14 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+// stb_image's functions are defined by window_test.cpp; in a unity build that file may come first
+// in this one, with STB_IMAGE_IMPLEMENTATION defined, and the header must not be read again.
+#ifndef STBI_INCLUDE_STB_IMAGE_H
+#include <stb/stb_image.h>
+#endif
 
 #include "cli_runner.h"
 #include "settings_fields.h"
@@ -189,4 +197,51 @@ TEST(Panel, SaveSettingsWritesAFileTheCommandLineReadsBack) {
     ASSERT_EQ(b.exitCode, 0) << b.out;
     const json budget = json::parse(b.out.substr(b.out.find('[')));
     EXPECT_EQ(budget[0]["settings"]["epipolar.slices"], 128) << b.out;
+}
+
+namespace {
+
+// The share of a window's pixels the panel covers: the same frame's screenshot with the panel and
+// without it, compared pixel by pixel.
+double panelShare(const std::string& size, const std::string& name) {
+    double share = -1.0;
+    std::vector<std::vector<unsigned char>> shots;
+    for (const char* panel : {"", " --no-panel"}) {
+        const std::string file = name + (*panel ? "-without.png" : "-with.png");
+        const auto r = cli_test::run("view " + cli_test::scene("window_room") + " --size " + size +
+                                         " --frames 4 --profile low-high-performance --method "
+                                         "epipolar --screenshot " +
+                                         file + panel,
+                                     "xvfb-run -a -s '-screen 0 1280x1024x24'");
+        EXPECT_EQ(r.exitCode, 0) << r.out;
+        int w = 0, h = 0, n = 0;
+        unsigned char* px = stbi_load(cli_test::path(file).c_str(), &w, &h, &n, 4);
+        if (!px) return share;
+        shots.emplace_back(px, px + static_cast<size_t>(w) * h * 4);
+        stbi_image_free(px);
+    }
+    const auto& a = shots[0];
+    const auto& b = shots[1];
+    if (a.size() != b.size() || a.empty()) return share;
+    size_t differ = 0;
+    for (size_t i = 0; i < a.size(); i += 4)
+        differ += std::abs(int(a[i]) - int(b[i])) + std::abs(int(a[i + 1]) - int(b[i + 1])) +
+                      std::abs(int(a[i + 2]) - int(b[i + 2])) >
+                  24;
+    return static_cast<double>(differ) / static_cast<double>(a.size() / 4);
+}
+
+}  // namespace
+
+// On a small window the panel starts collapsed to its title bar, so the picture stays in view; on
+// a larger one it opens, at most half the window's width.
+TEST(Panel, CollapsesOnASmallWindowAndOpensOnALargeOne) {
+    ASSERT_EQ(std::system("command -v xvfb-run > /dev/null"), 0)
+        << "xvfb-run is missing (Debian package xvfb)";
+    const double small = panelShare("640x360", "small");
+    const double large = panelShare("960x540", "large");
+    EXPECT_GE(small, 0.0);
+    EXPECT_LT(small, 0.05) << "the panel covers " << small << " of a 640x360 window";
+    EXPECT_GT(large, 0.15) << "the panel covers " << large << " of a 960x540 window";
+    EXPECT_LE(large, 0.52) << "the panel covers " << large << " of a 960x540 window";
 }

@@ -1,12 +1,12 @@
-// The integration example of README.md. readme_sync_test.cpp checks that the README quotes this
-// file's marked block verbatim; readme_example_gpu_test.cpp and the consumer projects
-// (tests/consumer/) run it.
+// The integration example of docs/integration.md. integration_doc_sync_test.cpp checks that the
+// page quotes this file's marked block verbatim; readme_example_gpu_test.cpp and the consumer
+// projects (tests/consumer/) run it.
 #include "readme_example.h"
 
 #include <memory>
 
 uint64_t recordLightShafts(Engine& engine) {
-    // [readme-example]
+    // [integration-example]
     // Once: the plugin works on the engine's own device and queue (the engine resets it before
     // destroying them). The engine keeps two frames in flight: when it records a frame, the one
     // two frames back has completed (its fence). The plugin never waits for the GPU.
@@ -62,6 +62,6 @@ uint64_t recordLightShafts(Engine& engine) {
     const uint64_t frameNumber = engine.lightShafts->record(engine.commandBuffer, frame);
     // Once the engine's fence says this command buffer has run, report(frameNumber) gives the GPU
     // time of each of its passes.
-    // [readme-example]
+    // [integration-example]
     return frameNumber;
 }

@@ -7,7 +7,7 @@
 
 #include <lightscatter/lightscatter.h>
 
-// The engine-side objects the README's integration example works with.
+// The engine-side objects docs/integration.md's example works with.
 struct Engine {
     lightscatter::VulkanContext context;  // the engine's device, with its enabled feature chain
     std::unique_ptr<lightscatter::Plugin>
@@ -18,7 +18,7 @@ struct Engine {
     std::array<float, 16> view{}, projection{}, lightViewProjection{};
 };
 
-// The README's example, verbatim (readme_example.cpp): records the light shafts into the engine's
-// command buffer and returns the frame's number, for the plugin's report once the engine has
-// waited. Compiled by the plugin's tests and by the consumer projects (tests/consumer/).
+// docs/integration.md's example, verbatim (readme_example.cpp): records the light shafts into the
+// engine's command buffer and returns the frame's number, for the plugin's report once the engine
+// has waited. Compiled by the plugin's tests and by the consumer projects (tests/consumer/).
 uint64_t recordLightShafts(Engine& engine);

@@ -1,4 +1,4 @@
-// Runs the README's integration example as an engine would: its own command buffer, its submit.
+// Runs docs/integration.md's example as an engine would: its own command buffer, its submit.
 #include "plugin_fixture.h"
 #include "readme_example.h"
 #include "rendergraph/vk_error.h"

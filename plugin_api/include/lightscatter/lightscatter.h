@@ -272,28 +272,33 @@ LIGHTSCATTER_API Vec3 shaftIntensity(LightType type, const Medium& medium, const
 //
 // Within record(), the plugin's first command on the image is a barrier from (stages, access,
 // layout) to its own use, and its last a barrier from its own use to (finalStages, finalAccess,
-// finalLayout). So:
-//   usage         the VkImageUsageFlags the image was created with. The plugin needs
-//                 SAMPLED (depth, shadowMap, lightColor) or STORAGE (color, inscatterOut);
-//                 layouts are checked against these flags (COLOR_ATTACHMENT_OPTIMAL needs
-//                 COLOR_ATTACHMENT, ...).
-//   layout        the layout the image is in when the plugin's commands start. It must be a layout
-//                 the image's format and usage can hold (a depth image cannot be in
-//                 COLOR_ATTACHMENT_OPTIMAL). UNDEFINED only for inscatterOut, which the plugin
-//                 overwrites; the other images are read.
-//   stages/access the pipeline stages and access types of the engine's last use before the plugin
-//                 (for example LATE_FRAGMENT_TESTS + DEPTH_STENCIL_ATTACHMENT_WRITE after a depth
-//                 pass). The plugin's first barrier waits for them. The defaults wait for
-//                 everything.
-//   arrayLayers   the layers the plugin reads and transitions (0 to arrayLayers - 1), all in
-//                 `layout` at the start and left in `finalLayout`: 1 for every image but a point
-//                 light's shadow map, which has 6 (its cube faces, Light::cubeFaceViewProjections;
-//                 an image created cube-compatible or a plain 2D array, sampled as a 2D array).
-//   finalLayout   the layout the plugin leaves the image in (required; not UNDEFINED or
-//                 PREINITIALIZED).
-//   finalStages/finalAccess
-//                 the engine's next use after the plugin: the plugin's last barrier makes its
-//                 work visible to them. The defaults make it visible to everything.
+// finalLayout). The fields:
+//
+// - usage:
+//     The VkImageUsageFlags the image was created with. The plugin needs SAMPLED (depth,
+//     shadowMap, lightColor) or STORAGE (color, inscatterOut); layouts are checked against these
+//     flags (COLOR_ATTACHMENT_OPTIMAL needs COLOR_ATTACHMENT, ...).
+// - layout:
+//     The layout the image is in when the plugin's commands start. It must be a layout the
+//     image's format and usage can hold (a depth image cannot be in COLOR_ATTACHMENT_OPTIMAL).
+//     UNDEFINED only for inscatterOut, which the plugin overwrites; the other images are read.
+// - stages, access:
+//     The pipeline stages and access types of the engine's last use before the plugin (for
+//     example LATE_FRAGMENT_TESTS + DEPTH_STENCIL_ATTACHMENT_WRITE after a depth pass). The
+//     plugin's first barrier waits for them. The defaults wait for everything.
+// - arrayLayers:
+//     The layers the plugin reads and transitions (0 to arrayLayers - 1), all in `layout` at the
+//     start and left in `finalLayout`: 1 for every image but a point light's shadow map, which
+//     has 6 (its cube faces, Light::cubeFaceViewProjections; an image created cube-compatible or
+//     a plain 2D array, sampled as a 2D array).
+// - depth:
+//     A 3D image's extent in z (volumeOut); 1 for every other image.
+// - finalLayout:
+//     The layout the plugin leaves the image in (required; not UNDEFINED or PREINITIALIZED).
+// - finalStages, finalAccess:
+//     The engine's next use after the plugin: the plugin's last barrier makes its work visible to
+//     them. The defaults make it visible to everything.
+//
 // Stages and the VkImage handle may change from frame to frame at no cost. A different format,
 // extent (a resize), usage or layout selects another frame graph on the next record(): one
 // compiled the first time that configuration is met and kept after (the last 8), its textures in

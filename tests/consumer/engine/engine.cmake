@@ -1,4 +1,4 @@
-# The consumer engine, shared by both consumer projects: the README's integration example
+# The consumer engine, shared by both consumer projects: docs/integration.md's example
 # (tests/plugin/readme_example.cpp, compiled as the engine's own code) in a shared library of the
 # engine's, and the headless engine that runs it. The example's folder holds no lightscatter header:
 # lightscatter.h comes from the target, the installed tree or the source tree.

@@ -1,7 +1,7 @@
 // A headless Vulkan 1.3 "engine" written against lightscatter's public header alone, the way an
 // engine developer integrates the plugin: its own instance (with the Khronos validation layer and
 // synchronization validation), its own device made with the plugin's extensions and features, its
-// own images, command buffer, submission and fence. It runs the README's integration example
+// own images, command buffer, submission and fence. It runs docs/integration.md's example
 // (tests/plugin/readme_example.cpp) for two frames, reads each frame's report, and checks that
 // light came out. Any validation message, refusal or error fails it (exit code 1).
 #include <vulkan/vulkan.h>
@@ -211,7 +211,7 @@ int run() {
     if (!physical) throw std::runtime_error("no Vulkan 1.3 device");
     std::printf("device: %s\n", props.deviceName);
 
-    // [readme-device]
+    // [integration-device]
     // The device: the plugin's extensions and features, plus the engine's own.
     lightscatter::DeviceFeatures features = lightscatter::requiredDeviceFeatures();
     const std::vector<const char*> extensions = lightscatter::requiredDeviceExtensions();
@@ -233,7 +233,7 @@ int run() {
 
     Engine engine;
     engine.context = {instance, physical, device, queue, family, features.chain()};
-    // [readme-device]
+    // [integration-device]
 
     // The engine's images: depth and shadow map cleared to the far value (an empty scene, every
     // point lit), black HDR color.
@@ -293,8 +293,8 @@ int run() {
         VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
         begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
         VK(vkBeginCommandBuffer(cmd, &begin));
-        // The engine's frame: clear its images, leave them where the README's example says they
-        // are.
+        // The engine's frame: clear its images, leave them where docs/integration.md's example says
+        // they are.
         const VkImageLayout dst = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
         pipelineBarrier(
             cmd, {barrier(depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED, dst),

@@ -1,4 +1,4 @@
-// README.md quotes compiled code; this keeps each quote and the code identical.
+// docs/integration.md quotes compiled code; this keeps each quote and the code identical.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -15,7 +15,7 @@ std::string read(const std::string& path) {
 }
 
 // The block between two `    // [marker]` lines of `file`, less the 4 spaces of indentation the
-// function body adds (the README quotes it outside any function).
+// function body adds (the page quotes it outside any function).
 std::string block(const std::string& file, const std::string& name) {
     const std::string code = read(LS_SOURCE_DIR "/" + file);
     const std::string marker = "    // [" + name + "]\n";
@@ -33,14 +33,17 @@ std::string block(const std::string& file, const std::string& name) {
 
 }  // namespace
 
-TEST(Readme, QuotesTheCompiledIntegrationExample) {
-    const std::string quoted = block("tests/plugin/readme_example.cpp", "readme-example");
-    const std::string readme = read(LS_SOURCE_DIR "/README.md");
-    EXPECT_NE(readme.find(quoted), std::string::npos) << "README.md does not quote:\n" << quoted;
+TEST(IntegrationDoc, QuotesTheCompiledIntegrationExample) {
+    const std::string quoted = block("tests/plugin/readme_example.cpp", "integration-example");
+    const std::string page = read(LS_SOURCE_DIR "/docs/integration.md");
+    EXPECT_NE(page.find(quoted), std::string::npos) << "docs/integration.md does not quote:\n"
+                                                    << quoted;
 }
 
-TEST(Readme, QuotesTheCompiledDeviceCreation) {
-    const std::string quoted = block("tests/consumer/engine/headless_engine.cpp", "readme-device");
-    const std::string readme = read(LS_SOURCE_DIR "/README.md");
-    EXPECT_NE(readme.find(quoted), std::string::npos) << "README.md does not quote:\n" << quoted;
+TEST(IntegrationDoc, QuotesTheCompiledDeviceCreation) {
+    const std::string quoted =
+        block("tests/consumer/engine/headless_engine.cpp", "integration-device");
+    const std::string page = read(LS_SOURCE_DIR "/docs/integration.md");
+    EXPECT_NE(page.find(quoted), std::string::npos) << "docs/integration.md does not quote:\n"
+                                                    << quoted;
 }
