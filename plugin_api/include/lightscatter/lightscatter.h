@@ -18,7 +18,7 @@
 // device that lacks one.
 //
 // Linking: CMake target lightscatter::plugin, from find_package(lightscatter CONFIG) on an
-// installed tree or from add_subdirectory on the source tree (README.md, "Integrating the plugin").
+// installed tree or from add_subdirectory on the source tree. The guide: docs/integration.md.
 #include <vulkan/vulkan.h>
 
 #include <array>
