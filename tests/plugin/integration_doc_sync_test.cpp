@@ -53,8 +53,8 @@ TEST(IntegrationDoc, QuotesHelloShafts) {
     const std::string page = read(LS_SOURCE_DIR "/docs/integration.md");
     for (const char* name : {"device", "frame"}) {
         const std::string quoted = block("examples/hello_shafts/hello_shafts.cpp", name);
-        EXPECT_NE(page.find(quoted), std::string::npos) << "docs/integration.md does not quote "
-                                                        << name << ":\n"
-                                                        << quoted;
+        EXPECT_NE(page.find(quoted), std::string::npos)
+            << "docs/integration.md does not quote " << name << ":\n"
+            << quoted;
     }
 }
