@@ -616,11 +616,13 @@ struct BudgetLight {
 // whose method reads one adds its own point-light table. Refused (InvalidInput) where a frame
 // would be: a light its method cannot honour names lights[i]. Budget::lightMethods says the
 // method each light got. Seed 000's figures (Budget::seed) come with a frame of one light.
-LIGHTSCATTER_API Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
-                               uint32_t shadowMapSize,
-                               const std::vector<BudgetLight>& lights = {BudgetLight{
-                                   LightType::Spot, true, Method::Epipolar}},
-                               const Settings* custom = nullptr);
+// `colorFormat`: the engine's color (FrameDescription::color), a storage image where it is
+// R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT, else an attachment, which adds the split
+// composite's two screen textures.
+LIGHTSCATTER_API Budget budget(
+    Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint32_t shadowMapSize,
+    const std::vector<BudgetLight>& lights = {BudgetLight{LightType::Spot, true, Method::Epipolar}},
+    const Settings* custom = nullptr, VkFormat colorFormat = VK_FORMAT_R16G16B16A16_SFLOAT);
 
 // The device extensions the plugin needs; add them to VkDeviceCreateInfo::ppEnabledExtensionNames.
 LIGHTSCATTER_API std::vector<const char*> requiredDeviceExtensions();
