@@ -342,7 +342,7 @@ inline constexpr size_t kMaxOccluders = 4096;
 // chain of its own (its passes, its shadow map's trees; a one-per-frame method's lights share one
 // chain, but each is injected on its own), and for a point or spot light whose method reads one
 // its 512x256 RGBA32F table (2 MiB, kept across frames while the light is in use), so the cost
-// grows with each light; more are refused rather than exhausting the device (issue #22: 10,000
+// grows with each light; more are refused rather than exhausting the device (10,000
 // lights took the machine's memory).
 inline constexpr size_t kMaxLights = 64;
 
