@@ -177,9 +177,19 @@ struct Camera {
 
 struct Light {
     LightType type = LightType::Directional;
-    Vec3 position{0, 0, 0};  // point, spot; each in [-limits::kMaxLength, kMaxLength]
+    // Point, spot; each in [-limits::kMaxLength, kMaxLength]. Where a spot's shadowViewProjection
+    // is used (a shadow map, or a light color), the apex of that matrix (the point it maps to clip
+    // x = y = w = 0): within 1e-3 of the light's reach (the nearer of its range and the matrix's
+    // far plane, or 1000 times its near plane where it has no far plane, limits::kMaxLength where
+    // it has neither) plus 1e-5 of the position's distance from the origin (float32's rounding of
+    // the matrix), or the frame is refused naming light.position.
+    Vec3 position{0, 0, 0};
     // Direction light travels (directional), cone axis (spot): finite, not zero (normalised in
-    // double precision, so any such length will do).
+    // double precision, so any such length will do). Where shadowViewProjection is used, along its
+    // axis to 0.1 degrees, or the frame is refused naming light.direction: a spot's, the
+    // direction from the apex to the centre of clip space; a directional light's, the direction
+    // along which clip x and y stay, signed the way depth grows (falls with shadowReversedZ) with
+    // a shadow map, either way with a light color alone.
     Vec3 direction{0, -1, 0};
     // E (W/m^2) for directional, I (W/sr) for point and spot; each in [0, limits::kMaxIntensity].
     Vec3 intensity{1, 1, 1};
@@ -189,7 +199,11 @@ struct Light {
     // to 0 at outerConeAngleDegrees; inner = outer is a hard edge (a step). 89 degrees at most,
     // not KHR's 90: the methods clip a ray to the cone's lit nappe, which is convex only below 90
     // degrees, and at 90 its quadric degenerates to a plane. Each in
-    // [limits::kMinConeAngleDegrees, 89], inner <= outer.
+    // [limits::kMinConeAngleDegrees, 89], inner <= outer. With a shadow map, the cone of the
+    // outer angle lies inside shadowViewProjection's frustum (its four sides, x = +-w and y = +-w
+    // in clip space), passing none by more than 0.01 degrees, or the frame is refused naming
+    // light.outerConeAngleDegrees (KHR's angle is the half angle: a frustum's full field of view
+    // is twice it).
     float innerConeAngleDegrees = 30;
     float outerConeAngleDegrees = 30;
     // Point and spot: how far the light reaches (metres; 1e30: no range), ended as rangeFalloff
@@ -201,7 +215,10 @@ struct Light {
     // a directional or spot light's shadow map (a singular matrix, such as the all-zero default, is
     // refused); for a spot its frustum must contain the cone. Also required with a light color
     // and no shadow map: the color is projected with it (its sides; no near or far plane). Ignored
-    // for a point light.
+    // for a point light, and for a light with neither (a spot without a shadow map may leave it
+    // as it is). Where it is used it must be this light's, as the frame shows it: a spot's a
+    // perspective projection from `position` along `direction`, a directional light's one along
+    // `direction` (position, direction and outerConeAngleDegrees state the tolerances).
     Mat4 shadowViewProjection{};
     // A point light's cube shadow map (FrameDescription::shadowMap with 6 array layers, each
     // shadowMapSize x shadowMapSize): the world -> clip matrix of each face, in Vulkan's cube
