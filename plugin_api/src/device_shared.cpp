@@ -1,6 +1,7 @@
 #include "device_shared.h"
 
 #include "device_features.h"
+#include "vulkan_versions.h"
 
 #include <map>
 #include <memory>
@@ -31,7 +32,9 @@ const PluginCreateInfo& checked(const PluginCreateInfo& info) {
     if (!c.physicalDevice) null("physicalDevice");
     if (!c.device) null("device");
     if (!c.queue) null("queue");
-    detail::checkEnabledFeatures(c.enabledFeatures);
+    // Versions first: a device below 1.3 cannot enable what the feature check would ask for.
+    checkApiVersions(info);
+    checkEnabledFeatures(c.enabledFeatures);
     return info;
 }
 

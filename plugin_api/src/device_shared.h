@@ -8,7 +8,8 @@
 namespace lightscatter::detail {
 
 // The engine's device as the runtime takes it, from a creation checked before anything is made
-// from it (InvalidInput for a missing handle or feature, or framesInFlight out of its range).
+// from it (InvalidInput for a missing handle, a Vulkan version below 1.3 or a missing feature, or
+// framesInFlight out of its range).
 rg::ExternalDevice externalDevice(const PluginCreateInfo& info);
 
 // The device's shared state, made for the first plugin on it and kept while one lives. Plugins

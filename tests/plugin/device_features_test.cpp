@@ -1,10 +1,12 @@
 // The device contract without a GPU: the feature chain the plugin hands out, the one it fills in
-// for an engine, and the refusal of a context before any Vulkan call is made.
+// for an engine, and the refusal of a context before any Vulkan call beyond Vulkan 1.0's
+// vkGetPhysicalDeviceProperties is made.
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include <lightscatter/lightscatter.h>
+#include "fake_vulkan.h"
 
 namespace {
 
@@ -86,19 +88,24 @@ TEST(DeviceFeatures, AChainWithoutRoomIsRefusedAndLeftAlone) {
     EXPECT_FALSE(core.features.shaderStorageImageExtendedFormats);
 }
 
-// Refused before the plugin makes any Vulkan call, so fake handles do.
+// Refused before the plugin makes any Vulkan call but the device's version (Vulkan 1.0's
+// vkGetPhysicalDeviceProperties, which the fake answers), so fake handles do.
 TEST(DeviceFeatures, APluginOnADeviceWithoutAFeatureIsRefusedNamingIt) {
+    fake_vulkan::reset();
     lightscatter::DeviceFeatures f = lightscatter::requiredDeviceFeatures();
     f.vulkan13.maintenance4 = VK_FALSE;
     f.vulkan12.hostQueryReset = VK_FALSE;
-    lightscatter::VulkanContext c;
-    c.instance = reinterpret_cast<VkInstance>(uintptr_t{0x10});
-    c.physicalDevice = reinterpret_cast<VkPhysicalDevice>(uintptr_t{0x20});
-    c.device = reinterpret_cast<VkDevice>(uintptr_t{0x30});
-    c.queue = reinterpret_cast<VkQueue>(uintptr_t{0x40});
+    lightscatter::PluginCreateInfo info;
+    info.getInstanceProcAddr = fake_vulkan::getInstanceProcAddr();
+    lightscatter::VulkanContext& c = info.context;
+    c.instance = fake_vulkan::instance();
+    c.physicalDevice = fake_vulkan::physicalDevice();
+    c.device = fake_vulkan::logicalDevice();
+    c.queue = fake_vulkan::queue();
     c.enabledFeatures = f.chain();
+    c.apiVersion = VK_API_VERSION_1_3;
     try {
-        lightscatter::Plugin p(c);
+        lightscatter::Plugin p(info);
         ADD_FAILURE() << "accepted";
     } catch (const lightscatter::InvalidInput& e) {
         const std::string m = e.what();
@@ -120,7 +127,7 @@ TEST(DeviceFeatures, APluginOnADeviceWithoutAFeatureIsRefusedNamingIt) {
     f.vulkan13.dynamicRendering = VK_FALSE;
     c.enabledFeatures = f.chain();
     try {
-        lightscatter::Plugin p(c);
+        lightscatter::Plugin p(info);
         ADD_FAILURE() << "accepted";
     } catch (const lightscatter::InvalidInput& e) {
         const std::string m = e.what();
@@ -129,5 +136,7 @@ TEST(DeviceFeatures, APluginOnADeviceWithoutAFeatureIsRefusedNamingIt) {
         EXPECT_FALSE(contains(m, "hostQueryReset")) << m;
     }
     c.enabledFeatures = nullptr;
-    EXPECT_THROW(lightscatter::Plugin{c}, lightscatter::InvalidInput);
+    EXPECT_THROW(lightscatter::Plugin{info}, lightscatter::InvalidInput);
+    EXPECT_EQ(fake_vulkan::device().called,
+              std::vector<std::string>(3, "vkGetPhysicalDeviceProperties"));
 }

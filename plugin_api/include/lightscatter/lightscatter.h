@@ -10,9 +10,11 @@
 // single-scattered in-scattering and k the engine's pre-exposure (FrameDescription::preExposure,
 // 1 by default). Nothing else is done to the color: no tone mapping.
 //
-// Requirements on the engine's VkDevice: Vulkan 1.3, the extensions requiredDeviceExtensions()
-// lists (VK_KHR_push_descriptor) and the features requiredDeviceFeatures() turns on
-// (synchronization2, dynamicRendering, maintenance4; separateDepthStencilLayouts, hostQueryReset;
+// Requirements on the engine's VkInstance and VkDevice: Vulkan 1.3 (the instance created with
+// VkApplicationInfo::apiVersion 1.3 or later, told to the plugin in VulkanContext::apiVersion, on
+// a physical device that offers 1.3), the extensions requiredDeviceExtensions() lists
+// (VK_KHR_push_descriptor) and the features requiredDeviceFeatures() turns on (synchronization2,
+// dynamicRendering, maintenance4; separateDepthStencilLayouts, hostQueryReset;
 // shaderStorageImageExtendedFormats, shaderClipDistance, fragmentStoresAndAtomics). The engine
 // tells the plugin what it enabled (VulkanContext::enabledFeatures), and the plugin refuses a
 // device that lacks one.
@@ -636,6 +638,15 @@ struct VulkanContext {
     // Vulkan cannot be asked for afterwards. The Plugin constructor reads it (and keeps nothing)
     // and refuses, with InvalidInput naming them, features the plugin needs that are not enabled.
     const VkPhysicalDeviceFeatures2* enabledFeatures = nullptr;
+    // Required: the VkApplicationInfo::apiVersion the engine created `instance` with, which Vulkan
+    // cannot be asked for: VK_API_VERSION_1_3 or later, as the plugin calls Vulkan 1.3 (an instance
+    // created for 1.0 gives none of 1.1's to 1.3's entry points, whatever the device offers). The
+    // Plugin constructor refuses a lower version with InvalidInput naming context.apiVersion and
+    // the version found, before any Vulkan call; 0, the default, is refused the same way (it is
+    // both "not given" and what Vulkan reads as 1.0). The physical device must offer 1.3 too
+    // (VkPhysicalDeviceProperties::apiVersion, asked with Vulkan 1.0's call): refused naming
+    // context.physicalDevice and its version, before any Vulkan 1.1 call.
+    uint32_t apiVersion = 0;
 };
 
 // The most frames an engine may have in flight (PluginCreateInfo::framesInFlight).
@@ -716,8 +727,8 @@ class LIGHTSCATTER_API Plugin {
   public:
     using HeaderVersion = LIGHTSCATTER_VERSION_TAG(LIGHTSCATTER_VERSION_MAJOR,
                                                    LIGHTSCATTER_VERSION_MINOR);
-    // Throws InvalidInput for a context that lacks a handle or a feature (see VulkanContext), or
-    // framesInFlight out of its range.
+    // Throws InvalidInput for a context that lacks a handle, the Vulkan version or a feature (see
+    // VulkanContext), or framesInFlight out of its range.
     explicit Plugin(const PluginCreateInfo& info) : Plugin(info, HeaderVersion{}) {}
     // PluginCreateInfo{2, context}: two frames in flight.
     explicit Plugin(const VulkanContext& context);
