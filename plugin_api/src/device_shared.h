@@ -12,8 +12,9 @@ namespace lightscatter::detail {
 // framesInFlight out of its range).
 rg::ExternalDevice externalDevice(const PluginCreateInfo& info);
 
-// The device's shared state, made for the first plugin on it and kept while one lives. Plugins
-// that load Vulkan differently, or allocate differently, keep theirs apart.
-ls::Shared sharedFor(const rg::ExternalDevice& device);
+// The device's shared state, made for the first plugin on it and kept while one lives, with what
+// `info`'s context says of the device's optional features. Plugins that load Vulkan differently,
+// allocate differently, or are told of other optional features keep theirs apart.
+ls::Shared sharedFor(const PluginCreateInfo& info);
 
 }  // namespace lightscatter::detail

@@ -47,7 +47,7 @@ struct Plugin::Impl {
           framesInFlight(info.framesInFlight),
           maxRenderSize(info.maxRenderSize),
           store(device, retired),
-          graphs(device, caps, detail::sharedFor(detail::externalDevice(info)), retired, store),
+          graphs(device, caps, detail::sharedFor(info), retired, store),
           steps(device) {
         depthStencil = detail::stencilFormat(caps);
         coordinates = detail::coordinateFormat(caps);

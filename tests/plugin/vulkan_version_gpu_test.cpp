@@ -1,7 +1,9 @@
 // The device contract of issue #38 on the test device (lavapipe), under validation: an engine's
 // instance created for Vulkan 1.0 is refused with one line naming VkApplicationInfo::apiVersion and
 // the version, and the validation layer reports nothing (the plugin made no call beyond Vulkan
-// 1.0's: it used to call vkGetPhysicalDeviceProperties2, UNASSIGNED-API-Version-Violation).
+// 1.0's: it used to call vkGetPhysicalDeviceProperties2, UNASSIGNED-API-Version-Violation); the
+// queries of a physical device, and a device made the way an engine framework makes one, keeping
+// the core features and the pNext chain apart.
 #include <atomic>
 #include <cstring>
 #include <string>
@@ -11,6 +13,8 @@
 #include "rendergraph/vk_error.h"
 
 namespace vv {
+
+using Names = std::vector<std::string>;
 
 bool says(const std::string& text, const std::string& part) {
     return text.find(part) != std::string::npos;
@@ -146,6 +150,64 @@ TEST_F(VulkanVersionGpu, AVulkan10InstanceIsRefusedNamingItsVersionWithoutAValid
         const std::string u = vv::refusal(unset);
         EXPECT_TRUE(vv::says(u, "context.apiVersion is 0")) << u;
         EXPECT_TRUE(vv::says(u, "VkApplicationInfo::apiVersion")) << u;
+        // The query an engine picks a device with asks Vulkan 1.0 alone, and names the version.
+        EXPECT_EQ(
+            lightscatter::missingDeviceFeatures(engine.instance, engine.physical,
+                                                engine.app.apiVersion),
+            vv::Names{"VkApplicationInfo::apiVersion 1.3 or later (the instance's is 1.0.0)"});
     }
     EXPECT_EQ(vv::gMessages.load(), 0) << "the layer reported a call beyond the instance's version";
+}
+
+TEST_F(VulkanVersionGpu, TheTestDeviceLacksNothingAndIsAskedForDualSrcBlendWhereItHasIt) {
+    EXPECT_EQ(lightscatter::missingDeviceFeatures(dev().instance(), dev().physical(),
+                                                  dev().instanceApiVersion()),
+              vv::Names{});
+    VkPhysicalDeviceFeatures has;
+    vkGetPhysicalDeviceFeatures(dev().physical(), &has);
+    const lightscatter::DeviceFeatures f =
+        lightscatter::requiredDeviceFeatures(dev().instance(), dev().physical());
+    EXPECT_EQ(f.core.features.dualSrcBlend, has.dualSrcBlend);
+    std::printf("%s: dualSrcBlend %s\n", dev().name().c_str(), has.dualSrcBlend ? "yes" : "no");
+}
+
+// An engine framework's device creation (issue #38): it is given VkPhysicalDeviceFeatures and a
+// pNext chain, builds a VkPhysicalDeviceFeatures2 of its own inside device creation and lets it go.
+// The engine merges the plugin's needs into its two parts, and tells the plugin what it enabled
+// with a VkPhysicalDeviceFeatures2 of its own.
+TEST_F(VulkanVersionGpu, ADeviceMadeFromCoreFeaturesAndAChainApartIsAccepted) {
+    VkPhysicalDeviceFeatures core{};
+    VkPhysicalDeviceVulkan13Features v13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    VkPhysicalDeviceVulkan12Features v12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    v12.pNext = &v13;
+    lightscatter::mergeRequiredDeviceFeatures(core, &v12, dev().instance(), dev().physical());
+    const auto extensions = lightscatter::requiredDeviceExtensions();
+    VkDevice device = VK_NULL_HANDLE;
+    {
+        // The framework's own, gone once the device is made.
+        VkPhysicalDeviceFeatures2 inside{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+        inside.features = core;
+        inside.pNext = &v12;
+        const float priority = 1.0f;
+        VkDeviceQueueCreateInfo queue{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+        queue.queueFamilyIndex = dev().queueFamily();
+        queue.queueCount = 1;
+        queue.pQueuePriorities = &priority;
+        VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+        info.pNext = &inside;
+        info.queueCreateInfoCount = 1;
+        info.pQueueCreateInfos = &queue;
+        info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
+        info.ppEnabledExtensionNames = extensions.data();
+        RG_VK(vkCreateDevice(dev().physical(), &info, nullptr, &device));
+    }
+    VkQueue q;
+    vkGetDeviceQueue(device, dev().queueFamily(), 0, &q);
+    VkPhysicalDeviceFeatures2 enabled{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    enabled.features = core;
+    enabled.pNext = &v12;
+    EXPECT_EQ(vv::refusal({dev().instance(), dev().physical(), device, q, dev().queueFamily(),
+                           &enabled, dev().instanceApiVersion()}),
+              "(accepted)");
+    vkDestroyDevice(device, nullptr);
 }

@@ -17,7 +17,9 @@
 // dynamicRendering, maintenance4; separateDepthStencilLayouts, hostQueryReset;
 // shaderStorageImageExtendedFormats, shaderClipDistance, fragmentStoresAndAtomics). The engine
 // tells the plugin what it enabled (VulkanContext::enabledFeatures), and the plugin refuses a
-// device that lacks one.
+// device that lacks one. missingDeviceFeatures() says what a physical device lacks, before the
+// engine makes a device of it. Optional: dualSrcBlend, asked for by requiredDeviceFeatures() of a
+// physical device that has it; never required.
 //
 // Linking: CMake target lightscatter::plugin, from find_package(lightscatter CONFIG) on an
 // installed tree or from add_subdirectory on the source tree (README.md, "Integrating the plugin").
@@ -619,6 +621,14 @@ struct DeviceFeatures {
     VkPhysicalDeviceVulkan13Features vulkan13{};
 };
 LIGHTSCATTER_API DeviceFeatures requiredDeviceFeatures();
+// The same, with the optional features `physical` has turned on as well: dualSrcBlend (a
+// composite path that blends with two sources, taken where the device enabled it; the plugin never
+// requires it). Asks `physical` with vkGetPhysicalDeviceFeatures (Vulkan 1.0, of any instance)
+// through `getInstanceProcAddr` (null: the loader's, as PluginCreateInfo::getInstanceProcAddr);
+// throws DeviceError where there is no loader.
+LIGHTSCATTER_API DeviceFeatures
+requiredDeviceFeatures(VkInstance instance, VkPhysicalDevice physical,
+                       PFN_vkGetInstanceProcAddr getInstanceProcAddr = nullptr);
 
 // For an engine with a feature chain of its own: turns on, in that chain, every feature the plugin
 // needs and leaves the rest as it is. The chain must hold a structure for each
@@ -626,6 +636,44 @@ LIGHTSCATTER_API DeviceFeatures requiredDeviceFeatures();
 // VkPhysicalDeviceMaintenance4Features); throws InvalidInput naming the structure that is missing,
 // changing nothing.
 LIGHTSCATTER_API void enableRequiredDeviceFeatures(VkPhysicalDeviceFeatures2& features);
+
+// For an engine whose device creation takes the core features and the pNext chain apart (a
+// framework that is given a VkPhysicalDeviceFeatures and a pNext, and builds a
+// VkPhysicalDeviceFeatures2 of its own inside device creation): turns on, field by field, the
+// plugin's features in `core` and in the structures `pNext` chains, as enableRequiredDeviceFeatures
+// does, and leaves every other field, sType and pNext as it is. Throws InvalidInput naming each
+// structure the chain lacks (the plugin needs Vulkan 1.2's and 1.3's features: their versioned
+// structures, or each feature's own), changing nothing. Tell the plugin what was enabled all the
+// same (VulkanContext::enabledFeatures: a VkPhysicalDeviceFeatures2 of the engine's holding
+// `core`, its pNext `pNext`):
+//     lightscatter::mergeRequiredDeviceFeatures(enabledFeatures, &features12, instance, physical);
+//     ... createLogicalDevice(enabledFeatures, extensions, &features12);
+//     VkPhysicalDeviceFeatures2 enabled{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+//     enabled.features = enabledFeatures;
+//     enabled.pNext = &features12;  // the same chain, features12 -> features13 -> ...
+//     context.enabledFeatures = &enabled;  // read by the Plugin constructor, not kept
+LIGHTSCATTER_API void mergeRequiredDeviceFeatures(VkPhysicalDeviceFeatures& core, void* pNext);
+// The same, with the optional features `physical` has (requiredDeviceFeatures(instance, physical,
+// getInstanceProcAddr)) turned on in `core` too.
+LIGHTSCATTER_API void mergeRequiredDeviceFeatures(
+    VkPhysicalDeviceFeatures& core, void* pNext, VkInstance instance, VkPhysicalDevice physical,
+    PFN_vkGetInstanceProcAddr getInstanceProcAddr = nullptr);
+
+// What `physical` lacks of what the plugin requires, for an engine that picks a physical device
+// before it makes a device of it: one entry per lack, in this order, empty when it lacks nothing.
+//     "VkApplicationInfo::apiVersion 1.3 or later (the instance's is 1.0.0)"
+//     "Vulkan 1.3 (the device offers 1.2.189)"
+//     each extension of requiredDeviceExtensions() it does not offer, by name
+//     each feature requiredDeviceFeatures() turns on that it does not have, by its field's name
+//     "a queue family with graphics, compute and timestamps"
+// `instanceApiVersion` is the VkApplicationInfo::apiVersion `instance` was created with (Vulkan
+// cannot be asked for it; 0 is 1.0). Below 1.3 on either side only Vulkan 1.0 calls are made, so
+// the 1.1 to 1.3 features are neither asked for nor listed: the version's entry says what they
+// wait on. Optional features (dualSrcBlend) are never listed. Entry points come from
+// `getInstanceProcAddr` (null: the loader's); throws DeviceError where there is no loader.
+LIGHTSCATTER_API std::vector<std::string> missingDeviceFeatures(
+    VkInstance instance, VkPhysicalDevice physical, uint32_t instanceApiVersion,
+    PFN_vkGetInstanceProcAddr getInstanceProcAddr = nullptr);
 
 // The engine's Vulkan objects the plugin works with. The plugin never destroys them.
 struct VulkanContext {
@@ -637,6 +685,10 @@ struct VulkanContext {
     // Required: the feature chain the engine gave vkCreateDevice (VkDeviceCreateInfo::pNext), which
     // Vulkan cannot be asked for afterwards. The Plugin constructor reads it (and keeps nothing)
     // and refuses, with InvalidInput naming them, features the plugin needs that are not enabled.
+    // An engine that gave VkDeviceCreateInfo::pEnabledFeatures, or whose framework built the
+    // VkPhysicalDeviceFeatures2 and let it go, gives one of its own with the same features and
+    // chain (mergeRequiredDeviceFeatures shows how). Optional features (dualSrcBlend) are used
+    // where this chain turns them on.
     const VkPhysicalDeviceFeatures2* enabledFeatures = nullptr;
     // Required: the VkApplicationInfo::apiVersion the engine created `instance` with, which Vulkan
     // cannot be asked for: VK_API_VERSION_1_3 or later, as the plugin calls Vulkan 1.3 (an instance
