@@ -43,7 +43,7 @@
 // header and a library of different major.minor versions do not link (Plugin's constructor takes
 // a tag named for the header's version, which only the library of that version defines).
 #define LIGHTSCATTER_VERSION_MAJOR 0
-#define LIGHTSCATTER_VERSION_MINOR 4
+#define LIGHTSCATTER_VERSION_MINOR 5
 #define LIGHTSCATTER_VERSION_PATCH 0
 
 // What the library exports: everything declared with LIGHTSCATTER_API (a shared build exports
