@@ -47,3 +47,14 @@ TEST(IntegrationDoc, QuotesTheCompiledDeviceCreation) {
     EXPECT_NE(page.find(quoted), std::string::npos) << "docs/integration.md does not quote:\n"
                                                     << quoted;
 }
+
+// The quick start quotes hello_shafts, the example CI builds and runs.
+TEST(IntegrationDoc, QuotesHelloShafts) {
+    const std::string page = read(LS_SOURCE_DIR "/docs/integration.md");
+    for (const char* name : {"device", "frame"}) {
+        const std::string quoted = block("examples/hello_shafts/hello_shafts.cpp", name);
+        EXPECT_NE(page.find(quoted), std::string::npos)
+            << "docs/integration.md does not quote " << name << ":\n"
+            << quoted;
+    }
+}

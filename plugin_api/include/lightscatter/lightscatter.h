@@ -18,7 +18,7 @@
 // device that lacks one.
 //
 // Linking: CMake target lightscatter::plugin, from find_package(lightscatter CONFIG) on an
-// installed tree or from add_subdirectory on the source tree (README.md, "Integrating the plugin").
+// installed tree or from add_subdirectory on the source tree. The guide: docs/integration.md.
 #include <vulkan/vulkan.h>
 
 #include <array>
@@ -771,11 +771,14 @@ class LIGHTSCATTER_API Plugin {
     // recording state, outside any render pass. Returns the frame's number (1, 2, ...), which
     // report() takes once the engine's fence says the frame is done. Never waits, never submits.
     //
-    // Exception guarantee (record and render): if anything is thrown (InvalidInput, DeviceError,
-    // std::bad_alloc), nothing has been recorded into `cmd`, the engine's images are untouched, no
-    // Vulkan object is leaked, and the plugin is usable: a graph that failed to build is dropped
-    // and built again by the next call, which succeeds once memory is available again. Everything
-    // a frame creates (textures, pipelines) is created, and can fail, before `cmd` is touched.
+    // Exception guarantee (record and render): if InvalidInput or DeviceError is thrown, nothing
+    // has been recorded into `cmd`, the engine's images are untouched, no Vulkan object is leaked,
+    // and the plugin is usable: a graph that failed to build is dropped and built again by the next
+    // call, which succeeds once memory is available again. Everything a frame creates (textures,
+    // pipelines) is created, and can fail, before `cmd` is touched. std::bad_alloc (the host out
+    // of memory) gives the same guarantee while the frame is being built; thrown while commands are
+    // being recorded (their barriers and descriptor writes take host memory), `cmd` may hold part
+    // of the frame: reset it or drop it. No test makes the host run out of memory.
     uint64_t record(VkCommandBuffer cmd, const FrameDescription& frame);
     // Validates, records into the plugin's own command buffer, submits, waits, reports.
     FrameReport render(const FrameDescription& frame);
