@@ -28,6 +28,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "scene_frag.h"
@@ -37,7 +38,8 @@
 #include "ui_vert.h"
 #if LS_WITH_PLUGIN
 #include <lightscatter/lightscatter.h>
-#include "shaft_checks.h"  // the test's checks of the image, not part of the integration
+#include <bit>
+#include "shaft_checks.h"  // the test's checks of the image
 #endif
 
 namespace {
@@ -51,6 +53,8 @@ constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT_S8_UINT;
 constexpr VkFormat kShadowFormat = VK_FORMAT_D16_UNORM;
 constexpr VkImageUsageFlags kColorUsage =
     VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;  // a swapchain image's
+constexpr VkImageUsageFlags kDepthUsage =  // the plugin samples the depth
+    VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | (LS_WITH_PLUGIN ? VK_IMAGE_USAGE_SAMPLED_BIT : 0);
 constexpr VkImageUsageFlags kShadowUsage =
     VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
 
@@ -300,10 +304,7 @@ int run(const Options& options) {
     validation.pNext = &messengerInfo;
     VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
     app.pApplicationName = "render pass engine";
-    app.apiVersion = VK_API_VERSION_1_0;  // the framework's default
-#if LS_WITH_PLUGIN
-    app.apiVersion = VK_API_VERSION_1_3;  // the plugin's device is Vulkan 1.3
-#endif
+    app.apiVersion = LS_WITH_PLUGIN ? VK_API_VERSION_1_3 : VK_API_VERSION_1_0;  // the plugin: 1.3
     VkInstanceCreateInfo instanceInfo{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
     instanceInfo.pNext = &validation;
     instanceInfo.pApplicationInfo = &app;
@@ -333,40 +334,24 @@ int run(const Options& options) {
     std::vector<const char*> enabledDeviceExtensions;
     void* deviceCreatepNextChain = nullptr;
 #if LS_WITH_PLUGIN
-    // The plugin's features: its core ones into the example's, the rest ahead of its chain.
+    // The plugin's features: its core ones into the example's, its chain ahead of the example's.
     lightscatter::DeviceFeatures pluginFeatures = lightscatter::requiredDeviceFeatures();
-    VkBool32* wanted = &enabledFeatures.robustBufferAccess;
-    const VkBool32* needed = &pluginFeatures.core.features.robustBufferAccess;
-    for (size_t i = 0; i < sizeof(VkPhysicalDeviceFeatures) / sizeof(VkBool32); ++i)
-        wanted[i] = wanted[i] || needed[i];
-    pluginFeatures.vulkan13.pNext = deviceCreatepNextChain;
-    deviceCreatepNextChain = &pluginFeatures.vulkan11;
-    for (const char* e : lightscatter::requiredDeviceExtensions())
-        enabledDeviceExtensions.push_back(e);
+    auto* wanted = &enabledFeatures.robustBufferAccess;  // VkPhysicalDeviceFeatures: VkBool32s
+    for (size_t i = 0; i < sizeof enabledFeatures / sizeof *wanted; ++i)
+        wanted[i] |= (&pluginFeatures.core.features.robustBufferAccess)[i];
+    pluginFeatures.vulkan13.pNext = std::exchange(deviceCreatepNextChain, &pluginFeatures.vulkan11);
+    enabledDeviceExtensions = lightscatter::requiredDeviceExtensions();  // the example has none
 #endif
     vulkanDevice.createLogicalDevice(enabledFeatures, enabledDeviceExtensions,
                                      deviceCreatepNextChain);
     const VkDevice device = vulkanDevice.logicalDevice;
     VkQueue queue;
     vkGetDeviceQueue(device, vulkanDevice.graphicsFamily, 0, &queue);
-#if LS_WITH_PLUGIN
-    // The plugin is told what the device was created with: the framework's
-    // VkPhysicalDeviceFeatures2 is gone, so the same chain is rebuilt around the features it held.
-    pluginFeatures.core.features = enabledFeatures;
-    lightscatter::PluginCreateInfo pluginInfo;
-    pluginInfo.context = {instance, vulkanDevice.physicalDevice, device,
-                          queue,    vulkanDevice.graphicsFamily, pluginFeatures.chain()};
-    pluginInfo.framesInFlight = kFramesInFlight;
-    auto lightShafts = std::make_unique<lightscatter::Plugin>(pluginInfo);
-#endif
 
     // ---- Images ------------------------------------------------------------------------------
-    VkImageUsageFlags depthUsage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
-#if LS_WITH_PLUGIN
-    depthUsage |= VK_IMAGE_USAGE_SAMPLED_BIT;  // the plugin reads the camera's depth
-#endif
-    framework::Image depth = vulkanDevice.createImage(
-        kDepthFormat, kExtent, depthUsage, VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT);
+    framework::Image depth =
+        vulkanDevice.createImage(kDepthFormat, kExtent, kDepthUsage,
+                                 VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT);
     framework::Image shadowMap = vulkanDevice.createImage(
         kShadowFormat, {kShadowMapSize, kShadowMapSize}, kShadowUsage, VK_IMAGE_ASPECT_DEPTH_BIT);
     VkSamplerCreateInfo samplerInfo{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
@@ -487,20 +472,19 @@ int run(const Options& options) {
     renderPassInfo.dependencyCount = static_cast<uint32_t>(dependencies.size());
     renderPassInfo.pDependencies = dependencies.data();
 #if LS_WITH_PLUGIN
-    // The plugin records its own passes outside any render pass, so the engine's one pass splits
-    // in two around it: the scene's, which leaves the color and the stored depth to it, and the
-    // UI's (the UI is drawn over the shafts, not fogged), which loads the color.
+    // The plugin records between render passes: the scene's leaves it these, the UI's loads after.
     attachments[0].finalLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     attachments[1].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    VkRenderPass sceneRenderPass;
-    VK(vkCreateRenderPass(device, &renderPassInfo, nullptr, &sceneRenderPass));
-    attachments[0].loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-    attachments[0].initialLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    attachments[0].finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-    attachments[1].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
 #endif
     VkRenderPass renderPass;
     VK(vkCreateRenderPass(device, &renderPassInfo, nullptr, &renderPass));
+#if LS_WITH_PLUGIN
+    attachments[0].loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+    attachments[0].initialLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    attachments[0].finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    VkRenderPass uiRenderPass;  // compatible with the scene's: same framebuffers and pipelines
+    VK(vkCreateRenderPass(device, &renderPassInfo, nullptr, &uiRenderPass));
+#endif
 
     // ---- Pipelines ---------------------------------------------------------------------------
     std::array<VkDescriptorSetLayoutBinding, 2> bindings{};
@@ -664,24 +648,36 @@ int run(const Options& options) {
     uniforms.lightDirection = glm::vec4(lightDirection, std::cos(glm::radians(outerCone)));
     uniforms.lightColor = glm::vec4(lightColor, 0.1f);
 #if LS_WITH_PLUGIN
-    // The plugin's light is physical and the engine's has no units: shaftIntensity() gives the spot
-    // an intensity for a shaft of 0.08 (linear, the engine's color units) where it is seen, above
-    // the grille, across a beam 2.5 m wide, 13 m from the camera and 3 m from the light.
-    lightscatter::Medium medium;
-    medium.betaM = {0.005f, 0.005f, 0.005f};  // 1/m: a light haze
-    lightscatter::ShaftGoal goal;
-    goal.brightness = 0.08f;
-    goal.beamWidth = 2.5f;
-    goal.viewDistance = 13.0f;
-    goal.lightDistance = 3.0f;
-    goal.scatteringAngleDegrees = 85.0f;
-    const lightscatter::Vec3 shaft =
-        lightscatter::shaftIntensity(lightscatter::LightType::Spot, medium, goal);
-    auto toMat4 = [](const glm::mat4& m) {
-        lightscatter::Mat4 out;
-        std::memcpy(out.data(), &m[0][0], sizeof out);  // both column-major
-        return out;
-    };
+    pluginFeatures.core.features = enabledFeatures;  // the framework's VkPhysicalDeviceFeatures2
+    auto lightShafts = std::make_unique<lightscatter::Plugin>(
+        lightscatter::PluginCreateInfo{kFramesInFlight,
+                                       {instance, vulkanDevice.physicalDevice, device, queue,
+                                        vulkanDevice.graphicsFamily, pluginFeatures.chain()}});
+    lightscatter::FrameDescription frame;
+    frame.depth = {depth.image, kDepthFormat, kExtent, kDepthUsage,
+                   VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+    frame.depth.finalLayout = frame.depth.layout;
+    frame.shadowMap = {{shadowMap.image,
+                        kShadowFormat,
+                        {kShadowMapSize, kShadowMapSize},
+                        kShadowUsage,
+                        VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL}};
+    frame.shadowMap->finalLayout = frame.shadowMap->layout;
+    frame.camera.view = std::bit_cast<lightscatter::Mat4>(view);  // GLM's layout
+    frame.camera.projection = std::bit_cast<lightscatter::Mat4>(projection);
+    frame.light.type = lightscatter::LightType::Spot;
+    frame.light.position = std::bit_cast<lightscatter::Vec3>(lightPosition);
+    frame.light.direction = std::bit_cast<lightscatter::Vec3>(lightDirection);
+    frame.light.innerConeAngleDegrees = innerCone;
+    frame.light.outerConeAngleDegrees = outerCone;
+    frame.light.shadowViewProjection = std::bit_cast<lightscatter::Mat4>(lightViewProjection);
+    frame.light.shadowMapSize = kShadowMapSize;
+    frame.medium.betaM = {0.005f, 0.005f, 0.005f};  // 1/m: a light haze
+    // The engine's light has no units: the plugin's is as bright as a shaft of 0.08 needs, seen
+    // across a 2.5 m wide beam 13 m from the camera, 3 m from the light, at 85 degrees.
+    frame.light.intensity = lightscatter::shaftIntensity(frame.light.type, frame.medium,
+                                                         {0.08f, 2.5f, 13.0f, 3.0f, 85.0f});
+    for (int c = 0; c < 3; ++c) frame.light.intensity[c] *= lightColor[c];
 #endif
 
     // ---- Per frame in flight -----------------------------------------------------------------
@@ -786,9 +782,6 @@ int run(const Options& options) {
         passBegin.renderArea = {{0, 0}, kExtent};
         passBegin.clearValueCount = static_cast<uint32_t>(clears.size());
         passBegin.pClearValues = clears.data();
-#if LS_WITH_PLUGIN
-        passBegin.renderPass = sceneRenderPass;
-#endif
         vkCmdBeginRenderPass(f.cmd, &passBegin, VK_SUBPASS_CONTENTS_INLINE);
         viewport = {0, 0, float(kExtent.width), float(kExtent.height), 0, 1};
         vkCmdSetViewport(f.cmd, 0, 1, &viewport);
@@ -800,36 +793,14 @@ int run(const Options& options) {
         vkCmdDraw(f.cmd, static_cast<uint32_t>(vertices.size()), 1, 0, 0);
 #if LS_WITH_PLUGIN
         // Here: after the scene's render pass (the plugin reads its depth and blends into its
-        // color with passes of its own, which cannot run inside the engine's render pass), before
-        // the UI (which the fog must not cover) and before tone mapping, were there one (the
-        // plugin composites linear light).
+        // color with passes of its own, which cannot run inside a render pass), and before the UI
+        // (not to be fogged) and tone mapping, were there one (the plugin adds linear light).
         vkCmdEndRenderPass(f.cmd);
-        lightscatter::FrameDescription frame;
-        frame.depth = {depth.image, kDepthFormat, kExtent, depthUsage,
-                       VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
-        frame.depth.finalLayout = frame.depth.layout;
         frame.color = {f.swapchainImage.image, kColorFormat, kExtent, kColorUsage,
                        VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
         frame.color.finalLayout = frame.color.layout;
-        frame.shadowMap = lightscatter::ImageInput{shadowMap.image,
-                                                   kShadowFormat,
-                                                   {kShadowMapSize, kShadowMapSize},
-                                                   kShadowUsage,
-                                                   VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL};
-        frame.shadowMap->finalLayout = frame.shadowMap->layout;
-        frame.camera.view = toMat4(view);
-        frame.camera.projection = toMat4(projection);
-        frame.light.type = lightscatter::LightType::Spot;
-        frame.light.position = {lightPosition.x, lightPosition.y, lightPosition.z};
-        frame.light.direction = {lightDirection.x, lightDirection.y, lightDirection.z};
-        for (int c = 0; c < 3; ++c) frame.light.intensity[c] = shaft[c] * lightColor[c];
-        frame.light.innerConeAngleDegrees = innerCone;
-        frame.light.outerConeAngleDegrees = outerCone;
-        frame.light.shadowViewProjection = toMat4(lightViewProjection);
-        frame.light.shadowMapSize = kShadowMapSize;
-        frame.medium = medium;
         lightShafts->record(f.cmd, frame);
-        passBegin.renderPass = renderPass;
+        passBegin.renderPass = uiRenderPass;
         vkCmdBeginRenderPass(f.cmd, &passBegin, VK_SUBPASS_CONTENTS_INLINE);
 #endif
         vkCmdBindPipeline(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, uiPipeline);
@@ -862,15 +833,12 @@ int run(const Options& options) {
     const auto* image = static_cast<const uint8_t*>(last.readback.mapped);
     if (!options.write.empty()) writePpm(options.write, image, kExtent);
     int failures = 0;
-#if LS_WITH_PLUGIN
-    failures += shaft_checks::compare(image, kExtent, options.baseline, projection * view,
-                                      lightPosition, lightDirection, medium, 40.0f);
-#endif
 
     // ---- Shutdown ----------------------------------------------------------------------------
 #if LS_WITH_PLUGIN
+    failures += shaft_checks::compare(image, options.baseline, frame);  // the test's checks
     lightShafts.reset();  // before the device; every frame it recorded has completed
-    vkDestroyRenderPass(device, sceneRenderPass, nullptr);
+    vkDestroyRenderPass(device, uiRenderPass, nullptr);
 #endif
     for (PerFrame& f : frames) {
         vkDestroyFence(device, f.fence, nullptr);

@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -44,10 +45,18 @@ inline std::vector<uint8_t> readPpm(const std::string& path, VkExtent2D extent) 
     return rgb;
 }
 
-// `bgra`: the plugin build's last frame (B8G8R8A8_SRGB bytes). Returns the number of failed checks.
-inline int compare(const uint8_t* bgra, VkExtent2D extent, const std::string& baselinePath,
-                   const glm::mat4& viewProjection, glm::vec3 lightPosition,
-                   glm::vec3 lightDirection, const lightscatter::Medium& medium, float farPlane) {
+// `bgra`: the plugin build's last frame of `frame` (B8G8R8A8_SRGB bytes). Returns the number of
+// failed checks.
+inline int compare(const uint8_t* bgra, const std::string& baselinePath,
+                   const lightscatter::FrameDescription& frame) {
+    const VkExtent2D extent = frame.depth.extent;
+    const auto projection = std::bit_cast<glm::mat4>(frame.camera.projection);
+    const glm::mat4 viewProjection = projection * std::bit_cast<glm::mat4>(frame.camera.view);
+    const auto lightPosition = std::bit_cast<glm::vec3>(frame.light.position);
+    const auto lightDirection = glm::normalize(std::bit_cast<glm::vec3>(frame.light.direction));
+    const lightscatter::Medium& medium = frame.medium;
+    // The far plane of a [0, 1] depth perspective: m[3][2] / (m[2][2] + 1).
+    const float farPlane = projection[3][2] / (projection[2][2] + 1.0f);
     int failures = 0;
     auto fail = [&](const std::string& what) {
         std::fprintf(stderr, "FAILED: %s\n", what.c_str());
