@@ -173,9 +173,14 @@ Device::Device(const ExternalDevice& external) : echo_(false) {
     try {
         vk_.loadGlobal(external.getInstanceProcAddr);
         vk_.loadInstance(instance_);
-        loadProperties();
+        // Vulkan 1.0's call alone before the version is known: loadProperties() makes 1.1's.
+        vk_.GetPhysicalDeviceProperties(physical_, &properties_);
         if (properties_.apiVersion < VK_API_VERSION_1_3)
-            throw VulkanError("the engine's device '" + name() + "' does not offer Vulkan 1.3");
+            throw VulkanError("the engine's device '" + name() + "' offers Vulkan " +
+                              std::to_string(VK_API_VERSION_MAJOR(properties_.apiVersion)) + "." +
+                              std::to_string(VK_API_VERSION_MINOR(properties_.apiVersion)) +
+                              ", not 1.3 (VkPhysicalDeviceProperties::apiVersion)");
+        loadProperties();
         vk_.loadDevice(device_);
     } catch (...) {
         destroy();
@@ -227,6 +232,7 @@ void Device::createInstance(const DeviceOptions& options) {
     app.pApplicationName = "lightscatter";
     app.pEngineName = "lightscatter-rendergraph";
     app.apiVersion = VK_API_VERSION_1_3;
+    instanceApiVersion_ = app.apiVersion;
 
     VkDebugUtilsMessengerCreateInfoEXT messenger{
         VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};

@@ -65,6 +65,9 @@ class Device {
     // The host allocator every object of the runtime is made and destroyed with (null: Vulkan's).
     const VkAllocationCallbacks* allocator() const { return allocator_; }
     VkInstance instance() const { return instance_; }
+    // The VkApplicationInfo::apiVersion the instance was created with (VK_API_VERSION_1_3); 0 for
+    // an external device, whose instance only its creator knows.
+    uint32_t instanceApiVersion() const { return instanceApiVersion_; }
     VkPhysicalDevice physical() const { return physical_; }
     VkDevice device() const { return device_; }
     VkQueue queue() const { return queue_; }
@@ -126,6 +129,7 @@ class Device {
     VkQueue queue_ = VK_NULL_HANDLE;
     VkCommandPool oneShotPool_ = VK_NULL_HANDLE;
     uint32_t queueFamily_ = 0;
+    uint32_t instanceApiVersion_ = 0;
     uint32_t timestampBits_ = 0;
     VkPhysicalDeviceProperties properties_{};
     VkPhysicalDeviceMemoryProperties memory_{};

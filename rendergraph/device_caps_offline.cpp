@@ -38,6 +38,8 @@ VkFormatFeatureFlags2 OfflineDeviceCaps::optimalFeatures(VkFormat format) const 
         case VK_FORMAT_B8G8R8A8_UNORM:
         case VK_FORMAT_R8G8B8A8_SRGB:
         case VK_FORMAT_B8G8R8A8_SRGB:
+        case VK_FORMAT_B10G11R11_UFLOAT_PACK32:  // an engine's HDR target, blended into
+        case VK_FORMAT_A2B10G10R10_UNORM_PACK32:
             f = kSampled | kFilter | kColor | kBlend;
             break;
         case VK_FORMAT_R16G16_UNORM:

@@ -51,11 +51,17 @@ void VulkanFunctions::loadInstance(VkInstance instance) {
 #undef RG_VK_LOAD_OPTIONAL
 }
 
+// What is missing is said as what it is, core Vulkan or the extension's: vkGetDeviceProcAddr gives
+// a core function only where the instance's and the device's versions have it, and an extension's
+// only where the device enabled the extension, which no query tells afterwards.
 void VulkanFunctions::loadDevice(VkDevice device) {
 #define RG_VK_LOAD(name)                                                          \
     name = reinterpret_cast<PFN_vk##name>(GetDeviceProcAddr(device, "vk" #name)); \
-    if (!name) missing(#name, "vkGetDeviceProcAddr (is VK_KHR_push_descriptor enabled?)");
+    if (!name) missing(#name, from);
+    const char* from = "vkGetDeviceProcAddr of the device (a core Vulkan function)";
     RG_VK_DEVICE_FUNCTIONS(RG_VK_LOAD)
+    from = "vkGetDeviceProcAddr of the device (VK_KHR_push_descriptor's)";
+    RG_VK_PUSH_DESCRIPTOR_FUNCTIONS(RG_VK_LOAD)
 #undef RG_VK_LOAD
 }
 

@@ -37,7 +37,7 @@ namespace rg {
     X(CmdBeginDebugUtilsLabelEXT)      \
     X(CmdEndDebugUtilsLabelEXT)
 
-// Device-level entry points (core 1.3 and VK_KHR_push_descriptor).
+// Device-level entry points of core Vulkan (1.0 to 1.3).
 #define RG_VK_DEVICE_FUNCTIONS(X)        \
     X(DestroyDevice)                     \
     X(GetDeviceQueue)                    \
@@ -90,7 +90,6 @@ namespace rg {
     X(CmdEndRendering)                   \
     X(CmdBindPipeline)                   \
     X(CmdPushConstants)                  \
-    X(CmdPushDescriptorSetKHR)           \
     X(CmdSetViewport)                    \
     X(CmdSetScissor)                     \
     X(CmdSetStencilReference)            \
@@ -106,6 +105,9 @@ namespace rg {
     X(CmdResetQueryPool)                 \
     X(CmdWriteTimestamp2)
 
+// Device-level entry points of VK_KHR_push_descriptor.
+#define RG_VK_PUSH_DESCRIPTOR_FUNCTIONS(X) X(CmdPushDescriptorSetKHR)
+
 struct VulkanFunctions {
 #define RG_VK_MEMBER(name) PFN_vk##name name = nullptr;
     PFN_vkGetInstanceProcAddr GetInstanceProcAddr = nullptr;
@@ -113,6 +115,7 @@ struct VulkanFunctions {
     RG_VK_INSTANCE_FUNCTIONS(RG_VK_MEMBER)
     RG_VK_DEBUG_UTILS_FUNCTIONS(RG_VK_MEMBER)
     RG_VK_DEVICE_FUNCTIONS(RG_VK_MEMBER)
+    RG_VK_PUSH_DESCRIPTOR_FUNCTIONS(RG_VK_MEMBER)
 #undef RG_VK_MEMBER
 
     // Each throws VulkanError naming the first entry point the source does not give.

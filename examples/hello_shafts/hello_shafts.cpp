@@ -186,7 +186,7 @@ Vulkan createVulkan() {
     uint32_t count = 1;
     vkEnumeratePhysicalDevices(vk.instance, &count, &vk.physical);  // the first device will do
     // The plugin's extensions and features (dualSrcBlend where the device has it).
-    vk.features = lightscatter::requiredDeviceFeatures();
+    vk.features = lightscatter::requiredDeviceFeatures(vk.instance, vk.physical);
     const std::vector<const char*> extensions = lightscatter::requiredDeviceExtensions();
     const float priority = 1.0f;
     VkDeviceQueueCreateInfo queue{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
@@ -265,6 +265,7 @@ int main(int argc, char** argv) try {
     // The plugin, once: on the engine's device, two frames in flight (this engine has one).
     lightscatter::PluginCreateInfo info;
     info.context = {vk.instance, vk.physical, vk.device, vk.queue, vk.family, vk.features.chain()};
+    info.context.apiVersion = VK_API_VERSION_1_3;  // the instance's, which Vulkan cannot report
     auto shafts = std::make_unique<lightscatter::Plugin>(info);
 
     // Each frame: the engine's images as they stand, and where to leave them.

@@ -1,5 +1,6 @@
 // lightscatter budget [--method NAME] [--profile NAME|all] [--settings FILE.json]
-//   [--size WxH] [--shadow-map N] [--lights sun,spot:unshadowed,point:brute-force,...] [--json]
+//   [--size WxH] [--shadow-map N] [--lights sun,spot:unshadowed,point:brute-force,...]
+//   [--color FORMAT] [--json]
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
@@ -11,6 +12,7 @@
 #include <lightscatter/lightscatter.h>
 #include "command_options.h"
 #include "commands.h"
+#include "rendergraph/format_info.h"
 #include "settings_fields.h"
 #include "settings_file.h"
 
@@ -41,6 +43,23 @@ std::vector<const SettingField*> shownFields(lightscatter::Method method) {
                 if (f.profileSized) sized.push_back(own.back());
             }
     return sized.empty() ? own : sized;
+}
+
+// --color: the engine's color format by its Vulkan name less VK_FORMAT_, among those engines
+// render to.
+VkFormat parseColorFormat(const std::string& name) {
+    constexpr VkFormat kKnown[] = {
+        VK_FORMAT_R16G16B16A16_SFLOAT,     VK_FORMAT_R32G32B32A32_SFLOAT,
+        VK_FORMAT_B10G11R11_UFLOAT_PACK32, VK_FORMAT_A2B10G10R10_UNORM_PACK32,
+        VK_FORMAT_R8G8B8A8_UNORM,          VK_FORMAT_R8G8B8A8_SRGB,
+        VK_FORMAT_B8G8R8A8_UNORM,          VK_FORMAT_B8G8R8A8_SRGB};
+    std::vector<std::string> names;
+    for (VkFormat f : kKnown) {
+        names.push_back(rg::formatName(f));
+        if (names.back() == name) return f;
+    }
+    throw std::runtime_error("--color " + name + ": not a color format budget knows (" +
+                             joined(names) + ")");
 }
 
 // --lights: a comma-separated list of lights, each TYPE[:shadowed|:unshadowed][:METHOD], TYPE one
@@ -124,6 +143,7 @@ int runBudget(Args& args) {
     const VkExtent2D size = parseSize(args.take("--size", "2560x1600"), "--size");
     const std::string sm = args.take("--shadow-map", "");
     const LightList lightList = parseLights(args.take("--lights", "spot"));
+    const VkFormat color = parseColorFormat(args.take("--color", "R16G16B16A16_SFLOAT"));
     const bool json = args.flag("--json");
     args.finish();
     std::vector<lightscatter::Profile> profiles;
@@ -167,7 +187,7 @@ int runBudget(Args& args) {
         const lightscatter::Settings s = lightscatter::profileSettings(p, custom);
         const uint32_t shadow = shadowOverride ? shadowOverride : s.shadowMapSize;
         const lightscatter::Budget b =
-            lightscatter::budget(p, size.width, size.height, shadow, set, &custom);
+            lightscatter::budget(p, size.width, size.height, shadow, set, &custom, color);
         const std::string lightsText = lightsName(set, b.lightMethods, lightList.perLight);
         if (json) {
             nlohmann::json j;
@@ -178,6 +198,7 @@ int runBudget(Args& args) {
             for (const SettingField* f : shownFields(method))
                 j["settings"][f->name] = fieldJson(s, *f);
             j["shadowMapSize"] = shadow;
+            j["colorFormat"] = rg::formatName(color);
             j["lights"] = lightsText;
             j["lightMethods"] = b.lightMethods;
             j["estimated"] = b.estimated;

@@ -92,7 +92,7 @@ const std::array kCommands{
             "budget [--method NAME] [--profile NAME|all]\n"
             "                    [--settings FILE.json]\n"
             "                    [--size WxH] [--shadow-map N] [--lights LIST]\n"
-            "                    [--json]\n",
+            "                    [--color FORMAT] [--json]\n",
             "Prints a method's GPU memory per profile without a GPU.\n"
             "  --method NAME       any method or preset (default epipolar)\n"
             "  --profile NAME|all  one profile, or all of them (default)\n"
@@ -105,6 +105,10 @@ const std::array kCommands{
             "                      :METHOD (any method, auto by default, or --method\n"
             "                      where given): the set is then budgeted light by light,\n"
             "                      e.g. sun,spot:brute-force,point:unshadowed\n"
+            "  --color FORMAT      the engine's color, R16G16B16A16_SFLOAT by default (a\n"
+            "                      storage image); a format without storage, such as\n"
+            "                      B10G11R11_UFLOAT_PACK32 or R8G8B8A8_SRGB, adds the split\n"
+            "                      composite's two screen textures\n"
             "  --json              JSON instead of text\n"},
     Command{
         "graph",

@@ -131,7 +131,7 @@ EngineRenderer::EngineRenderer(const rg::Device& device, SceneDesc scene, const 
                     [&] { return std::make_unique<GpuMesh>(device, mesh); });
     plugin_ = std::make_unique<lightscatter::Plugin>(lightscatter::VulkanContext{
         device.instance(), device.physical(), device.device(), device.queue(), device.queueFamily(),
-        &device.enabledFeatures()});
+        &device.enabledFeatures(), device.instanceApiVersion()});
     VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
     pool.queueFamilyIndex = device.queueFamily();

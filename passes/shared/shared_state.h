@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "device_capabilities.h"
 #include "frame_constants.h"
 #include "rendergraph/pipeline.h"
 #include "rendergraph/pipeline_key.h"
@@ -52,14 +53,17 @@ class PipelineLibrary {
     std::map<rg::PipelineKey, rg::Pipeline> pipelines_;
 };
 
-// What every pass of every light shares: the device, its samplers and the pipelines built so far.
-// Nothing of a frame: a pass reads its frame's values from the host data it declared
-// (light_frame.h), and its shader options from its inputs, fixed when the graph is built.
+// What every pass of every light shares: the device, what of its optional features the engine
+// enabled, its samplers and the pipelines built so far. Nothing of a frame: a pass reads its
+// frame's values from the host data it declared (light_frame.h), and its shader options from its
+// inputs, fixed when the graph is built.
 struct SharedState {
-    explicit SharedState(const rg::Device& d) : device(d), samplers(d), pipelines(d) {}
+    explicit SharedState(const rg::Device& d, DeviceCapabilities c = {})
+        : device(d), capabilities(c), samplers(d), pipelines(d) {}
     SharedState(const SharedState&) = delete;
     SharedState& operator=(const SharedState&) = delete;
     const rg::Device& device;
+    const DeviceCapabilities capabilities;
     rg::Samplers samplers;
     PipelineLibrary pipelines;
 };

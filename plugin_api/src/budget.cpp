@@ -5,6 +5,7 @@
 #include <vector>
 
 #include <lightscatter/lightscatter.h>
+#include "color_target.h"
 #include "graph_config.h"
 #include "method_choice.h"
 #include "method_units.h"
@@ -14,13 +15,19 @@
 namespace lightscatter {
 namespace {
 
-// The engine's images as a typical engine hands them over (D32 depth, RGBA16F color).
-void describeEngineImages(detail::FrameImports& f, VkExtent2D screen) {
+// The engine's images as a typical engine hands them over: a D32 depth, and its color, a storage
+// image where its format allows, else a color attachment.
+void describeEngineImages(detail::FrameImports& f, VkExtent2D screen, VkFormat color) {
     const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     f.depth = {VK_FORMAT_D32_SFLOAT, screen,
                VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, ro, ro};
-    f.color = {VK_FORMAT_R16G16B16A16_SFLOAT, screen, VK_IMAGE_USAGE_STORAGE_BIT,
-               VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL};
+    if (detail::storageColor(color, VK_IMAGE_USAGE_STORAGE_BIT))
+        f.color = {color, screen, VK_IMAGE_USAGE_STORAGE_BIT, VK_IMAGE_LAYOUT_GENERAL,
+                   VK_IMAGE_LAYOUT_GENERAL};
+    else
+        f.color = {color, screen, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT,
+                   VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                   VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
 }
 
 uint64_t persistentBytes(const rg::OfflineDeviceCaps& caps, VkFormat format, VkExtent2D extent,
@@ -35,7 +42,8 @@ uint64_t persistentBytes(const rg::OfflineDeviceCaps& caps, VkFormat format, VkE
 }  // namespace
 
 Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint32_t shadowMapSize,
-              const std::vector<BudgetLight>& lights, const Settings* custom) {
+              const std::vector<BudgetLight>& lights, const Settings* custom,
+              VkFormat colorFormat) {
     if (lights.empty()) throw InvalidInput("lightscatter: budget lights: the list is empty");
     if (lights.size() > kMaxLights)
         throw InvalidInput("lightscatter: budget lights: " + std::to_string(lights.size()) +
@@ -47,6 +55,11 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
     if (shadowMapSize < 1 || shadowMapSize > 16384)
         throw InvalidInput("lightscatter: budget shadow-map size " + std::to_string(shadowMapSize) +
                            ": must be in [1, 16384]");
+    const rg::OfflineDeviceCaps model;
+    if (!detail::storageColor(colorFormat, VK_IMAGE_USAGE_STORAGE_BIT) &&
+        (model.optimalFeatures(colorFormat) & VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BLEND_BIT) == 0)
+        throw InvalidInput("lightscatter: budget color format " + rg::formatName(colorFormat) +
+                           ": not one a device blends into as a color attachment");
     // The settings a frame of this profile and custom runs with.
     const Settings s = profileSettings(profile, custom ? *custom : Settings{});
     checkSettings(s);
@@ -56,7 +69,7 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
     const VkExtent2D screen{screenWidth, screenHeight};
     detail::ValidatedFrame frame;
     detail::FrameImports images;
-    describeEngineImages(images, screen);
+    describeEngineImages(images, screen, colorFormat);
     std::vector<const ls::MethodUnit*> methods;
     for (size_t i = 0; i < lights.size(); ++i) {
         const LightType type = lights[i].type;

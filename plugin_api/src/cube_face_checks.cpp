@@ -33,10 +33,9 @@ glm::mat4 checkCubeFace(const Mat4& given, size_t i, const glm::vec3& light, boo
     const glm::mat4 m = matrix(given, field);
     const CubeFace& f = kCubeFaces[i];
     if (conditioning(m) < 1e-9)
-        fail(field +
-             " is singular (all zero?): a point light's shadow map needs each face's world -> clip "
-             "matrix (face " +
-             f.name + ")");
+        fail(field + " is singular" + (allZero(given) ? " (all zero)" : "") +
+             ": a point light's shadow map needs each face's world -> clip matrix (face " + f.name +
+             ")");
     checkMatrixScale(m, field);
     const glm::dmat4 d(m);
     const glm::dvec3 L(light);
@@ -48,14 +47,14 @@ glm::mat4 checkCubeFace(const Mat4& given, size_t i, const glm::vec3& light, boo
             const glm::dvec3 dir = f.axis + p.u * f.sc + p.v * f.tc;
             const glm::dvec4 c = d * glm::dvec4(L + dist * dir, 1.0);
             if (!(c.w > 0.0))
-                fail(field + " puts the point " + metres(dist) + " along " + f.name +
-                     " from light.position behind its camera (clip w " + num(c.w) + "): face " +
+                fail(field + " puts the point " + metres(dist) + " along " + f.name + " from " +
+                     at + ".position behind its camera (clip w " + num(c.w) + "): face " +
                      std::to_string(i) + " must look along " + f.name + " from the light");
             const double x = c.x / c.w, y = c.y / c.w;
             if (std::fabs(x - p.u) > 1e-3 || std::fabs(y - p.v) > 1e-3) {
                 if (p.u == 0 && p.v == 0)
-                    fail(field + " does not look along " + f.name +
-                         " from light.position: the axis " + metres(dist) + " out lands at clip " +
+                    fail(field + " does not look along " + f.name + " from " + at +
+                         ".position: the axis " + metres(dist) + " out lands at clip " +
                          ndcText(x, y) + ", not the centre (face order +X, -X, +Y, -Y, +Z, -Z)");
                 fail(field + " is not face " + f.name +
                      " as Vulkan samples a cube: a direction that must land at clip " +

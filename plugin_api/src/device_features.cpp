@@ -1,5 +1,6 @@
-// The device features the plugin needs: the chain an engine enables them with, and the check of
-// what an engine says it enabled (Vulkan has no query for a device's enabled features).
+// The device features the plugin needs: the chain an engine enables them with (or its own
+// structures, turned on field by field), the check of what an engine says it enabled (Vulkan has no
+// query for a device's enabled features), and the optional ones it uses where they are enabled.
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -70,6 +71,26 @@ const Need kNeeds[] = {
      "epipolar's unwarp and fix-up composite into the engine's color from fragment shaders"},
 };
 
+// Features the plugin asks for where the physical device has them, and uses where the engine
+// enabled them; never required. Each is a field of VkPhysicalDeviceFeatures.
+struct Optional {
+    const char* name;
+    size_t offset;
+};
+
+const Optional kOptional[] = {
+    // The composite's path that blends two sources (with the engine's color) in one draw.
+    {"dualSrcBlend", offsetof(VkPhysicalDeviceFeatures, dualSrcBlend)},
+};
+
+VkBool32& field(VkPhysicalDeviceFeatures& f, size_t offset) {
+    return *reinterpret_cast<VkBool32*>(reinterpret_cast<char*>(&f) + offset);
+}
+
+VkBool32 field(const VkPhysicalDeviceFeatures& f, size_t offset) {
+    return *reinterpret_cast<const VkBool32*>(reinterpret_cast<const char*>(&f) + offset);
+}
+
 template <typename Base>
 Base* find(Base* chain, VkStructureType type) {
     for (Base* s = chain; s; s = s->pNext)
@@ -77,8 +98,11 @@ Base* find(Base* chain, VkStructureType type) {
     return nullptr;
 }
 
-// The VkBool32 of `need` in `chain`, or null when the chain holds no structure for it.
-VkBool32* flag(VkBaseOutStructure* chain, const Need& need) {
+// The VkBool32 of `need` in `core` or in a structure of `chain`, or null when the chain holds no
+// structure for it.
+VkBool32* flag(VkPhysicalDeviceFeatures& core, VkBaseOutStructure* chain, const Need& need) {
+    if (need.versioned == VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2)
+        return &field(core, need.versionedOffset - kCoreOffset);
     if (auto* s = find(chain, need.versioned))
         return reinterpret_cast<VkBool32*>(reinterpret_cast<char*>(s) + need.versionedOffset);
     if (need.own == VK_STRUCTURE_TYPE_MAX_ENUM) return nullptr;
@@ -108,6 +132,27 @@ std::string holder(const Need& n) {
                      : std::string(n.versionedName);
 }
 
+// Turns on every need in `core` and the structures `pNext` chains, and the optional features
+// `has` has (null: none), or throws naming what the chain lacks, changing nothing.
+void merge(const char* function, VkPhysicalDeviceFeatures& core, void* pNext,
+           const VkPhysicalDeviceFeatures* has) {
+    auto* chain = static_cast<VkBaseOutStructure*>(pNext);
+    std::vector<VkBool32*> flags;
+    std::string missing;
+    for (const Need& n : kNeeds) {
+        flags.push_back(flag(core, chain, n));
+        if (!flags.back())
+            missing += (missing.empty() ? "" : "; ") + holder(n) + " (for " + n.name + ")";
+    }
+    if (!missing.empty())
+        throw InvalidInput(std::string("lightscatter: ") + function + ": the chain holds no " +
+                           missing +
+                           "; add it to the chain, or start from "
+                           "lightscatter::requiredDeviceFeatures()");
+    for (VkBool32* f : flags) *f = VK_TRUE;
+    if (has) detail::addOptionalFeatures(core, *has);
+}
+
 }  // namespace
 
 DeviceFeatures requiredDeviceFeatures() {
@@ -122,22 +167,39 @@ void enableRequiredDeviceFeatures(VkPhysicalDeviceFeatures2& features) {
         throw InvalidInput(
             "lightscatter: enableRequiredDeviceFeatures: features.sType is not "
             "VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2");
-    auto* chain = reinterpret_cast<VkBaseOutStructure*>(&features);
-    std::vector<VkBool32*> flags;
-    std::string missing;
-    for (const Need& n : kNeeds) {
-        flags.push_back(flag(chain, n));
-        if (!flags.back())
-            missing += (missing.empty() ? "" : "; ") + holder(n) + " (for " + n.name + ")";
-    }
-    if (!missing.empty())
-        throw InvalidInput(
-            "lightscatter: enableRequiredDeviceFeatures: the chain holds no " + missing +
-            "; add it to the chain, or start from lightscatter::requiredDeviceFeatures()");
-    for (VkBool32* f : flags) *f = VK_TRUE;
+    merge("enableRequiredDeviceFeatures", features.features, features.pNext, nullptr);
+}
+
+void mergeRequiredDeviceFeatures(VkPhysicalDeviceFeatures& core, void* pNext) {
+    merge("mergeRequiredDeviceFeatures", core, pNext, nullptr);
 }
 
 namespace detail {
+
+void mergeWithOptional(VkPhysicalDeviceFeatures& core, void* pNext,
+                       const VkPhysicalDeviceFeatures& has) {
+    merge("mergeRequiredDeviceFeatures", core, pNext, &has);
+}
+
+void addOptionalFeatures(VkPhysicalDeviceFeatures& core, const VkPhysicalDeviceFeatures& has) {
+    for (const Optional& o : kOptional)
+        if (field(has, o.offset)) field(core, o.offset) = VK_TRUE;
+}
+
+std::vector<std::string> featuresOff(const VkPhysicalDeviceFeatures2& chain, bool coreOnly) {
+    std::vector<std::string> off;
+    for (const Need& n : kNeeds) {
+        if (coreOnly && n.versioned != VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2) continue;
+        if (!turnedOn(reinterpret_cast<const VkBaseInStructure*>(&chain), n)) off.push_back(n.name);
+    }
+    return off;
+}
+
+ls::DeviceCapabilities enabledCapabilities(const VkPhysicalDeviceFeatures2& enabled) {
+    ls::DeviceCapabilities c;
+    c.dualSourceBlend = enabled.features.dualSrcBlend == VK_TRUE;
+    return c;
+}
 
 void checkEnabledFeatures(const VkPhysicalDeviceFeatures2* enabled) {
     if (!enabled)

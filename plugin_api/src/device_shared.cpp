@@ -1,6 +1,7 @@
 #include "device_shared.h"
 
 #include "device_features.h"
+#include "vulkan_versions.h"
 
 #include <map>
 #include <memory>
@@ -12,7 +13,8 @@ namespace {
 
 // A wrapper of the device of its own, so that it outlives any one plugin.
 struct DeviceShared {
-    explicit DeviceShared(const rg::ExternalDevice& d) : device(d), state(device) {}
+    DeviceShared(const rg::ExternalDevice& d, ls::DeviceCapabilities c)
+        : device(d), state(device, c) {}
     rg::Device device;
     ls::SharedState state;
 };
@@ -31,7 +33,9 @@ const PluginCreateInfo& checked(const PluginCreateInfo& info) {
     if (!c.physicalDevice) null("physicalDevice");
     if (!c.device) null("device");
     if (!c.queue) null("queue");
-    detail::checkEnabledFeatures(c.enabledFeatures);
+    // Versions first: a device below 1.3 cannot enable what the feature check would ask for.
+    checkApiVersions(info);
+    checkEnabledFeatures(c.enabledFeatures);
     return info;
 }
 
@@ -43,15 +47,17 @@ rg::ExternalDevice externalDevice(const PluginCreateInfo& info) {
             c.queueFamily, info.getInstanceProcAddr, info.allocator};
 }
 
-ls::Shared sharedFor(const rg::ExternalDevice& d) {
-    using Key = std::tuple<VkDevice, PFN_vkGetInstanceProcAddr, const VkAllocationCallbacks*>;
+ls::Shared sharedFor(const PluginCreateInfo& info) {
+    const rg::ExternalDevice d = externalDevice(info);
+    const ls::DeviceCapabilities capabilities = enabledCapabilities(*info.context.enabledFeatures);
+    using Key = std::tuple<VkDevice, PFN_vkGetInstanceProcAddr, const VkAllocationCallbacks*, bool>;
     static std::mutex mutex;
     static std::map<Key, std::weak_ptr<DeviceShared>> devices;
     std::lock_guard lock(mutex);
-    const Key key{d.device, d.getInstanceProcAddr, d.allocator};
+    const Key key{d.device, d.getInstanceProcAddr, d.allocator, capabilities.dualSourceBlend};
     std::shared_ptr<DeviceShared> found = devices[key].lock();
     if (!found) {
-        found = std::make_shared<DeviceShared>(d);
+        found = std::make_shared<DeviceShared>(d, capabilities);
         devices[key] = found;
         // Devices of plugins all gone are forgotten (a handle may be reused for a new device).
         std::erase_if(devices, [](const auto& entry) { return entry.second.expired(); });

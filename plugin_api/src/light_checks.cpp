@@ -6,6 +6,7 @@
 #include "cube_face_checks.h"
 #include "field_checks.h"
 #include "image_checks.h"
+#include "light_projection_checks.h"
 #include "matrix_checks.h"
 
 namespace lightscatter::detail {
@@ -72,14 +73,25 @@ void setupLight(ls::LightSetup& s, const LightInput& light, const LightPaths& at
         // An all-zero (default) or otherwise singular matrix puts every point at one texel and
         // depth: the light would silently vanish or light everything.
         if (conditioning(s.light.shadowViewProj) < 1e-9)
-            fail(at.light + ".shadowViewProjection is singular (all zero?): " +
+            fail(at.light + ".shadowViewProjection is singular" +
+                 (allZero(l.shadowViewProjection) ? " (all zero)" : "") + ": " +
                  (l.shadowMapSize > 0
-                      ? "with light.shadowMapSize " + std::to_string(l.shadowMapSize) +
+                      ? "with " + at.light + ".shadowMapSize " + std::to_string(l.shadowMapSize) +
                             " it must be the shadow map's world -> light clip matrix"
                       : "with " + at.lightColor +
                             " it must be the world -> light clip matrix the color is projected "
                             "with"));
         checkMatrixScale(s.light.shadowViewProj, at.light + ".shadowViewProjection");
+        // Where the matrix is used, it must be this light's: its apex, axis and frustum.
+        ProjectedLight projected;
+        projected.type = l.type;
+        projected.position = glm::dvec3(s.light.position);
+        projected.direction = glm::normalize(glm::dvec3(s.light.direction));
+        projected.outerConeAngleDegrees = l.outerConeAngleDegrees;
+        projected.range = l.range;
+        projected.shadowed = l.shadowMapSize > 0;
+        projected.shadowReversedZ = l.shadowReversedZ;
+        checkLightProjection(s.light.shadowViewProj, projected, at.light);
     }
 
     // The light's images.

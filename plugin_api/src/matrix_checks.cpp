@@ -16,6 +16,10 @@ glm::mat4 matrix(const Mat4& m, const std::string& field) {
     return glm::make_mat4(m.data());
 }
 
+bool allZero(const Mat4& m) {
+    return std::all_of(m.begin(), m.end(), [](float v) { return v == 0.0f; });
+}
+
 double conditioning(const glm::dmat4& d) {
     double rows = 1.0;
     for (int r = 0; r < 4; ++r) rows *= glm::length(glm::dvec4(d[0][r], d[1][r], d[2][r], d[3][r]));

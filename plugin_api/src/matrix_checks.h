@@ -11,6 +11,9 @@ namespace lightscatter::detail {
 // `m` as GLM reads it, every element finite.
 glm::mat4 matrix(const Mat4& m, const std::string& field);
 
+// Every element 0: the default of an engine that never set the matrix.
+bool allZero(const Mat4& m);
+
 // How far a matrix is from singular: |det| over the product of its rows' lengths (Hadamard's
 // bound), 1 for orthogonal rows, 0 for a singular matrix; scale-free, so metres or kilometres do
 // not matter.

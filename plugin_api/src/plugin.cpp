@@ -9,6 +9,7 @@
 
 #include <lightscatter/lightscatter.h>
 #include "color_target.h"
+#include "device_features.h"
 #include "device_shared.h"
 #include "frame_reports.h"
 #include "frame_setup.h"
@@ -48,12 +49,12 @@ struct Plugin::Impl {
           framesInFlight(info.framesInFlight),
           maxRenderSize(info.maxRenderSize),
           store(device, retired),
-          graphs(device, caps, detail::sharedFor(detail::externalDevice(info)), retired, store),
+          graphs(device, caps, detail::sharedFor(info), retired, store),
           steps(device) {
         depthStencil = detail::stencilFormat(caps);
         coordinates = detail::coordinateFormat(caps);
-        // Checked by device(): the chain starts with a VkPhysicalDeviceFeatures2.
-        dualSourceBlend = info.context.enabledFeatures->features.dualSrcBlend == VK_TRUE;
+        dualSourceBlend =
+            detail::enabledCapabilities(*info.context.enabledFeatures).dualSourceBlend;
         if (depthStencil == VK_FORMAT_UNDEFINED)
             throw std::runtime_error(
                 "lightscatter: the device has no depth-stencil format with stencil");

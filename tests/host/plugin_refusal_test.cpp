@@ -51,12 +51,12 @@ TEST(HostPluginRefusal, ALightOfTheListIsNamedAsTheSceneNamesIt) {
     EXPECT_EQ(
         host::pluginRefusalInSceneTerms(
             "lightscatter: lights[0]: lights[0].light.shadowViewProjection "
-            "is singular (all zero?): with lights[0].light.shadowMapSize 2048 "
+            "is singular (all zero): with lights[0].light.shadowMapSize 2048 "
             "it must be the shadow map's world -> light clip matrix",
             "s.json"),
         "s.json: the shadow map's projection made from lights[0] and the scene's bounds is "
         "singular "
-        "(all zero?): with lights[0].shadowMapSize 2048 it must be the shadow map's world -> light "
+        "(all zero): with lights[0].shadowMapSize 2048 it must be the shadow map's world -> light "
         "clip matrix (refused by the plugin)");
     EXPECT_EQ(
         host::pluginRefusalInSceneTerms(

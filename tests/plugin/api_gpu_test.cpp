@@ -146,8 +146,8 @@ TEST_F(PluginApiGpu, CheckRefusesWhatRecordRefusesAndBuildsNothing) {
     auto desc = frame.description(Method::Epipolar, lightscatter::Profile::Custom,
                                   smallSettings(frame.spec().screen));
     const rg::Device& d = dev();
-    lightscatter::Plugin fresh(
-        {d.instance(), d.physical(), d.device(), d.queue(), d.queueFamily(), &d.enabledFeatures()});
+    lightscatter::Plugin fresh({d.instance(), d.physical(), d.device(), d.queue(), d.queueFamily(),
+                                &d.enabledFeatures(), d.instanceApiVersion()});
     EXPECT_NO_THROW(fresh.check(desc));
     EXPECT_EQ(fresh.report().frame, 0u);
     EXPECT_EQ(fresh.graphDot(), "");

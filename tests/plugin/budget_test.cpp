@@ -129,6 +129,38 @@ TEST(Budget, BadRequestsAreRefused) {
     }
 }
 
+// A color the plugin cannot write in place (an attachment of B10G11R11, an 8-bit sRGB target) adds
+// the split composite's two screen textures, float16 (float32 for a float32 color without STORAGE
+// is not budgeted: budget() takes a float32 color as a storage image); a format no device blends
+// into is refused.
+TEST(Budget, AnAttachmentColorAddsTheSplitCompositesTextures) {
+    const auto lights = lightsOf({lightscatter::LightType::Spot});
+    const auto storage = lightscatter::budget(Profile::Balanced, 1920, 1080, 2048, lights);
+    for (const VkFormat color : {VK_FORMAT_B10G11R11_UFLOAT_PACK32, VK_FORMAT_R8G8B8A8_SRGB}) {
+        const auto split =
+            lightscatter::budget(Profile::Balanced, 1920, 1080, 2048, lights, nullptr, color);
+        size_t added = 0;
+        uint64_t addedBytes = 0;
+        for (const auto& e : split.entries)
+            if (e.name.rfind("split composite", 0) == 0) {
+                ++added;
+                addedBytes += e.bytes;
+                EXPECT_EQ(e.format, "R16G16B16A16_SFLOAT");
+                EXPECT_EQ(e.width, 1920u);
+                EXPECT_EQ(e.height, 1080u);
+                EXPECT_GE(e.bytes, 1920ull * 1080 * 8);  // aligned as the device model says
+            }
+        EXPECT_EQ(added, 2u);
+        EXPECT_EQ(split.totalBytes, storage.totalBytes + addedBytes);
+        EXPECT_GT(split.peakBytes, storage.peakBytes);
+    }
+    for (const auto& e : storage.entries)
+        EXPECT_EQ(e.name.rfind("split composite", 0), std::string::npos);
+    EXPECT_THROW(lightscatter::budget(Profile::Balanced, 1920, 1080, 2048, lights, nullptr,
+                                      VK_FORMAT_R8G8B8A8_UINT),
+                 lightscatter::InvalidInput);
+}
+
 // Several lights: the chains run one after the other, so the second light's transients reuse the
 // first's memory; the peak with two lights stays well below twice the peak with one.
 TEST(Budget, LightsAliasEachOther) {

@@ -248,7 +248,7 @@ TEST_F(CookieGpu, ACookieWithoutAShadowMapNeedsItsProjection) {
         ADD_FAILURE() << "a zero shadowViewProjection was accepted";
     } catch (const lightscatter::InvalidInput& e) {
         EXPECT_EQ(std::string(e.what()),
-                  "lightscatter: light.shadowViewProjection is singular (all zero?): with "
+                  "lightscatter: light.shadowViewProjection is singular (all zero): with "
                   "lightColor it must be the world -> light clip matrix the color is projected "
                   "with");
     }

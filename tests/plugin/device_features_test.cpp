@@ -1,10 +1,13 @@
 // The device contract without a GPU: the feature chain the plugin hands out, the one it fills in
-// for an engine, and the refusal of a context before any Vulkan call is made.
+// for an engine (a chain, or core features and a pNext kept apart), and the refusal of a context
+// before any Vulkan call beyond Vulkan 1.0's vkGetPhysicalDeviceProperties is made.
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include <lightscatter/lightscatter.h>
+#include "device_features.h"  // plugin_api/src: what the passes are told of optional features
+#include "fake_vulkan.h"
 
 namespace {
 
@@ -86,19 +89,24 @@ TEST(DeviceFeatures, AChainWithoutRoomIsRefusedAndLeftAlone) {
     EXPECT_FALSE(core.features.shaderStorageImageExtendedFormats);
 }
 
-// Refused before the plugin makes any Vulkan call, so fake handles do.
+// Refused before the plugin makes any Vulkan call but the device's version (Vulkan 1.0's
+// vkGetPhysicalDeviceProperties, which the fake answers), so fake handles do.
 TEST(DeviceFeatures, APluginOnADeviceWithoutAFeatureIsRefusedNamingIt) {
+    fake_vulkan::reset();
     lightscatter::DeviceFeatures f = lightscatter::requiredDeviceFeatures();
     f.vulkan13.maintenance4 = VK_FALSE;
     f.vulkan12.hostQueryReset = VK_FALSE;
-    lightscatter::VulkanContext c;
-    c.instance = reinterpret_cast<VkInstance>(uintptr_t{0x10});
-    c.physicalDevice = reinterpret_cast<VkPhysicalDevice>(uintptr_t{0x20});
-    c.device = reinterpret_cast<VkDevice>(uintptr_t{0x30});
-    c.queue = reinterpret_cast<VkQueue>(uintptr_t{0x40});
+    lightscatter::PluginCreateInfo info;
+    info.getInstanceProcAddr = fake_vulkan::getInstanceProcAddr();
+    lightscatter::VulkanContext& c = info.context;
+    c.instance = fake_vulkan::instance();
+    c.physicalDevice = fake_vulkan::physicalDevice();
+    c.device = fake_vulkan::logicalDevice();
+    c.queue = fake_vulkan::queue();
     c.enabledFeatures = f.chain();
+    c.apiVersion = VK_API_VERSION_1_3;
     try {
-        lightscatter::Plugin p(c);
+        lightscatter::Plugin p(info);
         ADD_FAILURE() << "accepted";
     } catch (const lightscatter::InvalidInput& e) {
         const std::string m = e.what();
@@ -120,7 +128,7 @@ TEST(DeviceFeatures, APluginOnADeviceWithoutAFeatureIsRefusedNamingIt) {
     f.vulkan13.dynamicRendering = VK_FALSE;
     c.enabledFeatures = f.chain();
     try {
-        lightscatter::Plugin p(c);
+        lightscatter::Plugin p(info);
         ADD_FAILURE() << "accepted";
     } catch (const lightscatter::InvalidInput& e) {
         const std::string m = e.what();
@@ -129,5 +137,81 @@ TEST(DeviceFeatures, APluginOnADeviceWithoutAFeatureIsRefusedNamingIt) {
         EXPECT_FALSE(contains(m, "hostQueryReset")) << m;
     }
     c.enabledFeatures = nullptr;
-    EXPECT_THROW(lightscatter::Plugin{c}, lightscatter::InvalidInput);
+    EXPECT_THROW(lightscatter::Plugin{info}, lightscatter::InvalidInput);
+    EXPECT_EQ(fake_vulkan::device().called,
+              std::vector<std::string>(3, "vkGetPhysicalDeviceProperties"));
+}
+
+// An engine whose framework takes VkPhysicalDeviceFeatures and a pNext apart (issue #38: it builds
+// its own VkPhysicalDeviceFeatures2 inside device creation and lets it go): each of the plugin's
+// features is turned on where the engine keeps it, and nothing else changes.
+TEST(DeviceFeatures, CoreFeaturesAndAChainKeptApartAreMergedFieldByField) {
+    VkPhysicalDeviceFeatures core{};
+    core.geometryShader = VK_TRUE;  // the engine's own
+    VkPhysicalDeviceVulkan13Features v13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    VkPhysicalDeviceVulkan12Features v12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    v12.timelineSemaphore = VK_TRUE;  // the engine's own
+    v12.pNext = &v13;
+    lightscatter::mergeRequiredDeviceFeatures(core, &v12);
+    EXPECT_TRUE(core.geometryShader);
+    EXPECT_TRUE(core.shaderStorageImageExtendedFormats && core.shaderClipDistance &&
+                core.fragmentStoresAndAtomics);
+    EXPECT_FALSE(core.dualSrcBlend) << "optional: asked for only of a device that has it";
+    EXPECT_FALSE(core.tessellationShader);
+    EXPECT_TRUE(v12.timelineSemaphore);
+    EXPECT_TRUE(v12.separateDepthStencilLayouts && v12.hostQueryReset);
+    EXPECT_FALSE(v12.bufferDeviceAddress);
+    EXPECT_TRUE(v13.synchronization2 && v13.dynamicRendering && v13.maintenance4);
+    EXPECT_EQ(v12.pNext, &v13);
+    EXPECT_EQ(v13.pNext, nullptr);
+    // What the engine then hands the plugin: the same features and chain as one
+    // VkPhysicalDeviceFeatures2, which lacks nothing.
+    VkPhysicalDeviceFeatures2 enabled{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    enabled.features = core;
+    enabled.pNext = &v12;
+    EXPECT_TRUE(lightscatter::detail::featuresOff(enabled, false).empty());
+    // Per-feature structures take the features as the versioned ones do.
+    VkPhysicalDeviceFeatures core2{};
+    VkPhysicalDeviceMaintenance4Features m4{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_4_FEATURES};
+    VkPhysicalDeviceVulkan13Features v13b{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    VkPhysicalDeviceVulkan12Features v12b{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    m4.pNext = &v12b;
+    v12b.pNext = &v13b;
+    lightscatter::mergeRequiredDeviceFeatures(core2, &m4);
+    EXPECT_TRUE(v13b.maintenance4);  // the versioned structure first, as Vulkan reads both
+    EXPECT_TRUE(v12b.hostQueryReset);
+}
+
+TEST(DeviceFeatures, AMergeWithoutRoomIsRefusedAndChangesNothing) {
+    VkPhysicalDeviceFeatures core{};
+    VkPhysicalDeviceVulkan13Features v13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    try {
+        lightscatter::mergeRequiredDeviceFeatures(core, &v13);
+        ADD_FAILURE() << "a chain without Vulkan 1.2's features was completed";
+    } catch (const lightscatter::InvalidInput& e) {
+        const std::string m = e.what();
+        EXPECT_TRUE(contains(m,
+                             "mergeRequiredDeviceFeatures: the chain holds no "
+                             "VkPhysicalDeviceVulkan12Features or "
+                             "VkPhysicalDeviceSeparateDepthStencilLayoutsFeatures"))
+            << m;
+        EXPECT_TRUE(contains(m, "(for hostQueryReset)")) << m;
+        EXPECT_FALSE(contains(m, "synchronization2")) << m;
+    }
+    EXPECT_FALSE(core.shaderClipDistance);
+    EXPECT_FALSE(v13.synchronization2);
+    EXPECT_THROW(lightscatter::mergeRequiredDeviceFeatures(core, nullptr),
+                 lightscatter::InvalidInput);
+    EXPECT_FALSE(core.shaderClipDistance);
+}
+
+// What the passes may use: dualSrcBlend where the engine's chain turns it on, never required.
+TEST(DeviceFeatures, TheEnabledChainSaysWhetherDualSourceBlendingMayBeUsed) {
+    lightscatter::DeviceFeatures f = lightscatter::requiredDeviceFeatures();
+    EXPECT_FALSE(lightscatter::detail::enabledCapabilities(*f.chain()).dualSourceBlend);
+    EXPECT_TRUE(lightscatter::detail::featuresOff(*f.chain(), false).empty())
+        << "required without it";
+    f.core.features.dualSrcBlend = VK_TRUE;
+    EXPECT_TRUE(lightscatter::detail::enabledCapabilities(*f.chain()).dualSourceBlend);
 }

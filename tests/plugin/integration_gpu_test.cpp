@@ -120,8 +120,9 @@ TEST_F(PluginIntegrationGpu, TheFeatureChainCreatesADeviceThePluginAccepts) {
     RG_VK(vkCreateDevice(dev().physical(), &info, nullptr, &device));
     VkQueue q;
     vkGetDeviceQueue(device, dev().queueFamily(), 0, &q);
-    EXPECT_NO_THROW(lightscatter::Plugin(
-        {dev().instance(), dev().physical(), device, q, dev().queueFamily(), features.chain()}));
+    EXPECT_NO_THROW(
+        lightscatter::Plugin({dev().instance(), dev().physical(), device, q, dev().queueFamily(),
+                              features.chain(), dev().instanceApiVersion()}));
     vkDestroyDevice(device, nullptr);
 }
 
@@ -164,7 +165,8 @@ TEST_F(PluginIntegrationGpu, ADeviceWithoutARequiredFeatureIsRefusedNamingIt) {
         vkGetDeviceQueue(device, dev().queueFamily(), 0, &q);
         try {
             lightscatter::Plugin p({dev().instance(), dev().physical(), device, q,
-                                    dev().queueFamily(), features.chain()});
+                                    dev().queueFamily(), features.chain(),
+                                    dev().instanceApiVersion()});
             ADD_FAILURE() << "a device without " << c.feature << " was accepted";
         } catch (const lightscatter::InvalidInput& e) {
             EXPECT_TRUE(contains(e.what(), "context.enabledFeatures")) << e.what();
@@ -177,15 +179,15 @@ TEST_F(PluginIntegrationGpu, ADeviceWithoutARequiredFeatureIsRefusedNamingIt) {
 TEST_F(PluginIntegrationGpu, AContextWithoutItsFeatureChainIsRefused) {
     const rg::Device& d = dev();
     try {
-        lightscatter::Plugin p(
-            {d.instance(), d.physical(), d.device(), d.queue(), d.queueFamily()});
+        lightscatter::Plugin p({d.instance(), d.physical(), d.device(), d.queue(), d.queueFamily(),
+                                nullptr, d.instanceApiVersion()});
         ADD_FAILURE() << "a context without enabledFeatures was accepted";
     } catch (const lightscatter::InvalidInput& e) {
         EXPECT_TRUE(contains(e.what(), "context.enabledFeatures is null")) << e.what();
     }
     try {
         lightscatter::Plugin p({d.instance(), d.physical(), VK_NULL_HANDLE, d.queue(),
-                                d.queueFamily(), &d.enabledFeatures()});
+                                d.queueFamily(), &d.enabledFeatures(), d.instanceApiVersion()});
         ADD_FAILURE() << "a context without a device was accepted";
     } catch (const lightscatter::InvalidInput& e) {
         EXPECT_TRUE(contains(e.what(), "context.device")) << e.what();

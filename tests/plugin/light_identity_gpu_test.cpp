@@ -19,8 +19,8 @@ using lightscatter::Method;
 using lightscatter::Profile;
 
 lightscatter::VulkanContext contextOf(const rg::Device& d) {
-    return {d.instance(), d.physical(),    d.device(),
-            d.queue(),    d.queueFamily(), &d.enabledFeatures()};
+    return {d.instance(),         d.physical(),          d.device(), d.queue(), d.queueFamily(),
+            &d.enabledFeatures(), d.instanceApiVersion()};
 }
 
 // Three spots over the grille, each its own color and place, all with the frame's shadow map.
@@ -38,7 +38,8 @@ std::vector<lightscatter::Light> spots() {
 // `d` with its light replaced by these lights, in this order, each with id `ids[k]` (none where
 // `ids` is empty). Each is another chain: the first with the frame's shadow map, the second without
 // one, the third with it and brute force, so that the lights' places in a graph are not
-// interchangeable (the shadow map is one image; each light's matrix is the frame's).
+// interchangeable (the shadow map is one image, drawn from the first light; each light's matrix is
+// its own, from its position along its direction, as the plugin requires).
 lightscatter::FrameDescription withLights(lightscatter::FrameDescription d,
                                           const std::vector<lightscatter::Light>& lights,
                                           const std::vector<size_t>& order,
@@ -46,7 +47,8 @@ lightscatter::FrameDescription withLights(lightscatter::FrameDescription d,
     d.lights.clear();
     for (size_t k : order) {
         lightscatter::LightInput in{lights[k], d.shadowMap, std::nullopt};
-        in.light.shadowViewProjection = d.light.shadowViewProjection;
+        in.light.shadowViewProjection = k == 0 ? d.light.shadowViewProjection
+                                               : toMat4(spotShadowMatrix(lights[k], 0.5f, 30.0f));
         if (k == 1) {
             in.shadowMap.reset();
             in.light.shadowMapSize = 0;

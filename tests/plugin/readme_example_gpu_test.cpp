@@ -35,8 +35,13 @@ TEST_F(ReadmeExampleGpu, RendersShaftsIntoTheEnginesColor) {
     VkCommandBuffer cmd;
     RG_VK(vkAllocateCommandBuffers(dev().device(), &alloc, &cmd));
     Engine engine;
-    engine.context = {dev().instance(), dev().physical(),    dev().device(),
-                      dev().queue(),    dev().queueFamily(), &dev().enabledFeatures()};
+    engine.context = {dev().instance(),
+                      dev().physical(),
+                      dev().device(),
+                      dev().queue(),
+                      dev().queueFamily(),
+                      &dev().enabledFeatures(),
+                      dev().instanceApiVersion()};
     engine.commandBuffer = cmd;
     engine.extent = extent;
     engine.depth = depth.image();

@@ -107,8 +107,13 @@ TEST(RecycledHandleGpu, AnImageMadeAgainWithTheSameHandleIsANewImage) {
     rg::Device device(options);
     {
         lightscatter::PluginCreateInfo info;
-        info.context = {device.instance(), device.physical(),    device.device(),
-                        device.queue(),    device.queueFamily(), &device.enabledFeatures()};
+        info.context = {device.instance(),
+                        device.physical(),
+                        device.device(),
+                        device.queue(),
+                        device.queueFamily(),
+                        &device.enabledFeatures(),
+                        device.instanceApiVersion()};
         info.allocator = pool.callbacks();
         lightscatter::Plugin engines(info);
         TestFrame frame(device, sceneWith(spotOverGrille(), {48, 32}));

@@ -10,12 +10,16 @@
 // single-scattered in-scattering and k the engine's pre-exposure (FrameDescription::preExposure,
 // 1 by default). Nothing else is done to the color: no tone mapping.
 //
-// Requirements on the engine's VkDevice: Vulkan 1.3, the extensions requiredDeviceExtensions()
-// lists (VK_KHR_push_descriptor) and the features requiredDeviceFeatures() turns on
-// (synchronization2, dynamicRendering, maintenance4; separateDepthStencilLayouts, hostQueryReset;
+// Requirements on the engine's VkInstance and VkDevice: Vulkan 1.3 (the instance created with
+// VkApplicationInfo::apiVersion 1.3 or later, told to the plugin in VulkanContext::apiVersion, on
+// a physical device that offers 1.3), the extensions requiredDeviceExtensions() lists
+// (VK_KHR_push_descriptor) and the features requiredDeviceFeatures() turns on (synchronization2,
+// dynamicRendering, maintenance4; separateDepthStencilLayouts, hostQueryReset;
 // shaderStorageImageExtendedFormats, shaderClipDistance, fragmentStoresAndAtomics). The engine
 // tells the plugin what it enabled (VulkanContext::enabledFeatures), and the plugin refuses a
-// device that lacks one.
+// device that lacks one. missingDeviceFeatures() says what a physical device lacks, before the
+// engine makes a device of it. Optional: dualSrcBlend, asked for by requiredDeviceFeatures() of a
+// physical device that has it; never required.
 //
 // Linking: CMake target lightscatter::plugin, from find_package(lightscatter CONFIG) on an
 // installed tree or from add_subdirectory on the source tree. The guide: docs/integration.md.
@@ -39,7 +43,7 @@
 // header and a library of different major.minor versions do not link (Plugin's constructor takes
 // a tag named for the header's version, which only the library of that version defines).
 #define LIGHTSCATTER_VERSION_MAJOR 0
-#define LIGHTSCATTER_VERSION_MINOR 4
+#define LIGHTSCATTER_VERSION_MINOR 5
 #define LIGHTSCATTER_VERSION_PATCH 0
 
 // What the library exports: everything declared with LIGHTSCATTER_API (a shared build exports
@@ -177,9 +181,19 @@ struct Camera {
 
 struct Light {
     LightType type = LightType::Directional;
-    Vec3 position{0, 0, 0};  // point, spot; each in [-limits::kMaxLength, kMaxLength]
+    // Point, spot; each in [-limits::kMaxLength, kMaxLength]. Where a spot's shadowViewProjection
+    // is used (a shadow map, or a light color), the apex of that matrix (the point it maps to clip
+    // x = y = w = 0): within 1e-3 of the light's reach (the nearer of its range and the matrix's
+    // far plane, or 1000 times its near plane where it has no far plane, limits::kMaxLength where
+    // it has neither) plus 1e-5 of the position's distance from the origin (float32's rounding of
+    // the matrix), or the frame is refused naming light.position.
+    Vec3 position{0, 0, 0};
     // Direction light travels (directional), cone axis (spot): finite, not zero (normalised in
-    // double precision, so any such length will do).
+    // double precision, so any such length will do). Where shadowViewProjection is used, along its
+    // axis to 0.1 degrees, or the frame is refused naming light.direction: a spot's, the
+    // direction from the apex to the centre of clip space; a directional light's, the direction
+    // along which clip x and y stay, signed the way depth grows (falls with shadowReversedZ) with
+    // a shadow map, either way with a light color alone.
     Vec3 direction{0, -1, 0};
     // E (W/m^2) for directional, I (W/sr) for point and spot; each in [0, limits::kMaxIntensity].
     Vec3 intensity{1, 1, 1};
@@ -189,7 +203,11 @@ struct Light {
     // to 0 at outerConeAngleDegrees; inner = outer is a hard edge (a step). 89 degrees at most,
     // not KHR's 90: the methods clip a ray to the cone's lit nappe, which is convex only below 90
     // degrees, and at 90 its quadric degenerates to a plane. Each in
-    // [limits::kMinConeAngleDegrees, 89], inner <= outer.
+    // [limits::kMinConeAngleDegrees, 89], inner <= outer. With a shadow map, the cone of the
+    // outer angle lies inside shadowViewProjection's frustum (its four sides, x = +-w and y = +-w
+    // in clip space), passing none by more than 0.01 degrees, or the frame is refused naming
+    // light.outerConeAngleDegrees (KHR's angle is the half angle: a frustum's full field of view
+    // is twice it).
     float innerConeAngleDegrees = 30;
     float outerConeAngleDegrees = 30;
     // Point and spot: how far the light reaches (metres; 1e30: no range), ended as rangeFalloff
@@ -201,7 +219,10 @@ struct Light {
     // a directional or spot light's shadow map (a singular matrix, such as the all-zero default, is
     // refused); for a spot its frustum must contain the cone. Also required with a light color
     // and no shadow map: the color is projected with it (its sides; no near or far plane). Ignored
-    // for a point light.
+    // for a point light, and for a light with neither (a spot without a shadow map may leave it
+    // as it is). Where it is used it must be this light's, as the frame shows it: a spot's a
+    // perspective projection from `position` along `direction`, a directional light's one along
+    // `direction` (position, direction and outerConeAngleDegrees state the tolerances).
     Mat4 shadowViewProjection{};
     // A point light's cube shadow map (FrameDescription::shadowMap with 6 array layers, each
     // shadowMapSize x shadowMapSize): the world -> clip matrix of each face, in Vulkan's cube
@@ -342,7 +363,7 @@ inline constexpr size_t kMaxOccluders = 4096;
 // chain of its own (its passes, its shadow map's trees; a one-per-frame method's lights share one
 // chain, but each is injected on its own), and for a point or spot light whose method reads one
 // its 512x256 RGBA32F table (2 MiB, kept across frames while the light is in use), so the cost
-// grows with each light; more are refused rather than exhausting the device (issue #22: 10,000
+// grows with each light; more are refused rather than exhausting the device (10,000
 // lights took the machine's memory).
 inline constexpr size_t kMaxLights = 64;
 
@@ -616,11 +637,13 @@ struct BudgetLight {
 // whose method reads one adds its own point-light table. Refused (InvalidInput) where a frame
 // would be: a light its method cannot honour names lights[i]. Budget::lightMethods says the
 // method each light got. Seed 000's figures (Budget::seed) come with a frame of one light.
-LIGHTSCATTER_API Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight,
-                               uint32_t shadowMapSize,
-                               const std::vector<BudgetLight>& lights = {BudgetLight{
-                                   LightType::Spot, true, Method::Epipolar}},
-                               const Settings* custom = nullptr);
+// `colorFormat`: the engine's color (FrameDescription::color), a storage image where it is
+// R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT, else an attachment, which adds the split
+// composite's two screen textures.
+LIGHTSCATTER_API Budget budget(
+    Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint32_t shadowMapSize,
+    const std::vector<BudgetLight>& lights = {BudgetLight{LightType::Spot, true, Method::Epipolar}},
+    const Settings* custom = nullptr, VkFormat colorFormat = VK_FORMAT_R16G16B16A16_SFLOAT);
 
 // The device extensions the plugin needs; add them to VkDeviceCreateInfo::ppEnabledExtensionNames.
 LIGHTSCATTER_API std::vector<const char*> requiredDeviceExtensions();
@@ -652,6 +675,14 @@ struct DeviceFeatures {
     VkPhysicalDeviceVulkan13Features vulkan13{};
 };
 LIGHTSCATTER_API DeviceFeatures requiredDeviceFeatures();
+// The same, with the optional features `physical` has turned on as well: dualSrcBlend (a
+// composite path that blends with two sources, taken where the device enabled it; the plugin never
+// requires it). Asks `physical` with vkGetPhysicalDeviceFeatures (Vulkan 1.0, of any instance)
+// through `getInstanceProcAddr` (null: the loader's, as PluginCreateInfo::getInstanceProcAddr);
+// throws DeviceError where there is no loader.
+LIGHTSCATTER_API DeviceFeatures
+requiredDeviceFeatures(VkInstance instance, VkPhysicalDevice physical,
+                       PFN_vkGetInstanceProcAddr getInstanceProcAddr = nullptr);
 
 // For an engine with a feature chain of its own: turns on, in that chain, every feature the plugin
 // needs and leaves the rest as it is. The chain must hold a structure for each
@@ -659,6 +690,44 @@ LIGHTSCATTER_API DeviceFeatures requiredDeviceFeatures();
 // VkPhysicalDeviceMaintenance4Features); throws InvalidInput naming the structure that is missing,
 // changing nothing.
 LIGHTSCATTER_API void enableRequiredDeviceFeatures(VkPhysicalDeviceFeatures2& features);
+
+// For an engine whose device creation takes the core features and the pNext chain apart (a
+// framework that is given a VkPhysicalDeviceFeatures and a pNext, and builds a
+// VkPhysicalDeviceFeatures2 of its own inside device creation): turns on, field by field, the
+// plugin's features in `core` and in the structures `pNext` chains, as enableRequiredDeviceFeatures
+// does, and leaves every other field, sType and pNext as it is. Throws InvalidInput naming each
+// structure the chain lacks (the plugin needs Vulkan 1.2's and 1.3's features: their versioned
+// structures, or each feature's own), changing nothing. Tell the plugin what was enabled all the
+// same (VulkanContext::enabledFeatures: a VkPhysicalDeviceFeatures2 of the engine's holding
+// `core`, its pNext `pNext`):
+//     lightscatter::mergeRequiredDeviceFeatures(enabledFeatures, &features12, instance, physical);
+//     ... createLogicalDevice(enabledFeatures, extensions, &features12);
+//     VkPhysicalDeviceFeatures2 enabled{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+//     enabled.features = enabledFeatures;
+//     enabled.pNext = &features12;  // the same chain, features12 -> features13 -> ...
+//     context.enabledFeatures = &enabled;  // read by the Plugin constructor, not kept
+LIGHTSCATTER_API void mergeRequiredDeviceFeatures(VkPhysicalDeviceFeatures& core, void* pNext);
+// The same, with the optional features `physical` has (requiredDeviceFeatures(instance, physical,
+// getInstanceProcAddr)) turned on in `core` too.
+LIGHTSCATTER_API void mergeRequiredDeviceFeatures(
+    VkPhysicalDeviceFeatures& core, void* pNext, VkInstance instance, VkPhysicalDevice physical,
+    PFN_vkGetInstanceProcAddr getInstanceProcAddr = nullptr);
+
+// What `physical` lacks of what the plugin requires, for an engine that picks a physical device
+// before it makes a device of it: one entry per lack, in this order, empty when it lacks nothing.
+//     "VkApplicationInfo::apiVersion 1.3 or later (the instance's is 1.0.0)"
+//     "Vulkan 1.3 (the device offers 1.2.189)"
+//     each extension of requiredDeviceExtensions() it does not offer, by name
+//     each feature requiredDeviceFeatures() turns on that it does not have, by its field's name
+//     "a queue family with graphics, compute and timestamps"
+// `instanceApiVersion` is the VkApplicationInfo::apiVersion `instance` was created with (Vulkan
+// cannot be asked for it; 0 is 1.0). Below 1.3 on either side only Vulkan 1.0 calls are made, so
+// the 1.1 to 1.3 features are neither asked for nor listed: the version's entry says what they
+// wait on. Optional features (dualSrcBlend) are never listed. Entry points come from
+// `getInstanceProcAddr` (null: the loader's); throws DeviceError where there is no loader.
+LIGHTSCATTER_API std::vector<std::string> missingDeviceFeatures(
+    VkInstance instance, VkPhysicalDevice physical, uint32_t instanceApiVersion,
+    PFN_vkGetInstanceProcAddr getInstanceProcAddr = nullptr);
 
 // The engine's Vulkan objects the plugin works with. The plugin never destroys them.
 struct VulkanContext {
@@ -670,7 +739,20 @@ struct VulkanContext {
     // Required: the feature chain the engine gave vkCreateDevice (VkDeviceCreateInfo::pNext), which
     // Vulkan cannot be asked for afterwards. The Plugin constructor reads it (and keeps nothing)
     // and refuses, with InvalidInput naming them, features the plugin needs that are not enabled.
+    // An engine that gave VkDeviceCreateInfo::pEnabledFeatures, or whose framework built the
+    // VkPhysicalDeviceFeatures2 and let it go, gives one of its own with the same features and
+    // chain (mergeRequiredDeviceFeatures shows how). Optional features (dualSrcBlend) are used
+    // where this chain turns them on.
     const VkPhysicalDeviceFeatures2* enabledFeatures = nullptr;
+    // Required: the VkApplicationInfo::apiVersion the engine created `instance` with, which Vulkan
+    // cannot be asked for: VK_API_VERSION_1_3 or later, as the plugin calls Vulkan 1.3 (an instance
+    // created for 1.0 gives none of 1.1's to 1.3's entry points, whatever the device offers). The
+    // Plugin constructor refuses a lower version with InvalidInput naming context.apiVersion and
+    // the version found, before any Vulkan call; 0, the default, is refused the same way (it is
+    // both "not given" and what Vulkan reads as 1.0). The physical device must offer 1.3 too
+    // (VkPhysicalDeviceProperties::apiVersion, asked with Vulkan 1.0's call): refused naming
+    // context.physicalDevice and its version, before any Vulkan 1.1 call.
+    uint32_t apiVersion = 0;
 };
 
 // The most frames an engine may have in flight (PluginCreateInfo::framesInFlight).
@@ -756,8 +838,8 @@ class LIGHTSCATTER_API Plugin {
   public:
     using HeaderVersion = LIGHTSCATTER_VERSION_TAG(LIGHTSCATTER_VERSION_MAJOR,
                                                    LIGHTSCATTER_VERSION_MINOR);
-    // Throws InvalidInput for a context that lacks a handle or a feature (see VulkanContext), or
-    // framesInFlight out of its range.
+    // Throws InvalidInput for a context that lacks a handle, the Vulkan version or a feature (see
+    // VulkanContext), or framesInFlight out of its range.
     explicit Plugin(const PluginCreateInfo& info) : Plugin(info, HeaderVersion{}) {}
     // PluginCreateInfo{2, context}: two frames in flight.
     explicit Plugin(const VulkanContext& context);

@@ -232,7 +232,9 @@ int run() {
     vkGetDeviceQueue(device, family, 0, &queue);
 
     Engine engine;
-    engine.context = {instance, physical, device, queue, family, features.chain()};
+    // With the VkApplicationInfo::apiVersion the instance was created with (`app` above), which
+    // Vulkan cannot be asked for.
+    engine.context = {instance, physical, device, queue, family, features.chain(), app.apiVersion};
     // [integration-device]
 
     // The engine's images: depth and shadow map cleared to the far value (an empty scene, every

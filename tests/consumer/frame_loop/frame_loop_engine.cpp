@@ -131,10 +131,11 @@ struct Gpu {
     VkDevice device = VK_NULL_HANDLE;
     VkQueue queue = VK_NULL_HANDLE;
     lightscatter::DeviceFeatures features;  // the chain the device was created with
+    uint32_t apiVersion = 0;                // VkApplicationInfo::apiVersion of the instance
     VkPhysicalDeviceMemoryProperties memory{};
 
     lightscatter::VulkanContext context() {
-        return {instance, physical, device, queue, family, features.chain()};
+        return {instance, physical, device, queue, family, features.chain(), apiVersion};
     }
 };
 
@@ -163,6 +164,7 @@ void createGpu(Gpu& g) {
     VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
     app.pApplicationName = "lightscatter frame loop";
     app.apiVersion = VK_API_VERSION_1_3;
+    g.apiVersion = app.apiVersion;
     VkInstanceCreateInfo instanceInfo{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
     instanceInfo.pNext = gNoValidation ? static_cast<const void*>(&messengerInfo) : &validation;
     instanceInfo.pApplicationInfo = &app;

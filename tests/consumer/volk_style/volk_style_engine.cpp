@@ -322,7 +322,8 @@ int run() {
 
     // The plugin, on the engine's entry points.
     lightscatter::PluginCreateInfo pluginInfo;
-    pluginInfo.context = {instance, physical, device, queue, family, features.chain()};
+    pluginInfo.context = {instance, physical,         device,        queue,
+                          family,   features.chain(), app.apiVersion};
     pluginInfo.getInstanceProcAddr = vkGetInstanceProcAddr;
     auto plugin = std::make_unique<lightscatter::Plugin>(pluginInfo);
 
