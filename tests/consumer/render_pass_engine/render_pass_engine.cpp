@@ -9,11 +9,11 @@
 //
 // It builds twice from this one file: without the plugin (LS_WITH_PLUGIN=0) and with it
 // (LS_WITH_PLUGIN=1). Every line that exists only for the plugin is inside an
-// `#if LS_WITH_PLUGIN` block, so the integration's cost is those blocks (CTest
-// consumer.render_pass_engine.lines counts them). Each build renders 6 frames under the validation
-// layer with synchronization validation and writes the last one as a PPM (--write FILE); the
-// plugin's build compares its image with the other build's (--baseline FILE, shaft_checks.h).
-// Exit code 0, or 1 on a validation message, an exception or a failed check.
+// `#if LS_WITH_PLUGIN` block or reads LS_WITH_PLUGIN, so the integration's cost is those lines
+// (CTest consumer.render_pass_engine.lines counts them: 60 at most). Each build renders 6 frames
+// under the validation layer with synchronization validation and writes the last one as a PPM
+// (--write FILE); the plugin's build compares its image with the other build's (--baseline FILE,
+// shaft_checks.h). Exit code 0, or 1 on a validation message, an exception or a failed check.
 #define GLM_FORCE_RADIANS
 #define GLM_FORCE_DEPTH_ZERO_TO_ONE
 #include <vulkan/vulkan.h>
@@ -46,6 +46,7 @@ namespace {
 
 constexpr VkExtent2D kExtent{320, 180};
 constexpr uint32_t kShadowMapSize = 512;
+constexpr VkExtent2D kShadowExtent{kShadowMapSize, kShadowMapSize};
 constexpr uint32_t kFramesInFlight = 2;
 constexpr uint32_t kFrames = 6;
 constexpr VkFormat kColorFormat = VK_FORMAT_B8G8R8A8_SRGB;  // the swapchain's
@@ -334,12 +335,12 @@ int run(const Options& options) {
     std::vector<const char*> enabledDeviceExtensions;
     void* deviceCreatepNextChain = nullptr;
 #if LS_WITH_PLUGIN
-    // The plugin's features: its core ones into the example's, its chain ahead of the example's.
-    lightscatter::DeviceFeatures pluginFeatures = lightscatter::requiredDeviceFeatures();
-    auto* wanted = &enabledFeatures.robustBufferAccess;  // VkPhysicalDeviceFeatures: VkBool32s
-    for (size_t i = 0; i < sizeof enabledFeatures / sizeof *wanted; ++i)
-        wanted[i] |= (&pluginFeatures.core.features.robustBufferAccess)[i];
+    // The plugin's features merged into the example's core ones and into Vulkan 1.1 to 1.3's
+    // structures, chained ahead of the example's chain; its extensions.
+    lightscatter::DeviceFeatures pluginFeatures;
     pluginFeatures.vulkan13.pNext = std::exchange(deviceCreatepNextChain, &pluginFeatures.vulkan11);
+    lightscatter::mergeRequiredDeviceFeatures(enabledFeatures, deviceCreatepNextChain, instance,
+                                              vulkanDevice.physicalDevice);
     enabledDeviceExtensions = lightscatter::requiredDeviceExtensions();  // the example has none
 #endif
     vulkanDevice.createLogicalDevice(enabledFeatures, enabledDeviceExtensions,
@@ -352,8 +353,8 @@ int run(const Options& options) {
     framework::Image depth =
         vulkanDevice.createImage(kDepthFormat, kExtent, kDepthUsage,
                                  VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT);
-    framework::Image shadowMap = vulkanDevice.createImage(
-        kShadowFormat, {kShadowMapSize, kShadowMapSize}, kShadowUsage, VK_IMAGE_ASPECT_DEPTH_BIT);
+    framework::Image shadowMap = vulkanDevice.createImage(kShadowFormat, kShadowExtent,
+                                                          kShadowUsage, VK_IMAGE_ASPECT_DEPTH_BIT);
     VkSamplerCreateInfo samplerInfo{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
     samplerInfo.magFilter = samplerInfo.minFilter = VK_FILTER_LINEAR;
     samplerInfo.addressModeU = samplerInfo.addressModeV = samplerInfo.addressModeW =
@@ -648,19 +649,16 @@ int run(const Options& options) {
     uniforms.lightDirection = glm::vec4(lightDirection, std::cos(glm::radians(outerCone)));
     uniforms.lightColor = glm::vec4(lightColor, 0.1f);
 #if LS_WITH_PLUGIN
-    pluginFeatures.core.features = enabledFeatures;  // the framework's VkPhysicalDeviceFeatures2
-    auto lightShafts = std::make_unique<lightscatter::Plugin>(
-        lightscatter::PluginCreateInfo{kFramesInFlight,
-                                       {instance, vulkanDevice.physicalDevice, device, queue,
-                                        vulkanDevice.graphicsFamily, pluginFeatures.chain()}});
+    pluginFeatures.core.features = enabledFeatures;  // the chain the framework's device got
+    auto lightShafts = std::make_unique<lightscatter::Plugin>(lightscatter::PluginCreateInfo{
+        kFramesInFlight,
+        {instance, vulkanDevice.physicalDevice, device, queue, vulkanDevice.graphicsFamily,
+         pluginFeatures.chain(), app.apiVersion}});
     lightscatter::FrameDescription frame;
     frame.depth = {depth.image, kDepthFormat, kExtent, kDepthUsage,
                    VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
     frame.depth.finalLayout = frame.depth.layout;
-    frame.shadowMap = {{shadowMap.image,
-                        kShadowFormat,
-                        {kShadowMapSize, kShadowMapSize},
-                        kShadowUsage,
+    frame.shadowMap = {{shadowMap.image, kShadowFormat, kShadowExtent, kShadowUsage,
                         VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL}};
     frame.shadowMap->finalLayout = frame.shadowMap->layout;
     frame.camera.view = std::bit_cast<lightscatter::Mat4>(view);  // GLM's layout
@@ -759,7 +757,7 @@ int run(const Options& options) {
         VkRenderPassBeginInfo passBegin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
         passBegin.renderPass = shadowPass;
         passBegin.framebuffer = shadowFramebuffer;
-        passBegin.renderArea = {{0, 0}, {kShadowMapSize, kShadowMapSize}};
+        passBegin.renderArea = {{0, 0}, kShadowExtent};
         passBegin.clearValueCount = 1;
         passBegin.pClearValues = &clearDepth;
         vkCmdBeginRenderPass(f.cmd, &passBegin, VK_SUBPASS_CONTENTS_INLINE);
