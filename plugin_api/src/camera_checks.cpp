@@ -91,6 +91,14 @@ ls::CameraParams setupCamera(const Camera& c) {
              " along the view axis: it must map a range in front of the camera "
              "(view space looks down -Z) to depth [0, 1], as a Vulkan perspective projection does");
     checkFieldOfView(out.projection);
+    // GLM's and OpenGL's projections put view-space up at clip-space up; Vulkan's clip y points
+    // down the image. Taken as it is, such a projection mirrors every shaft top to bottom.
+    if (out.projection[1][1] > 0.0f)
+        fail("camera.projection maps view-space up to clip y up (P[1][1] = " +
+             num(out.projection[1][1]) +
+             " > 0): Vulkan's clip y points down the image, so the shafts would be mirrored; "
+             "negate P[1][1] of a GLM or OpenGL projection (an engine that flips with a negative "
+             "viewport height negates it for the plugin)");
     if (!(nearD >= limits::kMinNearPlane))
         fail("camera.projection puts the near plane at " + metres(nearD) + ": must be at least " +
              metres(limits::kMinNearPlane) +

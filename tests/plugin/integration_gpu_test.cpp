@@ -206,6 +206,9 @@ TEST_F(PluginIntegrationGpu, PlanesThatDisagreeWithTheProjectionAreRefused) {
     expectRefused([](auto& d) { d.camera.infiniteFar = true; }, "camera.infiniteFar is true");
     // A projection that looks down +Z (left-handed) has no near plane in front of the camera.
     expectRefused([](auto& d) { d.camera.projection[11] = 1.0f; }, "camera.projection");
+    // GLM's perspective as it is (clip y up): the shafts would be mirrored top to bottom.
+    expectRefused([](auto& d) { d.camera.projection[5] = -d.camera.projection[5]; },
+                  "camera.projection maps view-space up to clip y up");
 }
 
 TEST_F(PluginIntegrationGpu, PlanesComeFromTheProjection) {

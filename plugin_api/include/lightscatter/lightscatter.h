@@ -163,7 +163,8 @@ struct Camera {
     // World -> view (right-handed, looks down -Z): a rotation and a translation (to 1e-3), the
     // camera's position within limits::kMaxLength of the origin on each axis.
     Mat4 view{};
-    // View -> Vulkan clip (y down, depth in [0, 1]), perspective. Its field of view on each axis
+    // View -> Vulkan clip (y down, depth in [0, 1]), perspective: GLM's perspective needs [1][1]
+    // negated (one with clip y up, P[1][1] > 0, is refused). Its field of view on each axis
     // lies in [limits::kMinFovDegrees, limits::kMaxFovDegrees], its near plane at
     // limits::kMinNearPlane or more and its far plane at limits::kMaxLength or less; with
     // standard depth, or a D16/D24 depth buffer, the far plane (or with an infinite far plane
