@@ -18,8 +18,8 @@ using lightscatter::Method;
 using lightscatter::Profile;
 
 lightscatter::VulkanContext contextOf(const rg::Device& d) {
-    return {d.instance(), d.physical(),    d.device(),
-            d.queue(),    d.queueFamily(), &d.enabledFeatures()};
+    return {d.instance(),         d.physical(),          d.device(), d.queue(), d.queueFamily(),
+            &d.enabledFeatures(), d.instanceApiVersion()};
 }
 
 constexpr VkExtent2D kImages{96, 64};
