@@ -35,8 +35,10 @@ Not checked, by rule:
 """
 import os
 import re
-import subprocess
 import sys
+
+sys.dont_write_bytecode = True  # the checkers run from the tests: they write nothing here
+from doc_text import repository_files, without_code  # noqa: E402
 
 EXTENSIONS = ("md", "json", "cpp", "h", "hpp", "py", "sh", "cmake", "glsl", "frag", "comp", "vert", "inc",
               "gltf", "glb", "bin", "png", "exr", "csv", "patch", "dict", "txt", "pc", "in", "dot")
@@ -63,37 +65,6 @@ EXAMPLES = {
 }
 # The example method's files, which tests/new_method/null_method.patch adds (docs/methods.md).
 PATCH = "tests/new_method/null_method.patch"
-
-
-def repository_files(root):
-    try:
-        out = subprocess.run(["git", "-C", root, "ls-files", "--cached", "--others", "--exclude-standard"],
-                             check=True, capture_output=True, text=True).stdout
-        files = [f for f in out.splitlines() if f]
-    except (OSError, subprocess.CalledProcessError):
-        files = []
-        for base, dirs, names in os.walk(root):
-            dirs[:] = [d for d in dirs if not d.startswith(".") and not BUILD.match(d)]
-            files += [os.path.relpath(os.path.join(base, n), root) for n in names]
-    return sorted(f for f in files if os.path.exists(os.path.join(root, f)))
-
-
-def without_fences(text):
-    lines, fence = [], None
-    for line in text.split("\n"):
-        m = re.match(r"^\s{0,3}(```+|~~~+)", line)
-        if fence:
-            if m and m.group(1)[0] == fence[0] and len(m.group(1)) >= len(fence):
-                fence = None
-            lines.append("")
-        elif m:
-            fence = m.group(1)
-            lines.append("")
-        elif line.startswith("    ") and (not lines or not lines[-1].strip() or lines[-1].startswith("    ")):
-            lines.append("")  # an indented code block: commands, not prose
-        else:
-            lines.append(line)
-    return "\n".join(lines)
 
 
 def spans(text):
@@ -126,7 +97,7 @@ def placeholder(word):
 
 
 def check(root):
-    files = repository_files(root)
+    files = repository_files(root, skip_dir=lambda d: d.startswith(".") or bool(BUILD.match(d)))
     paths = set(files)
     for f in files:  # every folder too
         parts = f.split("/")
@@ -146,7 +117,7 @@ def check(root):
     problems, checked = [], 0
     for rel in (f for f in files if f.endswith(".md")):
         with open(os.path.join(root, rel), encoding="utf-8") as f:
-            text = without_fences(f.read())
+            text = without_code(f.read(), indented=True)
         here = os.path.dirname(rel)
         for offset, span in spans(text):
             words = span.split()

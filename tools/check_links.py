@@ -9,8 +9,10 @@ page names (a word ending in .md) exists in it.
 """
 import os
 import re
-import subprocess
 import sys
+
+sys.dont_write_bytecode = True  # the checkers run from the tests: they write nothing here
+from doc_text import repository_files, without_code  # noqa: E402
 
 LINK = re.compile(r"!?\[(?:[^\[\]]|\[[^\]]*\])*\]\(\s*<?([^)\s>]+)>?(?:\s+\"[^\"]*\")?\s*\)")
 REFERENCE = re.compile(r"^\s{0,3}\[[^\]]+\]:\s*<?(\S+?)>?(?:\s+.*)?$", re.M)
@@ -21,33 +23,8 @@ SCHEME = re.compile(r"^[a-zA-Z][a-zA-Z0-9+.-]*:")
 
 
 def markdown_files(root):
-    try:
-        out = subprocess.run(["git", "-C", root, "ls-files", "--cached", "--others", "--exclude-standard",
-                              "*.md"], check=True, capture_output=True, text=True).stdout
-        files = [f for f in out.splitlines() if f]
-    except (OSError, subprocess.CalledProcessError):
-        files = []
-        for base, dirs, names in os.walk(root):
-            dirs[:] = [d for d in dirs if not d.startswith(".") and not d.startswith("build")]
-            files += [os.path.relpath(os.path.join(base, n), root) for n in names if n.endswith(".md")]
-    return sorted(f for f in files if os.path.isfile(os.path.join(root, f)))
-
-
-def without_code(text):
-    """The text with fenced code blocks blanked (line numbers kept)."""
-    lines, fence = [], None
-    for line in text.split("\n"):
-        m = re.match(r"^\s{0,3}(```+|~~~+)", line)
-        if fence:
-            if m and m.group(1)[0] == fence[0] and len(m.group(1)) >= len(fence):
-                fence = None
-            lines.append("")
-        elif m:
-            fence = m.group(1)
-            lines.append("")
-        else:
-            lines.append(line)
-    return "\n".join(lines)
+    return sorted(f for f in repository_files(root, "*.md", lambda d: d.startswith(".") or d.startswith("build"))
+                  if os.path.isfile(os.path.join(root, f)))
 
 
 def slug(heading):
