@@ -40,6 +40,8 @@ class GraphCache {
     static constexpr size_t kCachedGraphs = 8;
     GraphCache(const rg::Device& device, const rg::VulkanDeviceCaps& caps, ls::Shared shared,
                rg::RetireList& retired, rg::PersistentStore& store);
+    // The device's shared state: its pipelines, and what the engine enabled on it.
+    const ls::Shared& shared() const { return shared_; }
     ~GraphCache();
     GraphCache(const GraphCache&) = delete;
     GraphCache& operator=(const GraphCache&) = delete;

@@ -9,7 +9,6 @@
 
 #include <lightscatter/lightscatter.h>
 #include "color_target.h"
-#include "device_features.h"
 #include "device_shared.h"
 #include "frame_reports.h"
 #include "frame_setup.h"
@@ -53,8 +52,6 @@ struct Plugin::Impl {
           steps(device) {
         depthStencil = detail::stencilFormat(caps);
         coordinates = detail::coordinateFormat(caps);
-        dualSourceBlend =
-            detail::enabledCapabilities(*info.context.enabledFeatures).dualSourceBlend;
         if (depthStencil == VK_FORMAT_UNDEFINED)
             throw std::runtime_error(
                 "lightscatter: the device has no depth-stencil format with stencil");
@@ -169,7 +166,7 @@ struct Plugin::Impl {
         options.poisonTransients = frame.debug.poisonTransients || poisonFromEnvironment();
         options.countSteps = frame.debug.countSteps;
         options.maxScreen = maxRenderSize;
-        options.dualSourceBlend = dualSourceBlend;
+        options.dualSourceBlend = graphs.shared()->capabilities.dualSourceBlend;
         const GraphConfig c = detail::graphConfig(v, methods, detail::frameImports(frame, v),
                                                   options, data, previous);
         p.graph = &graphs.graphFor(c, lastFrame, p.graphCompiled);
@@ -288,7 +285,6 @@ struct Plugin::Impl {
     uint32_t framesInFlight = 2;
     VkExtent2D maxRenderSize{0, 0};
     VkFormat depthStencil = VK_FORMAT_UNDEFINED;
-    bool dualSourceBlend = false;  // a split composite blends in one draw
     VkFormat coordinates = VK_FORMAT_R32G32_SFLOAT;
     // Declared before what retires into it, so that it is destroyed after them.
     rg::RetireList retired;
