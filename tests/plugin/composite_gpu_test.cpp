@@ -233,13 +233,8 @@ class CompositeGpu : public PluginGpuTest {
             withoutDualSource_ = dev().enabledFeatures();
             withoutDualSource_.features.dualSrcBlend = VK_FALSE;
             lightscatter::PluginCreateInfo info;
-            info.context = {dev().instance(),
-                            dev().physical(),
-                            dev().device(),
-                            dev().queue(),
-                            dev().queueFamily(),
-                            &withoutDualSource_,
-                            dev().instanceApiVersion()};
+            info.context = contextOf(dev());
+            info.context.enabledFeatures = &withoutDualSource_;
             twoDraws_ = std::make_unique<lightscatter::Plugin>(info);
         }
         return *twoDraws_;

@@ -17,11 +17,6 @@ namespace {
 using lightscatter::Method;
 using lightscatter::Profile;
 
-lightscatter::VulkanContext contextOf(const rg::Device& d) {
-    return {d.instance(),         d.physical(),          d.device(), d.queue(), d.queueFamily(),
-            &d.enabledFeatures(), d.instanceApiVersion()};
-}
-
 constexpr VkExtent2D kImages{96, 64};
 
 // The grille under the spot, shadowed for every method that casts shadows.

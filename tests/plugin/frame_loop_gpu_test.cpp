@@ -17,11 +17,6 @@ namespace {
 using lightscatter::Method;
 using lightscatter::Profile;
 
-lightscatter::VulkanContext contextOf(const rg::Device& d) {
-    return {d.instance(),         d.physical(),          d.device(), d.queue(), d.queueFamily(),
-            &d.enabledFeatures(), d.instanceApiVersion()};
-}
-
 bool contains(const std::string& text, const std::string& part) {
     return text.find(part) != std::string::npos;
 }

@@ -18,11 +18,6 @@ namespace {
 using lightscatter::Method;
 using lightscatter::Profile;
 
-lightscatter::VulkanContext contextOf(const rg::Device& d) {
-    return {d.instance(),         d.physical(),          d.device(), d.queue(), d.queueFamily(),
-            &d.enabledFeatures(), d.instanceApiVersion()};
-}
-
 // Three spots over the grille, each its own color and place, all with the frame's shadow map.
 std::vector<lightscatter::Light> spots() {
     std::vector<lightscatter::Light> l(3, spotOverGrille());

@@ -13,11 +13,6 @@ using namespace plugin_test;
 
 namespace {
 
-lightscatter::VulkanContext contextOf(const rg::Device& d) {
-    return {d.instance(),         d.physical(),          d.device(), d.queue(), d.queueFamily(),
-            &d.enabledFeatures(), d.instanceApiVersion()};
-}
-
 FrameSpec smallSpot() {
     FrameSpec s;
     s.screen = {24, 16};

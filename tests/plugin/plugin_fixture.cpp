@@ -4,13 +4,15 @@
 
 namespace plugin_test {
 
+lightscatter::VulkanContext contextOf(const rg::Device& d) {
+    return {d.instance(),         d.physical(),          d.device(), d.queue(), d.queueFamily(),
+            &d.enabledFeatures(), d.instanceApiVersion()};
+}
+
 lightscatter::Plugin& plugin() {
     static std::unique_ptr<lightscatter::Plugin> p;
     if (!p) {
-        const rg::Device& d = testing_support::device();
-        p = std::make_unique<lightscatter::Plugin>(lightscatter::VulkanContext{
-            d.instance(), d.physical(), d.device(), d.queue(), d.queueFamily(),
-            &d.enabledFeatures(), d.instanceApiVersion()});
+        p = std::make_unique<lightscatter::Plugin>(contextOf(testing_support::device()));
         testing_support::atTeardown([] { p.reset(); });
     }
     return *p;

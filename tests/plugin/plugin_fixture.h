@@ -9,6 +9,9 @@
 
 namespace plugin_test {
 
+// The test device as the engine's context: its handles, enabled features and instance version.
+lightscatter::VulkanContext contextOf(const rg::Device& d);
+
 lightscatter::Plugin& plugin();
 
 class PluginGpuTest : public testing_support::GpuTest {
