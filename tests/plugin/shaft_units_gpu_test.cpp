@@ -33,16 +33,17 @@ class ShaftUnitsGpu : public PluginGpuTest {};
 // A camera looks level across a narrow spot's beam 10 m away, 5 m below the spot: the pixel at
 // the centre of the screen sees the shaft the goal describes, and renders its brightness.
 TEST_F(ShaftUnitsGpu, TheIntensityForABrightnessRendersThatBrightness) {
-    constexpr VkExtent2D kScreen{33, 33};  // odd: the centre pixel's ray is the view axis
+    constexpr VkExtent2D kShaftScreen{33, 33};  // odd: the centre pixel's ray is the view axis
     FrameSpec spec;
-    spec.screen = kScreen;
+    spec.screen = kShaftScreen;
     spec.view = lookAt({0.0f, 1.0f, 0.0f}, {0.0f, 1.0f, -10.0f}, 20.0f, 1.0f, 0.1f, 100.0f);
     spec.medium.betaR = {5.8e-6f, 13.5e-6f, 33.1e-6f};
     spec.medium.betaM = {0.01f, 0.01f, 0.01f};
     spec.medium.g = 0.76f;
     spec.medium.maxDistance = 60.0f;
     spec.shadowed = false;
-    spec.depthOverride.assign(size_t{kScreen.width} * kScreen.height, 1.0f);  // sky everywhere
+    spec.depthOverride.assign(size_t{kShaftScreen.width} * kShaftScreen.height,
+                              1.0f);  // sky everywhere
     lightscatter::Light& spot = spec.light;
     spot.type = LightType::Spot;
     spot.position = {0.0f, 6.0f, -10.0f};
@@ -64,9 +65,10 @@ TEST_F(ShaftUnitsGpu, TheIntensityForABrightnessRendersThatBrightness) {
     // Brute force: docs/model.md's integral as it is (analytic would not do: it assumes isotropic
     // scattering and no extinction, 9 times this shaft's brightness here).
     plugin().render(frame.description(lightscatter::Method::BruteForce,
-                                      lightscatter::Profile::Custom, smallSettings(kScreen)));
+                                      lightscatter::Profile::Custom, smallSettings(kShaftScreen)));
     const std::vector<float> lin = frame.inscatter();
-    const size_t centre = (size_t{kScreen.height / 2} * kScreen.width + kScreen.width / 2) * 4;
+    const size_t centre =
+        (size_t{kShaftScreen.height / 2} * kShaftScreen.width + kShaftScreen.width / 2) * 4;
     for (int c = 0; c < 3; ++c)
         // The irradiance across the beam is within 1% of the centre's: the goal's one value.
         EXPECT_NEAR(lin[centre + c], goal.brightness, 0.02 * goal.brightness) << "channel " << c;
