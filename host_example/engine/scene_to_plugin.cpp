@@ -139,6 +139,9 @@ lightscatter::Medium toPluginMedium(const MediumDesc& m) {
     out.sigmaA = v3(m.sigmaA);
     out.phase = m.phase;
     out.maxDistance = m.maxDistance;
+    out.density = m.density;
+    out.heightFog = m.heightFog;
+    out.fogVolumes = m.fogVolumes;
     return out;
 }
 

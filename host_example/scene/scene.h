@@ -6,6 +6,7 @@
 #include <glm/glm.hpp>
 #include <memory>
 #include <stdexcept>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -115,6 +116,12 @@ struct MediumDesc {
     glm::vec3 sigmaA{0.0f};
     lightscatter::MiePhase phase = lightscatter::MiePhase::CornetteShanks;
     float maxDistance = 1000.0f;
+    // docs/model.md's non-uniform medium ("density", "heightFog", "fogVolumes"): absent, the
+    // medium is homogeneous.
+    float density = 1.0f;
+    std::optional<lightscatter::HeightFog> heightFog;
+    std::vector<lightscatter::FogVolume> fogVolumes;
+    bool nonUniform() const { return heightFog.has_value() || !fogVolumes.empty(); }
 };
 
 struct ModelInstance {

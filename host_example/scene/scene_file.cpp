@@ -554,7 +554,9 @@ class SceneReader {
     }
 
     void readMedium(const json& v, MediumDesc& medium) const {
-        checkKeys(v, "medium", {"betaR", "betaM", "g", "sigmaA", "phase", "maxDistance"});
+        checkKeys(v, "medium",
+                  {"betaR", "betaM", "g", "sigmaA", "phase", "maxDistance", "density", "heightFog",
+                   "fogVolumes"});
         const float c = limits::kMaxCoefficient;
         if (const json* x = member(v, "betaR"))
             medium.betaR = vec3InRange(*x, "medium.betaR", 0.0f, c);
@@ -573,6 +575,68 @@ class SceneReader {
         if (const json* x = member(v, "maxDistance")) {
             medium.maxDistance = inRange(*x, "medium.maxDistance", 0.0, limits::kMaxLength, true);
         }
+        if (const json* x = member(v, "density"))
+            medium.density = inClosedRange(*x, "medium.density", 0.0f, limits::kMaxDensity);
+        if (const json* x = member(v, "heightFog")) {
+            checkKeys(*x, "medium.heightFog", {"baseHeight", "falloff"});
+            lightscatter::HeightFog fog;
+            if (const json* y = member(*x, "baseHeight"))
+                fog.baseHeight = inClosedRange(*y, "medium.heightFog.baseHeight",
+                                               -limits::kMaxLength, limits::kMaxLength);
+            if (const json* y = member(*x, "falloff"))
+                fog.falloff =
+                    inClosedRange(*y, "medium.heightFog.falloff", 0.0f, limits::kMaxFogFalloff);
+            medium.heightFog = fog;
+        }
+        if (const json* x = member(v, "fogVolumes")) {
+            if (!x->is_array()) fail("medium.fogVolumes must be an array of fog volume objects");
+            if (x->size() > limits::kMaxFogVolumes)
+                fail("medium.fogVolumes holds " + std::to_string(x->size()) + " volumes: at most " +
+                     std::to_string(limits::kMaxFogVolumes));
+            for (size_t i = 0; i < x->size(); ++i)
+                medium.fogVolumes.push_back(
+                    readFogVolume((*x)[i], "medium.fogVolumes[" + std::to_string(i) + "]"));
+        }
+    }
+
+    lightscatter::FogVolume readFogVolume(const json& v, const std::string& name) const {
+        checkKeys(v, name, {"center", "halfExtents", "axes", "density", "fade"});
+        lightscatter::FogVolume out;
+        auto put = [](lightscatter::Vec3& to, const glm::vec3& from) {
+            to = {from.x, from.y, from.z};
+        };
+        const json* center = member(v, "center");
+        const json* half = member(v, "halfExtents");
+        if (!center || !half) fail(name + " needs \"center\" and \"halfExtents\"");
+        put(out.center,
+            vec3InRange(*center, name + ".center", -limits::kMaxLength, limits::kMaxLength));
+        put(out.halfExtents, vec3InRange(*half, name + ".halfExtents", 0.0f, limits::kMaxLength));
+        if (const json* x = member(v, "axes")) {
+            if (!x->is_array() || x->size() != 3)
+                fail(name + ".axes must be an array of 3 axes (the box's local x, y, z in world "
+                            "space)");
+            for (size_t j = 0; j < 3; ++j) {
+                const std::string axis = name + ".axes[" + std::to_string(j) + "]";
+                const glm::vec3 a = vec3((*x)[j], axis);
+                if (std::fabs(glm::length(a) - 1.0f) > 1e-3f)
+                    fail(axis + " has length " + shortestText(glm::length(a)) +
+                         ": the axes must be unit vectors (within 1e-3)");
+                for (size_t k = 0; k < j; ++k) {
+                    const float d = glm::dot(a, glm::vec3(out.axes[k][0], out.axes[k][1],
+                                                          out.axes[k][2]));
+                    if (std::fabs(d) > 1e-3f)
+                        fail(axis + " and " + name + ".axes[" + std::to_string(k) +
+                             "] have dot product " + shortestText(d) +
+                             ": the axes must be orthogonal (within 1e-3)");
+                }
+                put(out.axes[j], a);
+            }
+        }
+        if (const json* x = member(v, "density"))
+            out.density = inClosedRange(*x, name + ".density", 0.0f, limits::kMaxDensity);
+        if (const json* x = member(v, "fade"))
+            out.fade = inClosedRange(*x, name + ".fade", 0.0f, limits::kMaxLength);
+        return out;
     }
 
     std::string path_;

@@ -4,6 +4,8 @@
 // shaders' uniform block.
 #include <glm/glm.hpp>
 
+#include "shaders/shared/bindings.h"
+
 namespace ls {
 
 struct FrameConstants {
@@ -19,6 +21,8 @@ struct FrameConstants {
 // Only vec4 and mat4 members: std140 packs them as C++ does, so the sizes agree exactly when no
 // member has padding of its own.
 static_assert(sizeof(glm::vec4) == 16 && alignof(glm::vec4) <= 16 && sizeof(glm::mat4) == 64);
-static_assert(sizeof(FrameConstants) == 3 * 64 + 17 * 16 + 6 * 64, "std140 layout of frame.glsl");
+static_assert(sizeof(FrameConstants) ==
+                  3 * 64 + 18 * 16 + 6 * 64 + LS_MAX_FOG_VOLUMES * (64 + 4),
+              "std140 layout of frame.glsl");
 
 }  // namespace ls

@@ -14,6 +14,8 @@ ScatterSpec scatterSpec(const LightSetup& light) {
     spec.bilinearShadow = light.settings.shadowFilter == lightscatter::ShadowFilter::Bilinear;
     spec.simplifiedModel = simplifiedModel(light);
     spec.cubeShadow = cubeShadowed(light);
+    spec.media = (light.medium.heightFog ? LS_MEDIA_HEIGHT_FOG : 0) |
+                 (light.medium.volumes.empty() ? 0 : LS_MEDIA_VOLUMES);
     return spec;
 }
 

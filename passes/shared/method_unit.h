@@ -38,6 +38,7 @@ struct MethodCaps {
     bool simplifiedModel = false;
     bool skipsShadowSampling = false;
     bool readsOccluders = false;  // FrameDescription::occluders (the beam trees)
+    bool media = false;           // a non-uniform medium (height fog, fog volumes)
     bool countsSteps = false;     // DebugOptions::countSteps: a counting variant of its march
     // Its textures depend on the profile's sizes: budget() reports it.
     bool profileSized = false;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "medium_constants.h"
+
 namespace ls {
 
 TableLayout tableLayoutFor(const MediumParams& medium, float lightRadius, uint32_t width,
@@ -21,6 +23,12 @@ TableLayout tableLayoutFor(const MediumParams& medium, float lightRadius, uint32
     const float r0 = std::max(lightRadius, 1e-6f);
     t.logRange = std::max(std::log(std::max(scale, r0) / r0), 1.0f);
     return t;
+}
+
+float MediumParams::maxDensity() const {
+    float m = density;
+    for (const FogVolumeParams& v : volumes) m += v.density;
+    return m;
 }
 
 LightOnScreen projectLight(const CameraParams& camera, const LightParams& light) {
@@ -119,6 +127,7 @@ FrameConstants makeFrameConstants(const CameraParams& camera, const LightParams&
                       static_cast<float>(screen.width) / static_cast<float>(texels.width),
                       static_cast<float>(screen.height) / static_cast<float>(texels.height)};
     f.linStorage = {params.linStorage, 1.0f / params.linStorage, params.preExposure, 0.0f};
+    if (medium.nonUniform()) writeMediumConstants(f, camera, light, medium);
     return f;
 }
 

@@ -4,6 +4,7 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <vector>
 #include <glm/glm.hpp>
 
 #include "frame_constants.h"
@@ -49,6 +50,18 @@ struct LightParams {
     float shadowDepthBias = 0.0f;  // added to the ray's light-space depth before comparing
 };
 
+// A local fog volume (docs/model.md): an oriented box of added density.
+struct FogVolumeParams {
+    glm::vec3 center{0.0f};
+    glm::vec3 halfExtents{1.0f};
+    glm::mat3 axes{1.0f};  // columns: the box's local x, y, z in world space (orthonormal)
+    float density = 1.0f;
+    float fade = 0.0f;  // metres; 0: a hard edge
+};
+
+// The medium of docs/model.md. The coefficients are those of density factor 1: a homogeneous
+// medium's whole density is folded into them, a non-uniform one's factor m(x) multiplies them at
+// each point (shaders/shared/medium.glsl).
 struct MediumParams {
     glm::vec3 betaR{0.0f};
     glm::vec3 betaM{0.0f};
@@ -56,7 +69,16 @@ struct MediumParams {
     float g = 0.0f;
     MiePhase phase = MiePhase::CornetteShanks;
     float maxDistance = 1000.0f;
+    // m(x) = density h(y) + sum over volumes, h(y) = exp(-falloff max(0, y - baseHeight)) with
+    // heightFog, 1 without.
+    float density = 1.0f;
+    bool heightFog = false;
+    float baseHeight = 0.0f, falloff = 0.0f;
+    std::vector<FogVolumeParams> volumes;
     glm::vec3 betaT() const { return betaR + betaM + sigmaA; }
+    bool nonUniform() const { return heightFog || !volumes.empty(); }
+    // The largest m anywhere: density plus every volume's.
+    float maxDensity() const;
 };
 
 // The look-up table's shape and scale (shaders/shared/lut.glsl).

@@ -11,6 +11,9 @@ rg::Specialization ScatterSpec::constants() const {
     s.set(LS_SPEC_LIGHT_COLOR, lightColor);
     s.set(LS_SPEC_BILINEAR_SHADOW, bilinearShadow);
     s.set(LS_SPEC_SIMPLIFIED_MODEL, simplifiedModel);
+    // Only a non-uniform medium names the constant: a homogeneous frame's pipelines are keyed
+    // and built exactly as before media existed.
+    if (media != 0) s.set(LS_SPEC_MEDIA, static_cast<int32_t>(media));
     return s;
 }
 

@@ -27,6 +27,7 @@ struct ScatterSpec {
     bool bilinearShadow = true;
     bool simplifiedModel = false;  // seed 004's light model (Settings::lightModel)
     bool cubeShadow = false;       // a point light's six-face shadow map (a 2D array of 6 layers)
+    int media = 0;                 // a non-uniform medium's parts: LS_MEDIA_* bits (bindings.h)
     rg::Specialization constants() const;
     bool operator==(const ScatterSpec&) const = default;
 };

@@ -10,6 +10,7 @@
 #include "field_checks.h"
 #include "image_checks.h"
 #include "light_checks.h"
+#include "medium_checks.h"
 #include "rendergraph/format_info.h"
 
 namespace lightscatter::detail {
@@ -37,22 +38,7 @@ ls::LightSetup setupFramePart(const FrameDescription& f, bool withImages) {
         checkDepthResolution(s.camera, f.medium.maxDistance, f.depth.format);
     checkViewProjection(s.camera);
 
-    // Medium.
-    const Medium& m = f.medium;
-    const std::string perMetre = "1/m; lightscatter.h, limits::kMaxCoefficient";
-    s.medium.betaR = vecInRange(m.betaR, "medium.betaR", 0.0, limits::kMaxCoefficient, perMetre);
-    s.medium.betaM = vecInRange(m.betaM, "medium.betaM", 0.0, limits::kMaxCoefficient, perMetre);
-    s.medium.sigmaA = vecInRange(m.sigmaA, "medium.sigmaA", 0.0, limits::kMaxCoefficient, perMetre);
-    if (!(m.g > -1.0f && m.g < 1.0f)) fail("medium.g = " + num(m.g) + ": must be in (-1, 1)");
-    s.medium.g = m.g;
-    if (m.phase != MiePhase::CornetteShanks && m.phase != MiePhase::Isotropic &&
-        m.phase != MiePhase::Hazy)
-        fail("medium.phase is not a MiePhase value");
-    s.medium.phase = m.phase;
-    if (!(m.maxDistance > 0.0f && m.maxDistance <= limits::kMaxLength))
-        fail("medium.maxDistance = " + num(m.maxDistance) + ": must be in (0, " +
-             num(limits::kMaxLength) + "] (metres; lightscatter.h, limits::kMaxLength)");
-    s.medium.maxDistance = m.maxDistance;
+    s.medium = setupMedium(f.medium);
 
     // Images.
     s.engineNoise = f.noise.has_value();

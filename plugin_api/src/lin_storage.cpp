@@ -48,7 +48,13 @@ float linStorageScale(const ls::LightSetup& s, const ls::MethodUnit& method) {
             const double r0 = std::max(double(s.light.radius), 1e-6);
             lin = I * scatter * (kPi / r0 + double(method.ambient(s)) / betaT);
         }
-        if (!ls::simplifiedModel(s)) lin *= std::exp(-betaT * apart);
+        // A non-uniform medium scatters up to maxDensity() times as much at a point, and may be
+        // clear between the light and the camera. A directional light's bound holds as it is:
+        // the integral of m T along a ray is (1 - T) / betaT whatever m is.
+        if (m.nonUniform() && s.light.kind != ls::LightType::Directional)
+            lin *= double(m.maxDensity());
+        else if (!ls::simplifiedModel(s))
+            lin *= std::exp(-betaT * apart);
         bound = std::max(bound, lin);
     }
     if (!(bound > kStoredPeak)) return 1.0f;

@@ -44,6 +44,15 @@ bool takesKind(const ls::MethodCaps& c, ls::LightType t) {
                                            : c.point;
 }
 
+// What makes the medium non-uniform, as the engine set it.
+std::string nonUniformParts(const ls::LightSetup& s) {
+    std::string parts = s.medium.heightFog ? "medium.heightFog" : "";
+    if (!s.medium.volumes.empty())
+        parts += std::string(parts.empty() ? "" : " and ") + "medium.fogVolumes (" +
+                 std::to_string(s.medium.volumes.size()) + ")";
+    return parts;
+}
+
 }  // namespace
 
 // What the method's caps rule out for this light, in one line naming the field, and the methods
@@ -92,6 +101,15 @@ std::string capsRefusal(const ls::MethodUnit& unit, const ls::LightSetup& s) {
                method + " integrates the model's homogeneous medium (use " +
                methodsWhere([](const ls::MethodCaps& o) { return o.noise; }) +
                " or auto, or amplitude 0)";
+    if (s.medium.nonUniform() && !c.media)
+        return method + " integrates a homogeneous medium only; this frame's has " +
+               nonUniformParts(s) + " (use auto, " +
+               methodsWhere([](const ls::MethodCaps& o) { return o.media; }) + ")";
+    if (s.medium.nonUniform() && (ls::simplifiedModel(s) || ls::noisy(s)))
+        return set + (ls::noisy(s) ? ".noiseAmplitude > 0 (seed 002's scrolling noise)"
+                                   : ".lightModel = simplified (seed 004's light model)") +
+               " replaces docs/model.md's medium, and this frame's has " + nonUniformParts(s) +
+               ": use one or the other";
     if (ls::simplifiedModel(s) && !c.simplifiedModel)
         return set + ".lightModel = simplified (seed 004's light model) is honoured by " +
                methodsWhere([](const ls::MethodCaps& o) { return o.simplifiedModel; }, "and") +
@@ -195,7 +213,7 @@ MethodChoice autoChoice(const ls::LightSetup& s, bool lightReachesView) {
             "forms cannot vary it along a ray)");
     if (!s.shadowed && pointLike) {
         const float tau = ls::opticalDepthToLight(s);
-        if (ls::isotropicMedium(s) && tau < kAnalyticMaxOpticalDepth)
+        if (ls::isotropicMedium(s) && tau < kAnalyticMaxOpticalDepth && !s.medium.nonUniform())
             return closedForm(
                 "unshadowed point light in an isotropic, thin medium (optical depth " +
                 ls::twoDigits(tau) + " to the light): seed 001's closed form, within 1%");

@@ -25,6 +25,7 @@ MethodInfo infoOf(Method method, const ls::MethodUnit& unit) {
     i.simplifiedModel = c.simplifiedModel;
     i.skipsShadowSampling = c.skipsShadowSampling;
     i.readsOccluders = c.readsOccluders;
+    i.media = c.media;
     i.onePerFrame = c.onePerFrame;
     i.exportsVolume = c.exportsVolume;
     i.keepsHistory = c.keepsHistory;

@@ -35,11 +35,18 @@
 // vocabulary's, which C++ names lightscatter::LightType and lightscatter::MiePhase.
 #include "lightscatter/vocabulary.h"
 
-// Specialisation constants of frame.glsl (ScatterSpec::constants()); id 2 is unused.
+// Specialisation constants of frame.glsl (ScatterSpec::constants()).
 #define LS_SPEC_LIGHT_TYPE 0  // 0 directional, 1 spot, 2 point
 #define LS_SPEC_MIE_PHASE 1   // 0 Cornette-Shanks, 1 isotropic, 2 hazy
+#define LS_SPEC_MEDIA 2       // LS_MEDIA_* bits: 0, a homogeneous medium
 #define LS_SPEC_LIGHT_COLOR 3
 #define LS_SPEC_BILINEAR_SHADOW 4
 #define LS_SPEC_SIMPLIFIED_MODEL 5
+
+// A non-uniform medium's parts (ScatterSpec::media), and the fog volumes the frame constants hold
+// (lightscatter::limits::kMaxFogVolumes).
+#define LS_MEDIA_HEIGHT_FOG 1
+#define LS_MEDIA_VOLUMES 2
+#define LS_MAX_FOG_VOLUMES 64
 
 #endif

@@ -13,6 +13,9 @@ layout(constant_id = LS_SPEC_BILINEAR_SHADOW) const bool kBilinearShadow = true;
 // I / (a1 r^2 + a0), no transmittance, isotropic phase; the shaders that honour it read
 // frame.simplified (simplified.glsl, light_at.glsl).
 layout(constant_id = LS_SPEC_SIMPLIFIED_MODEL) const bool kSimplifiedModel = false;
+// A non-uniform medium's parts (LS_MEDIA_* bits; medium.glsl): 0 compiles today's homogeneous
+// shaders, whose every density is 1.
+layout(constant_id = LS_SPEC_MEDIA) const int kMedia = 0;
 
 const int LIGHT_DIRECTIONAL = LIGHTSCATTER_LIGHT_DIRECTIONAL;
 const int LIGHT_SPOT = LIGHTSCATTER_LIGHT_SPOT;

@@ -37,3 +37,12 @@ LS_VEC4 screenTexels LS_DEFAULT(1.0f, 1.0f, 1.0f, 1.0f);
 // A point light's cube shadow map (LS_CUBE_SHADOW): world -> clip of each face, in Vulkan's
 // face order +X, -X, +Y, -Y, +Z, -Z (the layers of the shadow map).
 LS_MAT4 cubeFaceViewProj[6];
+// A non-uniform medium (medium.glsl; read only where kMedia != 0): x: the whole-scene density d0,
+// y: the height fog's base height, z: its falloff (0 without height fog), w: the number of fog
+// volumes below (those that can touch the view or the light's path to it).
+LS_VEC4 medium;
+// Each fog volume: rows 0-2 the box's local axes in world space (xyz) and -dot(axis, centre) (w),
+// so that dot(row, vec4(x, 1)) is x's local coordinate; row 3: the half extents (xyz) and the
+// fade (w). Stored as a mat4's columns.
+LS_MAT4 fogVolumes[LS_MAX_FOG_VOLUMES];
+LS_VEC4 fogDensity[LS_MAX_FOG_VOLUMES / 4];  // volume i's density: [i / 4][i % 4]

@@ -43,7 +43,7 @@
 // header and a library of different major.minor versions do not link (Plugin's constructor takes
 // a tag named for the header's version, which only the library of that version defines).
 #define LIGHTSCATTER_VERSION_MAJOR 0
-#define LIGHTSCATTER_VERSION_MINOR 5
+#define LIGHTSCATTER_VERSION_MINOR 6
 #define LIGHTSCATTER_VERSION_PATCH 0
 
 // What the library exports: everything declared with LIGHTSCATTER_API (a shared build exports
@@ -122,6 +122,9 @@ struct MethodInfo {
     bool simplifiedModel = false;      // Settings::lightModel = Simplified
     bool skipsShadowSampling = false;  // Settings::shadowSampling = false
     bool readsOccluders = false;       // FrameDescription::occluders
+    // A non-uniform medium (Medium::heightFog, Medium::fogVolumes); every method takes a
+    // homogeneous one.
+    bool media = false;
     // Every light of the frame goes into one chain of its nodes (froxels' grid): it mixes with no
     // other method in a frame.
     bool onePerFrame = false;
@@ -248,6 +251,30 @@ struct Light {
     bool shadowReversedZ = false;
 };
 
+// Height fog (docs/model.md, "Non-uniform media"): the whole-scene medium's density is
+// exp(-falloff max(0, y - baseHeight)) of its own at a world height y (+Y up): full at and below
+// the base height, falling off exponentially above it (HDRP's fog, Unreal's exponential height
+// fog above its fog height).
+struct HeightFog {
+    float baseHeight = 0.0f;  // metres; |baseHeight| <= limits::kMaxLength
+    float falloff = 0.0f;     // 1/m, in [0, limits::kMaxFogFalloff]; 0: a uniform medium
+};
+
+// A local fog volume (docs/model.md): an oriented box whose density adds to the whole-scene
+// medium's, with the same coefficients (it is denser or thinner medium, not another medium: no
+// albedo or phase of its own). Its weight is 1 inside and 0 outside, or, with fade > 0, the
+// product over its three axes of clamp((halfExtent - |local|) / fade, 0, 1).
+struct FogVolume {
+    Vec3 center{0, 0, 0};  // world, metres; each |coordinate| <= limits::kMaxLength
+    // Metres, each in [0, limits::kMaxLength].
+    Vec3 halfExtents{1, 1, 1};
+    // The box's local x, y and z in world space: unit length and orthogonal to each other within
+    // 1e-3 (a rotation or a reflection; a matrix with scale is refused: put it in halfExtents).
+    std::array<Vec3, 3> axes{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+    float density = 1.0f;  // added to the medium's factor inside; in [0, limits::kMaxDensity]
+    float fade = 0.0f;     // metres, in [0, limits::kMaxLength]; 0: a hard edge
+};
+
 struct Medium {
     // Each channel of betaR, betaM and sigmaA in [0, limits::kMaxCoefficient].
     Vec3 betaR{5.8e-6f, 13.5e-6f, 33.1e-6f};  // Rayleigh scattering, 1/m
@@ -257,6 +284,18 @@ struct Medium {
     MiePhase phase = MiePhase::CornetteShanks;
     // Sky distance with an infinite far plane, m; in (0, limits::kMaxLength].
     float maxDistance = 1000.0f;
+    // A non-uniform medium (docs/model.md): the coefficients above are multiplied at each point x
+    // by m(x) = density h(y) + sum over fogVolumes of volume.density times its weight at x, with
+    // h the height fog's factor (1 without one). The densest point's coefficients, (density + the
+    // volumes' densities) times the largest coefficient, must stay within kMaxCoefficient.
+    // Defaults: exactly the homogeneous medium. A medium without height fog or volumes is
+    // homogeneous whatever its density (every method takes it, at its homogeneous cost); height
+    // fog or a volume is taken by the methods whose methodInfo() says `media` (analytic and
+    // beam-tree-analytic refuse it). Fog parameters may change every frame without compiling;
+    // giving height fog or volumes where a frame had none (or none where it had) compiles once.
+    float density = 1.0f;  // d0, in [0, limits::kMaxDensity]
+    std::optional<HeightFog> heightFog;
+    std::vector<FogVolume> fogVolumes;  // at most limits::kMaxFogVolumes
 };
 
 // Units for an engine whose lights carry none (a light of intensity 1 lights a white surface facing

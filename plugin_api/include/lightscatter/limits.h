@@ -75,6 +75,15 @@ inline constexpr float kDepthStepsPerDistance = 16.0f;
 // FrameDescription::preExposure: the bound above leaves Lin a factor of 1e5 below FLT_MAX; an
 // exposure of up to 1e4 keeps a factor of 10.
 inline constexpr float kMaxPreExposure = 1e4f;
+// Medium::fogVolumes: each volume is a loop iteration of every sample's density and of every
+// optical depth a method takes (the volumes outside the view and the light's reach are dropped
+// before the shaders see them), and the frame's constants hold them all.
+inline constexpr unsigned kMaxFogVolumes = 64;
+// Medium::density and FogVolume::density: a multiplier of the coefficients, at most 1e3 (the
+// densest point's coefficients are held to kMaxCoefficient as a whole).
+inline constexpr float kMaxDensity = 1e3f;
+// HeightFog::falloff (1/m): 1e4 is a layer whose density halves over 0.07 mm.
+inline constexpr float kMaxFogFalloff = 1e4f;
 }  // namespace limits
 
 }  // namespace lightscatter
