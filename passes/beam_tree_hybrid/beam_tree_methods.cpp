@@ -43,6 +43,14 @@ MethodCaps BeamTreeAnalyticMethod::caps() const {
     return c;
 }
 
+// Every point is a plane's sample (planes.frag), which weighs its density and optical depth; the
+// analytic variant's lit pyramids are closed forms of a homogeneous medium, and refuse the others.
+MethodCaps BeamTreeSamplingMethod::caps() const {
+    MethodCaps c = BeamTreeMethod::caps();
+    c.media = true;
+    return c;
+}
+
 std::string BeamTreeAnalyticMethod::description() const {
     return "seed 004's beam tree: lit space in closed form, uncertain space sampled by planes";
 }

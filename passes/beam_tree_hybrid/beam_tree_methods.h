@@ -49,6 +49,7 @@ class BeamTreeSamplingMethod final : public BeamTreeMethod {
   public:
     const char* name() const override { return "beam-tree-sampling"; }
     std::string description() const override;
+    MethodCaps caps() const override;
     ChainOutputs addChain(rg::RenderGraph& graph, ChainLights lights,
                           const CompositeTarget& target) const override;
     std::string summary(const ChainConfig& config) const override;

@@ -19,6 +19,7 @@ std::string BruteForceMethod::description() const {
 MethodCaps BruteForceMethod::caps() const {
     MethodCaps c;
     c.cubeShadow = true;
+    c.media = true;  // integrate.glsl's non-uniform steps, per texel crossed
     return c;
 }
 

@@ -18,6 +18,7 @@ MethodCaps ConeMarchMethod::caps() const {
     MethodCaps c;
     c.cubeShadow = true;           // each sample looks up the face it lies in
     c.skipsShadowSampling = true;  // the seed's low-end mode
+    c.media = true;                // per sample (cone_march.frag)
     return c;
 }
 

@@ -27,6 +27,9 @@ MethodCaps EpipolarMethod::caps() const {
     c.cubeShadow = true;
     c.countsSteps = true;
     c.profileSized = true;
+    // Lit runs integrate the medium (integrate.glsl) between the trees' skips; Lin is
+    // interpolated and refined on its differences (epipolar_constants.h).
+    c.media = true;
     return c;
 }
 
@@ -81,7 +84,8 @@ std::unique_ptr<LightData> EpipolarMethod::makeData() const {
 std::vector<CpuWork> EpipolarMethod::prepare(LightData* data, LightFrame&,
                                              const LightSetup& light) const {
     EpipolarFrame& e = *static_cast<EpipolarFrame*>(data);
-    e.constants = makeEpipolarConstants(light.settings.epipolar, light.light.shadowMapSize);
+    e.constants = makeEpipolarConstants(light.settings.epipolar, light.light.shadowMapSize,
+                                        light.medium.nonUniform());
     if (!cubeShadowed(light)) return {};
     for (int face = 0; face < 6; ++face)
         e.faceInView[face] = cubeFaceTouchesView(light.camera, light.light, light.medium, face);
@@ -96,7 +100,7 @@ ChainOptions EpipolarMethod::options(const LightSetup& s, const LightData*,
     o.samples = e.samplesPerSlice;
     o.minMaxTrees = e.minMaxTrees && treesFit(s.light.shadowMapSize);
     o.fixup = e.fixup;
-    o.inscatterRefinement = e.inscatterRefinementThreshold > 0.0f;
+    o.inscatterRefinement = inscatterRefinementOf(e, s.medium.nonUniform()) > 0.0f;
     return ChainOptions(o);
 }
 

@@ -22,6 +22,7 @@ MethodCaps FroxelsMethod::caps() const {
     c.onePerFrame = true;
     c.exportsVolume = true;
     c.keepsHistory = true;  // the temporal mode
+    c.media = true;         // each slice's optical depth along its column (integrate.comp)
     return c;
 }
 

@@ -21,6 +21,7 @@ MethodCaps PlanesMethod::caps() const {
     c.profileSized = true;
     c.noise = true;
     c.skipsShadowSampling = true;
+    c.media = true;  // each plane's point weighs its density and optical depth (planes.frag)
     return c;
 }
 

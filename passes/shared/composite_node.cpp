@@ -25,16 +25,16 @@ CompositeOutputs addCompositePass(rg::RenderGraph& graph, const ChainContext& ch
         .sampledIfValid(LS_BINDING_COMPOSITE_LIN, lin, s.nearest());
     const CompositeOutputs written = addCompositeTarget(table, target);
     const bool addOnly = target.addOnly, withLin = lin.valid();
-    pass.execute(
-        [shared = chain.shared, table, written, addOnly, withLin, name](rg::PassContext& ctx) {
-            const rg::ShaderCode shader =
-                compositeShader(addOnly, withLin, compositeVariant(ctx, written));
-            const auto& p = shared->pipelines.compute(name, shader, table.layout(), 0, {});
-            p.bind(ctx.cmd());
-            table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
-            const VkExtent2D e = ctx.extent(written.color);
-            ctx.vk().CmdDispatch(ctx.cmd(), groupCount(e.width, 8), groupCount(e.height, 8), 1);
-        });
+    pass.execute([shared = chain.shared, media = chain.spec.mediaConstants(), table, written,
+                  addOnly, withLin, name](rg::PassContext& ctx) {
+        const rg::ShaderCode shader =
+            compositeShader(addOnly, withLin, compositeVariant(ctx, written));
+        const auto& p = shared->pipelines.compute(name, shader, table.layout(), 0, media);
+        p.bind(ctx.cmd());
+        table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
+        const VkExtent2D e = ctx.extent(written.color);
+        ctx.vk().CmdDispatch(ctx.cmd(), groupCount(e.width, 8), groupCount(e.height, 8), 1);
+    });
     return written;
 }
 

@@ -32,8 +32,8 @@ bool fogVolumeMatters(const FogVolumeParams& volume, const CameraParams& camera,
 
 void writeMediumConstants(FrameConstants& f, const CameraParams& camera, const LightParams& light,
                           const MediumParams& medium) {
-    f.medium = glm::vec4(medium.density, medium.baseHeight, medium.heightFog ? medium.falloff : 0.0f,
-                         0.0f);
+    f.medium = glm::vec4(medium.density, medium.baseHeight,
+                         medium.heightFog ? medium.falloff : 0.0f, 0.0f);
     int kept = 0;
     for (const FogVolumeParams& v : medium.volumes) {
         if (kept == LS_MAX_FOG_VOLUMES || !fogVolumeMatters(v, camera, light)) continue;
@@ -49,6 +49,14 @@ void writeMediumConstants(FrameConstants& f, const CameraParams& camera, const L
         ++kept;
     }
     f.medium.w = static_cast<float>(kept);
+    float scale = 1e30f;
+    if (medium.heightFog && medium.falloff > 0.0f) scale = std::min(scale, 1.0f / medium.falloff);
+    const glm::vec3 bt = medium.betaT();
+    const float densest = std::max({bt.x, bt.y, bt.z}) * medium.maxDensity();
+    if (densest > 0.0f) scale = std::min(scale, 0.2f / densest);
+    for (const FogVolumeParams& v : medium.volumes)
+        if (v.fade > 0.0f && fogVolumeMatters(v, camera, light)) scale = std::min(scale, v.fade);
+    f.mediumScale = glm::vec4(std::max(scale, 1e-6f), 0.0f, 0.0f, 0.0f);
 }
 
 }  // namespace ls

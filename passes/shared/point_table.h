@@ -23,6 +23,6 @@ rg::PersistentImageDesc pointTableDesc();
 // What a table filled with these constants depends on (shaders/shared/point_table.comp: the
 // medium, the phase, the light's radius and the table's scale), as one number: equal constants,
 // equal stamps.
-uint64_t pointTableStamp(const FrameConstants& constants, MiePhase phase);
+uint64_t pointTableStamp(const FrameConstants& constants, MiePhase phase, bool nonUniform);
 
 }  // namespace ls

@@ -12,7 +12,8 @@ rg::ImageRef addPointTable(rg::RenderGraph& graph, const PointTableInputs& in) {
     const rg::ImageRef table = rows.storageWrite(LS_BINDING_POINT_TABLE_OUT, kept);
     pass.execute([shared = in.shared, spec = in.spec, values = in.values, rows,
                   table](rg::PassContext& ctx) {
-        const uint64_t stamp = pointTableStamp(ctx.data(values).constants, spec.phase);
+        const uint64_t stamp =
+            pointTableStamp(ctx.data(values).constants, spec.phase, spec.media != 0);
         const rg::PersistentState left = ctx.persistent(table);
         if (left.written && left.stamp == stamp) return;  // filled by an earlier frame
         const auto& p =

@@ -9,7 +9,8 @@ namespace ls {
 
 TableLayout tableLayoutFor(const MediumParams& medium, float lightRadius, uint32_t width,
                            uint32_t height) {
-    const glm::vec3 bt = medium.betaT();
+    // A non-uniform medium's table has no extinction (point_table.comp).
+    const glm::vec3 bt = medium.nonUniform() ? glm::vec3(0.0f) : medium.betaT();
     // The table changes with h on two scales: near r0, where the phase angle along the ray turns
     // from a step into a smooth sweep, and near 1/betaT, where extinction sets in. A log axis
     // resolves both; past 50 extinction lengths (or the sky distance without extinction) nothing

@@ -17,6 +17,12 @@ rg::Specialization ScatterSpec::constants() const {
     return s;
 }
 
+rg::Specialization ScatterSpec::mediaConstants() const {
+    rg::Specialization s;
+    if (media != 0) s.set(LS_SPEC_MEDIA, static_cast<int32_t>(media));
+    return s;
+}
+
 const rg::Pipeline& PipelineLibrary::compute(const std::string& name, rg::ShaderCode code,
                                              const std::vector<rg::Binding>& bindings,
                                              uint32_t pushBytes, const rg::Specialization& spec) {

@@ -29,6 +29,9 @@ struct ScatterSpec {
     bool cubeShadow = false;       // a point light's six-face shadow map (a 2D array of 6 layers)
     int media = 0;                 // a non-uniform medium's parts: LS_MEDIA_* bits (bindings.h)
     rg::Specialization constants() const;
+    // The medium's constant alone (empty for a homogeneous medium), for the shaders that read
+    // nothing else of the light's options (the composite's transmittance).
+    rg::Specialization mediaConstants() const;
     bool operator==(const ScatterSpec&) const = default;
 };
 

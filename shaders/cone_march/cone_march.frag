@@ -5,7 +5,8 @@
 // baseline. Each sample evaluates the integrand of docs/model.md at the sample (transmittance to
 // the camera, phase function, the light's irradiance, shadow-map visibility and light color) and
 // weighs it by the sample spacing (midpoint rule), optionally at a per-pixel jittered offset.
-// Without shadow sampling (the seed's low-end mode) visibility is 1.
+// Without shadow sampling (the seed's low-end mode) visibility is 1. A non-uniform medium weighs
+// each sample by its density and the optical depth to it.
 #include "camera.glsl"
 #include "light_volume.glsl"
 #include "math.glsl"
@@ -47,7 +48,19 @@ void main() {
     if (t0 < t1) {
         float step = (t1 - t0) / float(kSamples);
         float offset = kJitter ? pixelNoise(vec2(pixel)) : 0.5;
-        for (int i = 0; i < kSamples; ++i) {
+        // A non-uniform medium: each sample scatters m(P) times, through the optical depth from
+        // the camera, taken exactly between consecutive samples.
+        float tau = 0.0, last = 0.0;
+        for (int i = 0; i < kSamples && kMedia != 0; ++i) {
+            float s = t0 + (float(i) + offset) * step;
+            vec3 P = C + s * v;
+            tau += opticalDepth(C + last * v, v, s - last);
+            last = s;
+            float cosTheta;
+            vec3 irr = lightAt(P, v, 0.0, cosTheta);
+            lin += densityAt(P) * exp(-frame.betaT.rgb * tau) * phaseSum(cosTheta) * irr;
+        }
+        for (int i = 0; i < kSamples && kMedia == 0; ++i) {
             float s = t0 + (float(i) + offset) * step;
             vec3 P = C + s * v;
             float cosTheta;

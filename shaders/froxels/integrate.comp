@@ -8,6 +8,7 @@
 // three channels, as engines keep it. Slice 0 starts at the camera.
 #include "froxel_grid.glsl"
 #include "math.glsl"
+#include "medium.glsl"
 #include "froxel_bindings.h"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = LS_BINDING_FROXEL_SCATTERING, rgba32f) uniform readonly image3D scattering;
@@ -18,7 +19,8 @@ void main() {
     ivec2 c = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(c, g.xy))) return;
     // The column's centre ray: its length per unit of camera-space z.
-    float perZ = 1.0 / axisCosine(rayDirection(columnNdc(vec2(c), vec2(0.5))));
+    vec3 dir = rayDirection(columnNdc(vec2(c), vec2(0.5)));
+    float perZ = 1.0 / axisCosine(dir);
     vec3 betaT = frame.betaT.rgb;
     vec3 lin = vec3(0.0), T = vec3(1.0);
     float start = 0.0;
@@ -26,8 +28,11 @@ void main() {
         float end = sliceZ(float(k + 1));
         float d = (end - start) * perZ;
         vec3 S = imageLoad(scattering, ivec3(c, k)).rgb;
-        vec3 sliceT = exp(-betaT * d);
-        lin += T * S * attenuatedLength(betaT, d);
+        // A non-uniform medium: the slice's optical depth along the column's ray, exact, stands
+        // for its length (its scattering and extinction both scale with m: dT = -betaT m T ds).
+        float depth = kMedia != 0 ? opticalDepth(frame.cameraPos.xyz + (start * perZ) * dir, dir, d) : d;
+        vec3 sliceT = exp(-betaT * depth);
+        lin += T * S * attenuatedLength(betaT, depth);
         T *= sliceT;
         start = end;
         imageStore(integrated, ivec3(c, k), vec4(clamp(lin * pc.slices.w, vec3(0.0), vec3(65504.0)), dot(T, vec3(1.0 / 3.0))));

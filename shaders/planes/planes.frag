@@ -86,7 +86,7 @@ void main() {
     vec3 irr = lightAt(worldPos, v, placement.params.x, cosTheta);
     if (all(equal(irr, vec3(0.0)))) discard;
     float ds = placement.boxMin.w / max(dot(v, frame.cameraForward.xyz), 1e-4);
-    vec3 share = towardCamera(s, cosTheta) * irr * ds;
+    vec3 share = towardCameraFrom(worldPos, s, cosTheta) * irr * ds;
 #if LS_NOISE
     share *= densityNoise(worldPos);
 #endif

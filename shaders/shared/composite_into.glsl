@@ -12,7 +12,9 @@
 // color * T + k Lin, the same sum.
 #ifndef LS_COMPOSITE_INTO_GLSL
 #define LS_COMPOSITE_INTO_GLSL
+#include "camera.glsl"
 #include "frame.glsl"
+#include "medium.glsl"
 
 #if LS_COLOR_RGBA32F
 layout(binding = LS_BINDING_ENGINE_COLOR, rgba32f) uniform image2D engineColor;
@@ -52,8 +54,15 @@ void compositeWith(ivec2 p, vec3 lin, vec3 transmittance, bool addOnly) {
 #endif
 }
 
+// The camera ray's transmittance to S: exp(-betaT S), or of its optical depth in a non-uniform
+// medium (the pixel's ray).
+vec3 pixelTransmittance(ivec2 p, float S) {
+    if (kMedia == 0) return exp(-frame.betaT.rgb * S);
+    return exp(-frame.betaT.rgb * opticalDepth(frame.cameraPos.xyz, pixelRayDirection(p), S));
+}
+
 void compositeInto(ivec2 p, vec3 lin, float S, bool addOnly) {
-    compositeWith(p, lin, addOnly ? vec3(1.0) : exp(-frame.betaT.rgb * S), addOnly);
+    compositeWith(p, lin, addOnly ? vec3(1.0) : pixelTransmittance(p, S), addOnly);
 }
 
 #endif

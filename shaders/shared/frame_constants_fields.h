@@ -41,6 +41,10 @@ LS_MAT4 cubeFaceViewProj[6];
 // y: the height fog's base height, z: its falloff (0 without height fog), w: the number of fog
 // volumes below (those that can touch the view or the light's path to it).
 LS_VEC4 medium;
+// x: the length over which a non-uniform medium's integrand changes little (the height fog's
+// 1 / falloff, a volume's fade, a fifth of a mean free path at the densest point), the longest
+// piece a point or spot light's integral takes (integrate.glsl); yzw: -
+LS_VEC4 mediumScale;
 // Each fog volume: rows 0-2 the box's local axes in world space (xyz) and -dot(axis, centre) (w),
 // so that dot(row, vec4(x, 1)) is x's local coordinate; row 3: the half extents (xyz) and the
 // fade (w). Stored as a mat4's columns.

@@ -1,10 +1,14 @@
 // Accumulates Lin along one ray, segment by segment, with one exponential (directional) or one
 // exponential and one table look-up (point, spot) per step. Differences of exponentials go through
-// expm1 (docs/model.md). Visibility may be colored (stained glass).
+// expm1 (docs/model.md). Visibility may be colored (stained glass). In a non-uniform medium
+// (kMedia != 0) the sun's segments stay exact given their optical depths, and a point or spot
+// light's are cut into pieces that the table integrates without extinction and that the medium
+// weighs at their middles.
 #ifndef LS_INTEGRATE_GLSL
 #define LS_INTEGRATE_GLSL
 #include "light_falloff.glsl"
 #include "math.glsl"
+#include "medium.glsl"
 #if LS_NEEDS_TABLE
 #include "lut.glsl"
 #endif
@@ -19,13 +23,16 @@ struct Inscatter {
     // length, each weighted by the falloff at its middle, on the ray from C along v; 0: none.
     float piece;
     vec3 C, v;
+    float tau;  // a non-uniform medium: the optical depth from the camera to d
 };
 
 vec3 carryAt(Inscatter a, float d) {
 #if LS_NEEDS_TABLE
+    if (kLightType != LIGHT_DIRECTIONAL && kMedia != 0) return pointTableT(a.h, a.sC + d);
     if (kLightType != LIGHT_DIRECTIONAL)
         return exp(-frame.betaT.rgb * d) * pointTableT(a.h, a.sC + d);
 #endif
+    if (kMedia != 0) return exp(-frame.betaT.rgb * a.tau);
     return exp(-frame.betaT.rgb * d);
 }
 
@@ -44,14 +51,58 @@ Inscatter beginInscatter(vec3 C, vec3 v, float d0) {
         a.sC = dot(v, q);
         a.piece = falloffPiece(a.h);
     }
+    a.tau = kMedia != 0 ? opticalDepth(C, v, d0) : 0.0;
     a.carry = carryAt(a, d0);
     return a;
+}
+
+// A point or spot light's [a.d, d] in a non-uniform medium. The table (without extinction) holds
+// the sharp part, the inverse square and the phase, exactly; each piece's share of it is weighed
+// by the piece's mean density (its optical depth over its length: a box face inside a piece
+// counts as much as it covers) and the transmittance along the camera ray and the light's path at
+// its middle. Pieces are even in the angle seen from the light, where the inverse square puts
+// equal shares, and no longer than the medium's scale.
+void advanceNonUniform(inout Inscatter a, float d, vec3 V) {
+    float r0 = frame.betaT.w;
+    float hEff = sqrt(a.h * a.h + r0 * r0);
+    float phiA = atan(a.sC + a.d, hEff), phiB = atan(a.sC + d, hEff);
+    float len = d - a.d;
+    float pieces = max(len / frame.mediumScale.x, (phiB - phiA) * (12.0 / PI));
+    if (a.piece > 0.0) pieces = max(pieces, len / a.piece);
+    int n = int(clamp(ceil(pieces), 1.0, 32.0));
+    for (int k = 0; k < n; ++k) {
+        float e = k == n - 1 ? d
+                             : clamp(hEff * tan(mix(phiA, phiB, float(k + 1) / float(n))) - a.sC,
+                                     a.d, d);
+        float l = e - a.d;
+        vec3 next = carryAt(a, e);
+        float dtau = opticalDepth(a.C + a.d * a.v, a.v, l);
+        vec3 mid = a.C + (0.5 * (a.d + e)) * a.v;
+        float meanDensity = l > 0.0 ? dtau / l : densityAt(mid);
+        vec3 w = meanDensity *
+                 exp(-frame.betaT.rgb * (a.tau + 0.5 * dtau + opticalDepthTo(mid, frame.lightPos.xyz)));
+        if (a.piece > 0.0) w *= lightFalloff(mid);
+        a.sum += (a.carry - next) * V * w;
+        a.carry = next;
+        a.tau += dtau;
+        a.d = e;
+    }
 }
 
 // Adds the segment [a.d, d] lit with visibility V.
 void advance(inout Inscatter a, float d, vec3 V) {
     if (d <= a.d) return;
-    if (kLightType == LIGHT_DIRECTIONAL) {
+    if (kMedia != 0 && kLightType == LIGHT_DIRECTIONAL) {
+        // Exact whatever m is: dT/ds = -betaT m T, so a lit run gives T(a) (1 - exp(-betaT dtau))
+        // / betaT of the optical depth dtau it spans.
+        float dtau = opticalDepth(a.C + a.d * a.v, a.v, d - a.d);
+        vec3 part = a.carry * attenuatedLength(frame.betaT.rgb, dtau);
+        a.sum += part * V;
+        a.carry *= exp(-frame.betaT.rgb * dtau);
+        a.tau += dtau;
+    } else if (kMedia != 0) {
+        advanceNonUniform(a, d, V);
+    } else if (kLightType == LIGHT_DIRECTIONAL) {
         vec3 w = attenuatedLength(frame.betaT.rgb, d - a.d);
         vec3 part = a.carry * w;
         a.sum += part * V;
@@ -77,6 +128,12 @@ void advance(inout Inscatter a, float d, vec3 V) {
 // Moves to d across a shadowed segment.
 void skip(inout Inscatter a, float d) {
     if (d <= a.d) return;
+    if (kMedia != 0) {
+        a.tau += opticalDepth(a.C + a.d * a.v, a.v, d - a.d);
+        a.d = d;
+        a.carry = carryAt(a, d);
+        return;
+    }
     if (kLightType == LIGHT_DIRECTIONAL)
         a.carry += a.carry * expm1v(-frame.betaT.rgb * (d - a.d));
     else

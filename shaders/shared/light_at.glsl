@@ -13,6 +13,7 @@
 #include "frame.glsl"
 #include "light_falloff.glsl"
 #include "math.glsl"
+#include "medium.glsl"
 #include "simplified.glsl"
 
 // `ambient` (1/m^2, point and spot lights): seed 002's term beside the inverse square; 0 is the model.
@@ -30,7 +31,9 @@ vec3 lightAt(vec3 P, vec3 v, float ambient, out float cosTheta) {
             irr = frame.lightIntensity.rgb * (simplifiedFalloff(r * r) + ambient);
         } else {
             float r0 = frame.betaT.w;
-            irr = frame.lightIntensity.rgb * exp(-frame.betaT.rgb * r) * (1.0 / (r * r + r0 * r0) + ambient);
+            // The light's path: r of the medium, or its optical depth in a non-uniform one.
+            float depth = kMedia != 0 ? opticalDepthTo(P, frame.lightPos.xyz) : r;
+            irr = frame.lightIntensity.rgb * exp(-frame.betaT.rgb * depth) * (1.0 / (r * r + r0 * r0) + ambient);
         }
         if (kLightType == LIGHT_SPOT && dot(-l, frame.lightDir.xyz) < frame.lightDir.w)
             return vec3(0.0);                              // outside the cone
@@ -66,6 +69,15 @@ vec3 lightAt(vec3 P, vec3 v, float ambient, out float cosTheta) {
 vec3 towardCamera(float s, float cosTheta) {
     if (kSimplifiedModel) return (frame.betaR.rgb + frame.betaM.rgb) / (4.0 * PI);
     return exp(-frame.betaT.rgb * s) * phaseSum(cosTheta);
+}
+
+// The same for the point P at distance s along the camera ray in any medium: m(P) T(s) P(t), with
+// T of the optical depth from the camera (a non-uniform medium's), or towardCamera's.
+vec3 towardCameraFrom(vec3 P, float s, float cosTheta) {
+    if (kMedia == 0 || kSimplifiedModel) return towardCamera(s, cosTheta);
+    vec3 C = frame.cameraPos.xyz;
+    float tau = s > 0.0 ? opticalDepth(C, (P - C) / s, s) : 0.0;
+    return densityAt(P) * exp(-frame.betaT.rgb * tau) * phaseSum(cosTheta);
 }
 
 #endif

@@ -26,7 +26,9 @@ void main() {
     float r0 = frame.betaT.w;
     float hEff = r0 * exp(float(row) / float(height - 1) * frame.lutInfo.x);
     float h2 = max(hEff * hEff - r0 * r0, 0.0);
-    vec3 beta = frame.betaT.rgb;
+    // A non-uniform medium's table holds the light's geometry and phase alone: its extinction
+    // varies along the ray and the light's path, and integrate.glsl applies it per piece.
+    vec3 beta = kMedia != 0 ? vec3(0.0) : frame.betaT.rgb;
 
     vec3 g = vec3(0.0);  // G = hEff T at s = +inf
     imageStore(table, ivec2(width - 1, row), vec4(g, 1.0));
