@@ -176,7 +176,7 @@ TEST(FrameLoop, TheLibraryIsTheHeadersVersion) {
     EXPECT_EQ(v.minor, uint32_t{LIGHTSCATTER_VERSION_MINOR});
     EXPECT_EQ(v.patch, uint32_t{LIGHTSCATTER_VERSION_PATCH});
     static_assert(
-        std::is_same_v<lightscatter::Plugin::HeaderVersion, lightscatter::HeaderVersion_0_5>);
+        std::is_same_v<lightscatter::Plugin::HeaderVersion, lightscatter::HeaderVersion_0_6>);
 }
 
 }  // namespace
