@@ -35,6 +35,7 @@
 #include "rendergraph/memory_counter.h"
 #include "rendergraph/pipeline.h"
 #include "rendergraph/vk_error.h"
+#include "scene/medium_json.h"
 #include "settings_fields.h"
 #include "settings_panel.h"
 #include "swapchain.h"
@@ -439,6 +440,7 @@ int runView(Args& args) {
     MediumDesc goodMedium = renderer.scene().medium;
     lightscatter::FrameReport lastReport;
     std::vector<std::pair<long, std::string>> frameSteps{{-1, ""}};  // by the plugin's frame
+    std::vector<nlohmann::json> frameMedia{nullptr};  // the medium each frame ran with
     auto logReport = [&](const lightscatter::FrameReport& r) {
         lastReport = r;
         if (reportLogPath.empty() || r.frame == 0 || r.frame >= frameSteps.size()) return;
@@ -446,7 +448,8 @@ int runView(Args& args) {
                             {"step", frameSteps[r.frame].first},
                             {"refused", frameSteps[r.frame].second},
                             {"method", r.method},
-                            {"reason", r.reason}};
+                            {"reason", r.reason},
+                            {"medium", frameMedia[r.frame]}};
         e["lights"] = nlohmann::json::array();
         for (const auto& l : r.lights) {
             nlohmann::json fields = nlohmann::json::object();
@@ -586,7 +589,7 @@ int runView(Args& args) {
             }
         }
         const long step = static_cast<size_t>(frame) < script.size() ? frame : -1;
-        script.apply(static_cast<size_t>(frame), panel, options);
+        script.apply(static_cast<size_t>(frame), panel, options, renderer.scene());
         auto structure = [&] {
             std::vector<std::pair<lightscatter::LightType, uint32_t>> v;
             for (size_t i = 0; i < renderer.scene().lightCount(); ++i)
@@ -631,6 +634,7 @@ int runView(Args& args) {
             run.timeSeconds = std::chrono::duration<double>(now - start).count();
         }
         frameSteps.emplace_back(step, refusal);
+        frameMedia.push_back(mediumJson(renderer.scene().medium));
         RG_VK(vkResetFences(device.device(), 1, &fence));
         RG_VK(vkResetCommandBuffer(cmd, 0));
         VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};

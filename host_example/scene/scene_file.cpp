@@ -14,6 +14,7 @@
 #include "scene/gltf_lights.h"
 #include "scene/input_file.h"
 #include "scene/json_input.h"
+#include "scene/medium_json.h"
 #include "scene/scene.h"
 
 namespace host {
@@ -39,6 +40,21 @@ std::string joinNames(std::initializer_list<const char*> names) {
 class SceneReader {
   public:
     explicit SceneReader(const std::string& path) : path_(path) {}
+
+    // A "medium" object alone (a panel script's step), over `medium`.
+    void readMediumOnly(const json& v, MediumDesc& medium) const {
+        if (!v.is_object()) fail("medium must be an object");
+        // Replaced as a whole where given: a script that sets the volumes sets all of them.
+        if (v.contains("fogVolumes")) medium.fogVolumes.clear();
+        if (v.contains("heightFog") && v["heightFog"].is_null()) {
+            json rest = v;
+            rest.erase("heightFog");
+            medium.heightFog.reset();
+            readMedium(rest, medium);
+            return;
+        }
+        readMedium(v, medium);
+    }
 
     SceneDesc read() {
         SceneDesc scene;
@@ -613,8 +629,9 @@ class SceneReader {
         put(out.halfExtents, vec3InRange(*half, name + ".halfExtents", 0.0f, limits::kMaxLength));
         if (const json* x = member(v, "axes")) {
             if (!x->is_array() || x->size() != 3)
-                fail(name + ".axes must be an array of 3 axes (the box's local x, y, z in world "
-                            "space)");
+                fail(name +
+                     ".axes must be an array of 3 axes (the box's local x, y, z in world "
+                     "space)");
             for (size_t j = 0; j < 3; ++j) {
                 const std::string axis = name + ".axes[" + std::to_string(j) + "]";
                 const glm::vec3 a = vec3((*x)[j], axis);
@@ -622,8 +639,8 @@ class SceneReader {
                     fail(axis + " has length " + shortestText(glm::length(a)) +
                          ": the axes must be unit vectors (within 1e-3)");
                 for (size_t k = 0; k < j; ++k) {
-                    const float d = glm::dot(a, glm::vec3(out.axes[k][0], out.axes[k][1],
-                                                          out.axes[k][2]));
+                    const float d =
+                        glm::dot(a, glm::vec3(out.axes[k][0], out.axes[k][1], out.axes[k][2]));
                     if (std::fabs(d) > 1e-3f)
                         fail(axis + " and " + name + ".axes[" + std::to_string(k) +
                              "] have dot product " + shortestText(d) +
@@ -643,6 +660,11 @@ class SceneReader {
 };
 
 }  // namespace
+
+MediumDesc readMediumJson(const nlohmann::json& v, const std::string& source, MediumDesc start) {
+    SceneReader(source).readMediumOnly(v, start);
+    return start;
+}
 
 SceneDesc loadSceneFile(const std::string& path) {
     Activity reading("reading " + path);

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "scene/json_input.h"
+#include "scene/medium_json.h"
 
 namespace host {
 namespace {
@@ -74,15 +75,22 @@ PanelScript::PanelScript(const std::string& path) : path_(path) {
                         fail(k, "settings." + field.key() + " = " + field.value().dump() +
                                     ": not a value of this field's kind");
                 }
+            } else if (key == "medium") {
+                try {  // checked now against a default medium, applied over the scene's later
+                    readMediumJson(v, path + ": step " + std::to_string(k), MediumDesc{});
+                } catch (const SceneError& e) {
+                    throw std::runtime_error(e.what());
+                }
             } else {
-                fail(k, "unknown key '" + key + "' (known: method, profile, settings, save)");
+                fail(k,
+                     "unknown key '" + key + "' (known: method, profile, settings, medium, save)");
             }
         }
         steps_.push_back(step);
     }
 }
 
-void PanelScript::apply(size_t k, SettingsPanel& panel, RenderOptions& o) const {
+void PanelScript::apply(size_t k, SettingsPanel& panel, RenderOptions& o, SceneDesc& scene) const {
     if (k >= steps_.size()) return;
     const nlohmann::json& step = steps_[k];
     if (step.contains("method"))
@@ -96,6 +104,8 @@ void PanelScript::apply(size_t k, SettingsPanel& panel, RenderOptions& o) const 
             for (int c = 0; c < components; ++c)
                 panel.setField(o, f, *numberFor(f, field.value(), c), c);
         }
+    if (step.contains("medium"))
+        panel.setMedium(scene, readMediumJson(step["medium"], path_, scene.medium));
     if (step.contains("save")) panel.save(o, step["save"].get<std::string>());
 }
 

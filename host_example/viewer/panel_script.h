@@ -2,8 +2,10 @@
 // --panel-script FILE.json: edits for the settings panel, one step per frame, made through the
 // panel's own functions (what a user's clicks do), so that a test can drive the panel without a
 // pointer. FILE.json is an array; step k is made before frame k:
-//   {"settings": {"slices": 256, ...}, "method": "auto", "profile": "custom", "save": "out.json"}
-// with the settings in a settings file's terms (settings_fields.h).
+//   {"settings": {"slices": 256, ...}, "method": "auto", "profile": "custom", "save": "out.json",
+//    "medium": {"density": 0.5, "heightFog": {...} or null, "fogVolumes": [...]}}
+// with the settings in a settings file's terms (settings_fields.h) and the medium in SCENE.json's
+// (the fields it gives replace the scene's; "fogVolumes" replaces the whole list).
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -20,7 +22,7 @@ class PanelScript {
     explicit PanelScript(const std::string& path);
     size_t size() const { return steps_.size(); }
     // Makes step k (if there is one) through `panel`.
-    void apply(size_t k, SettingsPanel& panel, RenderOptions& o) const;
+    void apply(size_t k, SettingsPanel& panel, RenderOptions& o, SceneDesc& scene) const;
 
   private:
     std::string path_;

@@ -2,6 +2,8 @@
 
 #include <imgui.h>
 
+#include <glm/glm.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -307,7 +309,80 @@ void SettingsPanel::drawLights(SceneDesc& scene) {
     }
 }
 
+void SettingsPanel::setMedium(SceneDesc& s, const MediumDesc& medium) const {
+    s.medium = medium;
+}
+
+namespace {
+
+// A fog volume's box turned about world +Y by `degrees` (its axes; the panel's one rotation).
+void setYaw(lightscatter::FogVolume& v, float degrees) {
+    const float a = glm::radians(degrees), c = std::cos(a), s = std::sin(a);
+    v.axes = {{{c, 0.0f, -s}, {0.0f, 1.0f, 0.0f}, {s, 0.0f, c}}};
+}
+
+float yawOf(const lightscatter::FogVolume& v) {
+    return glm::degrees(std::atan2(-v.axes[0][2], v.axes[0][0]));
+}
+
+// docs/model.md's non-uniform medium: d0, the height fog and each fog volume, on a copy that
+// goes through setMedium when a widget changed it.
+bool drawFog(MediumDesc& m) {
+    bool changed = false;
+    changed |= ImGui::DragFloat("density", &m.density, 0.01f, 0.0f,
+                                lightscatter::limits::kMaxDensity, "%.3f");
+    bool fog = m.heightFog.has_value();
+    if (ImGui::Checkbox("height fog", &fog)) {
+        changed = true;
+        if (fog)
+            m.heightFog = lightscatter::HeightFog{0.0f, 0.1f};
+        else
+            m.heightFog.reset();
+    }
+    if (m.heightFog) {
+        changed |= ImGui::DragFloat("base height (m)", &m.heightFog->baseHeight, 0.05f,
+                                    -lightscatter::limits::kMaxLength,
+                                    lightscatter::limits::kMaxLength, "%.3f");
+        changed |= ImGui::DragFloat("falloff (1/m)", &m.heightFog->falloff, 0.01f, 0.0f,
+                                    lightscatter::limits::kMaxFogFalloff, "%.4g",
+                                    ImGuiSliderFlags_Logarithmic);
+    }
+    for (size_t i = 0; i < m.fogVolumes.size(); ++i) {
+        lightscatter::FogVolume& v = m.fogVolumes[i];
+        ImGui::PushID(static_cast<int>(i));
+        ImGui::Text("fog volume %zu", i);
+        changed |= ImGui::DragFloat3("center", v.center.data(), 0.05f);
+        changed |= ImGui::DragFloat3("half extents", v.halfExtents.data(), 0.02f, 0.0f,
+                                     lightscatter::limits::kMaxLength);
+        float yaw = yawOf(v);
+        if (ImGui::SliderFloat("yaw", &yaw, -180.0f, 180.0f, "%.1f deg")) {
+            setYaw(v, yaw);
+            changed = true;
+        }
+        changed |= ImGui::DragFloat("volume density", &v.density, 0.01f, 0.0f,
+                                    lightscatter::limits::kMaxDensity, "%.3f");
+        changed |= ImGui::DragFloat("fade (m)", &v.fade, 0.01f, 0.0f,
+                                    lightscatter::limits::kMaxLength, "%.3f");
+        const bool remove = ImGui::Button("remove volume");
+        ImGui::PopID();
+        if (remove) {
+            m.fogVolumes.erase(m.fogVolumes.begin() + static_cast<std::ptrdiff_t>(i));
+            return true;
+        }
+    }
+    if (m.fogVolumes.size() < lightscatter::limits::kMaxFogVolumes &&
+        ImGui::Button("add fog volume")) {
+        m.fogVolumes.emplace_back();
+        changed = true;
+    }
+    return changed;
+}
+
+}  // namespace
+
 void SettingsPanel::drawMedium(SceneDesc& scene) {
+    MediumDesc fog = scene.medium;
+    if (drawFog(fog)) setMedium(scene, fog);
     MediumDesc& m = scene.medium;
     const float maxC = lightscatter::limits::kMaxCoefficient;
     dragVec3("betaR (1/m)", m.betaR, 0.0f, maxC, "%.3e");

@@ -37,6 +37,9 @@ class SettingsPanel {
     // once.
     void setLightType(SceneDesc& s, size_t light, lightscatter::LightType type);
     void setShadowMapSize(SceneDesc& s, size_t light, uint32_t size);
+    // The medium as a whole (its density, height fog and fog volumes are edited live: the plugin
+    // takes a new medium every frame, and refuses one it cannot render).
+    void setMedium(SceneDesc& s, const MediumDesc& medium) const;
     bool rebuildTargets();
 
     // The settings a frame with these options runs with: the profile's sizes over `custom`.

@@ -170,6 +170,51 @@ TEST(Panel, ARefusedEditIsShownUndoneAndTheWindowRunsOn) {
     EXPECT_TRUE(seen) << log.dump();
 }
 
+// The medium edited live (docs/model.md's height fog and fog volumes): each frame after an edit
+// runs with it; a fog volume the running method cannot take is refused, shown and undone; and
+// a method that takes it then runs it.
+TEST(Panel, EditsTheMediaLiveAndARefusedOneIsUndone) {
+    ASSERT_EQ(std::system("command -v xvfb-run > /dev/null"), 0)
+        << "xvfb-run is missing (Debian package xvfb)";
+    cli_test::writeFile("script.json", R"([
+        {"method": "epipolar", "medium": {"heightFog": {"baseHeight": 0.5, "falloff": 0.8}}},
+        {"medium": {"density": 0.5, "fogVolumes": [{"center": [0, 0.8, -4],
+            "halfExtents": [1, 1, 1], "density": 3, "fade": 0.3}]}},
+        {"method": "beam-tree-analytic"},
+        {"method": "beam-tree-sampling", "medium": {"heightFog": null}},
+        {"medium": {"fogVolumes": [{"center": [0, 0.8, -2], "halfExtents": [1, 2, 1],
+            "axes": [[0.8, 0, -0.6], [0, 1, 0], [0.6, 0, 0.8]], "density": 1}]}},
+        {}])");
+    const auto r = cli_test::run("view " + cli_test::scene("engine_spot") +
+                                     " --size 64x36 --frames 6 --panel-script script.json"
+                                     " --report-log log.json --validation",
+                                 kXvfb);
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    const json log = readLog("log.json");
+    std::map<long, json> byStep;
+    for (const json& e : log)
+        if (e["step"].get<long>() >= 0) byStep[e["step"].get<long>()] = e;
+    ASSERT_EQ(byStep.size(), 6u) << log.dump();
+    EXPECT_EQ(byStep[0]["refused"], "");
+    EXPECT_EQ(byStep[0]["medium"]["heightFog"]["falloff"], 0.8f);
+    EXPECT_EQ(byStep[0]["method"], "epipolar");
+    EXPECT_EQ(byStep[1]["refused"], "");
+    EXPECT_EQ(byStep[1]["medium"]["density"], 0.5f);
+    EXPECT_EQ(byStep[1]["medium"]["fogVolumes"].size(), 1u);
+    EXPECT_EQ(byStep[1]["medium"]["fogVolumes"][0]["fade"], 0.3f);
+    // beam-tree-analytic integrates a homogeneous medium only: refused, the method undone.
+    EXPECT_NE(byStep[2]["refused"].get<std::string>().find("homogeneous medium only"),
+              std::string::npos)
+        << byStep[2]["refused"];
+    EXPECT_EQ(byStep[2]["method"], "epipolar");
+    EXPECT_EQ(byStep[3]["refused"], "");
+    EXPECT_EQ(byStep[3]["method"], "beam-tree-sampling");
+    EXPECT_TRUE(byStep[3]["medium"]["heightFog"].is_null());
+    EXPECT_EQ(byStep[4]["medium"]["fogVolumes"][0]["axes"][0][0], 0.8f);
+    EXPECT_EQ(byStep[4]["medium"]["fogVolumes"][0]["center"][2], -2.0f);
+    EXPECT_EQ(byStep[5]["refused"], "");
+}
+
 TEST(Panel, SaveSettingsWritesAFileTheCommandLineReadsBack) {
     ASSERT_EQ(std::system("command -v xvfb-run > /dev/null"), 0)
         << "xvfb-run is missing (Debian package xvfb)";
