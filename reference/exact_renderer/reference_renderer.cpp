@@ -15,6 +15,7 @@
 #include "float64_model/closed_forms.h"
 #include "float64_model/inscatter_integral.h"
 #include "float64_model/ray_geometry.h"
+#include "float64_model/transmittance.h"
 #include "visibility.h"
 
 namespace host::reference {
@@ -38,9 +39,26 @@ ls::ref::Light toReferenceLight(const LightDesc& l) {
 
 ls::ref::Medium toReferenceMedium(const MediumDesc& m) {
     ls::ref::Medium out;
-    out.betaR = glm::dvec3(m.betaR);
-    out.betaM = glm::dvec3(m.betaM);
-    out.sigmaA = glm::dvec3(m.sigmaA);
+    // The plugin folds a homogeneous density into its float coefficients (exactly so at 1): the
+    // reference must model those coefficients, not the product in double.
+    const float fold = m.nonUniform() ? 1.0f : m.density;
+    out.betaR = glm::dvec3(m.betaR * fold);
+    out.betaM = glm::dvec3(m.betaM * fold);
+    out.sigmaA = glm::dvec3(m.sigmaA * fold);
+    if (m.nonUniform()) {
+        out.density.base = m.density;
+        if (m.heightFog) out.density.heightFog = {m.heightFog->baseHeight, m.heightFog->falloff};
+        for (const lightscatter::FogVolume& v : m.fogVolumes) {
+            ls::ref::FogBox box;
+            box.center = {v.center[0], v.center[1], v.center[2]};
+            box.halfExtents = {v.halfExtents[0], v.halfExtents[1], v.halfExtents[2]};
+            for (int j = 0; j < 3; ++j)
+                box.axes[j] = glm::normalize(glm::dvec3(v.axes[j][0], v.axes[j][1], v.axes[j][2]));
+            box.density = v.density;
+            box.fade = v.fade;
+            out.density.volumes.push_back(box);
+        }
+    }
     out.g = m.g;
     out.miePhase = m.phase == lightscatter::MiePhase::Isotropic ? ls::ref::Medium::Isotropic
                    : m.phase == lightscatter::MiePhase::Hazy    ? ls::ref::Medium::Hazy
@@ -130,12 +148,7 @@ glm::dvec3 ReferenceScene::inscatter(const ls::ref::Ray& ray, std::size_t light)
     // light); its texels' kinks are left to the adaptive rule.
     const std::vector<ls::ref::Interval> lit01 = ls::ref::normalizeIntervals(lit, ray.length);
     if (lit01.empty()) return glm::dvec3(0.0);
-    std::vector<double> cuts = ls::ref::lightFeatureDistances(l, ray);
-    const glm::dvec3 beta = medium_.betaT();
-    if (const double betaMax = std::max({beta.x, beta.y, beta.z}); betaMax > 0.0)
-        for (const ls::ref::Interval& in : lit01)
-            ls::ref::appendGeometricMesh(cuts, in.begin, 1.0 / (16.0 * betaMax), 1.0, in.begin,
-                                         in.end);
+    std::vector<double> cuts = ls::ref::inscatterBreakpoints(medium_, l, ray, lit01);
     const glm::dvec4 a = cookie.projection * glm::dvec4(ray.origin, 1.0);
     const glm::dvec4 b = cookie.projection * glm::dvec4(ray.direction, 0.0);
     auto crossing = [&](double c0, double c1) {  // where c0 + s c1 = 0
@@ -160,6 +173,10 @@ glm::dvec3 ReferenceScene::inscatter(const ls::ref::Ray& ray) const {
     glm::dvec3 sum(0.0);
     for (std::size_t i = 0; i < lights_.size(); ++i) sum += inscatter(ray, i);
     return sum;
+}
+
+glm::dvec3 ReferenceScene::transmittance(const ls::ref::Ray& ray) const {
+    return ls::ref::viewTransmittance(medium_, ray);
 }
 
 ReferenceImage renderReference(const SceneDesc& scene, const MeshData& mesh, uint32_t width,

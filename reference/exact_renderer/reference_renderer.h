@@ -52,7 +52,10 @@ struct ReferenceImage {
 
 // SceneDesc's light and medium as the float64 model takes them: the direction normalised, the
 // spot's half-angle in radians, r0 = radius. A spot's range is kept as given (the scene's default
-// 1e30 m is effectively infinite); a point light has none.
+// 1e30 m is effectively infinite); a point light has none. A homogeneous medium's density is folded
+// into its coefficients as the plugin folds it (in float), so that its model is the homogeneous
+// one; a non-uniform medium keeps its coefficients and takes density, height fog and volumes (axes
+// normalised in double) as its ls::ref::Density.
 [[nodiscard]] ls::ref::Light toReferenceLight(const LightDesc& light);
 [[nodiscard]] ls::ref::Medium toReferenceMedium(const MediumDesc& medium);
 
@@ -77,6 +80,8 @@ class ReferenceScene {
     [[nodiscard]] glm::dvec3 inscatter(const ls::ref::Ray& ray, std::size_t light) const;
     // Lin of every light along the ray: the sum of the above, in the scene's order of lights.
     [[nodiscard]] glm::dvec3 inscatter(const ls::ref::Ray& ray) const;
+    // T(S) of the ray per channel, exp(-betaT tau(S)): the composite is Lobj T(S) + Lin.
+    [[nodiscard]] glm::dvec3 transmittance(const ls::ref::Ray& ray) const;
 
     [[nodiscard]] const PixelCamera& camera() const { return camera_; }
     [[nodiscard]] const Bvh& bvh() const { return bvh_; }

@@ -5,8 +5,10 @@
 #include <stdexcept>
 #include <vector>
 
+#include <glm/exponential.hpp>
 #include <glm/geometric.hpp>
 
+#include "optical_depth.h"
 #include "ray_geometry.h"
 
 namespace ls::ref {
@@ -47,8 +49,18 @@ glm::dvec3 directionalClosedForm(const Medium& medium, const Light& light, const
     const Ray& unit = *maybeUnit;
     const glm::dvec3 beta = medium.betaT();
     glm::dvec3 sum(0.0);
-    for (const Interval& in : normalizeIntervals(lit, unit.length)) {
-        sum += attenuatedLength(beta, in.begin, in.end);
+    if (!medium.density.unit()) {
+        // dT/ds = -betaT m T, so a run [a, b] gives T(a) times the integral of exp(-betaT u) over
+        // the optical depth u in [0, dtau], dtau taken directly (never T(a) - T(b)).
+        for (const Interval& in : normalizeIntervals(lit, unit.length)) {
+            const double before = opticalDepth(medium.density, unit, 0.0, in.begin);
+            const double run = opticalDepth(medium.density, unit, in.begin, in.end);
+            sum += glm::exp(-beta * before) * attenuatedLength(beta, 0.0, run);
+        }
+    } else {
+        for (const Interval& in : normalizeIntervals(lit, unit.length)) {
+            sum += attenuatedLength(beta, in.begin, in.end);
+        }
     }
     // cosTheta ignores the point for a directional light.
     return light.intensity * medium.P(cosTheta(light, unit.direction, unit.origin)) * sum;
@@ -79,6 +91,9 @@ glm::dvec3 pointArctanClosedForm(const Medium& medium, const Light& light, const
                                  std::span<const Interval> lit) {
     if (light.type == Light::Directional) {
         throw std::invalid_argument("pointArctanClosedForm: needs a point or spot light");
+    }
+    if (!medium.density.unit()) {
+        throw std::invalid_argument("pointArctanClosedForm: needs a homogeneous medium (m = 1)");
     }
     if (medium.betaR != glm::dvec3(0.0) || medium.miePhase != Medium::Isotropic) {
         throw std::invalid_argument(
@@ -111,6 +126,8 @@ glm::dvec3 simplifiedClosedForm(const Medium& medium, const Light& light, const 
         throw std::invalid_argument("simplifiedClosedForm: needs a point or spot light");
     if (!(a1 > 0.0) || !(a0 >= 0.0))
         throw std::invalid_argument("simplifiedClosedForm: needs a1 > 0 and a0 >= 0");
+    if (!medium.density.unit())
+        throw std::invalid_argument("simplifiedClosedForm: needs a homogeneous medium (m = 1)");
     const std::optional<Ray> maybeUnit = unitRay(ray);
     if (!maybeUnit) return glm::dvec3(0.0);
     const Ray& unit = *maybeUnit;

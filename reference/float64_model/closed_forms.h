@@ -23,7 +23,9 @@ namespace ls::ref {
                                                const Ray& ray);
 
 // Directional light with V = 1 on the union of the lit intervals (camera distances, clipped to
-// [0, S]): E P(t) sum over them of the integral of exp(-betaT s).
+// [0, S]): E P(t) sum over them of the integral of exp(-betaT s). Where m varies, a run [a, b]
+// gives E P(t) T(a) (-expm1(-betaT dtau)) / betaT (dtau in a channel where betaT is 0), dtau the
+// optical depth of [a, b] (docs/model.md): exact too, since dT/ds = -betaT m T.
 [[nodiscard]] glm::dvec3 directionalClosedForm(const Medium& medium, const Light& light,
                                                const Ray& ray, std::span<const Interval> lit);
 
@@ -39,7 +41,8 @@ namespace ls::ref {
 // miePhase == Isotropic, so P(t) = betaM / (4 pi) and betaS = betaM; and (2) there is no
 // extinction, betaT = 0 (the exp terms are dropped; with betaT > 0 it over-estimates Lin by a
 // relative amount at most betaT (S + |q| + S)). Condition (1) is checked: std::invalid_argument
-// otherwise, and for directional lights. Spot lights are limited to their cone and range.
+// otherwise, for directional lights, and for a medium whose m is not 1. Spot lights are limited to
+// their cone and range.
 [[nodiscard]] glm::dvec3 pointArctanClosedForm(const Medium& medium, const Light& light,
                                                const Ray& ray);
 [[nodiscard]] glm::dvec3 pointArctanClosedForm(const Medium& medium, const Light& light,
@@ -50,7 +53,7 @@ namespace ls::ref {
 // its range (the seed's cone intersection), V = 1 on `lit`. Its closed form (2.17) is
 // betaS I / (4 pi a1) times the arctangent integral with w^2 = h^2 + a0 / a1, h the ray's distance
 // from the light. a1 = 1, a0 = r0^2 is seed 001's closed form with the model's r0. Throws
-// std::invalid_argument for a directional light, a1 <= 0 or a0 < 0.
+// std::invalid_argument for a directional light, a1 <= 0, a0 < 0 or a medium whose m is not 1.
 [[nodiscard]] glm::dvec3 simplifiedClosedForm(const Medium& medium, const Light& light,
                                               const Ray& ray, double a0, double a1);
 [[nodiscard]] glm::dvec3 simplifiedClosedForm(const Medium& medium, const Light& light,

@@ -6,6 +6,8 @@
 #include <glm/exponential.hpp>
 #include <glm/geometric.hpp>
 
+#include "optical_depth.h"
+
 namespace ls::ref {
 
 double effectiveRadius(const Light& light) {
@@ -46,6 +48,11 @@ glm::dvec3 irradiance(const Light& light, const Medium& medium, const glm::dvec3
     if (!insideSpot(light, p)) return glm::dvec3(0.0);
     const double r = glm::length(light.position - p);
     const double r0 = effectiveRadius(light);
+    if (!medium.density.unit()) {
+        const double tau = opticalDepth(medium.density, p, light.position);
+        return light.intensity * glm::exp(-medium.betaT() * tau) / (r * r + r0 * r0) *
+               falloff(light, p);
+    }
     return light.intensity * glm::exp(-medium.betaT() * r) / (r * r + r0 * r0) * falloff(light, p);
 }
 

@@ -33,7 +33,8 @@ inline constexpr double kMinLightRadius = 1.0e-6;
 [[nodiscard]] double effectiveRadius(const Light& light);
 
 // Irradiance reaching the point p, before visibility (W/m^2 per channel). Point and spot lights
-// attenuate by exp(-betaT r) / (r^2 + r0^2) times falloff(); spot lights are zero outside the
+// attenuate by exp(-betaT tau) / (r^2 + r0^2) times falloff(), tau the optical depth of the
+// medium's density from p to the light (r when m = 1); spot lights are zero outside the
 // single outer cone (dot(p - L, axis) >= cos(outer) |p - L|, boundary included, apex included),
 // point and spot lights beyond range.
 [[nodiscard]] glm::dvec3 irradiance(const Light& light, const Medium& medium, const glm::dvec3& p);

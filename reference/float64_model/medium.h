@@ -2,10 +2,12 @@
 
 #include <glm/vec3.hpp>
 
+#include "density.h"
+
 namespace ls::ref {
 
-// The homogeneous single-scattering medium of docs/model.md. Coefficients are per colour channel,
-// in 1/m.
+// The single-scattering medium of docs/model.md. Coefficients are per colour channel, in 1/m, those
+// of density factor 1: the factor m(x) multiplies all three at x.
 struct Medium {
     // Unscoped so that both Medium::Isotropic and Medium::Phase::Isotropic read naturally.
     enum Phase { CornetteShanks, Isotropic, Hazy };
@@ -16,6 +18,9 @@ struct Medium {
     double g = 0.0;          // Mie asymmetry, in (-1, 1); ignored by the isotropic lobe
     Phase miePhase = CornetteShanks;
     double maxDistance = 1.0e4;  // S of sky pixels when the far plane is infinite (metres)
+    // m(x). The default, m = 1, is the homogeneous medium: every formula then takes its own path,
+    // as it did before the medium could vary, and gives the same numbers bit for bit.
+    Density density;
 
     // Extinction betaR + betaM + sigmaA.
     [[nodiscard]] glm::dvec3 betaT() const;

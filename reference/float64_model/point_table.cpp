@@ -61,6 +61,10 @@ PointRayFrame pointRayFrame(const Light& light, const Ray& ray) {
 
 glm::dvec3 pointTable(const Medium& medium, const Light& light, double h, double s,
                       const QuadOptions& options) {
+    // The table's coordinates hold only the ray's distance from the light: a medium that varies
+    // from point to point has no such table (docs/model.md).
+    if (!medium.density.unit())
+        throw std::invalid_argument("pointTable: needs a homogeneous medium (m = 1)");
     if (!std::isfinite(h) || !std::isfinite(s)) return glm::dvec3(0.0);
     const glm::dvec3 beta = medium.betaT();
     const double betaMax = std::max({beta.x, beta.y, beta.z});
@@ -96,6 +100,8 @@ glm::dvec3 inscatterFromPointTable(const Medium& medium, const Light& light, con
     if (light.type == Light::Directional) {
         throw std::invalid_argument("inscatterFromPointTable: needs a point or spot light");
     }
+    if (!medium.density.unit())
+        throw std::invalid_argument("inscatterFromPointTable: needs a homogeneous medium (m = 1)");
     const std::optional<Ray> maybeUnit = unitRay(ray);
     if (!maybeUnit) return glm::dvec3(0.0);
     const Ray& unit = *maybeUnit;

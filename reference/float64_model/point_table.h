@@ -27,6 +27,8 @@ struct PointRayFrame {
 // Integrated to options.relTol on a growing range [s, X]; X grows by 16x until the bound
 // I max(P) exp(-betaT (2X - s)) / X on what lies beyond is below 1e-16 of the sum in every channel.
 // No range or cone cut: for a spot light the caller restricts the lit intervals instead.
+// The table assumes m = 1 everywhere: std::invalid_argument for a medium whose density varies or is
+// not 1 (fold a homogeneous density into the coefficients first).
 [[nodiscard]] glm::dvec3 pointTable(const Medium& medium, const Light& light, double h, double s,
                                     const QuadOptions& options = {});
 
@@ -41,7 +43,7 @@ struct PointRayFrame {
 
 // Lin of a point or spot light from the table: the sum of pointTableSegment over the lit intervals
 // (camera distances, clipped to [0, S]), intersected with the spot's cone and range for a spot.
-// Throws std::invalid_argument for a directional light.
+// Throws std::invalid_argument for a directional light, and as pointTable does.
 [[nodiscard]] glm::dvec3 inscatterFromPointTable(const Medium& medium, const Light& light,
                                                  const Ray& ray, std::span<const Interval> lit,
                                                  const QuadOptions& options = {});

@@ -13,12 +13,14 @@
 #include <string>
 #include <vector>
 
+#include <glm/exponential.hpp>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
 #include "exact_renderer/reference_renderer.h"
 #include "float64_model/closed_forms.h"
 #include "float64_model/inscatter_integral.h"
+#include "float64_model/optical_depth.h"
 #include "float64_model/ray_geometry.h"
 #include "scene/scene.h"
 
@@ -668,6 +670,104 @@ TEST(ReferenceRenderer, ProgressRisesToOne) {
         renderReference(c.scene, c.mesh, 0, 0, c.options, [&](double f) { seen.push_back(f); });
     EXPECT_TRUE(empty.rgb.empty());
     EXPECT_EQ(seen, std::vector<double>{1.0});
+}
+
+// docs/model.md's non-uniform medium: a homogeneous density folds into the coefficients as the
+// plugin folds it (a float product), and height fog and volumes become the model's Density.
+TEST(ReferenceRenderer, ConvertsTheMediumsDensity) {
+    host::MediumDesc m;
+    m.betaR = {0.1f, 0.2f, 0.3f};
+    m.betaM = {0.01f, 0.02f, 0.03f};
+    m.sigmaA = {0.5f, 0.25f, 0.125f};
+    m.density = 0.3f;
+    const ls::ref::Medium folded = host::reference::toReferenceMedium(m);
+    EXPECT_TRUE(folded.density.unit());
+    EXPECT_EQ(folded.betaR, glm::dvec3(m.betaR * 0.3f));
+    EXPECT_EQ(folded.betaM, glm::dvec3(m.betaM * 0.3f));
+    EXPECT_EQ(folded.sigmaA, glm::dvec3(m.sigmaA * 0.3f));
+
+    m.heightFog = lightscatter::HeightFog{2.0f, 0.5f};
+    lightscatter::FogVolume v;
+    v.center = {1.0f, 2.0f, 3.0f};
+    v.halfExtents = {4.0f, 5.0f, 6.0f};
+    v.axes = {{{0.0f, 0.0f, 1.0f}, {0.0f, 1.0005f, 0.0f}, {-1.0f, 0.0f, 0.0f}}};
+    v.density = 2.5f;
+    v.fade = 0.75f;
+    m.fogVolumes.push_back(v);
+    const ls::ref::Medium fog = host::reference::toReferenceMedium(m);
+    EXPECT_EQ(fog.betaR, glm::dvec3(m.betaR));  // m(x) multiplies them: nothing folded
+    EXPECT_EQ(fog.density.base, static_cast<double>(0.3f));
+    ASSERT_TRUE(fog.density.heightFog.has_value());
+    EXPECT_EQ(fog.density.heightFog->baseHeight, 2.0);
+    EXPECT_EQ(fog.density.heightFog->falloff, 0.5);
+    ASSERT_EQ(fog.density.volumes.size(), 1u);
+    const ls::ref::FogBox& box = fog.density.volumes[0];
+    EXPECT_EQ(box.center, glm::dvec3(1, 2, 3));
+    EXPECT_EQ(box.halfExtents, glm::dvec3(4, 5, 6));
+    EXPECT_EQ(box.axes[0], glm::dvec3(0, 0, 1));
+    // The plugin accepts axes within 1e-3 of unit length and normalises them; so does the model.
+    EXPECT_NEAR(glm::length(box.axes[1] - glm::dvec3(0, 1, 0)), 0.0, 1e-15);
+    EXPECT_EQ(box.density, 2.5);
+    EXPECT_EQ(box.fade, 0.75);
+}
+
+// The pyramid case's medium as height fog, with a faded fog box around part of the spot's beam.
+host::SceneDesc foggy(host::SceneDesc s) {
+    s.medium.density = 0.5f;
+    s.medium.heightFog = lightscatter::HeightFog{0.5f, 1.2f};
+    lightscatter::FogVolume v;
+    v.center = {0.3f, 1.0f, 0.5f};
+    v.halfExtents = {1.0f, 0.8f, 1.2f};
+    v.density = 6.0f;
+    v.fade = 0.4f;
+    s.medium.fogVolumes.push_back(v);
+    return s;
+}
+
+// A cookie's factor rides on the medium's integrand: a uniform cookie scales the foggy image by its
+// decoded value, as it does the homogeneous one, and the fog changes the image well beyond that.
+TEST(ReferenceRenderer, ACookieColoursTheSpotInANonUniformMediumToo) {
+    ShadowCase c = pyramidCase(lightscatter::LightType::Spot);
+    c.options.relTol = 1e-8;
+    const uint32_t w = 16, h = 9;
+    const host::SceneDesc fog = foggy(c.scene);
+    const ReferenceImage homogeneous = renderReference(c.scene, c.mesh, w, h, c.options);
+    const ReferenceImage plain = renderReference(fog, c.mesh, w, h, c.options);
+    auto cookie = std::make_shared<host::Texture>();
+    cookie->width = cookie->height = 4;
+    cookie->rgba.assign(4 * 4 * 4, 255);
+    for (std::size_t t = 0; t < 16; ++t) cookie->rgba[4 * t] = 188;  // 0.50289 once decoded
+    host::SceneDesc coloured = fog;
+    coloured.light.cookie = cookie;
+    const ReferenceImage tinted = renderReference(coloured, c.mesh, w, h, c.options);
+    const double red = std::pow((188.0 / 255.0 + 0.055) / 1.055, 2.4);
+    double changed = 0.0, lit = 0.0;
+    for (std::size_t k = 0; k < plain.rgb.size(); k += 3) {
+        EXPECT_NEAR(tinted.rgb[k], red * plain.rgb[k], 1e-6 * plain.rgb[k] + 1e-15) << k;
+        EXPECT_NEAR(tinted.rgb[k + 1], plain.rgb[k + 1], 1e-6 * plain.rgb[k + 1] + 1e-15) << k;
+        changed += std::abs(plain.rgb[k + 1] - homogeneous.rgb[k + 1]);
+        lit += homogeneous.rgb[k + 1];
+    }
+    EXPECT_GT(lit, 0.0);
+    EXPECT_GT(changed, 0.1 * lit);
+}
+
+// T(S) for the composite: exp(-betaT tau(S)) of the medium along each pixel's ray, exp(-betaT S)
+// in a homogeneous one.
+TEST(ReferenceRenderer, TransmittanceIsExpOfTheRaysOpticalDepth) {
+    const ShadowCase c = pyramidCase(lightscatter::LightType::Spot);
+    const ReferenceScene homogeneous(c.scene, c.mesh, 8, 6, c.options);
+    const ReferenceScene fog(foggy(c.scene), c.mesh, 8, 6, c.options);
+    for (uint32_t y = 0; y < 6; ++y) {
+        for (uint32_t x = 0; x < 8; ++x) {
+            const ls::ref::Ray ray = fog.pixelRay(x, y);
+            const glm::dvec3 beta = fog.medium().betaT();
+            EXPECT_EQ(homogeneous.transmittance(ray), glm::exp(-beta * ray.length));
+            const double tau = ls::ref::opticalDepth(fog.medium().density, ray, 0.0, ray.length);
+            EXPECT_TRUE(near3(fog.transmittance(ray), glm::exp(-beta * tau), 1e-15));
+            EXPECT_GT(tau, 0.0);
+        }
+    }
 }
 
 }  // namespace
