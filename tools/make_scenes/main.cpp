@@ -13,12 +13,12 @@ constexpr const char* kDefaultEngine =
     "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
 
 int usage() {
-    std::fprintf(
-        stderr,
-        "usage: make_scenes OUT_DIR [--engine-glb PATH]\n"
-        "  writes atrium, window_room, engine_spot and point_fog (<name>.json, .gltf, .bin)\n"
-        "  engine_spot references PATH (default %s, Debian package assimp-testmodels)\n",
-        kDefaultEngine);
+    std::fprintf(stderr,
+                 "usage: make_scenes OUT_DIR [--engine-glb PATH]\n"
+                 "  writes atrium, window_room, engine_spot, point_fog and valley_fog "
+                 "(<name>.json, .gltf, .bin)\n"
+                 "  engine_spot references PATH (default %s, Debian package assimp-testmodels)\n",
+                 kDefaultEngine);
     return 2;
 }
 
@@ -51,6 +51,7 @@ int main(int argc, char** argv) {
         report(make_scenes::writeAtrium(outDir));
         report(make_scenes::writeWindowRoom(outDir));
         report(make_scenes::writePointFog(outDir));
+        report(make_scenes::writeValleyFog(outDir));
     } catch (const std::exception& e) {
         std::fprintf(stderr, "make_scenes: %s\n", e.what());
         return 1;

@@ -125,6 +125,73 @@ void MeshBuilder::cylinder(const glm::vec3& baseCenter, float radius, float heig
     }
 }
 
+void MeshBuilder::cone(const glm::vec3& baseCenter, float radius, float height, int sides) {
+    const float pi = std::numbers::pi_v<float>;
+    const glm::vec3 apex = baseCenter + glm::vec3(0.0f, height, 0.0f);
+    const float slant = std::sqrt(radius * radius + height * height);
+    for (int i = 0; i < sides; ++i) {
+        const float p0 = 2.0f * pi * static_cast<float>(i) / static_cast<float>(sides);
+        const float p1 = 2.0f * pi * static_cast<float>(i + 1) / static_cast<float>(sides);
+        const float pm = 0.5f * (p0 + p1);
+        auto normalAt = [&](float phi) {
+            return glm::vec3(height * std::cos(phi), radius, height * std::sin(phi)) / slant;
+        };
+        const glm::vec3 a = baseCenter + glm::vec3(std::cos(p0), 0.0f, std::sin(p0)) * radius;
+        const glm::vec3 b = baseCenter + glm::vec3(std::cos(p1), 0.0f, std::sin(p1)) * radius;
+        const glm::vec3 na = normalAt(p0), nb = normalAt(p1), nm = normalAt(pm);
+        const uint32_t ia = vertex(a, na, planarUv(a, na));
+        const uint32_t ib = vertex(b, nb, planarUv(b, nb));
+        const uint32_t ic = vertex(apex, nm, planarUv(apex, nm));
+        triangle(ia, ib, ic, nm);
+    }
+    const glm::vec3 down(0.0f, -1.0f, 0.0f);
+    const uint32_t centre = vertex(baseCenter, down, planarUv(baseCenter, down));
+    std::vector<uint32_t> ring;
+    for (int i = 0; i < sides; ++i) {
+        const float phi = 2.0f * pi * static_cast<float>(i) / static_cast<float>(sides);
+        const glm::vec3 p = baseCenter + glm::vec3(std::cos(phi), 0.0f, std::sin(phi)) * radius;
+        ring.push_back(vertex(p, down, planarUv(p, down)));
+    }
+    for (size_t i = 0; i < ring.size(); ++i)
+        triangle(centre, ring[i], ring[(i + 1) % ring.size()], down);
+}
+
+void MeshBuilder::heightfield(const glm::vec2& lo, const glm::vec2& hi, int nx, int nz,
+                              const std::function<float(float, float)>& height) {
+    if (nx < 1 || nz < 1) throw std::invalid_argument("MeshBuilder::heightfield: no cells");
+    const float dx = (hi.x - lo.x) / static_cast<float>(nx);
+    const float dz = (hi.y - lo.y) / static_cast<float>(nz);
+    std::vector<uint32_t> index;
+    index.reserve(static_cast<size_t>(nx + 1) * static_cast<size_t>(nz + 1));
+    for (int j = 0; j <= nz; ++j) {
+        for (int i = 0; i <= nx; ++i) {
+            const float x = lo.x + dx * static_cast<float>(i);
+            const float z = lo.y + dz * static_cast<float>(j);
+            const float slopeX = (height(x + dx, z) - height(x - dx, z)) / (2.0f * dx);
+            const float slopeZ = (height(x, z + dz) - height(x, z - dz)) / (2.0f * dz);
+            const glm::vec3 n = glm::normalize(glm::vec3(-slopeX, 1.0f, -slopeZ));
+            const glm::vec3 p(x, height(x, z), z);
+            index.push_back(vertex(p, n, planarUv(p, glm::vec3(0.0f, 1.0f, 0.0f))));
+        }
+    }
+    const auto at = [&](int i, int j) {
+        return index[static_cast<size_t>(j) * static_cast<size_t>(nx + 1) + static_cast<size_t>(i)];
+    };
+    const glm::vec3 up(0.0f, 1.0f, 0.0f);
+    for (int j = 0; j < nz; ++j) {
+        for (int i = 0; i < nx; ++i) {
+            // Alternate the diagonal so that ridges running either way are cut alike.
+            if ((i + j) % 2 == 0) {
+                triangle(at(i, j), at(i + 1, j), at(i + 1, j + 1), up);
+                triangle(at(i, j), at(i + 1, j + 1), at(i, j + 1), up);
+            } else {
+                triangle(at(i, j), at(i + 1, j), at(i, j + 1), up);
+                triangle(at(i + 1, j), at(i + 1, j + 1), at(i, j + 1), up);
+            }
+        }
+    }
+}
+
 void MeshBuilder::curtain(const std::vector<float>& xs, const std::vector<float>& bottom,
                           const std::vector<float>& top, float z0, float z1) {
     const size_t n = xs.size();

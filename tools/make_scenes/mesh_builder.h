@@ -3,6 +3,7 @@
 // (arch spandrels), grouped by material into glTF primitives. Everything is in metres, world space,
 // right-handed with +Y up; triangles are counter-clockwise seen from outside (glTF's front face).
 #include <cstdint>
+#include <functional>
 #include <glm/glm.hpp>
 #include <string>
 #include <vector>
@@ -49,6 +50,13 @@ class MeshBuilder {
     void boxMinMax(const glm::vec3& lo, const glm::vec3& hi);
     // A vertical cylinder approximated by a `sides`-gon: smooth side normals, flat caps.
     void cylinder(const glm::vec3& baseCenter, float radius, float height, int sides);
+    // A vertical cone approximated by a `sides`-gon: smooth side normals, a flat base.
+    void cone(const glm::vec3& baseCenter, float radius, float height, int sides);
+    // A terrain: a grid of `nx` x `nz` cells over [lo.x, hi.x] x [lo.y, hi.y] in (x, z), its
+    // vertices at y = height(x, z), smooth normals from central differences, facing up. A single
+    // surface: no skirt and no underside.
+    void heightfield(const glm::vec2& lo, const glm::vec2& hi, int nx, int nz,
+                     const std::function<float(float, float)>& height);
     // A solid between a lower curve y = bottom[i] and an upper curve y = top[i] at x = xs[i]
     // (xs increasing, bottom <= top), extruded along z over [z0, z1]. Flat-shaded.
     void curtain(const std::vector<float>& xs, const std::vector<float>& bottom,

@@ -1,6 +1,7 @@
 #include "scenes.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
@@ -495,6 +496,143 @@ SceneSummary writePointFog(const std::filesystem::path& folder) {
     s["exposure"] = 0.8f;
     writeSceneFile(folder, "point_fog", s);
     return {"point_fog", m.triangleCount(), "point light, no shadow map, infinite far plane"};
+}
+
+// ---------------------------------------------------------------------------------------------
+// valley_fog: a valley at sunset under height fog. The valley runs along x between two ridges and
+// opens to the west (-x) onto a plain, where the sun sets a few degrees over the horizon. Trees
+// and rock pinnacles in the valley's mouth and peaks on the northern ridge stand between the
+// camera and the sun: their shadows run up the valley as long shafts through the fog layer.
+
+namespace {
+
+float smoothStep(float e0, float e1, float x) {
+    const float t = std::clamp((x - e0) / (e1 - e0), 0.0f, 1.0f);
+    return t * t * (3.0f - 2.0f * t);
+}
+
+struct Peak {
+    float x, z, radius, height;
+};
+
+// Peaks on the ridges (metres above the ridge line): five on the low northern (+z) ridge, with
+// saddles between them, and two on the southern one.
+constexpr std::array<Peak, 7> kValleyPeaks{{{-380.0f, 150.0f, 34.0f, 60.0f},
+                                            {-265.0f, 160.0f, 30.0f, 75.0f},
+                                            {-150.0f, 150.0f, 36.0f, 62.0f},
+                                            {-40.0f, 165.0f, 30.0f, 70.0f},
+                                            {70.0f, 155.0f, 34.0f, 55.0f},
+                                            {-300.0f, -165.0f, 40.0f, 35.0f},
+                                            {60.0f, -175.0f, 45.0f, 30.0f}}};
+
+// The valley floor's centre line, metres in z.
+float valleyCentre(float x) {
+    return 15.0f * std::sin(x / 110.0f + 0.6f);
+}
+
+// The terrain: a floor about 60 m wide at y ~ 0 rising to a low northern ridge (about 24 m, the
+// sun's side) and a higher southern one (about 75 m), both about 165 m from the floor's centre
+// line, and falling away behind them. West of x = -450 the ridges sink into a plain.
+float valleyHeight(float x, float z) {
+    const float u = std::fabs(z - valleyCentre(x));
+    const bool north = z > valleyCentre(x);
+    const float side = north ? 1.0f : -1.0f;
+    const float crest = (north ? 24.0f : 75.0f) + 6.0f * std::sin(x / 70.0f + 1.3f * side) +
+                        4.0f * std::sin(x / 23.0f + 2.1f * side);
+    const float crestAt = 165.0f;
+    const float ridge = u < crestAt ? crest * smoothStep(30.0f, crestAt, u)
+                                    : std::max(crest - 0.35f * (u - crestAt), 0.45f * crest);
+    const float open = smoothStep(-680.0f, -450.0f, x);  // 0 on the western plain
+    float h = open * ridge;
+    for (const Peak& p : kValleyPeaks) {
+        const float d2 = (x - p.x) * (x - p.x) + (z - p.z) * (z - p.z);
+        h += open * p.height * std::exp(-d2 / (p.radius * p.radius));
+    }
+    // Gentle undulation everywhere (the floor is not a plane), rougher higher up.
+    h += 0.9f * std::sin(x / 9.0f) * std::sin(z / 11.0f) + 2.0f * std::sin(x / 41.0f + z / 37.0f);
+    h += std::clamp(h / 60.0f, 0.0f, 1.5f) * 4.0f * std::sin(x / 13.0f + z / 17.0f) *
+         std::sin(z / 19.0f - x / 29.0f);
+    return h;
+}
+
+// A conifer standing on the terrain at (x, z): a trunk and two stacked cones.
+void conifer(MeshBuilder& m, float x, float z, float height, int bark, int needles) {
+    const glm::vec3 base(x, valleyHeight(x, z) - 0.5f, z);
+    m.use(bark);
+    m.cylinder(base, 0.045f * height, 0.35f * height + 0.5f, 6);
+    m.use(needles);
+    m.cone(base + glm::vec3(0.0f, 0.22f * height, 0.0f), 0.24f * height, 0.5f * height, 8);
+    m.cone(base + glm::vec3(0.0f, 0.5f * height, 0.0f), 0.17f * height, 0.5f * height + 0.5f, 8);
+}
+
+}  // namespace
+
+SceneSummary writeValleyFog(const std::filesystem::path& folder) {
+    MeshBuilder m;
+    const int grass = m.addMaterial({"valley_grass", {0.22f, 0.25f, 0.13f, 1.0f}});
+    const int rock = m.addMaterial({"rock", {0.38f, 0.34f, 0.30f, 1.0f}});
+    const int bark = m.addMaterial({"bark", {0.20f, 0.13f, 0.08f, 1.0f}});
+    const int needles = m.addMaterial({"needles", {0.07f, 0.13f, 0.07f, 1.0f}});
+
+    m.use(grass);
+    m.heightfield({-700.0f, -300.0f}, {300.0f, 300.0f}, 200, 120, valleyHeight);
+
+    // A wood on the northern slope, against the sun, and a few trees on the valley floor.
+    for (uint32_t i = 0; i < 110; ++i) {
+        const float x = -450.0f + 600.0f * hashUnit(3u * i + 11u);
+        const float z = valleyCentre(x) + 50.0f + 100.0f * hashUnit(3u * i + 12u);
+        const float height = 10.0f + 10.0f * hashUnit(3u * i + 13u);
+        conifer(m, x, z, height, bark, needles);
+    }
+    for (uint32_t i = 0; i < 24; ++i) {
+        const float x = -350.0f + 450.0f * hashUnit(3u * i + 511u);
+        const float z = valleyCentre(x) - 40.0f + 110.0f * hashUnit(3u * i + 512u);
+        const float height = 8.0f + 8.0f * hashUnit(3u * i + 513u);
+        conifer(m, x, z, height, bark, needles);
+    }
+    // Rock pinnacles (x, z, half width, height) on the northern slope, turned about the vertical
+    // and leaning a little.
+    m.use(rock);
+    const std::array<glm::vec4, 5> pinnacles{{{-330.0f, 105.0f, 4.5f, 34.0f},
+                                              {-215.0f, 120.0f, 3.5f, 26.0f},
+                                              {-95.0f, 100.0f, 5.0f, 40.0f},
+                                              {15.0f, 115.0f, 3.0f, 24.0f},
+                                              {110.0f, 110.0f, 4.0f, 30.0f}}};
+    for (size_t i = 0; i < pinnacles.size(); ++i) {
+        const glm::vec4& p = pinnacles[i];
+        const float yaw = 2.0f * kPi * hashUnit(static_cast<uint32_t>(i) + 90u);
+        const float lean = glm::radians(6.0f * (hashUnit(static_cast<uint32_t>(i) + 95u) - 0.5f));
+        const glm::mat3 rot(glm::rotate(glm::rotate(glm::mat4(1.0f), yaw, {0.0f, 1.0f, 0.0f}), lean,
+                                        {1.0f, 0.0f, 0.0f}));
+        const float y = valleyHeight(p.x, p.y) - 2.0f;
+        m.box({p.x, y + 0.5f * p.w, p.y}, {p.z, 0.5f * p.w, 0.7f * p.z}, rot);
+        m.box({p.x, y + p.w + 0.25f * p.z, p.y}, {0.7f * p.z, 0.25f * p.z + 0.5f, 0.5f * p.z}, rot);
+    }
+    writeGltf(m, folder, "valley_fog");
+
+    // The sun sets in the north-west, 5 degrees up, behind a saddle of the northern ridge as the
+    // camera on the southern slope sees it.
+    const glm::vec3 toSun = fromAngles(150.0f, 5.0f);
+    const glm::vec3 eye(175.0f, valleyHeight(175.0f, -80.0f) + 3.0f, -80.0f);
+    Json s;
+    s["gltf"] = "valley_fog.gltf";
+    s["camera"] = cameraJson(eye, {-200.0f, 15.0f, 200.0f}, 50.0f, 0.5f, 3000.0f, false, false);
+    Json light;
+    light["type"] = "directional";
+    light["direction"] = vec3(-toSun);
+    light["intensity"] = Json::array({16.0f, 9.5f, 4.5f});
+    light["shadowMapSize"] = 2048;
+    s["light"] = light;
+    Json medium = mediumJson({5.8e-6f, 1.35e-5f, 3.31e-5f}, {0.006f, 0.006f, 0.006f}, 0.6f,
+                             "cornette-shanks", 3000.0f);
+    medium["density"] = 1.0f;
+    medium["heightFog"] = {{"baseHeight", 10.0f}, {"falloff", 0.05f}};
+    s["medium"] = medium;
+    s["sky"] = {{"color", Json::array({0.3f, 0.29f, 0.38f})}};
+    s["ambient"] = Json::array({0.16f, 0.15f, 0.2f});
+    s["exposure"] = 0.55f;
+    writeSceneFile(folder, "valley_fog", s);
+    return {"valley_fog", m.triangleCount(), "sun 5 deg behind a ridge's saddle, height fog"};
 }
 
 }  // namespace make_scenes

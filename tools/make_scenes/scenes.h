@@ -17,5 +17,6 @@ SceneSummary writeWindowRoom(const std::filesystem::path& folder);
 // `engineGlb`: the Khronos 2CylinderEngine sample (Debian package assimp-testmodels).
 SceneSummary writeEngineSpot(const std::filesystem::path& folder, const std::string& engineGlb);
 SceneSummary writePointFog(const std::filesystem::path& folder);
+SceneSummary writeValleyFog(const std::filesystem::path& folder);
 
 }  // namespace make_scenes
