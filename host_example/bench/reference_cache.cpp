@@ -72,6 +72,11 @@ std::string referenceKey(const SceneDesc& scene, const MeshData& mesh, VkExtent2
     for (size_t i = 0; i < scene.lightCount(); ++i) light(f, scene.lightAt(i));
     const MediumDesc& m = scene.medium;
     f.values(m.betaR, m.betaM, m.g, m.sigmaA, m.phase, m.maxDistance);
+    // The non-uniform medium (a motion may move a volume, in memory, not in the file).
+    f.values(m.density, m.heightFog.has_value(), m.fogVolumes.size());
+    if (m.heightFog) f.values(m.heightFog->baseHeight, m.heightFog->falloff);
+    for (const lightscatter::FogVolume& v : m.fogVolumes)
+        f.values(v.center, v.halfExtents, v.axes, v.density, v.fade);
     for (const Vertex& v : mesh.vertices) f.values(v.position);
     f.bytes(mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t));
     return f.hex();

@@ -54,8 +54,14 @@ void writeMediumConstants(FrameConstants& f, const CameraParams& camera, const L
     const glm::vec3 bt = medium.betaT();
     const float densest = std::max({bt.x, bt.y, bt.z}) * medium.maxDensity();
     if (densest > 0.0f) scale = std::min(scale, 0.2f / densest);
-    for (const FogVolumeParams& v : medium.volumes)
-        if (v.fade > 0.0f && fogVolumeMatters(v, camera, light)) scale = std::min(scale, v.fade);
+    // A fade is resolved by pieces of its width; a hard box, whose density jumps at its faces, by
+    // pieces of a quarter of its smallest half extent (integrate.glsl weighs a piece by its mean
+    // density).
+    for (const FogVolumeParams& v : medium.volumes) {
+        if (!fogVolumeMatters(v, camera, light)) continue;
+        const float smallest = std::min({v.halfExtents.x, v.halfExtents.y, v.halfExtents.z});
+        scale = std::min(scale, v.fade > 0.0f ? v.fade : 0.25f * smallest);
+    }
     f.mediumScale = glm::vec4(std::max(scale, 1e-6f), 0.0f, 0.0f, 0.0f);
 }
 

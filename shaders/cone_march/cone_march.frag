@@ -10,6 +10,7 @@
 #include "camera.glsl"
 #include "light_volume.glsl"
 #include "math.glsl"
+#include "medium.glsl"
 #include "cone_march_bindings.h"
 layout(binding = LS_BINDING_DEPTH) uniform sampler2D depthBuffer;  // the engine's depth
 #if LS_SHADOW_MAP
@@ -44,6 +45,7 @@ void main() {
     float S = rayLength(pixelCameraZ(depthBuffer, pixel), v);
     float t0 = 0.0, t1 = S;
     if (kConeLimited) lightInterval(C, v, S, t0, t1);
+    clipToMedium(C, v, t0, t1);
     vec3 lin = vec3(0.0);
     if (t0 < t1) {
         float step = (t1 - t0) / float(kSamples);

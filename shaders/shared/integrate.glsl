@@ -58,10 +58,11 @@ Inscatter beginInscatter(vec3 C, vec3 v, float d0) {
 
 // A point or spot light's [a.d, d] in a non-uniform medium. The table (without extinction) holds
 // the sharp part, the inverse square and the phase, exactly; each piece's share of it is weighed
-// by the piece's mean density (its optical depth over its length: a box face inside a piece
-// counts as much as it covers) and the transmittance along the camera ray and the light's path at
-// its middle. Pieces are even in the angle seen from the light, where the inverse square puts
-// equal shares, and no longer than the medium's scale.
+// by the piece's mean density (its optical depth over its length) and the transmittance along the
+// camera ray and the light's path at its middle. Pieces are even in the angle seen from the light,
+// where the inverse square puts equal shares, and no longer than the medium's scale (a hard box's
+// faces included: a piece straddling a face lends the box's density to the part of the beam
+// outside it, in proportion to the piece's length).
 void advanceNonUniform(inout Inscatter a, float d, vec3 V) {
     float r0 = frame.betaT.w;
     float hEff = sqrt(a.h * a.h + r0 * r0);

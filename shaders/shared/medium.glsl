@@ -127,6 +127,27 @@ float opticalDepth(vec3 p, vec3 d, float l) {
     return tau;
 }
 
+// Where m can be above 0 on [t0, t1] of C + t v: in clear air (d0 = 0) only within the fog
+// volumes, so the stretch from the first volume's entry to the last one's exit (empty, t1 <= t0,
+// when the ray meets none); elsewhere unchanged. A method that spreads a fixed number of samples
+// over a ray spends them where the medium is.
+void clipToMedium(vec3 C, vec3 v, inout float t0, inout float t1) {
+    if (kMedia == 0 || frame.medium.x > 0.0 || !(t0 < t1)) return;
+    vec3 p = C + t0 * v;
+    float len = t1 - t0, lo = len, hi = 0.0;
+    int n = fogVolumeCount();
+    for (int i = 0; i < n; ++i) {
+        vec2 c = boxChord(fogLocal(i, vec4(p, 1.0)), fogLocal(i, vec4(v, 0.0)),
+                          frame.fogVolumes[i][3].xyz, len);
+        if (c.x < c.y) {
+            lo = min(lo, c.x);
+            hi = max(hi, c.y);
+        }
+    }
+    t1 = t0 + hi;
+    t0 = t0 + min(lo, hi);
+}
+
 // The optical depth from x to the light at L (a point or spot light's path).
 float opticalDepthTo(vec3 x, vec3 L) {
     vec3 toL = L - x;
