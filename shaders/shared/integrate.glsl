@@ -60,21 +60,33 @@ Inscatter beginInscatter(vec3 C, vec3 v, float d0) {
 // the sharp part, the inverse square and the phase, exactly; each piece's share of it is weighed
 // by the piece's mean density (its optical depth over its length) and the transmittance along the
 // camera ray and the light's path at its middle. Pieces are even in the angle seen from the light,
-// where the inverse square puts equal shares, and no longer than the medium's scale (a hard box's
-// faces included: a piece straddling a face lends the box's density to the part of the beam
-// outside it, in proportion to the piece's length).
+// where the inverse square puts equal shares (32 to a half turn), and no longer than the medium's
+// scale (a hard box's faces included: a piece straddling a face lends the box's density to the
+// part of the beam outside it, in proportion to the piece's length).
 void advanceNonUniform(inout Inscatter a, float d, vec3 V) {
+    // In clear air (d0 = 0) only the volumes scatter or dim: the stretch before the first and
+    // after the last is skipped (its optical depth is 0), and the pieces go where the fog is.
+    float end = d;
+    if (frame.medium.x <= 0.0) {
+        float start = a.d;
+        clipToMedium(a.C, a.v, start, end);
+        if (!(start < end)) start = end = d;
+        if (start > a.d) {
+            a.d = start;
+            a.carry = carryAt(a, start);
+        }
+    }
     float r0 = frame.betaT.w;
     float hEff = sqrt(a.h * a.h + r0 * r0);
-    float phiA = atan(a.sC + a.d, hEff), phiB = atan(a.sC + d, hEff);
-    float len = d - a.d;
-    float pieces = max(len / frame.mediumScale.x, (phiB - phiA) * (12.0 / PI));
+    float phiA = atan(a.sC + a.d, hEff), phiB = atan(a.sC + end, hEff);
+    float len = end - a.d;
+    float pieces = max(len / frame.mediumScale.x, (phiB - phiA) * (32.0 / PI));
     if (a.piece > 0.0) pieces = max(pieces, len / a.piece);
     int n = int(clamp(ceil(pieces), 1.0, 32.0));
-    for (int k = 0; k < n; ++k) {
-        float e = k == n - 1 ? d
+    for (int k = 0; k < n && a.d < end; ++k) {
+        float e = k == n - 1 ? end
                              : clamp(hEff * tan(mix(phiA, phiB, float(k + 1) / float(n))) - a.sC,
-                                     a.d, d);
+                                     a.d, end);
         float l = e - a.d;
         vec3 next = carryAt(a, e);
         float dtau = opticalDepth(a.C + a.d * a.v, a.v, l);
@@ -87,6 +99,10 @@ void advanceNonUniform(inout Inscatter a, float d, vec3 V) {
         a.carry = next;
         a.tau += dtau;
         a.d = e;
+    }
+    if (a.d < d) {
+        a.d = d;
+        a.carry = carryAt(a, d);
     }
 }
 
