@@ -6,13 +6,13 @@
 
 namespace ls {
 
-float inscatterRefinementOf(const lightscatter::EpipolarSettings& s, bool nonUniform) {
-    if (s.inscatterRefinementThreshold > 0.0f || !nonUniform) return s.inscatterRefinementThreshold;
+float inscatterRefinementOf(const lightscatter::EpipolarSettings& s, bool fogVolumes) {
+    if (s.inscatterRefinementThreshold > 0.0f || !fogVolumes) return s.inscatterRefinementThreshold;
     return kMediaInscatterRefinement;
 }
 
 EpipolarConstants makeEpipolarConstants(const lightscatter::EpipolarSettings& s,
-                                        uint32_t shadowMapSize, bool nonUniform) {
+                                        uint32_t shadowMapSize, bool nonUniform, bool fogVolumes) {
     // A non-uniform medium has no closed-form unshadowed Lin for a point or spot light to take a
     // fraction of (and the sun's would need the optical depth per pixel): Lin is interpolated.
     const bool fraction =
@@ -21,7 +21,7 @@ EpipolarConstants makeEpipolarConstants(const lightscatter::EpipolarSettings& s,
     c.sampling = {static_cast<float>(s.slices), static_cast<float>(s.samplesPerSlice),
                   static_cast<float>(s.initialSampleStep), s.refinementThreshold};
     c.marching = {static_cast<float>(treeLevels(shadowMapSize)), fraction ? 1.0f : 0.0f,
-                  inscatterRefinementOf(s, nonUniform), static_cast<float>(s.fixupMaxSteps)};
+                  inscatterRefinementOf(s, fogVolumes), static_cast<float>(s.fixupMaxSteps)};
     c.unwarp = {s.bilateralThreshold, 0.0f, 0.0f, 0.0f};
     c.cubeFace = {-1.0f, 1.0f, 0.0f, 0.0f};
     return c;

@@ -24,15 +24,16 @@ struct EpipolarConstants {
 static_assert(sizeof(EpipolarConstants) == 4 * 16, "std140 layout of epipolar_constants.glsl");
 
 // The light's own block (no cube face) for its settings and shadow map.
-// A non-uniform medium's silhouettes (a fog volume's faces, seen face-on) are not radial from the
-// light as a shaft's edges are: where the settings do not refine on in-scattering, such a frame
-// refines at this threshold, so that samples are marched across a volume's edge rather than
-// interpolated over it.
+// A fog volume's silhouette (its faces, seen face-on) is not radial from the light as a shaft's
+// edges are: where the settings do not refine on in-scattering, a frame with fog volumes refines
+// at this threshold, so that samples are marched across a volume's edge rather than interpolated
+// over it. Height fog has no silhouette and refines as the settings say.
 inline constexpr float kMediaInscatterRefinement = 0.1f;
-float inscatterRefinementOf(const lightscatter::EpipolarSettings& s, bool nonUniform);
+float inscatterRefinementOf(const lightscatter::EpipolarSettings& s, bool fogVolumes);
 
+// nonUniform: Lin is interpolated (no closed-form unshadowed Lin to take a fraction of).
 EpipolarConstants makeEpipolarConstants(const lightscatter::EpipolarSettings& s,
-                                        uint32_t shadowMapSize, bool nonUniform);
+                                        uint32_t shadowMapSize, bool nonUniform, bool fogVolumes);
 
 // A light's epipolar values of one frame (EpipolarMethod::prepare): its constants, and for a cube
 // shadow map which faces reach the view. A face out of view keeps its passes in the graph (a face

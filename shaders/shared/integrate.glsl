@@ -115,7 +115,7 @@ void advance(inout Inscatter a, float d, vec3 V) {
         float dtau = opticalDepth(a.C + a.d * a.v, a.v, d - a.d);
         vec3 part = a.carry * attenuatedLength(frame.betaT.rgb, dtau);
         a.sum += part * V;
-        a.carry *= exp(-frame.betaT.rgb * dtau);
+        a.carry -= part * frame.betaT.rgb;  // T(d) = T(a) exp(-betaT dtau), from the same expm1
         a.tau += dtau;
     } else if (kMedia != 0) {
         advanceNonUniform(a, d, V);
@@ -146,9 +146,13 @@ void advance(inout Inscatter a, float d, vec3 V) {
 void skip(inout Inscatter a, float d) {
     if (d <= a.d) return;
     if (kMedia != 0) {
-        a.tau += opticalDepth(a.C + a.d * a.v, a.v, d - a.d);
+        float dtau = opticalDepth(a.C + a.d * a.v, a.v, d - a.d);
+        a.tau += dtau;
         a.d = d;
-        a.carry = carryAt(a, d);
+        if (kLightType == LIGHT_DIRECTIONAL)
+            a.carry += a.carry * expm1v(-frame.betaT.rgb * dtau);
+        else
+            a.carry = carryAt(a, d);
         return;
     }
     if (kLightType == LIGHT_DIRECTIONAL)
