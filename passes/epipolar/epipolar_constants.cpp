@@ -6,22 +6,22 @@
 
 namespace ls {
 
-float inscatterRefinementOf(const lightscatter::EpipolarSettings& s, bool fogVolumes) {
-    if (s.inscatterRefinementThreshold > 0.0f || !fogVolumes) return s.inscatterRefinementThreshold;
+float inscatterRefinementOf(const lightscatter::EpipolarSettings& s, bool refinesOnMedia) {
+    if (s.inscatterRefinementThreshold > 0.0f || !refinesOnMedia)
+        return s.inscatterRefinementThreshold;
     return kMediaInscatterRefinement;
 }
 
 EpipolarConstants makeEpipolarConstants(const lightscatter::EpipolarSettings& s,
-                                        uint32_t shadowMapSize, bool nonUniform, bool fogVolumes) {
-    // A non-uniform medium has no closed-form unshadowed Lin for a point or spot light to take a
-    // fraction of (and the sun's would need the optical depth per pixel): Lin is interpolated.
+                                        uint32_t shadowMapSize, bool interpolatesLin,
+                                        bool refinesOnMedia) {
     const bool fraction =
-        s.interpolation == lightscatter::Interpolation::ShadowedFraction && !nonUniform;
+        s.interpolation == lightscatter::Interpolation::ShadowedFraction && !interpolatesLin;
     EpipolarConstants c{};
     c.sampling = {static_cast<float>(s.slices), static_cast<float>(s.samplesPerSlice),
                   static_cast<float>(s.initialSampleStep), s.refinementThreshold};
     c.marching = {static_cast<float>(treeLevels(shadowMapSize)), fraction ? 1.0f : 0.0f,
-                  inscatterRefinementOf(s, fogVolumes), static_cast<float>(s.fixupMaxSteps)};
+                  inscatterRefinementOf(s, refinesOnMedia), static_cast<float>(s.fixupMaxSteps)};
     c.unwarp = {s.bilateralThreshold, 0.0f, 0.0f, 0.0f};
     c.cubeFace = {-1.0f, 1.0f, 0.0f, 0.0f};
     return c;

@@ -11,6 +11,7 @@
 #include "lightscatter/methods/epipolar.h"
 #include "rendergraph/binding_table.h"
 #include "shared/chain_context.h"
+#include "shared/light_setup.h"
 #include "shared/scattering_params.h"
 
 namespace ls {
@@ -24,16 +25,27 @@ struct EpipolarConstants {
 static_assert(sizeof(EpipolarConstants) == 4 * 16, "std140 layout of epipolar_constants.glsl");
 
 // The light's own block (no cube face) for its settings and shadow map.
-// A fog volume's silhouette (its faces, seen face-on) is not radial from the light as a shaft's
-// edges are: where the settings do not refine on in-scattering, a frame with fog volumes refines
-// at this threshold, so that samples are marched across a volume's edge rather than interpolated
-// over it. Height fog has no silhouette and refines as the settings say.
+// A point or spot light in a non-uniform medium has no closed-form unshadowed Lin per pixel to take
+// a shadowed fraction of (the sun's stays exact: E P (1 - T(S)) / betaT whatever the density), so
+// its samples carry Lin itself (interpolatesLin). Lin interpolated along an epipolar line smears
+// what the fraction kept; and across a fog volume's silhouette, which is not radial from the light
+// as a shaft's edges are, neither Lin nor the fraction is smooth (a ray through a lit box takes
+// most of its light from the box). Such frames (refinesOnMedia), where the settings do not refine
+// on in-scattering, refine at this threshold: samples are marched rather than interpolated where
+// what they carry changes.
 inline constexpr float kMediaInscatterRefinement = 0.1f;
-float inscatterRefinementOf(const lightscatter::EpipolarSettings& s, bool fogVolumes);
+float inscatterRefinementOf(const lightscatter::EpipolarSettings& s, bool refinesOnMedia);
+// Whether a light's epipolar samples carry Lin whatever the settings say.
+inline bool interpolatesLin(const LightSetup& s) {
+    return s.medium.nonUniform() && s.light.kind != LightType::Directional;
+}
+inline bool refinesOnMedia(const LightSetup& s) {
+    return interpolatesLin(s) || !s.medium.volumes.empty();
+}
 
-// nonUniform: Lin is interpolated (no closed-form unshadowed Lin to take a fraction of).
 EpipolarConstants makeEpipolarConstants(const lightscatter::EpipolarSettings& s,
-                                        uint32_t shadowMapSize, bool nonUniform, bool fogVolumes);
+                                        uint32_t shadowMapSize, bool interpolatesLin,
+                                        bool refinesOnMedia);
 
 // A light's epipolar values of one frame (EpipolarMethod::prepare): its constants, and for a cube
 // shadow map which faces reach the view. A face out of view keeps its passes in the graph (a face
