@@ -115,6 +115,57 @@ TEST_F(SceneFileTest, AFullFileSetsEveryField) {
     EXPECT_FLOAT_EQ(s.exposure, 0.8f);
 }
 
+// docs/model.md's non-uniform medium in SCENE.json: every field read, absent ones leaving the
+// homogeneous medium, and each broken rule one line naming the field.
+TEST_F(SceneFileTest, TheMediaFieldsAreReadAndEachBrokenRuleNamed) {
+    const std::string file = write("scene.json", R"({"medium": {"density": 0.25,
+        "heightFog": {"baseHeight": 3, "falloff": 0.5},
+        "fogVolumes": [{"center": [1, 2, 3], "halfExtents": [4, 5, 6], "density": 2, "fade": 0.5,
+                        "axes": [[0.6, 0, 0.8], [0, 1, 0], [-0.8, 0, 0.6]]},
+                       {"center": [0, 0, 0], "halfExtents": [1, 1, 1]}]}})");
+    const host::SceneDesc s = host::loadSceneFile(file);
+    EXPECT_EQ(s.medium.density, 0.25f);
+    ASSERT_TRUE(s.medium.heightFog);
+    EXPECT_EQ(s.medium.heightFog->baseHeight, 3.0f);
+    EXPECT_EQ(s.medium.heightFog->falloff, 0.5f);
+    ASSERT_EQ(s.medium.fogVolumes.size(), 2u);
+    EXPECT_EQ(s.medium.fogVolumes[0].center[2], 3.0f);
+    EXPECT_EQ(s.medium.fogVolumes[0].halfExtents[1], 5.0f);
+    EXPECT_EQ(s.medium.fogVolumes[0].axes[2][0], -0.8f);
+    EXPECT_EQ(s.medium.fogVolumes[0].fade, 0.5f);
+    EXPECT_EQ(s.medium.fogVolumes[1].density, 1.0f);  // the defaults
+    EXPECT_EQ(s.medium.fogVolumes[1].axes[0][0], 1.0f);
+    EXPECT_TRUE(s.medium.nonUniform());
+    EXPECT_FALSE(host::loadSceneFile(write("plain.json", "{}")).medium.nonUniform());
+
+    EXPECT_EQ(errorFor(R"({"medium": {"density": -1}})"),
+              "medium.density = -1: must be in [0, 1000]");
+    EXPECT_EQ(errorFor(R"({"medium": {"heightFog": {"falloff": 1e5}}})"),
+              "medium.heightFog.falloff = 1e+05: must be in [0, 10000]");
+    EXPECT_EQ(errorFor(R"({"medium": {"heightFog": {"height": 1}}})"),
+              "medium.heightFog: unknown key 'height' (known keys: baseHeight, falloff)");
+    EXPECT_EQ(errorFor(R"({"medium": {"fogVolumes": {}}})"),
+              "medium.fogVolumes must be an array of fog volume objects");
+    EXPECT_EQ(errorFor(R"({"medium": {"fogVolumes": [{"center": [0, 0, 0]}]}})"),
+              "medium.fogVolumes[0] needs \"center\" and \"halfExtents\"");
+    EXPECT_EQ(errorFor(R"({"medium": {"fogVolumes": [{"center": [0, 0, 0], "halfExtents": [1, 1, 1],
+        "axes": [[2, 0, 0], [0, 1, 0], [0, 0, 1]]}]}})"),
+              "medium.fogVolumes[0].axes[0] has length 2: the axes must be unit vectors (within "
+              "1e-3)");
+    EXPECT_EQ(errorFor(R"({"medium": {"fogVolumes": [{"center": [0, 0, 0], "halfExtents": [1, 1, 1],
+        "axes": [[1, 0, 0], [0.6, 0.8, 0], [0, 0, 1]]}]}})"),
+              "medium.fogVolumes[0].axes[1] and medium.fogVolumes[0].axes[0] have dot product "
+              "0.6: the axes must be orthogonal (within 1e-3)");
+    EXPECT_EQ(
+        errorFor(
+            R"({"medium": {"fogVolumes": [{"center": [0, 0, 0], "halfExtents": [1, -1, 1]}]}})"),
+        "medium.fogVolumes[0].halfExtents[1] = -1: must be in [0, 1e+08]");
+    std::string many = R"({"medium": {"fogVolumes": [)";
+    for (int i = 0; i < 65; ++i)
+        many += std::string(i ? "," : "") + R"({"center": [0, 0, 0], "halfExtents": [1, 1, 1]})";
+    EXPECT_EQ(errorFor(many + "]}}"), "medium.fogVolumes holds 65 volumes: at most 64");
+}
+
 TEST_F(SceneFileTest, MissingFieldsKeepTheDefaults) {
     const std::string file = write("empty.json", R"({"camera": {}, "light": {}, "medium": {}})");
     const host::SceneDesc s = host::loadSceneFile(file);
@@ -362,7 +413,8 @@ TEST_F(SceneFileTest, UnknownKeysAreRefusedWithTheKnownOnes) {
               "rangeFalloff, radius, shadowMapSize, cookie)");
     EXPECT_EQ(
         errorFor(R"({"medium": {"beta": 1}})"),
-        "medium: unknown key 'beta' (known keys: betaR, betaM, g, sigmaA, phase, maxDistance)");
+        "medium: unknown key 'beta' (known keys: betaR, betaM, g, sigmaA, phase, maxDistance, "
+        "density, heightFog, fogVolumes)");
     EXPECT_EQ(errorFor(R"({"sky": {"colour": [0, 0, 0]}})"),
               "sky: unknown key 'colour' (known keys: color)");
     EXPECT_EQ(errorFor(R"({"models": [{"gltf": ")" + kBox + R"(", "rotation": [0, 0, 0]}]})"),
