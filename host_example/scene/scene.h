@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <memory>
-#include <stdexcept>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 

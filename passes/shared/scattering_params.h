@@ -4,8 +4,8 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
-#include <vector>
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "frame_constants.h"
 #include "lightscatter/vocabulary.h"

@@ -15,8 +15,10 @@ const std::string kMetres = "metres; lightscatter.h, limits::kMaxLength";
 
 ls::FogVolumeParams setupVolume(const FogVolume& v, const std::string& at) {
     ls::FogVolumeParams p;
-    p.center = vecInRange(v.center, at + ".center", -limits::kMaxLength, limits::kMaxLength, kMetres);
-    p.halfExtents = vecInRange(v.halfExtents, at + ".halfExtents", 0.0, limits::kMaxLength, kMetres);
+    p.center =
+        vecInRange(v.center, at + ".center", -limits::kMaxLength, limits::kMaxLength, kMetres);
+    p.halfExtents =
+        vecInRange(v.halfExtents, at + ".halfExtents", 0.0, limits::kMaxLength, kMetres);
     p.density = inRange(v.density, at + ".density", 0.0, limits::kMaxDensity, kDensity);
     p.fade = inRange(v.fade, at + ".fade", 0.0, limits::kMaxLength, kMetres);
     // A rotation or a reflection: the local coordinates are then distances, as the fade and the
@@ -26,8 +28,9 @@ ls::FogVolumeParams setupVolume(const FogVolume& v, const std::string& at) {
         const std::string axis = at + ".axes[" + std::to_string(j) + "]";
         const glm::dvec3 a(vec(v.axes[j], axis));
         if (std::fabs(glm::length(a) - 1.0) > kTolerance)
-            fail(axis + " has length " + num(glm::length(a)) +
-                 ": the axes must be unit vectors (within 1e-3; put the box's size in halfExtents)");
+            fail(
+                axis + " has length " + num(glm::length(a)) +
+                ": the axes must be unit vectors (within 1e-3; put the box's size in halfExtents)");
         for (int k = 0; k < j; ++k) {
             const double d = glm::dot(a, glm::dvec3(v.axes[k][0], v.axes[k][1], v.axes[k][2]));
             if (std::fabs(d) > kTolerance)

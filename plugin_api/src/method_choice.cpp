@@ -106,8 +106,9 @@ std::string capsRefusal(const ls::MethodUnit& unit, const ls::LightSetup& s) {
                nonUniformParts(s) + " (use auto, " +
                methodsWhere([](const ls::MethodCaps& o) { return o.media; }) + ")";
     if (s.medium.nonUniform() && (ls::simplifiedModel(s) || ls::noisy(s)))
-        return set + (ls::noisy(s) ? ".noiseAmplitude > 0 (seed 002's scrolling noise)"
-                                   : ".lightModel = simplified (seed 004's light model)") +
+        return set +
+               (ls::noisy(s) ? ".noiseAmplitude > 0 (seed 002's scrolling noise)"
+                             : ".lightModel = simplified (seed 004's light model)") +
                " replaces docs/model.md's medium, and this frame's has " + nonUniformParts(s) +
                ": use one or the other";
     if (ls::simplifiedModel(s) && !c.simplifiedModel)

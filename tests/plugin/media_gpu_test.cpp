@@ -245,7 +245,8 @@ TEST_F(MediaGpu, FogThatMovesEveryFrameCompilesNothingAndRefillsNoTable) {
                 frame.description(method, lightscatter::Profile::Custom, settings);
             d.medium.density = 1.0f + 0.5f * std::sin(0.7f * static_cast<float>(k));
             d.medium.heightFog->baseHeight = 0.2f * static_cast<float>(k);
-            d.medium.fogVolumes[0].center[0] = -3.0f + 4.0f * static_cast<float>(k);  // leaves the view after a few
+            d.medium.fogVolumes[0].center[0] =
+                -3.0f + 4.0f * static_cast<float>(k);  // leaves the view after a few
             d.medium.fogVolumes[1].density = 0.25f * static_cast<float>(k);
             const lightscatter::FrameReport r = plugin().render(d);
             const std::string what =
