@@ -212,9 +212,13 @@ MethodChoice autoChoice(const ls::LightSetup& s, bool lightReachesView) {
         return sampled(
             "unshadowed light with a light color: marched per pixel through the color (the closed "
             "forms cannot vary it along a ray)");
+    if (!s.shadowed && pointLike && s.medium.nonUniform())
+        return sampled(
+            "unshadowed point light in a non-uniform medium: integrated per pixel in pieces over "
+            "the point-light table (no closed form holds: docs/methods.md, \"Non-uniform media\")");
     if (!s.shadowed && pointLike) {
         const float tau = ls::opticalDepthToLight(s);
-        if (ls::isotropicMedium(s) && tau < kAnalyticMaxOpticalDepth && !s.medium.nonUniform())
+        if (ls::isotropicMedium(s) && tau < kAnalyticMaxOpticalDepth)
             return closedForm(
                 "unshadowed point light in an isotropic, thin medium (optical depth " +
                 ls::twoDigits(tau) + " to the light): seed 001's closed form, within 1%");
