@@ -35,8 +35,8 @@ VkExtent2D measuredSize() {
         return {w, h};
     return {64, 36};
 }
-const VkExtent2D kSize = measuredSize();
-const bool kJudged = kSize.width == 64 && kSize.height == 36;
+const VkExtent2D kMediaSize = measuredSize();
+const bool kMediaJudged = kMediaSize.width == 64 && kMediaSize.height == 36;
 
 host::SceneDesc shipped(const std::string& name) {
     return host::loadSceneFile(std::string(LS_SOURCE_DIR) + "/scenes/" + name + ".json");
@@ -161,13 +161,13 @@ TEST_F(MediaReference, EveryMethodIsWithinItsBoundAndAUniformMediumIsNot) {
         ASSERT_TRUE(scene.medium.nonUniform()) << c.name;
         const host::MeshData mesh = host::loadSceneMeshes(scene);
         const auto reference =
-            host::reference::renderReference(scene, mesh, kSize.width, kSize.height);
+            host::reference::renderReference(scene, mesh, kMediaSize.width, kMediaSize.height);
         host::SceneDesc uniform = scene;
         uniform.medium.density = 1.0f;
         uniform.medium.heightFog.reset();
         uniform.medium.fogVolumes.clear();
         const auto uniformReference =
-            host::reference::renderReference(uniform, mesh, kSize.width, kSize.height);
+            host::reference::renderReference(uniform, mesh, kMediaSize.width, kMediaSize.height);
         std::vector<float> asRgba(uniformReference.rgb.size() / 3 * 4, 0.0f);
         for (size_t p = 0; p < asRgba.size() / 4; ++p)
             for (size_t k = 0; k < 3; ++k)
@@ -175,9 +175,9 @@ TEST_F(MediaReference, EveryMethodIsWithinItsBoundAndAUniformMediumIsNot) {
         const double uniformError =
             host::bench::compareToReference(asRgba, reference.rgb, scene.exposure).meanRelative;
         std::printf("%-26s %-18s %8.4f\n", c.name.c_str(), "uniform medium", uniformError);
-        host::EngineRenderer renderer(dev(), scene, mesh, kSize);
+        host::EngineRenderer renderer(dev(), scene, mesh, kMediaSize);
         for (const auto& [method, bound] : c.bounds) {
-            if (kJudged) {
+            if (kMediaJudged) {
                 EXPECT_GT(uniformError, bound)
                     << c.name << ": the uniform medium meets the bound of "
                     << lightscatter::methodName(method);
@@ -196,13 +196,13 @@ TEST_F(MediaReference, EveryMethodIsWithinItsBoundAndAUniformMediumIsNot) {
             // LS_MEDIA_HOMOGENEOUS=1 prints the method's error on the uniform scene beside it:
             // what the medium adds to the method's own error (docs/performance.md).
             if (std::getenv("LS_MEDIA_HOMOGENEOUS")) {
-                host::EngineRenderer u(dev(), uniform, mesh, kSize);
+                host::EngineRenderer u(dev(), uniform, mesh, kMediaSize);
                 const auto h = host::bench::compareToReference(
                     u.render(options).inscatter, uniformReference.rgb, scene.exposure);
                 std::printf("%-26s %-18s %8.4f (homogeneous)\n", c.name.c_str(),
                             lightscatter::methodName(method), h.meanRelative);
             }
-            if (kJudged) {
+            if (kMediaJudged) {
                 EXPECT_LE(e.meanRelative, bound)
                     << c.name << " (" << lightscatter::methodName(method) << ")";
             }

@@ -68,7 +68,7 @@ double sumOf(const std::vector<float>& rgba) {
 }
 
 // What the composite multiplied the engine's constant color by, per pixel and channel.
-std::vector<float> transmittance(TestFrame& frame) {
+std::vector<float> compositeTransmittance(TestFrame& frame) {
     std::vector<float> color = frame.color();
     const std::vector<float> lin = frame.inscatter();
     for (size_t i = 0; i < color.size(); ++i)
@@ -178,9 +178,10 @@ TEST_F(MediaGpu, FogAboveEverythingIsTheHomogeneousMedium) {
             // Most of the beam lies above the thin layer: far less light scatters.
             EXPECT_LT(sumOf(thin.inscatter()), 0.7 * sumOf(homogeneous.inscatter())) << what;
             // The composite's transmittance, (color - Lin) / background, per pixel.
-            const std::vector<float> t = transmittance(high), t0 = transmittance(homogeneous);
+            const std::vector<float> t = compositeTransmittance(high),
+                                     t0 = compositeTransmittance(homogeneous);
             EXPECT_LT(compare(t, t0).maxRelative, 1e-4) << what;
-            EXPECT_GT(compare(transmittance(thin), t0).maxRelative, 0.01) << what;
+            EXPECT_GT(compare(compositeTransmittance(thin), t0).maxRelative, 0.01) << what;
         }
     }
 }
