@@ -35,8 +35,19 @@ void writeMediumConstants(FrameConstants& f, const CameraParams& camera, const L
     f.medium = glm::vec4(medium.density, medium.baseHeight,
                          medium.heightFog ? medium.falloff : 0.0f, 0.0f);
     int kept = 0;
+    float scale = 1e30f;
+    if (medium.heightFog && medium.falloff > 0.0f) scale = std::min(scale, 1.0f / medium.falloff);
+    const glm::vec3 bt = medium.betaT();
+    const float densest = std::max({bt.x, bt.y, bt.z}) * medium.maxDensity();
+    if (densest > 0.0f) scale = std::min(scale, 0.2f / densest);
     for (const FogVolumeParams& v : medium.volumes) {
-        if (kept == LS_MAX_FOG_VOLUMES || !fogVolumeMatters(v, camera, light)) continue;
+        if (!fogVolumeMatters(v, camera, light)) continue;
+        // A fade is resolved by pieces of its width; a hard box, whose density jumps at its
+        // faces, by pieces of a quarter of its smallest half extent (integrate.glsl weighs a
+        // piece by its mean density).
+        const float smallest = std::min({v.halfExtents.x, v.halfExtents.y, v.halfExtents.z});
+        scale = std::min(scale, v.fade > 0.0f ? v.fade : 0.25f * smallest);
+        if (kept == LS_MAX_FOG_VOLUMES) continue;
         glm::mat4 box(0.0f);
         for (int j = 0; j < 3; ++j) {
             const glm::vec3 axis = v.axes[j];
@@ -49,19 +60,6 @@ void writeMediumConstants(FrameConstants& f, const CameraParams& camera, const L
         ++kept;
     }
     f.medium.w = static_cast<float>(kept);
-    float scale = 1e30f;
-    if (medium.heightFog && medium.falloff > 0.0f) scale = std::min(scale, 1.0f / medium.falloff);
-    const glm::vec3 bt = medium.betaT();
-    const float densest = std::max({bt.x, bt.y, bt.z}) * medium.maxDensity();
-    if (densest > 0.0f) scale = std::min(scale, 0.2f / densest);
-    // A fade is resolved by pieces of its width; a hard box, whose density jumps at its faces, by
-    // pieces of a quarter of its smallest half extent (integrate.glsl weighs a piece by its mean
-    // density).
-    for (const FogVolumeParams& v : medium.volumes) {
-        if (!fogVolumeMatters(v, camera, light)) continue;
-        const float smallest = std::min({v.halfExtents.x, v.halfExtents.y, v.halfExtents.z});
-        scale = std::min(scale, v.fade > 0.0f ? v.fade : 0.25f * smallest);
-    }
     f.mediumScale = glm::vec4(std::max(scale, 1e-6f), 0.0f, 0.0f, 0.0f);
 }
 

@@ -89,6 +89,14 @@ json readLog(const std::string& name) {
     return json::parse(in);
 }
 
+// The report log's entries of the frames after a script's steps, by step.
+std::map<long, json> reportsByStep(const json& log) {
+    std::map<long, json> byStep;
+    for (const json& e : log)
+        if (e["step"].get<long>() >= 0) byStep[e["step"].get<long>()] = e;
+    return byStep;
+}
+
 }  // namespace
 
 TEST(Panel, SetsEverySettingAndTheNextReportShowsIt) {
@@ -121,9 +129,7 @@ TEST(Panel, SetsEverySettingAndTheNextReportShowsIt) {
                                  kXvfb);
     ASSERT_EQ(r.exitCode, 0) << r.out;
     const json log = readLog("log.json");
-    std::map<long, json> byStep;
-    for (const json& e : log)
-        if (e["step"].get<long>() >= 0) byStep[e["step"].get<long>()] = e;
+    std::map<long, json> byStep = reportsByStep(log);
     for (size_t k = 0; k < fields.size(); ++k) {
         const std::string name = fields[k].name;
         ASSERT_TRUE(byStep.count(long(k))) << "no report of the frame after setting " << name;
@@ -191,9 +197,7 @@ TEST(Panel, EditsTheMediaLiveAndARefusedOneIsUndone) {
                                  kXvfb);
     ASSERT_EQ(r.exitCode, 0) << r.out;
     const json log = readLog("log.json");
-    std::map<long, json> byStep;
-    for (const json& e : log)
-        if (e["step"].get<long>() >= 0) byStep[e["step"].get<long>()] = e;
+    std::map<long, json> byStep = reportsByStep(log);
     ASSERT_EQ(byStep.size(), 6u) << log.dump();
     EXPECT_EQ(byStep[0]["refused"], "");
     EXPECT_EQ(byStep[0]["medium"]["heightFog"]["falloff"], 0.8f);
