@@ -16,6 +16,8 @@ ScatterSpec scatterSpec(const LightSetup& light) {
     spec.cubeShadow = cubeShadowed(light);
     spec.media = (light.medium.heightFog ? LS_MEDIA_HEIGHT_FOG : 0) |
                  (light.medium.volumes.empty() ? 0 : LS_MEDIA_VOLUMES);
+    for (const FogVolumeParams& v : light.medium.volumes)
+        if (v.fade > 0.0f) spec.media |= LS_MEDIA_FADES;
     return spec;
 }
 

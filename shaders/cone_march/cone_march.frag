@@ -52,22 +52,25 @@ void main() {
         float offset = kJitter ? pixelNoise(vec2(pixel)) : 0.5;
         // A non-uniform medium: each sample scatters m(P) times, through the optical depth from
         // the camera, taken exactly between consecutive samples.
-        float tau = 0.0, last = 0.0;
-        for (int i = 0; i < kSamples && kMedia != 0; ++i) {
-            float s = t0 + (float(i) + offset) * step;
-            vec3 P = C + s * v;
-            tau += opticalDepth(C + last * v, v, s - last);
-            last = s;
-            float cosTheta;
-            vec3 irr = lightAt(P, v, 0.0, cosTheta);
-            lin += densityAt(P) * exp(-frame.betaT.rgb * tau) * phaseSum(cosTheta) * irr;
-        }
-        for (int i = 0; i < kSamples && kMedia == 0; ++i) {
-            float s = t0 + (float(i) + offset) * step;
-            vec3 P = C + s * v;
-            float cosTheta;
-            vec3 irr = lightAt(P, v, 0.0, cosTheta);
-            lin += exp(-frame.betaT.rgb * s) * phaseSum(cosTheta) * irr;
+        if (kMedia != 0) {  // an if, not the loops' condition: lavapipe keeps such a loop's body
+            float tau = 0.0, last = 0.0;
+            for (int i = 0; i < kSamples; ++i) {
+                float s = t0 + (float(i) + offset) * step;
+                vec3 P = C + s * v;
+                tau += opticalDepth(C + last * v, v, s - last);
+                last = s;
+                float cosTheta;
+                vec3 irr = lightAt(P, v, 0.0, cosTheta);
+                lin += densityAt(P) * exp(-frame.betaT.rgb * tau) * phaseSum(cosTheta) * irr;
+            }
+        } else {
+            for (int i = 0; i < kSamples; ++i) {
+                float s = t0 + (float(i) + offset) * step;
+                vec3 P = C + s * v;
+                float cosTheta;
+                vec3 irr = lightAt(P, v, 0.0, cosTheta);
+                lin += exp(-frame.betaT.rgb * s) * phaseSum(cosTheta) * irr;
+            }
         }
         lin *= step;
     }

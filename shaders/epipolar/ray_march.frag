@@ -90,17 +90,7 @@ float lineParam(LineRay r, float t) {
     return t >= r.ta ? 1.0 : 0.0;
 }
 
-float distanceAt(LineRay r, float t) { return segmentDistance(r.seg, lineParam(r, t)); }
-
 float depthAt(LineRay r, int i) { return mix(r.seg.z0, r.seg.z1, lineParam(r, float(i))); }
-
-// Sample i decides the ray over (i - 1, i]: its footprint, split where the ray's depth passes a
-// texel's (a stretch of the ray that projects into one texel).
-void advanceSample(inout Inscatter acc, LineRay r, int i) {
-    vec2 uv = r.origin + float(i) * r.dir;
-    advanceThroughFootprint(acc, r.seg, shadowFootprint(uv), lineParam(r, float(i - 1)),
-                            lineParam(r, float(i)), lightColorAt(uv));
-}
 
 // The level to try next at sample i: from `level` (i is aligned to it), down until its node fits
 // within [0, min(last, n - 1)], or up while the parent starts at i and fits too.
@@ -112,6 +102,8 @@ int climb(int i, int level, int last, int n, int levels) {
     return level;
 }
 
+// Each iteration adds one step, through advancePieces alone: a line sample (it decides the ray over
+// (i - 1, i], split where the ray's depth passes a texel's) or a tree node taken whole.
 void marchLine(inout Inscatter acc, LineRay r, int slice) {
     int n = int(frame.shadowInfo.x);
     int levels = int(epipolar.marching.x);
@@ -119,30 +111,42 @@ void marchLine(inout Inscatter acc, LineRay r, int slice) {
     int last = int(ceil(r.tb));
     int level = climb(i, 0, last, n, levels);
     for (int guard = 0; i <= last && guard < 4 * n + 64; ++guard) {
+        ShadowFootprint fp = ShadowFootprint(false, vec4(1.0), vec2(0.0));  // lit
+        vec3 color = vec3(1.0);
+        vec4 cuts = vec4(0.0);
+        int first = 4;
+        float aA = 0.0, aB;
+        bool shadowed = false;
         if (level == 0) {
             COUNT(++counted[kCountLineSteps]);
-            advanceSample(acc, r, i);
+            vec2 uv = r.origin + float(i) * r.dir;
+            fp = shadowFootprint(uv);
+            color = lightColorAt(uv);
+            aA = lineParam(r, float(i - 1));
+            aB = lineParam(r, float(i));
+            if (footprintCrossings(r.seg, fp, aA, aB, cuts)) first = 0;
             ++i;
             level = climb(i, 0, last, n, levels);
-            continue;
-        }
-        int j = i + (1 << level) - 1;
-        COUNT(++counted[kCountTreeNodes]);
-        vec2 node = treeNode(level, i >> level, slice, n);
-        // The node's samples decide the ray over (i - 1, j], so its depths from i - 1 on: a step
-        // split where the ray passes a texel's depth (advanceSample) is never inside a node taken
-        // whole.
-        float zi = compareDepth(depthAt(r, i - 1)), zj = compareDepth(depthAt(r, j));
-        if (!kLightColor && max(zi, zj) <= node.x) {
-            advance(acc, distanceAt(r, float(j)), vec3(1.0));  // lit throughout
-        } else if (min(zi, zj) > node.y) {
-            skip(acc, distanceAt(r, float(j)));  // shadowed throughout
         } else {
-            --level;
-            continue;
+            int j = i + (1 << level) - 1;
+            COUNT(++counted[kCountTreeNodes]);
+            vec2 node = treeNode(level, i >> level, slice, n);
+            // The node's samples decide the ray over (i - 1, j], so its depths from i - 1 on: a
+            // step split where the ray passes a texel's depth is never inside a node taken whole.
+            float zi = compareDepth(depthAt(r, i - 1)), zj = compareDepth(depthAt(r, j));
+            if (!kLightColor && max(zi, zj) <= node.x) {
+                // lit throughout
+            } else if (min(zi, zj) > node.y) {
+                shadowed = true;
+            } else {
+                --level;
+                continue;
+            }
+            aB = lineParam(r, float(j));
+            i = j + 1;
+            level = climb(i, level, last, n, levels);
         }
-        i = j + 1;
-        level = climb(i, level, last, n, levels);
+        advancePieces(acc, r.seg, fp, color, cuts, first, aA, aB, shadowed);
     }
 }
 

@@ -47,6 +47,7 @@
 // (lightscatter::limits::kMaxFogVolumes).
 #define LS_MEDIA_HEIGHT_FOG 1
 #define LS_MEDIA_VOLUMES 2
+#define LS_MEDIA_FADES 4  // a volume with a soft edge (fade > 0)
 #define LS_MAX_FOG_VOLUMES 64
 
 #endif

@@ -28,38 +28,56 @@ float segmentDistance(FrustumSegment s, float a) {
     return mix(s.f0 * s.iw0, s.f1 * s.iw1, a) / mix(s.iw0, s.iw1, a);
 }
 
-// Adds the part [aA, aB] of s seen through one footprint of the shadow map (times color). Each
-// texel of the footprint lights the points in front of its depth, and the ray's depth is monotonic
-// in a, so a texel that lights one end of the part and not the other changes once, where the ray
-// passes its depth: the part is split there. A part no texel changes on is one step with the
-// visibility at its end, as marchFrustumSegmentOf takes it. The split matters where a long stretch
-// of ray projects into one texel: a ray towards or away from the light (the light's own screen
-// position: its ray passes through a point light, and behind it the end of the ray, a surface that
-// the map itself holds, would otherwise decide the whole stretch with half the light's glow on it).
-void advanceThroughFootprint(inout Inscatter acc, FrustumSegment s, ShadowFootprint fp, float aA,
-                             float aB, vec3 color) {
+// The part [aA, aB] of s seen through one footprint of the shadow map. Each texel of the footprint
+// lights the points in front of its depth, and the ray's depth is monotonic in a, so a texel that
+// lights one end of the part and not the other changes once, where the ray passes its depth: the
+// part is split there. A part no texel changes on is one step with the visibility at its end, as
+// marchFrustumSegmentOf takes it. The split matters where a long stretch of ray projects into one
+// texel: a ray towards or away from the light (the light's own screen position: its ray passes
+// through a point light, and behind it the end of the ray, a surface that the map itself holds,
+// would otherwise decide the whole stretch with half the light's glow on it).
+// Returns the crossings sorted along the ray (aB for a texel not passed) and whether there is one.
+bool footprintCrossings(FrustumSegment s, ShadowFootprint fp, float aA, float aB, out vec4 c) {
     float zA = compareDepth(mix(s.z0, s.z1, aA)), zB = compareDepth(mix(s.z0, s.z1, aB));
     bvec4 litA = lessThanEqual(vec4(zA), fp.depth), litB = lessThanEqual(vec4(zB), fp.depth);
-    if (fp.inside && litA != litB) {
-        vec4 c = vec4(aB);
-        for (int k = 0; k < 4; ++k)
-            if (litA[k] != litB[k])
-                c[k] = mix(aA, aB, clamp((fp.depth[k] - zA) / (zB - zA), 0.0, 1.0));
-        // Sorted, so that the pieces between crossings follow each other along the ray.
-        c.xy = vec2(min(c.x, c.y), max(c.x, c.y));
-        c.zw = vec2(min(c.z, c.w), max(c.z, c.w));
-        c.xz = vec2(min(c.x, c.z), max(c.x, c.z));
-        c.yw = vec2(min(c.y, c.w), max(c.y, c.w));
-        c.yz = vec2(min(c.y, c.z), max(c.y, c.z));
-        float a = aA;
-        for (int k = 0; k < 4; ++k) {
-            if (c[k] <= a) continue;
-            float z = compareDepth(mix(s.z0, s.z1, 0.5 * (a + c[k])));
-            advance(acc, segmentDistance(s, c[k]), footprintVisibility(fp, z) * color);
-            a = c[k];
-        }
+    c = vec4(aB);
+    if (!fp.inside || litA == litB) return false;
+    for (int k = 0; k < 4; ++k)
+        if (litA[k] != litB[k]) c[k] = mix(aA, aB, clamp((fp.depth[k] - zA) / (zB - zA), 0.0, 1.0));
+    c.xy = vec2(min(c.x, c.y), max(c.x, c.y));
+    c.zw = vec2(min(c.z, c.w), max(c.z, c.w));
+    c.xz = vec2(min(c.x, c.z), max(c.x, c.z));
+    c.yw = vec2(min(c.y, c.w), max(c.y, c.w));
+    c.yz = vec2(min(c.y, c.z), max(c.y, c.z));
+    return true;
+}
+
+// Adds the pieces of one step of a march, [aA, aB] of s: the crossings from index first on (0, or
+// 4 for none), each lit through fp at its middle, then the rest lit through fp at aB (times
+// color), or skipped whole where shadowed. A march calls it once per step, with a first it cannot
+// know when compiled: lavapipe runs every branch of a loop's body whichever its lanes take, so
+// the body should hold advance and skip once each, not once per call site or unrolled iteration.
+void advancePieces(inout Inscatter acc, FrustumSegment s, ShadowFootprint fp, vec3 color,
+                   vec4 cuts, int first, float aA, float aB, bool shadowed) {
+    float a = aA;
+    for (int k = first; k < 5; ++k) {
+        float c = k < 4 ? cuts[k] : aB;
+        if (k < 4 && c <= a) continue;
+        float z = compareDepth(mix(s.z0, s.z1, k < 4 ? 0.5 * (a + c) : aB));
+        float d = segmentDistance(s, c);
+        if (shadowed)
+            skip(acc, d);
+        else
+            advance(acc, d, footprintVisibility(fp, z) * color);
+        a = c;
     }
-    advance(acc, segmentDistance(s, aB), footprintVisibility(fp, zB) * color);
+}
+
+void advanceThroughFootprint(inout Inscatter acc, FrustumSegment s, ShadowFootprint fp, float aA,
+                             float aB, vec3 color) {
+    vec4 cuts;
+    int first = footprintCrossings(s, fp, aA, aB, cuts) ? 0 : 4;
+    advancePieces(acc, s, fp, color, cuts, first, aA, aB, false);
 }
 
 // Adds [f0, f1] (inside the shadow map's frustum) to acc, one step per texel crossed (at most
