@@ -9,7 +9,6 @@ never beside the repository's scenes.
 
     tools/media_timing.py [--binary build/host_example/lightscatter] [--size 1920x1080]
                           [--runs 3] [--methods epipolar,froxels] [--scenes valley_fog,...]
-                          [--brute-force-once]
 
 On lavapipe only ratios measured in one run on a quiet machine mean anything.
 """

@@ -19,4 +19,13 @@ mat4 shadowViewProj() { return frame.cubeFaceViewProj[int(epipolar.cubeFace.x)];
 mat4 shadowViewProj() { return frame.lightViewProj; }
 #endif
 
+// Whether the samples carry the shadowed fraction (ratio mode) rather than Lin. A point or spot
+// light in a non-uniform medium carries Lin whatever the settings (interpolatesLin in
+// epipolar_constants.h), which the specialisation constants already say: its variants hold no
+// ratio-mode code, which lavapipe would run untaken.
+bool carriesShadowedFraction() {
+    if (kMedia != 0 && kLightType != LIGHT_DIRECTIONAL) return false;
+    return epipolar.marching.y > 0.5;
+}
+
 #endif

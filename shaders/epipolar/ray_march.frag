@@ -215,7 +215,7 @@ void main() {
     flushCounts(p.y);
 #endif
     float defined = 1.0;
-    if (epipolar.marching.y > 0.5) {
+    if (carriesShadowedFraction()) {
         float t0, t1;
         lightInterval(C, v, S, t0, t1);
         vec3 unshadowed = unshadowedInscatter(C, v, t0, t1);

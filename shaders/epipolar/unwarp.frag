@@ -77,7 +77,7 @@ void main() {
     vec4 value = resolved ? sum / weight : (plainWeight > 0.0 ? plain / plainWeight : vec4(0.0));
     vec3 v = rayDirection(p);
     float S = rayLength(z, v);
-    if (epipolar.marching.y > 0.5) {
+    if (carriesShadowedFraction()) {
         vec3 C = frame.cameraPos.xyz;
         float t0, t1;
         lightInterval(C, v, S, t0, t1);
