@@ -44,8 +44,10 @@ void main() {
     vec3 v = pixelRayDirection(pixel);
     float S = rayLength(pixelCameraZ(depthBuffer, pixel), v);
     float t0 = 0.0, t1 = S;
-    if (kConeLimited) lightInterval(C, v, S, t0, t1);
-    clipToMedium(C, v, t0, t1);
+    if (kConeLimited)
+        lightInterval(C, v, S, t0, t1);  // clipped to the medium too
+    else
+        clipToMedium(C, v, t0, t1);
     vec3 lin = vec3(0.0);
     if (t0 < t1) {
         float step = (t1 - t0) / float(kSamples);

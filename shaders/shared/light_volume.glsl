@@ -1,9 +1,10 @@
 // Where a camera ray can receive light: the spot's cone (single nappe) within its range, and the
-// part of the ray inside the shadow map's frustum. Intervals are [t0, t1] in metres along the ray;
+// part of the ray inside the shadow map's frustum; in clear air, only where a fog volume is. Intervals are [t0, t1] in metres along the ray;
 // an empty one has t0 >= t1.
 #ifndef LS_LIGHT_VOLUME_GLSL
 #define LS_LIGHT_VOLUME_GLSL
 #include "frame.glsl"
+#include "medium.glsl"
 
 void clipHalfLine(float a, float b, inout float t0, inout float t1) {
     // Keeps the t where a + b t >= 0.
@@ -68,17 +69,22 @@ void clipCone(vec3 co, vec3 v, vec3 a, float cosA, inout float t0, inout float t
 }
 
 // The part of [0, S] that the light can reach: all of it for a directional light, the sphere of
-// its range for a point light (all of it without one), the cone within the range for a spot.
+// its range for a point light (all of it without one), the cone within the range for a spot. In
+// clear air (a non-uniform medium of density 0) nothing scatters outside the fog volumes, so the
+// part is cut to the stretch from the first volume's entry to the last one's exit: every march
+// walks only that (beginInscatter takes the optical depth up to its start).
 void lightInterval(vec3 C, vec3 v, float S, out float t0, out float t1) {
     t0 = 0.0;
     t1 = S;
-    if (kLightType == LIGHT_DIRECTIONAL) return;
     // A point light without a range (1e30) clips nothing (its square would overflow).
-    if (kLightType == LIGHT_POINT && frame.lightIntensity.w >= 1e18) return;
-    vec3 co = C - frame.lightPos.xyz;
-    clipSphere(co, v, frame.lightIntensity.w, t0, t1);
-    if (kLightType == LIGHT_SPOT && t0 < t1)
-        clipCone(co, v, frame.lightDir.xyz, frame.lightDir.w, t0, t1);
+    if (kLightType != LIGHT_DIRECTIONAL &&
+        !(kLightType == LIGHT_POINT && frame.lightIntensity.w >= 1e18)) {
+        vec3 co = C - frame.lightPos.xyz;
+        clipSphere(co, v, frame.lightIntensity.w, t0, t1);
+        if (kLightType == LIGHT_SPOT && t0 < t1)
+            clipCone(co, v, frame.lightDir.xyz, frame.lightDir.w, t0, t1);
+    }
+    clipToMedium(C, v, t0, t1);
 }
 
 // The part of [t0, t1] inside the shadow map's frustum (-w <= x, y <= w, 0 <= z <= w, w > 0): each
