@@ -162,6 +162,33 @@ void skip(inout Inscatter a, float d) {
     a.d = d;
 }
 
+// advance (lit with V) or skip (shadowed) as one step, for a march that decides which at run time.
+// lavapipe runs both branches of an if whichever its lanes take, so a sun's step takes its optical
+// depth and its exponential once for both, from the same expressions as advance and skip (the same
+// bits); a point or spot light's are advance and skip as they are.
+void advanceOrSkip(inout Inscatter a, float d, vec3 V, bool shadowed) {
+    if (kLightType != LIGHT_DIRECTIONAL) {
+        if (shadowed)
+            skip(a, d);
+        else
+            advance(a, d, V);
+        return;
+    }
+    if (d <= a.d) return;
+    float len = kMedia != 0 ? opticalDepth(a.C + a.d * a.v, a.v, d - a.d) : d - a.d;
+    vec3 beta = frame.betaT.rgb;
+    vec3 e = expm1v(-beta * len);
+    if (shadowed) {
+        a.carry += a.carry * e;
+    } else {
+        vec3 part = a.carry * mix(-e / max(beta, vec3(1e-30)), vec3(len), lessThanEqual(beta, vec3(0.0)));
+        a.sum += part * V;
+        a.carry -= part * beta;
+    }
+    if (kMedia != 0) a.tau += len;
+    a.d = d;
+}
+
 vec3 finishInscatter(Inscatter a, vec3 v) {
     vec3 L = frame.lightIntensity.rgb;
     if (kLightType == LIGHT_DIRECTIONAL) return a.sum * L * phaseSum(dot(v, -frame.lightDir.xyz));

@@ -65,10 +65,7 @@ void advancePieces(inout Inscatter acc, FrustumSegment s, ShadowFootprint fp, ve
         if (k < 4 && c <= a) continue;
         float z = compareDepth(mix(s.z0, s.z1, k < 4 ? 0.5 * (a + c) : aB));
         float d = segmentDistance(s, c);
-        if (shadowed)
-            skip(acc, d);
-        else
-            advance(acc, d, footprintVisibility(fp, z) * color);
+        advanceOrSkip(acc, d, footprintVisibility(fp, z) * color, shadowed);
         a = c;
     }
 }
