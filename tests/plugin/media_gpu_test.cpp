@@ -264,5 +264,40 @@ TEST_F(MediaGpu, FogThatMovesEveryFrameCompilesNothingAndRefillsNoTable) {
     }
 }
 
+// Soft edges are compiled only where a volume has a fade (LS_MEDIA_FADES): giving one compiles
+// once, the fade's code and the hard box's agree where the fade is thin, and a wide fade changes
+// the image.
+TEST_F(MediaGpu, AFadeCompilesOnceAndAThinOneRendersAsTheHardBox) {
+    Medium m = heightFog(0.0f, 0.4f);
+    m.fogVolumes = {box(-0.5f, 2.0f)};
+    TestFrame frame(dev(), spotIn(m));
+    const lightscatter::Settings settings = smallSettings(frame.spec().screen);
+    const auto relativeL1 = [](const std::vector<float>& a, const std::vector<float>& b) {
+        double diff = 0.0, sum = 0.0;
+        for (size_t i = 0; i < a.size(); ++i) {
+            if (i % 4 == 3) continue;
+            diff += std::abs(double(a[i]) - double(b[i]));
+            sum += std::abs(double(b[i]));
+        }
+        return diff / sum;
+    };
+    for (Method method :
+         {Method::Epipolar, Method::BruteForce, Method::ConeMarch, Method::Froxels}) {
+        const std::string name(lightscatter::methodName(method));
+        lightscatter::FrameDescription d =
+            frame.description(method, lightscatter::Profile::Custom, settings);
+        plugin().render(d);
+        const std::vector<float> hard = frame.inscatter();
+        d.medium.fogVolumes[0].fade = 1e-4f;
+        EXPECT_TRUE(plugin().render(d).graphCompiled) << name << ": the first fade";
+        const std::vector<float> thin = frame.inscatter();
+        d.medium.fogVolumes[0].fade = 0.6f;
+        EXPECT_FALSE(plugin().render(d).graphCompiled) << name << ": a second fade";
+        const std::vector<float> soft = frame.inscatter();
+        EXPECT_LT(relativeL1(thin, hard), 2e-3) << name;
+        EXPECT_GT(relativeL1(soft, hard), 2e-2) << name;
+    }
+}
+
 }  // namespace
 }  // namespace plugin_test
