@@ -106,24 +106,33 @@ void advanceNonUniform(inout Inscatter a, float d, vec3 V) {
     }
 }
 
+// A sun's step to d, lit with V or shadowed: one optical depth (the length in a uniform medium) and
+// one exponential serve both. Exact whatever m is: dT/ds = -betaT m T, so a lit run gives
+// T(a) (1 - exp(-betaT dtau)) / betaT of the optical depth dtau it spans, and T(d) = T(a)
+// exp(-betaT dtau) comes from the same expm1.
+void sunStep(inout Inscatter a, float d, vec3 V, bool shadowed) {
+    if (d <= a.d) return;
+    float len = kMedia != 0 ? opticalDepth(a.C + a.d * a.v, a.v, d - a.d) : d - a.d;
+    vec3 beta = frame.betaT.rgb;
+    vec3 em1 = expm1v(-beta * len);
+    if (shadowed) {
+        a.carry += a.carry * em1;
+    } else {
+        vec3 part = a.carry * attenuatedLengthFrom(beta, len, em1);
+        a.sum += part * V;
+        a.carry -= part * beta;
+    }
+    if (kMedia != 0) a.tau += len;
+    a.d = d;
+}
+
 // Adds the segment [a.d, d] lit with visibility V.
 void advance(inout Inscatter a, float d, vec3 V) {
     if (d <= a.d) return;
-    if (kMedia != 0 && kLightType == LIGHT_DIRECTIONAL) {
-        // Exact whatever m is: dT/ds = -betaT m T, so a lit run gives T(a) (1 - exp(-betaT dtau))
-        // / betaT of the optical depth dtau it spans.
-        float dtau = opticalDepth(a.C + a.d * a.v, a.v, d - a.d);
-        vec3 part = a.carry * attenuatedLength(frame.betaT.rgb, dtau);
-        a.sum += part * V;
-        a.carry -= part * frame.betaT.rgb;  // T(d) = T(a) exp(-betaT dtau), from the same expm1
-        a.tau += dtau;
+    if (kLightType == LIGHT_DIRECTIONAL) {
+        sunStep(a, d, V, false);
     } else if (kMedia != 0) {
         advanceNonUniform(a, d, V);
-    } else if (kLightType == LIGHT_DIRECTIONAL) {
-        vec3 w = attenuatedLength(frame.betaT.rgb, d - a.d);
-        vec3 part = a.carry * w;
-        a.sum += part * V;
-        a.carry -= part * frame.betaT.rgb;
     } else if (a.piece > 0.0) {
         int n = falloffPieces(d - a.d, a.piece);
         float step = (d - a.d) / float(n);
@@ -144,49 +153,26 @@ void advance(inout Inscatter a, float d, vec3 V) {
 
 // Moves to d across a shadowed segment.
 void skip(inout Inscatter a, float d) {
-    if (d <= a.d) return;
-    if (kMedia != 0) {
-        float dtau = opticalDepth(a.C + a.d * a.v, a.v, d - a.d);
-        a.tau += dtau;
-        a.d = d;
-        if (kLightType == LIGHT_DIRECTIONAL)
-            a.carry += a.carry * expm1v(-frame.betaT.rgb * dtau);
-        else
-            a.carry = carryAt(a, d);
+    if (kLightType == LIGHT_DIRECTIONAL) {
+        sunStep(a, d, vec3(0.0), true);
         return;
     }
-    if (kLightType == LIGHT_DIRECTIONAL)
-        a.carry += a.carry * expm1v(-frame.betaT.rgb * (d - a.d));
-    else
-        a.carry = carryAt(a, d);
+    if (d <= a.d) return;
+    if (kMedia != 0) a.tau += opticalDepth(a.C + a.d * a.v, a.v, d - a.d);
+    a.carry = carryAt(a, d);
     a.d = d;
 }
 
-// advance (lit with V) or skip (shadowed) as one step, for a march that decides which at run time.
-// lavapipe runs both branches of an if whichever its lanes take, so a sun's step takes its optical
-// depth and its exponential once for both, from the same expressions as advance and skip (the same
-// bits); a point or spot light's are advance and skip as they are.
+// advance (lit with V) or skip (shadowed), for a march that decides which at run time: lavapipe
+// runs both branches of an if whichever its lanes take, and a sun's step (sunStep) takes its
+// optical depth and exponential once for both.
 void advanceOrSkip(inout Inscatter a, float d, vec3 V, bool shadowed) {
-    if (kLightType != LIGHT_DIRECTIONAL) {
-        if (shadowed)
-            skip(a, d);
-        else
-            advance(a, d, V);
-        return;
-    }
-    if (d <= a.d) return;
-    float len = kMedia != 0 ? opticalDepth(a.C + a.d * a.v, a.v, d - a.d) : d - a.d;
-    vec3 beta = frame.betaT.rgb;
-    vec3 e = expm1v(-beta * len);
-    if (shadowed) {
-        a.carry += a.carry * e;
-    } else {
-        vec3 part = a.carry * mix(-e / max(beta, vec3(1e-30)), vec3(len), lessThanEqual(beta, vec3(0.0)));
-        a.sum += part * V;
-        a.carry -= part * beta;
-    }
-    if (kMedia != 0) a.tau += len;
-    a.d = d;
+    if (kLightType == LIGHT_DIRECTIONAL)
+        sunStep(a, d, V, shadowed);
+    else if (shadowed)
+        skip(a, d);
+    else
+        advance(a, d, V);
 }
 
 vec3 finishInscatter(Inscatter a, vec3 v) {

@@ -1,6 +1,6 @@
 // Where a camera ray can receive light: the spot's cone (single nappe) within its range, and the
-// part of the ray inside the shadow map's frustum; in clear air, only where a fog volume is. Intervals are [t0, t1] in metres along the ray;
-// an empty one has t0 >= t1.
+// part of the ray inside the shadow map's frustum; in clear air, only where a fog volume is.
+// Intervals are [t0, t1] in metres along the ray; an empty one has t0 >= t1.
 #ifndef LS_LIGHT_VOLUME_GLSL
 #define LS_LIGHT_VOLUME_GLSL
 #include "frame.glsl"

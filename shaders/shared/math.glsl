@@ -35,10 +35,14 @@ float expm1f(float x) {
 }
 vec3 expm1v(vec3 x) { return vec3(expm1f(x.r), expm1f(x.g), expm1f(x.b)); }
 
-// Integral of exp(-beta s) over [0, len]: (1 - exp(-beta len)) / beta, and len where beta is 0.
-vec3 attenuatedLength(vec3 beta, float len) {
-    vec3 w = -expm1v(-beta * len) / max(beta, vec3(1e-30));
+// Integral of exp(-beta s) over [0, len]: (1 - exp(-beta len)) / beta, and len where beta is 0;
+// given em1 = expm1(-beta len), for a caller that needs that exponential too.
+vec3 attenuatedLengthFrom(vec3 beta, float len, vec3 em1) {
+    vec3 w = -em1 / max(beta, vec3(1e-30));
     return mix(w, vec3(len), lessThanEqual(beta, vec3(0.0)));
+}
+vec3 attenuatedLength(vec3 beta, float len) {
+    return attenuatedLengthFrom(beta, len, expm1v(-beta * len));
 }
 
 #endif
