@@ -12,24 +12,19 @@ as a Markdown table with the ratio after / before. Images go to a temporary fold
 On lavapipe only ratios measured in one run on a quiet machine mean anything.
 """
 import argparse
-import json
 import os
 import statistics
-import subprocess
 import sys
 import tempfile
+
+from render_timing import render_report
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
 def timed(binary, scene, args, folder):
     """The total and each pass prefix's milliseconds of one render."""
-    timings = os.path.join(folder, "timings.json")
-    cmd = [binary, "render", scene, "--method", args.method, "--profile", args.profile, "--size",
-           args.size, "--frames", "3", "--timings", timings, "--out", os.path.join(folder, "frame.png")]
-    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    with open(timings) as f:
-        report = json.load(f)
+    report = render_report(binary, scene, args.method, args.size, folder, args.profile)
     passes = report.get("passes", [])
     return [report["totalMilliseconds"]] + [
         sum(p["milliseconds"] for p in passes if p["name"].startswith(prefix)) for prefix in args.passes]

@@ -16,9 +16,10 @@ import argparse
 import json
 import os
 import statistics
-import subprocess
 import sys
 import tempfile
+
+from render_timing import render_report
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCENES = ["valley_fog", "room_fog_box", "point_fog_volume", "media_mix"]
@@ -46,12 +47,7 @@ def twin(scene_path, folder):
 
 
 def plugin_ms(binary, scene, method, size, folder):
-    timings = os.path.join(folder, "timings.json")
-    cmd = [binary, "render", scene, "--method", method, "--size", size, "--frames", "3",
-           "--timings", timings, "--out", os.path.join(folder, "frame.png")]
-    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    with open(timings) as f:
-        report = json.load(f)
+    report = render_report(binary, scene, method, size, folder)
     return report["totalMilliseconds"], report.get("method", method)
 
 
