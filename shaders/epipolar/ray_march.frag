@@ -103,7 +103,9 @@ int climb(int i, int level, int last, int n, int levels) {
 }
 
 // Each iteration adds one step, through advancePieces alone: a line sample (it decides the ray over
-// (i - 1, i], split where the ray's depth passes a texel's) or a tree node taken whole.
+// (i - 1, i], split where the ray's depth passes a texel's) or a tree node taken whole. The descent
+// to that node is an inner loop of look-ups: lavapipe runs an iteration's whole body for every
+// lane while any lane needs it, so a descent that took an iteration of its own cost a step's work.
 void marchLine(inout Inscatter acc, LineRay r, int slice) {
     int n = int(frame.shadowInfo.x);
     int levels = int(epipolar.marching.x);
@@ -111,12 +113,28 @@ void marchLine(inout Inscatter acc, LineRay r, int slice) {
     int last = int(ceil(r.tb));
     int level = climb(i, 0, last, n, levels);
     for (int guard = 0; i <= last && guard < 4 * n + 64; ++guard) {
+        // Down from `level` to the coarsest node at i that is lit or shadowed throughout, or to
+        // a line sample. The node's samples decide the ray over (i - 1, j], so its depths from
+        // i - 1 on: a step split where the ray passes a texel's depth is never inside a node
+        // taken whole.
+        bool shadowed = false;
+        int j = i;
+        for (; level > 0; --level) {
+            j = i + (1 << level) - 1;
+            COUNT(++counted[kCountTreeNodes]);
+            vec2 node = treeNode(level, i >> level, slice, n);
+            float zi = compareDepth(depthAt(r, i - 1)), zj = compareDepth(depthAt(r, j));
+            if (!kLightColor && max(zi, zj) <= node.x) break;  // lit throughout
+            if (min(zi, zj) > node.y) {
+                shadowed = true;
+                break;
+            }
+        }
         ShadowFootprint fp = ShadowFootprint(false, vec4(1.0), vec2(0.0));  // lit
         vec3 color = vec3(1.0);
         vec4 cuts = vec4(0.0);
         int first = 4;
         float aA = 0.0, aB;
-        bool shadowed = false;
         if (level == 0) {
             COUNT(++counted[kCountLineSteps]);
             vec2 uv = r.origin + float(i) * r.dir;
@@ -128,20 +146,6 @@ void marchLine(inout Inscatter acc, LineRay r, int slice) {
             ++i;
             level = climb(i, 0, last, n, levels);
         } else {
-            int j = i + (1 << level) - 1;
-            COUNT(++counted[kCountTreeNodes]);
-            vec2 node = treeNode(level, i >> level, slice, n);
-            // The node's samples decide the ray over (i - 1, j], so its depths from i - 1 on: a
-            // step split where the ray passes a texel's depth is never inside a node taken whole.
-            float zi = compareDepth(depthAt(r, i - 1)), zj = compareDepth(depthAt(r, j));
-            if (!kLightColor && max(zi, zj) <= node.x) {
-                // lit throughout
-            } else if (min(zi, zj) > node.y) {
-                shadowed = true;
-            } else {
-                --level;
-                continue;
-            }
             aB = lineParam(r, float(j));
             i = j + 1;
             level = climb(i, level, last, n, levels);
