@@ -76,10 +76,11 @@ class ConfigReader {
             if (key != "name" && key != "frames" && key != "warmup" && key != "size" &&
                 key != "scenes" && key != "methods" && key != "profiles" && key != "sweeps" &&
                 key != "measureError" && key != "motion" && key != "sweepProfile" &&
-                key != "profileShadowMap" && key != "configurations")
+                key != "profileShadowMap" && key != "configurations" && key != "profileOrder")
                 fail("unknown key '" + echoText(key) +
                      "' (known: name, frames, warmup, size, scenes, methods, profiles, sweeps, "
-                     "sweepProfile, measureError, motion, profileShadowMap, configurations)");
+                     "sweepProfile, measureError, motion, profileShadowMap, configurations, "
+                     "profileOrder)");
         BenchConfig c;
         c.name = j.contains("name") ? text(j["name"], "name")
                                     : std::filesystem::path(path_).stem().string();
@@ -199,6 +200,7 @@ class ConfigReader {
                 add(c, r);
             }
         }
+        if (j.contains("profileOrder")) c.profileOrder = profileOrder(j["profileOrder"], c);
         if (profileShadowMap) applyProfileShadowMaps(c, profiles);
         return c;
     }
@@ -275,11 +277,12 @@ class ConfigReader {
     }
 
     // A finite number from lo to hi.
-    double number(const json& object, const char* key, double fallback, double lo,
-                  double hi) const {
+    // object[key] (named `at`.key), fallback where it is not given.
+    double number(const json& object, const std::string& at, const char* key, double fallback,
+                  double lo, double hi) const {
         if (!object.contains(key)) return fallback;
         const json& v = object[key];
-        const std::string name = std::string("motion.") + key;
+        const std::string name = at + "." + key;
         if (!v.is_number() || !std::isfinite(v.get<double>()) || v.get<double>() < lo ||
             v.get<double>() > hi)
             fail(name + " = " + echo(v) + ": must be a number from " + shortNumber(lo) + " to " +
@@ -314,12 +317,54 @@ class ConfigReader {
         }
         // Two frames make the first pair; the flicker is a change from one frame to the next.
         if (v.contains("frames")) m.frames = int(whole(v["frames"], "motion.frames", 2, 10000));
-        m.lightDegreesPerFrame = number(v, "lightDegreesPerFrame", m.lightDegreesPerFrame, 0, 10);
-        m.lightMetresPerFrame = number(v, "lightMetresPerFrame", m.lightMetresPerFrame, 0, 10);
-        m.cameraMetresPerFrame = number(v, "cameraMetresPerFrame", m.cameraMetresPerFrame, 0, 10);
+        m.lightDegreesPerFrame =
+            number(v, "motion", "lightDegreesPerFrame", m.lightDegreesPerFrame, 0, 10);
+        m.lightMetresPerFrame =
+            number(v, "motion", "lightMetresPerFrame", m.lightMetresPerFrame, 0, 10);
+        m.cameraMetresPerFrame =
+            number(v, "motion", "cameraMetresPerFrame", m.cameraMetresPerFrame, 0, 10);
         m.cameraDegreesPerFrame =
-            number(v, "cameraDegreesPerFrame", m.cameraDegreesPerFrame, 0, 10);
+            number(v, "motion", "cameraDegreesPerFrame", m.cameraDegreesPerFrame, 0, 10);
         return m;
+    }
+
+    // {"sizes": [...], "tolerance": 0.05}: each epipolar profile run once per size (labelled with
+    // it; errors only at the configuration's size), its order checked after the benchmark.
+    ProfileOrder profileOrder(const json& v, BenchConfig& c) const {
+        if (!v.is_object()) fail("profileOrder must be an object {\"sizes\": [...]}");
+        for (const auto& [key, value] : v.items())
+            if (key != "sizes" && key != "tolerance")
+                fail("profileOrder: unknown key '" + echoText(key) + "' (known: sizes, tolerance)");
+        if (!v.contains("sizes")) fail("profileOrder.sizes is required");
+        ProfileOrder o;
+        for (const json& s : list(v["sizes"], "profileOrder.sizes")) {
+            const VkExtent2D e = size(s, "profileOrder.sizes[]");
+            for (const VkExtent2D& earlier : o.sizes)
+                if (earlier.width == e.width && earlier.height == e.height)
+                    fail("profileOrder.sizes lists " + echo(s) + " twice");
+            o.sizes.push_back(e);
+        }
+        if (o.sizes.empty()) fail("profileOrder.sizes is empty");
+        o.tolerance = number(v, "profileOrder", "tolerance", o.tolerance, 0, 10);
+        std::vector<BenchRun> runs;
+        for (const BenchRun& r : c.runs) {
+            if (r.family != "profiles" || r.method != lightscatter::Method::Epipolar) {
+                runs.push_back(r);
+                continue;
+            }
+            for (const VkExtent2D& e : o.sizes) {
+                BenchRun sized = r;
+                sized.size = e;
+                sized.label =
+                    r.label + " " + std::to_string(e.width) + "x" + std::to_string(e.height);
+                sized.measureError =
+                    r.measureError && e.width == c.size.width && e.height == c.size.height;
+                runs.push_back(sized);
+            }
+        }
+        c.runs.clear();
+        for (const BenchRun& r : runs) add(c, r);
+        return o;
     }
 
     // parseSize's message quotes the text as it is; a configuration's text is echoed (a "\n" in

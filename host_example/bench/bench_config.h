@@ -33,6 +33,15 @@ struct BenchRun {
     bool measureError = false;  // at the config's error size only (the reference is slow)
 };
 
+// "profileOrder": epipolar's profile runs repeated at each of `sizes`, and after the benchmark each
+// profile of a chain (high-quality, balanced, high-performance; low-high-quality, low-balanced,
+// low-high-performance) checked no slower than the one before it, within `tolerance`
+// (profile_order.h).
+struct ProfileOrder {
+    std::vector<VkExtent2D> sizes;
+    double tolerance = 0.05;
+};
+
 struct BenchConfig {
     std::string name;
     int frames = 10;
@@ -46,6 +55,7 @@ struct BenchConfig {
     // (for each motion in turn) instead of `frames` still ones, and is judged against the
     // reference at every pose.
     std::optional<Motion> motion;
+    std::optional<ProfileOrder> profileOrder;
 };
 
 // Throws std::runtime_error naming the file and field.

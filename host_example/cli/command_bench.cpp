@@ -23,6 +23,7 @@
 #include "bench/flicker.h"
 #include "bench/image_strip.h"
 #include "bench/metrics.h"
+#include "bench/profile_order.h"
 #include "bench/reference_cache.h"
 #include "commands.h"
 #include "engine_renderer.h"
@@ -464,10 +465,34 @@ int runBench(Args& args) {
     }
     progress.show(done, "done");
     progress.finish();
+    bool outOfOrder = false;
+    if (config.profileOrder) {
+        const bench::ProfileOrderCheck check =
+            bench::checkProfileOrder(all, config.profileOrder->tolerance);
+        nlohmann::json broken = nlohmann::json::array();
+        for (const std::string& line : check.broken) {
+            std::cout << "profile order: " << line << "\n";
+            broken.push_back(line);
+        }
+        std::cout << "profile order: " << check.pairs - check.broken.size() << " of " << check.pairs
+                  << " neighbouring profiles in order (tolerance "
+                  << config.profileOrder->tolerance * 100.0 << "%)\n";
+        writeTextFile((out / "bench.json").string(),
+                      nlohmann::json{{"config", config.name},
+                                     {"runs", all},
+                                     {"profileOrder",
+                                      {{"tolerance", config.profileOrder->tolerance},
+                                       {"pairs", check.pairs},
+                                       {"outOfOrder", broken}}}}
+                              .dump(2) +
+                          "\n");
+        outOfOrder = !check.broken.empty();
+    }
     std::cout << "wrote " << (out / "bench.csv").string() << ", bench.json and " << done
               << " runs' strips (" << device.name() << (device.isCpu() ? ", CPU timings" : "")
               << ")\n";
-    return device.messageCount() > 0 ? 3 : 0;
+    if (device.messageCount() > 0) return 3;
+    return outOfOrder ? 4 : 0;
 }
 
 }  // namespace host

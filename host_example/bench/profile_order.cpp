@@ -1,0 +1,41 @@
+#include "profile_order.h"
+
+#include <cstdio>
+#include <map>
+#include <utility>
+
+namespace host::bench {
+
+ProfileOrderCheck checkProfileOrder(const nlohmann::json& runs, double tolerance) {
+    static const char* const kChains[2][3] = {
+        {"high-quality", "balanced", "high-performance"},
+        {"low-high-quality", "low-balanced", "low-high-performance"}};
+    // (scene, size) -> profile -> median ms
+    std::map<std::pair<std::string, std::string>, std::map<std::string, double>> medians;
+    for (const nlohmann::json& r : runs) {
+        if (r.value("family", "") != "profiles" || r.value("method", "") != "epipolar") continue;
+        const std::string size = std::to_string(r["size"][0].get<unsigned>()) + "x" +
+                                 std::to_string(r["size"][1].get<unsigned>());
+        medians[{r["scene"].get<std::string>(), size}][r["profile"].get<std::string>()] =
+            r["time"]["median"].get<double>();
+    }
+    ProfileOrderCheck check;
+    for (const auto& [where, times] : medians)
+        for (const auto& chain : kChains)
+            for (int k = 1; k < 3; ++k) {
+                const auto before = times.find(chain[k - 1]), after = times.find(chain[k]);
+                if (before == times.end() || after == times.end()) continue;
+                ++check.pairs;
+                if (after->second <= before->second * (1.0 + tolerance)) continue;
+                char line[512];
+                std::snprintf(line, sizeof line,
+                              "%s %s: %s takes %.1f ms, %.1f%% more than %s's %.1f ms",
+                              where.first.c_str(), where.second.c_str(), chain[k], after->second,
+                              100.0 * (after->second / before->second - 1.0), chain[k - 1],
+                              before->second);
+                check.broken.push_back(line);
+            }
+    return check;
+}
+
+}  // namespace host::bench
