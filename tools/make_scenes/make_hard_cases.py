@@ -287,6 +287,14 @@ def cases():
                                     medium={"betaR": [0, 0, 0], "betaM": [0.1, 0.1, 0.1], "g": 0.0,
                                             "phase": "isotropic"}),
                               ambient=[0.02, 0.02, 0.022], exposure=0.3),
+        # The same cage and light from 6 m: the cage a third of the screen's height, its bars a
+        # pixel or two wide at 320x180, so that the light's glow and the bars' shadows share the
+        # few pixels around the light's screen position.
+        "point_in_small_cage": dict(scene(dict(point(CAGE_LIGHT), shadowMapSize=512),
+                                          gltf="hard_cage.gltf", camera=cage_camera(distance=6.0),
+                                          medium={"betaR": [0, 0, 0], "betaM": [0.1, 0.1, 0.1],
+                                                  "g": 0.0, "phase": "isotropic"}),
+                                    ambient=[0.02, 0.02, 0.022], exposure=0.3),
     }
 
 
