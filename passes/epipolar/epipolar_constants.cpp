@@ -6,22 +6,22 @@
 
 namespace ls {
 
-float inscatterRefinementOf(const lightscatter::EpipolarSettings& s, bool refinesOnMedia) {
-    if (s.inscatterRefinementThreshold > 0.0f || !refinesOnMedia)
+float inscatterRefinementOf(const lightscatter::EpipolarSettings& s, bool refinesByDefault) {
+    if (s.inscatterRefinementThreshold > 0.0f || !refinesByDefault)
         return s.inscatterRefinementThreshold;
-    return kMediaInscatterRefinement;
+    return kDefaultInscatterRefinement;
 }
 
 EpipolarConstants makeEpipolarConstants(const lightscatter::EpipolarSettings& s,
                                         uint32_t shadowMapSize, bool interpolatesLin,
-                                        bool refinesOnMedia) {
+                                        bool refinesByDefault) {
     const bool fraction =
         s.interpolation == lightscatter::Interpolation::ShadowedFraction && !interpolatesLin;
     EpipolarConstants c{};
     c.sampling = {static_cast<float>(s.slices), static_cast<float>(s.samplesPerSlice),
                   static_cast<float>(s.initialSampleStep), s.refinementThreshold};
     c.marching = {static_cast<float>(treeLevels(shadowMapSize)), fraction ? 1.0f : 0.0f,
-                  inscatterRefinementOf(s, refinesOnMedia), static_cast<float>(s.fixupMaxSteps)};
+                  inscatterRefinementOf(s, refinesByDefault), static_cast<float>(s.fixupMaxSteps)};
     c.unwarp = {s.bilateralThreshold, 0.0f, 0.0f, 0.0f};
     c.cubeFace = {-1.0f, 1.0f, 0.0f, 0.0f};
     return c;

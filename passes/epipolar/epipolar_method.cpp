@@ -85,7 +85,7 @@ std::vector<CpuWork> EpipolarMethod::prepare(LightData* data, LightFrame&,
                                              const LightSetup& light) const {
     EpipolarFrame& e = *static_cast<EpipolarFrame*>(data);
     e.constants = makeEpipolarConstants(light.settings.epipolar, light.light.shadowMapSize,
-                                        interpolatesLin(light), refinesOnMedia(light));
+                                        interpolatesLin(light), refinesByDefault(light));
     if (!cubeShadowed(light)) return {};
     for (int face = 0; face < 6; ++face)
         e.faceInView[face] = cubeFaceTouchesView(light.camera, light.light, light.medium, face);
@@ -100,7 +100,7 @@ ChainOptions EpipolarMethod::options(const LightSetup& s, const LightData*,
     o.samples = e.samplesPerSlice;
     o.minMaxTrees = e.minMaxTrees && treesFit(s.light.shadowMapSize);
     o.fixup = e.fixup;
-    o.inscatterRefinement = inscatterRefinementOf(e, refinesOnMedia(s)) > 0.0f;
+    o.inscatterRefinement = inscatterRefinementOf(e, refinesByDefault(s)) > 0.0f;
     return ChainOptions(o);
 }
 
