@@ -103,9 +103,8 @@ int climb(int i, int level, int last, int n, int levels) {
 }
 
 // Each iteration adds one step, through advancePieces alone: a line sample (it decides the ray over
-// (i - 1, i], split where the ray's depth passes a texel's) or a tree node taken whole. The descent
-// to that node is an inner loop of look-ups: lavapipe runs an iteration's whole body for every
-// lane while any lane needs it, so a descent that took an iteration of its own cost a step's work.
+// (i - 1, i], split where the ray's depth passes a texel's) or a tree node taken whole, reached by
+// an inner loop of look-ups down the tree.
 void marchLine(inout Inscatter acc, LineRay r, int slice) {
     int n = int(frame.shadowInfo.x);
     int levels = int(epipolar.marching.x);
