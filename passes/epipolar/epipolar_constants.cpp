@@ -24,7 +24,13 @@ EpipolarConstants makeEpipolarConstants(const lightscatter::EpipolarSettings& s,
                   inscatterRefinementOf(s, refinesByDefault), static_cast<float>(s.fixupMaxSteps)};
     c.unwarp = {s.bilateralThreshold, 0.0f, 0.0f, 0.0f};
     c.cubeFace = {-1.0f, 1.0f, 0.0f, 0.0f};
+    c.march = {static_cast<float>(marchPhases(s)), 0.0f, 0.0f, 0.0f};
     return c;
+}
+
+uint32_t marchPhases(const lightscatter::EpipolarSettings& s) {
+    const uint32_t p = s.initialSampleStep;
+    return p > 1 && s.samplesPerSlice % p == 0 && s.slices % 4 == 0 ? p : 1;
 }
 
 EpipolarConstants EpipolarFrame::of(int face) const {

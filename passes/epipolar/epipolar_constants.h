@@ -23,7 +23,12 @@ struct EpipolarConstants {
 #undef LS_VEC4
 };
 // Only vec4 members, as frame_constants.h's: std140 packs them as C++ does.
-static_assert(sizeof(EpipolarConstants) == 4 * 16, "std140 layout of epipolar_constants.glsl");
+static_assert(sizeof(EpipolarConstants) == 5 * 16, "std140 layout of epipolar_constants.glsl");
+
+// The phases of the march's order (marchTexel in shaders/epipolar/epipolar_constants.glsl): the
+// initial step where the samples per line are a multiple of it (the slices are of 4); 1 (each
+// sample in its own texel) otherwise.
+uint32_t marchPhases(const lightscatter::EpipolarSettings& s);
 
 // The light's own block (no cube face) for its settings and shadow map.
 // A point or spot light in a non-uniform medium has no closed-form unshadowed Lin per pixel to take

@@ -13,7 +13,6 @@ EpipolarCoordinates addEpipolarCoordinates(rg::RenderGraph& g, const EpipolarCoo
     EpipolarCoordinates out;
     out.coordinates = g.createImage("coordinate texture", perSample(in.chain.coordinateFormat));
     out.epipolarZ = g.createImage("epipolar camera-space z", perSample(VK_FORMAT_R32_SFLOAT));
-    out.epipolarStencil = g.createImage("epipolar depth-stencil", perSample(in.chain.depthStencil));
     auto pass = g.addPass("coordinates and epipolar z", rg::PassType::Graphics);
     const auto& sm = samplersOf(in.chain.shared);
     rg::BindingTable table = epipolarTable(pass, in.chain, in.epipolar);
@@ -21,25 +20,15 @@ EpipolarCoordinates addEpipolarCoordinates(rg::RenderGraph& g, const EpipolarCoo
         .sampled(LS_BINDING_COORDINATES_DEPTH, in.chain.depth, sm.nearest(),
                  VK_IMAGE_ASPECT_DEPTH_BIT);
     // Invalid samples keep the clear values: epipolar z -1, which no valid sample has, tells them
-    // apart besides the stencil (the coordinates of invalid samples are never read).
+    // apart (the coordinates of invalid samples are never read).
     out.coordinates = pass.colorAttachment(out.coordinates, rg::LoadOp::Clear);
     out.epipolarZ =
         pass.colorAttachment(out.epipolarZ, rg::LoadOp::Clear, {{-1.0f, 0.0f, 0.0f, 0.0f}});
-    out.epipolarStencil = pass.stencilWrite(out.epipolarStencil, rg::LoadOp::Clear, 0);
     pass.execute([shared = in.chain.shared, table](rg::PassContext& ctx) {
         auto desc =
             fullscreenPipeline(rg::spirv(ls_spirv::epipolar_coordinates_frag), ctx, table.layout());
-        desc.stencilTest = true;
-        desc.stencil = {VK_STENCIL_OP_KEEP,
-                        VK_STENCIL_OP_REPLACE,
-                        VK_STENCIL_OP_KEEP,
-                        VK_COMPARE_OP_ALWAYS,
-                        0xff,
-                        0xff,
-                        1};
         const auto& p = shared->pipelines.graphics("coordinates and epipolar z", desc);
         p.bind(ctx.cmd());
-        ctx.vk().CmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 1);
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         ctx.vk().CmdDraw(ctx.cmd(), 3, 1, 0, 0);
     });

@@ -98,6 +98,7 @@ ChainOptions EpipolarMethod::options(const LightSetup& s, const LightData*,
     Options o;
     o.slices = e.slices;
     o.samples = e.samplesPerSlice;
+    o.marchPhases = marchPhases(e);
     o.minMaxTrees = e.minMaxTrees && treesFit(s.light.shadowMapSize);
     o.fixup = e.fixup;
     o.inscatterRefinement = inscatterRefinementOf(e, refinesByDefault(s)) > 0.0f;
@@ -117,7 +118,7 @@ ChainOutputs EpipolarMethod::addChain(rg::RenderGraph& g, ChainLights lights,
         return out;
     }
     const Options& o = *c.options.get<Options>();
-    const EpipolarOptions options{.sizes = {o.slices, o.samples},
+    const EpipolarOptions options{.sizes = {o.slices, o.samples, o.marchPhases},
                                   .minMaxTrees = o.minMaxTrees,
                                   .fixup = o.fixup,
                                   .cubeShadow = c.light == LightType::Point,

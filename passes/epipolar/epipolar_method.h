@@ -11,6 +11,7 @@ class EpipolarMethod final : public MethodUnit {
   public:
     struct Options {
         uint32_t slices = 0, samples = 0;
+        uint32_t marchPhases = 1;  // the march's order (marchPhases, epipolar_constants.h)
         bool minMaxTrees = true;
         bool fixup = true;
         bool inscatterRefinement = false;  // a second march where marched samples differ

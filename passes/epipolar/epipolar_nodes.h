@@ -15,6 +15,15 @@ namespace ls {
 struct EpipolarSizes {
     uint32_t slices = 1024;
     uint32_t samples = 1024;
+    uint32_t marchPhases = 1;  // the march's order (marchPhases in epipolar_constants.h)
+    // The extent of the march's textures (the marched samples and the march's stencil): the
+    // samples x slices, in the march's order (shaders/epipolar/epipolar_constants.glsl).
+    VkExtent2D marchExtent() const {
+        if (marchPhases <= 1) return {samples, slices};
+        uint32_t across = 1;  // marchBlocksPerRow: 2^ceil(log2(phases) / 2)
+        while (across * across < marchPhases) across *= 2;
+        return {across * (samples / marchPhases * 4), marchPhases / across * (slices / 4)};
+    }
 };
 
 // Copies this frame's epipolar constants, the light's or a cube face's (EpipolarFrame::of), into a
@@ -34,17 +43,16 @@ struct SliceEndPointsInputs {
 rg::ImageRef addSliceEndPoints(rg::RenderGraph& g, const SliceEndPointsInputs& in,
                                const EpipolarSizes& s);
 
-// Each sample's NDC position and the camera-space z under it (from frame.depth); valid samples get
-// stencil 1.
+// Each sample's NDC position and the camera-space z under it (from frame.depth); invalid samples
+// (off the screen, on culled slices) keep z -1.
 struct EpipolarCoordinatesInputs {
     ChainContext chain;
     EpipolarContext epipolar;
     rg::ImageRef sliceEndPoints;
 };
 struct EpipolarCoordinates {
-    rg::ImageRef coordinates;      // frame.coordinateFormat (RG16 unorm or RG32F), samples x slices
-    rg::ImageRef epipolarZ;        // R32F, samples x slices
-    rg::ImageRef epipolarStencil;  // depth-stencil, samples x slices
+    rg::ImageRef coordinates;  // frame.coordinateFormat (RG16 unorm or RG32F), samples x slices
+    rg::ImageRef epipolarZ;    // R32F, samples x slices
 };
 EpipolarCoordinates addEpipolarCoordinates(rg::RenderGraph& g, const EpipolarCoordinatesInputs& in,
                                            const EpipolarSizes& s);
@@ -78,33 +86,46 @@ struct MinMaxTreesInputs {
 rg::ImageRef addMinMaxTrees(rg::RenderGraph& g, const MinMaxTreesInputs& in,
                             const EpipolarSizes& s);
 
-// Raises the ray-marching samples to stencil 2; returns the stencil's new version.
+// The march's stencil values (depth-stencil, samples x slices in the march's order: marchTexel in
+// shaders/epipolar/epipolar_constants.glsl): the first march's samples, and those the refinement
+// on in-scattering differences added.
+inline constexpr uint32_t kFirstMarch = 2;
+inline constexpr uint32_t kRefinementMarch = 3;
+
+// Marks the ray-marching samples (valid, and their own interpolation source) in the march's
+// stencil: a new one with kFirstMarch, or with marchStencil (the refinement's marking) those not
+// marked yet with kRefinementMarch. Returns the stencil's new version.
 struct MarkRayMarchInputs {
     ChainContext chain;
-    rg::ImageRef interpolationSource, epipolarStencil;
+    EpipolarContext epipolar;
+    rg::ImageRef interpolationSource, epipolarZ;
+    rg::ImageRef marchStencil;  // invalid: the first marking
 };
-rg::ImageRef addMarkRayMarchSamples(rg::RenderGraph& g, const MarkRayMarchInputs& in);
+rg::ImageRef addMarkRayMarchSamples(rg::RenderGraph& g, const MarkRayMarchInputs& in,
+                                    const EpipolarSizes& s);
 
-// Lin (or the shadowed fraction) of the ray-marching samples (stencil 2): RGBA16F, samples x
-// slices. Reads the light's images; without trees every sample is marched texel by texel.
-// A point light's cube map is marched one face per pass (epipolar: the face's constants): the
-// first face's pass writes a new texture, each later one adds its part of every ray to `accumulate`
-// (and returns its new version); alpha, the sample's validity, is the first face's. The refinement
-// march (overwrite) writes its samples into `accumulate`, keeping the first march's samples.
+// Lin (or the shadowed fraction) of the ray-marching samples (options.marks in the march's
+// stencil): RGBA16F, samples x slices in the march's order. Reads the light's images; without trees
+// every sample is marched texel by texel. A point light's cube map is marched one face per pass
+// (epipolar: the face's constants): the first face's pass writes a new texture, each later one adds
+// its part of every ray to `accumulate` (and returns its new version); alpha, the sample's
+// validity, is the first face's. The refinement march (overwrite) writes its samples into
+// `accumulate`, keeping the first march's samples.
 struct EpipolarRayMarchInputs {
     ChainContext chain;
     EpipolarContext epipolar;
     LightImages light;
     rg::ImageRef coordinates, epipolarZ, sliceUvFrame;
-    rg::ImageRef epipolarStencil;  // after the marking
-    rg::ImageRef trees;            // invalid: marched without trees
-    rg::ImageRef accumulate;       // invalid: a new texture
+    rg::ImageRef marchStencil;  // after the marking
+    rg::ImageRef trees;         // invalid: marched without trees
+    rg::ImageRef accumulate;    // invalid: a new texture
     // The step counter (step_counts.h), cleared; invalid: the plain variant, nothing counted.
     rg::BufferRef stepCounts;
 };
 struct EpipolarRayMarchOptions {
     EpipolarSizes sizes;
-    bool overwrite = false;  // with accumulate: write the marched samples instead of adding
+    bool overwrite = false;        // with accumulate: write the marched samples instead of adding
+    uint32_t marks = kFirstMarch;  // the march stencil's value it marches
 };
 struct EpipolarRayMarch {
     rg::ImageRef marched;
@@ -115,23 +136,21 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const EpipolarRayMarchI
 
 // Refinement on in-scattering differences: every sample whose two interpolation sources differ in
 // `marched` by more than epipolar.marching.z (relative, per channel) or in validity becomes a
-// ray-marching sample (its own source, stencil 1 -> 2), and the samples already marched leave the
-// march's stencil value (2 -> 3), so a second march at stencil 2 costs only the new samples.
+// ray-marching sample (its own source); the refinement's marking then gives the samples added,
+// and only them, to a second march. Returns the sources' new version (rewritten in place).
 struct RefineOnInscatteringInputs {
     ChainContext chain;
     EpipolarContext epipolar;
-    rg::ImageRef interpolationSource, marched, epipolarStencil;
+    rg::ImageRef interpolationSource, marched, epipolarZ;
 };
-struct RefinedSamples {
-    rg::ImageRef interpolationSource;  // the sources' new version (rewritten in place)
-    rg::ImageRef epipolarStencil;      // the stencil's new version
-};
-RefinedSamples addRefineOnInscattering(rg::RenderGraph& g, const RefineOnInscatteringInputs& in);
+rg::ImageRef addRefineOnInscattering(rg::RenderGraph& g, const RefineOnInscatteringInputs& in,
+                                     const EpipolarSizes& s);
 
 // Every valid sample, interpolated between its two sources: RGBA16F, samples x slices.
 struct InterpolateInputs {
     ChainContext chain;
-    rg::ImageRef interpolationSource, marched, epipolarStencil;
+    EpipolarContext epipolar;
+    rg::ImageRef interpolationSource, marched, epipolarZ;
 };
 rg::ImageRef addInterpolate(rg::RenderGraph& g, const InterpolateInputs& in,
                             const EpipolarSizes& s);

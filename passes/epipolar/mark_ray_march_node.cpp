@@ -5,27 +5,42 @@
 
 namespace ls {
 
-// Valid samples carry stencil 1; the ray-marching ones among them are raised to 2.
-rg::ImageRef addMarkRayMarchSamples(rg::RenderGraph& g, const MarkRayMarchInputs& in) {
+// The march's stencil holds 0, kFirstMarch or kRefinementMarch per sample, in the march's order.
+// The first marking clears it and writes kFirstMarch; the refinement's writes kRefinementMarch
+// where bit 1 (kFirstMarch's) is clear, so that the second march takes only the samples added.
+rg::ImageRef addMarkRayMarchSamples(rg::RenderGraph& g, const MarkRayMarchInputs& in,
+                                    const EpipolarSizes& s) {
+    const bool refinement = in.marchStencil.valid();
     auto pass = g.addPass("mark ray-marching samples", rg::PassType::Graphics);
-    rg::BindingTable table(pass);
-    table.sampled(LS_BINDING_INTERPOLATION_SOURCE, in.interpolationSource,
-                  samplersOf(in.chain.shared).nearest());
-    const rg::ImageRef marked = pass.stencilWrite(in.epipolarStencil, rg::LoadOp::Load);
-    pass.execute([shared = in.chain.shared, table](rg::PassContext& ctx) {
+    const auto& sm = samplersOf(in.chain.shared);
+    rg::BindingTable table = epipolarTable(pass, in.chain, in.epipolar);
+    table.sampled(LS_BINDING_INTERPOLATION_SOURCE, in.interpolationSource, sm.nearest())
+        .sampled(LS_BINDING_SOURCES_EPIPOLAR_Z, in.epipolarZ, sm.nearest());
+    const rg::ImageRef stencil =
+        refinement
+            ? in.marchStencil
+            : g.createImage("epipolar depth-stencil",
+                            rg::ImageDesc::absolute(in.chain.depthStencil, s.marchExtent().width,
+                                                    s.marchExtent().height));
+    const rg::ImageRef marked =
+        pass.stencilWrite(stencil, refinement ? rg::LoadOp::Load : rg::LoadOp::Clear, 0);
+    pass.execute([shared = in.chain.shared, table, refinement](rg::PassContext& ctx) {
         rg::GraphicsPipelineDesc desc =
             fullscreenPipeline(rg::spirv(ls_spirv::mark_ray_march_frag), ctx, table.layout());
         desc.stencilTest = true;
+        const uint32_t value = refinement ? kRefinementMarch : kFirstMarch;
         desc.stencil = {VK_STENCIL_OP_KEEP,
-                        VK_STENCIL_OP_INCREMENT_AND_CLAMP,
+                        VK_STENCIL_OP_REPLACE,
                         VK_STENCIL_OP_KEEP,
-                        VK_COMPARE_OP_EQUAL,
+                        refinement ? VK_COMPARE_OP_NOT_EQUAL : VK_COMPARE_OP_ALWAYS,
+                        kFirstMarch,
                         0xff,
-                        0xff,
-                        1};
-        const auto& p = shared->pipelines.graphics("mark ray-marching samples", desc);
+                        value};
+        const auto& p = shared->pipelines.graphics(
+            refinement ? "mark ray-marching samples (refinement)" : "mark ray-marching samples",
+            desc);
         p.bind(ctx.cmd());
-        ctx.vk().CmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 1);
+        ctx.vk().CmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, value);
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         ctx.vk().CmdDraw(ctx.cmd(), 3, 1, 0, 0);
     });

@@ -23,10 +23,11 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const EpipolarRayMarchI
     const EpipolarSizes& s = options.sizes;
     const bool adds = in.accumulate.valid() && !options.overwrite;
     rg::ImageRef marched =
-        in.accumulate.valid() ? in.accumulate
-                              : g.createImage("in-scattering (ray-marched samples)",
-                                              rg::ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT,
-                                                                      s.samples, s.slices));
+        in.accumulate.valid()
+            ? in.accumulate
+            : g.createImage("in-scattering (ray-marched samples)",
+                            rg::ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT,
+                                                    s.marchExtent().width, s.marchExtent().height));
     // The variant follows from the handles given: trees or none, a light color or none.
     const bool trees = in.trees.valid(), color = in.light.lightColor.valid();
     auto pass =
@@ -40,12 +41,12 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const EpipolarRayMarchI
     addMarchInputs(table, in.chain.shared, in.light);
     const rg::BufferRef counts =
         table.storageBufferReadWriteIfValid(LS_BINDING_MARCH_STEP_COUNTS, in.stepCounts);
-    pass.stencilTest(in.epipolarStencil);
+    pass.stencilTest(in.marchStencil);
     pass.countSamples();  // the samples marched (FrameReport's PassTime::samples)
     marched =
         pass.colorAttachment(marched, in.accumulate.valid() ? rg::LoadOp::Load : rg::LoadOp::Clear);
-    pass.execute([frame = in.chain, face = in.epipolar.face, table, trees, color, adds,
-                  counts](rg::PassContext& ctx) {
+    pass.execute([frame = in.chain, face = in.epipolar.face, table, trees, color, adds, counts,
+                  marks = options.marks](rg::PassContext& ctx) {
         // A cube face out of view adds nothing (the first face's pass writes every sample's alpha).
         if (adds && !epipolarFrameOf(ctx.data(frame.values)).inView(face)) return;
         const Shared& shared = frame.shared;
@@ -61,7 +62,7 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const EpipolarRayMarchI
                         VK_COMPARE_OP_EQUAL,
                         0xff,
                         0,
-                        2};
+                        marks};
         if (adds) {
             desc.blend = rg::BlendMode::Additive;
             desc.colorWriteMask =
@@ -72,7 +73,7 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const EpipolarRayMarchI
                 (counts.valid() ? ", counting" : ""),
             desc);
         p.bind(ctx.cmd());
-        ctx.vk().CmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 2);
+        ctx.vk().CmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, marks);
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         ctx.vk().CmdDraw(ctx.cmd(), 3, 1, 0, 0);
     });

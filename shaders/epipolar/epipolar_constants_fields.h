@@ -12,3 +12,6 @@ LS_VEC4 unwarp;  // x: bilateral threshold, yzw: -
 // x: the cube face (layer) a per-face pass marches, in Vulkan's order +X, -X, +Y, -Y, +Z, -Z, -1
 // in the light's own block; y: 1 when that face's frustum reaches the view (1 in the light's own)
 LS_VEC4 cubeFace;
+// x: the march's phases P (its order, marchTexel in epipolar_constants.glsl; 1: a sample's own
+// texel), yzw: -
+LS_VEC4 march;

@@ -1,12 +1,16 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
+// Marks the ray-marching samples (valid ones that are their own interpolation source) in the
+// march's stencil, in the march's order (marchTexel): each fragment reads its sample where the
+// other textures keep it. Every other fragment is discarded.
+#include "epipolar_constants.glsl"
 #include "epipolar_bindings.h"
-// Passes (and so increments the stencil of) the samples that are their own interpolation source:
-// the ray-marching samples.
 layout(binding = LS_BINDING_INTERPOLATION_SOURCE) uniform usampler2D interpolationSource;
+layout(binding = LS_BINDING_SOURCES_EPIPOLAR_Z) uniform sampler2D epipolarZ;
 
 void main() {
-    ivec2 p = ivec2(gl_FragCoord.xy);
-    uvec2 src = texelFetch(interpolationSource, p, 0).xy;
-    if (src.x != uint(p.x) || src.y != uint(p.x)) discard;
+    ivec2 at = sampleOfMarchTexel(ivec2(gl_FragCoord.xy));
+    uint k = uint(at.x);
+    uvec2 src = texelFetch(interpolationSource, at, 0).xy;
+    if (!(texelFetch(epipolarZ, at, 0).r > 0.0) || src.x != k || src.y != k) discard;
 }

@@ -202,7 +202,8 @@ void main() {
 #if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
     shadowFace = int(epipolar.cubeFace.x);
 #endif
-    ivec2 p = ivec2(gl_FragCoord.xy);
+    // The fragment is the sample's texel in the march's order (marchTexel); p is the sample.
+    ivec2 p = sampleOfMarchTexel(ivec2(gl_FragCoord.xy));
     vec2 ndc = texelFetch(coordinates, p, 0).xy * 2.0 - 1.0;
     float z = texelFetch(epipolarZ, p, 0).r;
     vec3 v = rayDirection(ndc);

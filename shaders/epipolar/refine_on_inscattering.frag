@@ -1,12 +1,9 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Refinement on in-scattering differences, after the first march. Drawn over every valid sample
-// (stencil != 0, incremented where the fragment is kept):
-// - a sample marched already (its own source, stencil 2) is kept, so it leaves for 3 and the
-//   second march (stencil 2) skips it;
-// - an interpolated sample (stencil 1) whose two sources differ becomes its own source and is kept
-//   (stencil 2): the second march marches it, and only it;
-// - any other sample is discarded and stays interpolated.
+// Refinement on in-scattering differences, after the first march. Drawn over every sample: a valid
+// interpolated sample whose two sources differ becomes its own source, so that the refinement's
+// marking (mark_ray_march.frag, into the march's stencil where the first march's samples are not)
+// gives it to the second march, and only it; any other sample is left as it is.
 // A sample reads and writes its own texel of the sources only, so rewriting them in place is safe.
 // The whole run between two differing sources is marched (not a halved step, recursively): one
 // extra march instead of log2(initial step) mark-and-march rounds, and every sample of the run
@@ -16,6 +13,7 @@
 #include "epipolar_bindings.h"
 layout(binding = LS_BINDING_REFINE_MARCHED) uniform sampler2D marched;
 layout(binding = LS_BINDING_REFINE_LIN_SOURCES, rg16ui) uniform uimage2D interpolationSource;
+layout(binding = LS_BINDING_REFINE_EPIPOLAR_Z_OF_SAMPLES) uniform sampler2D epipolarZ;
 
 // Per channel, relative to the larger of the two: a shadow edge changes every channel of the
 // shadowed fraction alike, a light-color texture can change one alone. A source that carries no
@@ -30,10 +28,12 @@ bool differ(vec4 a, vec4 b, float threshold) {
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
+    if (!(texelFetch(epipolarZ, p, 0).r > 0.0)) return;  // not a valid sample
     uvec2 src = imageLoad(interpolationSource, p).xy;
-    if (src.x == uint(p.x) && src.y == uint(p.x)) return;  // marched already: 2 -> 3
-    vec4 a = texelFetch(marched, ivec2(src.x, p.y), 0);
-    vec4 b = texelFetch(marched, ivec2(src.y, p.y), 0);
-    if (!differ(a, b, epipolar.marching.z)) discard;
-    imageStore(interpolationSource, p, uvec4(uint(p.x), uint(p.x), 0u, 0u));  // 1 -> 2
+    uint k = uint(p.x);
+    if (src.x == k && src.y == k) return;  // marched already
+    // The marched samples are in the march's order.
+    vec4 a = texelFetch(marched, marchTexel(int(src.x), p.y), 0);
+    vec4 b = texelFetch(marched, marchTexel(int(src.y), p.y), 0);
+    if (differ(a, b, epipolar.marching.z)) imageStore(interpolationSource, p, uvec4(k, k, 0u, 0u));
 }

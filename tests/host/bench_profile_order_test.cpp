@@ -33,8 +33,7 @@ std::string refusal(const std::string& text) {
 }
 
 TEST(BenchProfileOrder, EpipolarsProfilesRunOncePerSize) {
-    const host::bench::BenchConfig c =
-        load(R"({"size": "64x36", "scenes": ["scenes/atrium.json"],
+    const host::bench::BenchConfig c = load(R"({"size": "64x36", "scenes": ["scenes/atrium.json"],
                  "methods": ["epipolar", "brute-force"],
                  "profiles": ["balanced", "high-performance"],
                  "profileOrder": {"sizes": ["64x36", "128x72"], "tolerance": 0.1}})");
@@ -66,12 +65,8 @@ TEST(BenchProfileOrder, BadValuesAreOneLineNamingTheField) {
 
 nlohmann::json row(const std::string& scene, const std::string& profile, unsigned width,
                    double ms) {
-    return {{"scene", scene},
-            {"family", "profiles"},
-            {"method", "epipolar"},
-            {"profile", profile},
-            {"size", {width, width / 2}},
-            {"time", {{"median", ms}}}};
+    return {{"scene", scene},     {"family", "profiles"},       {"method", "epipolar"},
+            {"profile", profile}, {"size", {width, width / 2}}, {"time", {{"median", ms}}}};
 }
 
 TEST(BenchProfileOrder, EachChainIsCheckedPerSceneAndSize) {
