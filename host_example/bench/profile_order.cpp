@@ -28,11 +28,10 @@ ProfileOrderCheck checkProfileOrder(const nlohmann::json& runs, double tolerance
                 ++check.pairs;
                 if (after->second <= before->second * (1.0 + tolerance)) continue;
                 char line[512];
-                std::snprintf(line, sizeof line,
-                              "%s %s: %s takes %.1f ms, %.1f%% more than %s's %.1f ms",
-                              where.first.c_str(), where.second.c_str(), chain[k], after->second,
-                              100.0 * (after->second / before->second - 1.0), chain[k - 1],
-                              before->second);
+                std::snprintf(
+                    line, sizeof line, "%s %s: %s takes %.1f ms, %.1f%% more than %s's %.1f ms",
+                    where.first.c_str(), where.second.c_str(), chain[k], after->second,
+                    100.0 * (after->second / before->second - 1.0), chain[k - 1], before->second);
                 check.broken.push_back(line);
             }
     return check;
