@@ -17,7 +17,8 @@ COMMIT = re.compile(r"code (?:at|of) commit `?([0-9a-f]{7,40})`?")
 # A run's command, the most telling first: the benchmark itself, then the script that ran it.
 COMMANDS = [re.compile(p) for p in (r"`((?:\./)?(?:build/host_example/)?lightscatter bench [^`]*)`",
                                     r"`(build/tools/reference_timing[^`]*)`", r"`(scripts/make-report\.sh[^`]*)`",
-                                    r"`(bench/[\w.]+\.json)`", r"`(tools/media_timing\.py[^`]*)`")]
+                                    r"`(bench/[\w.]+\.json)`",
+                                    r"`(tools/(?:media|speedup|ab)_timing\.py[^`]*)`")]
 
 
 def code_commit():
