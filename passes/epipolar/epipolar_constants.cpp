@@ -24,13 +24,21 @@ EpipolarConstants makeEpipolarConstants(const lightscatter::EpipolarSettings& s,
                   inscatterRefinementOf(s, refinesByDefault), static_cast<float>(s.fixupMaxSteps)};
     c.unwarp = {s.bilateralThreshold, 0.0f, 0.0f, 0.0f};
     c.cubeFace = {-1.0f, 1.0f, 0.0f, 0.0f};
-    c.march = {static_cast<float>(marchPhases(s)), 0.0f, 0.0f, 0.0f};
+    const uint32_t phases = marchPhases(s);
+    c.march = {static_cast<float>(phases), static_cast<float>(marchBlocksPerRow(phases)), 0.0f,
+               0.0f};
     return c;
 }
 
 uint32_t marchPhases(const lightscatter::EpipolarSettings& s) {
     const uint32_t p = s.initialSampleStep;
     return p > 1 && s.samplesPerSlice % p == 0 && s.slices % 4 == 0 ? p : 1;
+}
+
+uint32_t marchBlocksPerRow(uint32_t phases) {
+    uint32_t across = 1;
+    while (across * across < phases) across *= 2;
+    return across;
 }
 
 EpipolarConstants EpipolarFrame::of(int face) const {

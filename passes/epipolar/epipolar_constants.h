@@ -29,6 +29,9 @@ static_assert(sizeof(EpipolarConstants) == 5 * 16, "std140 layout of epipolar_co
 // initial step where the samples per line are a multiple of it (the slices are of 4); 1 (each
 // sample in its own texel) otherwise.
 uint32_t marchPhases(const lightscatter::EpipolarSettings& s);
+// How many phase blocks a row of the march's textures holds: 2^ceil(log2(phases) / 2), so that
+// the textures stay about as square as the samples'.
+uint32_t marchBlocksPerRow(uint32_t phases);
 
 // The light's own block (no cube face) for its settings and shadow map.
 // A point or spot light in a non-uniform medium has no closed-form unshadowed Lin per pixel to take

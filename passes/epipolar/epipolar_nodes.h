@@ -20,8 +20,7 @@ struct EpipolarSizes {
     // samples x slices, in the march's order (shaders/epipolar/epipolar_constants.glsl).
     VkExtent2D marchExtent() const {
         if (marchPhases <= 1) return {samples, slices};
-        uint32_t across = 1;  // marchBlocksPerRow: 2^ceil(log2(phases) / 2)
-        while (across * across < marchPhases) across *= 2;
+        const uint32_t across = marchBlocksPerRow(marchPhases);
         return {across * (samples / marchPhases * 4), marchPhases / across * (slices / 4)};
     }
 };

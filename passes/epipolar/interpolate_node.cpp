@@ -11,13 +11,11 @@ rg::ImageRef addInterpolate(rg::RenderGraph& g, const InterpolateInputs& in,
         g.createImage("in-scattering (all samples)",
                       rg::ImageDesc::absolute(VK_FORMAT_R16G16B16A16_SFLOAT, s.samples, s.slices));
     auto pass = g.addPass("interpolate in-scattering", rg::PassType::Graphics);
+    const auto& sm = samplersOf(in.chain.shared);
     rg::BindingTable table = epipolarTable(pass, in.chain, in.epipolar);
-    table
-        .sampled(LS_BINDING_INTERPOLATION_SOURCE, in.interpolationSource,
-                 samplersOf(in.chain.shared).nearest())
-        .sampled(LS_BINDING_INTERPOLATE_MARCHED, in.marched, samplersOf(in.chain.shared).nearest())
-        .sampled(LS_BINDING_SOURCES_EPIPOLAR_Z, in.epipolarZ,
-                 samplersOf(in.chain.shared).nearest());
+    table.sampled(LS_BINDING_INTERPOLATION_SOURCE, in.interpolationSource, sm.nearest())
+        .sampled(LS_BINDING_INTERPOLATE_MARCHED, in.marched, sm.nearest())
+        .sampled(LS_BINDING_SOURCES_EPIPOLAR_Z, in.epipolarZ, sm.nearest());
     interpolated = pass.colorAttachment(interpolated, rg::LoadOp::Clear);
     pass.execute([shared = in.chain.shared, table](rg::PassContext& ctx) {
         auto desc = fullscreenPipeline(rg::spirv(ls_spirv::interpolate_frag), ctx, table.layout());

@@ -13,7 +13,7 @@ rg::ImageRef addRefineOnInscattering(rg::RenderGraph& g, const RefineOnInscatter
     rg::BindingTable table = epipolarTable(pass, in.chain, in.epipolar);
     const auto& sm = samplersOf(in.chain.shared);
     table.sampled(LS_BINDING_REFINE_MARCHED, in.marched, sm.nearest())
-        .sampled(LS_BINDING_REFINE_EPIPOLAR_Z_OF_SAMPLES, in.epipolarZ, sm.nearest());
+        .sampled(LS_BINDING_SOURCES_EPIPOLAR_Z, in.epipolarZ, sm.nearest());
     const rg::ImageRef sources =
         table.storageReadWrite(LS_BINDING_REFINE_LIN_SOURCES, in.interpolationSource);
     pass.renderArea({s.samples, s.slices});

@@ -26,11 +26,10 @@
 // refine_on_inscattering.frag
 #define LS_BINDING_REFINE_MARCHED 1
 #define LS_BINDING_REFINE_LIN_SOURCES 2
-#define LS_BINDING_REFINE_EPIPOLAR_Z_OF_SAMPLES 3
-// mark_ray_march.frag, interpolate.frag
+// mark_ray_march.frag, interpolate.frag (and the z of refine_on_inscattering.frag)
 #define LS_BINDING_INTERPOLATION_SOURCE 1
 #define LS_BINDING_INTERPOLATE_MARCHED 2
-#define LS_BINDING_SOURCES_EPIPOLAR_Z 3  // a sample is valid where its z is > 0
+#define LS_BINDING_SOURCES_EPIPOLAR_Z 3  // which samples are valid (validSampleZ)
 // ray_march.frag (and the shared march inputs: shadow map, point table, light color)
 #define LS_BINDING_MARCH_COORDINATES 1
 #define LS_BINDING_MARCH_EPIPOLAR_Z 2

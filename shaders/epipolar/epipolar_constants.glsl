@@ -24,18 +24,17 @@ mat4 shadowViewProj() { return frame.lightViewProj; }
 // neighbours. With P phases (epipolar.march.x: the initial step, where it divides the samples per
 // line S), sample k = q P + r of slice j = 4 u + v (v < 4) is texel (4 q + v, u) of phase r's
 // block, S / P x 4 wide and slices / 4 tall, and the P blocks tile the texture in rows of
-// kMarchBlocksPerRow (the march's texture is as large as the samples', S x slices when P is a
+// epipolar.march.y (the march's texture is as large as the samples', S x slices when P is a
 // square power of two). So the initial grid's ray-marching samples (r = 0) fill the first block,
 // and each 4 x 4 texels hold one k of 16 neighbouring slices. A device shades blocks of
 // neighbouring pixels together (a GPU 2 x 2 quads, lavapipe 4 x 4 blocks in 8-wide vectors): in
 // the samples' own order the grid was one column in P, and most of every block the march shaded
 // was masked out by the stencil; one k of neighbouring slices marches nearly alike. Every other
 // samples x slices texture keeps sample k of slice j at (k, j). P = 1: the march's order is that.
-int marchBlocksPerRow(int phases) { return 1 << ((findMSB(phases) + 1) / 2); }
 ivec2 marchTexel(int k, int slice) {
     int phases = int(epipolar.march.x);
     if (phases <= 1) return ivec2(k, slice);
-    int across = marchBlocksPerRow(phases), r = k % phases;
+    int across = int(epipolar.march.y), r = k % phases;
     ivec2 block = ivec2(r % across, r / across) *
                   ivec2(int(epipolar.sampling.y) / phases * 4, int(epipolar.sampling.x) / 4);
     return block + ivec2(4 * (k / phases) + (slice & 3), slice >> 2);
@@ -46,9 +45,13 @@ ivec2 sampleOfMarchTexel(ivec2 t) {
     if (phases <= 1) return t;
     ivec2 size = ivec2(int(epipolar.sampling.y) / phases * 4, int(epipolar.sampling.x) / 4);
     ivec2 block = t / size, in_ = t % size;
-    int r = block.y * marchBlocksPerRow(phases) + block.x;
+    int r = block.y * int(epipolar.march.y) + block.x;
     return ivec2((in_.x >> 2) * phases + r, in_.y * 4 + (in_.x & 3));
 }
+
+// Whether a sample is valid (on the screen, on a slice that enters it), from its epipolar z: the
+// coordinates pass leaves -1 where it is not.
+bool validSampleZ(float z) { return z > 0.0; }
 
 // Whether the samples carry the shadowed fraction (ratio mode) rather than Lin. A point or spot
 // light in a non-uniform medium carries Lin whatever the settings (interpolatesLin in

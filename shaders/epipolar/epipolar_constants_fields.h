@@ -13,5 +13,5 @@ LS_VEC4 unwarp;  // x: bilateral threshold, yzw: -
 // in the light's own block; y: 1 when that face's frustum reaches the view (1 in the light's own)
 LS_VEC4 cubeFace;
 // x: the march's phases P (its order, marchTexel in epipolar_constants.glsl; 1: a sample's own
-// texel), yzw: -
+// texel), y: its phase blocks per row (marchBlocksPerRow in epipolar_constants.h), zw: -
 LS_VEC4 march;

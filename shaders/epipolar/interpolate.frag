@@ -11,7 +11,7 @@ layout(location = 0) out vec4 outInscatter;
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
-    if (!(texelFetch(epipolarZ, p, 0).r > 0.0)) discard;  // not a valid sample: stays cleared
+    if (!validSampleZ(texelFetch(epipolarZ, p, 0).r)) discard;  // stays cleared
     uvec2 src = texelFetch(interpolationSource, p, 0).xy;
     // The marched samples are in the march's order.
     vec4 a = texelFetch(marched, marchTexel(int(src.x), p.y), 0);

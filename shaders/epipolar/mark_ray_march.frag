@@ -12,5 +12,5 @@ void main() {
     ivec2 at = sampleOfMarchTexel(ivec2(gl_FragCoord.xy));
     uint k = uint(at.x);
     uvec2 src = texelFetch(interpolationSource, at, 0).xy;
-    if (!(texelFetch(epipolarZ, at, 0).r > 0.0) || src.x != k || src.y != k) discard;
+    if (!validSampleZ(texelFetch(epipolarZ, at, 0).r) || src.x != k || src.y != k) discard;
 }

@@ -13,7 +13,7 @@
 #include "epipolar_bindings.h"
 layout(binding = LS_BINDING_REFINE_MARCHED) uniform sampler2D marched;
 layout(binding = LS_BINDING_REFINE_LIN_SOURCES, rg16ui) uniform uimage2D interpolationSource;
-layout(binding = LS_BINDING_REFINE_EPIPOLAR_Z_OF_SAMPLES) uniform sampler2D epipolarZ;
+layout(binding = LS_BINDING_SOURCES_EPIPOLAR_Z) uniform sampler2D epipolarZ;
 
 // Per channel, relative to the larger of the two: a shadow edge changes every channel of the
 // shadowed fraction alike, a light-color texture can change one alone. A source that carries no
@@ -28,7 +28,7 @@ bool differ(vec4 a, vec4 b, float threshold) {
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
-    if (!(texelFetch(epipolarZ, p, 0).r > 0.0)) return;  // not a valid sample
+    if (!validSampleZ(texelFetch(epipolarZ, p, 0).r)) return;
     uvec2 src = imageLoad(interpolationSource, p).xy;
     uint k = uint(p.x);
     if (src.x == k && src.y == k) return;  // marched already

@@ -15,8 +15,6 @@ layout(binding = LS_BINDING_REFINE_SOURCES, rg16ui) uniform writeonly uimage2D i
 
 shared uint breaks[4];  // bit k: break between local samples k and k+1
 
-bool validZ(float z) { return z > 0.0; }
-
 // Highest set bit in local range [lo, hi], or -1.
 int highestBreak(int lo, int hi) {
     for (int w = hi >> 5; w >= (lo >> 5) && w >= 0; --w) {
@@ -53,7 +51,7 @@ void main() {
 
     float z = s < samples ? texelFetch(epipolarZ, ivec2(s, slice), 0).r : -1.0;
     float zNext = s + 1 < samples ? texelFetch(epipolarZ, ivec2(s + 1, slice), 0).r : -1.0;
-    bool valid = validZ(z), validNext = validZ(zNext);
+    bool valid = validSampleZ(z), validNext = validSampleZ(zNext);
     // A change of validity is a break too, so no sample interpolates from outside the screen.
     bool brk = valid != validNext ||
                (valid && abs(zNext - z) > epipolar.sampling.w * min(z, zNext));
