@@ -28,10 +28,10 @@ layout(push_constant) uniform Push {
 } pc;
 #undef LS_INT
 
-void main() {
-    ivec2 pixel = ivec2(gl_FragCoord.xy);
-    vec2 p = pixelToNdc(vec2(pixel) + 0.5);
-    float z = pixelCameraZ(depthBuffer, pixel);
+// Seed 000's bilateral filter of the 2 x 2 samples nearest the pixel (ndc p, camera z): true when
+// samples of the pixel's depth served it, value then their weighted mean; else value holds the
+// plain bilinear mean of the valid samples (0 without any).
+bool filterSamples(vec2 p, float z, out vec4 value) {
     vec2 light = frame.lightScreen.xy;
     vec2 d = p - light;
     if (dot(d, d) < 1e-12) d = vec2(1e-6, 0.0);
@@ -59,28 +59,50 @@ void main() {
         for (int b = 0; b < 2; ++b) {
             ivec2 s = ivec2(k0 + b, slice);
             float sz = texelFetch(epipolarZ, s, 0).r;
-            vec4 value = texelFetch(inscatter, s, 0);
+            vec4 texel = texelFetch(inscatter, s, 0);
             // Alpha: how much the sample's value means (0 for a fraction of nothing).
-            float w = ws * (b == 0 ? 1.0 - wk : wk) * value.a;
+            float w = ws * (b == 0 ? 1.0 - wk : wk) * texel.a;
             if (sz <= 0.0 || w <= 0.0) continue;  // not a valid sample
-            plain += w * value;
+            plain += w * texel;
             plainWeight += w;
             if (abs(sz - z) <= epipolar.unwarp.x * z) {
-                sum += w * value;
+                sum += w * texel;
                 weight += w;
             }
         }
     }
-    bool resolved = weight > 1e-3;
-    // The fix-up's pixel: no store, and no stencil mark (the discard keeps the stencil at 0).
-    if (pc.fixup != 0 && !resolved) discard;
-    vec4 value = resolved ? sum / weight : (plainWeight > 0.0 ? plain / plainWeight : vec4(0.0));
+    bool served = weight > 1e-3;
+    value = served ? sum / weight : (plainWeight > 0.0 ? plain / plainWeight : vec4(0.0));
+    return served;
+}
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    vec2 p = pixelToNdc(vec2(pixel) + 0.5);
+    float z = pixelCameraZ(depthBuffer, pixel);
     vec3 v = rayDirection(p);
     float S = rayLength(z, v);
+    vec3 C = frame.cameraPos.xyz;
+    float t0, t1;
+    lightInterval(C, v, S, t0, t1);
+    // A ray the light cannot reach (outside a spot's cone or its range) has Lin 0, as the
+    // fix-up's march would find. In ratio mode every sample's fraction is scaled by that 0: no
+    // search. In Lin mode the samples still speak where they can (the image stays the same), and
+    // where they cannot the pixel is served as 0 rather than left to the fix-up.
+    bool dark = !(t0 < t1);
+    bool nothing = dark && carriesShadowedFraction();
+    vec4 value = vec4(0.0);
+    if (!nothing) {
+        bool served = filterSamples(p, z, value);
+        nothing = dark && !served && pc.fixup != 0;
+        // The fix-up's pixel: no store, and no stencil mark (the discard keeps the stencil at 0).
+        if (pc.fixup != 0 && !served && !nothing) discard;
+    }
+    if (nothing) {
+        if (pc.addOnly != 0) return;  // a later light adds 0: nothing to store
+        value = vec4(0.0);
+    }
     if (carriesShadowedFraction()) {
-        vec3 C = frame.cameraPos.xyz;
-        float t0, t1;
-        lightInterval(C, v, S, t0, t1);
         value.rgb *= unshadowedInscatter(C, v, t0, t1);
     } else {
         value.rgb = loadedLin(value.rgb);  // the samples' Lin, as the ray march stored it
