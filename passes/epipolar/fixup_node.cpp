@@ -1,4 +1,5 @@
 #include "epipolar_nodes.h"
+#include "shared/pass_helpers.h"
 #include "shared/pixel_march.h"
 
 namespace ls {
@@ -12,6 +13,8 @@ CompositeOutputs addFixup(rg::RenderGraph& g, const FixupInputs& in) {
     const CompositeOutputs written = addCompositeTarget(table, in.target);
     const bool addOnly = in.target.addOnly;
     pass.execute([frame = in.chain, table, written, addOnly](rg::PassContext& ctx) {
+        // A later light's unwarp kept to its screen rectangle: outside it nothing is added.
+        if (addOnly && !scissorToLight(ctx, frame.values)) return;
         // The cap is a setting, read per frame like the other constants.
         const auto maxSteps =
             static_cast<uint32_t>(epipolarFrameOf(ctx.data(frame.values)).constants.marching.w);

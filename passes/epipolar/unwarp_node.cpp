@@ -47,8 +47,11 @@ UnwarpOutputs addUnwarp(rg::RenderGraph& g, const UnwarpInputs& in, const Unwarp
     }
     const CompositeOutputs written = out.composited;
     const bool addOnly = in.target.addOnly;
-    pass.execute([shared = in.chain.shared, spec = in.chain.spec, light = in.light, table, written,
-                  markForFixup, addOnly](rg::PassContext& ctx) {
+    pass.execute([shared = in.chain.shared, spec = in.chain.spec, values = in.chain.values,
+                  light = in.light, table, written, markForFixup, addOnly](rg::PassContext& ctx) {
+        // A later light adds nothing outside its screen rectangle; the first applies the
+        // extinction everywhere. (The fix-up keeps to the same rectangle.)
+        if (addOnly && !scissorToLight(ctx, values)) return;
         auto desc = fullscreenPipeline(
             unwarpShader(light.table.valid(), compositeVariant(ctx, written)), ctx, table.layout());
         desc.pushConstantBytes = 8;

@@ -18,7 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr size_t kCounts[] = {1, 2, 4, 8};
+constexpr size_t kCounts[] = {1, 2, 4, 8, 16};
 
 using host_test::readAll;
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the light-count scaling scenes scenes/atrium_spots_<N>.json for N in 1, 2, 4, 8, and
+"""Writes the light-count scaling scenes scenes/atrium_spots_<N>.json for N in 1, 2, 4, 8, 16, and
 scenes/atrium_sun_small_spots.json.
 
 Each is the atrium (scenes/atrium.json's glTF, camera, medium, sky, ambient and exposure) lit by N
@@ -14,7 +14,7 @@ a 1920x1080 screen: the frame of a method chosen per light (bench/lights_per_lig
 small spot's chain costs what its pixels cost rather than a full-screen pass.
 Deterministic; standard library only.
 
-    python3 tools/make_scenes/make_lights_scenes.py [OUT_DIR] [--counts 1,2,4,8]
+    python3 tools/make_scenes/make_lights_scenes.py [OUT_DIR] [--counts 1,2,4,8,16]
 
 OUT_DIR defaults to the repository's scenes/. The glTF is the atrium's (not copied: OUT_DIR must
 hold atrium.gltf for the scenes to load). Do not edit the generated files by hand.
@@ -27,11 +27,14 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from cube_scenes import write_scene_json  # noqa: E402
 
-COUNTS = (1, 2, 4, 8)
+COUNTS = (1, 2, 4, 8, 16)
 # (x, z) over the court, and where each spot's axis leans (x, z per metre down).
 SPOTS = [((-3.0, 2.0), (0.3, 0.2)), ((3.0, 5.0), (-0.2, -0.1)), ((0.0, 8.0), (0.1, -0.3)),
          ((-2.0, 6.5), (0.25, -0.15)), ((2.5, 1.0), (-0.3, 0.25)), ((-4.0, 4.0), (0.35, 0.0)),
-         ((4.0, 8.5), (-0.3, -0.2)), ((0.5, 3.5), (0.0, 0.3))]
+         ((4.0, 8.5), (-0.3, -0.2)), ((0.5, 3.5), (0.0, 0.3)), ((-1.0, 1.0), (0.2, 0.2)),
+         ((1.5, 2.5), (-0.1, 0.2)), ((-3.0, 7.5), (0.2, -0.2)), ((3.0, 6.5), (-0.25, 0.1)),
+         ((-1.5, 5.0), (0.1, 0.1)), ((1.0, 6.0), (0.2, -0.1)), ((-2.5, 3.0), (0.15, 0.25)),
+         ((2.0, 8.0), (-0.15, -0.25))]
 HEIGHT = 6.0
 WARM, COLD = (400.0, 250.0, 120.0), (120.0, 250.0, 400.0)
 
@@ -80,7 +83,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("out", nargs="?", default=scenes)
     parser.add_argument("--counts", default=",".join(str(c) for c in COUNTS),
-                        help="comma-separated light counts (default 1,2,4,8)")
+                        help="comma-separated light counts (default 1,2,4,8,16)")
     args = parser.parse_args()
     counts = [int(c) for c in args.counts.split(",") if c]
     if any(c < 1 or c > len(SPOTS) for c in counts):
