@@ -18,8 +18,15 @@ struct BeamTreeFrame {
     // Triangles: the lit space's (pyramids or plane parts), then the uncertain planes' parts.
     std::vector<glm::vec4> points;
     uint32_t litPoints = 0, uncertainPoints = 0;
-    bool litAsPlanes = false;      // the lit triangles are plane parts (5.3), not pyramids (5.4)
-    PlanePush planePush;           // the sampling planes' placement (spacing) for their shading
+    bool litAsPlanes = false;  // the lit triangles are plane parts (5.3), not pyramids (5.4)
+    PlanePush planePush;       // the sampling planes' placement (spacing) for their shading
+    // Where each plane's triangles start within the lit (when litAsPlanes) and the uncertain
+    // triangles, one entry per plane and one past the last; and the planes [nearFirst, nearEnd)
+    // near the light's depth, nearSpacing apart (thinner than the others), whose slabs take the
+    // closed form (planes.frag).
+    std::vector<uint32_t> litStarts, uncertainStarts;
+    uint32_t nearFirst = 0, nearEnd = 0;
+    float nearSpacing = 0.0f;
     double buildMilliseconds = 0;  // CPU: tree, pyramids and plane partition
     size_t treeNodes = 0, visiblePolygons = 0;
 };

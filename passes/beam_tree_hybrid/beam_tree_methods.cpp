@@ -130,9 +130,7 @@ ChainOutputs BeamTreeSamplingMethod::addChain(rg::RenderGraph& g, ChainLights li
     const ChainInputs& in = only.in;
     const ChainConfig& c = only.config;
     const Options& o = *c.options.get<Options>();
-    LightImages light = lightImages(in, c);
-    light.table = {};  // the sampling planes read no table
-    const BeamTreeSamplingInputs beam{chainContext(in, c), light};
+    const BeamTreeSamplingInputs beam{chainContext(in, c), lightImages(in, c)};
     ChainOutputs out;
     out.lin = addBeamTreeSampling(g, beam, {o.capacityPoints, o.reversedZ});
     return out;
@@ -140,8 +138,8 @@ ChainOutputs BeamTreeSamplingMethod::addChain(rg::RenderGraph& g, ChainLights li
 
 std::string BeamTreeSamplingMethod::summary(const ChainConfig& c) const {
     return std::string(
-               "seed 004's beam tree clipping seed 002's planes: lit parts without shadow "
-               "look-ups") +
+               "seed 004's beam tree clipping seed 002's planes (each plane's slab in closed "
+               "form for a point or spot light): lit parts without shadow look-ups") +
            (c.shadowed ? ", uncertain parts with the shadow map"
                        : ", uncertain parts as lit (no shadow map)");
 }

@@ -22,6 +22,8 @@ class BeamTreeMethod : public MethodUnit {
     std::unique_ptr<LightData> makeData() const override;
     std::vector<CpuWork> prepare(LightData* data, LightFrame&,
                                  const LightSetup& light) const override;
+    // The closed forms: the analytic method's lit pyramids, and both methods' planes' slabs.
+    bool readsTable(const LightSetup&) const override { return true; }
     ChainOptions options(const LightSetup& light, const LightData* data,
                          const ChainOptions* previous) const override;
     // The sampling planes this frame placed (with Settings::planes.spacing their count varies).
@@ -36,7 +38,6 @@ class BeamTreeAnalyticMethod final : public BeamTreeMethod {
     const char* name() const override { return "beam-tree-analytic"; }
     std::string description() const override;
     MethodCaps caps() const override;
-    bool readsTable(const LightSetup&) const override { return true; }
     ChainOutputs addChain(rg::RenderGraph& graph, ChainLights lights,
                           const CompositeTarget& target) const override;
     std::string summary(const ChainConfig& config) const override;

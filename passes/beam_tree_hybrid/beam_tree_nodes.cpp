@@ -14,12 +14,14 @@
 
 namespace ls {
 
-// Bindings only some frames have are build-time variants of the planes' shader.
-rg::ShaderCode beamTreePlanesShader(bool shadowMap, bool cookie, bool cube) {
+// Bindings only some frames have are build-time variants of the planes' shader; with the
+// point-light table (point and spot lights) each plane's slab is integrated in closed form.
+rg::ShaderCode beamTreePlanesShader(bool shadowMap, bool cookie, bool cube, bool slab) {
     return pickShader(ls_spirv::planes_frag_variants, {{"LS_SHADOW_MAP", shadowMap},
                                                        {"LS_CUBE_SHADOW", shadowMap && cube},
                                                        {"LS_LIGHT_COLOR", cookie && !cube},
-                                                       {"LS_NOISE", 0}});
+                                                       {"LS_NOISE", 0},
+                                                       {"LS_SLAB", slab}});
 }
 
 const BeamTreeFrame& beamTreeOf(const LightFrame& frame) {
@@ -62,7 +64,8 @@ rg::BufferRef addTriangleUpload(rg::RenderGraph& graph, rg::HostDataRef<LightFra
 
 struct PlaneDraw {
     uint32_t first = 0, count = 0;
-    bool shadow = false;  // the shadow map is looked up (uncertain space)
+    bool shadow = false;      // the shadow map is looked up (uncertain space)
+    bool closedForm = false;  // the slabs in closed form (planes near the light's depth)
 };
 
 // Records sampling-plane triangles [first, first + count) of the uploaded buffer, depth-tested
@@ -76,7 +79,7 @@ void drawPlaneParts(rg::PassContext& ctx, const Shared& shared, const ScatterSpe
         draw.shadow ? passTable : passTable.without(LS_BINDING_SHADOW_MAP);
     rg::GraphicsPipelineDesc desc;
     desc.vertex = rg::spirv(ls_spirv::triangles_vert);
-    desc.fragment = beamTreePlanesShader(draw.shadow, cookie, spec.cubeShadow);
+    desc.fragment = beamTreePlanesShader(draw.shadow, cookie, spec.cubeShadow, draw.closedForm);
     desc.formats = ctx.renderingFormats();
     desc.bindings = table.layout();
     desc.pushConstantBytes = sizeof(PlanePush);
@@ -87,12 +90,34 @@ void drawPlaneParts(rg::PassContext& ctx, const Shared& shared, const ScatterSpe
     const auto& p = shared->pipelines.graphics("beam-tree planes", desc);
     p.bind(ctx.cmd());
     table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
-    p.push(ctx.cmd(), frame.planePush);
+    PlanePush push = frame.planePush;
+    if (draw.closedForm) push.boxMin.w = frame.nearSpacing;  // the slab each near plane stands for
+    p.push(ctx.cmd(), push);
     ctx.vk().CmdDraw(ctx.cmd(), draw.count, 1, draw.first, 0);
 }
 
+// One group of plane parts (the lit or the uncertain ones, from `first` in the buffer, each plane's
+// own from starts[plane]): the planes near the light's depth with their slabs in closed form, the
+// others with their midpoints, in draws of their own (a branch per fragment would run both on a
+// device that runs a fragment group's both sides, as lavapipe does).
+void drawPlaneGroup(rg::PassContext& ctx, const Shared& shared, const ScatterSpec& spec,
+                    const BeamTreeFrame& frame, const rg::BindingTable& table, uint32_t first,
+                    const std::vector<uint32_t>& starts, bool shadow, bool reversedZ) {
+    if (starts.empty()) return;
+    const uint32_t planes = static_cast<uint32_t>(starts.size()) - 1;
+    const uint32_t a = std::min(frame.nearFirst, planes), b = std::clamp(frame.nearEnd, a, planes);
+    auto range = [&](uint32_t from, uint32_t to, bool closedForm) {
+        drawPlaneParts(ctx, shared, spec, frame, table,
+                       {first + starts[from], starts[to] - starts[from], shadow, closedForm},
+                       reversedZ);
+    };
+    range(0, a, false);
+    range(a, b, true);
+    range(b, planes, false);
+}
+
 // The plane pass's declarations: the frame's constants, the triangles, the engine's depth as a
-// read-only depth attachment, and the shadow map and cookie where given.
+// read-only depth attachment, and the shadow map, cookie and point-light table where given.
 rg::BindingTable declarePlaneReads(rg::PassBuilder& pass, const ChainContext& chain,
                                    const LightImages& light, rg::BufferRef triangles) {
     const auto& s = samplersOf(chain.shared);
@@ -102,7 +127,8 @@ rg::BindingTable declarePlaneReads(rg::PassBuilder& pass, const ChainContext& ch
                            VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT)
         .sampledIfValid(LS_BINDING_SHADOW_MAP, light.shadowMap, s.nearest(),
                         VK_IMAGE_ASPECT_DEPTH_BIT)
-        .sampledIfValid(LS_BINDING_LIGHT_COLOR, light.lightColor, s.linear());
+        .sampledIfValid(LS_BINDING_LIGHT_COLOR, light.lightColor, s.linear())
+        .sampledIfValid(LS_BINDING_POINT_TABLE, light.table, s.nearest());
     pass.depthTest(chain.depth);
     return table;
 }
@@ -154,8 +180,8 @@ rg::ImageRef addBeamTreeHybrid(rg::RenderGraph& graph, const BeamTreeInputs& in,
         const bool reversedZ = options.reversedZ, shadow = in.light.shadowMap.valid();
         pass.execute([shared, spec, values, shadow, table, reversedZ](rg::PassContext& ctx) {
             const BeamTreeFrame& frame = beamTreeOf(ctx.data(values));
-            const PlaneDraw uncertain{frame.litPoints, frame.uncertainPoints, shadow};
-            drawPlaneParts(ctx, shared, spec, frame, table, uncertain, reversedZ);
+            drawPlaneGroup(ctx, shared, spec, frame, table, frame.litPoints, frame.uncertainStarts,
+                           shadow, reversedZ);
         });
     }
     return lin;
@@ -177,10 +203,9 @@ rg::ImageRef addBeamTreeSampling(rg::RenderGraph& graph, const BeamTreeSamplingI
     const bool reversedZ = options.reversedZ, shadow = in.light.shadowMap.valid();
     pass.execute([shared, spec, values, shadow, table, reversedZ](rg::PassContext& ctx) {
         const BeamTreeFrame& frame = beamTreeOf(ctx.data(values));
-        const PlaneDraw lit{0, frame.litPoints, false};
-        const PlaneDraw uncertain{frame.litPoints, frame.uncertainPoints, shadow};
-        drawPlaneParts(ctx, shared, spec, frame, table, lit, reversedZ);
-        drawPlaneParts(ctx, shared, spec, frame, table, uncertain, reversedZ);
+        drawPlaneGroup(ctx, shared, spec, frame, table, 0, frame.litStarts, false, reversedZ);
+        drawPlaneGroup(ctx, shared, spec, frame, table, frame.litPoints, frame.uncertainStarts,
+                       shadow, reversedZ);
     });
     return lin;
 }

@@ -5,6 +5,6 @@
 
 namespace ls {
 
-rg::ShaderCode beamTreePlanesShader(bool shadowMap, bool cookie, bool cube);
+rg::ShaderCode beamTreePlanesShader(bool shadowMap, bool cookie, bool cube, bool slab);
 
 }  // namespace ls

@@ -18,7 +18,8 @@ rg::ShaderCode planesShader(bool shadowMap, bool cookie, bool noise, bool cube) 
                       {{"LS_SHADOW_MAP", shadowMap},
                        {"LS_CUBE_SHADOW", shadowMap && cube},
                        {"LS_LIGHT_COLOR", cookie && !(shadowMap && cube)},
-                       {"LS_NOISE", noise}});
+                       {"LS_NOISE", noise},
+                       {"LS_SLAB", 0}});
 }
 
 const PlanePlacement& placementOf(const LightFrame& frame) {

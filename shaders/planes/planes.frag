@@ -6,8 +6,16 @@
 // the ray's angle to the view axis (towardCamera and lightAt: seed 004's simplified model with
 // kSimplifiedModel). The seed's scrolling noise multiplies the density. Planes
 // behind the scene never get here: the engine's depth rejects them.
-// Float16 target: rgb += the share. Rgba8Channels (kChannels): the share's luminance, scaled to the
-// target's range, goes to channel (plane mod 4) only (seed 002's precision trick).
+// LS_SLAB (beam-tree-sampling's planes near a point or spot light: those within a few spacings of
+// its depth, thinner than the others, which the CPU draws apart), where the inverse
+// square peaks inside one slab and the midpoint rule misses or overshoots the peak, a plane stands
+// for the slab of ray between its neighbours' midpoints, cut to the light's volume, and its share
+// is the closed form of the unshadowed Lin over it (integrate.glsl, the point-light table) times
+// the visibility and light color at its middle: only the shadow is sampled. Other planes, a
+// non-uniform medium and seed 004's simplified model keep the midpoint rule.
+#ifndef LS_SLAB
+#define LS_SLAB 0
+#endif
 #include "camera.glsl"
 #include "math.glsl"
 #include "plane_push.glsl"
@@ -25,6 +33,12 @@ layout(binding = LS_BINDING_LIGHT_COLOR) uniform sampler2D lightColorMap;
 #endif
 #include "light_color.glsl"
 #include "light_at.glsl"
+#if LS_SLAB
+#define LS_NEEDS_TABLE 1
+layout(binding = LS_BINDING_POINT_TABLE) uniform sampler2D pointTable;
+#include "integrate.glsl"
+#include "light_volume.glsl"
+#endif
 #if LS_NOISE
 layout(binding = LS_BINDING_NOISE) uniform sampler2D noiseMap;  // repeating
 #endif
@@ -76,17 +90,41 @@ float planeHash(uvec2 p, uint k) {
     return float(h >> 8) / 16777216.0;
 }
 
+// The share of the plane's slab of ray [s - ds/2, s + ds/2], cut to the light's volume, in closed
+// form (LS_SLAB); false where no light reaches it.
+bool slabShare(vec3 C, vec3 v, float s, float ds, out vec3 share) {
+    share = vec3(0.0);
+#if LS_SLAB
+    float t0, t1;
+    lightInterval(C, v, min(s + 0.5 * ds, placement.params.w), t0, t1);
+    t0 = max(t0, max(s - 0.5 * ds, 0.0));
+    if (!(t0 < t1)) return false;
+    vec3 V = vec3(1.0);
+    applyShadowAndColor(C + (0.5 * (t0 + t1)) * v, V);
+    share = V * unshadowedInscatter(C, v, t0, t1);
+    return true;
+#else
+    return false;
+#endif
+}
+
 void main() {
     vec3 C = frame.cameraPos.xyz;
     vec3 d = worldPos - C;
     float s = length(d);
     if (s > placement.params.w) discard;  // past the sky distance
     vec3 v = d / s;
-    float cosTheta;
-    vec3 irr = lightAt(worldPos, v, placement.params.x, cosTheta);
-    if (all(equal(irr, vec3(0.0)))) discard;
     float ds = placement.boxMin.w / max(dot(v, frame.cameraForward.xyz), 1e-4);
-    vec3 share = towardCameraFrom(worldPos, s, cosTheta) * irr * ds;
+    vec3 share;
+    if (LS_SLAB != 0 && kMedia == 0 && !kSimplifiedModel && kLightType != LIGHT_DIRECTIONAL &&
+        placement.params.x == 0.0) {
+        if (!slabShare(C, v, s, ds, share)) discard;
+    } else {
+        float cosTheta;
+        vec3 irr = lightAt(worldPos, v, placement.params.x, cosTheta);
+        if (all(equal(irr, vec3(0.0)))) discard;
+        share = towardCameraFrom(worldPos, s, cosTheta) * irr * ds;
+    }
 #if LS_NOISE
     share *= densityNoise(worldPos);
 #endif

@@ -16,6 +16,31 @@
 #include "medium.glsl"
 #include "simplified.glsl"
 
+// Multiplies f by the shadow map's visibility and the light color at P, where the including
+// shader has them: lightAt's factors beside the irradiance.
+void applyShadowAndColor(vec3 P, inout vec3 f) {
+#if LS_SHADOW_MAP || LS_LIGHT_COLOR
+#if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
+    // A point light's cube map: the face of P - L's major axis (+X, -X, +Y, -Y, +Z, -Z), whose
+    // layer the look-up reads (a point on a seam takes either face: both maps see it).
+    vec3 fromLight = P - frame.lightPos.xyz, m = abs(fromLight);
+    shadowFace = m.x >= m.y && m.x >= m.z ? (fromLight.x >= 0.0 ? 0 : 1)
+               : m.y >= m.z               ? (fromLight.y >= 0.0 ? 2 : 3)
+                                          : (fromLight.z >= 0.0 ? 4 : 5);
+    vec4 X = frame.cubeFaceViewProj[shadowFace] * vec4(P, 1.0);
+#else
+    vec4 X = frame.lightViewProj * vec4(P, 1.0);
+#endif
+    if (X.w > 0.0) {
+        vec2 uv = X.xy / X.w * 0.5 + 0.5;
+#if LS_SHADOW_MAP
+        f *= shadowVisibility(uv, toStandardDepth(X.z / X.w));
+#endif
+        f *= lightColorAt(uv);
+    }
+#endif
+}
+
 // `ambient` (1/m^2, point and spot lights): seed 002's term beside the inverse square; 0 is the model.
 vec3 lightAt(vec3 P, vec3 v, float ambient, out float cosTheta) {
     vec3 irr;
@@ -40,26 +65,7 @@ vec3 lightAt(vec3 P, vec3 v, float ambient, out float cosTheta) {
         if (r > frame.lightIntensity.w) return vec3(0.0);  // beyond the range
         if (smoothFalloff()) irr *= lightFalloff(P);
     }
-#if LS_SHADOW_MAP || LS_LIGHT_COLOR
-#if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
-    // A point light's cube map: the face of P - L's major axis (+X, -X, +Y, -Y, +Z, -Z), whose
-    // layer the look-up reads (a point on a seam takes either face: both maps see it).
-    vec3 fromLight = P - frame.lightPos.xyz, m = abs(fromLight);
-    shadowFace = m.x >= m.y && m.x >= m.z ? (fromLight.x >= 0.0 ? 0 : 1)
-               : m.y >= m.z               ? (fromLight.y >= 0.0 ? 2 : 3)
-                                          : (fromLight.z >= 0.0 ? 4 : 5);
-    vec4 X = frame.cubeFaceViewProj[shadowFace] * vec4(P, 1.0);
-#else
-    vec4 X = frame.lightViewProj * vec4(P, 1.0);
-#endif
-    if (X.w > 0.0) {
-        vec2 uv = X.xy / X.w * 0.5 + 0.5;
-#if LS_SHADOW_MAP
-        irr *= shadowVisibility(uv, toStandardDepth(X.z / X.w));
-#endif
-        irr *= lightColorAt(uv);
-    }
-#endif
+    applyShadowAndColor(P, irr);
     return irr;
 }
 

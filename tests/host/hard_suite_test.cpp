@@ -95,21 +95,22 @@ const std::map<std::string, double> kBeamTreeBounds = {
 constexpr double kBeamTreeDefault = 0.005;
 
 // beam-tree-sampling (seed 004 5.3) draws seed 002's planes where the tree says lit or uncertain
-// (float32 target), so it has the planes method's errors: measured 0.854 point_at_camera, 0.784
-// spot_at_camera, 0.263 light_on_edge, 0.161 light_corner, 0.142 light_center, 0.134
-// dense_medium, 0.102 ray_through_point_light, at most 0.076 elsewhere.
+// (float32 target), with thinner planes near the light's depth whose slabs take the closed form
+// (planes.frag). Measured: 0.755 point_at_camera and 0.732 spot_at_camera (the light at the camera:
+// its glow lies within the first plane), 0.053 light_on_edge, 0.049 light_behind_camera, at most
+// 0.043 elsewhere (before the near planes: 0.854, 0.784, 0.263 light_on_edge, 0.161 light_corner,
+// 0.142 light_center, 0.134 dense_medium, 0.144 windowed_point_on_ray).
 const std::map<std::string, double> kBeamTreeSamplingBounds = {
-    {"point_at_camera", 1.0},
-    {"spot_at_camera", 0.95},
-    {"light_on_edge", 0.32},
-    {"light_corner", 0.2},
-    {"light_center", 0.17},
-    {"dense_medium", 0.17},
-    {"ray_through_point_light", 0.14},
-    {"windowed_point_on_ray", 0.18},  // measured 0.144
+    {"point_at_camera", 0.9},
+    {"spot_at_camera", 0.9},
+    {"light_on_edge", 0.07},
     {"thin_medium_km", 0.002},
+    // Measured 0.0547 and 0.0558 (0.214 and 0.124 at 320x180 with even planes and midpoints; 0.057
+    // and 0.058 now, bench/point_in_cage_sampling.json).
+    {"point_in_cage", 0.08},
+    {"point_in_small_cage", 0.08},
 };
-constexpr double kBeamTreeSamplingDefault = 0.1;
+constexpr double kBeamTreeSamplingDefault = 0.06;
 
 // froxels (2-pixel columns, 64 slices: froxels-hdrp's density at 1920x1080) sample the light once
 // per froxel and spread it over the froxel, so thin shafts (the grille's), a light's glow and a
@@ -162,13 +163,15 @@ TEST_F(HardSuite, EveryCaseIsFiniteAndWithinItsBound) {
                                              (scene.light.type == lightscatter::LightType::Spot &&
                                               scene.light.shadowMapSize == 0);
             if (method == lightscatter::Method::Analytic && !unshadowedPointLike) continue;
-            // A point light's cube shadow map: epipolar and brute force only (the others refuse it
-            // in one line: PointCageGpu.OnlyEpipolarAndBruteForceSampleTheCubeMap).
+            // A point light's cube shadow map (the caged lights): bounded here for epipolar, brute
+            // force, froxels and beam-tree-sampling (the 10% at 320x180); cone-march,
+            // planes and beam-tree-analytic sample it too, without a bound in this suite yet.
             const bool cubeShadowed =
                 scene.light.type == lightscatter::LightType::Point && scene.light.shadowMapSize > 0;
             if (cubeShadowed && method != lightscatter::Method::Epipolar &&
                 method != lightscatter::Method::BruteForce &&
-                method != lightscatter::Method::Froxels)
+                method != lightscatter::Method::Froxels &&
+                method != lightscatter::Method::BeamTreeSampling)
                 continue;
             // Seed 004's beam tree is built from a point or spot light.
             if ((method == lightscatter::Method::BeamTreeAnalytic ||

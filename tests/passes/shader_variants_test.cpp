@@ -103,7 +103,8 @@ TEST(ShaderVariants, ScreenLinNodesAskForBuiltVariants) {
         for (bool color : {false, true})
             for (bool cube : {false, true}) {
                 reach(coneMarch, coneMarchShader(shadow, color, cube));
-                reach(planes, beamTreePlanesShader(shadow, color, cube));
+                for (bool slab : {false, true})
+                    reach(planes, beamTreePlanesShader(shadow, color, cube, slab));
                 for (bool noise : {false, true})
                     reach(planes, planesShader(shadow, color, noise, cube));
             }
