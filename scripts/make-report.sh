@@ -22,7 +22,7 @@
 #   scripts/make-report.sh --occluders-only  # that benchmark alone, its plot, and its section spliced
 #                                          # into the existing docs/performance.md
 #   scripts/make-report.sh --lights-only   # the same for "Several lights": bench/lights.json (time and
-#                                          # error at 240x135) and bench/lights_scaling.json (1 to 8
+#                                          # error at 240x135) and bench/lights_scaling.json (1 to 16
 #                                          # shadowed spots at 1920x1080, timings only: run it on a quiet
 #                                          # machine); LS_REPORT_LIGHTS=0 skips both in a full run and
 #                                          # reuses an earlier run's results, as above
