@@ -14,8 +14,8 @@
 
 namespace ls {
 
-// Bindings only some frames have are build-time variants of the planes' shader; with the
-// point-light table (point and spot lights) each plane's slab is integrated in closed form.
+// Bindings only some frames have are build-time variants of the planes' shader; `slab`: the near
+// planes' slabs in closed form (planes.frag's LS_SLAB, which reads the point-light table).
 rg::ShaderCode beamTreePlanesShader(bool shadowMap, bool cookie, bool cube, bool slab) {
     return pickShader(ls_spirv::planes_frag_variants, {{"LS_SHADOW_MAP", shadowMap},
                                                        {"LS_CUBE_SHADOW", shadowMap && cube},
@@ -64,8 +64,8 @@ rg::BufferRef addTriangleUpload(rg::RenderGraph& graph, rg::HostDataRef<LightFra
 
 struct PlaneDraw {
     uint32_t first = 0, count = 0;
-    bool shadow = false;      // the shadow map is looked up (uncertain space)
-    bool closedForm = false;  // the slabs in closed form (planes near the light's depth)
+    bool shadow = false;  // the shadow map is looked up (uncertain space)
+    bool near = false;    // planes near the light's depth: thinner, their slabs in closed form
 };
 
 // Records sampling-plane triangles [first, first + count) of the uploaded buffer, depth-tested
@@ -79,7 +79,8 @@ void drawPlaneParts(rg::PassContext& ctx, const Shared& shared, const ScatterSpe
         draw.shadow ? passTable : passTable.without(LS_BINDING_SHADOW_MAP);
     rg::GraphicsPipelineDesc desc;
     desc.vertex = rg::spirv(ls_spirv::triangles_vert);
-    desc.fragment = beamTreePlanesShader(draw.shadow, cookie, spec.cubeShadow, draw.closedForm);
+    const bool slab = draw.near && passTable.has(LS_BINDING_POINT_TABLE);
+    desc.fragment = beamTreePlanesShader(draw.shadow, cookie, spec.cubeShadow, slab);
     desc.formats = ctx.renderingFormats();
     desc.bindings = table.layout();
     desc.pushConstantBytes = sizeof(PlanePush);
@@ -91,7 +92,7 @@ void drawPlaneParts(rg::PassContext& ctx, const Shared& shared, const ScatterSpe
     p.bind(ctx.cmd());
     table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
     PlanePush push = frame.planePush;
-    if (draw.closedForm) push.boxMin.w = frame.nearSpacing;  // the slab each near plane stands for
+    if (draw.near) push.boxMin.w = frame.nearSpacing;  // the slab each near plane stands for
     p.push(ctx.cmd(), push);
     ctx.vk().CmdDraw(ctx.cmd(), draw.count, 1, draw.first, 0);
 }
@@ -106,10 +107,9 @@ void drawPlaneGroup(rg::PassContext& ctx, const Shared& shared, const ScatterSpe
     if (starts.empty()) return;
     const uint32_t planes = static_cast<uint32_t>(starts.size()) - 1;
     const uint32_t a = std::min(frame.nearFirst, planes), b = std::clamp(frame.nearEnd, a, planes);
-    auto range = [&](uint32_t from, uint32_t to, bool closedForm) {
+    auto range = [&](uint32_t from, uint32_t to, bool near) {
         drawPlaneParts(ctx, shared, spec, frame, table,
-                       {first + starts[from], starts[to] - starts[from], shadow, closedForm},
-                       reversedZ);
+                       {first + starts[from], starts[to] - starts[from], shadow, near}, reversedZ);
     };
     range(0, a, false);
     range(a, b, true);
