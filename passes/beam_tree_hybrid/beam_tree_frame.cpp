@@ -74,10 +74,10 @@ BeamTreeFrame buildBeamTreeFrame(const CameraParams& camera, const LightParams& 
     };
     // beam-tree-analytic's uncertain planes keep seed 002's even midpoints (its lit space is
     // already in closed form).
-    const bool pointLike = light.kind != LightType::Directional && out.litAsPlanes;
-    const uint32_t nearFirst = pointLike ? planeAt(std::ceil(nearFrom - kNearSpacings)) : 0;
+    const bool splitNear = light.kind != LightType::Directional && out.litAsPlanes;
+    const uint32_t nearFirst = splitNear ? planeAt(std::ceil(nearFrom - kNearSpacings)) : 0;
     const uint32_t nearEnd =
-        pointLike ? std::max(nearFirst, planeAt(std::floor(nearFrom + kNearSpacings) + 1.0f)) : 0;
+        splitNear ? std::max(nearFirst, planeAt(std::floor(nearFrom + kNearSpacings) + 1.0f)) : 0;
     out.nearSpacing = spacing / static_cast<float>(kNearSplit);
     const glm::vec2 lo(placement.push.boxMin), hi(placement.push.boxMax);
     auto addPlane = [&](float z) {

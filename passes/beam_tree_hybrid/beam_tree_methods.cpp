@@ -138,8 +138,8 @@ ChainOutputs BeamTreeSamplingMethod::addChain(rg::RenderGraph& g, ChainLights li
 
 std::string BeamTreeSamplingMethod::summary(const ChainConfig& c) const {
     return std::string(
-               "seed 004's beam tree clipping seed 002's planes (each plane's slab in closed "
-               "form for a point or spot light): lit parts without shadow look-ups") +
+               "seed 004's beam tree clipping seed 002's planes (near the light thinner, their "
+               "slabs in closed form): lit parts without shadow look-ups") +
            (c.shadowed ? ", uncertain parts with the shadow map"
                        : ", uncertain parts as lit (no shadow map)");
 }
