@@ -5,8 +5,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <utility>
 
@@ -202,10 +204,34 @@ class ConfigReader {
         }
         if (j.contains("profileOrder")) c.profileOrder = profileOrder(j["profileOrder"], c);
         if (profileShadowMap) applyProfileShadowMaps(c, profiles);
+        distinct(c);
         return c;
     }
 
   private:
+    // A run is known in bench.csv and bench.json by its scene's name and its label: two runs alike
+    // there were two measurements of which one row could not be told from the other.
+    void distinct(const BenchConfig& c) const {
+        std::map<std::string, std::string> sceneByName;
+        for (const std::string& s : c.scenes) {
+            const std::string name = std::filesystem::path(s).stem().string();
+            const auto [it, fresh] = sceneByName.emplace(name, s);
+            if (!fresh && it->second != s)
+                fail("scenes '" + echoText(it->second) + "' and '" + echoText(s) +
+                     "' are both named '" + echoText(name) +
+                     "': their rows and strips would not be told apart; rename one");
+        }
+        std::set<std::pair<std::string, std::string>> seen;
+        for (const BenchRun& r : c.runs) {
+            const std::string name = std::filesystem::path(r.scene).stem().string();
+            if (!seen.emplace(name, r.label).second)
+                fail("the run labelled '" + echoText(r.label) + "' comes twice on " +
+                     echoText(name) +
+                     " (a scene or a size given twice, or a configuration labelled as another "
+                     "run is): one row would not be told from the other");
+        }
+    }
+
     [[noreturn]] void fail(const std::string& what) const {
         throw std::runtime_error(path_ + ": " + what);
     }

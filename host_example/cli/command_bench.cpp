@@ -20,6 +20,7 @@
 
 #include "activity.h"
 #include "bench/bench_config.h"
+#include "bench/csv_file.h"
 #include "bench/flicker.h"
 #include "bench/image_strip.h"
 #include "bench/metrics.h"
@@ -29,6 +30,8 @@
 #include "engine_renderer.h"
 #include "image_io.h"
 #include "output_set.h"
+#include "scene/json_input.h"
+#include "scene_inputs.h"
 #include "settings_fields.h"
 #include "temp_files.h"
 
@@ -188,13 +191,13 @@ int runBench(Args& args) {
     // --out D` used to replace the configuration with its results.
     OutputSet guard;
     guard.addInput("the benchmark configuration", configPath);
-    for (const auto& [path, scene] : scenes) {
-        guard.addInput("a scene of the benchmark", path);
-        for (const auto& f : scene.second.files)
-            guard.addInput("a file a scene of the benchmark reads", f);
-    }
+    for (const auto& [path, scene] : scenes)
+        addSceneInputs(guard, path, scene.first, scene.second, "a scene of the benchmark");
     guard.check("--out", (out / "bench.csv").string());
     guard.check("--out", (out / "bench.json").string());
+    // Labels that differ only where a file name cannot (a/b and a_b) would share a strip, and the
+    // later run's would replace the earlier's.
+    std::map<std::string, const bench::BenchRun*> strips;
     for (const bench::BenchRun& run : config.runs) {
         if (!run.measureError) continue;  // no strip without a reference
         std::vector<std::string> motions{""};
@@ -203,10 +206,21 @@ int runBench(Args& args) {
             for (const bench::MotionKind m : config.motion->what)
                 motions.push_back(bench::motionName(m));
         }
-        for (const std::string& m : motions) {
-            guard.check("--out", stripPath(out, run, m, ".png").string());
-            if (!m.empty()) guard.check("--out", stripPath(out, run, m, "_flicker.png").string());
-        }
+        for (const std::string& m : motions)
+            for (const char* suffix : {".png", "_flicker.png"}) {
+                if (m.empty() && std::string(suffix) != ".png") continue;
+                const fs::path strip = stripPath(out, run, m, suffix);
+                guard.check("--out", strip.string());
+                const auto [it, fresh] = strips.emplace(strip.string(), &run);
+                if (!fresh)
+                    throw std::runtime_error(
+                        configPath + ": runs '" + echoText(it->second->label) + "' on " +
+                        echoText(fs::path(it->second->scene).stem().string()) + " and '" +
+                        echoText(run.label) + "' on " +
+                        echoText(fs::path(run.scene).stem().string()) +
+                        " would write the same strip " + echoText(strip.filename().string()) +
+                        ": give them labels that differ in letters or digits");
+            }
     }
     Activity benchmarking("benchmarking " + configPath);
     rg::Device device(deviceOptions);
@@ -220,9 +234,7 @@ int runBench(Args& args) {
     }
     { TempFile probe((out / "bench.json").string(), "--out"); }  // the folder is writable
 
-    std::ofstream csv(out / "bench.csv");
-    if (!csv) throw std::runtime_error((out / "bench.csv").string() + ": cannot open for writing");
-    csv << kCsvHeader << "\n" << std::flush;
+    bench::CsvFile csv((out / "bench.csv").string(), kCsvHeader);
     nlohmann::json all = nlohmann::json::array();
     Progress progress(config.runs.size());
 
@@ -393,7 +405,8 @@ int runBench(Args& args) {
             row["driver"] = device.driverName();
             row["cpuDevice"] = device.isCpu();
 
-            std::string errorColumns = ",,,,,,", motionColumns = ",,,,,,";
+            using bench::csvNumber;
+            std::vector<std::string> errorColumns(6), motionColumns(7);
             size_t nonFinite = 0;
             for (float v : last.inscatter) nonFinite += std::isfinite(v) ? 0 : 1;
             if (run.measureError) {
@@ -408,10 +421,9 @@ int runBench(Args& args) {
                                 {"max", e.max},
                                 {"fractionOver5pct", e.fractionOver},
                                 {"psnrDb", e.psnr}};
-                char buf[256];
-                std::snprintf(buf, sizeof buf, "%.6g,%.6g,%.6g,%.6g,%.6g,%.3f", e.meanRelative,
-                              e.rmse, e.p99, e.max, e.fractionOver, e.psnr);
-                errorColumns = buf;
+                errorColumns = {csvNumber("%.6g", e.meanRelative), csvNumber("%.6g", e.rmse),
+                                csvNumber("%.6g", e.p99),          csvNumber("%.6g", e.max),
+                                csvNumber("%.6g", e.fractionOver), csvNumber("%.3f", e.psnr)};
                 bench::writeStrip(stripPath(out, run, motionName, ".png").string(), run.size.width,
                                   run.size.height, ref, last.inscatter, scene.exposure);
                 if (motion) {
@@ -433,30 +445,45 @@ int runBench(Args& args) {
                                       {"referenceChange", f.referenceChange},
                                       {"meanRelativeError", f.meanRelativeError},
                                       {"nonFinite", f.nonFinite}};
-                    std::snprintf(buf, sizeof buf, "%s,%zu,%.6g,%.6g,%.6g,%.6g,%.6g",
-                                  motionName.c_str(), f.framePairs, f.meanExcess, f.p99Excess,
-                                  f.meanErrorChange, f.referenceChange, f.meanRelativeError);
-                    motionColumns = buf;
+                    motionColumns = {motionName,
+                                     std::to_string(f.framePairs),
+                                     csvNumber("%.6g", f.meanExcess),
+                                     csvNumber("%.6g", f.p99Excess),
+                                     csvNumber("%.6g", f.meanErrorChange),
+                                     csvNumber("%.6g", f.referenceChange),
+                                     csvNumber("%.6g", f.meanRelativeError)};
                     bench::writeFlickerStrip(
                         stripPath(out, run, motionName, "_flicker.png").string(), run.size.width,
                         run.size.height, flicker.referenceChangeMap(), flicker.excessMap());
                 }
             }
             row["nonFinite"] = nonFinite;
-            char line[1024];
-            std::snprintf(
-                line, sizeof line,
-                "%s,%s,%s,%s,%s,%u,%u,%u,%u,%u,%d,%u,%d,%.6f,%.6f,%.6f,%.6f,%.6f,%s,%zu,\"%s\",%d,%"
-                ".6f,%zu,%zu,%s",
-                row["scene"].get<std::string>().c_str(), run.label.c_str(), run.family.c_str(),
-                lightscatter::methodName(run.method), row["profile"].get<std::string>().c_str(),
-                run.size.width, run.size.height, used.epipolar.slices,
-                used.epipolar.samplesPerSlice, used.epipolar.initialSampleStep,
-                used.epipolar.minMaxTrees ? 1 : 0, sceneForRun.light.shadowMapSize, frames,
-                t.median, t.p10, t.p90, t.min, t.max, errorColumns.c_str(), nonFinite,
-                device.name().c_str(), device.isCpu() ? 1 : 0, cpu.median,
-                renderer->occluderCount(), scene.lightCount(), motionColumns.c_str());
-            csv << line << "\n" << std::flush;
+            std::vector<std::string> fields = {row["scene"].get<std::string>(),
+                                               run.label,
+                                               run.family,
+                                               lightscatter::methodName(run.method),
+                                               row["profile"].get<std::string>(),
+                                               std::to_string(run.size.width),
+                                               std::to_string(run.size.height),
+                                               std::to_string(used.epipolar.slices),
+                                               std::to_string(used.epipolar.samplesPerSlice),
+                                               std::to_string(used.epipolar.initialSampleStep),
+                                               used.epipolar.minMaxTrees ? "1" : "0",
+                                               std::to_string(sceneForRun.light.shadowMapSize),
+                                               std::to_string(frames),
+                                               csvNumber("%.6f", t.median),
+                                               csvNumber("%.6f", t.p10),
+                                               csvNumber("%.6f", t.p90),
+                                               csvNumber("%.6f", t.min),
+                                               csvNumber("%.6f", t.max)};
+            fields.insert(fields.end(), errorColumns.begin(), errorColumns.end());
+            for (const std::string& f :
+                 {std::to_string(nonFinite), device.name(), std::string(device.isCpu() ? "1" : "0"),
+                  csvNumber("%.6f", cpu.median), std::to_string(renderer->occluderCount()),
+                  std::to_string(scene.lightCount())})
+                fields.push_back(f);
+            fields.insert(fields.end(), motionColumns.begin(), motionColumns.end());
+            csv.append(bench::csvRow(fields));
             all.push_back(row);
             writeTextFile((out / "bench.json").string(),
                           nlohmann::json{{"config", config.name}, {"runs", all}}.dump(2) + "\n");

@@ -28,10 +28,7 @@ int runPattern(Args& args) {
     rg::demo::TestPatternRenderer renderer(device, size);
     rg::FrameTimings timings;
     const auto pixels = renderer.render(&timings);
-    outputs.write(
-        out,
-        [&](const std::string& tmp) { return encodePng(tmp, size.width, size.height, pixels); },
-        "PNG");
+    outputs.write(out, encodePng(size.width, size.height, pixels), "PNG");
     if (!report.empty())
         outputs.writeText(report,
                           rg::reportJson(renderer.graph(), renderer.compiled(), &timings).dump(2));

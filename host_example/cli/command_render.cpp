@@ -13,6 +13,7 @@
 #include "image_io.h"
 #include "output_set.h"
 #include "progress_line.h"
+#include "scene_inputs.h"
 #include "tonemap.h"
 
 namespace host {
@@ -99,12 +100,8 @@ int runRender(Args& args) {
 
     // Every output is checked, and a temporary made beside it, before anything renders.
     OutputSet outputs;
-    outputs.addInput("the scene file", scenePath);
+    addSceneInputs(outputs, scenePath, scene, mesh, "the scene");
     if (!o.settingsPath.empty()) outputs.addInput("the settings file", o.settingsPath);
-    for (const auto& f : mesh.files) outputs.addInput("a file the scene reads", f);
-    for (size_t i = 0; i < scene.lightCount(); ++i)
-        if (scene.lightAt(i).cookie)
-            outputs.addInput("a file the scene reads", scene.lightAt(i).cookie->name);
     outputs.add("--out", out);
     if (!inscatter.empty()) outputs.add("--inscatter", inscatter);
     if (!timings.empty()) outputs.add("--timings", timings);
@@ -126,25 +123,12 @@ int runRender(Args& args) {
     Activity writing("writing " + out);
     if (endsWith(out, ".png")) {
         const std::vector<uint8_t> pixels = toneMap(frame.color, scene.exposure);
-        outputs.write(
-            out,
-            [&](const std::string& tmp) { return encodePng(tmp, size.width, size.height, pixels); },
-            "PNG");
+        outputs.write(out, encodePng(size.width, size.height, pixels), "PNG");
     } else {
-        outputs.write(
-            out,
-            [&](const std::string& tmp) {
-                return encodeExr(tmp, size.width, size.height, frame.color);
-            },
-            "OpenEXR");
+        outputs.write(out, encodeExr(size.width, size.height, frame.color), "OpenEXR");
     }
     if (!inscatter.empty())
-        outputs.write(
-            inscatter,
-            [&](const std::string& tmp) {
-                return encodeExr(tmp, size.width, size.height, frame.inscatter);
-            },
-            "OpenEXR");
+        outputs.write(inscatter, encodeExr(size.width, size.height, frame.inscatter), "OpenEXR");
     if (!timings.empty())
         outputs.writeText(timings, timingsJson(device, o, size, frame, frames).dump(2) + "\n");
     outputs.commit();

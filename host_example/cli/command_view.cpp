@@ -36,9 +36,11 @@
 #include "rendergraph/pipeline.h"
 #include "rendergraph/vk_error.h"
 #include "scene/medium_json.h"
+#include "scene_inputs.h"
 #include "settings_fields.h"
 #include "settings_panel.h"
 #include "swapchain.h"
+#include "temp_files.h"
 #include "tonemap_frag.h"
 #include "ui_overlay.h"
 
@@ -362,17 +364,27 @@ int runView(Args& args) {
     // The screenshot and the memory log are checked before the window opens and written together
     // when the window closes, like render's outputs: all or nothing.
     OutputSet outputs;
-    outputs.addInput("the scene file", scenePath);
+    addSceneInputs(outputs, scenePath, scene, mesh, "the scene");
     if (!o.settingsPath.empty()) outputs.addInput("the settings file", o.settingsPath);
-    for (const auto& f : mesh.files) outputs.addInput("a file the scene reads", f);
-    for (size_t i = 0; i < scene.lightCount(); ++i)
-        if (scene.lightAt(i).cookie)
-            outputs.addInput("a file the scene reads", scene.lightAt(i).cookie->name);
     if (!scriptPath.empty()) outputs.addInput("the panel script", scriptPath);
     if (!screenshotPath.empty()) outputs.add("--screenshot", screenshotPath);
     if (!memoryLogPath.empty()) outputs.add("--memory-log", memoryLogPath);
     if (!reportLogPath.empty()) outputs.add("--report-log", reportLogPath);
     const PanelScript script = scriptPath.empty() ? PanelScript() : PanelScript(scriptPath);
+    // A script's saves follow the outputs' rules, checked now: a save that could not happen (after
+    // the last frame, into a missing folder, onto a directory) or that would replace an input or
+    // another output used to pass without a word, or replace the scene.
+    for (const auto& [step, path] : script.saves()) {
+        const std::string what =
+            "--panel-script " + scriptPath + ": step " + std::to_string(step) + " saves";
+        if (static_cast<long>(step) >= frameLimit)
+            throw std::runtime_error(what + " " + path + ", but --frames " +
+                                     std::to_string(frameLimit) + " ends before step " +
+                                     std::to_string(step) + " is made");
+        outputs.check(what, path);
+        checkSettingsSaveTarget(path);
+        TempFile probe(path, what);  // its folder exists and takes a file
+    }
     nlohmann::json reportLog = nlohmann::json::array();
     std::string memoryLog = "frame,rss_kib,device_bytes\n";
 
@@ -390,6 +402,8 @@ int runView(Args& args) {
     std::unique_ptr<UiOverlay> ui;
     if (!noPanel) ui = std::make_unique<UiOverlay>(device, window.handle, swapchain);
     SettingsPanel panel;
+    panel.setSaveCheck(
+        [&outputs](const std::string& path) { outputs.check("save settings", path); });
     bool panelVisible = true;
     std::unique_ptr<Display> display;
     const auto displayPipeline = std::make_shared<rg::Pipeline>();
@@ -685,12 +699,7 @@ int runView(Args& args) {
             if (!screenshotPath.empty()) {
                 const VkExtent2D e = swapchain.extent();
                 const std::vector<uint8_t> pixels = display->screenshot(swapchain.format());
-                outputs.write(
-                    screenshotPath,
-                    [&](const std::string& tmp) {
-                        return encodePng(tmp, e.width, e.height, pixels);
-                    },
-                    "PNG");
+                outputs.write(screenshotPath, encodePng(e.width, e.height, pixels), "PNG");
                 screenshotNote = " (" + std::to_string(e.width) + "x" + std::to_string(e.height) +
                                  ", after " + std::to_string(frame) + " frames)";
             }

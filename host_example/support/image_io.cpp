@@ -13,40 +13,78 @@
 namespace host {
 namespace {
 
-void checkPixels(const std::string& path, size_t have, uint32_t width, uint32_t height) {
+void checkPixels(size_t have, uint32_t width, uint32_t height) {
     if (have != size_t{4} * width * height)
-        throw std::runtime_error(path + ": pixel buffer does not match " + std::to_string(width) +
-                                 "x" + std::to_string(height));
+        throw std::logic_error("pixel buffer does not match " + std::to_string(width) + "x" +
+                               std::to_string(height));
+}
+
+void appendBytes(void* context, void* data, int size) {
+    auto* bytes = static_cast<std::vector<uint8_t>*>(context);
+    const auto* at = static_cast<const uint8_t*>(data);
+    bytes->insert(bytes->end(), at, at + size);
 }
 
 }  // namespace
 
-bool encodePng(const std::string& path, uint32_t width, uint32_t height,
-               const std::vector<uint8_t>& rgba) {
-    checkPixels(path, rgba.size(), width, height);
-    return stbi_write_png(path.c_str(), static_cast<int>(width), static_cast<int>(height), 4,
-                          rgba.data(), static_cast<int>(width * 4)) != 0;
+std::vector<uint8_t> encodePng(uint32_t width, uint32_t height, const std::vector<uint8_t>& rgba) {
+    checkPixels(rgba.size(), width, height);
+    std::vector<uint8_t> bytes;
+    if (!stbi_write_png_to_func(appendBytes, &bytes, static_cast<int>(width),
+                                static_cast<int>(height), 4, rgba.data(),
+                                static_cast<int>(width * 4)))
+        throw std::runtime_error("cannot encode a " + std::to_string(width) + "x" +
+                                 std::to_string(height) + " PNG");
+    return bytes;
 }
 
-bool encodeExr(const std::string& path, uint32_t width, uint32_t height,
-               const std::vector<float>& rgba) {
-    checkPixels(path, rgba.size(), width, height);
-    std::vector<float> rgb(size_t{3} * width * height);
-    for (size_t i = 0; i < size_t{width} * height; ++i)
-        for (size_t c = 0; c < 3; ++c) rgb[i * 3 + c] = rgba[i * 4 + c];
+std::vector<uint8_t> encodeExr(uint32_t width, uint32_t height, const std::vector<float>& rgba) {
+    checkPixels(rgba.size(), width, height);
+    // What tinyexr's SaveEXR does, to memory: its own file writing leaves fclose() unchecked, so a
+    // disk that fills there gave a truncated reference that the benchmark's cache read back.
+    const size_t pixels = size_t{width} * height;
+    std::vector<float> channel[3];  // B, G, R: the order OpenEXR readers expect
+    for (auto& c : channel) c.resize(pixels);
+    for (size_t i = 0; i < pixels; ++i)
+        for (size_t c = 0; c < 3; ++c) channel[2 - c][i] = rgba[i * 4 + c];
+    float* planes[3] = {channel[0].data(), channel[1].data(), channel[2].data()};
+    EXRImage image;
+    InitEXRImage(&image);
+    image.num_channels = 3;
+    image.images = reinterpret_cast<unsigned char**>(planes);
+    image.width = static_cast<int>(width);
+    image.height = static_cast<int>(height);
+    EXRHeader header;
+    InitEXRHeader(&header);
+    header.compression_type =
+        width < 16 && height < 16 ? TINYEXR_COMPRESSIONTYPE_NONE : TINYEXR_COMPRESSIONTYPE_ZIP;
+    EXRChannelInfo channels[3] = {};
+    for (int c = 0; c < 3; ++c) channels[c].name[0] = "BGR"[c];
+    int types[3] = {TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT};
+    header.num_channels = 3;
+    header.channels = channels;
+    header.pixel_types = types;
+    header.requested_pixel_types = types;
+    unsigned char* memory = nullptr;
     const char* err = nullptr;
-    const int r = SaveEXR(rgb.data(), static_cast<int>(width), static_cast<int>(height), 3,
-                          /*save_as_fp16=*/0, path.c_str(), &err);
+    const size_t size = SaveEXRImageToMemory(&image, &header, &memory, &err);
+    const std::string why = err ? err : "unknown error";
     if (err) FreeEXRErrorMessage(err);
-    return r == TINYEXR_SUCCESS;
+    if (size == 0 || !memory) {
+        std::free(memory);
+        throw std::runtime_error("cannot encode a " + std::to_string(width) + "x" +
+                                 std::to_string(height) + " OpenEXR: " + why);
+    }
+    std::vector<uint8_t> bytes(memory, memory + size);
+    std::free(memory);
+    return bytes;
 }
 
 void writePng(const std::string& path, uint32_t width, uint32_t height,
               const std::vector<uint8_t>& rgba) {
     OutputSet out;
     out.add("output", path);
-    out.write(
-        path, [&](const std::string& tmp) { return encodePng(tmp, width, height, rgba); }, "PNG");
+    out.write(path, encodePng(width, height, rgba), "PNG");
     out.commit();
 }
 
@@ -54,15 +92,13 @@ void writeExr(const std::string& path, uint32_t width, uint32_t height,
               const std::vector<float>& rgba) {
     OutputSet out;
     out.add("output", path);
-    out.write(
-        path, [&](const std::string& tmp) { return encodeExr(tmp, width, height, rgba); },
-        "OpenEXR");
+    out.write(path, encodeExr(width, height, rgba), "OpenEXR");
     out.commit();
 }
 
-void writeTextFile(const std::string& path, const std::string& text) {
+void writeTextFile(const std::string& path, const std::string& text, const std::string& option) {
     OutputSet out;
-    out.add("output", path);
+    out.add(option, path);
     out.writeText(path, text);
     out.commit();
 }

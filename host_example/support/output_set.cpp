@@ -4,9 +4,9 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <stdexcept>
 
+#include "file_bytes.h"
 #include "referenced_files.h"
 
 namespace host {
@@ -71,26 +71,20 @@ OutputSet::Output& OutputSet::find(const std::string& path) {
     throw std::logic_error(path + ": written without being added to the outputs");
 }
 
-void OutputSet::write(const std::string& path, const std::function<bool(const std::string&)>& write,
+void OutputSet::write(const std::string& path, const std::vector<uint8_t>& bytes,
                       const std::string& what) {
     Output& o = find(path);
     o.temp = std::make_unique<TempFile>(path, o.option);
-    if (!write(o.temp->path()))
-        throw std::runtime_error(o.option + " " + path + ": cannot write the " + what +
-                                 " (is the disk full?)");
+    const std::string why = writeWholeFile(o.temp->path(), bytes.data(), bytes.size());
+    if (!why.empty()) {
+        o.temp.reset();  // nothing half-written is left behind
+        throw std::runtime_error(o.option + " " + path + ": cannot write the " + what + ": " + why);
+    }
     o.written = true;
 }
 
 void OutputSet::writeText(const std::string& path, const std::string& text) {
-    write(
-        path,
-        [&](const std::string& tmp) {
-            std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-            f << text;
-            f.close();
-            return !f.fail();
-        },
-        "file");
+    write(path, std::vector<uint8_t>(text.begin(), text.end()), "file");
 }
 
 void OutputSet::commit() {

@@ -4,7 +4,7 @@
 // and its folder writable (a temporary is created there and removed). The results are written to
 // temporaries beside their targets and moved into place only when every one was written; any
 // failure, or a signal, removes the temporaries and leaves the files that were there untouched.
-#include <functional>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -26,10 +26,9 @@ class OutputSet {
     // write() and moved into place by commit().
     void add(const std::string& option, const std::string& path);
 
-    // Writes an added output through `write(temporaryPath)`, which returns false on failure; throws
-    // naming the option, the file and `what` ("PNG").
-    void write(const std::string& path, const std::function<bool(const std::string&)>& write,
-               const std::string& what);
+    // Writes an added output's bytes to its temporary; throws naming the option, the file, `what`
+    // ("PNG") and why (a full disk: every byte is checked to reach it), removing the temporary.
+    void write(const std::string& path, const std::vector<uint8_t>& bytes, const std::string& what);
     void writeText(const std::string& path, const std::string& text);
     // Moves every output into place; call once all were written.
     void commit();

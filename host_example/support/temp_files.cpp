@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <mutex>
 #include <stdexcept>
+#include <vector>
 
 namespace host {
 namespace {
@@ -51,14 +52,33 @@ extern "C" void onFatalSignal(int sig) {
     errno = saved;
 }
 
+// Every signal whose default action ends the process and that comes from outside it (a user, a
+// shell, a closed pipe, a timer, a resource limit). The signals a fault raises in the thread that
+// made it (SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGSYS, SIGTRAP) are left alone: forwarded from another
+// thread, the handler would return into the fault.
+std::vector<int> endingSignals() {
+    std::vector<int> list = {SIGHUP,    SIGINT,  SIGQUIT, SIGPIPE, SIGALRM,
+                             SIGTERM,   SIGUSR1, SIGUSR2, SIGIO,   SIGPROF,
+                             SIGVTALRM, SIGXCPU, SIGXFSZ, SIGPWR,  SIGSTKFLT};
+    for (int sig = SIGRTMIN; sig <= SIGRTMAX; ++sig) list.push_back(sig);
+    return list;
+}
+
+const std::vector<int>& caughtSignals() {
+    static const std::vector<int> caught = endingSignals();
+    return caught;
+}
+
 void installHandlers() {
     static std::once_flag once;
     std::call_once(once, [] {
         writer = ::pthread_self();
-        for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
+        for (int sig : caughtSignals()) {
             struct sigaction current {};
-            ::sigaction(sig, nullptr, &current);
-            if (current.sa_handler == SIG_IGN) continue;  // e.g. nohup: keep ignoring it
+            if (::sigaction(sig, nullptr, &current) != 0) continue;
+            // Ignored (nohup, a background job's SIGINT and SIGQUIT) stays ignored; a handler
+            // someone else installed (a sanitizer, a profiler) stays theirs.
+            if (current.sa_handler != SIG_DFL) continue;
             struct sigaction action {};
             action.sa_handler = onFatalSignal;
             sigemptyset(&action.sa_mask);
@@ -96,7 +116,7 @@ TempFile::TempFile(const std::string& target, const std::string& option)
     // handler runs on this thread only).
     sigset_t fatal, previous;
     sigemptyset(&fatal);
-    for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&fatal, sig);
+    for (int sig : caughtSignals()) sigaddset(&fatal, sig);
     ::pthread_sigmask(SIG_BLOCK, &fatal, &previous);
     // Not mkstemp: its 0600 would become the finished file's mode; 0666 leaves it to the umask.
     static std::atomic<unsigned> counter{0};

@@ -1,6 +1,8 @@
 #pragma once
-// Temporary files beside the outputs they become. While one exists, SIGINT, SIGTERM and SIGHUP
-// remove it before the program dies of the signal, so an interrupted write leaves nothing behind.
+// Temporary files beside the outputs they become. While one exists, every signal that would end the
+// program (SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGUSR1, SIGALRM, SIGXFSZ, ...; not the
+// faults) removes it before the program dies of that signal, so an interrupted write leaves nothing
+// behind. A signal ignored when the program started stays ignored.
 // They are made and written by one thread (the main thread): the handler does its work there.
 #include <string>
 

@@ -90,6 +90,13 @@ PanelScript::PanelScript(const std::string& path) : path_(path) {
     }
 }
 
+std::vector<std::pair<size_t, std::string>> PanelScript::saves() const {
+    std::vector<std::pair<size_t, std::string>> list;
+    for (size_t k = 0; k < steps_.size(); ++k)
+        if (steps_[k].contains("save")) list.emplace_back(k, steps_[k]["save"].get<std::string>());
+    return list;
+}
+
 void PanelScript::apply(size_t k, SettingsPanel& panel, RenderOptions& o, SceneDesc& scene) const {
     if (k >= steps_.size()) return;
     const nlohmann::json& step = steps_[k];

@@ -8,6 +8,7 @@
 // (the fields it gives replace the scene's; "fogVolumes" replaces the whole list).
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "settings_panel.h"
@@ -21,6 +22,8 @@ class PanelScript {
     // kind, throw one line naming the file, the step and the field.
     explicit PanelScript(const std::string& path);
     size_t size() const { return steps_.size(); }
+    // The steps that save, and the file each names: the viewer checks them before the first frame.
+    std::vector<std::pair<size_t, std::string>> saves() const;
     // Makes step k (if there is one) through `panel`.
     void apply(size_t k, SettingsPanel& panel, RenderOptions& o, SceneDesc& scene) const;
 

@@ -8,9 +8,13 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <filesystem>
+#include <stdexcept>
 #include <utility>
 #include <vector>
+
+#include "image_io.h"
+#include "scene/json_input.h"
 
 namespace host {
 namespace {
@@ -105,20 +109,27 @@ lightscatter::Settings SettingsPanel::effective(const RenderOptions& o) {
     return lightscatter::profileSettings(o.profile, o.custom);
 }
 
+void checkSettingsSaveTarget(const std::string& path) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) return;  // absent, or refused by the write
+    bool settings = false;
+    try {
+        const nlohmann::json j = readJsonFile(path, "settings file", 1024 * 1024);
+        settings = j.is_object();
+        for (const auto& item : j.items()) settings = settings && findSettingField(item.key());
+    } catch (const std::exception&) {
+        settings = false;
+    }
+    if (!settings)
+        throw std::runtime_error("save settings " + path +
+                                 ": exists and is not a settings file; saving would replace it "
+                                 "(give another name)");
+}
+
 std::string SettingsPanel::save(const RenderOptions& o, const std::string& path) const {
-    const std::string tmp = path + ".part";
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        out << settingsFileText(effective(o));
-        if (!out.good()) {
-            std::remove(tmp.c_str());
-            return "cannot write " + path;
-        }
-    }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        std::remove(tmp.c_str());
-        return "cannot write " + path;
-    }
+    if (saveCheck_) saveCheck_(path);
+    checkSettingsSaveTarget(path);
+    writeTextFile(path, settingsFileText(effective(o)), "save settings");
     return "wrote " + path + ": lightscatter view SCENE --profile custom --settings " + path;
 }
 
@@ -264,7 +275,13 @@ void SettingsPanel::drawSettings(RenderOptions& o) {
         ImGui::TreePop();
     }
     ImGui::InputText("file", savePath_.data(), savePath_.size());
-    if (ImGui::Button("save settings")) saved_ = save(o, savePath_.data());
+    if (ImGui::Button("save settings")) {
+        try {
+            saved_ = save(o, savePath_.data());
+        } catch (const std::runtime_error& e) {
+            saved_ = e.what();  // refused or failed: nothing was written
+        }
+    }
     if (!saved_.empty()) ImGui::TextWrapped("%s", saved_.c_str());
 }
 

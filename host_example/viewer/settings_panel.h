@@ -6,6 +6,7 @@
 // (--panel-script) call alike; what the plugin refuses is shown in its own words and the last frame
 // it accepted keeps running (the viewer reverts the edit).
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,11 @@ struct PanelStatus {
     uint64_t deviceBytes = 0;                           // the runtime's counter
     std::string note;                                   // the viewer's word (a method's limits)
 };
+
+// Throws when `path` holds something other than a settings file: a save replaces only its own kind,
+// so that a mistyped name does not lose a scene the output checks do not know of, or a user's
+// notes.
+void checkSettingsSaveTarget(const std::string& path);
 
 class SettingsPanel {
   public:
@@ -44,8 +50,15 @@ class SettingsPanel {
 
     // The settings a frame with these options runs with: the profile's sizes over `custom`.
     static lightscatter::Settings effective(const RenderOptions& o);
-    // Writes them to `path` as a --settings file (every field); returns the line to show.
+    // Writes them to `path` as a --settings file (every field), through a temporary beside it that
+    // becomes the file only when whole; returns the line to show. Throws, writing nothing, when
+    // the check given to setSaveCheck refuses the path or the write fails.
     std::string save(const RenderOptions& o, const std::string& path) const;
+    // The rules every output of the command follows (output_set.h): a save must not replace the
+    // scene, a file it reads, the settings file or another output. Throws naming the rule.
+    void setSaveCheck(std::function<void(const std::string&)> check) {
+        saveCheck_ = std::move(check);
+    }
 
     // The plugin refused the last edit (its message), or accepted the frame.
     void refused(const std::string& message) { message_ = message; }
@@ -78,6 +91,7 @@ class SettingsPanel {
     std::string message_;               // the plugin's refusal, shown until the next accepted edit
     std::array<char, 512> savePath_{};  // the "file" field
     std::string saved_;                 // the line "save settings" gave
+    std::function<void(const std::string&)> saveCheck_;
 };
 
 }  // namespace host

@@ -6,8 +6,11 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
 #include "cli_runner.h"
+#include "host_test_helpers.h"
 
 using cli_test::expectFailure;
 using cli_test::run;
@@ -310,4 +313,61 @@ TEST(CliBench, AMotionRowCarriesItsFlickerAndARerunReusesTheReferences) {
     expectFailure(run("bench --config still.json --out still"),
                   "still.json: motion.what[] = \"wind\": must be \"light\" or \"camera\"");
     EXPECT_FALSE(cli_test::exists("still/bench.csv"));
+}
+
+namespace {
+
+// RFC 4180's grammar, read back: fields split at commas outside quotes, rows at line ends outside
+// quotes, a doubled quote inside a quoted field one quote.
+std::vector<std::vector<std::string>> parseCsv(const std::string& text) {
+    std::vector<std::vector<std::string>> rows(1, std::vector<std::string>(1));
+    bool quoted = false;
+    for (size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (quoted) {
+            if (c == '"' && i + 1 < text.size() && text[i + 1] == '"') {
+                rows.back().back() += '"';
+                ++i;
+            } else if (c == '"') {
+                quoted = false;
+            } else {
+                rows.back().back() += c;
+            }
+        } else if (c == '"') {
+            quoted = true;
+        } else if (c == ',') {
+            rows.back().emplace_back();
+        } else if (c == '\n') {
+            rows.emplace_back(1);
+        } else {
+            rows.back().back() += c;
+        }
+    }
+    if (rows.back().size() == 1 && rows.back()[0].empty()) rows.pop_back();
+    return rows;
+}
+
+}  // namespace
+
+// Labels with a comma, a quote, a line break, or 2000 characters keep every row at the header's
+// column count and read back as given (issue #42: there was no quoting, and a 1024-byte buffer cut
+// rows); a run without a reference has as many columns as one with.
+TEST(CliBench, CsvRowsKeepTheirColumnsWhateverTheLabel) {
+    const std::string longLabel(2000, 'x');
+    writeFile("labels.json", R"({"frames": 1, "warmup": 0, "size": "16x9", "measureError": false,
+        "scenes": ["scenes/engine_spot.json"], "methods": [],
+        "configurations": [{"label": "a,b"}, {"label": "say \"hi\""}, {"label": "two\nlines"},
+                           {"label": ")" +
+                                 longLabel + R"("}]})");
+    const auto r = run("bench --config labels.json --out labels");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    const auto rows = parseCsv(host_test::readAll(cli_test::path("labels/bench.csv")));
+    ASSERT_EQ(rows.size(), 5u);
+    for (const auto& row : rows) EXPECT_EQ(row.size(), rows[0].size()) << row[1];
+    ASSERT_GT(rows[0].size(), 2u);
+    EXPECT_EQ(rows[0][1], "label");
+    EXPECT_EQ(rows[1][1], "a,b");
+    EXPECT_EQ(rows[2][1], "say \"hi\"");
+    EXPECT_EQ(rows[3][1], "two\nlines");
+    EXPECT_EQ(rows[4][1], longLabel);
 }

@@ -2,6 +2,8 @@
 // written, unwritable folders found at once, and a failure leaving the earlier files as they were
 // with no temporary behind.
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -101,9 +103,23 @@ TEST_F(HostOutputSet, AFailedWriteLeavesTheEarlierFilesAsTheyWere) {
         set.add("--out", path("a.png"));
         set.add("--timings", path("t.json"));
         set.writeText(path("a.png"), "new image");
-        EXPECT_THROW(set.write(
-                         path("t.json"), [](const std::string&) { return false; }, "JSON"),
-                     std::runtime_error);
+        // A disk that fills after 16 bytes: the write stops short with EFBIG (SIGXFSZ ignored).
+        const std::string bytes(4096, 'x');
+        const auto previous = ::signal(SIGXFSZ, SIG_IGN);
+        struct rlimit limit {};
+        ::getrlimit(RLIMIT_FSIZE, &limit);
+        const struct rlimit small { 16, limit.rlim_max };
+        ::setrlimit(RLIMIT_FSIZE, &small);
+        std::string message;
+        try {
+            set.write(path("t.json"), std::vector<uint8_t>(bytes.begin(), bytes.end()), "JSON");
+        } catch (const std::runtime_error& e) {
+            message = e.what();
+        }
+        ::setrlimit(RLIMIT_FSIZE, &limit);
+        ::signal(SIGXFSZ, previous);
+        EXPECT_EQ(message,
+                  "--timings " + path("t.json") + ": cannot write the JSON: File too large");
     }  // dropped without commit, as when the command throws
     EXPECT_EQ(read("a.png"), "old image");
     EXPECT_EQ(read("t.json"), "old timings");
