@@ -33,28 +33,31 @@ std::vector<glm::vec3> viewFrustumCorners(const CameraParams& camera, float zNea
 }
 
 // World-space corners of the light's volume: a spot's pyramid (apex and far face, with the range
-// or, when unbounded, the reach of the view as its depth), or the shadow map's box.
-std::vector<glm::vec3> lightVolumeCorners(const LightParams& light, float reach) {
-    std::vector<glm::vec3> c;
+// or, when unbounded, the reach of the view as its depth), or the shadow map's box. In double: far
+// from the origin a float corner is off by its last bit (6 cm at 1e6 m), and a box placed that
+// far off missed part of a shaft (issue #42).
+std::vector<glm::dvec3> lightVolumeCorners(const LightParams& light, float reach) {
+    std::vector<glm::dvec3> c;
     if (light.kind == LightType::Spot) {
-        const glm::vec3 a = light.direction;
-        const glm::vec3 helper = std::fabs(a.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
-        const glm::vec3 r = glm::normalize(glm::cross(a, helper)), u = glm::cross(r, a);
-        const float cosA = light.cosOuter;
-        const float tanA = std::sqrt(std::max(1.0f - cosA * cosA, 0.0f)) / cosA;
-        const float depth = std::min(light.range, reach);
-        c.push_back(light.position);
-        for (float sx : {-1.0f, 1.0f})
-            for (float sy : {-1.0f, 1.0f})
-                c.push_back(light.position + depth * (a + tanA * (sx * r + sy * u)));
+        const glm::dvec3 a = light.direction;
+        const glm::dvec3 helper = std::fabs(a.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
+        const glm::dvec3 r = glm::normalize(glm::cross(a, helper)), u = glm::cross(r, a);
+        const double cosA = light.cosOuter;
+        const double tanA = std::sqrt(std::max(1.0 - cosA * cosA, 0.0)) / cosA;
+        const double depth = std::min(light.range, reach);
+        const glm::dvec3 apex = light.position;
+        c.push_back(apex);
+        for (double sx : {-1.0, 1.0})
+            for (double sy : {-1.0, 1.0})
+                c.push_back(apex + depth * (a + tanA * (sx * r + sy * u)));
         return c;
     }
-    const glm::mat4 inv = glm::inverse(light.shadowViewProj);
-    for (float x : {-1.0f, 1.0f})
-        for (float y : {-1.0f, 1.0f})
-            for (float z : {0.0f, 1.0f}) {
-                const glm::vec4 p = inv * glm::vec4(x, y, z, 1.0f);
-                c.emplace_back(glm::vec3(p) / p.w);
+    const glm::dmat4 inv = glm::inverse(glm::dmat4(light.shadowViewProj));
+    for (double x : {-1.0, 1.0})
+        for (double y : {-1.0, 1.0})
+            for (double z : {0.0, 1.0}) {
+                const glm::dvec4 p = inv * glm::dvec4(x, y, z, 1.0);
+                c.emplace_back(glm::dvec3(p) / p.w);
             }
     return c;
 }
@@ -158,11 +161,12 @@ PlanePlacement placePlanes(const CameraParams& camera, const LightParams& light,
                          (light.kind == LightType::Directional && light.shadowMapSize > 0);
     float boxFront = zNear, boxBack = zFar;  // view depths (positive) the planes span
     if (bounded) {
-        const glm::vec3 cameraPos = glm::vec3(glm::inverse(camera.view)[3]);
+        const glm::dmat4 view(camera.view);
+        const glm::vec3 cameraPos = glm::vec3(glm::inverse(view)[3]);
         glm::vec3 llo(1e30f), lhi(-1e30f);
-        for (const glm::vec3& w :
+        for (const glm::dvec3& w :
              lightVolumeCorners(light, glm::length(light.position - cameraPos) + reach)) {
-            const glm::vec3 p = glm::vec3(camera.view * glm::vec4(w, 1.0f));
+            const glm::vec3 p = glm::vec3(view * glm::dvec4(w, 1.0));
             llo = glm::min(llo, p);
             lhi = glm::max(lhi, p);
         }

@@ -21,7 +21,7 @@ struct FrameConstants {
 // Only vec4 and mat4 members: std140 packs them as C++ does, so the sizes agree exactly when no
 // member has padding of its own.
 static_assert(sizeof(glm::vec4) == 16 && alignof(glm::vec4) <= 16 && sizeof(glm::mat4) == 64);
-static_assert(sizeof(FrameConstants) == 3 * 64 + 19 * 16 + 6 * 64 + LS_MAX_FOG_VOLUMES * (64 + 4),
+static_assert(sizeof(FrameConstants) == 4 * 64 + 19 * 16 + 6 * 64 + LS_MAX_FOG_VOLUMES * (64 + 4),
               "std140 layout of frame.glsl");
 
 }  // namespace ls

@@ -87,6 +87,7 @@ FrameConstants makeFrameConstants(const CameraParams& camera, const LightParams&
     const VkExtent2D screen = params.screen;
     FrameConstants f{};
     f.viewProj = camera.projection * camera.view;
+    f.viewProjFromCamera = camera.projection * glm::mat4(glm::mat3(camera.view));
     f.rayBasis = rayBasisOf(camera.projection, camera.view);
     f.lightViewProj = light.shadowViewProj;
     for (int i = 0; i < 6; ++i) f.cubeFaceViewProj[i] = light.cubeFaceViewProj[i];

@@ -15,7 +15,7 @@ layout(binding = LS_BINDING_POINT_TABLE) uniform sampler2D pointTable;
 #include "simplified.glsl"
 layout(binding = LS_BINDING_DEPTH) uniform sampler2D depthBuffer;  // the engine's depth
 
-layout(location = 0) in vec3 worldPos;
+layout(location = 0) in vec3 fromCamera;
 layout(location = 1) flat in int plane;
 layout(location = 0) out vec4 outLin;
 
@@ -24,7 +24,7 @@ void main() {
     vec3 C = frame.cameraPos.xyz;
     vec3 v = pixelRayDirection(pixel);
     float S = rayLength(pixelCameraZ(depthBuffer, pixel), v);
-    float z = min(dot(worldPos - C, v), S);
+    float z = min(dot(fromCamera, v), S);
     float t0, t1;
     lightInterval(C, v, S, t0, t1);
     vec3 E = vec3(0.0);

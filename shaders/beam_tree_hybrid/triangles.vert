@@ -12,11 +12,13 @@ layout(std430, binding = LS_BINDING_BEAM_TRIANGLES) readonly buffer Triangles { 
 // pixel behind it; a depth of half the clip range keeps them, and the side planes still cut away
 // whatever lies behind the camera.
 layout(constant_id = LS_SPEC_UNCLIPPED_DEPTH) const bool kUnclippedDepth = false;
-layout(location = 0) out vec3 worldPos;
+// From the camera, as planes.vert gives its points to planes.frag, which draws these triangles too.
+layout(location = 0) out vec3 fromCamera;
 layout(location = 1) flat out int plane;
 
 void main() {
-    worldPos = points[gl_VertexIndex].xyz;
+    vec3 worldPos = points[gl_VertexIndex].xyz;
+    fromCamera = worldPos - frame.cameraPos.xyz;
     plane = 0;
     gl_Position = frame.viewProj * vec4(worldPos, 1.0);
     if (kUnclippedDepth) gl_Position.z = 0.5 * gl_Position.w;

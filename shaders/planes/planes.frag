@@ -48,7 +48,7 @@ layout(constant_id = LS_SPEC_PLANES_CHANNELS) const bool kChannels = false;
 // (stochastic rounding), so that shares below half a step add up on average instead of vanishing.
 layout(constant_id = LS_SPEC_PLANES_DITHER) const bool kDither = false;
 
-layout(location = 0) in vec3 worldPos;
+layout(location = 0) in vec3 fromCamera;  // the plane's point from the camera (planes.vert)
 layout(location = 1) flat in int plane;
 layout(location = 0) out vec4 outShare;
 
@@ -110,10 +110,10 @@ bool slabShare(vec3 C, vec3 v, float s, float ds, out vec3 share) {
 
 void main() {
     vec3 C = frame.cameraPos.xyz;
-    vec3 d = worldPos - C;
-    float s = length(d);
+    float s = length(fromCamera);
     if (s > placement.params.w) discard;  // past the sky distance
-    vec3 v = d / s;
+    vec3 v = fromCamera / s;
+    vec3 worldPos = C + fromCamera;
     float ds = placement.boxMin.w / max(dot(v, frame.cameraForward.xyz), 1e-4);
     vec3 share;
     if (LS_SLAB != 0 && kMedia == 0 && !kSimplifiedModel && kLightType != LIGHT_DIRECTIONAL &&

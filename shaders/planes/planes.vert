@@ -7,21 +7,23 @@
 #include "frame.glsl"
 #include "plane_push.glsl"
 
-layout(location = 0) out vec3 worldPos;
+// The point from the camera, in world axes: far from the origin a world position loses what the
+// planes' spacing and a spot's cone need (frame.viewProjFromCamera).
+layout(location = 0) out vec3 fromCamera;
 layout(location = 1) flat out int plane;
 out gl_PerVertex {
     vec4 gl_Position;
     float gl_ClipDistance[5];
 };
 
-// Signed distances to the four sides of the pyramid around the spot's cone and to its far end.
-void spotClipDistances(vec3 P) {
+// Signed distances to the four sides of the pyramid around the spot's cone and to its far end, for
+// the point at D from the light.
+void spotClipDistances(vec3 D) {
     vec3 a = frame.lightDir.xyz;
     vec3 helper = abs(a.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
     vec3 r = normalize(cross(a, helper)), u = cross(r, a);
     float cosA = frame.lightDir.w;
     float tanA = sqrt(max(1.0 - cosA * cosA, 0.0)) / cosA;
-    vec3 D = P - frame.lightPos.xyz;
     float along = dot(D, a);
     gl_ClipDistance[0] = tanA * along - dot(D, r);
     gl_ClipDistance[1] = tanA * along + dot(D, r);
@@ -37,10 +39,11 @@ void main() {
     plane = gl_InstanceIndex;
     float z = placement.boxMin.z + (float(gl_InstanceIndex) + 0.5) * placement.boxMin.w;
     vec3 viewPos = vec3(mix(placement.boxMin.xy, placement.boxMax.xy, c), -z);
-    worldPos = (placement.viewToWorld * vec4(viewPos, 1.0)).xyz;
-    gl_Position = frame.viewProj * vec4(worldPos, 1.0);
+    fromCamera = mat3(placement.viewToWorld) * viewPos;
+    gl_Position = frame.viewProjFromCamera * vec4(fromCamera, 1.0);
     if (kLightType == LIGHT_SPOT) {
-        spotClipDistances(worldPos);
+        // Camera minus light first: two nearby large numbers subtract exactly.
+        spotClipDistances((frame.cameraPos.xyz - frame.lightPos.xyz) + fromCamera);
     } else {
         for (int k = 0; k < 5; ++k) gl_ClipDistance[k] = 1.0;
     }

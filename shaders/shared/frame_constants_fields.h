@@ -4,6 +4,10 @@
 // this. Only mat4 and vec4 members, in this order: std140 then places every member where the C++
 // struct does, and frame_constants.h checks the size of the whole.
 LS_MAT4 viewProj;  // world -> camera clip
+// World offsets from the camera -> camera clip (the projection times the view's rotation): a pass
+// that rasterises geometry it places around the camera (planes) adds no world translation that
+// cancels in float far from the origin (at 1e6 m, steps of 6 cm).
+LS_MAT4 viewProjFromCamera;
 // The ray through NDC (x, y) points along x col0 + y col1 + col2 (xyz, unnormalised; col2 is
 // the unit view axis): made from the projection's rows in double precision, never from a
 // point unprojected near the camera minus the camera's position, which cancels when the
