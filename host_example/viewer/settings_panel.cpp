@@ -12,6 +12,8 @@
 #include <utility>
 #include <vector>
 
+#include "options_as_run.h"
+
 namespace host {
 namespace {
 
@@ -106,10 +108,18 @@ lightscatter::Settings SettingsPanel::effective(const RenderOptions& o) {
 }
 
 std::string SettingsPanel::save(const RenderOptions& o, const std::string& path) const {
+    // What ran, so that the command below reads it back; and never settings the plugin refuses
+    // (a script's step may save an edit before the frame that would refuse it).
+    const lightscatter::Settings saved = effective(asRun(o));
+    try {
+        lightscatter::checkSettings(saved);
+    } catch (const lightscatter::InvalidInput& e) {
+        return "not saved: " + std::string(e.what());
+    }
     const std::string tmp = path + ".part";
     {
         std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        out << settingsFileText(effective(o));
+        out << settingsFileText(saved);
         if (!out.good()) {
             std::remove(tmp.c_str());
             return "cannot write " + path;
@@ -119,7 +129,8 @@ std::string SettingsPanel::save(const RenderOptions& o, const std::string& path)
         std::remove(tmp.c_str());
         return "cannot write " + path;
     }
-    return "wrote " + path + ": lightscatter view SCENE --profile custom --settings " + path;
+    return "wrote " + path + ": lightscatter view SCENE --method " +
+           lightscatter::methodName(o.method) + " --profile custom --settings " + path;
 }
 
 SettingsPanel::Layout SettingsPanel::layout(float width, float height) {
