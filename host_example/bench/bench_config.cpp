@@ -397,7 +397,7 @@ class ConfigReader {
             std::string why = e.what();
             const std::string lead = "lightscatter: ";
             if (why.rfind(lead, 0) == 0) why.erase(0, lead.size());
-            fail(where + " (run '" + r.label + "'): " + why);
+            fail(where + " (run '" + echoText(r.label) + "'): " + why);
         }
     }
 

@@ -29,6 +29,7 @@
 #include "engine_renderer.h"
 #include "image_io.h"
 #include "output_set.h"
+#include "scene/json_input.h"
 #include "settings_fields.h"
 #include "temp_files.h"
 
@@ -156,8 +157,8 @@ void checkEveryRun(const rg::Device& device, const bench::BenchConfig& config,
         try {
             probe->check(runOptions(run));
         } catch (const SceneError& e) {
-            throw std::runtime_error(configPath + ": run '" + run.label + "' cannot run on " +
-                                     e.what());
+            throw std::runtime_error(configPath + ": run '" + echoText(run.label) +
+                                     "' cannot run on " + e.what());
         }
     }
 }
