@@ -45,15 +45,13 @@ std::optional<lightscatter::Method> owner(const SettingField& f) {
     return std::nullopt;
 }
 
-// A value as a run's label gives it: a number, on or off, a choice's name.
+// A value as a run's label gives it: a number (the shortest text that reads back as it, so that
+// 0.9900001 is not labelled 0.99 beside a message that quotes 0.9900001), on or off, a choice's
+// name.
 std::string valueText(const json& v) {
     if (v.is_boolean()) return v.get<bool>() ? "on" : "off";
     if (v.is_string()) return v.get<std::string>();
-    if (v.is_number_float()) {
-        char buf[32];
-        std::snprintf(buf, sizeof buf, "%g", v.get<double>());
-        return buf;
-    }
+    if (v.is_number_float()) return shortestText(v.get<double>());
     return v.dump();
 }
 
@@ -423,7 +421,7 @@ class ConfigReader {
             std::string why = e.what();
             const std::string lead = "lightscatter: ";
             if (why.rfind(lead, 0) == 0) why.erase(0, lead.size());
-            fail(where + " (run '" + r.label + "'): " + why);
+            fail(where + " (run '" + echoText(r.label) + "'): " + why);
         }
     }
 

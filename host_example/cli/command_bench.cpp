@@ -159,8 +159,8 @@ void checkEveryRun(const rg::Device& device, const bench::BenchConfig& config,
         try {
             probe->check(runOptions(run));
         } catch (const SceneError& e) {
-            throw std::runtime_error(configPath + ": run '" + run.label + "' cannot run on " +
-                                     e.what());
+            throw std::runtime_error(configPath + ": run '" + echoText(run.label) +
+                                     "' cannot run on " + e.what());
         }
     }
 }

@@ -13,6 +13,7 @@
 #include "command_options.h"
 #include "commands.h"
 #include "rendergraph/format_info.h"
+#include "scene/json_input.h"
 #include "settings_fields.h"
 #include "settings_file.h"
 
@@ -67,10 +68,27 @@ VkFormat parseColorFormat(const std::string& name) {
 struct LightList {
     std::vector<lightscatter::BudgetLight> lights;
     bool perLight = false;  // some light says whether it is shadowed, or its method
+    std::string preset;     // a method's preset some light names ("froxels-unreal"), if any
 };
+
+// A method's name, or a preset's (MethodInfo::presets), which names its method too: sets `method`,
+// and `preset` to the preset's name.
+bool methodOrPreset(const std::string& name, std::string& preset, lightscatter::Method& method) {
+    if (const auto m = lightscatter::parseMethod(name)) {
+        method = *m;
+        return true;
+    }
+    lightscatter::Settings scratch;
+    const auto m = lightscatter::applyMethodPreset(name, scratch);
+    if (!m) return false;
+    method = *m;
+    preset = name;
+    return true;
+}
 
 LightList parseLights(const std::string& list) {
     LightList out;
+    const std::string quoted = echoText(list);
     size_t start = 0;
     while (true) {
         const size_t comma = list.find(',', start);
@@ -93,7 +111,7 @@ LightList parseLights(const std::string& list) {
             l.type = lightscatter::LightType::Point;
         else
             throw std::runtime_error(
-                "--lights " + list + ": unknown light '" + name +
+                "--lights " + quoted + ": unknown light '" + echoText(name) +
                 "' (a comma-separated list of sun, directional, spot and "
                 "point, each optionally :shadowed or :unshadowed and :METHOD)");
         bool shadowGiven = false, methodGiven = false;
@@ -102,13 +120,20 @@ LightList parseLights(const std::string& list) {
             if ((m == "shadowed" || m == "unshadowed") && !shadowGiven) {
                 l.shadowed = m == "shadowed";
                 shadowGiven = true;
-            } else if (const auto method = lightscatter::parseMethod(m); method && !methodGiven) {
-                l.method = *method;
+            } else if (std::string preset; !methodGiven && methodOrPreset(m, preset, l.method)) {
                 methodGiven = true;
+                // A preset sets the frame's settings, which all its lights share.
+                if (!preset.empty() && !out.preset.empty() && out.preset != preset)
+                    throw std::runtime_error("--lights " + quoted + ": presets '" + out.preset +
+                                             "' and '" + preset +
+                                             "': one frame's lights share one set of settings, "
+                                             "so one preset");
+                if (!preset.empty()) out.preset = preset;
             } else {
-                throw std::runtime_error("--lights " + list + ": '" + entry + "': '" + m +
-                                         "' is not shadowed, unshadowed or a method name (each "
-                                         "at most once)");
+                throw std::runtime_error("--lights " + quoted + ": '" + echoText(entry) + "': '" +
+                                         echoText(m) +
+                                         "' is not shadowed, unshadowed or a method's or a "
+                                         "preset's name (each at most once)");
             }
         }
         out.perLight = out.perLight || parts.size() > 1;
@@ -166,6 +191,8 @@ int runBudget(Args& args) {
     // A preset's settings go over --settings'.
     const lightscatter::Method method =
         budgetMethod(methodName.empty() ? "epipolar" : methodName, custom);
+    // A light's preset goes over --method's, as over --settings'.
+    if (!lightList.preset.empty()) (void)lightscatter::applyMethodPreset(lightList.preset, custom);
     // A light that says whether it is shadowed or its method budgets the set light by light:
     // each light's method its own, else --method where given, else auto. A light of the plain
     // list has a shadow map where the method samples one.

@@ -24,13 +24,6 @@ std::string shortNumber(float x) {
 
 }  // namespace
 
-bool honours(lightscatter::Method method, bool lightscatter::MethodInfo::*what) {
-    if (method == lightscatter::Method::Auto) return true;  // it picks one that does
-    for (const lightscatter::MethodInfo& m : lightscatter::methodInfo())
-        if (m.method == method) return m.*what;
-    return false;
-}
-
 std::string methodsHonouring(bool lightscatter::MethodInfo::*what, bool andAuto) {
     std::vector<std::string> names;
     for (const lightscatter::MethodInfo& m : lightscatter::methodInfo())

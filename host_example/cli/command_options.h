@@ -4,6 +4,7 @@
 
 #include "cli_args.h"
 #include "engine_renderer.h"
+#include "options_as_run.h"
 #include "rendergraph/device.h"
 
 namespace host {
@@ -26,9 +27,6 @@ VkExtent2D sceneSize(const SceneOptions& o, VkExtent2D fallback);
 // `settingsPath` is "" when --settings was not given.
 RenderOptions profileOptions(const std::string& profile, const std::string& settingsPath);
 
-// Whether a method honours a setting MethodInfo names (`what`: &MethodInfo::noise, ...); Auto
-// picks one that does.
-bool honours(lightscatter::Method method, bool lightscatter::MethodInfo::*what);
 // The names of the methods that honour it, with auto last where `andAuto`: "a, b and c".
 std::string methodsHonouring(bool lightscatter::MethodInfo::*what, bool andAuto = false);
 // Names joined by ", ".

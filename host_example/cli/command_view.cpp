@@ -617,16 +617,8 @@ int runView(Args& args) {
             rebuildDisplay(lastFrame && !screenshotPath.empty());
         };
         if (panel.rebuildTargets()) rebuildTargets();
-        // Only some methods sample the noise and only some run seed 004's simplified model (auto
-        // then picks one): the others run without them.
-        auto runnable = [&](RenderOptions r) {
-            if (!honours(r.method, &lightscatter::MethodInfo::noise))
-                r.custom.noiseAmplitude = 0.0f;
-            if (!honours(r.method, &lightscatter::MethodInfo::simplifiedModel))
-                r.custom.lightModel = lightscatter::LightModel::Full;
-            return r;
-        };
-        RenderOptions run = runnable(options);
+        // What runs of the options (options_as_run.h).
+        RenderOptions run = asRun(options);
         std::string refusal;
         try {
             renderer.check(run);
@@ -644,7 +636,7 @@ int runView(Args& args) {
                 renderer.scene().lightAt(i) = goodLights[i];
             renderer.scene().medium = goodMedium;
             if (structure() != before) rebuildTargets();
-            run = runnable(options);
+            run = asRun(options);
             run.timeSeconds = std::chrono::duration<double>(now - start).count();
         }
         frameSteps.emplace_back(step, refusal);

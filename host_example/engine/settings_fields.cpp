@@ -38,9 +38,13 @@ uint32_t whole(const nlohmann::json& v, const std::string& key) {
 float number(const nlohmann::json& v, const std::string& key) {
     if (!v.is_number()) refuse(key, v, "a number");
     const double d = v.get<double>();
-    if (!std::isfinite(d) || std::fabs(d) > double(std::numeric_limits<float>::max()))
-        refuse(key, v, "a finite number");
-    return static_cast<float>(d);
+    // FLT_MAX is written as the shortest text that reads back as it, 3.4028235e+38, which as a
+    // double lies above it: any value that rounds to a finite float is that float. Half an ulp
+    // above FLT_MAX (2^103) rounds to infinity.
+    constexpr double kFloatMax = std::numeric_limits<float>::max();
+    constexpr double kRoundsToFloatMax = kFloatMax + 0x1p103;
+    if (!std::isfinite(d) || std::fabs(d) >= kRoundsToFloatMax) refuse(key, v, "a finite number");
+    return static_cast<float>(std::clamp(d, -kFloatMax, kFloatMax));
 }
 
 }  // namespace

@@ -285,11 +285,18 @@ class LightReader {
                          "] must be within +-" + shortestText(limits::kMaxLength) + " m");
             d.position = glm::vec3(position);
             const glm::dvec3 axis = -glm::dvec3(world[2]);
-            const double length = glm::length(axis);
-            if (!(length > 0.0) || !std::isfinite(length))
+            // Divided by its largest component first: the length of an axis scaled by 1e200
+            // overflows a double, though its direction is plain.
+            const double largest =
+                std::max({std::fabs(axis.x), std::fabs(axis.y), std::fabs(axis.z)});
+            if (!std::isfinite(largest))
+                fail(
+                    "its node's world -Z axis is not finite (the scales of its node and its "
+                    "parents multiply past a double's range): it has no direction");
+            if (!(largest > 0.0))
                 fail(
                     "its node's world -Z axis has zero length (a scale of 0): it has no direction");
-            d.direction = glm::vec3(axis / length);
+            d.direction = glm::vec3(glm::normalize(axis / largest));
         }
 
         void intensity(const json& source) {

@@ -130,6 +130,7 @@ struct ImageLoadContext {
     std::map<int, std::string> failures;  // image index -> why it has no pixels
     std::vector<std::string> files;       // every external file read
     std::string readFailure;              // the first external file that could not be read
+    std::string baseDir;                  // the glTF's folder, which tinygltf joins URIs to
 };
 
 // Whatever exists is reported as existing, so that the read below says why it cannot be used
@@ -140,7 +141,17 @@ bool anythingExists(const std::string& path, void*) {
 }
 
 // tinygltf's default expands "~" and shell variables (wordexp); a URI is a path, nothing more.
-std::string pathAsWritten(const std::string& path, void*) {
+// tinygltf joins even an absolute path to the glTF's folder and to "." ("DIR//abs/b.bin"), where
+// it is found by no name: such a path is taken as written, as a URI's absolute path resolves.
+std::string pathAsWritten(const std::string& path, void* user) {
+    const auto& context = *static_cast<const ImageLoadContext*>(user);
+    for (const std::string& base : {context.baseDir, std::string(".")}) {
+        if (base.empty()) continue;  // joined to nothing: the path is as written
+        const std::string joined = base.back() == '/' ? base : base + "/";
+        if (path.size() > joined.size() && path.compare(0, joined.size(), joined) == 0 &&
+            path[joined.size()] == '/')
+            return path.substr(joined.size());
+    }
     return path;
 }
 
@@ -257,14 +268,45 @@ std::string stbReason() {
     return echoText(why ? why : "no reason given");
 }
 
+// A PNG's size from its IHDR chunk. stb_image's info refuses a PNG of more than 2^30 bytes of
+// pixels ("too large") and then reports the last format it tried, "unknown image type"; the size
+// read here says what is wrong with it.
+bool pngSize(const unsigned char* bytes, int size, int& width, int& height) {
+    static const unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+    if (size < 24 || std::memcmp(bytes, kSignature, 8) != 0 || std::memcmp(bytes + 12, "IHDR", 4))
+        return false;
+    auto u32 = [&](int at) {
+        return uint32_t(bytes[at]) << 24 | uint32_t(bytes[at + 1]) << 16 |
+               uint32_t(bytes[at + 2]) << 8 | uint32_t(bytes[at + 3]);
+    };
+    const uint32_t w = u32(16), h = u32(20);
+    if (w > uint32_t(std::numeric_limits<int>::max()) ||
+        h > uint32_t(std::numeric_limits<int>::max()))
+        return false;
+    width = int(w);
+    height = int(h);
+    return true;
+}
+
+// The image's size as its header gives it, by stb_image or, for a PNG it refuses, by pngSize.
+bool imageSize(const unsigned char* bytes, int size, int& width, int& height) {
+    int channels = 0;
+    return (size > 0 && stbi_info_from_memory(bytes, size, &width, &height, &channels)) ||
+           pngSize(bytes, size, width, height);
+}
+
 // Decodes an image file's bytes to RGBA8 in `texture`, or says why not. The pixels are held once,
 // plus stb_image's own buffer while they are copied out of it (tinygltf's LoadImageData held them
 // twice, and the RGBA8 conversion made a third copy next to the model's).
 std::string decodeImage(const unsigned char* bytes, int size, int wantWidth, int wantHeight,
                         Texture& texture) {
     int width = 0, height = 0, channels = 0;
-    if (size <= 0 || !stbi_info_from_memory(bytes, size, &width, &height, &channels))
-        return "not an image stb_image reads: " + stbReason();
+    if (size <= 0 || !stbi_info_from_memory(bytes, size, &width, &height, &channels)) {
+        const std::string why = stbReason();
+        if (!pngSize(bytes, size, width, height) ||
+            (width <= kMaxTextureSide && height <= kMaxTextureSide))
+            return "not an image stb_image reads: " + why;
+    }
     if (width < 1 || height < 1 || width > kMaxTextureSide || height > kMaxTextureSide) {
         return std::to_string(width) + "x" + std::to_string(height) +
                " pixels: a texture has 1 to " + std::to_string(kMaxTextureSide) + " a side";
@@ -1006,8 +1048,8 @@ std::string decodeImageFile(const std::vector<unsigned char>& bytes, int maxSide
     if (bytes.size() > size_t(std::numeric_limits<int>::max()))
         return "larger than the " + std::to_string(std::numeric_limits<int>::max()) +
                " bytes stb_image reads";
-    int width = 0, height = 0, channels = 0;
-    if (stbi_info_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels) &&
+    int width = 0, height = 0;
+    if (imageSize(bytes.data(), int(bytes.size()), width, height) &&
         (width > maxSide || height > maxSide))
         return std::to_string(width) + "x" + std::to_string(height) + " pixels: at most " +
                std::to_string(maxSide) + " a side";
@@ -1024,6 +1066,7 @@ void appendGltfBytes(MeshData& mesh, const std::string& path, std::vector<unsign
     tinygltf::Model model;
     ImageLoadContext images;
     images.model = &model;
+    images.baseDir = baseDir;
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(loadImageLeniently, &images);
     tinygltf::FsCallbacks files;

@@ -1,6 +1,5 @@
 #include "scene/json_input.h"
 
-#include <set>
 #include <vector>
 
 #include "scene/input_file.h"
@@ -70,81 +69,128 @@ std::string shortenedReason(const std::string& what) {
     return cut(what, 4 * kMaxEchoChars);
 }
 
-// Follows the parser's events to know where it is ("camera.position[2]"), to cap the depth and to
-// see repeated keys as they are read.
-class ParseWatcher {
+// Builds the value from the parser's events, as nlohmann's own DOM builder does, and follows them
+// to know where it is ("camera.position[2]"), to cap the depth and to see repeated keys as they are
+// read. nlohmann's callback parser would do the same, but after every object it closes it scans
+// the enclosing container for the value it may have to discard: quadratic in the number of objects
+// in one array or object (a million empty objects took minutes). Every event here costs O(1) or a
+// lookup in the open object.
+class DomBuilder {
   public:
-    ParseWatcher(const std::string& path, JsonRules rules) : path_(path), rules_(rules) {}
+    DomBuilder(const std::string& path, JsonRules rules) : path_(path), rules_(rules) {}
 
-    bool operator()(int, json::parse_event_t event, json& parsed) {
-        switch (event) {
-            case json::parse_event_t::object_start:
-            case json::parse_event_t::array_start:
-                if (open_.size() >= kMaxJsonDepth) {
-                    fail(where(open_.size()) + ": arrays and objects nest more than " +
-                         std::to_string(kMaxJsonDepth) + " deep here (the most this reader takes)");
-                }
-                open_.push_back({event == json::parse_event_t::array_start, {}, 0, {}});
-                break;
-            case json::parse_event_t::key: {
-                Level& object = open_.back();
-                object.key = parsed.get_ref<const std::string&>();
-                if (rules_.refuseDuplicateKeys && !object.keys.insert(object.key).second) {
-                    const std::string in = where(open_.size() - 1);
-                    fail((in.empty() ? "" : in + ": ") + "key '" + echoText(object.key) +
-                         "' appears twice in one object");
-                }
-                break;
-            }
-            case json::parse_event_t::object_end:
-            case json::parse_event_t::array_end:
-                open_.pop_back();
-                nextElement();
-                break;
-            case json::parse_event_t::value:
-                nextElement();
-                break;
+    json take() { return std::move(root_); }
+
+    bool null() { return value(nullptr); }
+    bool boolean(bool v) { return value(v); }
+    bool number_integer(json::number_integer_t v) { return value(v); }
+    bool number_unsigned(json::number_unsigned_t v) { return value(v); }
+    bool number_float(json::number_float_t v, const json::string_t&) { return value(v); }
+    bool string(json::string_t& v) { return value(std::move(v)); }
+    bool binary(json::binary_t& v) { return value(std::move(v)); }
+
+    bool start_object(size_t) { return open(json::value_t::object); }
+    bool start_array(size_t) { return open(json::value_t::array); }
+    bool end_object() { return close(); }
+    bool end_array() { return close(); }
+
+    bool key(json::string_t& name) {
+        Level& object = open_.back();
+        auto& members = object.value->get_ref<json::object_t&>();
+        if (rules_.refuseDuplicateKeys && members.find(name) != members.end()) {
+            const std::string in = where(open_.size() - 1);
+            fail((in.empty() ? "" : in + ": ") + "key '" + echoText(name) +
+                 "' appears twice in one object");
         }
+        // nlohmann keeps the last of two equal keys; so does this.
+        slot_ = &members[name];
+        object.key = std::move(name);
         return true;
+    }
+
+    // Thrown as the type nlohmann gives (parse_error, or out_of_range for a number too large),
+    // which parseJson reports.
+    template <class Exception>
+    bool parse_error(size_t, const std::string&, const Exception& ex) {
+        throw ex;
     }
 
   private:
     struct Level {
-        bool array;
+        json* value;      // the open array or object
         std::string key;  // objects: the key being read
-        size_t index;     // arrays: the element being read
-        std::set<std::string> keys;
     };
 
     [[noreturn]] void fail(const std::string& what) const {
         throw JsonInputError(path_ + ": " + what);
     }
 
-    void nextElement() {
-        if (!open_.empty() && open_.back().array) ++open_.back().index;
+    // Where the next value goes: the top, the end of the open array, or the open object's key.
+    json* place(json v) {
+        if (open_.empty()) {
+            root_ = std::move(v);
+            return &root_;
+        }
+        json& parent = *open_.back().value;
+        if (parent.is_array()) {
+            auto& elements = parent.get_ref<json::array_t&>();
+            elements.push_back(std::move(v));
+            return &elements.back();
+        }
+        *slot_ = std::move(v);
+        return slot_;
     }
 
-    // The field being read inside the first `levels` open arrays and objects, "" at the top.
+    template <class T>
+    bool value(T&& v) {
+        place(json(std::forward<T>(v)));
+        return true;
+    }
+
+    bool open(json::value_t type) {
+        if (open_.size() >= kMaxJsonDepth) {
+            fail(where(open_.size()) + ": arrays and objects nest more than " +
+                 std::to_string(kMaxJsonDepth) + " deep here (the most this reader takes)");
+        }
+        open_.push_back({place(json(type)), {}});
+        return true;
+    }
+
+    bool close() {
+        open_.pop_back();
+        return true;
+    }
+
+    // The field being read inside the first `levels` open arrays and objects, "" at the top. An
+    // open array's element being read is its last one, or the next one when `levels` reaches the
+    // innermost (a value not placed yet).
     std::string where(size_t levels) const {
         std::string out;
         for (size_t i = 0; i < levels && out.size() <= kMaxEchoChars; ++i) {
             const Level& level = open_[i];
-            if (level.array)
-                out += "[" + std::to_string(level.index) + "]";
-            else
+            if (level.value->is_array()) {
+                const size_t placed = level.value->size();
+                const bool inner = i + 1 < open_.size();
+                out += "[" + std::to_string(inner ? placed - 1 : placed) + "]";
+            } else {
                 out += (out.empty() ? "" : ".") + echoText(level.key);
+            }
         }
         return cut(out, kMaxEchoChars);
     }
 
     const std::string& path_;
     JsonRules rules_;
+    json root_;
     std::vector<Level> open_;
+    json* slot_ = nullptr;  // the value of the open object's last key
 };
 
 json parseOrDiscard(const std::string& path, const char* begin, const char* end, JsonRules rules) {
     try {
-        return json::parse(begin, end, ParseWatcher(path, rules));
+        DomBuilder builder(path, rules);
+        json::sax_parse(begin, end, &builder);
+        return builder.take();
     } catch (const json::exception&) {
         if (rules.malformedIsDiscarded) return json(json::value_t::discarded);
         throw;

@@ -1,5 +1,7 @@
 #include "error_line.h"
 
+#include "terminal_text.h"
+
 namespace host {
 
 std::string errorLine(const std::string& message) {
@@ -16,7 +18,7 @@ std::string errorLine(const std::string& message) {
         if (!line.empty()) out += (out.empty() ? "" : "; ") + line;
         start = end + 1;
     }
-    return out;
+    return terminalText(out);
 }
 
 }  // namespace host

@@ -5,7 +5,21 @@
 #include <cstdio>
 #include <iostream>
 
+#include "terminal_text.h"
+
 namespace host {
+namespace {
+
+// A phase names the user's files ("loading PATH"): the line is rewritten in place on a terminal,
+// so a path's control characters would act on it, and a long one would wrap and leave its first
+// rows behind at each rewrite.
+constexpr size_t kMaxPhaseChars = 200;
+
+std::string printable(const std::string& phase) {
+    return terminalText(phase, kMaxPhaseChars);
+}
+
+}  // namespace
 
 ProgressLine::ProgressLine(std::string first, std::chrono::milliseconds after)
     : ProgressLine(std::move(first), after, std::cerr, isatty(STDERR_FILENO) == 1) {}
@@ -16,7 +30,7 @@ ProgressLine::ProgressLine(std::string first, std::chrono::milliseconds after, s
       start_(std::chrono::steady_clock::now()),
       after_(after),
       every_(every),
-      phase_(std::move(first)) {
+      phase_(printable(first)) {
     if (enabled) thread_ = std::thread([this] { run(); });
 }
 
@@ -33,7 +47,7 @@ ProgressLine::~ProgressLine() {
 
 void ProgressLine::phase(std::string what) {
     std::lock_guard<std::mutex> lock(mutex_);
-    phase_ = std::move(what);
+    phase_ = printable(what);
 }
 
 void ProgressLine::run() {

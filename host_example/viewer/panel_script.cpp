@@ -1,6 +1,5 @@
 #include "panel_script.h"
 
-#include <optional>
 #include <stdexcept>
 
 #include "scene/json_input.h"
@@ -9,30 +8,31 @@
 namespace host {
 namespace {
 
-// A value in a settings file's terms as the number setFieldValue takes; empty when it is of the
-// wrong kind.
-std::optional<double> numberFor(const SettingField& f, const nlohmann::json& v, int component) {
-    switch (f.kind) {
-        case SettingField::Kind::Whole:
-            if (v.is_number_unsigned()) return static_cast<double>(v.get<uint64_t>());
-            return std::nullopt;
-        case SettingField::Kind::Number:
-            if (v.is_number()) return v.get<double>();
-            return std::nullopt;
-        case SettingField::Kind::Boolean:
-            if (v.is_boolean()) return v.get<bool>() ? 1.0 : 0.0;
-            return std::nullopt;
-        case SettingField::Kind::Choice:
-            if (v.is_string())
-                for (size_t i = 0; i < f.choices.size(); ++i)
-                    if (v.get<std::string>() == f.choices[i]) return static_cast<double>(i);
-            return std::nullopt;
-        case SettingField::Kind::Vector4:
-            if (v.is_array() && v.size() == 4 && v[component].is_number())
-                return v[component].get<double>();
-            return std::nullopt;
+// A method's name or a preset's ("froxels-unreal"), as --method takes them.
+bool isMethodOrPreset(const std::string& name) {
+    lightscatter::Settings scratch;
+    return lightscatter::parseMethod(name) || lightscatter::applyMethodPreset(name, scratch);
+}
+
+// The value as a settings file sets it (settings_fields.h), into a copy of `base`: a value of the
+// wrong kind, an integer out of its field's range or a number no float holds is refused here with
+// the settings file's words, never clamped or rounded to another value on the way.
+lightscatter::Settings withValue(const lightscatter::Settings& base, const SettingField& f,
+                                 const nlohmann::json& v, const std::string& key) {
+    lightscatter::Settings s = base;
+    setFieldFromJson(s, f, v, key);
+    return s;
+}
+
+// Each field whose value `s` changes, set through the panel (as its widgets set it).
+void setChanged(SettingsPanel& panel, RenderOptions& o, const lightscatter::Settings& s) {
+    const lightscatter::Settings before = SettingsPanel::effective(o);
+    for (const SettingField& f : settingFields()) {
+        const int components = f.kind == SettingField::Kind::Vector4 ? 4 : 1;
+        for (int c = 0; c < components; ++c)
+            if (fieldValue(s, f, c) != fieldValue(before, f, c))
+                panel.setField(o, f, fieldValue(s, f, c), c);
     }
-    return std::nullopt;
 }
 
 }  // namespace
@@ -55,25 +55,25 @@ PanelScript::PanelScript(const std::string& path) : path_(path) {
             const std::string& key = item.key();
             const nlohmann::json& v = item.value();
             if (key == "method") {
-                if (!v.is_string() || !lightscatter::parseMethod(v.get<std::string>()))
-                    fail(k, "method = " + v.dump() + ": not a method's name");
+                if (!v.is_string() || !isMethodOrPreset(v.get<std::string>()))
+                    fail(k, "method = " + echo(v) + ": not a method's or a preset's name");
             } else if (key == "profile") {
                 if (!v.is_string() || !lightscatter::parseProfile(v.get<std::string>()))
-                    fail(k, "profile = " + v.dump() + ": not a profile's name");
+                    fail(k, "profile = " + echo(v) + ": not a profile's name");
             } else if (key == "save") {
                 if (!v.is_string() || v.get<std::string>().empty())
-                    fail(k, "save = " + v.dump() + ": must be a file name");
+                    fail(k, "save = " + echo(v) + ": must be a file name");
             } else if (key == "settings") {
                 if (!v.is_object()) fail(k, "settings must be an object of fields");
                 for (const auto& field : v.items()) {
+                    const std::string name = "settings." + echoText(field.key());
                     const SettingField* f = findSettingField(field.key());
-                    if (!f) fail(k, "settings." + field.key() + ": not a field of Settings");
-                    const int n = f->kind == SettingField::Kind::Vector4 ? 4 : 1;
-                    bool ok = true;
-                    for (int c = 0; c < n; ++c) ok = ok && numberFor(*f, field.value(), c);
-                    if (!ok)
-                        fail(k, "settings." + field.key() + " = " + field.value().dump() +
-                                    ": not a value of this field's kind");
+                    if (!f) fail(k, name + ": not a field of Settings");
+                    try {
+                        (void)withValue({}, *f, field.value(), name);
+                    } catch (const std::runtime_error& e) {
+                        fail(k, e.what());
+                    }
                 }
             } else if (key == "medium") {
                 try {  // checked now against a default medium, applied over the scene's later
@@ -82,8 +82,8 @@ PanelScript::PanelScript(const std::string& path) : path_(path) {
                     throw std::runtime_error(e.what());
                 }
             } else {
-                fail(k,
-                     "unknown key '" + key + "' (known: method, profile, settings, medium, save)");
+                fail(k, "unknown key '" + echoText(key) +
+                            "' (known: method, profile, settings, medium, save)");
             }
         }
         steps_.push_back(step);
@@ -100,16 +100,26 @@ std::vector<std::pair<size_t, std::string>> PanelScript::saves() const {
 void PanelScript::apply(size_t k, SettingsPanel& panel, RenderOptions& o, SceneDesc& scene) const {
     if (k >= steps_.size()) return;
     const nlohmann::json& step = steps_[k];
-    if (step.contains("method"))
-        panel.setMethod(o, *lightscatter::parseMethod(step["method"].get<std::string>()));
+    if (step.contains("method")) {
+        const std::string name = step["method"].get<std::string>();
+        // A preset is its method with its settings, as --method takes it.
+        lightscatter::Settings preset = SettingsPanel::effective(o);
+        if (const auto m = lightscatter::applyMethodPreset(name, preset)) {
+            setChanged(panel, o, preset);
+            panel.setMethod(o, *m);
+        } else {
+            panel.setMethod(o, *lightscatter::parseMethod(name));
+        }
+    }
     if (step.contains("profile"))
         panel.setProfile(o, *lightscatter::parseProfile(step["profile"].get<std::string>()));
     if (step.contains("settings"))
         for (const auto& field : step["settings"].items()) {
             const SettingField& f = *findSettingField(field.key());
+            const lightscatter::Settings s =
+                withValue(SettingsPanel::effective(o), f, field.value(), field.key());
             const int components = f.kind == SettingField::Kind::Vector4 ? 4 : 1;
-            for (int c = 0; c < components; ++c)
-                panel.setField(o, f, *numberFor(f, field.value(), c), c);
+            for (int c = 0; c < components; ++c) panel.setField(o, f, fieldValue(s, f, c), c);
         }
     if (step.contains("medium"))
         panel.setMedium(scene, readMediumJson(step["medium"], path_, scene.medium));

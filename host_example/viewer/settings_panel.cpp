@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "image_io.h"
+#include "options_as_run.h"
 #include "scene/json_input.h"
 
 namespace host {
@@ -129,8 +130,17 @@ void checkSettingsSaveTarget(const std::string& path) {
 std::string SettingsPanel::save(const RenderOptions& o, const std::string& path) const {
     if (saveCheck_) saveCheck_(path);
     checkSettingsSaveTarget(path);
-    writeTextFile(path, settingsFileText(effective(o)), "save settings");
-    return "wrote " + path + ": lightscatter view SCENE --profile custom --settings " + path;
+    // What ran, so that the command below reads it back; and never settings the plugin refuses
+    // (a script's step may save an edit before the frame that would refuse it).
+    const lightscatter::Settings saved = effective(asRun(o));
+    try {
+        lightscatter::checkSettings(saved);
+    } catch (const lightscatter::InvalidInput& e) {
+        return "not saved: " + std::string(e.what());
+    }
+    writeTextFile(path, settingsFileText(saved), "save settings");
+    return "wrote " + path + ": lightscatter view SCENE --method " +
+           lightscatter::methodName(o.method) + " --profile custom --settings " + path;
 }
 
 SettingsPanel::Layout SettingsPanel::layout(float width, float height) {

@@ -1,5 +1,6 @@
 #include "field_checks.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -13,6 +14,12 @@ std::string num(double v) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%g", v);
     return buf;
+}
+
+std::string floatText(float v) {
+    char buf[64];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    return std::string(buf, r.ptr);
 }
 
 std::string metres(double v) {
@@ -36,8 +43,10 @@ glm::vec3 vec(const Vec3& v, const std::string& field) {
 }
 
 float inRange(float v, const std::string& field, double lo, double hi, const std::string& why) {
-    if (!(v >= lo && v <= hi))
-        fail(field + " = " + num(v) + ": must be in " + rangeText(lo, hi) + " (" + why + ")");
+    const auto low = static_cast<float>(lo), high = static_cast<float>(hi);
+    if (!(v >= low && v <= high))
+        fail(field + " = " + floatText(v) + ": must be in [" + floatText(low) + ", " +
+             floatText(high) + "] (" + why + ")");
     return v;
 }
 

@@ -294,6 +294,24 @@ TEST(BenchConfigMotion, TheRefinementThresholdSweepFollowsThePluginsRule) {
               "sweeps.refinementThreshold[] = \"small\": must be a number");
 }
 
+// A float field is compared with the floats nearest its bounds (issue #42): a sweep or a
+// configuration at a bound as its table writes it runs; past it, the message quotes the bound.
+TEST(BenchConfigMotion, FieldsAreAcceptedAtTheirBounds) {
+    EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"],
+                              "sweeps": {"froxelHistoryWeight": [0.99], "planeRange": [1e30],
+                                         "planeSpacing": [1e-6]}})"),
+              "(accepted)");
+    EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"], "configurations": [{"label": "w",
+                              "method": "froxels", "froxels": {"historyWeight": 0.99,
+                              "farDistance": 1e-6}}]})"),
+              "(accepted)");
+    EXPECT_EQ(configError(R"({"scenes": ["scenes/atrium.json"],
+                              "sweeps": {"froxelHistoryWeight": [0.9900001]}})"),
+              "sweeps.froxelHistoryWeight (run 'froxelHistoryWeight=0.9900001'): "
+              "froxels.historyWeight = 0.9900001: must be in [0, 0.99] (the history's share of "
+              "each froxel; 1 would never take a new frame)");
+}
+
 TEST(BenchConfigMotion, DefaultsAndBothMotions) {
     const auto dir = std::filesystem::temp_directory_path() /
                      ("ls_bench_motion_test_" + std::to_string(::getpid()));

@@ -6,6 +6,7 @@
 
 #include "cli_args.h"
 #include "error_line.h"
+#include "terminal_text.h"
 
 namespace {
 
@@ -85,4 +86,19 @@ TEST(HostErrorLine, OnePrefixAndOneLine) {
     EXPECT_EQ(host::errorLine("lightscatter: lightscatter: x"), "x");
     EXPECT_EQ(host::errorLine("a.gltf: first\nsecond \n\n"), "a.gltf: first; second");
     EXPECT_EQ(host::errorLine("plain"), "plain");
+}
+
+// Whatever reaches the error line of a user's input (a path, a value) is one line of at most
+// kMaxLineChars, its control characters escaped: a file named "t\e]0;PWNED\a.json" must not set the
+// terminal's title, nor a megabyte of value make a megabyte of line.
+TEST(HostErrorLine, ControlCharactersAreEscapedAndTheLineIsCut) {
+    EXPECT_EQ(host::errorLine("t\x1b]0;PWNED\x07.json: does not exist"),
+              "t\\u001b]0;PWNED\\u0007.json: does not exist");
+    EXPECT_EQ(host::errorLine("a\tb\rc\x7f"), "a\\tb\\rc\\u007f");
+    EXPECT_EQ(host::errorLine("C1 \xc2\x9b"
+                              "2J, and \xc3\xa9 kept"),
+              "C1 \\u009b2J, and \xc3\xa9 kept");
+    const std::string line = host::errorLine("x.json: " + std::string(1000000, 'v'));
+    EXPECT_EQ(line.size(), host::kMaxLineChars);
+    EXPECT_EQ(line.substr(line.size() - 3), "...");
 }

@@ -375,8 +375,8 @@ TEST(Cli, BudgetOfLightsEachWithItsMethod) {
     expectFailure(run("budget --lights sun:beam-tree-analytic"),
                   "budget lights[0]: method beam-tree-analytic");
     expectFailure(run("budget --lights spot:dim"),
-                  "--lights spot:dim: 'spot:dim': 'dim' is not shadowed, unshadowed or a method "
-                  "name");
+                  "--lights spot:dim: 'spot:dim': 'dim' is not shadowed, unshadowed or a "
+                  "method's or a preset's name");
 }
 
 TEST(Cli, BudgetPrintsEveryProfileBesideTheSeed) {

@@ -266,6 +266,18 @@ TEST_F(GltfLightsTest, EachRefusalNamesTheFileTheLightAndTheRule) {
     EXPECT_EQ(gltfErrorFor(oneLight(R"({"type": "spot"})", R"("scale": [1, 1, 0], )")),
               "lightsFromGltf: GLTF: KHR_lights_punctual light 0 (node 0 'Lamp'): its node's "
               "world -Z axis has zero length (a scale of 0): it has no direction");
+    // A node scaled by 1e200 has a plain direction, whose length alone overflows a double (it
+    // was called "a scale of 0"); scales that multiply past a double's range are called that.
+    EXPECT_EQ(gltfErrorFor(oneLight(R"({"type": "spot"})", R"("scale": [1e200, 1e200, 1e200], )")),
+              "(no error)");
+    EXPECT_EQ(gltfErrorFor(R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+      "nodes": [{"scale": [1e200, 1e200, 1e200], "children": [1]},
+                {"name": "Lamp", "scale": [1e200, 1e200, 1e200],
+                 "extensions": {"KHR_lights_punctual": {"light": 0}}}],
+      "extensions": {"KHR_lights_punctual": {"lights": [{"type": "spot"}]}}})"),
+              "lightsFromGltf: GLTF: KHR_lights_punctual light 0 (node 1 'Lamp'): its node's "
+              "world -Z axis is not finite (the scales of its node and its parents multiply past "
+              "a double's range): it has no direction");
     EXPECT_EQ(gltfErrorFor(oneLight(R"({"type": "point"})", R"("translation": [2e8, 0, 0], )")),
               "lightsFromGltf: GLTF: KHR_lights_punctual light 0 (node 0 'Lamp'): its node's "
               "world position [2e+08, 0, 0] must be within +-1e+08 m");

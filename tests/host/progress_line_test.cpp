@@ -2,6 +2,7 @@
 // past the delay, the phase and the elapsed time, rewritten in place, and cleared at the end.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <sstream>
 #include <thread>
 
@@ -37,4 +38,31 @@ TEST(ProgressLine, NothingWhenStderrIsNotATerminal) {
         std::this_thread::sleep_for(40ms);
     }
     EXPECT_EQ(out.str(), "");
+}
+
+// A phase names the user's files: its control characters are escaped (a scene named
+// "t\e]0;PWNED\a.json" set the terminal's title through this line), and a long one is cut, so that
+// the line rewritten in place never wraps.
+TEST(ProgressLine, APhaseIsEscapedAndCut) {
+    std::ostringstream out;
+    {
+        host::ProgressLine p("loading t\x1b]0;PWNED\x07.json", 0ms, out, true, 10ms);
+        std::this_thread::sleep_for(40ms);
+        p.phase("loading " + std::string(100000, 'x'));
+        std::this_thread::sleep_for(40ms);
+    }
+    std::string s = out.str();
+    EXPECT_NE(s.find("lightscatter: loading t\\u001b]0;PWNED\\u0007.json ("), std::string::npos)
+        << s;
+    // The line's own escape, "\r\033[K", is the only one written.
+    for (size_t at; (at = s.find("\r\033[K")) != std::string::npos;) s.replace(at, 4, "\n");
+    EXPECT_EQ(s.find('\x1b'), std::string::npos) << s;
+    EXPECT_EQ(s.find('\x07'), std::string::npos) << s;
+    size_t longest = 0;
+    for (size_t at = 0, end; at < s.size(); at = end + 1) {
+        end = std::min(s.find('\n', at), s.size());
+        longest = std::max(longest, end - at);
+    }
+    EXPECT_LE(longest, 250u);
+    EXPECT_NE(s.find("xxx... ("), std::string::npos);
 }

@@ -5,6 +5,9 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
+#include <cmath>
+#include <limits>
 
 #include <filesystem>
 #include <fstream>
@@ -280,6 +283,87 @@ TEST_F(HostSettingsFile, BadFieldsAreNamed) {
               "malformed JSON at byte 2: [json.exception.parse_error.101] parse error at line 1, "
               "column 2: syntax error while parsing object key - unexpected end of input; "
               "expected string literal");
+}
+
+// A number as the shortest text that reads back as it: how a person copies a bound from a field's
+// table (0.99, 1e+30), and how the viewer saves a float (3.4028235e+38).
+template <class T>
+std::string shortest(T v) {
+    char text[64];
+    const auto r = std::to_chars(text, text + sizeof text, v);
+    return std::string(text, r.ptr);
+}
+
+// `value` as the field's JSON: a Vector4 takes it in every component.
+std::string fieldText(const host::SettingField& f, const std::string& value) {
+    const std::string v = f.kind == host::SettingField::Kind::Vector4
+                              ? "[" + value + ", " + value + ", " + value + ", " + value + "]"
+                              : value;
+    return "{\"" + f.name + "\": " + v + "}";
+}
+
+// A float field was compared with its double bound (issue #42): 0.99f is above 0.99, so
+// "froxelHistoryWeight: 0.99" was refused with "must be in [0, 0.99]". Every bound of every field
+// is accepted written as its table gives it, and the first float past it is refused with a message
+// that quotes both the value and the bound as the floats compared, never the one as the other.
+TEST_F(HostSettingsFile, EveryBoundIsAcceptedAtTheBoundAndQuotedAsApplied) {
+    using Kind = host::SettingField::Kind;
+    const double kFloatMax = std::numeric_limits<float>::max();
+    size_t bounds = 0;
+    for (const host::SettingField& f : host::settingFields()) {
+        if (f.kind != Kind::Number && f.kind != Kind::Vector4 && f.kind != Kind::Whole) continue;
+        SCOPED_TRACE(f.name);
+        const bool isFloat = f.kind != Kind::Whole;
+        auto fits = [&](double v) {
+            const auto w = static_cast<uint64_t>(v);
+            return isFloat ||
+                   ((!f.powerOfTwo || (w != 0 && (w & (w - 1)) == 0)) && w % f.multipleOf == 0);
+        };
+        // The upper bound; FLT_MAX where only finiteness bounds it, as the viewer saves it.
+        const double hi = std::min(f.max, kFloatMax);
+        const std::string hiText = isFloat ? shortest(float(hi)) : shortest(hi);
+        if (fits(hi)) {
+            EXPECT_EQ(errorFor(fieldText(f, shortest(hi))), "(no error)") << shortest(hi);
+            EXPECT_EQ(errorFor(fieldText(f, hiText)), "(no error)") << hiText;
+            ++bounds;
+        }
+        if (!f.minExclusive && fits(f.min)) {
+            EXPECT_EQ(errorFor(fieldText(f, shortest(f.min))), "(no error)") << shortest(f.min);
+            ++bounds;
+        }
+        if (hi >= kFloatMax) continue;  // nothing past it but infinity, refused as such
+        const std::string past =
+            isFloat ? shortest(std::nextafter(float(hi), std::numeric_limits<float>::infinity()))
+                    : shortest(hi + 1);
+        const std::string m = errorFor(fieldText(f, past));
+        EXPECT_NE(m.find(" = " + past + ": must be "), std::string::npos) << m;
+        EXPECT_NE(m.find(hiText, m.find(": must be ")), std::string::npos) << m;
+        EXPECT_NE(past, hiText);
+    }
+    EXPECT_GE(bounds, 40u);
+    // The issue's four, by their former flat names.
+    EXPECT_EQ(errorFor(R"({"froxelHistoryWeight": 0.99})"), "(no error)");
+    EXPECT_EQ(errorFor(R"({"planeSpacing": 1e-6})"), "(no error)");
+    EXPECT_EQ(errorFor(R"({"froxelFarDistance": 1e-6})"), "(no error)");
+    EXPECT_EQ(errorFor(R"({"planeRange": 1e30})"), "(no error)");
+    EXPECT_EQ(errorFor(R"({"froxelHistoryWeight": 0.9900001})"),
+              "froxelHistoryWeight = 0.9900001: must be in [0, 0.99] (the history's share of "
+              "each froxel; 1 would never take a new frame)");
+}
+
+// The viewer writes FLT_MAX as 3.4028235e+38, which as a double lies above FLT_MAX: it is read as
+// FLT_MAX, and only a value that rounds past it is refused.
+TEST_F(HostSettingsFile, TheLargestFloatAsWrittenReadsBack) {
+    lightscatter::Settings s;
+    s.epipolar.bilateralThreshold = std::numeric_limits<float>::max();
+    s.noiseVelocity = {-std::numeric_limits<float>::max(), 0, 0, 0};
+    EXPECT_NE(host::settingsFileText(s).find("3.4028235e+38"), std::string::npos);
+    const lightscatter::Settings back = load(host::settingsFileText(s));
+    EXPECT_EQ(back.epipolar.bilateralThreshold, s.epipolar.bilateralThreshold);
+    EXPECT_EQ(back.noiseVelocity, s.noiseVelocity);
+    // Half a float's step above FLT_MAX rounds to infinity.
+    EXPECT_EQ(errorFor(R"({"bilateralThreshold": 3.40282357e+38})"),
+              "bilateralThreshold = 3.40282357e+38: must be a finite number");
 }
 
 TEST_F(HostSettingsFile, OnlyARegularFileIsRead) {
