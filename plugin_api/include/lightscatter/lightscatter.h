@@ -153,7 +153,8 @@ LIGHTSCATTER_API std::optional<Method> applyMethodPreset(const std::string& name
 // the name alone when `at` is empty), and the rule.
 LIGHTSCATTER_API void checkSettings(const Settings& settings, const std::string& at = "custom");
 
-// The settings of a profile (Custom returns the defaults).
+// The settings of a profile (Custom returns the defaults). A value that is no Profile throws
+// InvalidInput naming `profile` (it would otherwise silently be Custom).
 LIGHTSCATTER_API Settings profileSettings(Profile profile);
 // The settings a frame with this profile and `custom` runs with: `custom`, with the profile's
 // values of the fields it decides (SettingsField::profileSized) where the profile is not Custom.
@@ -557,10 +558,11 @@ struct FroxelVolume {
 LIGHTSCATTER_API FroxelVolume froxelVolume(const FrameDescription& frame,
                                            VkExtent2D maxRenderSize = {0, 0});
 
-// Thrown before anything is recorded when a description breaks a rule; the message names the field
-// (as a path from FrameDescription: "custom.epipolar.slices", "depth.layout"; or from
-// VulkanContext: "context.enabledFeatures") and the rule. The engine's images and command buffer
-// are untouched.
+// Thrown before anything is recorded when a description breaks a rule; the message, one line, names
+// the field (as a path from FrameDescription: "custom.epipolar.slices", "depth.layout"; or from
+// VulkanContext: "context.enabledFeatures"), both fields for a rule between two, and the rule. An
+// enum holding a value that is none of its enumerators (a cast integer) is refused so too, at every
+// entry point that takes one. The engine's images and command buffer are untouched.
 class LIGHTSCATTER_API InvalidInput : public std::invalid_argument {
   public:
     using std::invalid_argument::invalid_argument;
