@@ -168,8 +168,10 @@ struct Camera {
     // camera's position within limits::kMaxLength of the origin on each axis.
     Mat4 view{};
     // View -> Vulkan clip (y down, depth in [0, 1]), perspective: GLM's perspective needs [1][1]
-    // negated (one with clip y up, P[1][1] > 0, is refused). Its field of view on each axis
-    // lies in [limits::kMinFovDegrees, limits::kMaxFovDegrees], its near plane at
+    // negated (one with clip y up, P[1][1] > 0, is refused). Its w row (P[0][3], P[1][3], P[2][3],
+    // P[3][3]) is (0, 0, -1, 0) times a positive scale, clip w the distance along the view axis:
+    // an orthographic projection (w row 0 0 0 1), whose rays are parallel, is refused. Its field of
+    // view on each axis lies in [limits::kMinFovDegrees, limits::kMaxFovDegrees], its near plane at
     // limits::kMinNearPlane or more and its far plane at limits::kMaxLength or less; with
     // standard depth, or a D16/D24 depth buffer, the far plane (or with an infinite far plane
     // medium.maxDistance) is at most 2^b / limits::kDepthStepsPerDistance times the near plane
