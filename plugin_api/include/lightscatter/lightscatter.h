@@ -338,6 +338,21 @@ LIGHTSCATTER_API Vec3 shaftIntensity(LightType type, const Medium& medium, const
 // layout) to its own use, and its last a barrier from its own use to (finalStages, finalAccess,
 // finalLayout). The fields:
 //
+// - image:
+//     One VkImage may fill several roles of a frame only where the plugin reads it in each
+//     (shadow maps, light colors, noise) and each gives SHADER_READ_ONLY_OPTIMAL as its layout
+//     and finalLayout (two lights sharing a shadow map). An image the plugin writes (color,
+//     inscatterOut, transmittanceOut, volumeOut) in a second role, one image in two layouts or in
+//     another layout, or a depth with DEPTH_STENCIL_ATTACHMENT usage (which the plugin may
+//     depth-test in a depth layout) in a second role is refused naming both fields: the plugin
+//     would read what it writes, or one role's barriers would move the image out of the layout
+//     the other's expect.
+// - format:
+//     One the device can use as the role needs (vkGetPhysicalDeviceFormatProperties, optimal
+//     tiling), or the frame is refused naming the field: SAMPLED_IMAGE for the depth and shadow
+//     maps, a color format with SAMPLED_IMAGE_FILTER_LINEAR for lightColor and noise (sampled
+//     with a linear filter: a depth or integer format is refused), STORAGE_IMAGE for the outputs
+//     and a storage color; each field's own formats are said where it is declared.
 // - usage:
 //     The VkImageUsageFlags the image was created with. The plugin needs SAMPLED (depth,
 //     shadowMap, lightColor) or STORAGE (color, inscatterOut); layouts are checked against these
