@@ -1,8 +1,10 @@
 #include "device_memory.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "fault_injection.h"
+#include "format_info.h"
 #include "vk_error.h"
 
 namespace rg {
@@ -110,16 +112,62 @@ void checkImageLimits(const Device& device, VkExtent2D extent, uint32_t layers,
 
 void checkImageLimits(const Device& device, const VkImageCreateInfo& info,
                       const std::string& what) {
-    if (info.imageType != VK_IMAGE_TYPE_3D) {
-        checkImageLimits(device, {info.extent.width, info.extent.height}, info.arrayLayers, what);
-        return;
-    }
-    const uint32_t most = device.properties().limits.maxImageDimension3D;
     const VkExtent3D e = info.extent;
-    if (e.width > most || e.height > most || e.depth > most)
-        throw VulkanError(what + " is " + std::to_string(e.width) + "x" + std::to_string(e.height) +
-                          "x" + std::to_string(e.depth) + ": the device takes at most " +
-                          std::to_string(most) + " per side of a 3D image (maxImageDimension3D)");
+    if (info.imageType != VK_IMAGE_TYPE_3D) {
+        checkImageLimits(device, {e.width, e.height}, info.arrayLayers, what);
+    } else {
+        const uint32_t most = device.properties().limits.maxImageDimension3D;
+        if (e.width > most || e.height > most || e.depth > most)
+            throw VulkanError(what + " is " + std::to_string(e.width) + "x" +
+                              std::to_string(e.height) + "x" + std::to_string(e.depth) +
+                              ": the device takes at most " + std::to_string(most) +
+                              " per side of a 3D image (maxImageDimension3D)");
+    }
+    checkImageFormatLimits(device, info, what);
+}
+
+void checkImageFormatLimits(const Device& device, const VkImageCreateInfo& info,
+                            const std::string& what) {
+    const VkExtent3D e = info.extent;
+    const std::string image =
+        what + " (" + std::to_string(e.width) + "x" + std::to_string(e.height) +
+        (e.depth > 1 ? "x" + std::to_string(e.depth) : "") + " " + formatName(info.format) +
+        (info.arrayLayers > 1 ? ", " + std::to_string(info.arrayLayers) + " layers" : "") + ")";
+    VkImageFormatProperties p{};
+    const VkResult r = device.vk().GetPhysicalDeviceImageFormatProperties(
+        device.physical(), info.format, info.imageType, info.tiling, info.usage, info.flags, &p);
+    if (r == VK_ERROR_FORMAT_NOT_SUPPORTED)
+        throw VulkanError(image +
+                          ": the device makes no image of this format, type, tiling, usage and "
+                          "flags (vkGetPhysicalDeviceImageFormatProperties)");
+    if (r != VK_SUCCESS)
+        throw VulkanError(image +
+                          ": vkGetPhysicalDeviceImageFormatProperties failed: " + resultName(r));
+    if (e.width > p.maxExtent.width || e.height > p.maxExtent.height || e.depth > p.maxExtent.depth)
+        throw VulkanError(
+            image + ": the device takes at most " + std::to_string(p.maxExtent.width) + "x" +
+            std::to_string(p.maxExtent.height) + "x" + std::to_string(p.maxExtent.depth) +
+            " of this format and usage (vkGetPhysicalDeviceImageFormatProperties)");
+    if (info.arrayLayers > p.maxArrayLayers)
+        throw VulkanError(image + ": the device takes at most " + std::to_string(p.maxArrayLayers) +
+                          " layers of this format and usage "
+                          "(vkGetPhysicalDeviceImageFormatProperties)");
+    // The size the validation layer weighs against maxResourceSize: texels times their bytes,
+    // rounded up to bufferImageGranularity (what a driver really needs is known only once the
+    // image exists, and creating an image past the limit is already outside the specification).
+    const VkDeviceSize texels =
+        VkDeviceSize{e.width} * e.height * e.depth * info.arrayLayers * info.samples;
+    const VkDeviceSize granularity =
+        std::max<VkDeviceSize>(device.properties().limits.bufferImageGranularity, 1);
+    const VkDeviceSize bytes =
+        (texels * texelBytes(info.format) + granularity - 1) / granularity * granularity;
+    // Exact counts: a limit of 2^32 - 1 bytes and an image of 2^32 both round to 4 GiB.
+    if (bytes > p.maxResourceSize)
+        throw VulkanError(image + " needs " + std::to_string(bytes) + " bytes (" +
+                          bytesText(bytes) + "): the device takes at most " +
+                          std::to_string(p.maxResourceSize) +
+                          " bytes for one image of this format and usage (maxResourceSize, "
+                          "vkGetPhysicalDeviceImageFormatProperties)");
 }
 
 BoundBuffer createBoundBuffer(const Device& device, const VkBufferCreateInfo& info,

@@ -30,8 +30,15 @@ void checkBind(const Device& device, VkResult result, const char* call, VkDevice
 // must not be given such an image (VUID-VkImageCreateInfo-extent-02252).
 void checkImageLimits(const Device& device, VkExtent2D extent, uint32_t layers,
                       const std::string& what);
-// The same for any image's create info (a 3D image against maxImageDimension3D).
+// The same for any image's create info (a 3D image against maxImageDimension3D), and then
+// checkImageFormatLimits.
 void checkImageLimits(const Device& device, const VkImageCreateInfo& info, const std::string& what);
+// Throws VulkanError when vkGetPhysicalDeviceImageFormatProperties says the device makes no such
+// image: not of this format, type, tiling, usage and flags, or not of this extent, layer count or
+// size (maxResourceSize, VUID-VkImageCreateInfo-extent-02252 and the validation layer's
+// InvalidFormatLimitsViolation). Checked before vkCreateImage.
+void checkImageFormatLimits(const Device& device, const VkImageCreateInfo& info,
+                            const std::string& what);
 
 // A buffer or an image with memory of its own, bound at offset 0.
 struct BoundBuffer {

@@ -24,6 +24,7 @@ namespace rg {
     X(GetPhysicalDeviceFeatures)              \
     X(GetPhysicalDeviceFeatures2)             \
     X(GetPhysicalDeviceFormatProperties2)     \
+    X(GetPhysicalDeviceImageFormatProperties) \
     X(GetPhysicalDeviceMemoryProperties)      \
     X(GetPhysicalDeviceQueueFamilyProperties) \
     X(CreateDevice)                           \

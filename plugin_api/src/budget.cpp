@@ -6,6 +6,7 @@
 
 #include <lightscatter/lightscatter.h>
 #include "color_target.h"
+#include "enum_checks.h"
 #include "graph_config.h"
 #include "method_choice.h"
 #include "method_units.h"
@@ -44,6 +45,7 @@ uint64_t persistentBytes(const rg::OfflineDeviceCaps& caps, VkFormat format, VkE
 Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint32_t shadowMapSize,
               const std::vector<BudgetLight>& lights, const Settings* custom,
               VkFormat colorFormat) {
+    detail::checkProfile(profile, "budget profile");
     if (lights.empty()) throw InvalidInput("lightscatter: budget lights: the list is empty");
     if (lights.size() > kMaxLights)
         throw InvalidInput("lightscatter: budget lights: " + std::to_string(lights.size()) +
@@ -55,6 +57,11 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
     if (shadowMapSize < 1 || shadowMapSize > 16384)
         throw InvalidInput("lightscatter: budget shadow-map size " + std::to_string(shadowMapSize) +
                            ": must be in [1, 16384]");
+    for (size_t i = 0; i < lights.size(); ++i) {
+        const std::string at = "budget lights[" + std::to_string(i) + "]";
+        detail::checkLightType(lights[i].type, at + ".type");
+        detail::checkMethod(lights[i].method, at + ".method");
+    }
     const rg::OfflineDeviceCaps model;
     if (!detail::storageColor(colorFormat, VK_IMAGE_USAGE_STORAGE_BIT) &&
         (model.optimalFeatures(colorFormat) & VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BLEND_BIT) == 0)

@@ -57,6 +57,26 @@ void checkView(const glm::mat4& view) {
                  " m (lightscatter.h, limits::kMaxLength)");
 }
 
+// The plugin's rays all start at the camera, as a perspective projection's do: clip w is the
+// distance along the view axis, w row (0, 0, -1, 0) up to scale (jitter and off-centre frusta
+// change other rows). An orthographic projection (w row 0 0 0 1) has parallel rays; taken as
+// one, the methods would each misread it differently (epipolar and brute force differed by 21%).
+// A w row (0, 0, +1, 0) looks down +Z, which the near-plane check names.
+void checkPerspective(const glm::mat4& p) {
+    const double c = std::fabs(double(p[2][3]));
+    const double off = std::max(
+        {std::fabs(double(p[0][3])), std::fabs(double(p[1][3])), std::fabs(double(p[3][3]))});
+    if (c > 0.0 && off <= 1e-6 * c) return;
+    fail(
+        "camera.projection is not a perspective projection: its w row (P[0][3], P[1][3], "
+        "P[2][3], P[3][3]) is (" +
+        num(p[0][3]) + ", " + num(p[1][3]) + ", " + num(p[2][3]) + ", " + num(p[3][3]) + ")" +
+        (c == 0.0 && p[3][3] != 0.0f ? ", an orthographic projection's" : "") +
+        "; the plugin's rays start at the camera, so it takes a perspective projection, whose w "
+        "row is (0, 0, -1, 0) times a positive scale (clip w is the distance along the view "
+        "axis)");
+}
+
 // Each axis' field of view, 2 atan(1 / |P[0][0]|) and 2 atan(1 / |P[1][1]|).
 void checkFieldOfView(const glm::mat4& p) {
     for (int axis = 0; axis < 2; ++axis) {
@@ -81,6 +101,7 @@ ls::CameraParams setupCamera(const Camera& c) {
     out.view = matrix(c.view, "camera.view");
     out.projection = matrix(c.projection, "camera.projection");
     checkView(out.view);
+    checkPerspective(out.projection);
     const DerivedPlanes d = derivePlanes(out.projection);
     const bool reversed = d.atDepth1 < d.atDepth0;
     const double nearD = reversed ? d.atDepth1 : d.atDepth0;

@@ -7,6 +7,7 @@
 
 #include "camera_checks.h"
 #include "color_target.h"
+#include "enum_checks.h"
 #include "field_checks.h"
 #include "image_checks.h"
 #include "light_checks.h"
@@ -17,6 +18,8 @@ namespace lightscatter::detail {
 
 ls::LightSetup setupFramePart(const FrameDescription& f, bool withImages) {
     ls::LightSetup s;
+    checkProfile(f.profile, "profile");
+    checkMethod(f.method, "method");
     s.settings = profileSettings(f.profile, f.custom);
     checkSettings(s.settings);
     // Checked, and converted, only for the methods that read them (beamOccluders): the others
@@ -105,6 +108,7 @@ std::vector<EdgeLight> edgeLights(const FrameDescription& frame) {
     for (size_t i = 0; i < frame.lights.size(); ++i) {
         const std::string at = "lights[" + std::to_string(i) + "]";
         const LightInput& in = frame.lights[i];
+        checkMethod(in.method, at + ".method");
         lights.push_back({in,
                           {at + ".light", at + ".shadowMap", at + ".lightColor",
                            in.settings ? at + ".settings" : "custom", at},

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "cube_face_checks.h"
+#include "enum_checks.h"
 #include "field_checks.h"
 #include "image_checks.h"
 #include "light_projection_checks.h"
@@ -19,6 +20,7 @@ void setupLight(ls::LightSetup& s, const LightInput& light, const LightPaths& at
     }
     // Light.
     const Light& l = light.light;
+    checkLightType(l.type, at.light + ".type");
     s.light.kind = l.type;
     s.light.position = vecInRange(l.position, at.light + ".position", -limits::kMaxLength,
                                   limits::kMaxLength, "metres; lightscatter.h, limits::kMaxLength");
@@ -53,8 +55,7 @@ void setupLight(ls::LightSetup& s, const LightInput& light, const LightPaths& at
     if (!(l.range > 0.0f) || !finite(l.range))
         fail(at.light + ".range = " + num(l.range) + ": must be > 0 and finite (1e30: no range)");
     s.light.range = l.range;
-    if (l.rangeFalloff != RangeFalloff::Cut && l.rangeFalloff != RangeFalloff::Window)
-        fail(at.light + ".rangeFalloff is not a RangeFalloff value");
+    checkRangeFalloff(l.rangeFalloff, at.light + ".rangeFalloff");
     s.light.windowedRange = l.rangeFalloff == RangeFalloff::Window;
     inRange(l.radius, at.light + ".radius", limits::kMinRadius, limits::kMaxLength,
             "metres; it keeps rays through the light finite, lightscatter.h, limits::kMinRadius");

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "enum_checks.h"
 #include "field_checks.h"
 
 namespace lightscatter::detail {
@@ -51,9 +52,7 @@ ls::MediumParams setupMedium(const Medium& m) {
     s.sigmaA = vecInRange(m.sigmaA, "medium.sigmaA", 0.0, limits::kMaxCoefficient, kPerMetre);
     if (!(m.g > -1.0f && m.g < 1.0f)) fail("medium.g = " + num(m.g) + ": must be in (-1, 1)");
     s.g = m.g;
-    if (m.phase != MiePhase::CornetteShanks && m.phase != MiePhase::Isotropic &&
-        m.phase != MiePhase::Hazy)
-        fail("medium.phase is not a MiePhase value");
+    checkMiePhase(m.phase, "medium.phase");
     s.phase = m.phase;
     if (!(m.maxDistance > 0.0f && m.maxDistance <= limits::kMaxLength))
         fail("medium.maxDistance = " + num(m.maxDistance) + ": must be in (0, " +

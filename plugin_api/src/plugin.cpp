@@ -13,6 +13,8 @@
 #include "frame_reports.h"
 #include "frame_setup.h"
 #include "graph_cache.h"
+#include "image_formats.h"
+#include "image_roles.h"
 #include "light_states.h"
 #include "lin_storage.h"
 #include "method_choice.h"
@@ -88,6 +90,10 @@ struct Plugin::Impl {
                                std::to_string(screen.height) + " is larger than maxRenderSize " +
                                std::to_string(maxRenderSize.width) + "x" +
                                std::to_string(maxRenderSize.height) + " (PluginCreateInfo)");
+        // Last, the rules of the images together: each image's own rules name a lone fault first.
+        const std::vector<detail::ImageRole> roles = detail::imageRoles(frame, c.frame);
+        detail::checkSharedImages(roles);
+        detail::checkImageFormats(roles, caps);
         return c;
     }
 

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include <lightscatter/lightscatter.h>
+#include "enum_checks.h"
 #include "shared/settings_table.h"
 
 namespace lightscatter {
@@ -114,6 +115,8 @@ Settings profileSettings(Profile profile) {
 // Everything is the engine's (custom) but what the profile decides: a field added to a table is
 // the engine's without a word here.
 Settings profileSettings(Profile profile, const Settings& custom) {
+    // Refused rather than taken as Custom: a profile the engine meant would silently not apply.
+    detail::checkProfile(profile, "profile");
     Settings s = custom;
     const auto p = static_cast<size_t>(profile);
     if (p >= kSizedProfiles) return s;  // Custom

@@ -6,6 +6,7 @@
 #include <string>
 
 #include <lightscatter/lightscatter.h>
+#include "enum_checks.h"
 #include "field_checks.h"
 
 namespace lightscatter {
@@ -36,6 +37,8 @@ double positive(float v, const char* field, bool zeroAllowed = false) {
 }  // namespace
 
 Vec3 shaftIntensity(LightType type, const Medium& medium, const ShaftGoal& goal) {
+    detail::checkLightType(type, "shaftIntensity: type");
+    detail::checkMiePhase(medium.phase, "shaftIntensity: medium.phase");
     const double brightness = positive(goal.brightness, "brightness");
     const double width = positive(goal.beamWidth, "beamWidth");
     const double view = positive(goal.viewDistance, "viewDistance", true);

@@ -347,25 +347,38 @@ std::vector<Row> rows() {
          "budget lights: 65 lights: at most 64"},
 
         // 8: what the device cannot hold is refused naming the option or field, the size and what
-        // the device has, before Vulkan is asked for it (lavapipe's heap is 2 GiB).
+        // the device has, before Vulkan is asked for it: vkGetPhysicalDeviceImageFormatProperties'
+        // maxResourceSize (lavapipe's is 2^32 - 1 bytes) before vkCreateImage, the memory heap
+        // (lavapipe's is 2 GiB) before vkAllocateMemory. With the validation layer forced on the
+        // process, the one line shows that no image was created past the limit (issue #42:
+        // UNASSIGNED-CoreValidation-Image-InvalidFormatLimitsViolation).
         {"AScreenLargerThanTheDeviceHolds",
          {},
          "render {scene:window_room} --size 16384x16384",
          1,
-         "--size 16384x16384: out of device memory: image 'host in-scattering' (16384x16384 "
-         "R32G32B32A32_SFLOAT) needs 4 GiB; the device has 2 GiB in heap 0"},
+         "--size 16384x16384: image 'host in-scattering' (16384x16384 R32G32B32A32_SFLOAT) needs "
+         "4294967296 bytes (4 GiB): the device takes at most 4294967295 bytes for one image of "
+         "this format and usage (maxResourceSize, vkGetPhysicalDeviceImageFormatProperties)",
+         "VK_INSTANCE_LAYERS=VK_LAYER_KHRONOS_validation"},
+        {"AScreenLargerThanTheDeviceHasMemoryFor",
+         {},
+         "render {scene:window_room} --size 16384x11586",
+         1,
+         "--size 16384x11586: out of device memory: image 'host in-scattering' (16384x11586 "
+         "R32G32B32A32_SFLOAT) needs 2.8 GiB; the device has 2 GiB in heap 0"},
         {"AGraphLargerThanTheDeviceHolds",
          {},
          "graph {scene:window_room} --dot --size 16384x16384",
          1,
-         "--size 16384x16384: out of device memory: image 'host in-scattering'"},
+         "--size 16384x16384: image 'host in-scattering' (16384x16384 R32G32B32A32_SFLOAT) needs "
+         "4294967296 bytes"},
         {"ABenchmarkLargerThanTheDeviceHolds",
          {{"b.json", R"({"frames": 1, "warmup": 0, "size": "16384x16384", "measureError": false,
                         "scenes": ["{scene:window_room}"], "methods": ["brute-force"]})"}},
          "bench --config b.json --out results",
          1,
-         "b.json: run 'brute-force' at size 16384x16384: out of device memory: image 'host "
-         "in-scattering'",
+         "b.json: run 'brute-force' at size 16384x16384: image 'host in-scattering' "
+         "(16384x16384 R32G32B32A32_SFLOAT) needs 4294967296 bytes",
          "",
          false},
         {"ACubeShadowMapLargerThanTheDeviceHolds",
@@ -373,9 +386,10 @@ std::vector<Row> rows() {
            R"({"light": {"type": "point", "position": [0, 1, 0], "shadowMapSize": 16384}})"}},
          "render cube.json --size 16x16",
          1,
-         "cube.json: light.shadowMapSize 16384: out of device memory: image 'host cube shadow map' "
-         "(16384x16384 "
-         "D32_SFLOAT, 6 layers) needs 6 GiB; the device has 2 GiB"},
+         "cube.json: light.shadowMapSize 16384: image 'host cube shadow map' (16384x16384 "
+         "D32_SFLOAT, 6 layers) needs 6442450944 bytes (6 GiB): the device takes at most "
+         "4294967295 bytes for one image of this format and usage (maxResourceSize",
+         "VK_INSTANCE_LAYERS=VK_LAYER_KHRONOS_validation"},
         // A texture wider than a texture may be is read as unreadable: a warning, and its materials
         // keep their base color (the loader refuses it from the PNG's header; the device's own
         // maxImageDimension2D is checked again before any upload, DeviceMemoryGpu).

@@ -153,7 +153,8 @@ LIGHTSCATTER_API std::optional<Method> applyMethodPreset(const std::string& name
 // the name alone when `at` is empty), and the rule.
 LIGHTSCATTER_API void checkSettings(const Settings& settings, const std::string& at = "custom");
 
-// The settings of a profile (Custom returns the defaults).
+// The settings of a profile (Custom returns the defaults). A value that is no Profile throws
+// InvalidInput naming `profile` (it would otherwise silently be Custom).
 LIGHTSCATTER_API Settings profileSettings(Profile profile);
 // The settings a frame with this profile and `custom` runs with: `custom`, with the profile's
 // values of the fields it decides (SettingsField::profileSized) where the profile is not Custom.
@@ -167,8 +168,10 @@ struct Camera {
     // camera's position within limits::kMaxLength of the origin on each axis.
     Mat4 view{};
     // View -> Vulkan clip (y down, depth in [0, 1]), perspective: GLM's perspective needs [1][1]
-    // negated (one with clip y up, P[1][1] > 0, is refused). Its field of view on each axis
-    // lies in [limits::kMinFovDegrees, limits::kMaxFovDegrees], its near plane at
+    // negated (one with clip y up, P[1][1] > 0, is refused). Its w row (P[0][3], P[1][3], P[2][3],
+    // P[3][3]) is (0, 0, -1, 0) times a positive scale, clip w the distance along the view axis:
+    // an orthographic projection (w row 0 0 0 1), whose rays are parallel, is refused. Its field of
+    // view on each axis lies in [limits::kMinFovDegrees, limits::kMaxFovDegrees], its near plane at
     // limits::kMinNearPlane or more and its far plane at limits::kMaxLength or less; with
     // standard depth, or a D16/D24 depth buffer, the far plane (or with an infinite far plane
     // medium.maxDistance) is at most 2^b / limits::kDepthStepsPerDistance times the near plane
@@ -335,6 +338,21 @@ LIGHTSCATTER_API Vec3 shaftIntensity(LightType type, const Medium& medium, const
 // layout) to its own use, and its last a barrier from its own use to (finalStages, finalAccess,
 // finalLayout). The fields:
 //
+// - image:
+//     One VkImage may fill several roles of a frame only where the plugin reads it in each
+//     (shadow maps, light colors, noise) and each gives SHADER_READ_ONLY_OPTIMAL as its layout
+//     and finalLayout (two lights sharing a shadow map). An image the plugin writes (color,
+//     inscatterOut, transmittanceOut, volumeOut) in a second role, one image in two layouts or in
+//     another layout, or a depth with DEPTH_STENCIL_ATTACHMENT usage (which the plugin may
+//     depth-test in a depth layout) in a second role is refused naming both fields: the plugin
+//     would read what it writes, or one role's barriers would move the image out of the layout
+//     the other's expect.
+// - format:
+//     One the device can use as the role needs (vkGetPhysicalDeviceFormatProperties, optimal
+//     tiling), or the frame is refused naming the field: SAMPLED_IMAGE for the depth and shadow
+//     maps, a color format with SAMPLED_IMAGE_FILTER_LINEAR for lightColor and noise (sampled
+//     with a linear filter: a depth or integer format is refused), STORAGE_IMAGE for the outputs
+//     and a storage color; each field's own formats are said where it is declared.
 // - usage:
 //     The VkImageUsageFlags the image was created with. The plugin needs SAMPLED (depth,
 //     shadowMap, lightColor) or STORAGE (color, inscatterOut); layouts are checked against these
@@ -557,10 +575,11 @@ struct FroxelVolume {
 LIGHTSCATTER_API FroxelVolume froxelVolume(const FrameDescription& frame,
                                            VkExtent2D maxRenderSize = {0, 0});
 
-// Thrown before anything is recorded when a description breaks a rule; the message names the field
-// (as a path from FrameDescription: "custom.epipolar.slices", "depth.layout"; or from
-// VulkanContext: "context.enabledFeatures") and the rule. The engine's images and command buffer
-// are untouched.
+// Thrown before anything is recorded when a description breaks a rule; the message, one line, names
+// the field (as a path from FrameDescription: "custom.epipolar.slices", "depth.layout"; or from
+// VulkanContext: "context.enabledFeatures"), both fields for a rule between two, and the rule. An
+// enum holding a value that is none of its enumerators (a cast integer) is refused so too, at every
+// entry point that takes one. The engine's images and command buffer are untouched.
 class LIGHTSCATTER_API InvalidInput : public std::invalid_argument {
   public:
     using std::invalid_argument::invalid_argument;

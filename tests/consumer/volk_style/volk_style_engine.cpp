@@ -75,9 +75,21 @@ namespace {
 
 int gMessages = 0;
 
-VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT,
-                                         VkDebugUtilsMessageTypeFlagsEXT,
+// Counts what the validation layer reports: warnings and errors of the validation and performance
+// types, as the project's own device does (rendergraph/device.cpp). General-type messages are
+// notes, such as the loader's warning "env var 'VK_INSTANCE_LAYERS' defined and adding layers"
+// when a user forces the layer on every process: they say nothing about the engine's calls.
+bool reported(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+              VkDebugUtilsMessageTypeFlagsEXT type) {
+    return severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT &&
+           (type & (VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                    VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT)) != 0;
+}
+
+VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                         VkDebugUtilsMessageTypeFlagsEXT type,
                                          const VkDebugUtilsMessengerCallbackDataEXT* data, void*) {
+    if (!reported(severity, type)) return VK_FALSE;
     std::fprintf(stderr, "[validation] %s\n", data->pMessage ? data->pMessage : "");
     ++gMessages;
     return VK_FALSE;
