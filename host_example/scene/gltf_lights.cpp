@@ -16,6 +16,7 @@
 #include <numbers>
 
 #include "scene/glb_bytes.h"
+#include "scene/gltf_json.h"
 #include "scene/input_file.h"
 #include "scene/json_input.h"
 
@@ -38,7 +39,8 @@ class LightReader {
     LightReader(const std::string& path, double scale) : path_(path), scale_(scale) {}
 
     std::vector<GltfLight> read() {
-        const json doc = document();
+        const std::shared_ptr<const json> parsed = document();
+        const json& doc = *parsed;
         if (!doc.is_object()) fail("the top level must be a JSON object");
         const json* lights = at(doc, {"extensions", "KHR_lights_punctual", "lights"});
         if (!lights || !lights->is_array() || lights->empty())
@@ -60,7 +62,7 @@ class LightReader {
   private:
     [[noreturn]] void fail(const std::string& what) const { throw SceneError(path_ + ": " + what); }
 
-    json document() const {
+    std::shared_ptr<const json> document() const {
         std::vector<unsigned char> bytes;
         try {
             bytes = readInputBytes(path_, "glTF file", glb::kFileCap);
@@ -79,7 +81,8 @@ class LightReader {
             end = reinterpret_cast<const char*>(bytes.data()) + jsonEnd;
         }
         try {
-            return parseJson(path_, begin, end, {.refuseDuplicateKeys = false});
+            // Kept for the mesh loader's checks, which read the same text (gltf_json.h).
+            return gltfJson(path_, begin, end, {.refuseDuplicateKeys = false}, true);
         } catch (const JsonInputError& e) {
             throw SceneError(e.what());
         }

@@ -22,6 +22,7 @@
 #include <optional>
 
 #include "scene/glb_bytes.h"
+#include "scene/gltf_json.h"
 #include "scene/input_file.h"
 #include "scene/json_input.h"
 #include "scene/scene.h"
@@ -196,13 +197,15 @@ std::string extensionLabel(const std::string& extension) {
 // become nested tinygltf::Values, one call per level).
 void checkDocument(const std::string& path, const unsigned char* text, size_t size) {
     const auto* begin = reinterpret_cast<const char*>(text);
-    nlohmann::json doc;
+    std::shared_ptr<const nlohmann::json> parsed;
     try {
-        doc = parseJson(path, begin, begin + size,
-                        {.refuseDuplicateKeys = false, .malformedIsDiscarded = true});
+        // The document the lights' reader parsed, when it read this text (gltf_json.h).
+        parsed = gltfJson(path, begin, begin + size,
+                          {.refuseDuplicateKeys = false, .malformedIsDiscarded = true}, false);
     } catch (const JsonInputError& e) {
         throw SceneError(e.what());
     }
+    const nlohmann::json& doc = *parsed;
     if (doc.is_discarded() || !doc.is_object()) return;  // tinygltf names the JSON error
     if (auto asset = doc.find("asset"); asset != doc.end() && asset->is_object()) {
         if (auto version = asset->find("version"); version != asset->end()) {

@@ -15,7 +15,7 @@
 
 #include "image_io.h"
 #include "options_as_run.h"
-#include "scene/json_input.h"
+#include "settings_file.h"
 
 namespace host {
 namespace {
@@ -113,11 +113,10 @@ lightscatter::Settings SettingsPanel::effective(const RenderOptions& o) {
 void checkSettingsSaveTarget(const std::string& path) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) return;  // absent, or refused by the write
-    bool settings = false;
+    // A file the settings reader takes, in either of its forms (nested by method, or flat).
+    bool settings = true;
     try {
-        const nlohmann::json j = readJsonFile(path, "settings file", 1024 * 1024);
-        settings = j.is_object();
-        for (const auto& item : j.items()) settings = settings && findSettingField(item.key());
+        loadSettingsFile(path, lightscatter::Settings{});
     } catch (const std::exception&) {
         settings = false;
     }

@@ -14,6 +14,7 @@
 
 #include "gltf_lights_scene.h"
 #include "host_test_helpers.h"
+#include "scene/gltf_json.h"
 #include "scene/gltf_lights.h"
 #include "scene/scene.h"
 
@@ -339,6 +340,36 @@ TEST_F(GltfLightsTest, TheShippedSceneHasTheLightsWrittenInSceneJson) {
     EXPECT_EQ(a.indices, b.indices);
     for (size_t v = 0; v < a.vertices.size(); ++v)
         ASSERT_EQ(a.vertices[v].position, b.vertices[v].position) << v;
+}
+
+}  // namespace
+
+namespace {
+
+// The glTF's JSON, read for the lights when SCENE.json is read and for the mesh loader's checks
+// after, is parsed once (issue #42: twice); a file changed in between is parsed again, and the
+// document is not kept past the mesh's load. Counted, not timed.
+TEST_F(GltfLightsTest, TheGltfIsParsedOnceForItsLightsAndItsMesh) {
+    const size_t before = host::gltfJsonParses();
+    const host::SceneDesc s =
+        host::loadSceneFile(std::string(LS_SOURCE_DIR) + "/scenes/atrium_gltf_lights.json");
+    const host::MeshData mesh = host::loadSceneMeshes(s);
+    EXPECT_FALSE(mesh.primitives.empty());
+    EXPECT_EQ(host::gltfJsonParses() - before, 1u);
+    // Loaded again, the mesh's checks parse it again: nothing was kept past the first load.
+    host::loadSceneMeshes(s);
+    EXPECT_EQ(host::gltfJsonParses() - before, 2u);
+
+    // The same glTF, changed after its lights were read and before its mesh is loaded.
+    const std::string src = std::string(LS_SOURCE_DIR) + "/scenes/";
+    const std::string gltf = readAll(src + "atrium_gltf_lights.gltf");
+    write("atrium_gltf_lights.gltf", gltf);
+    for (const char* file : {"atrium.bin", "atrium_floor.png"}) write(file, readAll(src + file));
+    const host::SceneDesc changed = host::loadSceneFile(
+        write("scene.json", R"({"gltf": "atrium_gltf_lights.gltf", "lightsFromGltf": true})"));
+    write("atrium_gltf_lights.gltf", gltf + "\n");
+    host::loadSceneMeshes(changed);
+    EXPECT_EQ(host::gltfJsonParses() - before, 4u);
 }
 
 }  // namespace
