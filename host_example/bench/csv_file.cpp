@@ -8,6 +8,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "file_bytes.h"
+
 namespace host::bench {
 
 std::string csvRow(const std::vector<std::string>& fields) {
@@ -51,22 +53,7 @@ CsvFile::~CsvFile() {
 }
 
 void CsvFile::append(const std::string& row) {
-    const char* at = row.data();
-    size_t left = row.size();
-    int error = 0;
-    while (left > 0 && error == 0) {
-        const ssize_t n = ::pwrite(fd_, at, left, size_ + (at - row.data()));
-        if (n < 0 && errno == EINTR) continue;
-        if (n < 0)
-            error = errno;
-        else if (n == 0)
-            error = ENOSPC;
-        else {
-            at += n;
-            left -= static_cast<size_t>(n);
-        }
-    }
-    if (error == 0 && ::fsync(fd_) != 0 && errno != EINVAL) error = errno;
+    const int error = writeAndSync(fd_, row.data(), row.size(), static_cast<off_t>(size_));
     if (error != 0) {
         // No half row for a reader (or the next run's report) to misread; if even this fails,
         // the error below is still the one to report.
