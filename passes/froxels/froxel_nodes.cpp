@@ -68,11 +68,13 @@ float gridStorage(const rg::PassContext& ctx,
 }  // namespace
 
 // A point light's cube map (`cube`, with a shadow map) comes without light color, as cone-march's.
-rg::ShaderCode froxelInjectShader(bool shadowMap, bool lightColor, bool cube) {
+// `slab`: a point or spot light's table is bound, and each froxel takes its slice in closed form.
+rg::ShaderCode froxelInjectShader(bool shadowMap, bool lightColor, bool cube, bool slab) {
     return pickShader(ls_spirv::inject_comp_variants,
                       {{"LS_SHADOW_MAP", shadowMap},
                        {"LS_CUBE_SHADOW", shadowMap && cube},
-                       {"LS_LIGHT_COLOR", lightColor && !(shadowMap && cube)}});
+                       {"LS_LIGHT_COLOR", lightColor && !(shadowMap && cube)},
+                       {"LS_SLAB", slab}});
 }
 
 rg::ShaderCode froxelApplyShader(const CompositeVariant& target) {
@@ -135,12 +137,14 @@ rg::ImageRef addFroxelInjection(rg::RenderGraph& graph, const FroxelInjectInputs
     table
         .sampledIfValid(LS_BINDING_SHADOW_MAP, in.light.shadowMap, s.nearest(),
                         VK_IMAGE_ASPECT_DEPTH_BIT)
-        .sampledIfValid(LS_BINDING_LIGHT_COLOR, in.light.lightColor, s.linear());
+        .sampledIfValid(LS_BINDING_LIGHT_COLOR, in.light.lightColor, s.linear())
+        .sampledIfValid(LS_BINDING_POINT_TABLE, in.light.table, s.nearest());
     const rg::ImageRef scattering =
         first ? table.storageWrite(LS_BINDING_FROXEL_SCATTERING, in.scattering)
               : table.storageReadWrite(LS_BINDING_FROXEL_SCATTERING, in.scattering);
     const bool shadow = in.light.shadowMap.valid(), color = in.light.lightColor.valid();
-    pass.execute([frame = in.chain, table, grid, first, shadow, color,
+    const bool slab = in.light.table.valid();
+    pass.execute([frame = in.chain, table, grid, first, shadow, color, slab,
                   history = in.history](rg::PassContext& ctx) {
         const LightFrame& values = ctx.data(frame.values);
         FroxelPush push = froxelPush(values.constants, grid, 1.0f);
@@ -157,14 +161,20 @@ rg::ImageRef addFroxelInjection(rg::RenderGraph& graph, const FroxelInjectInputs
         rg::Specialization spec = frame.spec.constants();
         spec.set(LS_SPEC_FROXEL_FIRST_LIGHT, first);
         const auto& p = frame.shared->pipelines.compute(
-            "froxel light injection", froxelInjectShader(shadow, color, frame.spec.cubeShadow),
-            table.layout(), sizeof(FroxelPush), spec);
+            "froxel light injection",
+            froxelInjectShader(shadow, color, frame.spec.cubeShadow, slab), table.layout(),
+            sizeof(FroxelPush), spec);
         p.bind(ctx.cmd());
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         p.push(ctx.cmd(), push);
         const uint32_t w = first ? grid.columns : x1 - x0, h = first ? grid.rows : y1 - y0;
-        ctx.vk().CmdDispatch(ctx.cmd(), groupCount(w, 4), groupCount(h, 4),
-                             groupCount(grid.slices, 4));
+        // The closed form marches each column in one invocation (8 x 8 columns a group); the
+        // point samples take a froxel each (4 x 4 x 4).
+        if (slab)
+            ctx.vk().CmdDispatch(ctx.cmd(), groupCount(w, 8), groupCount(h, 8), 1);
+        else
+            ctx.vk().CmdDispatch(ctx.cmd(), groupCount(w, 4), groupCount(h, 4),
+                                 groupCount(grid.slices, 4));
     });
     return scattering;
 }

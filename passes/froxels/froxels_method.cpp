@@ -69,6 +69,10 @@ std::string refuseFarDistance(const LightSetup& s) {
 
 }  // namespace
 
+bool FroxelsMethod::readsTable(const LightSetup& s) const {
+    return pointLike(s);
+}
+
 std::string FroxelsMethod::refusal(const LightSetup& s) const {
     return refuseFarDistance(s);
 }

@@ -316,16 +316,22 @@ TEST_F(LightsReferenceGpu, FroxelsTakeEveryLightIntoOneGrid) {
         const host::SceneDesc alone = withLights(scene, [&](size_t k) { return k == i; });
         host::EngineRenderer one(dev(), alone, mesh, kLightsSize);
         const host::FrameOutput o = one.render(froxelOptions(2));
-        double diff = 0, total = 0;
+        double diff = 0, total = 0, mine = 0;
         for (size_t p = 0; p < kPixels; ++p)
             for (size_t c = 0; c < 3; ++c) {
+                mine += o.inscatter[p * 4 + c];
                 sum[p * 4 + c] += o.inscatter[p * 4 + c];
                 diff += std::fabs(o.inscatter[p * 4 + c] - ref.light[i][p * 3 + c]);
                 total += ref.light[i][p * 3 + c];
             }
-        std::printf("froxels, light %zu alone: mean relative error %.4f\n", i, diff / total);
-        // A missing light is 1 off, a light counted twice 1 or more.
+        std::printf("froxels, light %zu alone: mean relative error %.4f, energy %.4f\n", i,
+                    diff / total, mine / total);
+        // A missing light is 1 off, a light counted twice 1 or more. Its energy, the image's sum
+        // over the reference's (measured 1.02, 0.91 and 1.14; the second spot's apex, seen from
+        // the side at 64x36, took 2.2 before inject.comp bounded the froxel that holds the
+        // light): 0 for a missing light, 2 for one counted twice.
         EXPECT_LT(diff / total, i == 0 ? 0.1 : 0.6) << "light " << i;
+        EXPECT_NEAR(mine / total, 1.0, 0.25) << "light " << i;
     }
     double diff = 0, total = 0;
     for (size_t p = 0; p < kPixels; ++p)
