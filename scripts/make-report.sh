@@ -38,6 +38,14 @@
 #                                          # tables at the seed's size, settings and shadow maps, with the
 #                                          # seed's figures and a verdict per row ("Seed 000's results beside
 #                                          # ours", "Seed 003's ..."); timings only: a quiet machine
+#   scripts/make-report.sh --families-only # bench/froxels_families.json (the froxel grid's sweep and
+#                                          # epipolar's six profiles at 1920x1080, timed and measured:
+#                                          # a quiet machine), its plot, and "Froxels against epipolar:
+#                                          # the two families" spliced into the page
+#   scripts/make-report.sh --froxels-near-only # bench/froxels_near_light.json (froxels on lights on or
+#                                          # beside the screen at 1280x720 against the float64
+#                                          # reference; errors only, any machine) and "Froxels near
+#                                          # the light" spliced into the page
 #   scripts/make-report.sh --froxels-motion-only # bench/froxels_flicker.json (froxels plain and temporal
 #                                          # under bench/flicker.json's motions at 160x90, beside epipolar
 #                                          # balanced and brute force; about 40 minutes on 2 cores the first
@@ -179,6 +187,24 @@ if [[ "$config" == --reference-only ]]; then
     --json "$dir/reference_timing.json" "${scenes[@]}"
   /usr/bin/python3 scripts/write_report.py --reference-section "$dir" docs/performance.md
   echo "docs/performance.md: section 'The reference renderer's time' replaced"
+  exit 0
+fi
+if [[ "$config" == --families-only ]]; then
+  # Timings: run it on a quiet machine. The 1920x1080 references stay in build/bench-froxels-families.
+  dir=build/bench-froxels-families
+  mkdir -p "$dir"
+  uptime > "$dir/load-before.txt"
+  ./build/host_example/lightscatter bench --config bench/froxels_families.json --out "$dir"
+  uptime > "$dir/load-after.txt"
+  /usr/bin/python3 -c "import sys; sys.path.insert(0, 'scripts'); from report import families; families.plot('$dir', '$out')"
+  /usr/bin/python3 scripts/write_report.py --families-section "$dir" docs/performance.md
+  echo "docs/performance.md: section 'Froxels against epipolar: the two families' replaced"
+  exit 0
+fi
+if [[ "$config" == --froxels-near-only ]]; then
+  ./build/host_example/lightscatter bench --config bench/froxels_near_light.json --out build/bench-froxels-near
+  /usr/bin/python3 scripts/write_report.py --froxels-near-section build/bench-froxels-near docs/performance.md
+  echo "docs/performance.md: section 'Froxels near the light' replaced"
   exit 0
 fi
 if [[ "$config" == --froxels-motion-only ]]; then

@@ -7,6 +7,9 @@ that a later measurement updates it and the two cannot disagree.
     tools/readme_table.py --check [REPO_ROOT]    exit 1 if README.md's table is not what it writes
     tools/readme_table.py --self-test            checks the rules on a small made-up page
 
+The second table, when the page has it, is the section "Froxels against epipolar: the two families":
+per scene, the grid's error at epipolar balanced's time and epipolar's time at the grid's error.
+
 The figures are the section "Against froxel fog" of docs/performance.md: one run of
 bench/froxels.json at 1920x1080 (every scene timed and measured against the float64 reference in
 the same run), and its table of the cost of N shadowed spots. The rules:
@@ -143,7 +146,56 @@ def table(page):
             f"figures, and only ratios within that run carry over), "
             f"`lightscatter bench --config bench/froxels.json`, with `bench/lights_scaling.json` for the last "
             f"row. `tools/readme_table.py` writes this table from that section; CTest `docs.readme_table` "
-            f"checks that it is what the section gives.", "", END]
+            f"checks that it is what the section gives."]
+    out += families_table(page)
+    out += ["", END]
+    return out
+
+
+FAMILIES = "## Froxels against epipolar: the two families"
+FAMILIES_HEADER = ["scene", "epipolar balanced", "froxels' time at its error", "froxels' error at its time",
+                   "froxels 8 px x 64", "epipolar's time at its error", "epipolar's error at its time"]
+
+
+def ratio_in(cell):
+    """The first 'N.NNx' of a cell, or None."""
+    m = re.search(r"([\d.]+(?:e[-+]?\d+)?)x", cell)
+    return float(m.group(1)) if m else None
+
+
+def families_table(page):
+    """The lines of the two families' table (which family wins where, and by how much), read from the
+    section FAMILIES; none when the page has no such section or it has no read-off table yet."""
+    lines = page.split("\n")
+    if FAMILIES not in lines:
+        return []
+    start = lines.index(FAMILIES)
+    end = next((i for i in range(start + 1, len(lines)) if lines[i].startswith("## ")), len(lines))
+    found = [t for t in tables(lines[start:end]) if t[0] == FAMILIES_HEADER]
+    run = next((l for l in lines[start:end] if l.startswith("Measured on ")), None)
+    if not found or run is None:
+        return []
+    date = re.match(r"Measured on (\d{4}-\d{2}-\d{2})", run).group(1)
+    out = ["", "| scene | epipolar balanced | the grid at that time | froxels-hdrp's grid | epipolar at that error |",
+           "|---|---|---|---|---|"]
+    for r in found[0][1]:
+        out.append(f"| {SCENES.get(r[0], f'`{r[0]}`')} | {r[1]} | {r[3]} | {r[4]} | {r[5]} |")
+    errors = [ratio_in(r[3]) for r in found[0][1]]
+    times = [ratio_in(r[5]) for r in found[0][1]]
+    errors = [e for e in errors if e is not None]
+    times = [t for t in times if t is not None]
+    summary = ""
+    if errors and times:
+        summary = (f" At epipolar balanced's time the grid's error is {min(errors):.3g}x to {max(errors):.3g}x "
+                   f"epipolar's; epipolar at the grid's error takes {min(times):.3g}x to {max(times):.3g}x the "
+                   f"grid's time (for a parenthesis that says 'its cheapest', epipolar's cheapest profile is already "
+                   f"more accurate, so it needs no more).")
+    out += ["", "Which family wins where: each family's time-against-error curve on the same frames, read off at "
+            "the other's usual configuration (epipolar balanced; `froxels-hdrp`'s grid, 8-pixel columns and 64 "
+            "slices). The grid is the cheaper and epipolar the more accurate wherever the curves do not meet "
+            "('not reached')." + summary + f" Figures: [docs/performance.md](docs/performance.md#froxels-against-"
+            f"epipolar-the-two-families), one run at 1920x1080 on {date} on lavapipe (CPU timings), "
+            "`lightscatter bench --config bench/froxels_families.json`."]
     return out
 
 
@@ -168,12 +220,18 @@ def self_test():
         "| atrium_lights | brute-force | 2000 (1900-2100) | 1 | 0.01 | 0 | 0 | - |",
         "| atrium_lights | froxels-unreal | 20 (9-11) | 100 | 0.05 | 0 | 0 | 1 |",
         "", "| lights | brute-force ms | epipolar balanced ms | froxels-unreal ms |", "|---|---|---|---|",
-        "| 1 | 100 | 50 | 10 |", "| 8 | 800 | 400 | 40 |", "", "## Next", ""])
+        "| 1 | 100 | 50 | 10 |", "| 8 | 800 | 400 | 40 |", "", FAMILIES, "", "Measured on 2030-01-03 with `y`.", "",
+        "| " + " | ".join(FAMILIES_HEADER) + " |", "|---|---|---|---|---|---|---|",
+        "| s1 | 300 ms, 0.01 | not reached (best g: 70 ms, 0.08) | 0.08 (8x) | 20 ms, 0.3 | "
+        "under 150 ms (7.5x; its cheapest, 0.012) | not reached (cheapest e: 150 ms, 0.012) |",
+        "", "## Next", ""])
     out = "\n".join(table(page))
     expected = ["| `s1` | `epipolar`, balanced | 100 ms | 10x | 0.0105 (0.01) |",
                 "| a sun and two shadowed spots (`atrium_lights`) | `epipolar`, balanced | 100 ms | 10x | 0.01 (0.01) |",
                 "| 8 shadowed spots (`atrium_spots_8`), blurred shafts accepted | `froxels-unreal` | 40 ms | 20x | "
-                "not measured at 8 lights; 5x epipolar balanced's on `atrium_lights` |", "on 2030-01-02"]
+                "not measured at 8 lights; 5x epipolar balanced's on `atrium_lights` |", "on 2030-01-02",
+                "| `s1` | 300 ms, 0.01 | 0.08 (8x) | 20 ms, 0.3 | under 150 ms (7.5x; its cheapest, 0.012) |",
+                "the grid's error is 8x to 8x epipolar's", "one run at 1920x1080 on 2030-01-03"]
     missing = [e for e in expected if e not in out]
     for m in missing:
         print(f"self-test: expected {m!r} in:\n{out}")

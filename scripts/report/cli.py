@@ -13,6 +13,8 @@ from . import flicker
 from .common import splice_section, with_kept_sections
 from .froxels import FROXELS_HEADING, froxels_section
 from .froxels_motion import FROXELS_MOTION_HEADING, froxels_motion_section
+from .froxels_near import FROXELS_NEAR_HEADING, froxels_near_section
+from . import families
 from .seeds import (SEED000_HEADING, SEED002_HEADING, SEED003_HEADING, SEED004_HEADING, seed000_section,
                     seed002_section, seed003_section, seed004_section)
 from .gpu import GPU_HEADING, gpu_section
@@ -53,6 +55,11 @@ SECTIONS = {
                 lambda dirs, page: (froxels_section(dirs[0], dirs[1]), FROXELS_HEADING)),
     "froxels-motion": (("MOTION_DIR",), "a bench run of bench/froxels_flicker.json",
                        lambda dirs, page: (froxels_motion_section(dirs[0]), FROXELS_MOTION_HEADING)),
+    "families": (("FAMILIES_DIR",), "a bench run of bench/froxels_families.json (its plot goes beside the page)",
+                 lambda dirs, page: (families.families_section(dirs[0], page.parent / "performance" if page else None),
+                                     families.FAMILIES_HEADING)),
+    "froxels-near": (("NEAR_DIR",), "a bench run of bench/froxels_near_light.json",
+                     lambda dirs, page: (froxels_near_section(dirs[0]), FROXELS_NEAR_HEADING)),
     "seed000": (("GTX680_DIR", "QUADRO_DIR", "INTEL_DIR", "DIRECTIONAL_DIR", "TREES_DIR"),
                 "bench runs of bench/seed000_{gtx680,quadro,intel,directional,trees}.json (budget-*.json beside)",
                 lambda dirs, page: (seed000_section(dict(zip(
