@@ -70,7 +70,9 @@ std::string refuseFarDistance(const LightSetup& s) {
 }  // namespace
 
 bool FroxelsMethod::readsTable(const LightSetup& s) const {
-    return pointLike(s);
+    // The closed form holds in a homogeneous medium under the full model; elsewhere the grid keeps
+    // its point samples and builds no table.
+    return pointLike(s) && !s.medium.nonUniform() && !simplifiedModel(s);
 }
 
 std::string FroxelsMethod::refusal(const LightSetup& s) const {

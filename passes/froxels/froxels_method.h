@@ -20,7 +20,8 @@ class FroxelsMethod final : public MethodUnit {
     std::vector<SettingsField> settingsFields() const override;
     std::vector<lightscatter::MethodPreset> presets() const override;
     std::string refusal(const LightSetup& light) const override;
-    // A point or spot light's froxels take their slices in closed form (inject.comp's LS_SLAB).
+    // A point or spot light's froxels take their slices in closed form (inject.comp's LS_SLAB), in
+    // a homogeneous medium under the full light model.
     bool readsTable(const LightSetup& light) const override;
     ChainOptions options(const LightSetup& light, const LightData*,
                          const ChainOptions*) const override;

@@ -47,13 +47,9 @@ layout(binding = LS_BINDING_FROXEL_SCATTERING, rgba32f) uniform image3D scatteri
 // The frame's first light: every froxel is written. Later lights: their columns only, added.
 layout(constant_id = LS_SPEC_FROXEL_FIRST_LIGHT) const bool kFirstLight = true;
 
-// The point sample: the light's irradiance at one point of the froxel (its centre, or the temporal
-// mode's jittered point) times the phase sum.
-vec3 pointSample(vec3 C, vec3 v, int slice) {
-    float z = sliceZ(float(slice) + pc.jitter.z);
-    float cosTheta;
-    vec3 irr = lightAt(C + v * (z / axisCosine(v)), v, 0.0, cosTheta);
-    return phaseSum(cosTheta) * irr;
+// Whether the light's screen rectangle reaches the column.
+bool reachesColumn(ivec2 column) {
+    return all(greaterThanEqual(vec2(column), pc.columns.xy)) && all(lessThan(vec2(column), pc.columns.zw));
 }
 
 void store(ivec3 f, vec3 s) {
@@ -86,22 +82,20 @@ vec3 slabScattering(vec3 C, vec3 v, float s0, float s1) {
 // unshadowed Lin over its part in the light's volume, times the shadow and color at that part's
 // middle. One invocation marches the column front to back, so each slice boundary's closed form is
 // evaluated once and the light's volume is met once per ray: the cost of the point samples it
-// replaces.
+// replaces. The host picks this variant only for a point or spot light in a homogeneous medium
+// under the full model (FroxelsMethod::readsTable); the others keep the point samples.
 void main() {
     ivec3 g = ivec3(pc.grid.xyz);
     ivec2 column = ivec2(gl_GlobalInvocationID.xy);
     if (!kFirstLight) column += ivec2(pc.columns.xy);
     if (any(greaterThanEqual(column, g.xy))) return;
-    bool reached = all(greaterThanEqual(vec2(column), pc.columns.xy)) &&
-                   all(lessThan(vec2(column), pc.columns.zw));
+    if (!reachesColumn(column)) {
+        for (int z = 0; z < g.z; ++z) store(ivec3(column, z), vec3(0.0));
+        return;
+    }
     vec3 C = frame.cameraPos.xyz;
     vec3 v = rayDirection(columnNdc(vec2(column), pc.jitter.xy));
     float perZ = 1.0 / axisCosine(v);
-    if (!reached || kMedia != 0 || kSimplifiedModel || kLightType == LIGHT_DIRECTIONAL) {
-        // A non-uniform medium and seed 004's simplified model keep the point sample.
-        for (int z = 0; z < g.z; ++z) store(ivec3(column, z), reached ? pointSample(C, v, z) : vec3(0.0));
-        return;
-    }
     float t0, t1;
     lightInterval(C, v, sliceZ(float(g.z)) * perZ, t0, t1);
     Inscatter a = beginInscatter(C, v, max(t0, 0.0));
@@ -147,9 +141,13 @@ void main() {
     if (!kFirstLight) f.xy += ivec2(pc.columns.xy);
     if (any(greaterThanEqual(f, g))) return;
     vec3 s = vec3(0.0);
-    if (all(greaterThanEqual(vec2(f.xy), pc.columns.xy)) && all(lessThan(vec2(f.xy), pc.columns.zw))) {
+    if (reachesColumn(f.xy)) {
         vec3 v = rayDirection(columnNdc(vec2(f.xy), pc.jitter.xy));
-        s = pointSample(frame.cameraPos.xyz, v, f.z);
+        float z = sliceZ(float(f.z) + pc.jitter.z);
+        vec3 P = frame.cameraPos.xyz + v * (z / axisCosine(v));
+        float cosTheta;
+        vec3 irr = lightAt(P, v, 0.0, cosTheta);
+        s = phaseSum(cosTheta) * irr;
     }
     store(f, s);
 }
