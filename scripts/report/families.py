@@ -57,21 +57,16 @@ def error_at_time(curve, time):
 
 
 def read_offs(points):
-    """The scene's read-off figures: {family: (its default point, the other's time at its error, the
-    other's error at its time, the other's nearest point)}."""
+    """The scene's fronts, and per family the read-off against its usual point: {family: (that point,
+    the other's time at its error, the other's error at its time)}, each None where the other's front
+    does not reach it."""
     curves = {f: front([p for p in points if family_of(p[2]) == f]) for f in ("froxels", "epipolar")}
     out = {}
     for mine, other, default in (("epipolar", "froxels", EPIPOLAR_DEFAULT), ("froxels", "epipolar", FROXELS_DEFAULT)):
         at = next((p for p in points if p[2] == default), None)
         if at is None or not curves[other]:
             continue
-        t = time_at_error(curves[other], at[1])
-        e = error_at_time(curves[other], at[0])
-        # Where the other family does not reach this point: its most accurate point (for an
-        # error) or its cheapest (for a time).
-        nearest = (min(curves[other], key=lambda p: p[1]) if t is None else None,
-                   curves[other][0] if e is None else None)
-        out[mine] = (at, t, e, nearest)
+        out[mine] = (at, time_at_error(curves[other], at[1]), error_at_time(curves[other], at[0]))
     return out, curves
 
 
@@ -110,7 +105,7 @@ def families_section(bench_dir, image_dir=None):
     p("| scene | epipolar balanced | froxels' time at its error | froxels' error at its time | froxels 8 px x 64 | "
       "epipolar's time at its error | epipolar's error at its time |")
     p("|---|---|---|---|---|---|---|")
-    verdicts = []
+    apart = []
     for scene in scenes:
         offs, curves = read_offs(points[scene])
         cells = []
@@ -118,28 +113,30 @@ def families_section(bench_dir, image_dir=None):
             if fam not in offs:
                 cells += ["-", "-", "-"]
                 continue
-            at, t, e, (most_accurate, cheapest) = offs[fam]
+            at, t, e = offs[fam]
             cells.append(f"{fmt(at[0])} ms, {fmt(at[1])}")
+            # Where the other front does not reach the point, its nearest: the most accurate point
+            # for an error, the cheapest for a time (a front's first point is its cheapest).
             cheapest_other = curves[other][0]
             if t is None:
-                cells.append(f"not reached (best {_point(most_accurate)})")
+                cells.append(f"not reached (best {_point(min(curves[other], key=lambda q: q[1]))})")
             elif t == cheapest_other[0] and cheapest_other[1] < at[1]:
                 # Its cheapest point is already more accurate: it needs no more than that.
                 cells.append(f"under {fmt(t)} ms ({fmt(t / at[0])}x; its cheapest, {fmt(cheapest_other[1])})")
             else:
                 cells.append(f"{fmt(t)} ms ({fmt(t / at[0])}x)")
             cells.append(f"{fmt(e)} ({fmt(e / at[1])}x)" if e is not None
-                         else f"not reached (cheapest {_point(cheapest)})")
+                         else f"not reached (cheapest {_point(cheapest_other)})")
         p(f"| {scene} | " + " | ".join(cells) + " |")
         ep, fx = curves["epipolar"], curves["froxels"]
-        overlap = min(p_[1] for p_ in fx) <= max(p_[1] for p_ in ep)
-        verdicts.append((scene, overlap, min(fx, key=lambda q: q[1]), ep[0], fx[0]))
+        # A front's last point is its most accurate, its first its cheapest and least accurate.
+        if fx[-1][1] > ep[0][1]:
+            apart.append((scene, fx[-1], ep[0]))
     p("")
-    apart = [v for v in verdicts if not v[1]]
     if apart:
         p("Where the curves do not overlap (the grid's most accurate point is still less accurate than "
           "epipolar's least accurate), the nearest point of each: " + "; ".join(
-              f"{s}: the grid's most accurate, {_point(b)}; epipolar's cheapest, {_point(c)}" for s, _, b, c, _ in apart) + ".\n")
+              f"{s}: the grid's most accurate, {_point(b)}; epipolar's cheapest, {_point(c)}" for s, b, c in apart) + ".\n")
     return out
 
 
