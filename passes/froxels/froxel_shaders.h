@@ -7,8 +7,9 @@
 
 namespace ls {
 
-// A light's injection: its shadow map (a point light's cube) and light color, where it has them.
-rg::ShaderCode froxelInjectShader(bool shadowMap, bool lightColor, bool cube);
+// A light's injection: its shadow map (a point light's cube) and light color, where it has them;
+// `noise`: the temporal mode's, each froxel jittered by the blue-noise tile.
+rg::ShaderCode froxelInjectShader(bool shadowMap, bool lightColor, bool cube, bool noise);
 // The apply pass, compositing into an engine color of `color`'s format, and into the Lin output.
 rg::ShaderCode froxelApplyShader(const CompositeVariant& target);
 

@@ -130,7 +130,9 @@ TEST(ShaderVariants, FroxelNodesAskForBuiltVariants) {
     Reached inject, apply;
     for (bool shadow : {false, true})
         for (bool color : {false, true})
-            for (bool cube : {false, true}) reach(inject, froxelInjectShader(shadow, color, cube));
+            for (bool cube : {false, true})
+                for (bool noise : {false, true})
+                    reach(inject, froxelInjectShader(shadow, color, cube, noise));
     forEachTarget([&](const CompositeVariant& t) { reach(apply, froxelApplyShader(t)); });
     expectAllReached(ls_spirv::inject_comp_variants, inject);
     expectAllReached(ls_spirv::apply_comp_variants, apply);
