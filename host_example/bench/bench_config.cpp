@@ -325,16 +325,18 @@ class ConfigReader {
                 key != "cameraDegreesPerFrame")
                 fail("motion: unknown key '" + echoText(key) + "' (known: " + known + ")");
         if (!v.contains("what"))
-            fail("motion.what is required: \"light\", \"camera\" or both in an array");
+            fail("motion.what is required: \"light\", \"camera\", \"still\" or an array of them");
         Motion m;
         const json what = v["what"].is_string() ? json::array({v["what"]}) : v["what"];
         if (!what.is_array() || what.empty())
             fail("motion.what = " + echo(v["what"]) +
-                 ": must be \"light\", \"camera\" or a non-empty array of them");
+                 ": must be \"light\", \"camera\", \"still\" or a non-empty array of them");
         for (const json& w : what) {
-            if (w != "light" && w != "camera")
-                fail("motion.what[] = " + echo(w) + ": must be \"light\" or \"camera\"");
-            const MotionKind kind = w == "light" ? MotionKind::Light : MotionKind::Camera;
+            if (w != "light" && w != "camera" && w != "still")
+                fail("motion.what[] = " + echo(w) + ": must be \"light\", \"camera\" or \"still\"");
+            const MotionKind kind = w == "light"    ? MotionKind::Light
+                                    : w == "camera" ? MotionKind::Camera
+                                                    : MotionKind::Still;
             if (std::find(m.what.begin(), m.what.end(), kind) != m.what.end())
                 fail("motion.what lists " + echo(w) + " twice");
             m.what.push_back(kind);

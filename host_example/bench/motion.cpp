@@ -23,11 +23,20 @@ glm::dvec3 rotate(const glm::dvec3& v, double degrees, const glm::dvec3& axis) {
 }  // namespace
 
 const char* motionName(MotionKind what) {
-    return what == MotionKind::Light ? "light" : "camera";
+    switch (what) {
+        case MotionKind::Light:
+            return "light";
+        case MotionKind::Camera:
+            return "camera";
+        case MotionKind::Still:
+            return "still";
+    }
+    return "?";
 }
 
 SceneDesc poseAt(const SceneDesc& start, MotionKind what, const Motion& motion, int frame) {
     SceneDesc s = start;
+    if (what == MotionKind::Still) return s;
     const double k = frame;
     const glm::dvec3 right = cameraRight(start.camera);
     if (what == MotionKind::Camera) {

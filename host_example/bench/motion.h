@@ -8,7 +8,9 @@
 
 namespace host::bench {
 
-enum class MotionKind { Light, Camera };
+// Still: nothing moves, so that what a method that keeps history (froxels' temporal mode) settles
+// on after the warm-up is judged on the same frames as its motions.
+enum class MotionKind { Light, Camera, Still };
 
 struct Motion {
     std::vector<MotionKind> what;  // each measured on its own, from the scene's own pose

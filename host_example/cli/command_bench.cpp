@@ -335,8 +335,10 @@ int runBench(Args& args) {
                 }
                 cpuTotals.push_back(cpu);
                 if (motion) {
+                    // A still pass's frames share one pose, so one reference.
+                    const int pose = *motion == bench::MotionKind::Still ? 0 : i;
                     lastReference =
-                        &reference(run.scene + "|" + motionName + "|" + std::to_string(i),
+                        &reference(run.scene + "|" + motionName + "|" + std::to_string(pose),
                                    " " + motionName + " " + std::to_string(i + 1) + "/" +
                                        std::to_string(frames));
                     flicker.add(last.inscatter, *lastReference);

@@ -48,14 +48,19 @@ struct FroxelTemporalPush {
 };
 static_assert(sizeof(FroxelTemporalPush) <= 128, "Vulkan guarantees 128 bytes of push constants");
 
-float halton(uint32_t i, uint32_t base) {
-    float f = 1.0f, r = 0.0f;
-    for (; i > 0; i /= base) {
-        f /= float(base);
-        r += f * float(i % base);
-    }
-    return r;
-}
+// The temporal mode's points spread over the middle half of each froxel along each axis, not the
+// whole of it: the apply's trilinear fetch already spreads a froxel's value over the froxels on
+// either side, and the whole froxel's average blurred the shafts more than it took off the plain
+// grid's aliasing on the bench's still scenes (docs/methods.md, "The temporal mode").
+constexpr float kJitterSpread = 0.5f;
+// Where a light changed, a history this many widths of this frame's neighbourhood range outside
+// it is dropped: further than the jitter can take a froxel's samples.
+constexpr float kDropOutside = 1.0f;
+// A light that moved or turned by more than this (PreviousFrame::lightJump; radians, 1 degree)
+// drops the whole history, as a camera cut does: its shafts are elsewhere, and where they are as
+// dense as a roof's slats, this frame's neighbourhood spans the old ones too and clamps nothing.
+// A light animated slowly moves far less a frame (bench/flicker.json's: 0.1 degree, or 2 cm).
+constexpr float kLightJump = 0.0175f;
 
 // The smallest Lin scale of the frame's lights: the integrated grid holds all of them.
 float gridStorage(const rg::PassContext& ctx,
@@ -69,21 +74,25 @@ float gridStorage(const rg::PassContext& ctx,
 
 // A point light's cube map (`cube`, with a shadow map) comes without light color, as cone-march's.
 // `slab`: a point or spot light's table is bound, and each froxel takes its slice in closed form.
-rg::ShaderCode froxelInjectShader(bool shadowMap, bool lightColor, bool cube, bool slab) {
+rg::ShaderCode froxelInjectShader(bool shadowMap, bool lightColor, bool cube, bool slab,
+                                  bool noise) {
     return pickShader(ls_spirv::inject_comp_variants,
                       {{"LS_SHADOW_MAP", shadowMap},
                        {"LS_CUBE_SHADOW", shadowMap && cube},
                        {"LS_LIGHT_COLOR", lightColor && !(shadowMap && cube)},
-                       {"LS_SLAB", slab}});
+                       {"LS_SLAB", slab},
+                       {"LS_FROXEL_NOISE", noise}});
 }
 
 rg::ShaderCode froxelApplyShader(const CompositeVariant& target) {
     return pickCompositeShader(ls_spirv::apply_comp_variants, {}, target);
 }
 
-glm::vec3 froxelJitter(uint32_t index) {
-    const uint32_t i = index % 16 + 1;
-    return {halton(i, 2), halton(i, 3), halton(i, 5)};
+glm::vec3 froxelJitterStep(uint32_t index) {
+    // 1 / g^k for g the plastic number's three-dimensional kin, x = x^4 - 1's real root above 1.
+    constexpr double g = 1.2207440846057594754;
+    const glm::dvec3 a(1.0 / g, 1.0 / (g * g), 1.0 / (g * g * g));
+    return glm::vec3(glm::fract(a * double(index)));
 }
 
 rg::PersistentImageDesc froxelHistoryDesc(const FroxelGrid& grid) {
@@ -139,16 +148,18 @@ rg::ImageRef addFroxelInjection(rg::RenderGraph& graph, const FroxelInjectInputs
                         VK_IMAGE_ASPECT_DEPTH_BIT)
         .sampledIfValid(LS_BINDING_LIGHT_COLOR, in.light.lightColor, s.linear())
         .sampledIfValid(LS_BINDING_POINT_TABLE, in.light.table, s.nearest());
+    if (in.noise.valid()) table.storageRead(LS_BINDING_FROXEL_NOISE, in.noise);
     const rg::ImageRef scattering =
         first ? table.storageWrite(LS_BINDING_FROXEL_SCATTERING, in.scattering)
               : table.storageReadWrite(LS_BINDING_FROXEL_SCATTERING, in.scattering);
     const bool shadow = in.light.shadowMap.valid(), color = in.light.lightColor.valid();
-    const bool slab = in.light.table.valid();
-    pass.execute([frame = in.chain, table, grid, first, shadow, color, slab,
+    const bool slab = in.light.table.valid(), noise = in.noise.valid();
+    pass.execute([frame = in.chain, table, grid, first, shadow, color, slab, noise,
                   history = in.history](rg::PassContext& ctx) {
         const LightFrame& values = ctx.data(frame.values);
         FroxelPush push = froxelPush(values.constants, grid, 1.0f);
-        if (history.valid()) push.jitter = glm::vec4(froxelJitter(ctx.history(history).age), 0.0f);
+        if (noise)
+            push.jitter = glm::vec4(froxelJitterStep(ctx.history(history).age), kJitterSpread);
         // The columns the light's volume may reach (its screen rectangle, in froxels).
         const VkRect2D r = values.screenRect;
         const uint32_t x0 = uint32_t(r.offset.x) / grid.tile, y0 = uint32_t(r.offset.y) / grid.tile;
@@ -162,7 +173,7 @@ rg::ImageRef addFroxelInjection(rg::RenderGraph& graph, const FroxelInjectInputs
         spec.set(LS_SPEC_FROXEL_FIRST_LIGHT, first);
         const auto& p = frame.shared->pipelines.compute(
             "froxel light injection",
-            froxelInjectShader(shadow, color, frame.spec.cubeShadow, slab), table.layout(),
+            froxelInjectShader(shadow, color, frame.spec.cubeShadow, slab, noise), table.layout(),
             sizeof(FroxelPush), spec);
         p.bind(ctx.cmd());
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
@@ -179,26 +190,25 @@ rg::ImageRef addFroxelInjection(rg::RenderGraph& graph, const FroxelInjectInputs
     return scattering;
 }
 
-FroxelTemporalOutputs addFroxelTemporalBlend(rg::RenderGraph& graph, const FroxelTemporalInputs& in,
-                                             const FroxelGrid& grid) {
+rg::ImageRef addFroxelTemporalBlend(rg::RenderGraph& graph, const FroxelTemporalInputs& in,
+                                    const FroxelGrid& grid) {
     auto pass = graph.addPass("froxel temporal blend", rg::PassType::Compute);
     rg::BindingTable table = frameTable(pass, in.chain.constants);
-    FroxelTemporalOutputs out;
-    out.scattering = table.storageReadWrite(LS_BINDING_FROXEL_SCATTERING, in.scattering);
+    table.storageRead(LS_BINDING_FROXEL_SCATTERING, in.scattering);
     table.storageRead(LS_BINDING_FROXEL_HISTORY, in.history);
-    out.historyOut = table.storageWrite(LS_BINDING_FROXEL_HISTORY_OUT, in.historyOut);
+    const rg::ImageRef blended = table.storageWrite(LS_BINDING_FROXEL_HISTORY_OUT, in.historyOut);
     pass.execute([frame = in.chain, previous = in.previous, history = in.history,
                   weight = in.weight, table, grid](rg::PassContext& ctx) {
-        const FrameConstants& then = ctx.data(previous).constants;
-        const bool valid = ctx.history(history).valid;
+        const PreviousFrame& before = ctx.data(previous);
+        const bool valid = ctx.history(history).valid && before.lightJump <= kLightJump;
         const FroxelPush now = froxelPush(ctx.data(frame.values).constants, grid, 1.0f);
-        const FroxelPush before = froxelPush(then, grid, 1.0f);
+        const FroxelPush then = froxelPush(before.constants, grid, 1.0f);
         FroxelTemporalPush push{};
         push.grid = now.grid;
         push.slices = now.slices;
-        push.previousViewProj = then.viewProj;
-        push.previousSlices = glm::vec4(glm::vec3(before.slices), valid ? 1.0f : 0.0f);
-        push.blend = {weight, 0.0f, 0.0f, 0.0f};
+        push.previousViewProj = before.constants.viewProj;
+        push.previousSlices = glm::vec4(glm::vec3(then.slices), valid ? 1.0f : 0.0f);
+        push.blend = {weight, before.lightsChanged ? 1.0f : 0.0f, kDropOutside, 0.0f};
         const auto& p = frame.shared->pipelines.compute(
             "froxel temporal blend", rg::spirv(ls_spirv::temporal_comp), table.layout(),
             sizeof(FroxelTemporalPush), {});
@@ -208,7 +218,7 @@ FroxelTemporalOutputs addFroxelTemporalBlend(rg::RenderGraph& graph, const Froxe
         ctx.vk().CmdDispatch(ctx.cmd(), groupCount(grid.columns, 4), groupCount(grid.rows, 4),
                              groupCount(grid.slices, 4));
     });
-    return out;
+    return blended;
 }
 
 rg::ImageRef addFroxelIntegration(rg::RenderGraph& graph, const FroxelIntegrateInputs& in,

@@ -45,9 +45,11 @@ struct FroxelInjectInputs {
     // every froxel, the new grid (froxelScatteringImage()).
     rg::ImageRef scattering;
     bool first = false;
-    // The temporal mode's history (the frame before's grid): the jitter follows its age;
+    // The temporal mode's history (the frame before's grid): the jitter's step follows its age;
     // invalid: the froxels' centres.
     rg::ImageRef history;
+    // The temporal mode's blue-noise tile (addFroxelBlueNoise), each froxel's own jitter.
+    rg::ImageRef noise;
 };
 // The temporal mode's history of the grid: float32 in-scattering, read and written by compute
 // passes, kept read-only between frames.
@@ -60,9 +62,11 @@ rg::ImageRef froxelScatteringImage(rg::RenderGraph& graph, const FroxelGrid& gri
 rg::ImageRef addFroxelInjection(rg::RenderGraph& graph, const FroxelInjectInputs& in,
                                 const FroxelGrid& grid);
 
-// Where in its froxel the temporal mode samples each froxel in the frame of `index`: a 16-frame
-// Halton (2, 3, 5) sequence in [0, 1)^3.
-glm::vec3 froxelJitter(uint32_t index);
+// The temporal mode's step of every froxel's jitter in the frame of `index` (the history's age):
+// the R3 sequence (Roberts 2018, the golden ratio's generalisation to three dimensions) in
+// [0, 1)^3, which each froxel adds to its own offsets from the blue-noise tile, so that its points
+// over the frames are a low-discrepancy sequence of its own.
+glm::vec3 froxelJitterStep(uint32_t index);
 
 struct FroxelTemporalInputs {
     ChainContext chain;                // the first light's: this frame's camera
@@ -71,12 +75,10 @@ struct FroxelTemporalInputs {
     rg::HostDataRef<PreviousFrame> previous;
     float weight = 0.9f;  // the history's
 };
-struct FroxelTemporalOutputs {
-    rg::ImageRef scattering, historyOut;
-};
-// The blend with the frame before's grid, reprojected (temporal.comp).
-FroxelTemporalOutputs addFroxelTemporalBlend(rg::RenderGraph& graph, const FroxelTemporalInputs& in,
-                                             const FroxelGrid& grid);
+// The blend with the frame before's grid, reprojected and clipped to this frame's neighbourhood
+// (temporal.comp), written into historyOut: the grid the integration reads. Returns it.
+rg::ImageRef addFroxelTemporalBlend(rg::RenderGraph& graph, const FroxelTemporalInputs& in,
+                                    const FroxelGrid& grid);
 
 struct FroxelIntegrateInputs {
     ChainContext chain;  // the first light's: the camera and the medium

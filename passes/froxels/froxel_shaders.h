@@ -8,8 +8,10 @@
 namespace ls {
 
 // A light's injection: its shadow map (a point light's cube) and light color, where it has them;
-// `slab`, a point or spot light's slices in closed form (its point-light table bound).
-rg::ShaderCode froxelInjectShader(bool shadowMap, bool lightColor, bool cube, bool slab);
+// `slab`, a point or spot light's slices in closed form (its point-light table bound); `noise`, the
+// temporal mode's, each froxel (each column, with `slab`) jittered by the blue-noise tile.
+rg::ShaderCode froxelInjectShader(bool shadowMap, bool lightColor, bool cube, bool slab,
+                                  bool noise);
 // The apply pass, compositing into an engine color of `color`'s format, and into the Lin output.
 rg::ShaderCode froxelApplyShader(const CompositeVariant& target);
 

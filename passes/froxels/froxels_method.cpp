@@ -1,5 +1,7 @@
 #include "froxels_method.h"
 
+#include "froxel_blue_noise.h"
+
 #include "shared/chain_inputs.h"
 #include "shared/refusals.h"
 
@@ -95,31 +97,31 @@ ChainOutputs FroxelsMethod::addChain(rg::RenderGraph& g, ChainLights lights,
     // The temporal mode's history, kept by the graph under the frame's key: the frame before's
     // grid, read, and this frame's, written.
     rg::RenderGraph::HistoryImages history;
-    if (temporal)
+    rg::ImageRef noise;
+    if (temporal) {
         history = g.historyImages("froxel history", froxelHistoryDesc(grid), first.frameKey);
+        noise = addFroxelBlueNoise(g, {first.shared, first.frameKey});
+    }
     rg::ImageRef scattering = froxelScatteringImage(g, grid);
     std::vector<rg::HostDataRef<LightFrame>> values;
     for (size_t i = 0; i < lights.size(); ++i) {
         const ChainLight& l = lights[i];
         if (lights.size() > 1) g.setNameSuffix(" (light " + std::to_string(i) + ")");
-        scattering =
-            addFroxelInjection(g,
-                               {chainContext(l.in, l.config), lightImages(l.in, l.config),
-                                scattering, i == 0, temporal ? history.previous : rg::ImageRef{}},
-                               grid);
+        scattering = addFroxelInjection(g,
+                                        {chainContext(l.in, l.config), lightImages(l.in, l.config),
+                                         scattering, i == 0, history.previous, noise},
+                                        grid);
         values.push_back(l.in.values);
     }
     g.setNameSuffix({});
     const ChainContext chain = chainContext(first, lights.front().config);
     ChainOutputs out;
     if (temporal) {
-        const FroxelTemporalOutputs t =
-            addFroxelTemporalBlend(g,
-                                   {chain, scattering, history.previous, history.current,
-                                    first.previous, settings.historyWeight},
-                                   grid);
-        scattering = t.scattering;
-        g.markOutput(t.historyOut);  // the next frame reads it
+        scattering = addFroxelTemporalBlend(g,
+                                            {chain, scattering, history.previous, history.current,
+                                             first.previous, settings.historyWeight},
+                                            grid);
+        g.markOutput(scattering);  // the next frame reads it
     }
     const rg::ImageRef integrated = addFroxelIntegration(g, {chain, scattering, values}, grid);
     if (first.volumeOut.valid())

@@ -4,8 +4,11 @@
 // values. Nothing waits for the GPU, nothing is submitted but by render().
 #include <cstdlib>
 #include <deque>
+#include <limits>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <lightscatter/lightscatter.h>
 #include "color_target.h"
@@ -181,6 +184,7 @@ struct Plugin::Impl {
         const FrameGraph& fg = *p.graph->built;
         importImages(p, fg, frame);
         p.previous.constants = previousConstants;
+        lightChanges(p, previousLights);
         p.data.set(fg.frameKey, p.frameKey).set(fg.previous, p.previous);
         p.data.discardHistories(frame.resetHistory);
         for (size_t i = 0; i < n; ++i)
@@ -224,10 +228,37 @@ struct Plugin::Impl {
         }
     }
 
+    // How the frame's lights differ from the last recorded frame's (ls::PreviousFrame): another
+    // set of ids, or one of them moved or changed (ls::sameLight, ls::lightJump).
+    static void lightChanges(Prepared& p,
+                             const std::vector<std::pair<uint64_t, ls::FrameConstants>>& before) {
+        ls::PreviousFrame& r = p.previous;
+        r.lightsChanged = false;
+        r.lightJump = 0.0f;
+        if (p.keys.size() != before.size()) {
+            r.lightsChanged = true;
+            r.lightJump = std::numeric_limits<float>::infinity();
+            return;
+        }
+        for (size_t i = 0; i < p.keys.size(); ++i) {
+            if (p.keys[i].value != before[i].first) {
+                r.lightsChanged = true;
+                r.lightJump = std::numeric_limits<float>::infinity();
+                return;
+            }
+            const ls::FrameConstants& now = p.values[i].constants;
+            r.lightsChanged = r.lightsChanged || !ls::sameLight(before[i].second, now);
+            r.lightJump = std::max(r.lightJump, ls::lightJump(before[i].second, now));
+        }
+    }
+
     // The frame was recorded: it is kept for its report.
     uint64_t recorded(const Prepared& p) {
         const GraphConfig& c = p.graph->config;
         previousConstants = p.values[0].constants;
+        previousLights.clear();
+        for (size_t i = 0; i < p.keys.size(); ++i)
+            previousLights.emplace_back(p.keys[i].value, p.values[i].constants);
         lastExecutor = p.graph->running->executor.get();
         p.graph->lastUse = lastFrame;
         detail::RecordedFrame f;
@@ -301,6 +332,8 @@ struct Plugin::Impl {
     // The last recorded frame's first light's constants: the camera and the medium a history was
     // written with.
     ls::FrameConstants previousConstants{};
+    // Its lights, by id, in its order: what lightChanges() compares a frame's with.
+    std::vector<std::pair<uint64_t, ls::FrameConstants>> previousLights;
     const rg::GraphExecutor* lastExecutor = nullptr;  // recorded the last frame
     uint64_t lastFrame = 0;
     std::deque<detail::RecordedFrame> frames;  // the last kTimedFrames

@@ -9,6 +9,11 @@
 #define LS_BINDING_FROXEL_HISTORY 4      // temporal.comp: the frame before's in-scattering grid
 #define LS_BINDING_FROXEL_HISTORY_OUT 5  // temporal.comp: this frame's, for the next
 #define LS_BINDING_FROXEL_VOLUME_OUT 12  // export.comp: the engine's 3D image (volumeOut)
+#define LS_BINDING_FROXEL_NOISE 14       // inject.comp (temporal): the blue-noise tile
+
+// blue_noise.comp, a pass of its own: the tile's texels as uploaded, and the tile.
+#define LS_BINDING_FROXEL_NOISE_TEXELS 0
+#define LS_BINDING_FROXEL_NOISE_OUT 1
 
 // From 10 up, past frame.glsl's.
 #define LS_SPEC_FROXEL_FIRST_LIGHT 10  // inject.comp

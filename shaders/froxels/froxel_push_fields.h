@@ -5,5 +5,7 @@ LS_VEC4 grid;     // x: columns, y: rows, z: depth slices, w: pixels per froxel 
 LS_VEC4 slices;   // x: the first slice's start (camera-space z, the near plane), y: the last one's
                   // end (the froxel far distance), z: log(y / x), w: the integrated grid's storage
                   // scale (its Lin is stored times w, loaded times 1 / w)
-LS_VEC4 jitter;   // xyz: where in its froxel each froxel is sampled, in [0, 1) (0.5: the centre)
+LS_VEC4 jitter;   // xyz: where in its froxel each froxel is sampled, in [0, 1) (0.5: the centre);
+                  // the temporal mode: the frame's step of every froxel's own point, and w: the
+                  // share of the froxel the points spread over (froxel_jitter.glsl)
 LS_VEC4 columns;  // inject: xy the first column and row the light reaches, zw one past the last

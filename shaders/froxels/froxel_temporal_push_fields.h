@@ -5,4 +5,6 @@ LS_VEC4 slices;            // as froxel_push_fields.h
 LS_MAT4 previousViewProj;  // world -> the frame before's clip
 LS_VEC4 previousSlices;    // x: its first slice's start, y: its far distance, z: log(y / x), w: 1
                            // when the history holds the frame before's grid
-LS_VEC4 blend;             // x: the history's weight, yzw: -
+// x: the history's weight; y: 1 when a light changed since the frame before; z: how far outside
+// this frame's neighbourhood box (in box widths) such a light's history is dropped; w: -
+LS_VEC4 blend;

@@ -1,52 +1,90 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// The temporal mode's blend: each froxel's in-scattering, sampled this frame at a jittered point,
-// blended with the frame before's grid where that frame saw the froxel's centre (reprojected with
-// its camera and its slices): lerp(this frame's, history, weight). Where the history does not
-// cover it (off its frustum, or no history) the froxel keeps this frame's. The result replaces the
-// grid the integration reads and is the next frame's history.
+// The temporal mode's blend: each froxel's in-scattering, sampled this frame at its own jittered
+// point, blended with the frame before's grid where that frame saw the froxel's centre
+// (reprojected with its camera and its slices): lerp(this frame's, history, weight), with what
+// engines do against ghosting. The history is fetched with a Catmull-Rom filter across columns and
+// rows (a trilinear fetch blurs it a little more each frame the camera moves), then clamped to the
+// range of this frame's samples in the 3x3x3 froxels around (each sampled at its own point, so
+// the range spans what the froxel holds), so that a shaft that left a froxel takes its history
+// with it. Where a light changed since the frame before (the host compares their constants), a
+// history that lay further outside that range than the threshold is dropped: the light's
+// contribution changed there, not the sampling. Where the history does not cover the froxel (off
+// its frustum, or no history) or is dropped, the froxel keeps this frame's sample. The result is
+// the grid the integration reads and the next frame's history; this frame's samples stay as they
+// were, for the ranges of the froxels around.
 #define LS_FROXEL_TEMPORAL 1
 #include "froxel_grid.glsl"
 #include "froxel_bindings.h"
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
-layout(binding = LS_BINDING_FROXEL_SCATTERING, rgba32f) uniform image3D scattering;
+layout(binding = LS_BINDING_FROXEL_SCATTERING, rgba32f) uniform readonly image3D scattering;
 // Read as storage (GENERAL), so that the plugin's images rest in SHADER_READ_ONLY_OPTIMAL between
 // frames and a graph's first frame, which finds them UNDEFINED, has a barrier to give them a layout.
 layout(binding = LS_BINDING_FROXEL_HISTORY, rgba32f) uniform readonly image3D history;
 layout(binding = LS_BINDING_FROXEL_HISTORY_OUT, rgba32f) uniform writeonly image3D historyOut;
 
-// A trilinear fetch of the history at texture coordinates t (clamped to its edge froxels).
+// Catmull-Rom's weights of the four texels around a point f of the way from the second to the
+// third.
+vec4 catmullRom(float f) {
+    return vec4(f * (-0.5 + f * (1.0 - 0.5 * f)), 1.0 + f * f * (-2.5 + 1.5 * f),
+                f * (0.5 + f * (2.0 - 1.5 * f)), f * f * (-0.5 + 0.5 * f));
+}
+
+// The history at texture coordinates t: Catmull-Rom across the columns and rows, linear along
+// the slices (clamped to its edge froxels). Its negative lobes may undershoot; the range clamp
+// bounds it.
 vec3 historyAt(vec3 t) {
     ivec3 g = ivec3(pc.grid.xyz);
     vec3 p = t * pc.grid.xyz - 0.5;
     ivec3 i0 = ivec3(floor(p));
     vec3 f = p - vec3(i0);
+    vec4 wx = catmullRom(f.x), wy = catmullRom(f.y);
     vec3 r = vec3(0.0);
-    for (int k = 0; k < 8; ++k) {
-        ivec3 o = ivec3(k & 1, (k >> 1) & 1, (k >> 2) & 1);
-        vec3 w = mix(1.0 - f, f, vec3(o));
-        r += w.x * w.y * w.z * imageLoad(history, clamp(i0 + o, ivec3(0), g - 1)).rgb;
-    }
+    for (int k = 0; k < 2; ++k)
+        for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < 4; ++x) {
+                ivec3 q = clamp(i0 + ivec3(x - 1, y - 1, k), ivec3(0), g - 1);
+                r += wx[x] * wy[y] * (k == 0 ? 1.0 - f.z : f.z) * imageLoad(history, q).rgb;
+            }
     return r;
+}
+
+// Where the frame before's grid saw the centre of froxel f, as its texture coordinates; false
+// where it did not (behind its near plane, off its frustum or past its far distance).
+bool reprojected(ivec3 f, out vec3 t) {
+    vec3 v = rayDirection(columnNdc(vec2(f.xy), vec2(0.5)));
+    vec3 P = frame.cameraPos.xyz + v * (sliceZ(float(f.z) + 0.5) / axisCosine(v));
+    // The frame before's clip w is its camera-space z (Vulkan's perspective: w = -z_view).
+    vec4 X = pc.previousViewProj * vec4(P, 1.0);
+    t = vec3(0.0);
+    if (X.w <= pc.previousSlices.x) return false;
+    vec2 columns = (X.xy / X.w * 0.5 + 0.5) * frame.screenSize.xy / pc.grid.w;
+    float u = log(X.w / pc.previousSlices.x) / pc.previousSlices.z * pc.grid.z;
+    t = vec3(columns / pc.grid.xy, u / pc.grid.z);
+    return all(greaterThanEqual(t, vec3(0.0))) && all(lessThanEqual(t, vec3(1.0)));
 }
 
 void main() {
     ivec3 f = ivec3(gl_GlobalInvocationID);
-    if (any(greaterThanEqual(f, ivec3(pc.grid.xyz)))) return;
+    ivec3 g = ivec3(pc.grid.xyz);
+    if (any(greaterThanEqual(f, g))) return;
     vec3 s = imageLoad(scattering, f).rgb;
-    if (pc.previousSlices.w > 0.5) {
-        vec3 v = rayDirection(columnNdc(vec2(f.xy), vec2(0.5)));
-        vec3 P = frame.cameraPos.xyz + v * (sliceZ(float(f.z) + 0.5) / axisCosine(v));
-        // The frame before's clip w is its camera-space z (Vulkan's perspective: w = -z_view).
-        vec4 X = pc.previousViewProj * vec4(P, 1.0);
-        if (X.w > pc.previousSlices.x) {
-            vec2 columns = (X.xy / X.w * 0.5 + 0.5) * frame.screenSize.xy / pc.grid.w;
-            float u = log(X.w / pc.previousSlices.x) / pc.previousSlices.z * pc.grid.z;
-            vec3 t = vec3(columns / pc.grid.xy, u / pc.grid.z);
-            if (all(greaterThanEqual(t, vec3(0.0))) && all(lessThanEqual(t, vec3(1.0))))
-                s = mix(s, historyAt(t), pc.blend.x);
+    vec3 t;
+    if (pc.previousSlices.w > 0.5 && reprojected(f, t)) {
+        vec3 lo = s, hi = s;
+        for (int k = 0; k < 27; ++k) {
+            ivec3 q = clamp(f + ivec3(k % 3, (k / 3) % 3, k / 9) - 1, ivec3(0), g - 1);
+            vec3 c = imageLoad(scattering, q).rgb;
+            lo = min(lo, c);
+            hi = max(hi, c);
         }
+        vec3 h = historyAt(t);
+        vec3 clamped = clamp(h, lo, hi);
+        // How far outside the range the history lay, in range widths (its farthest channel).
+        vec3 outside = abs(h - clamped) / max(hi - lo, vec3(1e-30));
+        bool dropped =
+            pc.blend.y > 0.5 && max(outside.r, max(outside.g, outside.b)) > pc.blend.z;
+        if (!dropped) s = mix(s, clamped, pc.blend.x);
     }
-    imageStore(scattering, f, vec4(s, 0.0));
     imageStore(historyOut, f, vec4(s, 0.0));
 }

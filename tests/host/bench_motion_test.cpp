@@ -200,6 +200,21 @@ TEST(Motion, ASunTurnsTowardsTheCamerasRightAndASpotMoves) {
     EXPECT_EQ(p30.light.direction, spot.light.direction);
 }
 
+// The still pass judges a method that keeps history on the frames after its warm-up: every frame
+// is the scene's own pose, its camera and its light alike.
+TEST(Motion, StillKeepsTheScenesPose) {
+    host::bench::Motion m;
+    for (const char* name : {"atrium", "window_room"}) {
+        const host::SceneDesc start = scene(name);
+        const host::SceneDesc p = host::bench::poseAt(start, host::bench::MotionKind::Still, m, 30);
+        EXPECT_EQ(p.camera.position, start.camera.position) << name;
+        EXPECT_EQ(p.camera.target, start.camera.target) << name;
+        EXPECT_EQ(p.light.position, start.light.position) << name;
+        EXPECT_EQ(p.light.direction, start.light.direction) << name;
+    }
+    EXPECT_STREQ(host::bench::motionName(host::bench::MotionKind::Still), "still");
+}
+
 TEST(ReferenceCache, TheKeyChangesWithWhatTheReferenceDependsOn) {
     const host::SceneDesc s = scene("window_room");
     host::MeshData mesh;
@@ -259,11 +274,12 @@ TEST(BenchConfigMotion, EachBadValueIsOneLineNamingTheField) {
               "motion: unknown key 'speed' (known: what, frames, lightDegreesPerFrame, "
               "lightMetresPerFrame, cameraMetresPerFrame, cameraDegreesPerFrame)");
     EXPECT_EQ(configError(withMotion(R"({"frames": 60})")),
-              "motion.what is required: \"light\", \"camera\" or both in an array");
+              "motion.what is required: \"light\", \"camera\", \"still\" or an array of them");
     EXPECT_EQ(configError(withMotion(R"({"what": []})")),
-              "motion.what = []: must be \"light\", \"camera\" or a non-empty array of them");
+              "motion.what = []: must be \"light\", \"camera\", \"still\" or a non-empty array of "
+              "them");
     EXPECT_EQ(configError(withMotion(R"({"what": "sun"})")),
-              "motion.what[] = \"sun\": must be \"light\" or \"camera\"");
+              "motion.what[] = \"sun\": must be \"light\", \"camera\" or \"still\"");
     EXPECT_EQ(configError(withMotion(R"({"what": ["light", "light"]})")),
               "motion.what lists \"light\" twice");
     EXPECT_EQ(configError(withMotion(R"({"what": "light", "frames": 1})")),
@@ -312,17 +328,19 @@ TEST(BenchConfigMotion, FieldsAreAcceptedAtTheirBounds) {
               "each froxel; 1 would never take a new frame)");
 }
 
-TEST(BenchConfigMotion, DefaultsAndBothMotions) {
+TEST(BenchConfigMotion, DefaultsAndEveryMotion) {
     const auto dir = std::filesystem::temp_directory_path() /
                      ("ls_bench_motion_test_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     const auto file = dir / "good.json";
-    std::ofstream(file) << withMotion(R"({"what": ["camera", "light"], "lightMetresPerFrame": 0})");
+    std::ofstream(file) << withMotion(
+        R"({"what": ["camera", "light", "still"], "lightMetresPerFrame": 0})");
     const host::bench::BenchConfig c = host::bench::loadBenchConfig(file.string(), LS_SOURCE_DIR);
     ASSERT_TRUE(c.motion);
-    ASSERT_EQ(c.motion->what.size(), 2u);
+    ASSERT_EQ(c.motion->what.size(), 3u);
     EXPECT_EQ(c.motion->what[0], host::bench::MotionKind::Camera);
     EXPECT_EQ(c.motion->what[1], host::bench::MotionKind::Light);
+    EXPECT_EQ(c.motion->what[2], host::bench::MotionKind::Still);
     EXPECT_EQ(c.motion->frames, 60);
     EXPECT_EQ(c.motion->lightMetresPerFrame, 0.0);
     EXPECT_EQ(c.motion->lightDegreesPerFrame, 0.1);

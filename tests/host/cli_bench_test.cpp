@@ -311,7 +311,8 @@ TEST(CliBench, AMotionRowCarriesItsFlickerAndARerunReusesTheReferences) {
     writeFile("still.json",
               R"({"scenes": ["scenes/window_room.json"], "motion": {"what": "wind"}})");
     expectFailure(run("bench --config still.json --out still"),
-                  "still.json: motion.what[] = \"wind\": must be \"light\" or \"camera\"");
+                  "still.json: motion.what[] = \"wind\": must be \"light\", \"camera\" or "
+                  "\"still\"");
     EXPECT_FALSE(cli_test::exists("still/bench.csv"));
 }
 

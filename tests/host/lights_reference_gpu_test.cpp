@@ -361,10 +361,11 @@ TEST_F(LightsReferenceGpu, FroxelsSampleACubeShadowMap) {
     EXPECT_GT(unshadowed.error, 0.4);
 }
 
-// The temporal mode on a still scene: each frame samples every froxel at another point of a
-// 16-frame sequence and blends it with the history, so after the sequence the grid holds each
-// froxel's average rather than one point's, and the error falls below the plain grid's. A reset
-// (a camera cut) renders as a new plugin's first frame does, bit for bit.
+// The temporal mode on a still scene: each frame samples every froxel at another point of its own
+// (froxel_jitter.glsl) and blends it with the history, so after some frames the grid holds an
+// average over each froxel's middle rather than one point's, and the error falls below the plain
+// grid's (measured 0.0614 plain, 0.0513 after 24 frames). A reset (a camera cut) renders as a new
+// plugin's first frame does, bit for bit.
 TEST_F(LightsReferenceGpu, FroxelsTemporalModeSettlesOnAStillSceneAndResets) {
     const host::SceneDesc scene = shippedScene("atrium_lights");
     const host::MeshData mesh = host::loadSceneMeshes(scene);

@@ -132,7 +132,8 @@ TEST(ShaderVariants, FroxelNodesAskForBuiltVariants) {
         for (bool color : {false, true})
             for (bool cube : {false, true})
                 for (bool slab : {false, true})
-                    reach(inject, froxelInjectShader(shadow, color, cube, slab));
+                    for (bool noise : {false, true})
+                        reach(inject, froxelInjectShader(shadow, color, cube, slab, noise));
     forEachTarget([&](const CompositeVariant& t) { reach(apply, froxelApplyShader(t)); });
     expectAllReached(ls_spirv::inject_comp_variants, inject);
     expectAllReached(ls_spirv::apply_comp_variants, apply);

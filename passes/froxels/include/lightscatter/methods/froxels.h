@@ -17,11 +17,14 @@ struct FroxelsSettings {
     uint32_t slices = 64;
     float farDistance = 0.0f;
     // The temporal mode engines run froxels in: each frame samples every froxel at another point
-    // within it (a 16-frame Halton sequence) and blends its in-scattering with the frame before's,
-    // reprojected to where that froxel was: new = lerp(this frame's, history, historyWeight) where
-    // the history covers the froxel. The one case where a frame's output depends on earlier
-    // frames; FrameDescription::resetHistory starts it anew (a camera cut). The history is two
-    // grid-sized float32 3D images, the plugin's memory, kept across frames by its render graph.
+    // of its own within it (blue noise moved by a low-discrepancy step each frame) and blends its
+    // in-scattering with the frame before's, reprojected to where that froxel was and clamped to
+    // the range of this frame's froxels around it: new = lerp(this frame's, history,
+    // historyWeight) where the history covers the froxel. A light that moved or turned by more
+    // than a degree since the frame before drops the history, as a camera cut does. The one case
+    // where a frame's output depends on earlier frames; FrameDescription::resetHistory starts it
+    // anew (a camera cut). The history is two grid-sized float32 3D images, the plugin's memory,
+    // kept across frames by its render graph.
     bool temporal = false;
     float historyWeight = 0.9f;
 };
