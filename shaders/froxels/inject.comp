@@ -49,14 +49,24 @@ layout(binding = LS_BINDING_FROXEL_SCATTERING, rgba32f) uniform image3D scatteri
 // The frame's first light: every froxel is written. Later lights: their columns only, added.
 layout(constant_id = LS_SPEC_FROXEL_FIRST_LIGHT) const bool kFirstLight = true;
 
+float channelMean(vec3 c) { return dot(c, vec3(1.0 / 3.0)); }
+
 // Whether the light's screen rectangle reaches the column.
 bool reachesColumn(ivec2 column) {
     return all(greaterThanEqual(vec2(column), pc.columns.xy)) && all(lessThan(vec2(column), pc.columns.zw));
 }
 
-void store(ivec3 f, vec3 s) {
-    if (!kFirstLight) s += imageLoad(scattering, f).rgb;
-    imageStore(scattering, f, vec4(s, 0.0));
+// Alpha: the mean over channels of the froxel's in-scattering without shadow or cookie, summed over
+// the frame's lights, which the temporal blend uses to carry its history across a light's motion
+// (temporal.comp); -1 once a light whose unshadowed value is itself a jittered point sample (one
+// without its slab) adds to the froxel, where the blend keeps its history as it is.
+void store(ivec3 f, vec3 s, float unshadowed) {
+    if (!kFirstLight) {
+        vec4 before = imageLoad(scattering, f);
+        s += before.rgb;
+        unshadowed = before.a < 0.0 || unshadowed < 0.0 ? -1.0 : before.a + unshadowed;
+    }
+    imageStore(scattering, f, vec4(s, unshadowed));
 }
 
 #if LS_SLAB
@@ -92,7 +102,7 @@ void main() {
     if (!kFirstLight) column += ivec2(pc.columns.xy);
     if (any(greaterThanEqual(column, g.xy))) return;
     if (!reachesColumn(column)) {
-        for (int z = 0; z < g.z; ++z) store(ivec3(column, z), vec3(0.0));
+        for (int z = 0; z < g.z; ++z) store(ivec3(column, z), vec3(0.0), 0.0);
         return;
     }
     vec3 C = frame.cameraPos.xyz;
@@ -115,6 +125,7 @@ void main() {
         float s1 = sliceZ(float(z + 1)) * perZ;
         float u0 = max(s0, t0), u1 = min(s1, t1);
         vec3 s = vec3(0.0);
+        float unshadowed = 0.0;
         if (u0 < u1) {
             a.sum = vec3(0.0);
             advance(a, u1, vec3(1.0));
@@ -122,7 +133,9 @@ void main() {
             // The temporal mode moves the shadow's point along the slice's lit part from frame to
             // frame, so the history averages the shadow and cookie over it.
             applyShadowAndColor(C + mix(u0, u1, froxelSlabPoint(ivec3(column, z))) * v, V);
-            s = perUnitLength(V * finishInscatter(a, v), s0, s1);
+            vec3 lin = finishInscatter(a, v);
+            s = perUnitLength(V * lin, s0, s1);
+            unshadowed = channelMean(perUnitLength(lin, s0, s1));
             if (besideLight && along >= s0 && along <= s1) {
                 vec3 mean = vec3(0.0);
                 for (int k = 0; k < 4; ++k) {
@@ -131,10 +144,12 @@ void main() {
                     float wz = 1.0 / axisCosine(w);
                     mean += 0.25 * slabScattering(C, w, s0 / perZ * wz, s1 / perZ * wz);
                 }
-                s = min(s, 2.0 * mean);
+                vec3 bounded = min(s, 2.0 * mean);
+                unshadowed *= channelMean(bounded) / max(channelMean(s), 1e-30);
+                s = bounded;
             }
         }
-        store(ivec3(column, z), s);
+        store(ivec3(column, z), s, unshadowed);
         s0 = s1;
     }
 }
@@ -154,6 +169,6 @@ void main() {
         vec3 irr = lightAt(P, v, 0.0, cosTheta);
         s = phaseSum(cosTheta) * irr;
     }
-    store(f, s);
+    store(f, s, -1.0);
 }
 #endif

@@ -7,7 +7,9 @@
 // rows (a trilinear fetch blurs it a little more each frame the camera moves), then clamped to the
 // range of this frame's samples in the 3x3x3 froxels around (each sampled at its own point, so
 // the range spans what the froxel holds), so that a shaft that left a froxel takes its history
-// with it. Where a light changed since the frame before (the host compares their constants), a
+// with it. Where this frame's froxel knows its unshadowed in-scattering exactly (a point or spot
+// light's slab: the injections' alpha), the history is first carried to it, so that the blend
+// averages only the shadow and cookie. Where a light changed since the frame before (the host compares their constants), a
 // history that lay further outside that range than the threshold is dropped: the light's
 // contribution changed there, not the sampling. Where the history does not cover the froxel (off
 // its frustum, or no history) or is dropped, the froxel keeps this frame's sample. The result is
@@ -32,20 +34,24 @@ vec4 catmullRom(float f) {
 
 // The history at texture coordinates t: Catmull-Rom across the columns and rows, linear along
 // the slices (clamped to its edge froxels). Its negative lobes may undershoot; the range clamp
-// bounds it.
-vec3 historyAt(vec3 t) {
+// bounds it. Alpha: its unshadowed in-scattering, -1 where a tap's is unknown.
+vec4 historyAt(vec3 t) {
     ivec3 g = ivec3(pc.grid.xyz);
     vec3 p = t * pc.grid.xyz - 0.5;
     ivec3 i0 = ivec3(floor(p));
     vec3 f = p - vec3(i0);
     vec4 wx = catmullRom(f.x), wy = catmullRom(f.y);
-    vec3 r = vec3(0.0);
+    vec4 r = vec4(0.0);
+    bool point = false;  // a tap's unshadowed value is a point sample's (its alpha -1)
     for (int k = 0; k < 2; ++k)
         for (int y = 0; y < 4; ++y)
             for (int x = 0; x < 4; ++x) {
                 ivec3 q = clamp(i0 + ivec3(x - 1, y - 1, k), ivec3(0), g - 1);
-                r += wx[x] * wy[y] * (k == 0 ? 1.0 - f.z : f.z) * imageLoad(history, q).rgb;
+                vec4 h = imageLoad(history, q);
+                point = point || h.a < 0.0;
+                r += wx[x] * wy[y] * (k == 0 ? 1.0 - f.z : f.z) * h;
             }
+    if (point) r.a = -1.0;
     return r;
 }
 
@@ -68,7 +74,8 @@ void main() {
     ivec3 f = ivec3(gl_GlobalInvocationID);
     ivec3 g = ivec3(pc.grid.xyz);
     if (any(greaterThanEqual(f, g))) return;
-    vec3 s = imageLoad(scattering, f).rgb;
+    vec4 current = imageLoad(scattering, f);
+    vec3 s = current.rgb;
     vec3 t;
     if (pc.previousSlices.w > 0.5 && reprojected(f, t)) {
         vec3 lo = s, hi = s;
@@ -78,7 +85,15 @@ void main() {
             lo = min(lo, c);
             hi = max(hi, c);
         }
-        vec3 h = historyAt(t);
+        vec4 history = historyAt(t);
+        vec3 h = history.rgb;
+        // A point or spot light's slab has its unshadowed in-scattering exact in each frame; what
+        // the history averages is the shadow and cookie. So the history is carried to this
+        // frame's unshadowed value, as the share of it that was lit: a moving light's glow leaves
+        // no trail, and a froxel the light left is dark at once. Where the history held no light
+        // and this frame's froxel has some, the history tells nothing of it.
+        bool carried = current.a >= 0.0 && history.a >= 0.0;
+        if (carried) h = history.a > 1e-30 ? h * (current.a / history.a) : s;
         vec3 clamped = clamp(h, lo, hi);
         // How far outside the range the history lay, in range widths (its farthest channel).
         vec3 outside = abs(h - clamped) / max(hi - lo, vec3(1e-30));
@@ -86,5 +101,5 @@ void main() {
             pc.blend.y > 0.5 && max(outside.r, max(outside.g, outside.b)) > pc.blend.z;
         if (!dropped) s = mix(s, clamped, pc.blend.x);
     }
-    imageStore(historyOut, f, vec4(s, 0.0));
+    imageStore(historyOut, f, vec4(s, current.a));
 }
