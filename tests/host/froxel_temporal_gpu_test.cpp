@@ -130,12 +130,12 @@ TEST_F(FroxelTemporalGpu, ALightThatJumpsLeavesNoGhost) {
     EXPECT_LT(jumped, 1.3 * plain);
 }
 
-// point_fog's unshadowed point light moving 2 cm a frame to the camera's right (bench/flicker.json's
-// light motion, below the jump that drops the history), at froxels-hdrp's size, 24 frames into the
-// motion after 16 still ones: the slab's unshadowed in-scattering is exact in every frame, so the
-// history, carried to this frame's unshadowed value before the blend, leaves no trail of the glow
-// where the light was. Measured: the temporal mode's error 1.00 times the plain grid's at the same
-// pose; with the history blended as it is (not carried), 1.13 times.
+// point_fog's unshadowed point light moving 2 cm a frame to the camera's right
+// (bench/flicker.json's light motion, below the jump that drops the history), at froxels-hdrp's
+// size, 24 frames into the motion after 16 still ones: the slab's unshadowed in-scattering is exact
+// in every frame, so the history, carried to this frame's unshadowed value before the blend, leaves
+// no trail of the glow where the light was. Measured: the temporal mode's error 1.00 times the
+// plain grid's at the same pose; with the history blended as it is (not carried), 1.13 times.
 TEST_F(FroxelTemporalGpu, AMovingLightsGlowLeavesNoTrail) {
     const host::SceneDesc start = shippedScene("point_fog");
     ASSERT_NE(start.light.type, lightscatter::LightType::Directional);
@@ -145,9 +145,9 @@ TEST_F(FroxelTemporalGpu, AMovingLightsGlowLeavesNoTrail) {
     host::RenderOptions temporal = froxels(8, true);
     temporal.resetHistory = true;
     for (int frame = 0; frame < 16 + 24; ++frame) {
-        renderer.scene().light =
-            host::bench::poseAt(start, host::bench::MotionKind::Light, motion, std::max(frame - 16, 0))
-                .light;
+        renderer.scene().light = host::bench::poseAt(start, host::bench::MotionKind::Light, motion,
+                                                     std::max(frame - 16, 0))
+                                     .light;
         const std::vector<float> lin = renderer.render(temporal).inscatter;
         temporal.resetHistory = false;
         if (frame + 1 < 16 + 24) continue;
