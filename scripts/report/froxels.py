@@ -160,10 +160,11 @@ def where_each_wins(runs, base, lights_table=None):
             out.append("- Each shadowed spot beyond the first added " + ", ".join(per) + ": a light costs the "
                        "grid one injection pass, not a full-screen chain of its own.")
     out.append("")
-    out.append("Why: the grid samples each light once per froxel, at its centre, and spreads that over the "
-               "froxel, so a shaft narrower than a column (a grille, bars, struts) is blurred or lost and a "
-               "light's glow is sampled wherever a centre happens to fall; epipolar sampling and brute force "
-               "march each pixel's own ray through the shadow map. What the grid costs grows with its froxels "
+    out.append("Why: the grid takes each light along its columns' centre rays only (a point or spot light's "
+               "slice in closed form with its shadow at one point, a sun at the froxel's centre) and spreads "
+               "that over the froxel, so a shaft narrower than a column (a grille, bars, struts) is blurred "
+               "or lost; epipolar sampling and brute force march each pixel's own ray through the shadow "
+               "map. What the grid costs grows with its froxels "
                "and its lights' injections, not with the screen's rays, which is where it wins; and it gives "
                "the volume itself (docs/methods.md, \"The exported volume\"), which fogs forward transparents "
                "and particles as no screen-space method can. `auto` never picks it, as it keeps to methods "
