@@ -9,8 +9,9 @@
 // the range spans what the froxel holds), so that a shaft that left a froxel takes its history
 // with it. Where this frame's froxel knows its unshadowed in-scattering exactly (a point or spot
 // light's slab: the injections' alpha), the history is first carried to it, so that the blend
-// averages only the shadow and cookie. Where a light changed since the frame before (the host compares their constants), a
-// history that lay further outside that range than the threshold is dropped: the light's
+// averages only the shadow and cookie. Where a light changed since the frame before (the host
+// compares their constants), a history that lay further outside that range than the threshold
+// is dropped: the light's
 // contribution changed there, not the sampling. Where the history does not cover the froxel (off
 // its frustum, or no history) or is dropped, the froxel keeps this frame's sample. The result is
 // the grid the integration reads and the next frame's history; this frame's samples stay as they
