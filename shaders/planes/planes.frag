@@ -97,7 +97,12 @@ bool slabShare(vec3 C, vec3 v, float s, float ds, out vec3 share) {
 #if LS_SLAB
     float t0, t1;
     lightInterval(C, v, min(s + 0.5 * ds, placement.params.w), t0, t1);
-    t0 = max(t0, max(s - 0.5 * ds, 0.0));
+    // The frontmost slab also stands for the ray's head, from the camera to the planes' box, which
+    // no plane samples: with the light at or beside the camera its glow lies there.
+    float start = s - 0.5 * ds;
+    float front = placement.boxMin.z / max(dot(v, frame.cameraForward.xyz), 1e-4);
+    if (start <= front + 0.25 * ds) start = 0.0;
+    t0 = max(t0, max(start, 0.0));
     if (!(t0 < t1)) return false;
     vec3 V = vec3(1.0);
     applyShadowAndColor(C + (0.5 * (t0 + t1)) * v, V);
