@@ -14,7 +14,7 @@ float inscatterRefinementOf(const lightscatter::EpipolarSettings& s, bool refine
 
 EpipolarConstants makeEpipolarConstants(const lightscatter::EpipolarSettings& s,
                                         uint32_t shadowMapSize, bool interpolatesLin,
-                                        bool refinesByDefault) {
+                                        bool refinesByDefault, const glm::vec4& bounds) {
     const bool fraction =
         s.interpolation == lightscatter::Interpolation::ShadowedFraction && !interpolatesLin;
     EpipolarConstants c{};
@@ -24,6 +24,7 @@ EpipolarConstants makeEpipolarConstants(const lightscatter::EpipolarSettings& s,
                   inscatterRefinementOf(s, refinesByDefault), static_cast<float>(s.fixupMaxSteps)};
     c.unwarp = {s.bilateralThreshold, 0.0f, 0.0f, 0.0f};
     c.cubeFace = {-1.0f, 1.0f, 0.0f, 0.0f};
+    c.bounds = bounds;
     const uint32_t phases = marchPhases(s);
     c.march = {static_cast<float>(phases), static_cast<float>(marchBlocksPerRow(phases)), 0.0f,
                0.0f};

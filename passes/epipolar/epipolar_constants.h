@@ -10,6 +10,7 @@
 
 #include "lightscatter/methods/epipolar.h"
 #include "rendergraph/binding_table.h"
+#include "screen_share.h"
 #include "shared/chain_context.h"
 #include "shared/light_setup.h"
 #include "shared/refusals.h"
@@ -23,7 +24,7 @@ struct EpipolarConstants {
 #undef LS_VEC4
 };
 // Only vec4 members, as frame_constants.h's: std140 packs them as C++ does.
-static_assert(sizeof(EpipolarConstants) == 5 * 16, "std140 layout of epipolar_constants.glsl");
+static_assert(sizeof(EpipolarConstants) == 6 * 16, "std140 layout of epipolar_constants.glsl");
 
 // The phases of the march's order (marchTexel in shaders/epipolar/epipolar_constants.glsl): the
 // initial step where the samples per line are a multiple of it (the slices are of 4); 1 (each
@@ -55,15 +56,19 @@ inline bool refinesByDefault(const LightSetup& s) {
     return interpolatesLin(s) || !s.medium.volumes.empty() || cubeShadowed(s);
 }
 
+// `s` with the light's own sizes; `bounds`: lineBounds() of its screen rectangle.
 EpipolarConstants makeEpipolarConstants(const lightscatter::EpipolarSettings& s,
                                         uint32_t shadowMapSize, bool interpolatesLin,
-                                        bool refinesByDefault);
+                                        bool refinesByDefault, const glm::vec4& bounds);
 
 // A light's epipolar values of one frame (EpipolarMethod::prepare): its constants, and for a cube
 // shadow map which faces reach the view. A face out of view keeps its passes in the graph (a face
 // moving into view rebuilds nothing) and they record no work.
 struct EpipolarFrame final : LightData {
     EpipolarConstants constants;
+    LineSizes sizes;  // the light's slices and samples per slice (screen_share.h)
+    LineSizes full;   // the settings' (the whole screen's)
+    VkRect2D rect{};  // the light's screen rectangle
     std::array<bool, 6> faceInView{};
     // The block the passes of `face` read: -1 the light's own, 0-5 a cube face's.
     EpipolarConstants of(int face) const;

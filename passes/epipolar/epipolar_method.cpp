@@ -13,6 +13,16 @@
 
 namespace ls {
 
+namespace {
+
+lightscatter::EpipolarSettings sized(lightscatter::EpipolarSettings s, const LineSizes& sizes) {
+    s.slices = sizes.slices;
+    s.samplesPerSlice = sizes.samples;
+    return s;
+}
+
+}  // namespace
+
 const MethodUnit& methodUnitEpipolar() {
     static const EpipolarMethod unit;
     return unit;
@@ -84,17 +94,26 @@ std::unique_ptr<LightData> EpipolarMethod::makeData() const {
 std::vector<CpuWork> EpipolarMethod::prepare(LightData* data, LightFrame&,
                                              const LightSetup& light) const {
     EpipolarFrame& e = *static_cast<EpipolarFrame*>(data);
-    e.constants = makeEpipolarConstants(light.settings.epipolar, light.light.shadowMapSize,
-                                        interpolatesLin(light), refinesByDefault(light));
+    const LineSizes before = e.sizes;
+    e.sizes = sizesForRect(light.settings.epipolar, light.screen, light.screenRect,
+                           before.slices != 0 ? &before : nullptr);
+    e.full = {light.settings.epipolar.slices, light.settings.epipolar.samplesPerSlice};
+    e.rect = light.screenRect;
+    e.constants = makeEpipolarConstants(
+        sized(light.settings.epipolar, e.sizes), light.light.shadowMapSize, interpolatesLin(light),
+        refinesByDefault(light), lineBounds(light.screen, light.screenRect));
     if (!cubeShadowed(light)) return {};
     for (int face = 0; face < 6; ++face)
         e.faceInView[face] = cubeFaceTouchesView(light.camera, light.light, light.medium, face);
     return {};
 }
 
-ChainOptions EpipolarMethod::options(const LightSetup& s, const LightData*,
+ChainOptions EpipolarMethod::options(const LightSetup& s, const LightData* data,
                                      const ChainOptions*) const {
-    const lightscatter::EpipolarSettings& e = s.settings.epipolar;
+    // The light's own sizes (prepare()'s); the settings' where there is no frame (the budget).
+    const lightscatter::EpipolarSettings e =
+        data != nullptr ? sized(s.settings.epipolar, static_cast<const EpipolarFrame*>(data)->sizes)
+                        : s.settings.epipolar;
     Options o;
     o.slices = e.slices;
     o.samples = e.samplesPerSlice;
@@ -141,12 +160,20 @@ std::string EpipolarMethod::summary(const ChainConfig& c) const {
 }
 
 std::string EpipolarMethod::frameNote(const LightFrame& frame, const ChainConfig& c) const {
-    if (!frame.data || !c.shadowed || c.light != LightType::Point) return {};
+    if (!frame.data || !c.shadowed) return {};
     const EpipolarFrame& e = epipolarFrameOf(frame);
+    std::string lines;
+    if (e.sizes != e.full)
+        lines = "lines within its " + std::to_string(e.rect.extent.width) + "x" +
+                std::to_string(e.rect.extent.height) +
+                " screen rectangle: " + std::to_string(e.sizes.slices) + " slices of " +
+                std::to_string(e.sizes.samples) + " samples";
+    if (c.light != LightType::Point) return lines;
     std::string list;
     for (int f = 0; f < 6; ++f)
         if (e.inView(f)) list += std::string(list.empty() ? "" : ", ") + cubeFaceName(f);
-    return "cube faces reaching the view: " + (list.empty() ? std::string("none") : list) +
+    return (lines.empty() ? "" : lines + "; ") +
+           "cube faces reaching the view: " + (list.empty() ? std::string("none") : list) +
            " (the others' passes record no work)";
 }
 

@@ -122,24 +122,14 @@ std::string capsRefusal(const ls::MethodUnit& unit, const ls::LightSetup& s) {
 
 namespace {
 
-// Epipolar sampling for a shadowed light, unless the screen is too small for it to pay, or the
-// light covers so little of it that marching its pixels costs less than epipolar's samples and
-// full-screen passes.
+// Epipolar sampling for a shadowed light, unless the screen is too small for it to pay. A light
+// that covers little of the screen is sampled too: its lines keep to its screen rectangle, and
+// their count to its share (passes/epipolar/screen_share.h), which costs less than marching the
+// rectangle's pixels at every share measured (docs/methods.md).
 MethodChoice epipolarOrBruteForce(const ls::LightSetup& s, const std::string& light) {
     const uint64_t pixels = uint64_t{s.screen.width} * s.screen.height;
     const uint64_t samples =
         uint64_t{s.settings.epipolar.slices} * s.settings.epipolar.samplesPerSlice;
-    const uint64_t covered = uint64_t{s.screenRect.extent.width} * s.screenRect.extent.height;
-    const uint64_t texels = std::max(1u, s.light.shadowMapSize);
-    if (covered != 0 && covered * texels <= pixels * kMarchTexelsPerPixel) {
-        char share[96];
-        std::snprintf(
-            share, sizeof share, "%.1f%% of the screen (at most %.1f%% with a %u-texel map)",
-            100.0 * static_cast<double>(covered) / static_cast<double>(pixels),
-            100.0 * kMarchTexelsPerPixel / static_cast<double>(texels), s.light.shadowMapSize);
-        return pick(Method::BruteForce,
-                    light + " within " + share + ": brute force marches only its screen rectangle");
-    }
     if (pixels * kEpipolarSamplesPerPixel >= samples) return sampled(light + ": epipolar sampling");
     return pick(Method::BruteForce,
                 light + " on a screen of " + std::to_string(pixels) + " pixels, fewer than " +

@@ -21,13 +21,6 @@ inline constexpr float kAnalyticMaxOpticalDepth = 0.007f;
 // (the atrium at about 272x153, 25 samples per pixel; docs/methods.md gives the measurement).
 inline constexpr uint32_t kEpipolarSamplesPerPixel = 24;
 
-// A shadowed light is marched per pixel within its screen rectangle (lightScreenRect; brute force)
-// rather than sampled epipolarly, whose full-screen passes cost the same however small the light,
-// when rectangle pixels x shadow-map size <= screen pixels x this: a march's steps per pixel grow
-// with the map's texels. At 64, a 512-texel spot within 12.5% of the screen, a 2048-texel one
-// within 3.1%; docs/methods.md gives the measurement (crossover near 90 on lavapipe).
-inline constexpr uint32_t kMarchTexelsPerPixel = 64;
-
 struct MethodChoice {
     Method method = Method::Epipolar;  // never Auto
     // The method's unit (the registry's; `method` is never Auto nor out of the enum).

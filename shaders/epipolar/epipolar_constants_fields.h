@@ -12,6 +12,10 @@ LS_VEC4 unwarp;  // x: bilateral threshold, yzw: -
 // x: the cube face (layer) a per-face pass marches, in Vulkan's order +X, -X, +Y, -Y, +Z, -Z, -1
 // in the light's own block; y: 1 when that face's frustum reaches the view (1 in the light's own)
 LS_VEC4 cubeFace;
+// The border the lines leave by, in NDC (lo.xy, hi.xy): the centres of the outer pixels of the
+// light's screen rectangle (passes/epipolar/screen_share.h), the whole screen's shrunk boundary
+// where its rays may cross every pixel
+LS_VEC4 bounds;
 // x: the march's phases P (its order, marchTexel in epipolar_constants.glsl; 1: a sample's own
 // texel), y: its phase blocks per row (marchBlocksPerRow in epipolar_constants.h), zw: -
 LS_VEC4 march;

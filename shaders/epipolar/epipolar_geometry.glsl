@@ -1,13 +1,15 @@
-// The screen side of epipolar sampling: the shrunk screen boundary, where each slice's line leaves
+// The screen side of epipolar sampling: the shrunk boundary of the light's screen rectangle, where each slice's line leaves
 // it, and the inverse (which slice a pixel lies on).
 #ifndef LS_EPIPOLAR_GEOMETRY_GLSL
 #define LS_EPIPOLAR_GEOMETRY_GLSL
 #include "epipolar_constants.glsl"
 #include "frame.glsl"
 
-// Pixel centres span [-1 + 1/W, 1 - 1/W] x [-1 + 1/H, 1 - 1/H] (seed 000, optimised placement).
-vec2 boundaryLo() { return -1.0 + frame.screenSize.zw; }
-vec2 boundaryHi() { return 1.0 - frame.screenSize.zw; }
+// The centres of the outer pixels of the light's screen rectangle: seed 000's optimised placement
+// ([-1 + 1/W, 1 - 1/W] x [-1 + 1/H, 1 - 1/H] on the whole screen), on the part of the screen
+// its rays may cross (epipolar.bounds).
+vec2 boundaryLo() { return epipolar.bounds.xy; }
+vec2 boundaryHi() { return epipolar.bounds.zw; }
 
 bool insideBoundary(vec2 p, float eps) {
     return all(greaterThanEqual(p, boundaryLo() - eps)) && all(lessThanEqual(p, boundaryHi() + eps));

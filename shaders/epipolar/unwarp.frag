@@ -90,7 +90,8 @@ void main() {
     // search. In Lin mode the samples still speak where they can (the image stays the same), and
     // where they cannot the pixel is served as 0 rather than left to the fix-up.
     bool dark = !(t0 < t1);
-    bool nothing = dark && carriesShadowedFraction();
+    // Outside the light's screen rectangle no ray reaches its volume and no line runs.
+    bool nothing = (dark && carriesShadowedFraction()) || !insideBoundary(p, 1e-5);
     vec4 value = vec4(0.0);
     if (!nothing) {
         bool served = filterSamples(p, z, value);

@@ -238,7 +238,10 @@ TEST_F(LightsGpu, SunAndTwoSpotsInOneFrame) {
 
 // Issue #25's frame: a shadowed sun, two shadowed spots (one small) and four unshadowed point
 // lights, auto choosing per light. The frame's Lin equals the sum of the seven single-light Lins,
-// each rendered alone with the method auto picked for that light.
+// each rendered alone with the method auto picked for that light. The small spot has settings of
+// its own, with more epipolar samples than this screen has pixels to serve (auto marches it per
+// pixel), so that the frame mixes methods: a small spot is otherwise sampled as the others are,
+// its lines within its screen rectangle (passes/epipolar/screen_share.h).
 TEST_F(LightsGpu, AutoPicksPerLightAndTheFrameIsTheSumOfItsLights) {
     TestFrame a(dev(), sceneWith(spotOverGrille()));
     lightscatter::Light narrow = secondSpot();
@@ -252,6 +255,9 @@ TEST_F(LightsGpu, AutoPicksPerLightAndTheFrameIsTheSumOfItsLights) {
     std::vector<lightscatter::LightInput> lights = {
         input(sun.description(Method::Auto, lightscatter::Profile::Custom, settings)), input(da),
         input(b.description(Method::Auto, lightscatter::Profile::Custom, settings))};
+    lights[2].settings = settings;
+    lights[2].settings->epipolar.slices = 1024;
+    lights[2].settings->epipolar.samplesPerSlice = 1024;
     const glm::vec3 points[] = {
         {-1.5f, 1.0f, 0.5f}, {1.5f, 1.5f, -0.5f}, {0.0f, 2.5f, 1.0f}, {2.0f, 0.8f, 1.5f}};
     for (size_t k = 0; k < 4; ++k) {

@@ -11,7 +11,7 @@ scenes measure the cost of N lights (bench/lights_scaling.json). Each spot is as
 atrium_sun_small_spots is the atrium's own sun (shadowed) and four small shadowed spots hung 4.5 m
 up, soft-edged (inner 8, outer 11 degrees) with a 6 m windowed range, each covering a few percent of
 a 1920x1080 screen: the frame of a method chosen per light (bench/lights_per_light.json), where a
-small spot's chain costs what its pixels cost rather than a full-screen pass.
+small spot's chain costs its share of the screen rather than a full-screen pass.
 Deterministic; standard library only.
 
     python3 tools/make_scenes/make_lights_scenes.py [OUT_DIR] [--counts 1,2,4,8,16]
