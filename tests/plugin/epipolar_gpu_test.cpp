@@ -188,3 +188,64 @@ TEST_F(EpipolarGpu, ColoredShaftsMatchBruteForceWithTreesOnAndOff) {
     EXPECT_TRUE(red);
     EXPECT_TRUE(blue);
 }
+
+namespace {
+
+// The slices and samples per slice the frame's report gives a light whose lines were cut to its
+// screen rectangle; the settings' where it names none.
+std::pair<uint32_t, uint32_t> lineCounts(const lightscatter::FrameReport& r,
+                                         const lightscatter::Settings& s) {
+    unsigned slices = 0, samples = 0;
+    const size_t at = r.reason.find("screen rectangle: ");
+    if (at == std::string::npos ||
+        std::sscanf(r.reason.c_str() + at, "screen rectangle: %u slices of %u samples", &slices,
+                    &samples) != 2)
+        return {s.epipolar.slices, s.epipolar.samplesPerSlice};
+    return {slices, samples};
+}
+
+}  // namespace
+
+// A spot's lines follow its share of the screen (passes/epipolar/screen_share.h): they grow at
+// once when its screen rectangle grows past a step, and keep their count when it shrinks back by
+// less than the margin, so that a light whose share hovers around a step does not switch its
+// chain's configuration (a compiled graph) from frame to frame. The cone widens in half-degree
+// steps until the counts grow, then moves between the last two angles. Measured at 64x48: 256 x
+// 256 lines up to 6.5 degrees, 512 x 256 from 7.
+TEST_F(EpipolarGpu, ASpotHoveringAtASizeStepKeepsItsLineCounts) {
+    lightscatter::Light spot = spotOverGrille();
+    spot.range = 8.0f;
+    TestFrame frame(dev(), sceneWith(spot));
+    lightscatter::Settings settings = smallSettings(frame.spec().screen);
+    settings.epipolar.slices = 512;
+    settings.epipolar.samplesPerSlice = 256;
+    auto renderAt = [&](float degrees) {
+        lightscatter::FrameDescription d =
+            frame.description(Method::Epipolar, lightscatter::Profile::Custom, settings);
+        d.light.innerConeAngleDegrees = d.light.outerConeAngleDegrees = degrees;
+        return lineCounts(plugin().render(d), settings);
+    };
+    float below = 0.0f, above = 0.0f;
+    std::pair<uint32_t, uint32_t> counts = renderAt(3.0f), grown;
+    const std::pair<uint32_t, uint32_t> first = counts;
+    for (float degrees = 3.5f; degrees <= 30.0f && above == 0.0f; degrees += 0.5f) {
+        const auto next = renderAt(degrees);
+        EXPECT_GE(next.first, counts.first) << degrees << " degrees: a wider cone, fewer slices";
+        if (next != counts) {
+            below = degrees - 0.5f;
+            above = degrees;
+            grown = next;
+        }
+        counts = next;
+    }
+    ASSERT_GT(above, 0.0f) << "the counts never grew from " << first.first << " x " << first.second;
+    std::printf("counts grow between %.1f and %.1f degrees: %u x %u -> %u x %u\n", below, above,
+                first.first, first.second, grown.first, grown.second);
+    EXPECT_LT(first.first, settings.epipolar.slices) << "the narrowest cone kept every slice";
+    for (int k = 0; k < 4; ++k) {
+        EXPECT_EQ(renderAt(below), grown) << "back to " << below << " degrees, round " << k;
+        EXPECT_EQ(renderAt(above), grown) << "at " << above << " degrees, round " << k;
+    }
+    // (EpipolarScreenShare.AShareNearAStepKeepsTheFrameBeforesSizes: the counts do shrink once the
+    // share is past the margin.)
+}
