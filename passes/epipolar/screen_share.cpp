@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "epipolar_constants.h"
+
 namespace ls {
 namespace {
 
@@ -60,11 +62,9 @@ LineSizes sizesForRect(const lightscatter::EpipolarSettings& s, VkExtent2D scree
     const double W = screen.width, H = screen.height;
     const double perimeter = std::min((w + h) / (W + H), 1.0);
     const double diagonal = std::min(std::sqrt((w * w + h * h) / (W * W + H * H)), 1.0);
-    // The march's order needs the samples per slice a multiple of the initial step where the
-    // settings' are (marchPhases), and the slices a multiple of 4.
-    const uint32_t step = s.initialSampleStep > 1 && s.samplesPerSlice % s.initialSampleStep == 0
-                              ? s.initialSampleStep
-                              : 1;
+    // The march's order needs the samples per slice a multiple of its phases, and the slices a
+    // multiple of 4.
+    const uint32_t step = marchPhases(s);
     uint32_t slicesBefore = 0, samplesBefore = 0;
     if (before != nullptr) {
         slicesBefore = halvingsOf(full.slices, before->slices);

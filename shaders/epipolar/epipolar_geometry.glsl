@@ -1,5 +1,5 @@
-// The screen side of epipolar sampling: the shrunk boundary of the light's screen rectangle, where each slice's line leaves
-// it, and the inverse (which slice a pixel lies on).
+// The screen side of epipolar sampling: the shrunk boundary of the light's screen rectangle,
+// where each slice's line leaves it, and the inverse (which slice a pixel lies on).
 #ifndef LS_EPIPOLAR_GEOMETRY_GLSL
 #define LS_EPIPOLAR_GEOMETRY_GLSL
 #include "epipolar_constants.glsl"

@@ -1,20 +1,19 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // The temporal mode's blend: each froxel's in-scattering, sampled this frame at its own jittered
-// point, blended with the frame before's grid where that frame saw the froxel's centre
-// (reprojected with its camera and its slices): lerp(this frame's, history, weight), with what
-// engines do against ghosting. The history is fetched with a Catmull-Rom filter across columns and
-// rows (a trilinear fetch blurs it a little more each frame the camera moves), then clamped to the
-// range of this frame's samples in the 3x3x3 froxels around (each sampled at its own point, so
-// the range spans what the froxel holds), so that a shaft that left a froxel takes its history
-// with it. Where this frame's froxel knows its unshadowed in-scattering exactly (a point or spot
-// light's slab: the injections' alpha), the history is first carried to it, so that the blend
-// averages only the shadow and cookie. Where a light changed since the frame before (the host
-// compares their constants), a history that lay further outside that range than the threshold
-// is dropped: the light's
-// contribution changed there, not the sampling. Where the history does not cover the froxel (off
-// its frustum, or no history) or is dropped, the froxel keeps this frame's sample. The result is
-// the grid the integration reads and the next frame's history; this frame's samples stay as they
+// point, blended with the frame before's grid where that frame saw the froxel's centre (reprojected
+// with its camera and its slices): lerp(this frame's, history, weight), with what engines do
+// against ghosting. The history is fetched with a Catmull-Rom filter across columns and rows (a
+// trilinear fetch blurs it a little more each frame the camera moves), then clamped to the range of
+// this frame's samples in the 3x3x3 froxels around (each sampled at its own point, so the range
+// spans what the froxel holds), so that a shaft that left a froxel takes its history with it. Where
+// this frame's froxel knows its unshadowed in-scattering exactly (a point or spot light's slab: the
+// injections' alpha), the history is first carried to it, so that the blend averages only the
+// shadow and cookie. Where a light changed since the frame before (the host compares their
+// constants), a history that lay further outside that range than the threshold is dropped: the
+// light's contribution changed there, not the sampling. Where the history does not cover the froxel
+// (off its frustum, or no history) or is dropped, the froxel keeps this frame's sample. The result
+// is the grid the integration reads and the next frame's history; this frame's samples stay as they
 // were, for the ranges of the froxels around.
 #define LS_FROXEL_TEMPORAL 1
 #include "froxel_grid.glsl"
