@@ -11,6 +11,12 @@ namespace {
 
 constexpr float kNearSpacings = 4.0f;
 constexpr uint32_t kNearSplit = 4;
+// The slabs drawn whole beside a shadowed spot's apex: those within this many of their own
+// thickness of its view depth. Measured at 320x180 against the float64 reference (mean relative
+// error, none / 2 / every near slab): dense_medium 0.055 / 0.018 / 0.016, light_center 0.024 /
+// 0.014 / 0.012, spot_near_edge 0.033 / 0.016 / 0.012; at 1920x1080 every near slab took
+// dense_medium 22% longer than 2 (560 against 459 ms), and 2 about as long as none.
+constexpr float kApexSlabs = 2.0f;
 
 // Six squares around a point light, `r` from it: the backplate of a light with no walls.
 std::vector<beam::Polygon> cubeFaces(const glm::dvec3& c, double r) {
@@ -89,7 +95,31 @@ BeamTreeFrame buildBeamTreeFrame(const CameraParams& camera, const LightParams& 
         beam::appendPartitioned(volume.tree, quad, uncertain,
                                 out.litAsPlanes ? &out.points : nullptr);
     };
+    // A shadowed spot's slabs beside its apex are drawn whole over the polygon through which rays
+    // cross the cone within them (spotSlabFootprint), all of it uncertain: there the cone is
+    // narrower than a slab is long, and a plane cut to the cone at its own depth misses the rays
+    // that cross it between two planes, where the light is brightest. planes.frag cuts each ray to
+    // the cone and looks up the shadow map at its slab's middle. Without a shadow map the tree's
+    // cut is the only shadow, and the plane keeps it.
+    const bool wholeSlabs = light.kind == LightType::Spot && light.shadowMapSize > 0;
     const float split = static_cast<float>(kNearSplit);
+    auto addSlab = [&](float index, float j) {
+        const float z = placement.push.boxMin.z + (index + (j + 0.5f) / split) * spacing;
+        const float front = placement.push.boxMin.z + (index + j / split) * spacing;
+        const float back = placement.push.boxMin.z + (index + (j + 1.0f) / split) * spacing;
+        if (!wholeSlabs ||
+            std::max(front - lightDepth, lightDepth - back) > kApexSlabs * out.nearSpacing)
+            return addPlane(z);
+        out.litStarts.push_back(static_cast<uint32_t>(out.points.size()));
+        out.uncertainStarts.push_back(static_cast<uint32_t>(uncertain.size()));
+        // The box's first slab also stands for the ray's head, from the camera (planes.frag).
+        const std::vector<glm::vec2> footprint =
+            spotSlabFootprint(camera, light, medium, index + j == 0.0f ? 0.0f : front, back, z);
+        for (size_t k = 1; k + 1 < footprint.size(); ++k)
+            for (size_t c : {size_t{0}, k, k + 1})
+                uncertain.emplace_back(glm::vec3(toWorld * glm::vec4(footprint[c], -z, 1.0f)),
+                                       1.0f);
+    };
     for (uint32_t i = 0; i < placement.planes; ++i) {
         const float index = static_cast<float>(i);
         if (i < nearFirst || i >= nearEnd) {
@@ -97,9 +127,7 @@ BeamTreeFrame buildBeamTreeFrame(const CameraParams& camera, const LightParams& 
             continue;
         }
         if (i == nearFirst) out.nearFirst = static_cast<uint32_t>(out.litStarts.size());
-        for (uint32_t j = 0; j < kNearSplit; ++j)
-            addPlane(placement.push.boxMin.z +
-                     (index + (static_cast<float>(j) + 0.5f) / split) * spacing);
+        for (uint32_t j = 0; j < kNearSplit; ++j) addSlab(index, static_cast<float>(j));
         if (i + 1 == nearEnd) out.nearEnd = static_cast<uint32_t>(out.litStarts.size());
     }
     out.litStarts.push_back(static_cast<uint32_t>(out.points.size()));

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <vector>
 
 namespace ls {
@@ -60,6 +61,16 @@ std::vector<glm::dvec3> lightVolumeCorners(const LightParams& light, float reach
                 c.emplace_back(glm::dvec3(p) / p.w);
             }
     return c;
+}
+
+// How far from the camera the light's volume is built out to: past the farthest view ray's end.
+double volumeReach(const CameraParams& camera, const LightParams& light,
+                   const MediumParams& medium) {
+    const float zFar = std::max(farthestViewDepth(camera, medium), camera.nearPlane * 1.001f);
+    const glm::vec2 t = frustumTangents(camera);
+    const glm::vec3 cameraPos = glm::vec3(glm::inverse(glm::dmat4(camera.view))[3]);
+    return static_cast<double>(glm::length(light.position - cameraPos) +
+                               zFar * std::sqrt(1.0f + t.x * t.x + t.y * t.y));
 }
 
 // betaR pR + betaM pM at one scattering angle, as shaders/shared/math.glsl's phaseSum.
@@ -120,6 +131,89 @@ float estimatedPlaneRange(const CameraParams& camera, const LightParams& light,
     return std::max(1.25f * peak, 1e-30f);
 }
 
+std::vector<glm::vec2> spotSlabFootprint(const CameraParams& camera, const LightParams& light,
+                                         const MediumParams& medium, float front, float back,
+                                         float depth) {
+    if (light.kind != LightType::Spot || !(front < back) || !(depth > 0.0f)) return {};
+    // The cone within its range held by a pyramid of kSides faces around it (apex first), in view
+    // space: tighter than the square pyramid of the planes' box, whose corners reach 41% wider.
+    constexpr int kSides = 8;
+    const glm::dmat4 view(camera.view);
+    const glm::dvec3 axis = glm::normalize(glm::dvec3(light.direction));
+    const glm::dvec3 helper = std::fabs(axis.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
+    const glm::dvec3 r = glm::normalize(glm::cross(axis, helper)), u = glm::cross(r, axis);
+    const double cosA = light.cosOuter;
+    const double radius = std::sqrt(std::max(1.0 - cosA * cosA, 0.0)) / cosA /
+                          std::cos(std::numbers::pi / kSides);  // per unit of depth
+    const double reach =
+        std::min(static_cast<double>(light.range), volumeReach(camera, light, medium));
+    std::vector<glm::dvec3> v{glm::dvec3(view * glm::dvec4(glm::dvec3(light.position), 1.0))};
+    for (int k = 0; k < kSides; ++k) {
+        const double phi = 2.0 * std::numbers::pi * static_cast<double>(k) / kSides;
+        const glm::dvec3 w = glm::dvec3(light.position) +
+                             reach * (axis + radius * (std::cos(phi) * r + std::sin(phi) * u));
+        v.emplace_back(view * glm::dvec4(w, 1.0));
+    }
+    // The pyramid cut to the slab is convex: its corners are the pyramid's own within the slab and
+    // where its edges (from the apex, and around the base) cross the slab's two faces.
+    const double d0 = front, d1 = back;
+    std::vector<glm::dvec3> corners;
+    for (const glm::dvec3& p : v)
+        if (-p.z >= d0 && -p.z <= d1) corners.push_back(p);
+    for (int k = 1; k <= kSides; ++k)
+        for (const auto& [i, j] : {std::pair{0, k}, {k, k % kSides + 1}}) {
+            const glm::dvec3 &p = v[i], &q = v[j];
+            for (double d : {d0, d1})
+                if ((-p.z - d) * (-q.z - d) < 0.0)
+                    corners.push_back(p + (q - p) * ((d + p.z) / (p.z - q.z)));
+        }
+    if (corners.empty()) return {};
+    // Each corner carried along its view ray to the plane; a corner at the camera lands at
+    // infinity, and then the view's whole rectangle stands for the hull.
+    const glm::dvec2 half = glm::dvec2(frustumTangents(camera)) * (1.01 * double(depth));
+    std::vector<glm::dvec2> q;
+    for (const glm::dvec3& p : corners) {
+        if (-p.z < 1e-6 * double(depth)) {
+            q = {-half, {half.x, -half.y}, half, {-half.x, half.y}};
+            break;
+        }
+        q.push_back(glm::dvec2(p) * (double(depth) / -p.z));
+    }
+    // Their convex hull (monotone chain, counter-clockwise), then cut to the view's rectangle.
+    std::sort(q.begin(), q.end(), [](const glm::dvec2& a, const glm::dvec2& b) {
+        return a.x < b.x || (a.x == b.x && a.y < b.y);
+    });
+    auto cross = [](const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b) {
+        return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+    };
+    std::vector<glm::dvec2> hull(2 * q.size());
+    size_t k = 0;
+    for (size_t i = 0; i < q.size(); ++i) {
+        while (k >= 2 && cross(hull[k - 2], hull[k - 1], q[i]) <= 0.0) --k;
+        hull[k++] = q[i];
+    }
+    for (size_t i = q.size() - 1, t = k + 1; i-- > 0;) {
+        while (k >= t && cross(hull[k - 2], hull[k - 1], q[i]) <= 0.0) --k;
+        hull[k++] = q[i];
+    }
+    hull.resize(k > 1 ? k - 1 : k);
+    for (int dim = 0; dim < 2; ++dim)
+        for (double side : {-1.0, 1.0}) {
+            const double limit = side * half[dim];
+            auto in = [&](const glm::dvec2& p) { return side * (p[dim] - limit) <= 0.0; };
+            std::vector<glm::dvec2> cut;
+            for (size_t i = 0; i < hull.size(); ++i) {
+                const glm::dvec2 &a = hull[i], &b = hull[(i + 1) % hull.size()];
+                if (in(a)) cut.push_back(a);
+                if (in(a) != in(b))
+                    cut.push_back(a + (b - a) * ((limit - a[dim]) / (b[dim] - a[dim])));
+            }
+            hull = std::move(cut);
+        }
+    if (hull.size() < 3) return {};
+    return std::vector<glm::vec2>(hull.begin(), hull.end());
+}
+
 std::string planesNote(uint32_t planes, float spacing) {
     if (planes == 0) return "no sampling plane (the light's volume is out of view)";
     char buf[96];
@@ -147,8 +241,6 @@ PlanePlacement placePlanes(const CameraParams& camera, const LightParams& light,
     PlanePlacement out;
     const float zNear = camera.nearPlane;
     const float zFar = std::max(farthestViewDepth(camera, medium), zNear * 1.001f);
-    const glm::vec2 tangents = frustumTangents(camera);
-    const float reach = zFar * std::sqrt(1.0f + tangents.x * tangents.x + tangents.y * tangents.y);
 
     // The box in view space: the light's volume where it has one, always cut by the view frustum.
     const std::vector<glm::vec3> frustum = viewFrustumCorners(camera, zNear, zFar);
@@ -162,10 +254,9 @@ PlanePlacement placePlanes(const CameraParams& camera, const LightParams& light,
     float boxFront = zNear, boxBack = zFar;  // view depths (positive) the planes span
     if (bounded) {
         const glm::dmat4 view(camera.view);
-        const glm::vec3 cameraPos = glm::vec3(glm::inverse(view)[3]);
         glm::vec3 llo(1e30f), lhi(-1e30f);
         for (const glm::dvec3& w :
-             lightVolumeCorners(light, glm::length(light.position - cameraPos) + reach)) {
+             lightVolumeCorners(light, static_cast<float>(volumeReach(camera, light, medium)))) {
             const glm::vec3 p = glm::vec3(view * glm::dvec4(w, 1.0));
             llo = glm::min(llo, p);
             lhi = glm::max(lhi, p);

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "lightscatter/settings.h"
 #include "plane_settings.h"
@@ -44,6 +45,16 @@ PlaneSettings planeSettings(const lightscatter::Settings& s);
 
 PlanePlacement placePlanes(const CameraParams& camera, const LightParams& light,
                            const MediumParams& medium, const PlaneSettings& settings, double time);
+
+// The convex polygon (counter-clockwise, view-space x and y on the plane at view depth `depth`)
+// through which every view ray passes that crosses a spot light's pyramid between view depths
+// `front` and `back` (`front` 0: from the camera on), cut to the view; empty where no ray does. A
+// plane cut to the cone at its own depth misses the rays that cross the cone between two planes
+// (beside its apex, where the cone is narrower than a slab is long): a slab drawn over this
+// polygon does not.
+std::vector<glm::vec2> spotSlabFootprint(const CameraParams& camera, const LightParams& light,
+                                         const MediumParams& medium, float front, float back,
+                                         float depth);
 
 // The frame report's note on a placement: "N sampling planes S m apart".
 std::string planesNote(uint32_t planes, float spacing);

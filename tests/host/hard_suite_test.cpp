@@ -96,16 +96,19 @@ constexpr double kBeamTreeDefault = 0.005;
 
 // beam-tree-sampling (seed 004 5.3) draws seed 002's planes where the tree says lit or uncertain
 // (float32 target), with thinner planes near the light's depth whose slabs take the closed form
-// (planes.frag); the frontmost slab also takes the ray's head before the planes' box. Measured:
-// 0.0294 point_at_camera and 0.0273 spot_at_camera (brute force 0.0291 and 0.0290: 0.755 and
-// 0.732 when the head was left out, the light's glow lying before the first plane), 0.053
-// light_on_edge, 0.049 light_behind_camera, at most 0.043 elsewhere (before the near planes:
-// 0.263 light_on_edge, 0.161 light_corner, 0.142 light_center, 0.134 dense_medium, 0.144
-// windowed_point_on_ray).
+// (planes.frag); the frontmost slab also takes the ray's head before the planes' box, and a
+// shadowed spot's slabs beside its apex are drawn over every ray that crosses its cone within
+// them. Measured: 0.0294 point_at_camera and 0.0273 spot_at_camera (brute force 0.0291 and
+// 0.0290: 0.755 and 0.732 when the head was left out, the light's glow lying before the first
+// plane), 0.0104 light_on_edge and 0.0140 light_corner (0.0529 and 0.0315 with those slabs cut to
+// the cone at their planes' depths, which lost the rays crossing it beside its apex), 0.049
+// light_behind_camera, at most 0.043 elsewhere (before the near planes: 0.263 light_on_edge, 0.161
+// light_corner, 0.142 light_center, 0.134 dense_medium, 0.144 windowed_point_on_ray).
 const std::map<std::string, double> kBeamTreeSamplingBounds = {
     {"point_at_camera", 0.045},
     {"spot_at_camera", 0.045},
-    {"light_on_edge", 0.07},
+    {"light_on_edge", 0.02},
+    {"light_corner", 0.02},
     {"thin_medium_km", 0.002},
     // Measured 0.0547 and 0.0558 (0.214 and 0.124 at 320x180 with even planes and midpoints; 0.057
     // and 0.058 now, bench/point_in_cage_sampling.json).

@@ -295,3 +295,74 @@ TEST(PlanePlacement, ASpacingSetsTheCountFromTheDepthExtent) {
     settings.spacing = 1e-6f;  // 19 million planes' worth: held at 4096
     EXPECT_EQ(ls::placePlanes(camera, spot, medium, settings, 0.0).planes, 4096u);
 }
+
+// beam-tree-sampling's near slabs (no GPU): every view ray that crosses a spot's cone between a
+// slab's two depths passes through the slab's footprint on its middle plane, beside the apex too,
+// where some of those rays miss the cone at the middle plane's own depth; a slab beside the apex
+// covers a small part of the view; a slab past the range or before the apex has none.
+TEST(PlanePlacement, ASpotSlabsFootprintHoldsEveryRayThatCrossesTheConeInIt) {
+    auto [camera, spot, medium] = placementScene();
+    spot.position = {0.3f, 3.0f, -8.0f};  // 8 m ahead, 2 m up, shining down
+    spot.direction = {0, -1, 0};
+    spot.cosOuter = spot.cosInner = std::cos(glm::radians(30.0f));
+    spot.range = 10.0f;
+    const glm::mat4 toWorld = glm::inverse(camera.view);
+    const glm::vec3 eye(toWorld[3]);
+    const float tx = 1.0f / camera.projection[0][0], ty = 1.0f / camera.projection[1][1];
+    auto inCone = [&](const glm::vec3& p) {
+        const glm::vec3 d = p - spot.position;
+        const float r = glm::length(d);
+        return r < spot.range && glm::dot(d, spot.direction) >= spot.cosOuter * r;
+    };
+    auto inside = [](const std::vector<glm::vec2>& poly, const glm::vec2& p) {
+        for (size_t i = 0; i < poly.size(); ++i) {
+            const glm::vec2 a = poly[i], e = poly[(i + 1) % poly.size()] - a;
+            if (e.x * (p.y - a.y) - e.y * (p.x - a.x) < -1e-5f * glm::length(e)) return false;
+        }
+        return true;
+    };
+    for (const auto& [front, back] : {std::pair{7.9f, 8.0f},
+                                      {8.0f, 8.1f},
+                                      {7.95f, 8.05f},
+                                      {8.3f, 8.5f},
+                                      {0.0f, 7.95f},
+                                      {5.0f, 11.0f}}) {
+        const float z = 0.5f * (std::max(front, 0.1f) + back);
+        const std::vector<glm::vec2> footprint =
+            ls::spotSlabFootprint(camera, spot, medium, front, back, z);
+        ASSERT_GE(footprint.size(), 3u) << front << "-" << back;
+        int crossing = 0, missedAtMiddle = 0;
+        for (int y = 0; y <= 120; ++y)
+            for (int x = 0; x <= 120; ++x) {
+                // A view ray by its point at view depth 1.
+                const glm::vec2 at1((float(x) / 60.0f - 1.0f) * tx, (float(y) / 60.0f - 1.0f) * ty);
+                const glm::vec3 dir = glm::vec3(toWorld * glm::vec4(at1, -1.0f, 0.0f));
+                bool crosses = false;
+                for (int k = 0; k <= 400 && !crosses; ++k)
+                    crosses = inCone(eye + (front + (back - front) * float(k) / 400.0f) * dir);
+                if (!crosses) continue;
+                ++crossing;
+                missedAtMiddle += inCone(eye + z * dir) ? 0 : 1;
+                EXPECT_TRUE(inside(footprint, at1 * z))
+                    << "slab " << front << "-" << back << ", ray " << x << "," << y;
+            }
+        EXPECT_GT(crossing, 0) << front << "-" << back;
+        if (back - front < 0.5f) {
+            // Beside the apex: a small part of the view, and rays the middle plane's cone misses.
+            float area = 0.0f;
+            for (size_t i = 0; i < footprint.size(); ++i) {
+                const glm::vec2 a = footprint[i], b = footprint[(i + 1) % footprint.size()];
+                area += 0.5f * (a.x * b.y - a.y * b.x);
+            }
+            EXPECT_GT(area, 0.0f);  // counter-clockwise
+            EXPECT_LT(area, 0.3f * (4.0f * tx * ty * z * z)) << front << "-" << back;
+            EXPECT_GT(missedAtMiddle, 0) << front << "-" << back;
+        }
+    }
+    // Past the range (8 + 5.8 m deep at most), under the view (the pyramid reaches 2.2 m deep 10 m
+    // down), and a point light's.
+    EXPECT_TRUE(ls::spotSlabFootprint(camera, spot, medium, 18.5f, 19.0f, 18.75f).empty());
+    EXPECT_TRUE(ls::spotSlabFootprint(camera, spot, medium, 2.0f, 3.0f, 2.5f).empty());
+    spot.kind = ls::LightType::Point;
+    EXPECT_TRUE(ls::spotSlabFootprint(camera, spot, medium, 7.9f, 8.0f, 7.95f).empty());
+}
