@@ -291,8 +291,8 @@ json.dump({"runs": runs}, open("build/bench-report/merged.json", "w"))
 PY
 mkdir -p build/bench-report/merged && cp build/bench-report/merged.json build/bench-report/merged/bench.json
 /usr/bin/python3 scripts/plot_bench.py build/bench-report/merged "$out"
-for f in "$out"/strip_*.png; do  # the report's own strips; the lights' and planes' are their sections'
-  case "$(basename "$f")" in strip_lights_* | strip_planes_* | strip_slices_*) ;; *) rm -f "$f" ;; esac
+for f in "$out"/strip_*.png; do  # the report's own strips; the lights', planes' and cookies' are their sections'
+  case "$(basename "$f")" in strip_lights_* | strip_planes_* | strip_slices_* | strip_cookies_*) ;; *) rm -f "$f" ;; esac
 done
 for s in build/bench-report-error/strips/*_epipolar_balanced.png build/bench-report-error/strips/*_brute-force.png; do
   cp "$s" "$out/strip_$(basename "$s")"
