@@ -35,8 +35,28 @@ FroxelPush froxelPush(const FrameConstants& c, const FroxelGrid& g, float storag
     p.slices = {z.nearZ, z.farZ, std::log(z.farZ / z.nearZ), storage};
     p.jitter = glm::vec4(0.5f);
     p.columns = {0.0f, 0.0f, float(g.columns), float(g.rows)};
+    p.shift = {0.0f, 0.0f, 1.0f, 0.0f};
     return p;
 }
+
+// A still frame of the per-pixel history: the columns move by the step of its age, and each
+// froxel's own point stays on its column's ray.
+FroxelColumns stepColumns(FroxelPush& push, const rg::PassContext& ctx,
+                          const FroxelPixelClock& clock, const FrameConstants& now) {
+    const FroxelColumns c = froxelColumns(ctx, clock, now);
+    if (c.still) push.shift = glm::vec4(c.shift, 0.0f, 0.0f);
+    return c;
+}
+
+// apply.comp's push block (froxel_apply_push_fields.h).
+struct FroxelApplyPush {
+#define LS_VEC4 glm::vec4
+#define LS_MAT4 glm::mat4
+#include "shaders/froxels/froxel_apply_push_fields.h"
+#undef LS_VEC4
+#undef LS_MAT4
+};
+static_assert(sizeof(FroxelApplyPush) <= 128, "Vulkan guarantees 128 bytes of push constants");
 
 // temporal.comp's push block (froxel_temporal_push_fields.h).
 struct FroxelTemporalPush {
@@ -62,6 +82,13 @@ constexpr float kDropOutside = 1.0f;
 // A light animated slowly moves far less a frame (bench/flicker.json's: 0.1 degree, or 2 cm).
 constexpr float kLightJump = 0.0175f;
 
+// The per-pixel history: a pixel weighs this frame's nearest column by a Gaussian of its distance
+// to the column's ray, of this width (sigma, froxels), and the history carries at most this much
+// weight. A pixel gathers about 2 pi 0.25^2 = 0.39 a frame, so it remembers about ten frames. The
+// first values tried, not tuned (docs/performance.md, "Froxels refined per pixel").
+constexpr float kPixelWidth = 0.25f;
+constexpr float kPixelWeight = 4.0f;
+
 // The smallest Lin scale of the frame's lights: the integrated grid holds all of them.
 float gridStorage(const rg::PassContext& ctx,
                   const std::vector<rg::HostDataRef<LightFrame>>& lights) {
@@ -84,8 +111,9 @@ rg::ShaderCode froxelInjectShader(bool shadowMap, bool lightColor, bool cube, bo
                        {"LS_FROXEL_NOISE", noise}});
 }
 
-rg::ShaderCode froxelApplyShader(const CompositeVariant& target) {
-    return pickCompositeShader(ls_spirv::apply_comp_variants, {}, target);
+rg::ShaderCode froxelApplyShader(const CompositeVariant& target, bool pixels) {
+    return pickCompositeShader(ls_spirv::apply_comp_variants, {{"LS_FROXEL_PIXEL_HISTORY", pixels}},
+                               target);
 }
 
 glm::vec3 froxelJitterStep(uint32_t index) {
@@ -93,6 +121,40 @@ glm::vec3 froxelJitterStep(uint32_t index) {
     constexpr double g = 1.2207440846057594754;
     const glm::dvec3 a(1.0 / g, 1.0 / (g * g), 1.0 / (g * g * g));
     return glm::vec3(glm::fract(a * double(index)));
+}
+
+glm::vec2 froxelGridShift(uint32_t index) {
+    // 1 / g^k for g the plastic number, x = x^3 - 1's real root above 1.
+    constexpr double g = 1.3247179572447460260;
+    const glm::dvec2 a(1.0 / g, 1.0 / (g * g));
+    return glm::vec2(glm::fract(0.5 + a * double(index)) - 0.5);
+}
+
+FroxelColumns froxelColumns(const rg::PassContext& ctx, const FroxelPixelClock& clock,
+                            const FrameConstants& now) {
+    if (!clock.pixels.valid()) return {};
+    const rg::HistoryState h = ctx.history(clock.pixels);
+    const PreviousFrame& before = ctx.data(clock.previous);
+    FroxelColumns c;
+    // The frame before had a history of its own (it was the second of them at least) and had not
+    // moved from the one before it.
+    c.stillBefore = h.valid && h.age >= 2 && !before.beforeMoved;
+    if (!h.valid || before.lightsChanged || before.constants.viewProj != now.viewProj) return c;
+    c.still = true;
+    c.shift = froxelGridShift(h.age);
+    return c;
+}
+
+rg::PersistentImageDesc froxelPixelHistoryDesc(VkExtent2D screen) {
+    rg::PersistentImageDesc d;
+    d.format = VK_FORMAT_R32G32B32A32_SFLOAT;
+    d.extent = screen;
+    d.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    // The apply reads one and writes the other, each frame in the other role.
+    d.stages = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+    d.waitAccess = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+    d.handAccess = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT;
+    return d;
 }
 
 rg::PersistentImageDesc froxelHistoryDesc(const FroxelGrid& grid) {
@@ -110,7 +172,7 @@ rg::PersistentImageDesc froxelHistoryDesc(const FroxelGrid& grid) {
 }
 
 FroxelSettings froxelSettings(const lightscatter::FroxelsSettings& s) {
-    return {s.tile, s.slices, s.farDistance, s.temporal, s.historyWeight};
+    return {s.tile, s.slices, s.farDistance, s.temporal, s.historyWeight, s.pixelHistory};
 }
 
 FroxelGrid froxelGrid(VkExtent2D screen, const FroxelSettings& s) {
@@ -155,18 +217,25 @@ rg::ImageRef addFroxelInjection(rg::RenderGraph& graph, const FroxelInjectInputs
     const bool shadow = in.light.shadowMap.valid(), color = in.light.lightColor.valid();
     const bool slab = in.light.table.valid(), noise = in.noise.valid();
     pass.execute([frame = in.chain, table, grid, first, shadow, color, slab, noise,
-                  history = in.history](rg::PassContext& ctx) {
+                  history = in.history, clock = in.clock](rg::PassContext& ctx) {
         const LightFrame& values = ctx.data(frame.values);
         FroxelPush push = froxelPush(values.constants, grid, 1.0f);
-        if (noise)
-            push.jitter = glm::vec4(froxelJitterStep(ctx.history(history).age), kJitterSpread);
-        // The columns the light's volume may reach (its screen rectangle, in froxels).
+        const bool still = stepColumns(push, ctx, clock, values.constants).still;
+        const rg::ImageRef steps = clock.pixels.valid() ? clock.pixels : history;
+        if (noise) push.jitter = glm::vec4(froxelJitterStep(ctx.history(steps).age), kJitterSpread);
+        // The columns the light's volume may reach (its screen rectangle, in froxels; one more on
+        // each side when the columns are offset).
         const VkRect2D r = values.screenRect;
-        const uint32_t x0 = uint32_t(r.offset.x) / grid.tile, y0 = uint32_t(r.offset.y) / grid.tile;
-        const uint32_t x1 = std::min(
-            grid.columns, (uint32_t(r.offset.x) + r.extent.width + grid.tile - 1) / grid.tile);
+        const uint32_t pad = still ? 1 : 0;
+        const uint32_t x0 =
+            uint32_t(r.offset.x) / grid.tile - std::min(pad, uint32_t(r.offset.x) / grid.tile);
+        const uint32_t y0 =
+            uint32_t(r.offset.y) / grid.tile - std::min(pad, uint32_t(r.offset.y) / grid.tile);
+        const uint32_t x1 =
+            std::min(grid.columns,
+                     (uint32_t(r.offset.x) + r.extent.width + grid.tile - 1) / grid.tile + pad);
         const uint32_t y1 = std::min(
-            grid.rows, (uint32_t(r.offset.y) + r.extent.height + grid.tile - 1) / grid.tile);
+            grid.rows, (uint32_t(r.offset.y) + r.extent.height + grid.tile - 1) / grid.tile + pad);
         push.columns = {float(x0), float(y0), float(std::max(x0, x1)), float(std::max(y0, y1))};
         if (!first && (x1 <= x0 || y1 <= y0)) return;  // a later light that reaches no column
         rg::Specialization spec = frame.spec.constants();
@@ -198,10 +267,16 @@ rg::ImageRef addFroxelTemporalBlend(rg::RenderGraph& graph, const FroxelTemporal
     table.storageRead(LS_BINDING_FROXEL_HISTORY, in.history);
     const rg::ImageRef blended = table.storageWrite(LS_BINDING_FROXEL_HISTORY_OUT, in.historyOut);
     pass.execute([frame = in.chain, previous = in.previous, history = in.history,
-                  weight = in.weight, table, grid](rg::PassContext& ctx) {
+                  weight = in.weight, table, grid, clock = in.clock](rg::PassContext& ctx) {
         const PreviousFrame& before = ctx.data(previous);
-        const bool valid = ctx.history(history).valid && before.lightJump <= kLightJump;
-        const FroxelPush now = froxelPush(ctx.data(frame.values).constants, grid, 1.0f);
+        const FrameConstants& constants = ctx.data(frame.values).constants;
+        // A still frame's columns are offset: the per-pixel history gathers them, and this blend,
+        // which takes the columns where they stay, passes them on as they are. So the first frame
+        // that moves after still ones finds a grid of offset columns, not a blend: it starts anew.
+        const FroxelColumns columns = froxelColumns(ctx, clock, constants);
+        const bool valid = ctx.history(history).valid && before.lightJump <= kLightJump &&
+                           !columns.still && !columns.stillBefore;
+        const FroxelPush now = froxelPush(constants, grid, 1.0f);
         const FroxelPush then = froxelPush(before.constants, grid, 1.0f);
         FroxelTemporalPush push{};
         push.grid = now.grid;
@@ -231,9 +306,11 @@ rg::ImageRef addFroxelIntegration(rg::RenderGraph& graph, const FroxelIntegrateI
         graph.createImage(
             "froxel integrated in-scattering",
             rg::ImageDesc::volume(kFroxelIntegratedFormat, grid.columns, grid.rows, grid.slices)));
-    pass.execute([frame = in.chain, lights = in.lights, table, grid](rg::PassContext& ctx) {
-        const FroxelPush push =
-            froxelPush(ctx.data(frame.values).constants, grid, gridStorage(ctx, lights));
+    pass.execute([frame = in.chain, lights = in.lights, table, grid,
+                  clock = in.clock](rg::PassContext& ctx) {
+        const FrameConstants& constants = ctx.data(frame.values).constants;
+        FroxelPush push = froxelPush(constants, grid, gridStorage(ctx, lights));
+        stepColumns(push, ctx, clock, constants);
         const auto& p = frame.shared->pipelines.compute(
             "froxel integration", rg::spirv(ls_spirv::integrate_comp), table.layout(),
             sizeof(FroxelPush), frame.spec.constants());
@@ -252,20 +329,35 @@ CompositeOutputs addFroxelApply(rg::RenderGraph& graph, const FroxelApplyInputs&
     rg::BindingTable table = frameTable(pass, in.chain.constants);
     table.sampled(LS_BINDING_DEPTH, in.chain.depth, s.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
         .sampled(LS_BINDING_FROXEL_INTEGRATED, in.integrated, s.linear());
+    const bool pixels = in.clock.pixels.valid();
+    if (pixels) {
+        table.storageRead(LS_BINDING_FROXEL_PIXELS, in.clock.pixels);
+        graph.markOutput(table.storageWrite(LS_BINDING_FROXEL_PIXELS_OUT, in.pixelsOut));
+    }
     const CompositeOutputs written = addCompositeTarget(table, in.target);
-    pass.execute(
-        [frame = in.chain, lights = in.lights, table, grid, written](rg::PassContext& ctx) {
-            const FroxelPush push =
-                froxelPush(ctx.data(frame.values).constants, grid, gridStorage(ctx, lights));
-            const rg::ShaderCode shader = froxelApplyShader(compositeVariant(ctx, written));
-            const auto& p = frame.shared->pipelines.compute("froxel apply", shader, table.layout(),
-                                                            sizeof(FroxelPush), {});
-            p.bind(ctx.cmd());
-            table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
-            p.push(ctx.cmd(), push);
-            const VkExtent2D e = ctx.extent(written.color);
-            ctx.vk().CmdDispatch(ctx.cmd(), groupCount(e.width, 8), groupCount(e.height, 8), 1);
-        });
+    pass.execute([frame = in.chain, lights = in.lights, table, grid, written, pixels,
+                  clock = in.clock](rg::PassContext& ctx) {
+        const FrameConstants& c = ctx.data(frame.values).constants;
+        FroxelPush now = froxelPush(c, grid, gridStorage(ctx, lights));
+        FroxelApplyPush push{};
+        if (pixels) {
+            const bool still = stepColumns(now, ctx, clock, c).still;
+            // A frame that moved starts each pixel again from its trilinear fetch, worth one
+            // frame's nearest column: the next still frame refines it.
+            push.history = {kPixelWidth, kPixelWeight, still ? 1.0f : 0.0f, 1.0f};
+        }
+        push.grid = now.grid;
+        push.slices = now.slices;
+        push.shift = now.shift;
+        const rg::ShaderCode shader = froxelApplyShader(compositeVariant(ctx, written), pixels);
+        const auto& p = frame.shared->pipelines.compute("froxel apply", shader, table.layout(),
+                                                        sizeof(FroxelApplyPush), {});
+        p.bind(ctx.cmd());
+        table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
+        p.push(ctx.cmd(), push);
+        const VkExtent2D e = ctx.extent(written.color);
+        ctx.vk().CmdDispatch(ctx.cmd(), groupCount(e.width, 8), groupCount(e.height, 8), 1);
+    });
     return written;
 }
 
@@ -275,9 +367,11 @@ rg::ImageRef addFroxelExport(rg::RenderGraph& graph, const FroxelExportInputs& i
     rg::BindingTable table = frameTable(pass, in.chain.constants);
     table.storageRead(LS_BINDING_FROXEL_INTEGRATED, in.integrated);
     const rg::ImageRef written = table.storageWrite(LS_BINDING_FROXEL_VOLUME_OUT, in.volumeOut);
-    pass.execute([frame = in.chain, lights = in.lights, table, grid](rg::PassContext& ctx) {
-        const FroxelPush push =
-            froxelPush(ctx.data(frame.values).constants, grid, gridStorage(ctx, lights));
+    pass.execute([frame = in.chain, lights = in.lights, table, grid,
+                  clock = in.clock](rg::PassContext& ctx) {
+        const FrameConstants& constants = ctx.data(frame.values).constants;
+        FroxelPush push = froxelPush(constants, grid, gridStorage(ctx, lights));
+        stepColumns(push, ctx, clock, constants);
         const auto& p = frame.shared->pipelines.compute("froxel volume export",
                                                         rg::spirv(ls_spirv::export_comp),
                                                         table.layout(), sizeof(FroxelPush), {});

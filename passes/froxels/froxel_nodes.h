@@ -38,6 +38,24 @@ FroxelDepthRange froxelDepthRange(float nearPlane, float farPlane, bool infinite
 inline constexpr VkFormat kFroxelScatteringFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 inline constexpr VkFormat kFroxelIntegratedFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 
+// The per-pixel history's clock: the frame before's pixels (whose age steps the columns) and the
+// frame before's camera and lights. Invalid `pixels`: no per-pixel history, the columns stay.
+struct FroxelPixelClock {
+    rg::ImageRef pixels;
+    rg::HostDataRef<PreviousFrame> previous;
+};
+// Where the grid's columns are in a frame: `still` when the per-pixel history holds the frame
+// before's pixels and neither the camera nor a light changed since; then the whole grid is offset
+// by `shift` froxels (froxelGridShift of the history's age), else it stays (0).
+// PreviousFrame::beforeMoved tells whether the frame before was still too.
+struct FroxelColumns {
+    bool still = false;
+    glm::vec2 shift{0.0f};
+    bool stillBefore = false;  // the frame before was still: its grid's columns were offset
+};
+FroxelColumns froxelColumns(const rg::PassContext& ctx, const FroxelPixelClock& clock,
+                            const FrameConstants& now);
+
 struct FroxelInjectInputs {
     ChainContext chain;  // the light's constants and values
     LightImages light;   // its shadow map and light color, where it has them
@@ -50,6 +68,7 @@ struct FroxelInjectInputs {
     rg::ImageRef history;
     // The temporal mode's blue-noise tile (addFroxelBlueNoise), each froxel's own jitter.
     rg::ImageRef noise;
+    FroxelPixelClock clock;  // the per-pixel history's: where the columns are this frame
 };
 // The temporal mode's history of the grid: float32 in-scattering, read and written by compute
 // passes, kept read-only between frames.
@@ -68,12 +87,22 @@ rg::ImageRef addFroxelInjection(rg::RenderGraph& graph, const FroxelInjectInputs
 // over the frames are a low-discrepancy sequence of its own.
 glm::vec3 froxelJitterStep(uint32_t index);
 
+// The per-pixel history's offset of the whole grid in the frame of `index` (the history's age), in
+// froxels, in [-0.5, 0.5)^2: the R2 sequence (the plastic number's), from 0 at the first frame, so
+// that the columns' rays cover each froxel evenly over the frames.
+glm::vec2 froxelGridShift(uint32_t index);
+// The per-pixel history: float32 Lin and its weight at each pixel of the screen, read and written
+// by the apply.
+rg::PersistentImageDesc froxelPixelHistoryDesc(VkExtent2D screen);
+
 struct FroxelTemporalInputs {
     ChainContext chain;                // the first light's: this frame's camera
     rg::ImageRef scattering;           // every light's, injected at this frame's jittered points
     rg::ImageRef history, historyOut;  // the frame before's grid, and this frame's
     rg::HostDataRef<PreviousFrame> previous;
     float weight = 0.9f;  // the history's
+    // The per-pixel history's: in a still frame the blend stands aside (the pixels gather).
+    FroxelPixelClock clock;
 };
 // The blend with the frame before's grid, reprojected and clipped to this frame's neighbourhood
 // (temporal.comp), written into historyOut: the grid the integration reads. Returns it.
@@ -85,6 +114,7 @@ struct FroxelIntegrateInputs {
     rg::ImageRef scattering;
     // Every light's values: the integrated grid is stored at the smallest of their Lin scales.
     std::vector<rg::HostDataRef<LightFrame>> lights;
+    FroxelPixelClock clock;  // as FroxelInjectInputs'
 };
 // Lin and the mean transmittance from the camera to each froxel's far end
 // (kFroxelIntegratedFormat, the grid's size).
@@ -96,6 +126,10 @@ struct FroxelApplyInputs {
     rg::ImageRef integrated;
     std::vector<rg::HostDataRef<LightFrame>> lights;  // as the integration's
     CompositeTarget target;
+    // The per-pixel history (apply.comp): its clock (the frame before's pixels) and this frame's
+    // pixels; an invalid clock: none, the trilinear fetch alone.
+    FroxelPixelClock clock;
+    rg::ImageRef pixelsOut;
 };
 // The engine's color (and Lin output) with the grid applied at each pixel's depth.
 CompositeOutputs addFroxelApply(rg::RenderGraph& graph, const FroxelApplyInputs& in,
@@ -106,6 +140,7 @@ struct FroxelExportInputs {
     rg::ImageRef integrated;
     std::vector<rg::HostDataRef<LightFrame>> lights;  // as the integration's
     rg::ImageRef volumeOut;  // the engine's 3D image (R16G16B16A16_SFLOAT, the grid's size)
+    FroxelPixelClock clock;  // as FroxelInjectInputs'
 };
 // The integrated grid in the engine's image: Lin at its true scale in rgb, T in a.
 rg::ImageRef addFroxelExport(rg::RenderGraph& graph, const FroxelExportInputs& in,

@@ -12,6 +12,7 @@ struct FroxelSettings {
     float farDistance = 0.0f;    // metres; 0: the medium's maxDistance (and the camera's far plane)
     bool temporal = false;       // jittered samples blended with the reprojected history
     float historyWeight = 0.9f;  // the history's share
+    bool pixelHistory = false;   // still frames gathered per pixel (FroxelApplyInputs)
 };
 
 }  // namespace ls

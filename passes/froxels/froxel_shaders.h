@@ -13,6 +13,6 @@ namespace ls {
 rg::ShaderCode froxelInjectShader(bool shadowMap, bool lightColor, bool cube, bool slab,
                                   bool noise);
 // The apply pass, compositing into an engine color of `color`'s format, and into the Lin output.
-rg::ShaderCode froxelApplyShader(const CompositeVariant& target);
+rg::ShaderCode froxelApplyShader(const CompositeVariant& target, bool pixelHistory);
 
 }  // namespace ls

@@ -69,6 +69,15 @@ std::string refuseFarDistance(const LightSetup& s) {
     return {};
 }
 
+// The per-pixel history refines the temporal mode's still frames; alone it has no history to keep.
+std::string refusePixelHistory(const LightSetup& s) {
+    const lightscatter::FroxelsSettings& f = s.settings.froxels;
+    if (!f.pixelHistory || f.temporal) return {};
+    return s.settingsPath +
+           ".froxels.pixelHistory = true: needs froxels.temporal = true (it gathers the temporal "
+           "mode's still frames per pixel)";
+}
+
 }  // namespace
 
 bool FroxelsMethod::readsTable(const LightSetup& s) const {
@@ -78,7 +87,8 @@ bool FroxelsMethod::readsTable(const LightSetup& s) const {
 }
 
 std::string FroxelsMethod::refusal(const LightSetup& s) const {
-    return refuseFarDistance(s);
+    if (std::string r = refuseFarDistance(s); !r.empty()) return r;
+    return refusePixelHistory(s);
 }
 
 ChainOptions FroxelsMethod::options(const LightSetup& s, const LightData*,
@@ -94,14 +104,19 @@ ChainOutputs FroxelsMethod::addChain(rg::RenderGraph& g, ChainLights lights,
     const FroxelSettings& settings = lights.front().config.options.get<Options>()->grid;
     const FroxelGrid grid = froxelGrid(first.screen, settings);
     const bool temporal = settings.temporal;
-    // The temporal mode's history, kept by the graph under the frame's key: the frame before's
-    // grid, read, and this frame's, written.
-    rg::RenderGraph::HistoryImages history;
+    // The temporal mode's histories, kept by the graph under the frame's key: the frame before's
+    // grid, read, and this frame's, written; and with the per-pixel history, the frame before's
+    // pixels and this frame's.
+    rg::RenderGraph::HistoryImages history, pixels;
     rg::ImageRef noise;
     if (temporal) {
         history = g.historyImages("froxel history", froxelHistoryDesc(grid), first.frameKey);
         noise = addFroxelBlueNoise(g, {first.shared, first.frameKey});
     }
+    if (temporal && settings.pixelHistory)
+        pixels = g.historyImages("froxel pixel history", froxelPixelHistoryDesc(first.screen),
+                                 first.frameKey);
+    const FroxelPixelClock clock{pixels.previous, first.previous};
     rg::ImageRef scattering = froxelScatteringImage(g, grid);
     std::vector<rg::HostDataRef<LightFrame>> values;
     for (size_t i = 0; i < lights.size(); ++i) {
@@ -109,7 +124,7 @@ ChainOutputs FroxelsMethod::addChain(rg::RenderGraph& g, ChainLights lights,
         if (lights.size() > 1) g.setNameSuffix(" (light " + std::to_string(i) + ")");
         scattering = addFroxelInjection(g,
                                         {chainContext(l.in, l.config), lightImages(l.in, l.config),
-                                         scattering, i == 0, history.previous, noise},
+                                         scattering, i == 0, history.previous, noise, clock},
                                         grid);
         values.push_back(l.in.values);
     }
@@ -119,19 +134,22 @@ ChainOutputs FroxelsMethod::addChain(rg::RenderGraph& g, ChainLights lights,
     if (temporal) {
         scattering = addFroxelTemporalBlend(g,
                                             {chain, scattering, history.previous, history.current,
-                                             first.previous, settings.historyWeight},
+                                             first.previous, settings.historyWeight, clock},
                                             grid);
         g.markOutput(scattering);  // the next frame reads it
     }
-    const rg::ImageRef integrated = addFroxelIntegration(g, {chain, scattering, values}, grid);
+    const rg::ImageRef integrated =
+        addFroxelIntegration(g, {chain, scattering, values, clock}, grid);
     if (first.volumeOut.valid())
-        g.markOutput(addFroxelExport(g, {chain, integrated, values, first.volumeOut}, grid));
+        g.markOutput(addFroxelExport(g, {chain, integrated, values, first.volumeOut, clock}, grid));
     out.composited = true;
     out.target = addFroxelApply(g,
                                 {chain,
                                  integrated,
                                  values,
-                                 {target.color, target.inscatterOut, false, target.transmittance}},
+                                 {target.color, target.inscatterOut, false, target.transmittance},
+                                 clock,
+                                 pixels.current},
                                 grid);
     return out;
 }
@@ -158,7 +176,11 @@ std::string FroxelsMethod::summary(const ChainConfig& c) const {
            (s.temporal ? "jittered points, blended with the frame before's grid (weight " +
                              twoDigits(s.historyWeight) + "), "
                        : "centres, ") +
-           "integrated front to back, applied at each pixel's depth";
+           "integrated front to back, applied at each pixel's depth" +
+           (s.temporal && s.pixelHistory
+                ? "; still frames step the columns across a froxel and each pixel gathers the "
+                  "rays nearest it"
+                : "");
 }
 
 }  // namespace ls

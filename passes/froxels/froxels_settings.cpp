@@ -23,6 +23,8 @@ std::vector<SettingsField> FroxelsMethod::settingsFields() const {
              "the history's share of each froxel; 1 would never take a new frame")
         .former({"froxelHistoryWeight"})
         .doc("the history's weight in the blend");
+    f.boolean("pixelHistory", &F::pixelHistory)
+        .doc("still frames refined per pixel (needs temporal)");
     return f.take();
 }
 

@@ -10,6 +10,8 @@
 #define LS_BINDING_FROXEL_HISTORY_OUT 5  // temporal.comp: this frame's, for the next
 #define LS_BINDING_FROXEL_VOLUME_OUT 12  // export.comp: the engine's 3D image (volumeOut)
 #define LS_BINDING_FROXEL_NOISE 14       // inject.comp (temporal): the blue-noise tile
+#define LS_BINDING_FROXEL_PIXELS 15      // apply.comp (per-pixel history): the frame before's
+#define LS_BINDING_FROXEL_PIXELS_OUT 16  // apply.comp (per-pixel history): this frame's
 
 // blue_noise.comp, a pass of its own: the tile's texels as uploaded, and the tile.
 #define LS_BINDING_FROXEL_NOISE_TEXELS 0

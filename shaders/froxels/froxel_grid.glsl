@@ -13,6 +13,8 @@
 layout(push_constant) uniform FroxelPush {
 #if defined(LS_FROXEL_TEMPORAL)
 #include "froxel_temporal_push_fields.h"
+#elif defined(LS_FROXEL_APPLY)
+#include "froxel_apply_push_fields.h"
 #else
 #include "froxel_push_fields.h"
 #endif
@@ -26,8 +28,16 @@ float sliceZ(float u) { return pc.slices.x * exp(pc.slices.z * u / pc.grid.z); }
 // Slice coordinate of camera-space z, not clamped.
 float sliceCoordinate(float z) { return log(max(z, 1e-30) / pc.slices.x) / pc.slices.z * pc.grid.z; }
 
-// The NDC of a point of a column, at (column + f) froxels from the screen's corner, f in [0, 1).
-vec2 columnNdc(vec2 column, vec2 f) { return pixelToNdc((column + f) * pc.grid.w); }
+// The whole grid's offset this frame, in froxels (the per-pixel history steps it; the grid's own
+// temporal blend keeps the columns still).
+#if defined(LS_FROXEL_TEMPORAL)
+vec2 gridShift() { return vec2(0.0); }
+#else
+vec2 gridShift() { return pc.shift.xy; }
+#endif
+
+// The NDC of a point of a column, at (column + f) froxels from the grid's corner, f in [0, 1).
+vec2 columnNdc(vec2 column, vec2 f) { return pixelToNdc((column + f + gridShift()) * pc.grid.w); }
 
 // dot(v, view axis) for a camera ray, floored as rayLength() floors it.
 float axisCosine(vec3 v) { return max(dot(v, frame.cameraForward.xyz), 1e-4); }

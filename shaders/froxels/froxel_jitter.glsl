@@ -22,7 +22,11 @@ vec3 froxelNoiseAt(ivec3 f) {
     return fract(b + pc.jitter.xyz);
 }
 
-vec3 froxelJitter(ivec3 f) { return 0.5 + pc.jitter.w * (froxelNoiseAt(f) - 0.5); }
+// Across the column only by pc.shift.z's share: the per-pixel history keeps each column's ray, for
+// its pixels to weigh by their distance to it.
+vec3 froxelJitter(ivec3 f) {
+    return 0.5 + pc.jitter.w * vec3(pc.shift.zz, 1.0) * (froxelNoiseAt(f) - 0.5);
+}
 
 // Where along its lit part a slab's slice takes the shadow and cookie: anywhere in it over the
 // frames, since the slice's integral is whole and only the shadow is a point sample.

@@ -9,3 +9,6 @@ LS_VEC4 jitter;   // xyz: where in its froxel each froxel is sampled, in [0, 1) 
                   // the temporal mode: the frame's step of every froxel's own point, and w: the
                   // share of the froxel the points spread over (froxel_jitter.glsl)
 LS_VEC4 columns;  // inject: xy the first column and row the light reaches, zw one past the last
+LS_VEC4 shift;    // xy: the whole grid's offset this frame, in froxels (the per-pixel history's
+                  // sub-froxel steps; 0 otherwise); z: the share of jitter.w each froxel's own
+                  // point takes across the column (1; 0 with the per-pixel history); w: -

@@ -590,6 +590,12 @@ std::vector<Row> rows() {
          false,
          {},
          "must be"},
+        // The per-pixel history refines the temporal mode; without it there is nothing to keep.
+        {"APixelHistoryWithoutTheTemporalMode",
+         {{"s.json", R"({"froxels": {"pixelHistory": true}})"}},
+         "budget --method froxels --profile custom --settings s.json --size 64x36",
+         1,
+         "froxels.pixelHistory = true: needs froxels.temporal = true"},
         {"AHistoryWeightPastItsBound",
          {{"s.json", R"({"froxelHistoryWeight": 0.9900001})"}},
          "budget --method froxels --profile custom --settings s.json --size 64x36",

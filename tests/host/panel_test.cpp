@@ -68,6 +68,7 @@ const std::map<std::string, json>& testValues() {
         {"froxels.farDistance", 50.0},
         {"froxels.temporal", true},
         {"froxels.historyWeight", 0.5},
+        {"froxels.pixelHistory", true},
     };
     return v;
 }

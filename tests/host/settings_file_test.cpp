@@ -123,12 +123,13 @@ TEST_F(HostSettingsFile, AWrittenFileReadsBackToTheSameSettings) {
     s.noiseVelocity = {0.25f, -0.5f, 0.125f, 1.0f};
     s.lightModel = lightscatter::LightModel::Simplified;
     s.froxels.historyWeight = 0.3f;
+    s.froxels.pixelHistory = true;
     const lightscatter::Settings back = load(host::settingsFileText(s));
     for (const host::SettingField& f : host::settingFields())
         for (int c = 0; c < (f.kind == host::SettingField::Kind::Vector4 ? 4 : 1); ++c)
             EXPECT_EQ(host::fieldValue(back, f, c), host::fieldValue(s, f, c)) << f.name;
-    // 36 fields today: a member added to a method's settings is added to its table, then here.
-    EXPECT_EQ(host::settingFields().size(), 36u);
+    // 37 fields today: a member added to a method's settings is added to its table, then here.
+    EXPECT_EQ(host::settingFields().size(), 37u);
     EXPECT_EQ(host::settingsFileText(s).find("0.07000000"), std::string::npos)
         << "floats are written as their shortest decimal";
 }

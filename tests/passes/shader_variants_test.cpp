@@ -134,7 +134,9 @@ TEST(ShaderVariants, FroxelNodesAskForBuiltVariants) {
                 for (bool slab : {false, true})
                     for (bool noise : {false, true})
                         reach(inject, froxelInjectShader(shadow, color, cube, slab, noise));
-    forEachTarget([&](const CompositeVariant& t) { reach(apply, froxelApplyShader(t)); });
+    forEachTarget([&](const CompositeVariant& t) {
+        for (const bool pixels : {false, true}) reach(apply, froxelApplyShader(t, pixels));
+    });
     expectAllReached(ls_spirv::inject_comp_variants, inject);
     expectAllReached(ls_spirv::apply_comp_variants, apply);
 }

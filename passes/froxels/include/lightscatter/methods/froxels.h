@@ -27,6 +27,14 @@ struct FroxelsSettings {
     // kept across frames by its render graph.
     bool temporal = false;
     float historyWeight = 0.9f;
+    // With `temporal`: frames in which neither the camera nor a light changed since the frame
+    // before refine the image finer than a froxel, as TAA upsampling does. The whole grid's columns
+    // step across a froxel from frame to frame (a low-discrepancy sequence), and each pixel
+    // gathers the Lin of the column nearest it, weighed by its distance to that column's ray. A
+    // frame that moved keeps the temporal mode as above and starts every pixel again from it.
+    // Costs two screen-sized float32 RGBA images (the plugin's memory) and the apply's four more
+    // fetches a pixel; refused without `temporal`.
+    bool pixelHistory = false;
 };
 
 }  // namespace lightscatter
