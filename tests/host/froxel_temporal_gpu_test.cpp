@@ -55,6 +55,19 @@ host::RenderOptions froxels(uint32_t tile, bool temporal, bool pixels = false) {
     return o;
 }
 
+// The mean error of frames 17 to 24 after a reset (a still scene: the history settled).
+double settledError(host::EngineRenderer& renderer, host::RenderOptions options,
+                    const std::vector<double>& ref) {
+    options.resetHistory = true;
+    double sum = 0;
+    for (int frame = 1; frame <= 24; ++frame) {
+        const std::vector<float> lin = renderer.render(options).inscatter;
+        options.resetHistory = false;
+        if (frame > 16) sum += meanRelative(lin, ref) / 8;
+    }
+    return sum;
+}
+
 }  // namespace
 
 class FroxelTemporalGpu : public testing_support::GpuTest {};
@@ -71,18 +84,11 @@ TEST_F(FroxelTemporalGpu, AStillSceneSettlesCloserToTheReferenceThanThePlainGrid
     const std::vector<double> ref = reference(scene, mesh);
     host::EngineRenderer renderer(dev(), scene, mesh, kSize);
     const double plain = meanRelative(renderer.render(froxels(16, false)).inscatter, ref);
-    // The mean error of frames 17 to 24 after a reset, with the history's weight given.
+    // With the history's weight given.
     auto settled = [&](float weight) {
         host::RenderOptions temporal = froxels(16, true);
         temporal.custom.froxels.historyWeight = weight;
-        temporal.resetHistory = true;
-        double sum = 0;
-        for (int frame = 1; frame <= 24; ++frame) {
-            const std::vector<float> lin = renderer.render(temporal).inscatter;
-            temporal.resetHistory = false;
-            if (frame > 16) sum += meanRelative(lin, ref) / 8;
-        }
-        return sum;
+        return settledError(renderer, temporal, ref);
     };
     const double blended = settled(0.9f), alone = settled(0.0f);
     std::printf(
@@ -175,18 +181,8 @@ TEST_F(FroxelTemporalGpu, StillFramesGatheredPerPixelResolveFinerThanAFroxel) {
     const std::vector<double> ref = reference(scene, mesh);
     host::EngineRenderer renderer(dev(), scene, mesh, kSize);
     const double plain = meanRelative(renderer.render(froxels(8, false)).inscatter, ref);
-    auto settled = [&](bool pixels) {
-        host::RenderOptions o = froxels(8, true, pixels);
-        o.resetHistory = true;
-        double sum = 0;
-        for (int frame = 1; frame <= 24; ++frame) {
-            const std::vector<float> lin = renderer.render(o).inscatter;
-            o.resetHistory = false;
-            if (frame > 16) sum += meanRelative(lin, ref) / 8;
-        }
-        return sum;
-    };
-    const double gathered = settled(true), temporal = settled(false);
+    const double gathered = settledError(renderer, froxels(8, true, true), ref);
+    const double temporal = settledError(renderer, froxels(8, true, false), ref);
     std::printf(
         "engine_spot, 8-pixel columns, still: plain %.4f, per pixel %.4f (%.3fx), "
         "temporal %.4f (%.3fx)\n",
