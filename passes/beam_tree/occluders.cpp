@@ -1,6 +1,7 @@
 #include "occluders.h"
 
 #include "front_to_back.h"
+#include "shared/spot_basis.h"
 
 #include <algorithm>
 #include <cmath>
@@ -40,8 +41,7 @@ LightFrustum spotFrustum(const glm::dvec3& position, const glm::dvec3& axis, dou
     LightFrustum f;
     f.position = position;
     const glm::dvec3 a = glm::normalize(axis);
-    const glm::dvec3 helper = std::abs(a.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
-    const glm::dvec3 r = glm::normalize(glm::cross(a, helper)), u = glm::cross(r, a);
+    const auto [r, u] = acrossAxis(a);
     const double t = std::tan(halfAngle);
     const glm::dvec3 corners[4] = {a + t * (-r - u), a + t * (r - u), a + t * (r + u),
                                    a + t * (-r + u)};

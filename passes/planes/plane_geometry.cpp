@@ -1,5 +1,7 @@
 #include "plane_geometry.h"
 
+#include "shared/spot_basis.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -41,8 +43,7 @@ std::vector<glm::dvec3> lightVolumeCorners(const LightParams& light, float reach
     std::vector<glm::dvec3> c;
     if (light.kind == LightType::Spot) {
         const glm::dvec3 a = light.direction;
-        const glm::dvec3 helper = std::fabs(a.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
-        const glm::dvec3 r = glm::normalize(glm::cross(a, helper)), u = glm::cross(r, a);
+        const auto [r, u] = acrossAxis(a);
         const double cosA = light.cosOuter;
         const double tanA = std::sqrt(std::max(1.0 - cosA * cosA, 0.0)) / cosA;
         const double depth = std::min(light.range, reach);
@@ -140,8 +141,7 @@ std::vector<glm::vec2> spotSlabFootprint(const CameraParams& camera, const Light
     constexpr int kSides = 8;
     const glm::dmat4 view(camera.view);
     const glm::dvec3 axis = glm::normalize(glm::dvec3(light.direction));
-    const glm::dvec3 helper = std::fabs(axis.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
-    const glm::dvec3 r = glm::normalize(glm::cross(axis, helper)), u = glm::cross(r, axis);
+    const auto [r, u] = acrossAxis(axis);
     const double cosA = light.cosOuter;
     const double radius = std::sqrt(std::max(1.0 - cosA * cosA, 0.0)) / cosA /
                           std::cos(std::numbers::pi / kSides);  // per unit of depth
