@@ -84,10 +84,13 @@ constexpr float kLightJump = 0.0175f;
 
 // The per-pixel history: a pixel weighs this frame's nearest column by a Gaussian of its distance
 // to the column's ray, of this width (sigma, froxels), and the history carries at most this much
-// weight. A pixel gathers about 2 pi 0.25^2 = 0.39 a frame, so it remembers about ten frames. The
-// first values tried, not tuned (docs/performance.md, "Froxels refined per pixel").
-constexpr float kPixelWidth = 0.25f;
-constexpr float kPixelWeight = 4.0f;
+// weight (a pixel gathers about 2 pi 0.15^2 = 0.14 a frame: about a hundred frames). A frame that
+// moved seeds each pixel with its trilinear fetch at the last weight, a fallback the first rays
+// gathered outweigh. On bench/froxels_pixels.json's still frames (docs/methods.md) a wider
+// Gaussian (0.25) blurred the shafts and a shorter memory (4) flickered.
+constexpr float kPixelWidth = 0.15f;
+constexpr float kPixelWeight = 16.0f;
+constexpr float kPixelSeed = 0.1f;
 
 // The smallest Lin scale of the frame's lights: the integrated grid holds all of them.
 float gridStorage(const rg::PassContext& ctx,
@@ -342,9 +345,9 @@ CompositeOutputs addFroxelApply(rg::RenderGraph& graph, const FroxelApplyInputs&
         FroxelApplyPush push{};
         if (pixels) {
             const bool still = stepColumns(now, ctx, clock, c).still;
-            // A frame that moved starts each pixel again from its trilinear fetch, worth one
-            // frame's nearest column: the next still frame refines it.
-            push.history = {kPixelWidth, kPixelWeight, still ? 1.0f : 0.0f, 1.0f};
+            // A frame that moved starts each pixel again from its trilinear fetch: the next still
+            // frames refine it.
+            push.history = {kPixelWidth, kPixelWeight, still ? 1.0f : 0.0f, kPixelSeed};
         }
         push.grid = now.grid;
         push.slices = now.slices;

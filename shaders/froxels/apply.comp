@@ -66,12 +66,13 @@ void main() {
         vec2 d = (cell - near) / pc.history.x;
         float weight = exp(-0.5 * dot(d, d));
         vec4 h = imageLoad(pixels, p);
-        // Within the four columns' range widened by twice its width on each side: a pixel between
-        // columns holds more or less than any of them (a glow's peak, a thin shaft), but not that
-        // much; on bench/froxels_pixels.json's still frames the range itself cut the glow of
-        // point_fog (0.73x the plain grid's error against 0.65x), and no clamp at all left
-        // window_room's outliers (0.61x against 0.43x).
-        vec3 pad = 2.0 * (hi - lo);
+        // Within the four columns' range widened by four times its width on each side: a pixel
+        // between columns holds more or less than any of them (a glow's peak, a thin shaft), but
+        // not without bound. On bench/froxels_pixels.json's still frames a pad of twice the width
+        // still cut point_fog's glow (0.71x the plain grid's error against 0.61x at Unreal's
+        // size), and no clamp at all left window_room's outliers (0.61x against 0.43x, with
+        // the first width and memory tried, 0.25 and 4).
+        vec3 pad = 4.0 * (hi - lo);
         h.rgb = clamp(h.rgb, lo - pad, hi + pad);
         float carried = max(h.a + weight, 1e-6);
         vec3 gathered = (h.rgb * h.a + nearLin * weight) / carried;

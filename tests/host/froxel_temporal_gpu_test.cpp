@@ -172,7 +172,7 @@ TEST_F(FroxelTemporalGpu, AMovingLightsGlowLeavesNoTrail) {
 // engine_spot at HDRP's 8-pixel columns: the spot's struts cast shadows thinner than a column,
 // which a trilinear fetch between the columns' rays spreads over the froxel. With the per-pixel
 // history the still frames step the columns across a froxel and each pixel gathers the rays that
-// pass nearest it: frames 17 to 24 after a reset measured 0.354 of the plain grid's error. The
+// pass nearest it: frames 17 to 24 after a reset measured 0.233 of the plain grid's error. The
 // temporal mode without it (each pixel's trilinear fetch of a blended grid) measured 1.006, and
 // fails the bound.
 TEST_F(FroxelTemporalGpu, StillFramesGatheredPerPixelResolveFinerThanAFroxel) {
@@ -187,8 +187,8 @@ TEST_F(FroxelTemporalGpu, StillFramesGatheredPerPixelResolveFinerThanAFroxel) {
         "engine_spot, 8-pixel columns, still: plain %.4f, per pixel %.4f (%.3fx), "
         "temporal %.4f (%.3fx)\n",
         plain, gathered, gathered / plain, temporal, temporal / plain);
-    EXPECT_LT(gathered, 0.6 * plain);
-    EXPECT_GT(temporal, 0.6 * plain) << "the bound is one the temporal mode alone does not meet";
+    EXPECT_LT(gathered, 0.4 * plain);
+    EXPECT_GT(temporal, 0.4 * plain) << "the bound is one the temporal mode alone does not meet";
 }
 
 // After 16 still frames gathered per pixel, the camera moves (bench/flicker.json's step): the frame

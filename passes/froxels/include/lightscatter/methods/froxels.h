@@ -32,6 +32,7 @@ struct FroxelsSettings {
     // step across a froxel from frame to frame (a low-discrepancy sequence), and each pixel
     // gathers the Lin of the column nearest it, weighed by its distance to that column's ray. A
     // frame that moved keeps the temporal mode as above and starts every pixel again from it.
+    // What it gains on still frames, measured: docs/methods.md, "Still frames refined per pixel".
     // Costs two screen-sized float32 RGBA images (the plugin's memory) and the apply's four more
     // fetches a pixel; refused without `temporal`.
     bool pixelHistory = false;
