@@ -7,14 +7,14 @@
 // reads the grid at depth (u - 0.5) / slices; within the first slice it blends from the camera's
 // (0, 1).
 // Beyond the far distance the grid's last froxel holds.
-// The per-pixel history (LS_FROXEL_PIXEL_HISTORY): while nothing moves (the camera, the lights), the
-// grid's columns step across a froxel from frame to frame (pc.shift), and each pixel gathers the Lin
-// of the column nearest it, weighed by its distance to that column's ray, so that over the frames
-// it collects rays that pass close to it: a reconstruction finer than a froxel, as TAA upsampling
-// gathers a low-resolution frame's jittered samples. Gathered values stay near the range of the
-// four columns around the pixel, so that a shaft that changed (an occluder moving in the light)
-// leaves a bounded trail. In a frame where something moved the grid stays put (its own temporal blend
-// follows the motion) and each pixel starts again from this frame's trilinear fetch.
+// The per-pixel history (LS_FROXEL_PIXEL_HISTORY): while nothing moves (the camera, the lights),
+// the grid's columns step across a froxel from frame to frame (pc.shift), and each pixel gathers
+// the Lin of the column nearest it, weighed by its distance to that column's ray, so that over the
+// frames it collects rays that pass close to it: a reconstruction finer than a froxel, as TAA
+// upsampling gathers a low-resolution frame's jittered samples. Gathered values stay near the range
+// of the four columns around the pixel, so that a shaft that changed (an occluder moving in the
+// light) leaves a bounded trail. In a frame where something moved the grid stays put (its own
+// temporal blend follows the motion) and each pixel starts again from this frame's trilinear fetch.
 #define LS_FROXEL_APPLY 1
 #include "froxel_grid.glsl"
 #include "composite_into.glsl"
@@ -68,10 +68,8 @@ void main() {
         vec4 h = imageLoad(pixels, p);
         // Within the four columns' range widened by four times its width on each side: a pixel
         // between columns holds more or less than any of them (a glow's peak, a thin shaft), but
-        // not without bound. On bench/froxels_pixels.json's still frames a pad of twice the width
-        // still cut point_fog's glow (0.71x the plain grid's error against 0.61x at Unreal's
-        // size), and no clamp at all left window_room's outliers (0.61x against 0.43x, with
-        // the first width and memory tried, 0.25 and 4).
+        // not without bound. A narrower pad cut point_fog's glow, no clamp left window_room's
+        // outliers (docs/methods.md, "Still frames refined per pixel", has the figures).
         vec3 pad = 4.0 * (hi - lo);
         h.rgb = clamp(h.rgb, lo - pad, hi + pad);
         float carried = max(h.a + weight, 1e-6);

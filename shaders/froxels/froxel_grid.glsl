@@ -37,7 +37,9 @@ vec2 gridShift() { return pc.shift.xy; }
 #endif
 
 // The NDC of a point of a column, at (column + f) froxels from the grid's corner, f in [0, 1).
-vec2 columnNdc(vec2 column, vec2 f) { return pixelToNdc((column + f + gridShift()) * pc.grid.w); }
+vec2 columnNdc(vec2 column, vec2 f) {
+    return pixelToNdc((column + f + gridShift()) * pc.grid.w);
+}
 
 // dot(v, view axis) for a camera ray, floored as rayLength() floors it.
 float axisCosine(vec3 v) { return max(dot(v, frame.cameraForward.xyz), 1e-4); }
