@@ -9,7 +9,7 @@
 #include "apply_comp_variants.h"
 #include "export_comp.h"
 #include "inject_comp_variants.h"
-#include "integrate_comp.h"
+#include "integrate_comp_variants.h"
 #include "shaders/froxels/froxel_bindings.h"
 #include "shared/pass_helpers.h"
 #include "shared/shader_variant.h"
@@ -44,7 +44,7 @@ FroxelPush froxelPush(const FrameConstants& c, const FroxelGrid& g, float storag
 FroxelColumns stepColumns(FroxelPush& push, const rg::PassContext& ctx,
                           const FroxelPixelClock& clock, const FrameConstants& now) {
     const FroxelColumns c = froxelColumns(ctx, clock, now);
-    if (c.still) push.shift = glm::vec4(c.shift, 0.0f, 0.0f);
+    if (c.still) push.shift = glm::vec4(c.shift, 0.0f, 1.0f);
     return c;
 }
 
@@ -114,6 +114,10 @@ rg::ShaderCode froxelInjectShader(bool shadowMap, bool lightColor, bool cube, bo
                        {"LS_FROXEL_NOISE", noise}});
 }
 
+rg::ShaderCode froxelIntegrateShader(bool samples) {
+    return pickShader(ls_spirv::integrate_comp_variants, {{"LS_FROXEL_PIXEL_HISTORY", samples}});
+}
+
 rg::ShaderCode froxelApplyShader(const CompositeVariant& target, bool pixels) {
     return pickCompositeShader(ls_spirv::apply_comp_variants, {{"LS_FROXEL_PIXEL_HISTORY", pixels}},
                                target);
@@ -141,7 +145,6 @@ FroxelColumns froxelColumns(const rg::PassContext& ctx, const FroxelPixelClock& 
     FroxelColumns c;
     // The frame before had a history of its own (it was the second of them at least) and had not
     // moved from the one before it.
-    c.stillBefore = h.valid && h.age >= 2 && !before.beforeMoved;
     if (!h.valid || before.lightsChanged || before.constants.viewProj != now.viewProj) return c;
     c.still = true;
     c.shift = froxelGridShift(h.age);
@@ -273,12 +276,9 @@ rg::ImageRef addFroxelTemporalBlend(rg::RenderGraph& graph, const FroxelTemporal
                   weight = in.weight, table, grid, clock = in.clock](rg::PassContext& ctx) {
         const PreviousFrame& before = ctx.data(previous);
         const FrameConstants& constants = ctx.data(frame.values).constants;
-        // A still frame's columns are offset: the per-pixel history gathers them, and this blend,
-        // which takes the columns where they stay, passes them on as they are. So the first frame
-        // that moves after still ones finds a grid of offset columns, not a blend: it starts anew.
-        const FroxelColumns columns = froxelColumns(ctx, clock, constants);
-        const bool valid = ctx.history(history).valid && before.lightJump <= kLightJump &&
-                           !columns.still && !columns.stillBefore;
+        const bool valid = ctx.history(history).valid && before.lightJump <= kLightJump;
+        // The per-pixel history's still frames sample offset columns: the grid stays as it was.
+        const bool keep = valid && froxelColumns(ctx, clock, constants).still;
         const FroxelPush now = froxelPush(constants, grid, 1.0f);
         const FroxelPush then = froxelPush(before.constants, grid, 1.0f);
         FroxelTemporalPush push{};
@@ -286,7 +286,7 @@ rg::ImageRef addFroxelTemporalBlend(rg::RenderGraph& graph, const FroxelTemporal
         push.slices = now.slices;
         push.previousViewProj = before.constants.viewProj;
         push.previousSlices = glm::vec4(glm::vec3(then.slices), valid ? 1.0f : 0.0f);
-        push.blend = {weight, before.lightsChanged ? 1.0f : 0.0f, kDropOutside, 0.0f};
+        push.blend = {weight, before.lightsChanged ? 1.0f : 0.0f, kDropOutside, keep ? 1.0f : 0.0f};
         const auto& p = frame.shared->pipelines.compute(
             "froxel temporal blend", rg::spirv(ls_spirv::temporal_comp), table.layout(),
             sizeof(FroxelTemporalPush), {});
@@ -301,22 +301,26 @@ rg::ImageRef addFroxelTemporalBlend(rg::RenderGraph& graph, const FroxelTemporal
 
 rg::ImageRef addFroxelIntegration(rg::RenderGraph& graph, const FroxelIntegrateInputs& in,
                                   const FroxelGrid& grid) {
-    auto pass = graph.addPass("froxel integration", rg::PassType::Compute);
+    const char* name = in.volume ? "froxel volume integration" : "froxel integration";
+    auto pass = graph.addPass(name, rg::PassType::Compute);
     rg::BindingTable table = frameTable(pass, in.chain.constants);
     table.storageRead(LS_BINDING_FROXEL_SCATTERING, in.scattering);
+    const bool samples = in.samples.valid();
+    if (samples) table.storageRead(LS_BINDING_FROXEL_SAMPLES, in.samples);
     const rg::ImageRef integrated = table.storageWrite(
         LS_BINDING_FROXEL_INTEGRATED,
         graph.createImage(
-            "froxel integrated in-scattering",
+            in.volume ? "froxel volume's integrated in-scattering"
+                      : "froxel integrated in-scattering",
             rg::ImageDesc::volume(kFroxelIntegratedFormat, grid.columns, grid.rows, grid.slices)));
-    pass.execute([frame = in.chain, lights = in.lights, table, grid,
+    pass.execute([frame = in.chain, lights = in.lights, table, grid, name, samples,
                   clock = in.clock](rg::PassContext& ctx) {
         const FrameConstants& constants = ctx.data(frame.values).constants;
         FroxelPush push = froxelPush(constants, grid, gridStorage(ctx, lights));
         stepColumns(push, ctx, clock, constants);
         const auto& p = frame.shared->pipelines.compute(
-            "froxel integration", rg::spirv(ls_spirv::integrate_comp), table.layout(),
-            sizeof(FroxelPush), frame.spec.constants());
+            name, froxelIntegrateShader(samples), table.layout(), sizeof(FroxelPush),
+            frame.spec.constants());
         p.bind(ctx.cmd());
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         p.push(ctx.cmd(), push);
@@ -370,11 +374,9 @@ rg::ImageRef addFroxelExport(rg::RenderGraph& graph, const FroxelExportInputs& i
     rg::BindingTable table = frameTable(pass, in.chain.constants);
     table.storageRead(LS_BINDING_FROXEL_INTEGRATED, in.integrated);
     const rg::ImageRef written = table.storageWrite(LS_BINDING_FROXEL_VOLUME_OUT, in.volumeOut);
-    pass.execute([frame = in.chain, lights = in.lights, table, grid,
-                  clock = in.clock](rg::PassContext& ctx) {
+    pass.execute([frame = in.chain, lights = in.lights, table, grid](rg::PassContext& ctx) {
         const FrameConstants& constants = ctx.data(frame.values).constants;
-        FroxelPush push = froxelPush(constants, grid, gridStorage(ctx, lights));
-        stepColumns(push, ctx, clock, constants);
+        const FroxelPush push = froxelPush(constants, grid, gridStorage(ctx, lights));
         const auto& p = frame.shared->pipelines.compute("froxel volume export",
                                                         rg::spirv(ls_spirv::export_comp),
                                                         table.layout(), sizeof(FroxelPush), {});

@@ -47,11 +47,9 @@ struct FroxelPixelClock {
 // Where the grid's columns are in a frame: `still` when the per-pixel history holds the frame
 // before's pixels and neither the camera nor a light changed since; then the whole grid is offset
 // by `shift` froxels (froxelGridShift of the history's age), else it stays (0).
-// PreviousFrame::beforeMoved tells whether the frame before was still too.
 struct FroxelColumns {
     bool still = false;
     glm::vec2 shift{0.0f};
-    bool stillBefore = false;  // the frame before was still: its grid's columns were offset
 };
 FroxelColumns froxelColumns(const rg::PassContext& ctx, const FroxelPixelClock& clock,
                             const FrameConstants& now);
@@ -101,11 +99,13 @@ struct FroxelTemporalInputs {
     rg::ImageRef history, historyOut;  // the frame before's grid, and this frame's
     rg::HostDataRef<PreviousFrame> previous;
     float weight = 0.9f;  // the history's
-    // The per-pixel history's: in a still frame the blend stands aside (the pixels gather).
+    // The per-pixel history's: its still frames keep the grid as the last frame that moved left it
+    // (their samples lie on offset columns, which the apply gathers).
     FroxelPixelClock clock;
 };
 // The blend with the frame before's grid, reprojected and clipped to this frame's neighbourhood
-// (temporal.comp), written into historyOut: the grid the integration reads. Returns it.
+// (temporal.comp), written into historyOut: the grid the integration reads (but for the per-pixel
+// history's still frames: FroxelIntegrateInputs::samples) and the exported volume. Returns it.
 rg::ImageRef addFroxelTemporalBlend(rg::RenderGraph& graph, const FroxelTemporalInputs& in,
                                     const FroxelGrid& grid);
 
@@ -114,7 +114,13 @@ struct FroxelIntegrateInputs {
     rg::ImageRef scattering;
     // Every light's values: the integrated grid is stored at the smallest of their Lin scales.
     std::vector<rg::HostDataRef<LightFrame>> lights;
-    FroxelPixelClock clock;  // as FroxelInjectInputs'
+    // The per-pixel history's apply: its clock (as FroxelInjectInputs') and this frame's samples,
+    // before the temporal blend, which its still frames integrate instead of `scattering` along
+    // their offset columns (the apply gathers them per pixel). Invalid: `scattering`, unmoved.
+    FroxelPixelClock clock;
+    rg::ImageRef samples;
+    // The exported volume's own integration (its names), beside the apply's.
+    bool volume = false;
 };
 // Lin and the mean transmittance from the camera to each froxel's far end
 // (kFroxelIntegratedFormat, the grid's size).
@@ -140,7 +146,6 @@ struct FroxelExportInputs {
     rg::ImageRef integrated;
     std::vector<rg::HostDataRef<LightFrame>> lights;  // as the integration's
     rg::ImageRef volumeOut;  // the engine's 3D image (R16G16B16A16_SFLOAT, the grid's size)
-    FroxelPixelClock clock;  // as FroxelInjectInputs'
 };
 // The integrated grid in the engine's image: Lin at its true scale in rgb, T in a.
 rg::ImageRef addFroxelExport(rg::RenderGraph& graph, const FroxelExportInputs& in,

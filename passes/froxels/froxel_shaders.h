@@ -12,6 +12,9 @@ namespace ls {
 // temporal mode's, each froxel (each column, with `slab`) jittered by the blue-noise tile.
 rg::ShaderCode froxelInjectShader(bool shadowMap, bool lightColor, bool cube, bool slab,
                                   bool noise);
+// The integration; `samples`, the per-pixel history's, which integrates this frame's unblended
+// samples in its still frames.
+rg::ShaderCode froxelIntegrateShader(bool samples);
 // The apply pass, compositing into an engine color of `color`'s format, and into the Lin output.
 rg::ShaderCode froxelApplyShader(const CompositeVariant& target, bool pixelHistory);
 

@@ -131,6 +131,10 @@ ChainOutputs FroxelsMethod::addChain(rg::RenderGraph& g, ChainLights lights,
     g.setNameSuffix({});
     const ChainContext chain = chainContext(first, lights.front().config);
     ChainOutputs out;
+    // The per-pixel history's still frames apply this frame's samples, which it gathers per
+    // pixel, while the blend keeps the grid of the last frame that moved: the exported volume, and
+    // the history of the next frame that moves.
+    const rg::ImageRef samples = pixels.current.valid() ? scattering : rg::ImageRef{};
     if (temporal) {
         scattering = addFroxelTemporalBlend(g,
                                             {chain, scattering, history.previous, history.current,
@@ -139,9 +143,14 @@ ChainOutputs FroxelsMethod::addChain(rg::RenderGraph& g, ChainLights lights,
         g.markOutput(scattering);  // the next frame reads it
     }
     const rg::ImageRef integrated =
-        addFroxelIntegration(g, {chain, scattering, values, clock}, grid);
-    if (first.volumeOut.valid())
-        g.markOutput(addFroxelExport(g, {chain, integrated, values, first.volumeOut, clock}, grid));
+        addFroxelIntegration(g, {chain, scattering, values, clock, samples}, grid);
+    if (first.volumeOut.valid()) {
+        const rg::ImageRef volume =
+            samples.valid()
+                ? addFroxelIntegration(g, {chain, scattering, values, {}, {}, true}, grid)
+                : integrated;
+        g.markOutput(addFroxelExport(g, {chain, volume, values, first.volumeOut}, grid));
+    }
     out.composited = true;
     out.target = addFroxelApply(g,
                                 {chain,

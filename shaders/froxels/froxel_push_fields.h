@@ -11,4 +11,6 @@ LS_VEC4 jitter;   // xyz: where in its froxel each froxel is sampled, in [0, 1) 
 LS_VEC4 columns;  // inject: xy the first column and row the light reaches, zw one past the last
 LS_VEC4 shift;    // xy: the whole grid's offset this frame, in froxels (the per-pixel history's
                   // sub-froxel steps; 0 otherwise); z: the share of jitter.w each froxel's own
-                  // point takes across the column (1; 0 with the per-pixel history); w: -
+                  // point takes across the column (1; 0 with the per-pixel history); w: 1 in a
+                  // still frame of the per-pixel history (its apply integrates this frame's
+                  // samples), else 0

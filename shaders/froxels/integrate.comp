@@ -12,6 +12,16 @@
 #include "froxel_bindings.h"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = LS_BINDING_FROXEL_SCATTERING, rgba32f) uniform readonly image3D scattering;
+#if LS_FROXEL_PIXEL_HISTORY
+// The per-pixel history's apply integrates, in a still frame (pc.shift.w), this frame's samples at
+// its offset columns, which it gathers per pixel, not their blend with the frames before.
+layout(binding = LS_BINDING_FROXEL_SAMPLES, rgba32f) uniform readonly image3D samples;
+vec3 sliceScattering(ivec3 f) {
+    return pc.shift.w > 0.5 ? imageLoad(samples, f).rgb : imageLoad(scattering, f).rgb;
+}
+#else
+vec3 sliceScattering(ivec3 f) { return imageLoad(scattering, f).rgb; }
+#endif
 layout(binding = LS_BINDING_FROXEL_INTEGRATED, rgba16f) uniform writeonly image3D integrated;
 
 void main() {
@@ -27,7 +37,7 @@ void main() {
     for (int k = 0; k < g.z; ++k) {
         float end = sliceZ(float(k + 1));
         float d = (end - start) * perZ;
-        vec3 S = imageLoad(scattering, ivec3(c, k)).rgb;
+        vec3 S = sliceScattering(ivec3(c, k));
         // A non-uniform medium: the slice's optical depth along the column's ray, exact, stands
         // for its length (its scattering and extinction both scale with m: dT = -betaT m T ds).
         float depth = kMedia != 0 ? opticalDepth(frame.cameraPos.xyz + (start * perZ) * dir, dir, d) : d;

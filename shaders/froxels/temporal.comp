@@ -14,7 +14,9 @@
 // light's contribution changed there, not the sampling. Where the history does not cover the froxel
 // (off its frustum, or no history) or is dropped, the froxel keeps this frame's sample. The result
 // is the grid the integration reads and the next frame's history; this frame's samples stay as they
-// were, for the ranges of the froxels around.
+// were, for the ranges of the froxels around. In the per-pixel history's still frames (blend.w) the
+// samples lie on offset columns, which the apply gathers: the grid is kept as the last frame that
+// moved left it, for the exported volume and for the next frame that moves.
 #define LS_FROXEL_TEMPORAL 1
 #include "froxel_grid.glsl"
 #include "froxel_bindings.h"
@@ -74,6 +76,10 @@ void main() {
     ivec3 f = ivec3(gl_GlobalInvocationID);
     ivec3 g = ivec3(pc.grid.xyz);
     if (any(greaterThanEqual(f, g))) return;
+    if (pc.blend.w > 0.5) {
+        imageStore(historyOut, f, imageLoad(history, f));
+        return;
+    }
     vec4 current = imageLoad(scattering, f);
     vec3 s = current.rgb;
     vec3 t;

@@ -16,6 +16,7 @@
 #include "epipolar/epipolar_shaders.h"
 #include "froxels/froxel_shaders.h"
 #include "inject_comp_variants.h"
+#include "integrate_comp_variants.h"
 #include "min_max_first_level_comp_variants.h"
 #include "pixel_march_frag_variants.h"
 #include "planes/plane_shaders.h"
@@ -127,7 +128,7 @@ TEST(ShaderVariants, SplitCompositeNodesAskForBuiltVariants) {
 }
 
 TEST(ShaderVariants, FroxelNodesAskForBuiltVariants) {
-    Reached inject, apply;
+    Reached inject, integrate, apply;
     for (bool shadow : {false, true})
         for (bool color : {false, true})
             for (bool cube : {false, true})
@@ -137,7 +138,9 @@ TEST(ShaderVariants, FroxelNodesAskForBuiltVariants) {
     forEachTarget([&](const CompositeVariant& t) {
         for (const bool pixels : {false, true}) reach(apply, froxelApplyShader(t, pixels));
     });
+    for (const bool samples : {false, true}) reach(integrate, froxelIntegrateShader(samples));
     expectAllReached(ls_spirv::inject_comp_variants, inject);
+    expectAllReached(ls_spirv::integrate_comp_variants, integrate);
     expectAllReached(ls_spirv::apply_comp_variants, apply);
 }
 
