@@ -318,9 +318,9 @@ rg::ImageRef addFroxelIntegration(rg::RenderGraph& graph, const FroxelIntegrateI
         const FrameConstants& constants = ctx.data(frame.values).constants;
         FroxelPush push = froxelPush(constants, grid, gridStorage(ctx, lights));
         stepColumns(push, ctx, clock, constants);
-        const auto& p = frame.shared->pipelines.compute(
-            name, froxelIntegrateShader(samples), table.layout(), sizeof(FroxelPush),
-            frame.spec.constants());
+        const auto& p =
+            frame.shared->pipelines.compute(name, froxelIntegrateShader(samples), table.layout(),
+                                            sizeof(FroxelPush), frame.spec.constants());
         p.bind(ctx.cmd());
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         p.push(ctx.cmd(), push);

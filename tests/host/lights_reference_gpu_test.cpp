@@ -578,8 +578,9 @@ TEST_F(LightsReferenceGpu, FroxelVolumeStaysTheTemporalBlendUnderThePerPixelHist
         return quad.judge(out.volume, out.volumeLayout, 1.0).first;
     };
     const double temporal = settled(false), pixels = settled(true);
-    std::printf("froxel volume at the quad, 16 still frames: the temporal mode's Lin %.4f off, "
-                "with the per-pixel history %.4f\n",
-                temporal, pixels);
+    std::printf(
+        "froxel volume at the quad, 16 still frames: the temporal mode's Lin %.4f off, "
+        "with the per-pixel history %.4f\n",
+        temporal, pixels);
     EXPECT_LT(pixels, 1.05 * temporal);
 }
