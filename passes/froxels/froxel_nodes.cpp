@@ -82,6 +82,17 @@ constexpr float kDropOutside = 1.0f;
 // A light animated slowly moves far less a frame (bench/flicker.json's: 0.1 degree, or 2 cm).
 constexpr float kLightJump = 0.0175f;
 
+// In a frame where the camera moved, the history is resampled where the frame before saw each
+// froxel, and each resampling blurs it a little: there its memory, 1 / (1 - weight) frames, is cut
+// this many times (10 frames to 4 at the default weight), so that fewer resamplings add up. The
+// camera's motion is where the plain grid flickers most, so the noise a lighter history lets
+// through costs little there; under a moving light it does not, and the weight stays (the
+// weights tried: docs/methods.md, "The temporal mode").
+constexpr float kMovingCameraMemory = 2.5f;
+float movingCameraWeight(float weight) {
+    return std::max(0.0f, 1.0f - kMovingCameraMemory * (1.0f - weight));
+}
+
 // The per-pixel history: a pixel weighs this frame's nearest column by a Gaussian of its distance
 // to the column's ray, of this width (sigma, froxels), and the history carries at most this much
 // weight (a pixel gathers about 2 pi 0.15^2 = 0.14 a frame: about a hundred frames). A frame that
@@ -286,7 +297,9 @@ rg::ImageRef addFroxelTemporalBlend(rg::RenderGraph& graph, const FroxelTemporal
         push.slices = now.slices;
         push.previousViewProj = before.constants.viewProj;
         push.previousSlices = glm::vec4(glm::vec3(then.slices), valid ? 1.0f : 0.0f);
-        push.blend = {weight, before.lightsChanged ? 1.0f : 0.0f, kDropOutside, keep ? 1.0f : 0.0f};
+        const bool cameraMoved = before.constants.viewProj != constants.viewProj;
+        push.blend = {cameraMoved ? movingCameraWeight(weight) : weight,
+                      before.lightsChanged ? 1.0f : 0.0f, kDropOutside, keep ? 1.0f : 0.0f};
         const auto& p = frame.shared->pipelines.compute(
             "froxel temporal blend", rg::spirv(ls_spirv::temporal_comp), table.layout(),
             sizeof(FroxelTemporalPush), {});

@@ -22,7 +22,7 @@ std::vector<SettingsField> FroxelsMethod::settingsFields() const {
     f.number("historyWeight", &F::historyWeight, 0, 0.99,
              "the history's share of each froxel; 1 would never take a new frame")
         .former({"froxelHistoryWeight"})
-        .doc("the history's weight in the blend");
+        .doc("the history's weight in the blend (0.75 for 0.9 where the camera moved)");
     f.boolean("pixelHistory", &F::pixelHistory)
         .doc("still frames refined per pixel (needs temporal)");
     return f.take();

@@ -560,8 +560,9 @@ TEST_F(LightsReferenceGpu, FroxelVolumeFogsATransparentQuadAsTheModelDoes) {
 // The per-pixel history's still frames sample offset columns, which the apply gathers; the grid
 // the volume exports stays the temporal blend's, at the columns' own places, as the last frame that
 // moved left it. After 16 still frames, 8-pixel columns, the quad as above, measured on lavapipe:
-// Lin 0.1093 off with the temporal mode alone, 0.1105 with the per-pixel history. A frame's offset
-// columns read at their own places (the volume before it stayed the blend's) were 0.26-0.32 off.
+// Lin 0.1093 off with the temporal mode alone, 0.1105 with the per-pixel history; the still
+// frame's offset columns read at the unshifted places (the volume before it stayed the blend's)
+// were 0.256 off.
 TEST_F(LightsReferenceGpu, FroxelVolumeStaysTheTemporalBlendUnderThePerPixelHistory) {
     const host::SceneDesc scene = shippedScene("engine_spot");
     const host::MeshData mesh = host::loadSceneMeshes(scene);

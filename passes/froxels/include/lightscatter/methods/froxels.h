@@ -20,8 +20,10 @@ struct FroxelsSettings {
     // of its own within it (blue noise moved by a low-discrepancy step each frame) and blends its
     // in-scattering with the frame before's, reprojected to where that froxel was and clamped to
     // the range of this frame's froxels around it: new = lerp(this frame's, history,
-    // historyWeight) where the history covers the froxel. A light that moved or turned by more
-    // than a degree since the frame before drops the history, as a camera cut does. The one case
+    // historyWeight) where the history covers the froxel; in a frame where the camera moved, with
+    // a memory (1 / (1 - historyWeight) frames) 2.5 times shorter, so that the history is
+    // resampled fewer times (0.9 becomes 0.75). A light that moved or turned by more than a
+    // degree since the frame before drops the history, as a camera cut does. The one case
     // where a frame's output depends on earlier frames; FrameDescription::resetHistory starts it
     // anew (a camera cut). The history is two grid-sized float32 3D images, the plugin's memory,
     // kept across frames by its render graph.
@@ -31,8 +33,10 @@ struct FroxelsSettings {
     // before refine the image finer than a froxel, as TAA upsampling does. The whole grid's columns
     // step across a froxel from frame to frame (a low-discrepancy sequence), and each pixel
     // gathers the Lin of the column nearest it, weighed by its distance to that column's ray. A
-    // frame that moved keeps the temporal mode as above and starts every pixel again from it.
-    // What it gains on still frames, measured: docs/methods.md, "Still frames refined per pixel".
+    // frame that moved keeps the temporal mode as above and starts every pixel again from it. The
+    // grid (the history the next moving frame blends with, and FrameDescription::volumeOut's) stays
+    // as the last frame that moved left it. What it gains, measured: docs/methods.md, "Still frames
+    // refined per pixel".
     // Costs two screen-sized float32 RGBA images (the plugin's memory) and the apply's four more
     // fetches a pixel; refused without `temporal`.
     bool pixelHistory = false;
