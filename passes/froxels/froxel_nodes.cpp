@@ -154,8 +154,6 @@ FroxelColumns froxelColumns(const rg::PassContext& ctx, const FroxelPixelClock& 
     const rg::HistoryState h = ctx.history(clock.pixels);
     const PreviousFrame& before = ctx.data(clock.previous);
     FroxelColumns c;
-    // The frame before had a history of its own (it was the second of them at least) and had not
-    // moved from the one before it.
     if (!h.valid || before.lightsChanged || before.constants.viewProj != now.viewProj) return c;
     c.still = true;
     c.shift = froxelGridShift(h.age);
