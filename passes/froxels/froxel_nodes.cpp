@@ -154,6 +154,9 @@ FroxelColumns froxelColumns(const rg::PassContext& ctx, const FroxelPixelClock& 
     const rg::HistoryState h = ctx.history(clock.pixels);
     const PreviousFrame& before = ctx.data(clock.previous);
     FroxelColumns c;
+    // The frame before had a history of its own (it was the second of them at least) and had not
+    // moved from the one before it.
+    c.stillBefore = h.valid && h.age >= 2 && !before.beforeMoved;
     if (!h.valid || before.lightsChanged || before.constants.viewProj != now.viewProj) return c;
     c.still = true;
     c.shift = froxelGridShift(h.age);
@@ -285,9 +288,15 @@ rg::ImageRef addFroxelTemporalBlend(rg::RenderGraph& graph, const FroxelTemporal
                   weight = in.weight, table, grid, clock = in.clock](rg::PassContext& ctx) {
         const PreviousFrame& before = ctx.data(previous);
         const FrameConstants& constants = ctx.data(frame.values).constants;
-        const bool valid = ctx.history(history).valid && before.lightJump <= kLightJump;
-        // The per-pixel history's still frames sample offset columns: the grid stays as it was.
-        const bool keep = valid && froxelColumns(ctx, clock, constants).still;
+        const rg::HistoryState kept = ctx.history(history);
+        const bool valid = kept.valid && before.lightJump <= kLightJump;
+        // The per-pixel history's still frames sample offset columns: the grid stays as it was,
+        // copied into the image the next frame reads. From the second such frame on, that image
+        // already holds it (the first copied it into the other, which the frame before read from),
+        // and nothing is written.
+        const FroxelColumns columns = froxelColumns(ctx, clock, constants);
+        const bool keep = valid && columns.still;
+        if (keep && columns.stillBefore && kept.age >= 2) return;
         const FroxelPush now = froxelPush(constants, grid, 1.0f);
         const FroxelPush then = froxelPush(before.constants, grid, 1.0f);
         FroxelTemporalPush push{};

@@ -46,10 +46,12 @@ struct FroxelPixelClock {
 };
 // Where the grid's columns are in a frame: `still` when the per-pixel history holds the frame
 // before's pixels and neither the camera nor a light changed since; then the whole grid is offset
-// by `shift` froxels (froxelGridShift of the history's age), else it stays (0).
+// by `shift` froxels (froxelGridShift of the history's age), else it stays (0). `stillBefore`: the
+// frame before was still too (PreviousFrame::beforeMoved tells).
 struct FroxelColumns {
     bool still = false;
     glm::vec2 shift{0.0f};
+    bool stillBefore = false;
 };
 FroxelColumns froxelColumns(const rg::PassContext& ctx, const FroxelPixelClock& clock,
                             const FrameConstants& now);

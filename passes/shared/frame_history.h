@@ -22,6 +22,9 @@ struct PreviousFrame {
     // The largest angle (radians) by which a light moved or turned since the frame before, as
     // lightJump() measures it; infinite where the frame has another set of lights.
     float lightJump = 0.0f;
+    // The frame before itself differed from the one before it (its camera or a light), or came
+    // first: what it left in a history was made by a frame in motion.
+    bool beforeMoved = true;
 };
 
 // Whether `a` and `b` hold the same light: where it is, where it points, its intensity, range and

@@ -184,6 +184,7 @@ struct Plugin::Impl {
         const FrameGraph& fg = *p.graph->built;
         importImages(p, fg, frame);
         p.previous.constants = previousConstants;
+        p.previous.beforeMoved = previousMoved;
         lightChanges(p, previousLights);
         p.data.set(fg.frameKey, p.frameKey).set(fg.previous, p.previous);
         p.data.discardHistories(frame.resetHistory);
@@ -255,6 +256,8 @@ struct Plugin::Impl {
     // The frame was recorded: it is kept for its report.
     uint64_t recorded(const Prepared& p) {
         const GraphConfig& c = p.graph->config;
+        previousMoved = p.previous.lightsChanged ||
+                        previousConstants.viewProj != p.values[0].constants.viewProj;
         previousConstants = p.values[0].constants;
         previousLights.clear();
         for (size_t i = 0; i < p.keys.size(); ++i)
@@ -332,6 +335,7 @@ struct Plugin::Impl {
     // The last recorded frame's first light's constants: the camera and the medium a history was
     // written with.
     ls::FrameConstants previousConstants{};
+    bool previousMoved = true;  // PreviousFrame::beforeMoved of the next frame
     // Its lights, by id, in its order: what lightChanges() compares a frame's with.
     std::vector<std::pair<uint64_t, ls::FrameConstants>> previousLights;
     const rg::GraphExecutor* lastExecutor = nullptr;  // recorded the last frame

@@ -16,7 +16,8 @@
 // is the grid the integration reads and the next frame's history; this frame's samples stay as they
 // were, for the ranges of the froxels around. In the per-pixel history's still frames (blend.w) the
 // samples lie on offset columns, which the apply gathers: the grid is kept as the last frame that
-// moved left it, for the exported volume and for the next frame that moves.
+// moved left it, for the exported volume and for the next frame that moves (copied by the first
+// such frame; the host records nothing for the later ones).
 #define LS_FROXEL_TEMPORAL 1
 #include "froxel_grid.glsl"
 #include "froxel_bindings.h"
