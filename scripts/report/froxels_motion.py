@@ -89,7 +89,7 @@ def froxels_motion_section(bench_dir):
 
     moving, still, misses, still_misses = {}, {}, {}, {}
     for suffix, name in MODES:
-        if not any(l == p + suffix for (_, _, l) in by for p in PRESETS):
+        if not any(label == pr + suffix for (_, _, label) in by for pr in PRESETS):
             continue
         p(f"{name[0].upper() + name[1:]} against the plain grid of the same size, per scene and motion (ratios; "
           "below 1 it is better; on still frames the plain grid renders the same image every frame, so its "
