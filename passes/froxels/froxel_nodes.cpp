@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "apply_comp_variants.h"
 #include "export_comp.h"
@@ -102,6 +103,22 @@ float movingCameraWeight(float weight) {
 constexpr float kPixelWidth = 0.15f;
 constexpr float kPixelWeight = 16.0f;
 constexpr float kPixelSeed = 0.1f;
+
+// In a frame that moved, each pixel keeps this share of the detail it had (what it gathered
+// against the grid's fetch), carried from where the frame before saw its surface, and is clamped
+// to the range of this frame's four columns around it widened by kMovingPad times its width on
+// each side. The detail fades over some thirty frames rather than dropping at the first that
+// moves: on bench/froxels_flicker.json's motions a faster fade (0.9) flickered more, a slower one
+// (0.99) carried a stale glow (docs/methods.md, "Still frames refined per pixel").
+constexpr float kPixelFade = 0.97f;
+constexpr float kMovingPad = 1.0f;
+
+// The frame before's world -> clip, as a map from offsets to this frame's camera: composed in
+// double, so that a camera far from the origin loses no precision to the translation.
+glm::mat4 previousFromCamera(const glm::mat4& previousViewProj, const FrameConstants& now) {
+    const glm::dmat4 t = glm::translate(glm::dmat4(1.0), glm::dvec3(glm::vec3(now.cameraPos)));
+    return glm::mat4(glm::dmat4(previousViewProj) * t);
+}
 
 // The smallest Lin scale of the frame's lights: the integrated grid holds all of them.
 float gridStorage(const rg::PassContext& ctx,
@@ -359,6 +376,7 @@ CompositeOutputs addFroxelApply(rg::RenderGraph& graph, const FroxelApplyInputs&
     const bool pixels = in.clock.pixels.valid();
     if (pixels) {
         table.storageRead(LS_BINDING_FROXEL_PIXELS, in.clock.pixels);
+        table.sampled(LS_BINDING_FROXEL_KEPT, in.kept, s.linear());
         graph.markOutput(table.storageWrite(LS_BINDING_FROXEL_PIXELS_OUT, in.pixelsOut));
     }
     const CompositeOutputs written = addCompositeTarget(table, in.target);
@@ -368,10 +386,19 @@ CompositeOutputs addFroxelApply(rg::RenderGraph& graph, const FroxelApplyInputs&
         FroxelPush now = froxelPush(c, grid, gridStorage(ctx, lights));
         FroxelApplyPush push{};
         if (pixels) {
-            const bool still = stepColumns(now, ctx, clock, c).still;
-            // A frame that moved starts each pixel again from its trilinear fetch: the next still
-            // frames refine it.
-            push.history = {kPixelWidth, kPixelWeight, still ? 1.0f : 0.0f, kPixelSeed};
+            if (stepColumns(now, ctx, clock, c).still) {
+                push.history = {kPixelWidth, kPixelWeight, 1.0f, kPixelSeed};
+            } else {
+                // A frame that moved carries each pixel's detail from where the frame before saw
+                // its surface, unless the history is gone (a camera cut, a light's jump, a new
+                // frame size): then each pixel starts again from its trilinear fetch.
+                const PreviousFrame& before = ctx.data(clock.previous);
+                const bool carried = ctx.history(clock.pixels).valid &&
+                                     before.lightJump <= kLightJump &&
+                                     before.constants.screenSize == c.screenSize;
+                push.history = {kMovingPad, carried ? kPixelFade : 0.0f, 0.0f, kPixelSeed};
+                push.previousFromCamera = previousFromCamera(before.constants.viewProj, c);
+            }
         }
         push.grid = now.grid;
         push.slices = now.slices;

@@ -138,6 +138,9 @@ struct FroxelApplyInputs {
     // pixels; an invalid clock: none, the trilinear fetch alone.
     FroxelPixelClock clock;
     rg::ImageRef pixelsOut;
+    // The grid the temporal blend keeps (as the last frame that moved left it), integrated: the
+    // pixels hold what they gathered as detail against its fetch.
+    rg::ImageRef kept;
 };
 // The engine's color (and Lin output) with the grid applied at each pixel's depth.
 CompositeOutputs addFroxelApply(rg::RenderGraph& graph, const FroxelApplyInputs& in,

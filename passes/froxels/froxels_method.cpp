@@ -144,13 +144,13 @@ ChainOutputs FroxelsMethod::addChain(rg::RenderGraph& g, ChainLights lights,
     }
     const rg::ImageRef integrated =
         addFroxelIntegration(g, {chain, scattering, values, clock, samples}, grid);
-    if (first.volumeOut.valid()) {
-        const rg::ImageRef volume =
-            samples.valid()
-                ? addFroxelIntegration(g, {chain, scattering, values, {}, {}, true}, grid)
-                : integrated;
-        g.markOutput(addFroxelExport(g, {chain, volume, values, first.volumeOut}, grid));
-    }
+    // With the per-pixel history, the grid the blend keeps, integrated on its own: the apply's
+    // pixels hold their detail against it, and it is the exported volume.
+    const rg::ImageRef kept =
+        samples.valid() ? addFroxelIntegration(g, {chain, scattering, values, {}, {}, true}, grid)
+                        : integrated;
+    if (first.volumeOut.valid())
+        g.markOutput(addFroxelExport(g, {chain, kept, values, first.volumeOut}, grid));
     out.composited = true;
     out.target = addFroxelApply(g,
                                 {chain,
@@ -158,7 +158,8 @@ ChainOutputs FroxelsMethod::addChain(rg::RenderGraph& g, ChainLights lights,
                                  values,
                                  {target.color, target.inscatterOut, false, target.transmittance},
                                  clock,
-                                 pixels.current},
+                                 pixels.current,
+                                 kept},
                                 grid);
     return out;
 }

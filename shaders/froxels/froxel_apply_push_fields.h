@@ -3,8 +3,12 @@
 LS_VEC4 grid;    // as froxel_push_fields.h
 LS_VEC4 slices;  // as froxel_push_fields.h
 LS_VEC4 shift;   // as froxel_push_fields.h
-// The per-pixel history: x: the width (sigma, in froxels) of the weight a pixel gives this frame's
-// nearest column, by its distance to it; y: the most weight the history carries; z: 1 when nothing
-// moved since the frame before, whose pixels the history holds (they gather this frame's columns),
-// 0 when it starts again from this frame's trilinear fetch, with weight w; w: that weight
+// The per-pixel history. z: 1 when nothing moved since the frame before, whose pixels the history
+// holds: they gather this frame's columns, x the width (sigma, in froxels) of the weight a pixel
+// gives its nearest column by its distance to it, y the most weight the history carries. z: 0 in
+// a frame that moved: y is the share of the frame before's pixels, reprojected and clamped to the
+// range of this frame's columns widened by x times its width, kept against this frame's trilinear
+// fetch (0: each pixel starts again from that fetch). w: the weight a fetch carries.
 LS_VEC4 history;
+// Offsets from this frame's camera -> the frame before's clip (where a pixel's surface was).
+LS_MAT4 previousFromCamera;

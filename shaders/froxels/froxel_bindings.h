@@ -13,6 +13,7 @@
 #define LS_BINDING_FROXEL_PIXELS 15      // apply.comp (per-pixel history): the frame before's
 #define LS_BINDING_FROXEL_PIXELS_OUT 16  // apply.comp (per-pixel history): this frame's
 #define LS_BINDING_FROXEL_SAMPLES 17     // integrate.comp (per-pixel history): the unblended grid
+#define LS_BINDING_FROXEL_KEPT 18        // apply.comp (per-pixel history): the kept grid
 
 // blue_noise.comp, a pass of its own: the tile's texels as uploaded, and the tile.
 #define LS_BINDING_FROXEL_NOISE_TEXELS 0

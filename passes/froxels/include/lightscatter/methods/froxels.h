@@ -33,12 +33,15 @@ struct FroxelsSettings {
     // before refine the image finer than a froxel, as TAA upsampling does. The whole grid's columns
     // step across a froxel from frame to frame (a low-discrepancy sequence), and each pixel
     // gathers the Lin of the column nearest it, weighed by its distance to that column's ray. A
-    // frame that moved keeps the temporal mode as above and starts every pixel again from it. The
+    // frame that moved keeps the temporal mode as above, and each pixel adds to it a fading share
+    // of the detail it gathered (carried from where the frame before saw its surface, less the
+    // further it moved), so that the image does not jump to the grid's when a motion starts. The
     // grid (the history the next moving frame blends with, and FrameDescription::volumeOut's) stays
     // as the last frame that moved left it. What it gains, measured: docs/methods.md, "Still frames
     // refined per pixel".
-    // Costs two screen-sized float32 RGBA images (the plugin's memory) and the apply's four more
-    // fetches a pixel; refused without `temporal`.
+    // Costs two screen-sized float32 RGBA images (the plugin's memory), a second integration of
+    // the grid each frame, and the apply's five more fetches a pixel in a still frame (eight in one
+    // that moved); refused without `temporal`.
     bool pixelHistory = false;
 };
 
