@@ -105,13 +105,12 @@ constexpr float kPixelWeight = 16.0f;
 constexpr float kPixelSeed = 0.1f;
 
 // In a frame that moved, each pixel keeps this share of the detail it had (what it gathered
-// against the grid's fetch), carried from where the frame before saw its surface, and is clamped
-// to the range of this frame's four columns around it widened by kMovingPad times its width on
-// each side. The detail fades over some thirty frames rather than dropping at the first that
-// moves: on bench/froxels_flicker.json's motions a faster fade (0.9) flickered more, a slower one
-// (0.99) carried a stale glow (docs/methods.md, "Still frames refined per pixel").
+// against the grid's fetch), carried from where the frame before saw its surface (apply.comp
+// keeps less the further the surface moved) and clamped as a still frame's gathering is. The
+// detail fades over some thirty frames rather than dropping at the first that moves: on
+// bench/froxels_flicker.json's motions a faster fade (0.9) flickered more, a slower one (0.99)
+// carried a stale glow (docs/methods.md, "Still frames refined per pixel").
 constexpr float kPixelFade = 0.97f;
-constexpr float kMovingPad = 1.0f;
 
 // The frame before's world -> clip, as a map from offsets to this frame's camera: composed in
 // double, so that a camera far from the origin loses no precision to the translation.
@@ -396,7 +395,7 @@ CompositeOutputs addFroxelApply(rg::RenderGraph& graph, const FroxelApplyInputs&
                 const bool carried = ctx.history(clock.pixels).valid &&
                                      before.lightJump <= kLightJump &&
                                      before.constants.screenSize == c.screenSize;
-                push.history = {kMovingPad, carried ? kPixelFade : 0.0f, 0.0f, kPixelSeed};
+                push.history = {0.0f, carried ? kPixelFade : 0.0f, 0.0f, kPixelSeed};
                 push.previousFromCamera = previousFromCamera(before.constants.viewProj, c);
             }
         }

@@ -68,23 +68,22 @@ void main() {
         hi = max(hi, s);
         if (all(equal(c, near))) nearLin = s;
     }
+    // What a pixel holds stays within the four columns' range widened by four times its width on
+    // each side: a pixel between columns holds more or less than any of them (a glow's peak, a
+    // thin shaft), but not without bound. A narrower pad cut point_fog's glow, no clamp left
+    // window_room's outliers (docs/methods.md, "Still frames refined per pixel", has the figures).
+    vec3 pad = 4.0 * (hi - lo);
     if (pc.history.z > 0.5) {
         // The kept grid's trilinear fetch at the pixel: what the history's detail is relative to.
         vec2 keptXy = (vec2(p) + 0.5) / (pc.grid.xy * pc.grid.w);
         keptXy = mix(keptXy, min(keptXy, (used - 0.5) / pc.grid.xy), lessThan(used, pc.grid.xy));
-        vec4 k = textureLod(kept, vec3(keptXy, w), 0.0);
-        if (u < 1.0) k = mix(vec4(0.0, 0.0, 0.0, 1.0), k, first);
-        vec3 base = max(k.rgb, vec3(0.0)) / pc.slices.w;
+        vec4 fetched = textureLod(kept, vec3(keptXy, w), 0.0);
+        if (u < 1.0) fetched = mix(vec4(0.0, 0.0, 0.0, 1.0), fetched, first);
+        vec3 base = max(fetched.rgb, vec3(0.0)) / pc.slices.w;
         vec2 d = (cell - near) / pc.history.x;
         float weight = exp(-0.5 * dot(d, d));
         vec4 h = imageLoad(pixels, p);
-        h.rgb += base;
-        // Within the four columns' range widened by four times its width on each side: a pixel
-        // between columns holds more or less than any of them (a glow's peak, a thin shaft), but
-        // not without bound. A narrower pad cut point_fog's glow, no clamp left window_room's
-        // outliers (docs/methods.md, "Still frames refined per pixel", has the figures).
-        vec3 pad = 4.0 * (hi - lo);
-        h.rgb = clamp(h.rgb, lo - pad, hi + pad);
+        h.rgb = clamp(h.rgb + base, lo - pad, hi + pad);
         float carried = max(h.a + weight, 1e-6);
         vec3 gathered = (h.rgb * h.a + nearLin * weight) / carried;
         imageStore(pixelsOut, p, vec4(gathered - base, min(carried, pc.history.y)));
@@ -106,7 +105,6 @@ void main() {
             vec4 a = mix(imageLoad(pixels, q0), imageLoad(pixels, ivec2(q1.x, q0.y)), f.x);
             vec4 b = mix(imageLoad(pixels, ivec2(q0.x, q1.y)), imageLoad(pixels, q1), f.x);
             vec4 r = mix(a, b, f.y);
-            vec3 pad = pc.history.x * (hi - lo);
             // The detail corrects the grid's fetch where its columns were, and the columns stay
             // on the screen while the surface moves: the further it moved, the less of the detail
             // still fits (a quarter of a froxel: 1 / e). On bench/froxels_flicker.json's camera

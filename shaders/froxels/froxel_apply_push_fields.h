@@ -6,9 +6,9 @@ LS_VEC4 shift;   // as froxel_push_fields.h
 // The per-pixel history. z: 1 when nothing moved since the frame before, whose pixels the history
 // holds: they gather this frame's columns, x the width (sigma, in froxels) of the weight a pixel
 // gives its nearest column by its distance to it, y the most weight the history carries. z: 0 in
-// a frame that moved: y is the share of the frame before's pixels, reprojected and clamped to the
-// range of this frame's columns widened by x times its width, kept against this frame's trilinear
-// fetch (0: each pixel starts again from that fetch). w: the weight a fetch carries.
+// a frame that moved: y is the share of its detail a pixel keeps, carried from where the frame
+// before saw its surface (0: each pixel starts again from this frame's trilinear fetch). w: the
+// weight a fetch carries.
 LS_VEC4 history;
 // Offsets from this frame's camera -> the frame before's clip (where a pixel's surface was).
 LS_MAT4 previousFromCamera;
