@@ -108,8 +108,8 @@ constexpr float kPixelSeed = 0.1f;
 // against the grid's fetch), carried from where the frame before saw its surface (apply.comp
 // keeps less the further the surface moved) and clamped as a still frame's gathering is. The
 // detail fades over some thirty frames rather than dropping at the first that moves: on
-// bench/froxels_flicker.json's motions a faster fade (0.9) flickered more, a slower one (0.99)
-// carried a stale glow (docs/methods.md, "Still frames refined per pixel").
+// bench/froxels_flicker.json's motions a faster fade (0.9) or a slower one (0.99) flickered more
+// (docs/methods.md, "Still frames refined per pixel").
 constexpr float kPixelFade = 0.97f;
 
 // The frame before's world -> clip, as a map from offsets to this frame's camera: composed in

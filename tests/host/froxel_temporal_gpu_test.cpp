@@ -68,6 +68,19 @@ double settledError(host::EngineRenderer& renderer, host::RenderOptions options,
     return sum;
 }
 
+// 16 still frames after a reset, refined per pixel at HDRP's 8-pixel columns: the options the
+// frames after them keep rendering with, and the last frame's Lin.
+std::pair<host::RenderOptions, std::vector<float>> gatherStill(host::EngineRenderer& renderer) {
+    host::RenderOptions o = froxels(8, true, true);
+    o.resetHistory = true;
+    std::vector<float> lin;
+    for (int frame = 0; frame < 16; ++frame) {
+        lin = renderer.render(o).inscatter;
+        o.resetHistory = false;
+    }
+    return {o, lin};
+}
+
 }  // namespace
 
 class FroxelTemporalGpu : public testing_support::GpuTest {};
@@ -202,12 +215,7 @@ TEST_F(FroxelTemporalGpu, AFrameThatMovedFarLeavesNoTrailOfTheGatheredPixels) {
     const host::MeshData mesh = host::loadSceneMeshes(start);
     host::EngineRenderer renderer(dev(), start, mesh, kSize);
     host::bench::Motion motion;
-    host::RenderOptions o = froxels(8, true, true);
-    o.resetHistory = true;
-    for (int frame = 0; frame < 16; ++frame) {
-        (void)renderer.render(o);
-        o.resetHistory = false;
-    }
+    const host::RenderOptions o = gatherStill(renderer).first;
     renderer.scene().camera =
         host::bench::poseAt(start, host::bench::MotionKind::Camera, motion, 10).camera;
     const std::vector<float> lin = renderer.render(o).inscatter;
@@ -232,13 +240,7 @@ TEST_F(FroxelTemporalGpu, TheFirstFrameThatMovesKeepsTheGatheredImage) {
     const host::MeshData mesh = host::loadSceneMeshes(start);
     host::EngineRenderer renderer(dev(), start, mesh, kSize);
     host::bench::Motion motion;
-    host::RenderOptions o = froxels(8, true, true);
-    o.resetHistory = true;
-    std::vector<float> still;
-    for (int frame = 0; frame < 16; ++frame) {
-        still = renderer.render(o).inscatter;
-        o.resetHistory = false;
-    }
+    const auto [o, still] = gatherStill(renderer);
     const std::vector<double> before = reference(renderer.scene(), mesh);
     renderer.scene().camera =
         host::bench::poseAt(start, host::bench::MotionKind::Camera, motion, 1).camera;
