@@ -350,8 +350,9 @@ rg::ImageRef addFroxelIntegration(rg::RenderGraph& graph, const FroxelIntegrateI
                       : "froxel integrated in-scattering",
             rg::ImageDesc::volume(kFroxelIntegratedFormat, grid.columns, grid.rows, grid.slices)));
     pass.execute([frame = in.chain, lights = in.lights, table, grid, name, samples,
-                  clock = in.clock](rg::PassContext& ctx) {
+                  clock = in.clock, onlyStill = in.onlyStill](rg::PassContext& ctx) {
         const FrameConstants& constants = ctx.data(frame.values).constants;
+        if (onlyStill.pixels.valid() && !froxelColumns(ctx, onlyStill, constants).still) return;
         FroxelPush push = froxelPush(constants, grid, gridStorage(ctx, lights));
         stepColumns(push, ctx, clock, constants);
         const auto& p =

@@ -121,8 +121,12 @@ struct FroxelIntegrateInputs {
     // their offset columns (the apply gathers them per pixel). Invalid: `scattering`, unmoved.
     FroxelPixelClock clock;
     rg::ImageRef samples;
-    // The exported volume's own integration (its names), beside the apply's.
+    // The exported volume's own integration (its names), beside the apply's: with the per-pixel
+    // history, the grid the blend keeps.
     bool volume = false;
+    // Valid: the integration is needed only in this clock's still frames (the kept grid, which the
+    // apply reads only there and no volume is exported), and a frame that moved records nothing.
+    FroxelPixelClock onlyStill;
 };
 // Lin and the mean transmittance from the camera to each froxel's far end
 // (kFroxelIntegratedFormat, the grid's size).

@@ -144,11 +144,14 @@ ChainOutputs FroxelsMethod::addChain(rg::RenderGraph& g, ChainLights lights,
     }
     const rg::ImageRef integrated =
         addFroxelIntegration(g, {chain, scattering, values, clock, samples}, grid);
-    // With the per-pixel history, the grid the blend keeps, integrated on its own: the apply's
-    // pixels hold their detail against it, and it is the exported volume.
+    // With the per-pixel history, the grid the blend keeps, integrated on its own: the exported
+    // volume, and what the apply's pixels hold their detail against in a still frame (a frame that
+    // moved integrates it only to export it).
+    const FroxelPixelClock onlyStill = first.volumeOut.valid() ? FroxelPixelClock{} : clock;
     const rg::ImageRef kept =
-        samples.valid() ? addFroxelIntegration(g, {chain, scattering, values, {}, {}, true}, grid)
-                        : integrated;
+        samples.valid()
+            ? addFroxelIntegration(g, {chain, scattering, values, {}, {}, true, onlyStill}, grid)
+            : integrated;
     if (first.volumeOut.valid())
         g.markOutput(addFroxelExport(g, {chain, kept, values, first.volumeOut}, grid));
     out.composited = true;
