@@ -40,7 +40,7 @@ struct FroxelsSettings {
     // as the last frame that moved left it. What it gains, measured: docs/methods.md, "Still frames
     // refined per pixel".
     // Costs two screen-sized float32 RGBA images (the plugin's memory), a second integration of
-    // the grid each frame, and the apply's five more fetches a pixel in a still frame (eight in one
+    // the grid in a still frame, and the apply's five more fetches a pixel there (eight in a frame
     // that moved); refused without `temporal`.
     bool pixelHistory = false;
 };
