@@ -26,7 +26,8 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = LS_BINDING_DEPTH) uniform sampler2D depthBuffer;  // the engine's depth
 layout(binding = LS_BINDING_FROXEL_INTEGRATED) uniform sampler3D integrated;
 #if LS_FROXEL_PIXEL_HISTORY
-// Lin (unscaled) and the weight it carries, per pixel: the frame before's, and this frame's.
+// What a pixel gathered, as its difference from the kept grid's fetch (Lin, unscaled), and the
+// weight it carries: the frame before's, and this frame's.
 layout(binding = LS_BINDING_FROXEL_PIXELS, rgba32f) uniform readonly image2D pixels;
 layout(binding = LS_BINDING_FROXEL_PIXELS_OUT, rgba32f) uniform writeonly image2D pixelsOut;
 // The grid as the last frame that moved left it (the temporal blend keeps it in still frames),
