@@ -35,6 +35,25 @@ layout(binding = LS_BINDING_FROXEL_PIXELS_OUT, rgba32f) uniform writeonly image2
 layout(binding = LS_BINDING_FROXEL_KEPT) uniform sampler3D kept;
 #endif
 
+// Pixel p's texture coordinates among the grid's columns offset by `shift` froxels (column c's ray
+// at c + 0.5 + shift). Under dynamic resolution the grid has columns and rows beyond the frame's
+// (`used` of them are the frame's): the frame's last half column reads its own last column alone,
+// as the edge of a grid of the frame's size would (the clamp binds only then, so a grid of the
+// frame's size reads what it always read).
+vec2 columnCoordinates(ivec2 p, vec2 shift, vec2 used) {
+    vec2 xy = (vec2(p) + 0.5 - shift * pc.grid.w) / (pc.grid.xy * pc.grid.w);
+    return mix(xy, min(xy, (used - 0.5) / pc.grid.xy), lessThan(used, pc.grid.xy));
+}
+
+// An integrated grid's Lin (stored) and T at texture coordinates xyw, for a depth at slice
+// coordinate u: the first slice starts at the camera (the integration's), linear in z from there
+// (`first`, the depth's share of it).
+vec4 gridAt(sampler3D grid, vec3 xyw, float u, float first) {
+    vec4 g = textureLod(grid, xyw, 0.0);
+    if (u < 1.0) g = mix(vec4(0.0, 0.0, 0.0, 1.0), g, first);
+    return g;
+}
+
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     // The frame's extent, not the image's: under dynamic resolution the engine's images are larger
@@ -42,18 +61,12 @@ void main() {
     if (any(greaterThanEqual(p, ivec2(frame.screenSize.xy)))) return;
     float z = pixelCameraZ(depthBuffer, p);
     float u = clamp(sliceCoordinate(z), 0.0, pc.grid.z);
-    // The grid's columns this frame (column c's ray at c + 0.5 + pc.shift), as texture coordinates.
-    vec2 xy = (vec2(p) + 0.5 - pc.shift.xy * pc.grid.w) / (pc.grid.xy * pc.grid.w);
-    // Under dynamic resolution the grid has columns and rows beyond the frame's: the frame's last
-    // half column reads its own last column alone, as the edge of a grid of the frame's size would
-    // (the clamp binds only then, so a grid of the frame's size reads what it always read).
+    // The grid's columns this frame, as texture coordinates.
     const vec2 used = ceil(frame.screenSize.xy / pc.grid.w);
-    xy = mix(xy, min(xy, (used - 0.5) / pc.grid.xy), lessThan(used, pc.grid.xy));
+    vec2 xy = columnCoordinates(p, pc.shift.xy, used);
     float w = (max(u, 1.0) - 0.5) / pc.grid.z;
-    vec4 g = textureLod(integrated, vec3(xy, w), 0.0);
-    // The first slice starts at the camera (the integration's): linear in z from there.
     float first = u < 1.0 ? clamp(z / sliceZ(1.0), 0.0, 1.0) : 1.0;
-    if (u < 1.0) g = mix(vec4(0.0, 0.0, 0.0, 1.0), g, first);
+    vec4 g = gridAt(integrated, vec3(xy, w), u, first);
     vec3 lin = max(g.rgb, vec3(0.0)) / pc.slices.w;
 #if LS_FROXEL_PIXEL_HISTORY
     // This frame's column nearest the pixel, at its depth, and the range of the four around.
@@ -76,11 +89,8 @@ void main() {
     vec3 pad = 4.0 * (hi - lo);
     if (pc.history.z > 0.5) {
         // The kept grid's trilinear fetch at the pixel: what the history's detail is relative to.
-        vec2 keptXy = (vec2(p) + 0.5) / (pc.grid.xy * pc.grid.w);
-        keptXy = mix(keptXy, min(keptXy, (used - 0.5) / pc.grid.xy), lessThan(used, pc.grid.xy));
-        vec4 fetched = textureLod(kept, vec3(keptXy, w), 0.0);
-        if (u < 1.0) fetched = mix(vec4(0.0, 0.0, 0.0, 1.0), fetched, first);
-        vec3 base = max(fetched.rgb, vec3(0.0)) / pc.slices.w;
+        vec2 keptXy = columnCoordinates(p, vec2(0.0), used);
+        vec3 base = max(gridAt(kept, vec3(keptXy, w), u, first).rgb, vec3(0.0)) / pc.slices.w;
         vec2 d = (cell - near) / pc.history.x;
         float weight = exp(-0.5 * dot(d, d));
         vec4 h = imageLoad(pixels, p);
