@@ -382,14 +382,10 @@ int runBench(Args& args) {
             row["frameTime"] = spreadJson(bench::spreadOf(frameTotals));
             row["passes"] = namedSpreads(last.plugin.passes, perPass);
             // Epipolar's ray-marched samples, counted by its marches: the first march, and the
-            // samples the refinement on in-scattering differences added. A cube's later faces
-            // march the same samples again, so only each light's first face is counted.
+            // samples the refinement on in-scattering differences added.
             uint64_t marched = 0, refined = 0;
             for (const auto& p : last.plugin.passes) {
                 if (p.samples < 0) continue;
-                if (p.name.find("cube face ") != std::string::npos &&
-                    p.name.find("cube face +X)") == std::string::npos)
-                    continue;
                 (p.name.find("(refinement") != std::string::npos ? refined : marched) +=
                     static_cast<uint64_t>(p.samples);
             }

@@ -23,7 +23,7 @@ EpipolarConstants makeEpipolarConstants(const lightscatter::EpipolarSettings& s,
     c.marching = {static_cast<float>(treeLevels(shadowMapSize)), fraction ? 1.0f : 0.0f,
                   inscatterRefinementOf(s, refinesByDefault), static_cast<float>(s.fixupMaxSteps)};
     c.unwarp = {s.bilateralThreshold, 0.0f, 0.0f, 0.0f};
-    c.cubeFace = {-1.0f, 1.0f, 0.0f, 0.0f};
+    c.cubeFaces = {static_cast<float>(kAllCubeFaces), 0.0f, 0.0f, 0.0f};
     c.bounds = bounds;
     const uint32_t phases = marchPhases(s);
     c.march = {static_cast<float>(phases), static_cast<float>(marchBlocksPerRow(phases)), 0.0f,
@@ -42,10 +42,10 @@ uint32_t marchBlocksPerRow(uint32_t phases) {
     return across;
 }
 
-EpipolarConstants EpipolarFrame::of(int face) const {
-    EpipolarConstants c = constants;
-    if (face >= 0) c.cubeFace = {static_cast<float>(face), inView(face) ? 1.0f : 0.0f, 0.0f, 0.0f};
-    return c;
+uint32_t EpipolarFrame::facesInView() const {
+    uint32_t bits = 0;
+    for (int f = 0; f < 6; ++f) bits |= faceInView[f] ? 1u << f : 0u;
+    return bits;
 }
 
 const EpipolarFrame& epipolarFrameOf(const LightFrame& frame) {

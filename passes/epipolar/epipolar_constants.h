@@ -3,8 +3,7 @@
 // kept out of the frame constants every method reads. The fields are written once, in
 // shaders/epipolar/epipolar_constants_fields.h, for this struct and the shaders' uniform block.
 // The method keeps a light's constants of the frame being recorded in its LightData
-// (EpipolarFrame), which its chain uploads (addUploadEpipolarConstants) once for the light and
-// once per cube face.
+// (EpipolarFrame), which its chain uploads (addUploadEpipolarConstants).
 #include <array>
 #include <glm/glm.hpp>
 
@@ -61,26 +60,27 @@ EpipolarConstants makeEpipolarConstants(const lightscatter::EpipolarSettings& s,
                                         uint32_t shadowMapSize, bool interpolatesLin,
                                         bool refinesByDefault, const glm::vec4& bounds);
 
+// EpipolarConstants::cubeFaces.x without a cube: every face's bit.
+inline constexpr uint32_t kAllCubeFaces = 63;
+
 // A light's epipolar values of one frame (EpipolarMethod::prepare): its constants, and for a cube
-// shadow map which faces reach the view. A face out of view keeps its passes in the graph (a face
-// moving into view rebuilds nothing) and they record no work.
+// shadow map which faces reach the view (constants.cubeFaces holds them too). The passes that read
+// the cube read every face in one dispatch or draw and skip the faces out of view, so a face moving
+// into view rebuilds nothing.
 struct EpipolarFrame final : LightData {
     EpipolarConstants constants;
     LineSizes sizes;  // the light's slices and samples per slice (screen_share.h)
     LineSizes full;   // the settings' (the whole screen's)
     VkRect2D rect{};  // the light's screen rectangle
     std::array<bool, 6> faceInView{};
-    // The block the passes of `face` read: -1 the light's own, 0-5 a cube face's.
-    EpipolarConstants of(int face) const;
-    bool inView(int face) const { return face < 0 || faceInView[face]; }
+    bool inView(int face) const { return faceInView[face]; }
+    uint32_t facesInView() const;  // a bit per face, as EpipolarConstants::cubeFaces.x
 };
 const EpipolarFrame& epipolarFrameOf(const LightFrame& frame);
 
-// Epipolar's constants as a chain's passes read them: the light's, or a cube face's in the passes
-// that read the shadow map once per face.
+// Epipolar's constants as a chain's passes read them.
 struct EpipolarContext {
     rg::BufferRef constants;  // uploaded by an earlier pass
-    int face = -1;            // -1: the light's own; 0-5: the cube face
 };
 
 // A binding table whose first rows are the frame constants and epipolar's (LS_BINDING_FRAME,

@@ -105,6 +105,7 @@ std::vector<CpuWork> EpipolarMethod::prepare(LightData* data, LightFrame&,
     if (!cubeShadowed(light)) return {};
     for (int face = 0; face < 6; ++face)
         e.faceInView[face] = cubeFaceTouchesView(light.camera, light.light, light.medium, face);
+    e.constants.cubeFaces.x = static_cast<float>(e.facesInView());
     return {};
 }
 
@@ -154,7 +155,7 @@ std::string EpipolarMethod::summary(const ChainConfig& c) const {
     if (!c.shadowed) return unshadowedSummary(c);
     const Options& o = *c.options.get<Options>();
     return std::string("epipolar sampling") + (o.minMaxTrees ? " with min/max trees" : "") +
-           (c.light == LightType::Point ? " per cube face" : "") +
+           (c.light == LightType::Point ? " on every cube face" : "") +
            (o.inscatterRefinement ? ", refined on in-scattering differences" : "") +
            (o.fixup ? ", fix-up" : "") + ", composited in the unwarp";
 }
@@ -174,7 +175,7 @@ std::string EpipolarMethod::frameNote(const LightFrame& frame, const ChainConfig
         if (e.inView(f)) list += std::string(list.empty() ? "" : ", ") + cubeFaceName(f);
     return (lines.empty() ? "" : lines + "; ") +
            "cube faces reaching the view: " + (list.empty() ? std::string("none") : list) +
-           " (the others' passes record no work)";
+           " (the others are skipped)";
 }
 
 }  // namespace ls

@@ -1,7 +1,7 @@
 #pragma once
 // Seed 000's epipolar sampling as a method of the frame graph (method_unit.h): the chain of
-// epipolar_nodes.h per shadowed light, a point light's cube map face by face, and the closed form
-// for an unshadowed one.
+// epipolar_nodes.h per shadowed light (a point light's cube map: its six faces in each pass that
+// reads it), and the closed form for an unshadowed one.
 #include "shared/method_unit.h"
 #include "shared/settings_table.h"
 

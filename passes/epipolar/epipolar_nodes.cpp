@@ -1,6 +1,5 @@
 #include "epipolar_nodes.h"
 
-#include <array>
 #include <string>
 
 namespace ls {
@@ -17,64 +16,32 @@ EpipolarOutputs addEpipolarNodes(rg::RenderGraph& g, const EpipolarInputs& in,
     rg::ImageRef marking =
         addMarkRayMarchSamples(g, {chain, epipolar, sources, samples.epipolarZ, {}}, sizes);
     // The shadow map's part: the line of every slice in it, the trees along those lines and the
-    // march. A point light's cube map repeats it per face, each face adding its part of every ray
-    // to the same samples; the faces' lines and trees die with their march, so they alias.
+    // march (a point light's cube map: the six faces' in each pass). Both marches read the same
+    // lines and trees.
+    const rg::ImageRef uvFrame = addSliceUvFrame(g, {chain, epipolar, endPoints}, sizes);
+    const rg::ImageRef trees = options.minMaxTrees
+                                   ? addMinMaxTrees(g, {chain, epipolar, in.light, uvFrame}, sizes)
+                                   : rg::ImageRef{};
     rg::BufferRef counts = in.stepCounts;
-    struct Lines {
-        rg::ImageRef uvFrame, trees;
-    };
-    // Each takes the light's epipolar constants, or a cube face's.
-    auto lines = [&](const EpipolarContext& e) {
-        const rg::ImageRef uvFrame = addSliceUvFrame(g, {chain, e, endPoints}, sizes);
-        return Lines{uvFrame, options.minMaxTrees
-                                  ? addMinMaxTrees(g, {chain, e, in.light, uvFrame}, sizes)
-                                  : rg::ImageRef{}};
-    };
-    auto march = [&](const EpipolarContext& e, const Lines& l, rg::ImageRef accumulate,
-                     bool overwrite, uint32_t marks) {
+    auto march = [&](rg::ImageRef accumulate, uint32_t marks) {
         const EpipolarRayMarch m =
             addEpipolarRayMarch(g,
-                                {chain, e, in.light, samples.coordinates, samples.epipolarZ,
-                                 l.uvFrame, marking, l.trees, accumulate, counts},
-                                {sizes, overwrite, marks});
+                                {chain, epipolar, in.light, samples.coordinates, samples.epipolarZ,
+                                 uvFrame, endPoints, marking, trees, accumulate, counts},
+                                {sizes, marks});
         counts = m.stepCounts;
         return m.marched;
     };
-    rg::ImageRef marched;
-    Lines single;
-    std::array<EpipolarContext, 6> faces;
-    const std::string suffix = g.nameSuffix();
-    if (!options.cubeShadow) {
-        single = lines(epipolar);
-        marched = march(epipolar, single, {}, false, kFirstMarch);
-    } else {
-        for (uint32_t face = 0; face < 6; ++face) {
-            g.setNameSuffix(suffix + " (cube face " + cubeFaceName(static_cast<int>(face)) + ")");
-            faces[face] = addUploadEpipolarConstants(g, {chain.values, static_cast<int>(face)});
-            marched = march(faces[face], lines(faces[face]), marched, false, kFirstMarch);
-        }
-        g.setNameSuffix(suffix);
-    }
+    rg::ImageRef marched = march({}, kFirstMarch);
     if (options.inscatterRefinement) {
         // The samples between two marched ones that differ are marched too, before interpolation.
-        // A spot's or the sun's lines and trees live on to this march; a cube's faces build theirs
-        // again, so that the six faces' trees still alias (the second build costs the trees' time
-        // again, not their memory).
         sources = addRefineOnInscattering(g, {chain, epipolar, sources, marched, samples.epipolarZ},
                                           sizes);
+        const std::string suffix = g.nameSuffix();
         g.setNameSuffix(suffix + " (refinement)");
         marking = addMarkRayMarchSamples(g, {chain, epipolar, sources, samples.epipolarZ, marking},
                                          sizes);
-        if (!options.cubeShadow) {
-            marched = march(epipolar, single, marched, true, kRefinementMarch);
-        } else {
-            for (uint32_t face = 0; face < 6; ++face) {
-                g.setNameSuffix(suffix + " (refinement, cube face " +
-                                cubeFaceName(static_cast<int>(face)) + ")");
-                marched =
-                    march(faces[face], lines(faces[face]), marched, face == 0, kRefinementMarch);
-            }
-        }
+        marched = march(marched, kRefinementMarch);
         g.setNameSuffix(suffix);
     }
     const rg::ImageRef interpolated =

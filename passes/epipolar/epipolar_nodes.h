@@ -25,11 +25,10 @@ struct EpipolarSizes {
     }
 };
 
-// Copies this frame's epipolar constants, the light's or a cube face's (EpipolarFrame::of), into a
-// graph buffer (vkCmdUpdateBuffer, recorded per frame).
+// Copies this frame's epipolar constants (EpipolarFrame::constants) into a graph buffer
+// (vkCmdUpdateBuffer, recorded per frame).
 struct UploadEpipolarConstantsInputs {
     rg::HostDataRef<LightFrame> values;  // whose constants (its data: the EpipolarFrame)
-    int face = -1;                       // the light's own, or a cube face's (0-5)
 };
 EpipolarContext addUploadEpipolarConstants(rg::RenderGraph& g,
                                            const UploadEpipolarConstantsInputs& in);
@@ -65,17 +64,18 @@ struct RefineSamplesInputs {
 rg::ImageRef addRefineSamples(rg::RenderGraph& g, const RefineSamplesInputs& in,
                               const EpipolarSizes& s);
 
-// Each slice's line in the shadow map, origin and direction: RGBA32F, slices x 1.
+// Each slice's line in the shadow map, origin and direction: RGBA32F, slices x 1; a point light's
+// cube map: slices x 6, a row per face (zero for a face out of view, as for a slice off the map).
 struct SliceUvFrameInputs {
     ChainContext chain;
-    EpipolarContext epipolar;  // the light's (or the cube face's) constants
+    EpipolarContext epipolar;
     rg::ImageRef sliceEndPoints;
 };
 rg::ImageRef addSliceUvFrame(rg::RenderGraph& g, const SliceUvFrameInputs& in,
                              const EpipolarSizes& s);
 
 // The 1D min/max trees of light.shadowMap along each slice's line, every level in one texture:
-// RG16F, light.shadowMapSize x slices.
+// RG16F, light.shadowMapSize x slices; a point light's cube map: 6 layers, one per face.
 struct MinMaxTreesInputs {
     ChainContext chain;
     EpipolarContext epipolar;
@@ -105,25 +105,23 @@ rg::ImageRef addMarkRayMarchSamples(rg::RenderGraph& g, const MarkRayMarchInputs
 
 // Lin (or the shadowed fraction) of the ray-marching samples (options.marks in the march's
 // stencil): RGBA16F, samples x slices in the march's order. Reads the light's images; without trees
-// every sample is marched texel by texel. A point light's cube map is marched one face per pass
-// (epipolar: the face's constants): the first face's pass writes a new texture, each later one adds
-// its part of every ray to `accumulate` (and returns its new version); alpha, the sample's
-// validity, is the first face's. The refinement march (overwrite) writes its samples into
-// `accumulate`, keeping the first march's samples.
+// every sample is marched texel by texel. A point light's cube map is marched in the same pass,
+// each ray's part in each face along that face's line and trees. The refinement march writes its
+// samples into `accumulate`, keeping the first march's samples.
 struct EpipolarRayMarchInputs {
     ChainContext chain;
     EpipolarContext epipolar;
     LightImages light;
     rg::ImageRef coordinates, epipolarZ, sliceUvFrame;
-    rg::ImageRef marchStencil;  // after the marking
-    rg::ImageRef trees;         // invalid: marched without trees
-    rg::ImageRef accumulate;    // invalid: a new texture
+    rg::ImageRef sliceEndPoints;  // read with a point light's cube map only
+    rg::ImageRef marchStencil;    // after the marking
+    rg::ImageRef trees;           // invalid: marched without trees
+    rg::ImageRef accumulate;      // invalid: a new texture (the first march)
     // The step counter (step_counts.h), cleared; invalid: the plain variant, nothing counted.
     rg::BufferRef stepCounts;
 };
 struct EpipolarRayMarchOptions {
     EpipolarSizes sizes;
-    bool overwrite = false;        // with accumulate: write the marched samples instead of adding
     uint32_t marks = kFirstMarch;  // the march stencil's value it marches
 };
 struct EpipolarRayMarch {
@@ -183,10 +181,10 @@ struct FixupInputs {
 };
 CompositeOutputs addFixup(rg::RenderGraph& g, const FixupInputs& in);
 
-// The whole chain, from the engine's depth to the composited color. With
-// cubeShadow (a point light's six-layer shadow map) the samples are shared by the six faces and
-// each face adds its own line frames, trees and march (each reading its face's epipolar constants,
-// uploaded by the chain); the fix-up marches the whole cube.
+// The whole chain, from the engine's depth to the composited color. With cubeShadow (a point
+// light's six-layer shadow map) each pass that reads the map reads its six faces at once: the line
+// frames a row per face, the trees a layer per face, and the march each ray's part in each face;
+// the fix-up marches the whole cube.
 struct EpipolarInputs {
     ChainContext chain;
     LightImages light;

@@ -21,7 +21,6 @@ rg::ShaderCode rayMarchShader(const ScatterSpec& spec, bool trees, bool countSte
 EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const EpipolarRayMarchInputs& in,
                                      const EpipolarRayMarchOptions& options) {
     const EpipolarSizes& s = options.sizes;
-    const bool adds = in.accumulate.valid() && !options.overwrite;
     rg::ImageRef marched =
         in.accumulate.valid()
             ? in.accumulate
@@ -38,6 +37,8 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const EpipolarRayMarchI
         .sampled(LS_BINDING_MARCH_EPIPOLAR_Z, in.epipolarZ, sm.nearest())
         .sampled(LS_BINDING_MARCH_UV_FRAME, in.sliceUvFrame, sm.nearest())
         .sampledIfValid(LS_BINDING_MARCH_TREES, in.trees, sm.nearest());
+    if (in.chain.spec.cubeShadow)
+        table.sampled(LS_BINDING_MARCH_END_POINTS, in.sliceEndPoints, sm.nearest());
     addMarchInputs(table, in.chain.shared, in.light);
     const rg::BufferRef counts =
         table.storageBufferReadWriteIfValid(LS_BINDING_MARCH_STEP_COUNTS, in.stepCounts);
@@ -45,10 +46,8 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const EpipolarRayMarchI
     pass.countSamples();  // the samples marched (FrameReport's PassTime::samples)
     marched =
         pass.colorAttachment(marched, in.accumulate.valid() ? rg::LoadOp::Load : rg::LoadOp::Clear);
-    pass.execute([frame = in.chain, face = in.epipolar.face, table, trees, color, adds, counts,
+    pass.execute([frame = in.chain, table, trees, color, counts,
                   marks = options.marks](rg::PassContext& ctx) {
-        // A cube face out of view adds nothing (the first face's pass writes every sample's alpha).
-        if (adds && !epipolarFrameOf(ctx.data(frame.values)).inView(face)) return;
         const Shared& shared = frame.shared;
         ScatterSpec spec = frame.spec;
         spec.lightColor = color;
@@ -63,15 +62,8 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const EpipolarRayMarchI
                         0xff,
                         0,
                         marks};
-        if (adds) {
-            desc.blend = rg::BlendMode::Additive;
-            desc.colorWriteMask =
-                VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT;
-        }
         const auto& p = shared->pipelines.graphics(
-            std::string(adds ? "ray march (adding a face)" : "ray march") +
-                (counts.valid() ? ", counting" : ""),
-            desc);
+            std::string("ray march") + (counts.valid() ? ", counting" : ""), desc);
         p.bind(ctx.cmd());
         ctx.vk().CmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, marks);
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);

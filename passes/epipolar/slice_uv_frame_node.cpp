@@ -7,32 +7,31 @@
 
 namespace ls {
 
-// A point light's cube map: the build that takes the face's matrix from the frame's six.
+// A point light's cube map: the build that takes each face's matrix from the frame's six.
 rg::ShaderCode sliceUvFrameShader(bool cubeShadow) {
     return pickShader(ls_spirv::slice_uv_frame_comp_variants, {{"LS_CUBE_SHADOW", cubeShadow}});
 }
 
 rg::ImageRef addSliceUvFrame(rg::RenderGraph& g, const SliceUvFrameInputs& in,
                              const EpipolarSizes& s) {
+    const uint32_t faces = in.chain.spec.cubeShadow ? 6 : 1;
     rg::ImageRef uvFrame =
         g.createImage("slice uv origin and direction",
-                      rg::ImageDesc::absolute(VK_FORMAT_R32G32B32A32_SFLOAT, s.slices, 1));
+                      rg::ImageDesc::absolute(VK_FORMAT_R32G32B32A32_SFLOAT, s.slices, faces));
     auto pass = g.addPass("slice uv origin and direction", rg::PassType::Compute);
     rg::BindingTable table = epipolarTable(pass, in.chain, in.epipolar);
     table.sampled(LS_BINDING_UV_FRAME_END_POINTS, in.sliceEndPoints,
                   samplersOf(in.chain.shared).nearest());
     uvFrame = table.storageWrite(LS_BINDING_UV_FRAME_OUT, uvFrame);
-    pass.execute([frame = in.chain, face = in.epipolar.face, table, s](rg::PassContext& ctx) {
-        // A cube face out of view: no ray reads its lines.
-        if (!epipolarFrameOf(ctx.data(frame.values)).inView(face)) return;
+    pass.execute([frame = in.chain, table, s, faces](rg::PassContext& ctx) {
         const Shared& shared = frame.shared;
         const bool cube = frame.spec.cubeShadow;
         const auto& p = shared->pipelines.compute(
-            cube ? "slice uv origin and direction (cube face)" : "slice uv origin and direction",
+            cube ? "slice uv origin and direction (cube faces)" : "slice uv origin and direction",
             sliceUvFrameShader(cube), table.layout(), 0, {});
         p.bind(ctx.cmd());
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
-        ctx.vk().CmdDispatch(ctx.cmd(), groupCount(s.slices, 64), 1, 1);
+        ctx.vk().CmdDispatch(ctx.cmd(), groupCount(s.slices, 64), faces, 1);
     });
     return uvFrame;
 }

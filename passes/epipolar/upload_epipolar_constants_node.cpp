@@ -7,11 +7,11 @@ EpipolarContext addUploadEpipolarConstants(rg::RenderGraph& g,
     rg::BufferRef buffer = g.createBuffer("epipolar constants", {sizeof(EpipolarConstants)});
     auto pass = g.addPass("upload epipolar constants", rg::PassType::Transfer);
     buffer = pass.transferDst(buffer);
-    pass.execute([values = in.values, face = in.face, buffer](rg::PassContext& ctx) {
-        const EpipolarConstants c = epipolarFrameOf(ctx.data(values)).of(face);
+    pass.execute([values = in.values, buffer](rg::PassContext& ctx) {
+        const EpipolarConstants& c = epipolarFrameOf(ctx.data(values)).constants;
         ctx.vk().CmdUpdateBuffer(ctx.cmd(), ctx.buffer(buffer), 0, sizeof c, &c);
     });
-    return {buffer, in.face};
+    return {buffer};
 }
 
 }  // namespace ls

@@ -36,6 +36,7 @@
 #define LS_BINDING_MARCH_UV_FRAME 3
 #define LS_BINDING_MARCH_TREES 4
 #define LS_BINDING_MARCH_STEP_COUNTS 9
+#define LS_BINDING_MARCH_END_POINTS 10  // a point light's cube only
 // unwarp.frag (and the shared point table and composite target)
 #define LS_BINDING_UNWARP_END_POINTS 1
 #define LS_BINDING_UNWARP_EPIPOLAR_Z 2

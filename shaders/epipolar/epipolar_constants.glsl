@@ -11,13 +11,16 @@ layout(std140, set = 0, binding = LS_BINDING_EPIPOLAR) uniform EpipolarConstants
 #undef LS_VEC4
 } epipolar;
 
-// World -> clip of the shadow map the pass reads. With LS_CUBE_SHADOW the pass reads one face of a
-// point light's cube, as a spot light's map: the face's matrix, from the frame's six.
+// World -> clip of the shadow map the pass reads. With LS_CUBE_SHADOW a point light's cube: one
+// face read as a spot light's map, its matrix from the frame's six (`face` is ignored without).
 #if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
-mat4 shadowViewProj() { return frame.cubeFaceViewProj[int(epipolar.cubeFace.x)]; }
+mat4 shadowViewProj(int face) { return frame.cubeFaceViewProj[face]; }
 #else
-mat4 shadowViewProj() { return frame.lightViewProj; }
+mat4 shadowViewProj(int face) { return frame.lightViewProj; }
 #endif
+// Whether cube face `face` reaches the view (always, without a cube): a face that does not holds
+// no part of any of the frame's rays, and its lines and trees are not built.
+bool cubeFaceReachesView(int face) { return ((int(epipolar.cubeFaces.x) >> face) & 1) != 0; }
 
 // The march's order: the ray march renders its samples, and the stencil that marks them, into
 // textures of their own whose texels are ordered so that the samples marched together are

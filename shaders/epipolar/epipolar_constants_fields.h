@@ -9,9 +9,9 @@ LS_VEC4 sampling;  // x: slices, y: samples per slice, z: initial step, w: refin
 // in-scattering refinement threshold (0: off), w: the fix-up's max steps (0: all)
 LS_VEC4 marching;
 LS_VEC4 unwarp;  // x: bilateral threshold, yzw: -
-// x: the cube face (layer) a per-face pass marches, in Vulkan's order +X, -X, +Y, -Y, +Z, -Z, -1
-// in the light's own block; y: 1 when that face's frustum reaches the view (1 in the light's own)
-LS_VEC4 cubeFace;
+// x: the faces of a point light's cube whose frustum reaches the view, one bit per face in Vulkan's
+// order (+X bit 0, -X, +Y, -Y, +Z, -Z bit 5); 63 for a light without a cube. yzw: -
+LS_VEC4 cubeFaces;
 // The border the lines leave by, in NDC (lo.xy, hi.xy): the centres of the outer pixels of the
 // light's screen rectangle (passes/epipolar/screen_share.h), the whole screen's shrunk boundary
 // where its rays may cross every pixel

@@ -3,3 +3,4 @@
 // defining LS_INT first.
 LS_INT level;  // the level this pass builds (2 .. log2 n)
 LS_INT n;      // the line's samples: the shadow-map size
+LS_INT faces;  // a point light's cube faces in view, a bit each (EpipolarConstants::cubeFaces)

@@ -5,9 +5,10 @@
 // (uv = origin + i dir) decides the visibility of the ray over (i - 1, i], split where the ray's
 // depth passes one of its texels' (march.glsl); the ray's light-space depth is affine in i, its
 // distance is perspective-correct (1/w and d/w are affine in i).
-// With LS_CUBE_SHADOW (a point light's cube map) the pass marches one face: shadowViewProj() is
-// the face's matrix, the look-ups read its layer, and each ray keeps only the part where that face
-// is the major axis, so that the six faces' passes add up to the whole ray without overlap or gap.
+// With LS_CUBE_SHADOW (a point light's cube map) the ray is cut where the major axis of P - L
+// changes, as the fix-up's march cuts it (marchRayCube in march.glsl), and each part is marched
+// along its slice's line in its face's map (the face's row of the line frames, its layer of the
+// trees and of the map), nearest first, into one accumulator: one pass for the six faces.
 // With LS_COUNT_STEPS (DebugOptions::countSteps) each invocation adds what it did into its slice's
 // row of a storage buffer (kCount* below); without it the variant has no buffer and no atomics.
 #include "camera.glsl"
@@ -17,8 +18,15 @@
 layout(binding = LS_BINDING_MARCH_COORDINATES) uniform sampler2D coordinates;
 layout(binding = LS_BINDING_MARCH_EPIPOLAR_Z) uniform sampler2D epipolarZ;
 layout(binding = LS_BINDING_MARCH_UV_FRAME) uniform sampler2D sliceUvFrame;
-#if LS_TREES
+#if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
+layout(binding = LS_BINDING_MARCH_END_POINTS) uniform sampler2D sliceEndPoints;
+#endif
+#if LS_TREES && defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
+layout(binding = LS_BINDING_MARCH_TREES) uniform sampler2DArray trees;
+vec2 treeTexel(ivec2 p, int face) { return texelFetch(trees, ivec3(p, face), 0).xy; }
+#elif LS_TREES
 layout(binding = LS_BINDING_MARCH_TREES) uniform sampler2D trees;
+vec2 treeTexel(ivec2 p, int face) { return texelFetch(trees, p, 0).xy; }
 #endif
 #if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
 layout(binding = LS_BINDING_SHADOW_MAP) uniform sampler2DArray shadowMap;
@@ -66,10 +74,10 @@ void flushCounts(int slice) {
 
 const bool kMinMaxTrees = LS_TREES != 0;
 
-vec2 treeNode(int level, int node, int slice, int n) {
+vec2 treeNode(int level, int node, int slice, int face, int n) {
 #if LS_TREES
     ivec2 p = ivec2(treeLevelOffset(level, n) + node, slice);
-    return decodeTreeNode(texelFetch(trees, p, 0).xy);
+    return decodeTreeNode(treeTexel(p, face));
 #else
     return vec2(0.0, 1.0);
 #endif
@@ -79,6 +87,7 @@ struct LineRay {
     float ta, tb;        // the ray's segment in line samples
     FrustumSegment seg;  // ... in metres and depth (a in [0, 1] from ta to tb)
     vec2 origin, dir;    // the slice's line
+    int face;            // whose trees (a cube face's layer; 0 without a cube)
 };
 
 // Where line sample t lies on the ray's segment, held at its ends: a sample past the end (the last
@@ -121,7 +130,7 @@ void marchLine(inout Inscatter acc, LineRay r, int slice) {
         for (; level > 0; --level) {
             j = i + (1 << level) - 1;
             COUNT(++counted[kCountTreeNodes]);
-            vec2 node = treeNode(level, i >> level, slice, n);
+            vec2 node = treeNode(level, i >> level, slice, r.face, n);
             float zi = compareDepth(depthAt(r, i - 1)), zj = compareDepth(depthAt(r, j));
             if (!kLightColor && max(zi, zj) <= node.x) break;  // lit throughout
             if (min(zi, zj) > node.y) {
@@ -153,27 +162,23 @@ void marchLine(inout Inscatter acc, LineRay r, int slice) {
     }
 }
 
-vec3 marchSample(vec3 C, vec3 v, float S, int slice) {
-    float t0, t1;
-    lightInterval(C, v, S, t0, t1);
-#if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
-    clipToCubeFaceRegion(C, v, shadowFace, t0, t1);
-    // The first face's pass runs even out of view, for the alpha of every sample.
-    if (epipolar.cubeFace.y < 0.5) t1 = t0;
-#endif
-    if (!(t0 < t1)) return vec3(0.0);
-    Inscatter acc = beginInscatter(C, v, t0);
+// The ray's part [t0, t1] in the map of `face` (a cube face, or the light's one map: 0): its part
+// in the map's frustum marched along the slice's line, lit before it. The part after the frustum
+// is the caller's to advance through (lit).
+void marchInMap(inout Inscatter acc, vec3 C, vec3 v, float t0, float t1, int slice, int face) {
     float f0 = t0, f1 = t1;
-    clipToFrustum(shadowViewProj(), C, v, f0, f1);
-    vec4 frameUv = texelFetch(sliceUvFrame, ivec2(slice, 0), 0);
+    mat4 viewProj = shadowViewProj(face);
+    clipToFrustum(viewProj, C, v, f0, f1);
+    vec4 frameUv = texelFetch(sliceUvFrame, ivec2(slice, face), 0);
     if (f0 < f1 && dot(frameUv.zw, frameUv.zw) > 0.0) {
         advance(acc, f0, vec3(1.0));
-        vec4 X0 = shadowViewProj() * vec4(C + f0 * v, 1.0);
-        vec4 X1 = shadowViewProj() * vec4(C + f1 * v, 1.0);
+        vec4 X0 = viewProj * vec4(C + f0 * v, 1.0);
+        vec4 X1 = viewProj * vec4(C + f1 * v, 1.0);
         vec2 uv0 = X0.xy / X0.w * 0.5 + 0.5, uv1 = X1.xy / X1.w * 0.5 + 0.5;
         LineRay r;
         r.origin = frameUv.xy;
         r.dir = frameUv.zw;
+        r.face = face;
         float invLen2 = 1.0 / dot(r.dir, r.dir);
         r.ta = dot(uv0 - r.origin, r.dir) * invLen2;
         r.tb = dot(uv1 - r.origin, r.dir) * invLen2;
@@ -189,33 +194,67 @@ vec3 marchSample(vec3 C, vec3 v, float S, int slice) {
         if (r.tb >= r.ta && offLine * frame.shadowInfo.x <= 0.5) {
             marchLine(acc, r, slice);
         } else {
-            marchFrustumSegmentOf(shadowViewProj(), acc, C, v, f0, f1, 0u, true);
+            marchFrustumSegmentOf(viewProj, acc, C, v, f0, f1, 0u, true);
             COUNT(++counted[kCountDegenerateRays]);
             COUNT(counted[kCountDegenerateSteps] += countedLookups);
         }
     }
+}
+
+vec3 marchSample(vec3 C, vec3 v, float S, int slice) {
+    float t0, t1;
+    lightInterval(C, v, S, t0, t1);
+    if (!(t0 < t1)) return vec3(0.0);
+    Inscatter acc = beginInscatter(C, v, t0);
+#if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
+    // Each face's part of [t0, t1] (a face out of view holds none), marched nearest first.
+    float lo[6], hi[6];
+    for (int f = 0; f < 6; ++f) {
+        lo[f] = t0;
+        hi[f] = cubeFaceReachesView(f) ? t1 : t0;
+        clipToCubeFaceRegion(C, v, f, lo[f], hi[f]);
+    }
+    float done = t0;  // where the last part ended (the regions meet there, up to rounding)
+    for (int n = 0; n < 6; ++n) {
+        int next = -1;
+        for (int f = 0; f < 6; ++f)
+            if (lo[f] < hi[f] && (next < 0 || lo[f] < lo[next])) next = f;
+        if (next < 0) break;
+        float a = max(lo[next], done), b = hi[next];
+        lo[next] = hi[next];
+        if (!(a < b)) continue;
+        shadowFace = next;
+        marchInMap(acc, C, v, a, b, slice, next);
+        advance(acc, b, vec3(1.0));
+        done = b;
+    }
+#else
+    marchInMap(acc, C, v, t0, t1, slice, 0);
+#endif
     advance(acc, t1, vec3(1.0));
     return finishInscatter(acc, v);
 }
 
 void main() {
-#if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
-    shadowFace = int(epipolar.cubeFace.x);
-#endif
     // The fragment is the sample's texel in the march's order (marchTexel); p is the sample.
     ivec2 p = sampleOfMarchTexel(ivec2(gl_FragCoord.xy));
     vec2 ndc = texelFetch(coordinates, p, 0).xy * 2.0 - 1.0;
+#if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
+    // Back onto the slice's line, off which the coordinates' rounding put it (RG16: 1.5e-5 of the
+    // screen). A ray a few pixels from a point light passes millimetres from it, where such an
+    // offset turns it by a hundredth of a radian: texels off the face's line, which would leave it
+    // to be marched texel by texel across the whole face.
+    vec4 ends = texelFetch(sliceEndPoints, ivec2(p.y, 0), 0);
+    vec2 line = ends.zw - ends.xy;
+    ndc = ends.xy + dot(ndc - ends.xy, line) / max(dot(line, line), 1e-20) * line;
+#endif
     float z = texelFetch(epipolarZ, p, 0).r;
     vec3 v = rayDirection(ndc);
     vec3 C = frame.cameraPos.xyz;
     float S = rayLength(z, v);
     vec3 lin = marchSample(C, v, S, p.y);
 #if defined(LS_COUNT_STEPS) && LS_COUNT_STEPS
-#if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
-    if (shadowFace == 0) ++counted[kCountSamples];
-#else
     ++counted[kCountSamples];
-#endif
     flushCounts(p.y);
 #endif
     float defined = 1.0;

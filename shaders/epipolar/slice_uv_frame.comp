@@ -7,7 +7,8 @@
 // projected direction is Xv.xy Xc.w - Xc.xy Xv.w at every d, the same up to a positive factor for
 // every ray of the slice. The origin is where that line enters the [0,1]^2 square; the direction is
 // scaled to one texel per step along its major axis. (0,0,0,0) marks a slice that misses the map.
-// With LS_CUBE_SHADOW the map is one face of a point light's cube (shadowViewProj()).
+// With LS_CUBE_SHADOW the maps are the six faces of a point light's cube, each a spot light's map:
+// one row per face (gl_GlobalInvocationID.y), a face out of view left without lines.
 #include "epipolar_geometry.glsl"
 #include "camera.glsl"
 #include "epipolar_bindings.h"
@@ -17,16 +18,17 @@ layout(binding = LS_BINDING_UV_FRAME_OUT, rgba32f) uniform writeonly image2D sli
 
 void main() {
     int slice = int(gl_GlobalInvocationID.x);
+    int face = int(gl_GlobalInvocationID.y);
     if (slice >= int(epipolar.sampling.x)) return;
     vec4 ends = texelFetch(sliceEndPoints, ivec2(slice, 0), 0);
-    if (ends.x <= INVALID_SLICE + 1.0) {
-        imageStore(sliceUvFrame, ivec2(slice, 0), vec4(0.0));
+    if (ends.x <= INVALID_SLICE + 1.0 || !cubeFaceReachesView(face)) {
+        imageStore(sliceUvFrame, ivec2(slice, face), vec4(0.0));
         return;
     }
     vec3 C = frame.cameraPos.xyz;
     vec3 v = rayDirection(ends.zw);
-    vec4 Xc = shadowViewProj() * vec4(C, 1.0);
-    vec4 Xv = shadowViewProj() * vec4(v, 0.0);
+    vec4 Xc = shadowViewProj(face) * vec4(C, 1.0);
+    vec4 Xv = shadowViewProj(face) * vec4(v, 0.0);
     vec2 dir = Xv.xy * Xc.w - Xc.xy * Xv.w;  // clip xy; uv = xy / 2 + 1/2 keeps its sign
     float size = frame.shadowInfo.x;
     if (dot(dir, dir) < 1e-24) dir = vec2(1.0, 0.0);  // the slice projects to a point
@@ -39,8 +41,8 @@ void main() {
     float tNear = max(min(ta.x, tb.x), min(ta.y, tb.y));
     float tFar = min(max(ta.x, tb.x), max(ta.y, tb.y));
     if (tNear > tFar) {
-        imageStore(sliceUvFrame, ivec2(slice, 0), vec4(0.0));
+        imageStore(sliceUvFrame, ivec2(slice, face), vec4(0.0));
         return;
     }
-    imageStore(sliceUvFrame, ivec2(slice, 0), vec4(p0 + tNear * dir, dir));
+    imageStore(sliceUvFrame, ivec2(slice, face), vec4(p0 + tNear * dir, dir));
 }
