@@ -283,12 +283,11 @@ rg::ImageRef addFroxelInjection(rg::RenderGraph& graph, const FroxelInjectInputs
         p.push(ctx.cmd(), push);
         const uint32_t w = first ? grid.columns : x1 - x0, h = first ? grid.rows : y1 - y0;
         // The closed form marches each column in one invocation (8 x 8 columns a group); the
-        // point samples take a froxel each (4 x 4 x 4).
+        // point samples take a froxel each (32 x 4 of one slice, as the temporal blend).
         if (slab)
             ctx.vk().CmdDispatch(ctx.cmd(), groupCount(w, 8), groupCount(h, 8), 1);
         else
-            ctx.vk().CmdDispatch(ctx.cmd(), groupCount(w, 4), groupCount(h, 4),
-                                 groupCount(grid.slices, 4));
+            ctx.vk().CmdDispatch(ctx.cmd(), groupCount(w, 32), groupCount(h, 4), grid.slices);
     });
     return scattering;
 }
@@ -329,8 +328,8 @@ rg::ImageRef addFroxelTemporalBlend(rg::RenderGraph& graph, const FroxelTemporal
         p.bind(ctx.cmd());
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         p.push(ctx.cmd(), push);
-        ctx.vk().CmdDispatch(ctx.cmd(), groupCount(grid.columns, 4), groupCount(grid.rows, 4),
-                             groupCount(grid.slices, 4));
+        ctx.vk().CmdDispatch(ctx.cmd(), groupCount(grid.columns, 32), groupCount(grid.rows, 4),
+                             grid.slices);
     });
     return blended;
 }

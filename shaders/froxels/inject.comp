@@ -23,7 +23,7 @@
 #if LS_SLAB
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;  // one invocation per column
 #else
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;  // one per froxel
+layout(local_size_x = 32, local_size_y = 4, local_size_z = 1) in;  // one per froxel, 32 x 4
 #endif
 #if LS_SHADOW_MAP
 #if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
