@@ -429,8 +429,8 @@ rg::ImageRef addFroxelExport(rg::RenderGraph& graph, const FroxelExportInputs& i
         p.bind(ctx.cmd());
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         p.push(ctx.cmd(), push);
-        ctx.vk().CmdDispatch(ctx.cmd(), groupCount(grid.columns, 4), groupCount(grid.rows, 4),
-                             groupCount(grid.slices, 4));
+        ctx.vk().CmdDispatch(ctx.cmd(), groupCount(grid.columns, 32), groupCount(grid.rows, 4),
+                             grid.slices);
     });
     return written;
 }

@@ -7,7 +7,7 @@
 // end.
 #include "froxel_grid.glsl"
 #include "froxel_bindings.h"
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+layout(local_size_x = 32, local_size_y = 4, local_size_z = 1) in;  // as the temporal blend
 layout(binding = LS_BINDING_FROXEL_INTEGRATED, rgba16f) uniform readonly image3D integrated;
 layout(binding = LS_BINDING_FROXEL_VOLUME_OUT, rgba16f) uniform writeonly image3D volumeOut;
 
