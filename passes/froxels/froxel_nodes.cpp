@@ -19,6 +19,12 @@
 namespace ls {
 namespace {
 
+// The passes that take one froxel per invocation (the point-sampled injection, the temporal blend,
+// the volume export) run groups of 32 x 4 froxels of one slice, their shaders' local size.
+void dispatchPerFroxel(rg::PassContext& ctx, uint32_t columns, uint32_t rows, uint32_t slices) {
+    ctx.vk().CmdDispatch(ctx.cmd(), groupCount(columns, 32), groupCount(rows, 4), slices);
+}
+
 // The froxel passes' push block (its fields written once, in froxel_push_fields.h).
 struct FroxelPush {
 #define LS_VEC4 glm::vec4
@@ -287,7 +293,7 @@ rg::ImageRef addFroxelInjection(rg::RenderGraph& graph, const FroxelInjectInputs
         if (slab)
             ctx.vk().CmdDispatch(ctx.cmd(), groupCount(w, 8), groupCount(h, 8), 1);
         else
-            ctx.vk().CmdDispatch(ctx.cmd(), groupCount(w, 32), groupCount(h, 4), grid.slices);
+            dispatchPerFroxel(ctx, w, h, grid.slices);
     });
     return scattering;
 }
@@ -328,8 +334,7 @@ rg::ImageRef addFroxelTemporalBlend(rg::RenderGraph& graph, const FroxelTemporal
         p.bind(ctx.cmd());
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         p.push(ctx.cmd(), push);
-        ctx.vk().CmdDispatch(ctx.cmd(), groupCount(grid.columns, 32), groupCount(grid.rows, 4),
-                             grid.slices);
+        dispatchPerFroxel(ctx, grid.columns, grid.rows, grid.slices);
     });
     return blended;
 }
@@ -429,8 +434,7 @@ rg::ImageRef addFroxelExport(rg::RenderGraph& graph, const FroxelExportInputs& i
         p.bind(ctx.cmd());
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         p.push(ctx.cmd(), push);
-        ctx.vk().CmdDispatch(ctx.cmd(), groupCount(grid.columns, 32), groupCount(grid.rows, 4),
-                             grid.slices);
+        dispatchPerFroxel(ctx, grid.columns, grid.rows, grid.slices);
     });
     return written;
 }

@@ -181,9 +181,9 @@ void marchLine(inout Inscatter acc, LineRay r, int slice) {
 }
 
 #if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
-// The ray's part [t0, t1] in cube face `face`'s map: its part
-// in the map's frustum marched along the slice's line, lit before it. The part after the frustum
-// is the caller's to advance through (lit).
+// The ray's part [t0, t1] in cube face `face`'s map: its part in the face's frustum marched along
+// the slice's line, lit before it. The part after the frustum is the caller's to advance through
+// (lit).
 void marchInMap(inout Inscatter acc, vec3 C, vec3 v, float t0, float t1, int slice, int face) {
     float f0 = t0, f1 = t1;
     mat4 viewProj = shadowViewProj(face);
