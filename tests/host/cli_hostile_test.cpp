@@ -52,7 +52,7 @@ std::vector<std::pair<std::string, std::string>> with(
     return a;
 }
 
-const char* kXvfb = "xvfb-run -a -s '-screen 0 640x480x24'";
+const std::string kXvfb = cli_test::xvfb();
 // A disk that fills after 1 KiB (dash counts ulimit -f in 512-byte blocks); SIGXFSZ ignored, so the
 // write fails with EFBIG rather than the signal ending the program.
 const char* kFullDisk = "trap '' XFSZ; ulimit -f 2;";
@@ -856,7 +856,7 @@ std::vector<Row> rows() {
          "view {scene:atrium} --size 160x90 --frames 1 --screenshot o.png",
          1,
          "--screenshot o.png: cannot write the PNG: File too large",
-         std::string(kXvfb) + " sh -c \"" + kFullDisk + " exec \\\"\\$0\\\" \\\"\\$@\\\"\"",
+         kXvfb + " sh -c \"" + kFullDisk + " exec \\\"\\$0\\\" \\\"\\$@\\\"\"",
          true,
          {"o.png"}},
         {"BenchReferenceOnAFullDisk",

@@ -35,6 +35,10 @@ Result run(const std::string& arguments, const std::string& prefix) {
     return r;
 }
 
+std::string xvfb(const std::string& screen) {
+    return "xvfb-run -a -f .xvfb-authority -s '-screen 0 " + screen + "'";
+}
+
 std::string scene(const std::string& name) {
     return std::string(LS_SOURCE_DIR) + "/scenes/" + name + ".json";
 }

@@ -21,5 +21,10 @@ void writeFile(const std::string& name, const std::string& text);  // in scratch
 void expectFailure(const Result& r, const std::string& fragment);
 // No "*.partial" temporary anywhere in scratch().
 void expectNoTemporaries();
+// The prefix that runs the command under a virtual X server of `screen` (WxHxDepth). Its X
+// authority file is `.xvfb-authority` in the folder the command runs in: xvfb-run's own temporary
+// folder for it was, once in a CI run, not removed at exit, and xvfb-run then failed (exit 5) a
+// command that had succeeded.
+std::string xvfb(const std::string& screen = "640x480x24");
 
 }  // namespace cli_test

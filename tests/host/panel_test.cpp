@@ -25,8 +25,6 @@ namespace {
 
 using nlohmann::json;
 
-const char* kXvfb = "xvfb-run -a -s '-screen 0 640x480x24'";
-
 // A value of every field, none its default, each valid for auto on engine_spot (a shadowed spot):
 // the noise sends auto to planes, the simplified model to beam-tree-analytic, no shadow sampling
 // to cone-march.
@@ -127,7 +125,7 @@ TEST(Panel, SetsEverySettingAndTheNextReportShowsIt) {
                                      " --size 64x36 --frames " + std::to_string(fields.size() + 1) +
                                      " --panel-script script.json --report-log log.json"
                                      " --validation",
-                                 kXvfb);
+                                 cli_test::xvfb());
     ASSERT_EQ(r.exitCode, 0) << r.out;
     const json log = readLog("log.json");
     std::map<long, json> byStep = reportsByStep(log);
@@ -163,7 +161,7 @@ TEST(Panel, ARefusedEditIsShownUndoneAndTheWindowRunsOn) {
     const auto r = cli_test::run("view " + cli_test::scene("engine_spot") +
                                      " --size 64x36 --frames 3 --panel-script script.json"
                                      " --report-log log.json --validation",
-                                 kXvfb);
+                                 cli_test::xvfb());
     ASSERT_EQ(r.exitCode, 0) << r.out;
     const json log = readLog("log.json");
     bool seen = false;
@@ -195,7 +193,7 @@ TEST(Panel, EditsTheMediaLiveAndARefusedOneIsUndone) {
     const auto r = cli_test::run("view " + cli_test::scene("engine_spot") +
                                      " --size 64x36 --frames 6 --panel-script script.json"
                                      " --report-log log.json --validation",
-                                 kXvfb);
+                                 cli_test::xvfb());
     ASSERT_EQ(r.exitCode, 0) << r.out;
     const json log = readLog("log.json");
     std::map<long, json> byStep = reportsByStep(log);
@@ -229,7 +227,7 @@ TEST(Panel, SaveSettingsWritesAFileTheCommandLineReadsBack) {
     const auto r = cli_test::run("view " + cli_test::scene("engine_spot") +
                                      " --size 64x36 --frames 1 --panel-script script.json"
                                      " --screenshot panel.png --validation",
-                                 kXvfb);
+                                 cli_test::xvfb());
     ASSERT_EQ(r.exitCode, 0) << r.out;
     std::ifstream in(cli_test::path("saved.json"));
     const json saved = json::parse(in);
@@ -262,7 +260,7 @@ double panelShare(const std::string& size, const std::string& name) {
                                          " --frames 4 --profile low-high-performance --method "
                                          "epipolar --screenshot " +
                                          file + panel,
-                                     "xvfb-run -a -s '-screen 0 1280x1024x24'");
+                                     cli_test::xvfb("1280x1024x24"));
         EXPECT_EQ(r.exitCode, 0) << r.out;
         int w = 0, h = 0, n = 0;
         unsigned char* px = stbi_load(cli_test::path(file).c_str(), &w, &h, &n, 4);

@@ -18,7 +18,7 @@ TEST(Window, OpensRendersResizesAndShowsTheScene) {
     const auto r = cli_test::run("view " + cli_test::scene("atrium") +
                                      " --size 160x90 --frames 8 --resize-at 3 --resize-to 200x120"
                                      " --screenshot window.png --no-panel --validation",
-                                 "xvfb-run -a -s '-screen 0 640x480x24'");
+                                 cli_test::xvfb());
     ASSERT_EQ(r.exitCode, 0) << r.out;
     const std::string shot = (std::filesystem::path(cli_test::scratch()) / "window.png").string();
     int w = 0, h = 0, n = 0;
@@ -60,7 +60,7 @@ TEST(Window, VeryBrightPixelsStayWhite) {
     const auto r = cli_test::run(
         "view bright.json --size 64x36 --frames 2 --screenshot bright.png"
         " --no-panel --validation",
-        "xvfb-run -a -s '-screen 0 640x480x24'");
+        cli_test::xvfb());
     ASSERT_EQ(r.exitCode, 0) << r.out;
     int w = 0, h = 0, n = 0;
     unsigned char* px = stbi_load((dir / "bright.png").string().c_str(), &w, &h, &n, 4);
@@ -82,7 +82,7 @@ TEST(Window, PlanesWithScrollingNoise) {
     const auto r = cli_test::run("view " + cli_test::scene("window_room") +
                                      " --method planes --settings noise.json --size 64x36"
                                      " --frames 3 --screenshot noise.png --validation",
-                                 "xvfb-run -a -s '-screen 0 640x480x24'");
+                                 cli_test::xvfb());
     ASSERT_EQ(r.exitCode, 0) << r.out;
     int w = 0, h = 0, n = 0;
     unsigned char* px = stbi_load((dir / "noise.png").string().c_str(), &w, &h, &n, 4);

@@ -178,7 +178,9 @@ if(NOT XVFB_RUN)
 endif()
 file(WRITE ${run}/script.json
      [=[[{"method": "null", "profile": "custom", "settings": {"null.value": 0.75}}]]=])
-must(${XVFB_RUN} -a -s "-screen 0 640x480x24" ${cli} view ${scenes}/point_fog.json --size 64x36
+# The X authority file in the run's folder, not in xvfb-run's temporary folder (see
+# tests/host/cli_runner.h).
+must(${XVFB_RUN} -a -f ${run}/.xvfb-authority -s "-screen 0 640x480x24" ${cli} view ${scenes}/point_fog.json --size 64x36
      --frames 3 --panel-script script.json --report-log log.json --validation)
 file(READ ${run}/log.json log)
 string(JSON last LENGTH "${log}")
