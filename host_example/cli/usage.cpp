@@ -31,10 +31,14 @@ constexpr const char* kCommonOptions =
 std::string methodsAndProfiles() {
     std::vector<std::string> words{"methods:", "auto (default),"};
     for (const lightscatter::MethodInfo& m : lightscatter::methodInfo()) {
-        std::string presets;
-        for (const lightscatter::MethodPreset& p : m.presets)
-            presets += (presets.empty() ? " (or its presets: " : ", ") + p.name;
-        words.push_back(m.name + presets + (presets.empty() ? "," : "),"));
+        if (m.presets.empty()) {
+            words.push_back(m.name + ",");
+            continue;
+        }
+        // A word per preset, so that the list wraps.
+        words.push_back(m.name + " (or its presets:");
+        for (size_t i = 0; i < m.presets.size(); ++i)
+            words.push_back(m.presets[i].name + (i + 1 < m.presets.size() ? "," : "),"));
     }
     words.push_back("(planes' former name slices is still read); profiles:");
     const std::vector<std::string> profiles = lightscatter::profileNames();

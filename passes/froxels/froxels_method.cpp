@@ -29,26 +29,37 @@ MethodCaps FroxelsMethod::caps() const {
 }
 
 // The grids engines ship: Unity HDRP's (the screen / 8 on x and y, 64 slices; the default) and
-// Unreal's volumetric fog (the screen / 16, 64 slices), each also in the temporal mode.
+// Unreal's volumetric fog (the screen / 16, 64 slices), each also in the temporal mode and in the
+// temporal mode with still frames refined per pixel (`-pixels`: two screen-sized float32 images
+// more, so a name of its own rather than the temporal presets' default).
 std::vector<lightscatter::MethodPreset> FroxelsMethod::presets() const {
     struct Grid {
         const char* name;
         const char* engine;
         uint32_t tile, slices;
     };
+    struct Mode {
+        const char* suffix;
+        const char* description;
+        bool temporal, pixelHistory;
+    };
     std::vector<lightscatter::MethodPreset> out;
     for (const Grid& g : {Grid{"froxels-hdrp", "Unity HDRP", 8, 64},
                           Grid{"froxels-unreal", "Unreal's volumetric fog", 16, 64}})
-        for (const bool temporal : {false, true})
-            out.push_back({std::string(g.name) + (temporal ? "-temporal" : ""),
+        for (const Mode& m :
+             {Mode{"", "", false, false},
+              Mode{"-temporal", ", blended with the frame before's", true, false},
+              Mode{"-pixels", ", blended with the frame before's, still frames refined per pixel",
+                   true, true}})
+            out.push_back({std::string(g.name) + m.suffix,
                            std::string(g.engine) + "'s grid, " + std::to_string(g.tile) + "x" +
                                std::to_string(g.tile) + "-pixel columns and " +
-                               std::to_string(g.slices) + " slices" +
-                               (temporal ? ", blended with the frame before's" : ""),
-                           [g, temporal](lightscatter::Settings& s) {
+                               std::to_string(g.slices) + " slices" + m.description,
+                           [g, m](lightscatter::Settings& s) {
                                s.froxels.tile = g.tile;
                                s.froxels.slices = g.slices;
-                               s.froxels.temporal = temporal;
+                               s.froxels.temporal = m.temporal;
+                               s.froxels.pixelHistory = m.pixelHistory;
                            }});
     return out;
 }

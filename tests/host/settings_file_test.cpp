@@ -110,7 +110,6 @@ TEST_F(HostSettingsFile, EveryFieldByName) {
     EXPECT_FLOAT_EQ(f.froxels.historyWeight, 0.8f);
 }
 
-// The froxel presets by name: the grid's sizes, and "-temporal" for the temporal mode.
 // The viewer's "save settings": every field written, and read back to the same settings; a field
 // of Settings the list leaves out would keep its default on the way back and fail here.
 TEST_F(HostSettingsFile, AWrittenFileReadsBackToTheSameSettings) {
@@ -134,6 +133,8 @@ TEST_F(HostSettingsFile, AWrittenFileReadsBackToTheSameSettings) {
         << "floats are written as their shortest decimal";
 }
 
+// The froxel presets by name: the grid's sizes, "-temporal" for the temporal mode and "-pixels" for
+// it with still frames refined per pixel; each preset sets both modes' switches.
 TEST_F(HostSettingsFile, FroxelPresetsSetTheGrid) {
     lightscatter::Settings s;
     s.froxels.temporal = true;
@@ -145,8 +146,18 @@ TEST_F(HostSettingsFile, FroxelPresetsSetTheGrid) {
               lightscatter::Method::Froxels);
     EXPECT_EQ(s.froxels.tile, 8u);
     EXPECT_TRUE(s.froxels.temporal);
+    EXPECT_FALSE(s.froxels.pixelHistory);
+    ASSERT_EQ(lightscatter::applyMethodPreset("froxels-unreal-pixels", s),
+              lightscatter::Method::Froxels);
+    EXPECT_EQ(s.froxels.tile, 16u);
+    EXPECT_TRUE(s.froxels.temporal);
+    EXPECT_TRUE(s.froxels.pixelHistory);
+    ASSERT_EQ(lightscatter::applyMethodPreset("froxels-hdrp-temporal", s),
+              lightscatter::Method::Froxels);
+    EXPECT_FALSE(s.froxels.pixelHistory);
     const lightscatter::Settings before = s;
-    for (const char* name : {"froxels", "froxels-", "-temporal", "froxels-hdrp-temporal-temporal"})
+    for (const char* name :
+         {"froxels", "froxels-", "-temporal", "froxels-hdrp-temporal-temporal", "froxels-pixels"})
         EXPECT_FALSE(lightscatter::applyMethodPreset(name, s)) << name;
     EXPECT_EQ(s.froxels.tile, before.froxels.tile);
     EXPECT_EQ(s.froxels.temporal, before.froxels.temporal);
