@@ -10,6 +10,7 @@ from datetime import date
 from pathlib import Path
 
 from .common import fmt, load_note
+from .runs import commit_note
 
 FAMILIES_HEADING = "## Froxels against epipolar: the two families"
 
@@ -92,7 +93,7 @@ def families_section(bench_dir, image_dir=None):
       "(the plugin's GPU time, median of its frames) against its mean relative error to the float64 "
       "reference. Each family's curve is its Pareto front, read between its points on log-log axes.\n")
     note = load_note(bench_dir)
-    p(f"Measured on {date.today().isoformat()} with `./build/host_example/lightscatter bench --config "
+    p(f"Measured on {date.today().isoformat()}{commit_note()} with `./build/host_example/lightscatter bench --config "
       f"bench/froxels_families.json --out build/bench-froxels-families` (`scripts/make-report.sh "
       f"--families-only` runs it, plots it and splices this section) at {w}x{h}, on **{runs[0]['device']}** "
       f"(lavapipe CPU timings: only ratios within this run carry over)." + (f" {note}" if note else "") + "\n")

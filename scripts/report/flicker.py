@@ -12,6 +12,7 @@ from datetime import date
 from pathlib import Path
 
 from .common import FORMER_SWEEPS, fmt
+from .runs import commit_note
 
 FLICKER_HEADING = "## Temporal stability"
 
@@ -156,7 +157,7 @@ def flicker_section(bench_dir, image_dir=None):
     p("Flicker is a method's image changing from one frame to the next by more than the scene does. "
       f"`bench/flicker.json` renders {m['frames']} frames while the light moves slowly, then {m['frames']} "
       "while the camera does, and judges every frame against the float64 reference at the same pose. "
-      f"Measured on {date.today().isoformat()} with `./build/host_example/lightscatter bench --config "
+      f"Measured on {date.today().isoformat()}{commit_note()} with `./build/host_example/lightscatter bench --config "
       "bench/flicker.json --out build/bench-flicker` (`scripts/make-report.sh --flicker-only` runs it and "
       f"splices this section into the page) at {w}x{h} on **{r0['device']}** ({kind}; flicker and error "
       "do not depend on the device's speed, so these figures need no quiet machine).\n")

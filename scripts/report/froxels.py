@@ -8,7 +8,7 @@ from datetime import date
 from pathlib import Path
 
 from .common import fmt, load_note
-from .runs import code_commit
+from .runs import commit_note
 
 FROXELS_HEADING = "## Against froxel fog"
 
@@ -52,9 +52,7 @@ def froxels_section(bench_dir, scaling_dir=None):
     r0 = runs[0]
     w, h = r0["size"]
     kind = "lavapipe CPU timings: compare ratios, not milliseconds" if r0["cpuDevice"] else "GPU timestamps"
-    commit = code_commit()
-    at = f" (code at commit {commit})" if commit else ""
-    p(f"Measured on {date.today().isoformat()}{at} with `./build/host_example/lightscatter bench --config "
+    p(f"Measured on {date.today().isoformat()}{commit_note()} with `./build/host_example/lightscatter bench --config "
       f"bench/froxels.json`, at {w}x{h}, the median of {r0['frames']} frames after warm-up (the temporal mode "
       f"after the same frames, the scene still), on **{r0['device']}** ({kind}); memory is the plugin's peak "
       f"with aliasing at this size (`lightscatter budget`, estimated without a device; the temporal mode's two "

@@ -7,6 +7,7 @@ from datetime import date
 from pathlib import Path
 
 from .common import fmt
+from .runs import commit_note
 
 FROXELS_MOTION_HEADING = "## Froxels under motion"
 
@@ -58,7 +59,7 @@ def froxels_motion_section(bench_dir):
       f"camera cut (`resetHistory`) and {warmup} still warm-up frames, so that the temporal mode's history is "
       "settled before the frames are judged" + (": the still pass (`\"still\"` in the configuration's "
       "motions) then judges what it settles on" if "still" in motions else "") + ".\n")
-    p(f"Measured on {date.today().isoformat()} with `./build/host_example/lightscatter bench --config "
+    p(f"Measured on {date.today().isoformat()}{commit_note()} with `./build/host_example/lightscatter bench --config "
       f"bench/froxels_flicker.json --out build/bench-froxels-flicker` (`scripts/make-report.sh "
       f"--froxels-motion-only` runs it and splices this section) at {w}x{h}, {frames} frames per pass, on "
       f"**{r0['device']}** (flicker and error do not depend on the device's speed). At this size "

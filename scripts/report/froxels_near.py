@@ -6,6 +6,7 @@ from datetime import date
 from pathlib import Path
 
 from .common import fmt
+from .runs import commit_note
 
 FROXELS_NEAR_HEADING = "## Froxels near the light"
 
@@ -31,7 +32,7 @@ def froxels_near_section(bench_dir):
       "Mean relative error against the float64 reference, one frame per configuration, `froxels-hdrp` "
       "(8-pixel columns, 64 slices) and `froxels-unreal` (16-pixel columns) beside epipolar balanced and "
       "brute force on the same frame.\n")
-    p(f"Measured on {date.today().isoformat()} with `./build/host_example/lightscatter bench --config "
+    p(f"Measured on {date.today().isoformat()}{commit_note()} with `./build/host_example/lightscatter bench --config "
       f"bench/froxels_near_light.json --out build/bench-froxels-near` (`scripts/make-report.sh "
       f"--froxels-near-only` runs it and splices this section) at {w}x{h}, on **{runs[0]['device']}** "
       "(errors do not depend on the device's speed; the grid's cost is in "

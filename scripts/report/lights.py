@@ -5,6 +5,7 @@ from datetime import date
 from pathlib import Path
 
 from .common import fmt, load_note
+from .runs import commit_note
 
 LIGHTS_HEADING = "## Several lights"
 
@@ -35,7 +36,7 @@ def lights_section(scaling_dir, rows_dir):
         w, h = r0["size"]
         kind = "lavapipe CPU timings" if r0["cpuDevice"] else "GPU timestamps"
         p(f"Time and error at {w}x{h} (`./build/host_example/lightscatter bench --config bench/lights.json --out "
-          f"build/bench-lights`, measured on {date.today().isoformat()}, the median of {r0['frames']} frames after "
+          f"build/bench-lights`, measured on {date.today().isoformat()}{commit_note()}, the median of {r0['frames']} frames after "
           f"warm-up, on **{r0['device']}**, {kind}): `atrium_lights`, the atrium under its sun and two shadowed "
           f"spots, and `point_cage`, one point light with a cube shadow map in a cage of bars.\n")
         p("| scene | lights | configuration | ran | median ms (p10-p90) | mean rel. error | p99 | over 5% | PSNR dB "
@@ -64,7 +65,7 @@ def lights_section(scaling_dir, rows_dir):
         p(f"The atrium under N = 1, 2, 4, 8 and 16 shadowed spots and nothing else (`scenes/atrium_spots_N`, "
           f"`tools/make_scenes/make_lights_scenes.py`; every spot's cone reaches the court in view, so every light costs its "
           f"chain), at {w}x{h}, balanced settings, the median of {r0['frames']} frames after warm-up, on "
-          f"**{r0['device']}** ({kind}). Measured on {date.today().isoformat()} with `./build/host_example/lightscatter "
+          f"**{r0['device']}** ({kind}). Measured on {date.today().isoformat()}{commit_note()} with `./build/host_example/lightscatter "
           f"bench --config bench/lights_scaling.json --out build/bench-lights-scaling`; no error is measured "
           f"(`measureError: false`: a float64 reference at this size takes too long). The plugin's passes only: "
           f"the engine's shadow maps and shading per light are not included.\n")

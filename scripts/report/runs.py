@@ -30,6 +30,13 @@ def code_commit():
         return None
 
 
+def commit_note():
+    """" (code at commit X)" for a section's "Measured on DATE" sentence, which the index reads; "" outside a
+    git checkout."""
+    commit = code_commit()
+    return f" (code at commit {commit})" if commit else ""
+
+
 def _found(pattern, text):
     m = pattern.search(text)
     return m.group(1) if m else None
