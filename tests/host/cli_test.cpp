@@ -348,6 +348,19 @@ TEST(Cli, BudgetOfFroxelsFollowsThePreset) {
     for (const char* line : {"froxel history", "froxel history (next)", "120 x 68    x 64",
                              "(kept across frames)", "froxels.slices 64", "froxels.temporal true"})
         EXPECT_NE(t.out.find(line), std::string::npos) << line << "\n" << t.out;
+    EXPECT_EQ(t.out.find("froxel pixel history"), std::string::npos) << t.out;
+    // ... and with "-pixels", two screen-sized float32 images more: its still frames per pixel.
+    const auto px =
+        run("budget --method froxels-unreal-pixels --profile balanced --size 1920x1080");
+    ASSERT_EQ(px.exitCode, 0) << px.out;
+    for (const char* line :
+         {"froxel history (next)", "froxels.temporal true", "froxels.pixelHistory true"})
+        EXPECT_NE(px.out.find(line), std::string::npos) << line << "\n" << px.out;
+    const size_t at = px.out.find("froxel pixel history (next)");
+    ASSERT_NE(at, std::string::npos) << px.out;
+    const std::string image = px.out.substr(at, px.out.find('\n', at) - at);
+    EXPECT_NE(image.find("R32G32B32A32_SFLOAT"), std::string::npos) << image;
+    EXPECT_NE(image.find("1920 x 1080"), std::string::npos) << image;
     expectFailure(run("budget --method froxels --lights sun,spot:epipolar"),
                   "froxels takes every light of the frame into one grid");
 }
