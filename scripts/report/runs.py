@@ -31,8 +31,8 @@ def code_commit():
 
 
 def commit_note():
-    """" (code at commit X)" for a section's "Measured on DATE" sentence, which the index reads; "" outside a
-    git checkout."""
+    """What follows the date in a section's "Measured on DATE" sentence, ` (code at commit X)`, which the
+    index reads back; empty outside a git checkout."""
     commit = code_commit()
     return f" (code at commit {commit})" if commit else ""
 
