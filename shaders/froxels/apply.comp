@@ -17,7 +17,8 @@
 // fetch of the grid the temporal blend keeps. In a frame where something moved the grid stays put
 // (its own blend follows the motion), and each pixel adds to this frame's trilinear fetch a fading
 // share of the detail its surface had where the frame before saw it, so that the image does not
-// jump from the gathered one to the grid's when a motion starts.
+// jump from the gathered one to the grid's when a motion starts; after the first such frame the
+// detail fades only as far as the fetch's own change hides (followFetch).
 #define LS_FROXEL_APPLY 1
 #include "froxel_grid.glsl"
 #include "composite_into.glsl"
@@ -53,6 +54,27 @@ vec4 gridAt(sampler3D grid, vec3 xyw, float u, float first) {
     if (u < 1.0) g = mix(vec4(0.0, 0.0, 0.0, 1.0), g, first);
     return g;
 }
+
+#if LS_FROXEL_PIXEL_HISTORY
+float meanOf(vec3 c) { return dot(c, vec3(1.0 / 3.0)); }
+
+// A moving frame's detail: `faded` (what kPixelFade and the surface's motion leave of `detail`),
+// limited so that what the pixel shows moves no further than its fetch moved since the frame
+// before (`fetchBefore`, its mean over the channels there; each channel's change taken in
+// proportion to it), less kDetailDrift of the detail a frame: the detail fades where the grid's
+// own change hides it, and only that slowly elsewhere. The fade alone moves the image where the
+// reference does not move: under a moving light on bench/froxels_flicker.json it flickered more
+// than the plain grid in 3 of 8 cases (the atrium's sun at Unreal's size 1.72x), with this limit
+// in none (docs/methods.md, "Still frames refined per pixel").
+const float kDetailDrift = 0.005;
+vec3 followFetch(vec3 detail, vec3 faded, vec3 fetch, float fetchBefore) {
+    float m = meanOf(fetch);
+    vec3 moved = (m - fetchBefore) * (m > 0.0 ? fetch / m : vec3(1.0));
+    vec3 drift = kDetailDrift * abs(detail);
+    return detail + clamp(faded - detail, min(vec3(0.0), -2.0 * moved) - drift,
+                          max(vec3(0.0), -2.0 * moved) + drift);
+}
+#endif
 
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
@@ -95,6 +117,8 @@ void main() {
         float weight = exp(-0.5 * dot(d, d));
         vec4 h = imageLoad(pixels, p);
         h.rgb = clamp(h.rgb + base, lo - pad, hi + pad);
+        // A pixel the frame before left moving holds its fetch there, not a weight (below).
+        if (h.a <= 0.0) h.a = pc.history.w;
         float carried = max(h.a + weight, 1e-6);
         vec3 gathered = (h.rgb * h.a + nearLin * weight) / carried;
         imageStore(pixelsOut, p, vec4(gathered - base, min(carried, pc.history.y)));
@@ -103,7 +127,8 @@ void main() {
         // A frame that moved: the detail the pixel's surface had where the frame before saw it
         // (bilinear), a share of it added to this frame's fetch and clamped to this frame's range,
         // so that what was gathered while still fades out over frames instead of dropping at the
-        // first that moves.
+        // first that moves. The pixel leaves its fetch's mean (<= 0, as -mean) where a still
+        // frame leaves its weight (> 0).
         vec3 v = pixelRayDirection(p);
         vec4 X = pc.previousFromCamera * vec4(v * rayLength(z, v), 1.0);
         vec2 q = ndcToPixel(X.xy / max(X.w, 1e-30)) - 0.5;
@@ -113,17 +138,23 @@ void main() {
             ivec2 q0 = ivec2(floor(q));
             ivec2 q1 = min(q0 + 1, ivec2(frame.screenSize.xy) - 1);
             vec2 f = q - vec2(q0);
-            vec4 a = mix(imageLoad(pixels, q0), imageLoad(pixels, ivec2(q1.x, q0.y)), f.x);
-            vec4 b = mix(imageLoad(pixels, ivec2(q0.x, q1.y)), imageLoad(pixels, q1), f.x);
-            vec4 r = mix(a, b, f.y);
+            vec4 t00 = imageLoad(pixels, q0), t10 = imageLoad(pixels, ivec2(q1.x, q0.y));
+            vec4 t01 = imageLoad(pixels, ivec2(q0.x, q1.y)), t11 = imageLoad(pixels, q1);
+            vec4 r4 = mix(mix(t00, t10, f.x), mix(t01, t11, f.x), f.y);
+            vec3 r = r4.rgb;
+            // Where the frame before moved too, its fetch (alpha <= 0) at the surface's point;
+            // never a blend of a fetch and a weight.
+            bool heldFetch = max(max(t00.a, t10.a), max(t01.a, t11.a)) <= 0.0;
             // The detail corrects the grid's fetch where its columns were, and the columns stay
             // on the screen while the surface moves: the further it moved, the less of the detail
             // still fits (a quarter of a froxel: 1 / e). On bench/froxels_flicker.json's camera
             // motion a half or a whole froxel left point_fog's glow flickering; ten steps at once
             // carried whole (no such fade) measured 1.44x the plain grid's error.
             float keep = pc.history.y * exp(-length(q - vec2(p)) / (0.25 * pc.grid.w));
-            h.rgb = clamp(lin + keep * r.rgb, lo - pad, hi + pad) - lin;
-            h.a = mix(pc.history.w, r.a, keep);
+            vec3 detail = keep * r;
+            if (heldFetch) detail = followFetch(r, detail, lin, -r4.a);
+            h.rgb = clamp(lin + detail, lo - pad, hi + pad) - lin;
+            h.a = -meanOf(lin);
         }
         imageStore(pixelsOut, p, h);
         lin += h.rgb;

@@ -8,7 +8,8 @@ LS_VEC4 shift;   // as froxel_push_fields.h
 // gives its nearest column by its distance to it, y the most weight the history carries. z: 0 in
 // a frame that moved: y is the share of its detail a pixel keeps, carried from where the frame
 // before saw its surface (0: each pixel starts again from this frame's trilinear fetch). w: the
-// weight a fetch carries.
+// weight a fetch carries; in a still frame, the weight of a pixel that a moving frame left (it
+// holds that frame's fetch, apply.comp's followFetch, not a weight).
 LS_VEC4 history;
 // Offsets from this frame's camera -> the frame before's clip (where a pixel's surface was).
 LS_MAT4 previousFromCamera;

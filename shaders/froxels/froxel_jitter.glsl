@@ -29,8 +29,10 @@ vec3 froxelJitter(ivec3 f) {
 }
 
 // Where along its lit part a slab's slice takes the shadow and cookie: anywhere in it over the
-// frames, since the slice's integral is whole and only the shadow is a point sample.
-float froxelSlabPoint(ivec3 f) { return froxelNoiseAt(f).z; }
+// frames, since the slice's integral is whole and only the shadow is a point sample; its middle,
+// as the plain grid's, where the points spread over nothing (pc.jitter.w 0: the per-pixel
+// history's frames in which only a light moved).
+float froxelSlabPoint(ivec3 f) { return pc.jitter.w > 0.0 ? froxelNoiseAt(f).z : 0.5; }
 #else
 vec3 froxelJitter(ivec3 f) { return pc.jitter.xyz; }
 float froxelSlabPoint(ivec3 f) { return 0.5; }

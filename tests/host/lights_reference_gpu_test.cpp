@@ -563,8 +563,10 @@ TEST_F(LightsReferenceGpu, FroxelVolumeFogsATransparentQuadAsTheModelDoes) {
 
 // The per-pixel history's still frames sample offset columns, which the apply gathers; the grid
 // the volume exports stays the temporal blend's, at the columns' own places, as the last frame that
-// moved left it. After 16 still frames, 8-pixel columns, the quad as above, measured on lavapipe:
-// Lin 0.1093 off with the temporal mode alone, 0.1105 with the per-pixel history; the still
+// moved left it (after a cut, the first frame's, whose froxels take their centres). After 16 still
+// frames, 8-pixel columns, the quad as above, measured on lavapipe: Lin 0.1093 off with the
+// temporal mode alone, 0.1093 with the per-pixel history (0.1105 with the first frame jittered
+// as the temporal mode's); the still
 // frame's offset columns read at the unshifted places (the volume before it stayed the blend's)
 // were 0.256 off.
 TEST_F(LightsReferenceGpu, FroxelVolumeStaysTheTemporalBlendUnderThePerPixelHistory) {
