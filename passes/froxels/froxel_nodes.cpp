@@ -120,8 +120,9 @@ constexpr float kPixelFade = 0.97f;
 // A moving frame leaves in each pixel its fetch (apply.comp's followFetch limits the next frame's
 // detail by how far the fetch moved) instead of the weight the gathering carries: when the frames
 // are still again, such a pixel's value carries this weight, about thirty still frames' gathering
-// (the old weight, which a motion faded towards kPixelSeed, is gone by then). A weight of 1 jumped
-// twice as far at the first still frame, one of 16 took far longer to settle (docs/methods.md).
+// (the old weight, which a motion faded towards kPixelSeed, is gone by then). A weight of 1 moved
+// the image two to three times as far at the first still frame, one of 16 took far longer to
+// settle (docs/methods.md).
 constexpr float kPixelResume = 4.0f;
 
 // Whether, in a frame of the per-pixel history, the froxels take their centres, as the plain
