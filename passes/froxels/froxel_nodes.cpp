@@ -425,7 +425,9 @@ CompositeOutputs addFroxelApply(rg::RenderGraph& graph, const FroxelApplyInputs&
                 const bool carried = ctx.history(clock.pixels).valid &&
                                      before.lightJump <= kLightJump &&
                                      before.constants.screenSize == c.screenSize;
-                push.history = {0.0f, carried ? kPixelFade : 0.0f, 0.0f, kPixelSeed};
+                const bool cameraMoved = before.constants.viewProj != c.viewProj;
+                push.history = {cameraMoved ? kPixelWidth : 0.0f, carried ? kPixelFade : 0.0f, 0.0f,
+                                kPixelSeed};
                 push.previousFromCamera = previousFromCamera(before.constants.viewProj, c);
             }
         }

@@ -264,31 +264,50 @@ TEST_F(FroxelTemporalGpu, TheFirstFrameThatMovesKeepsTheGatheredImage) {
 
 namespace {
 
-// The atrium's sun turning as bench/flicker.json turns it (0.1 degree a frame, the camera still),
-// `frames` frames after 16 still ones, at Unreal's 16-pixel columns: the excess flicker (what the
-// image changes by beyond the reference's change, FlickerMeter) and the mean error of the moving
-// frames, for the plain grid or the temporal mode with the per-pixel history.
-std::pair<double, double> underTurningSun(rg::Device& device, bool pixels, int frames) {
-    const host::SceneDesc start = shippedScene("atrium");
+// `scene`'s light or camera moving as bench/flicker.json moves them, `frames` frames after 16 still
+// ones, with the froxels' `tile`: the excess flicker (what the image changes by beyond the
+// reference's change, FlickerMeter) from frame `firstPair` of the motion on (0: the last still
+// frame, so the first pair is the motion's start), and the mean error of the moving frames, for
+// the plain grid or the temporal mode with the per-pixel history.
+std::pair<double, double> underMotion(rg::Device& device, const std::string& scene,
+                                      host::bench::MotionKind kind, uint32_t tile, bool pixels,
+                                      int frames, int firstPair) {
+    const host::SceneDesc start = shippedScene(scene);
     const host::MeshData mesh = host::loadSceneMeshes(start);
     host::EngineRenderer renderer(device, start, mesh, kSize);
     const host::bench::Motion motion;
-    host::RenderOptions o = froxels(16, pixels, pixels);
+    host::RenderOptions o = froxels(tile, pixels, pixels);
     o.resetHistory = true;
     host::bench::FlickerMeter meter;
     double error = 0;
     for (int frame = 0; frame < 16 + frames; ++frame) {
-        renderer.scene().light = host::bench::poseAt(start, host::bench::MotionKind::Light, motion,
-                                                     std::max(frame - 15, 0))
-                                     .light;
+        const host::SceneDesc pose =
+            host::bench::poseAt(start, kind, motion, std::max(frame - 15, 0));
+        renderer.scene().light = pose.light;
+        renderer.scene().camera = pose.camera;
         const std::vector<float> lin = renderer.render(o).inscatter;
         o.resetHistory = false;
-        if (frame < 15) continue;  // the last still frame is the first of the pairs
+        if (frame < 15 + firstPair) continue;
         const std::vector<double> ref = reference(renderer.scene(), mesh);
         meter.add(lin, ref);
         if (frame > 15) error += meanRelative(lin, ref) / frames;
     }
     return {meter.result().meanExcess, error};
+}
+
+// The per-pixel history's excess flicker and error under that motion, each over the plain grid's.
+std::pair<double, double> againstPlainGrid(rg::Device& device, const std::string& scene,
+                                           host::bench::MotionKind kind, uint32_t tile, int frames,
+                                           int firstPair) {
+    const auto [plainFlicker, plainError] =
+        underMotion(device, scene, kind, tile, false, frames, firstPair);
+    const auto [flicker, error] = underMotion(device, scene, kind, tile, true, frames, firstPair);
+    std::printf(
+        "%s, %s moving %d frames, %u-pixel columns: plain flicker %.5f error %.4f, per pixel "
+        "flicker %.5f (%.3fx) error %.4f (%.3fx)\n",
+        scene.c_str(), host::bench::motionName(kind), frames, tile, plainFlicker, plainError,
+        flicker, flicker / plainFlicker, error, error / plainError);
+    return {flicker / plainFlicker, error / plainError};
 }
 
 }  // namespace
@@ -300,14 +319,21 @@ std::pair<double, double> underTurningSun(rg::Device& device, bool pixels, int f
 // atrium's turning sun: excess flicker 1.09x the plain grid's and error 0.61x; the jittered,
 // blended grid with the detail fading 3% a frame (the mode before) 2.00x and 0.72x, and fails.
 TEST_F(FroxelTemporalGpu, UnderAMovingLightThePixelsMoveAsThePlainGrid) {
-    const int frames = 24;
-    const auto [plainFlicker, plainError] = underTurningSun(dev(), false, frames);
-    const auto [flicker, error] = underTurningSun(dev(), true, frames);
-    std::printf(
-        "atrium, sun turning %d frames, 16-pixel columns: plain flicker %.5f error %.4f, per pixel "
-        "flicker %.5f (%.3fx) error %.4f (%.3fx)\n",
-        frames, plainFlicker, plainError, flicker, flicker / plainFlicker, error,
-        error / plainError);
-    EXPECT_LT(flicker, 1.2 * plainFlicker);
-    EXPECT_LT(error, 0.9 * plainError);
+    const auto [flicker, error] =
+        againstPlainGrid(dev(), "atrium", host::bench::MotionKind::Light, 16, 24, 0);
+    EXPECT_LT(flicker, 1.2);
+    EXPECT_LT(error, 0.9);
+}
+
+// While the camera moves, each pixel also gathers this frame's nearest column into what it showed
+// (apply.comp, kMovingMemory), so the detail follows the scene sliding under the columns instead of
+// going stale. point_fog's glow at HDRP's 8-pixel columns, bench/flicker.json's camera motion, its
+// 60 frames' 59 pairs as the bench judges them: excess flicker 1.01x the plain grid's and error
+// 0.95x. With the detail carried and faded within the limit alone (the mode before), 1.09x: it
+// fails.
+TEST_F(FroxelTemporalGpu, UnderAMovingCameraThePixelsGatherAndFlickerAsThePlainGrid) {
+    const auto [flicker, error] =
+        againstPlainGrid(dev(), "point_fog", host::bench::MotionKind::Camera, 8, 60, 1);
+    EXPECT_LT(flicker, 1.04);
+    EXPECT_LT(error, 1.0);
 }
