@@ -33,11 +33,14 @@ struct FroxelsSettings {
     // before refine the image finer than a froxel, as TAA upsampling does. The whole grid's columns
     // step across a froxel from frame to frame (a low-discrepancy sequence), and each pixel
     // gathers the Lin of the column nearest it, weighed by its distance to that column's ray. A
-    // frame that moved keeps the temporal mode as above, and each pixel adds to it a fading share
-    // of the detail it gathered (carried from where the frame before saw its surface, less the
-    // further it moved), so that the image does not jump to the grid's when a motion starts. The
-    // grid (the history the next moving frame blends with, and FrameDescription::volumeOut's) stays
-    // as the last frame that moved left it. What it gains, measured: docs/methods.md, "Still frames
+    // frame in which the camera moved keeps the temporal mode as above; one in which only a light
+    // changed takes each froxel at its centre, as the plain grid. Each pixel adds to the grid's
+    // fetch the detail it gathered (carried from where the frame before saw its surface, less the
+    // further it moved), fading only as far as the fetch's own change hides, and while the camera
+    // moves it keeps gathering this frame's nearest column: the image neither jumps to the grid's
+    // when a motion starts nor flickers more than the plain grid while it lasts. The grid (the
+    // history the next moving frame blends with, and FrameDescription::volumeOut's) stays as the
+    // last frame that moved left it. What it gains, measured: docs/methods.md, "Still frames
     // refined per pixel".
     // Costs two screen-sized float32 RGBA images (the plugin's memory), a second integration of
     // the grid in a still frame, and the apply's five more fetches a pixel there (eight in a frame
