@@ -61,8 +61,9 @@ float meanOf(vec3 c) { return dot(c, vec3(1.0 / 3.0)); }
 // A moving frame's detail: `faded` (what kPixelFade and the surface's motion leave of `detail`),
 // limited so that what the pixel shows moves no further than its fetch moved since the frame
 // before (`fetchBefore`, its mean over the channels there; each channel's change taken in
-// proportion to it), less kDetailDrift of the detail a frame: the detail fades where the grid's
-// own change hides it, and only that slowly elsewhere. The fade alone moves the image where the
+// proportion to it), less `driftShare` of the detail a frame (kDetailDrift; kMovingDetailDrift
+// where the camera moved): the detail fades where the grid's own change hides it, and only that
+// slowly elsewhere. The fade alone moves the image where the
 // reference does not move: under a moving light on bench/froxels_flicker.json it flickered more
 // than the plain grid in 3 of 8 cases (the atrium's sun at Unreal's size 1.72x), with this limit
 // in none (docs/methods.md, "Still frames refined per pixel").
