@@ -63,17 +63,17 @@ float meanOf(vec3 c) { return dot(c, vec3(1.0 / 3.0)); }
 // before (`fetchBefore`, its mean over the channels there; each channel's change taken in
 // proportion to it), less `driftShare` of the detail a frame (kDetailDrift; kMovingDetailDrift
 // where the camera moved): the detail fades where the grid's own change hides it, and only that
-// slowly elsewhere. The fade alone moves the image where the
-// reference does not move: under a moving light on bench/froxels_flicker.json it flickered more
-// than the plain grid in 3 of 8 cases (the atrium's sun at Unreal's size 1.72x), with this limit
-// in none (docs/methods.md, "Still frames refined per pixel").
+// slowly elsewhere. The fade alone moves the image where the reference does not move: under a
+// moving light on bench/froxels_flicker.json it flickered more than the plain grid in 3 of 8 cases
+// (the atrium's sun at Unreal's size 1.72x), with this limit in none (docs/methods.md, "Still
+// frames refined per pixel").
 const float kDetailDrift = 0.005;
 // Where the camera moved, the detail held goes stale as the scene slides under the columns: each
 // pixel also gathers this frame's nearest column (weighed as a still frame weighs it) into what it
 // showed, at a weight of kMovingMemory against the column's, and its detail drifts faster. On
 // bench/froxels_flicker.json's camera motion point_fog's glow flickered 1.08x the plain grid's
-// without them, 1.01x with them (a memory of 1, 4 or 8: 1.04x to 1.07x; a drift of 0.5% or 1%:
-// 1.03x to 1.05x; docs/methods.md).
+// without them, 1.01x with them (a memory of 0.5, 1 or 4: 1.04x to 1.05x; gathered after the
+// limit instead of before it: 1.07x; a drift of 0 or 1%: 1.03x to 1.05x; docs/methods.md).
 const float kMovingMemory = 2.0;
 const float kMovingDetailDrift = 0.02;
 vec3 followFetch(vec3 detail, vec3 faded, vec3 fetch, float fetchBefore, float driftShare) {
