@@ -264,33 +264,51 @@ TEST_F(FroxelTemporalGpu, TheFirstFrameThatMovesKeepsTheGatheredImage) {
 
 namespace {
 
-// `scene`'s light or camera moving as bench/flicker.json moves them, `frames` frames after 16 still
-// ones, with the froxels' `tile`: the excess flicker (what the image changes by beyond the
-// reference's change, FlickerMeter) from frame `firstPair` of the motion on (0: the last still
-// frame, so the first pair is the motion's start), and the mean error of the moving frames, for
-// the plain grid or the temporal mode with the per-pixel history.
-std::pair<double, double> underMotion(rg::Device& device, const std::string& scene,
-                                      host::bench::MotionKind kind, uint32_t tile, bool pixels,
-                                      int frames, int firstPair) {
-    const host::SceneDesc start = shippedScene(scene);
-    const host::MeshData mesh = host::loadSceneMeshes(start);
-    host::EngineRenderer renderer(device, start, mesh, kSize);
-    const host::bench::Motion motion;
+// A scene under one of bench/flicker.json's motions, `frames` frames after 16 still ones: its
+// pose in each frame, and the float64 reference of each frame judged, from frame `firstPair` of
+// the motion on (0: the last still frame, so the first pair is the motion's start). The
+// references serve every configuration rendered along it.
+struct MotionRun {
+    host::SceneDesc start;
+    host::MeshData mesh;
+    host::bench::MotionKind kind;
+    int frames, firstPair;
+    std::vector<std::vector<double>> refs;
+
+    MotionRun(const std::string& scene, host::bench::MotionKind k, int n, int first)
+        : start(shippedScene(scene)),
+          mesh(host::loadSceneMeshes(start)),
+          kind(k),
+          frames(n),
+          firstPair(first) {
+        for (int frame = 15 + firstPair; frame < 16 + frames; ++frame)
+            refs.push_back(reference(pose(frame), mesh));
+    }
+    [[nodiscard]] host::SceneDesc pose(int frame) const {
+        return host::bench::poseAt(start, kind, host::bench::Motion{}, std::max(frame - 15, 0));
+    }
+};
+
+// Along `run`, with the froxels' `tile`: the excess flicker (what the image changes by beyond the
+// reference's change, FlickerMeter) over its judged frames, and the mean error of the moving
+// frames, for the plain grid or the temporal mode with the per-pixel history.
+std::pair<double, double> underMotion(rg::Device& device, const MotionRun& run, uint32_t tile,
+                                      bool pixels) {
+    host::EngineRenderer renderer(device, run.start, run.mesh, kSize);
     host::RenderOptions o = froxels(tile, pixels, pixels);
     o.resetHistory = true;
     host::bench::FlickerMeter meter;
     double error = 0;
-    for (int frame = 0; frame < 16 + frames; ++frame) {
-        const host::SceneDesc pose =
-            host::bench::poseAt(start, kind, motion, std::max(frame - 15, 0));
+    for (int frame = 0; frame < 16 + run.frames; ++frame) {
+        const host::SceneDesc pose = run.pose(frame);
         renderer.scene().light = pose.light;
         renderer.scene().camera = pose.camera;
         const std::vector<float> lin = renderer.render(o).inscatter;
         o.resetHistory = false;
-        if (frame < 15 + firstPair) continue;
-        const std::vector<double> ref = reference(renderer.scene(), mesh);
+        if (frame < 15 + run.firstPair) continue;
+        const std::vector<double>& ref = run.refs[size_t(frame - 15 - run.firstPair)];
         meter.add(lin, ref);
-        if (frame > 15) error += meanRelative(lin, ref) / frames;
+        if (frame > 15) error += meanRelative(lin, ref) / run.frames;
     }
     return {meter.result().meanExcess, error};
 }
@@ -299,9 +317,9 @@ std::pair<double, double> underMotion(rg::Device& device, const std::string& sce
 std::pair<double, double> againstPlainGrid(rg::Device& device, const std::string& scene,
                                            host::bench::MotionKind kind, uint32_t tile, int frames,
                                            int firstPair) {
-    const auto [plainFlicker, plainError] =
-        underMotion(device, scene, kind, tile, false, frames, firstPair);
-    const auto [flicker, error] = underMotion(device, scene, kind, tile, true, frames, firstPair);
+    const MotionRun run(scene, kind, frames, firstPair);
+    const auto [plainFlicker, plainError] = underMotion(device, run, tile, false);
+    const auto [flicker, error] = underMotion(device, run, tile, true);
     std::printf(
         "%s, %s moving %d frames, %u-pixel columns: plain flicker %.5f error %.4f, per pixel "
         "flicker %.5f (%.3fx) error %.4f (%.3fx)\n",
