@@ -28,6 +28,7 @@ EpipolarConstants makeEpipolarConstants(const lightscatter::EpipolarSettings& s,
     const uint32_t phases = marchPhases(s);
     c.march = {static_cast<float>(phases), static_cast<float>(marchBlocksPerRow(phases)), 0.0f,
                0.0f};
+    c.window = {0.0f, static_cast<float>(s.slices), 0.0f, 0.0f};  // every slice of the border
     return c;
 }
 
@@ -53,9 +54,9 @@ const EpipolarFrame& epipolarFrameOf(const LightFrame& frame) {
 }
 
 rg::BindingTable epipolarTable(rg::PassBuilder& pass, const ChainContext& chain,
-                               const EpipolarContext& epipolar) {
-    rg::BindingTable table = frameTable(pass, chain.constants);
-    table.uniform(LS_BINDING_EPIPOLAR, epipolar.constants);
+                               const EpipolarContext& epipolar, VkPipelineStageFlags2 stages) {
+    rg::BindingTable table = frameTable(pass, chain.constants, stages);
+    table.uniform(LS_BINDING_EPIPOLAR, epipolar.constants, stages);
     return table;
 }
 

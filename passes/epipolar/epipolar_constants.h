@@ -23,7 +23,7 @@ struct EpipolarConstants {
 #undef LS_VEC4
 };
 // Only vec4 members, as frame_constants.h's: std140 packs them as C++ does.
-static_assert(sizeof(EpipolarConstants) == 6 * 16, "std140 layout of epipolar_constants.glsl");
+static_assert(sizeof(EpipolarConstants) == 7 * 16, "std140 layout of epipolar_constants.glsl");
 
 // The phases of the march's order (marchTexel in shaders/epipolar/epipolar_constants.glsl): the
 // initial step where the samples per line are a multiple of it (the slices are of 4); 1 (each
@@ -69,9 +69,11 @@ inline constexpr uint32_t kAllCubeFaces = 63;
 // into view rebuilds nothing.
 struct EpipolarFrame final : LightData {
     EpipolarConstants constants;
-    LineSizes sizes;  // the light's slices and samples per slice (screen_share.h)
-    LineSizes full;   // the settings' (the whole screen's)
-    VkRect2D rect{};  // the light's screen rectangle
+    LineSizes sizes;      // the light's slices and samples per slice (screen_share.h)
+    LineSizes rectSizes;  // its rectangle's (sizes.slices: the window's of these)
+    LineWindow window;    // the slices of the rectangle's border its lines take
+    LineSizes full;       // the settings' (the whole screen's)
+    VkRect2D rect{};      // the light's screen rectangle
     std::array<bool, 6> faceInView{};
     bool inView(int face) const { return faceInView[face]; }
     uint32_t facesInView() const;  // a bit per face, as EpipolarConstants::cubeFaces.x
@@ -85,7 +87,11 @@ struct EpipolarContext {
 
 // A binding table whose first rows are the frame constants and epipolar's (LS_BINDING_FRAME,
 // LS_BINDING_EPIPOLAR).
+// stages: those that read them (0: the pass's shader; a graphics pass's fragment shader).
 rg::BindingTable epipolarTable(rg::PassBuilder& pass, const ChainContext& chain,
-                               const EpipolarContext& epipolar);
+                               const EpipolarContext& epipolar, VkPipelineStageFlags2 stages = 0);
+// A later light's unwarp and fix-up read both in their wedge's vertex shader too.
+inline constexpr VkPipelineStageFlags2 kWedgeStages =
+    VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
 
 }  // namespace ls

@@ -4,6 +4,7 @@
 #include "epipolar_nodes.h"
 #include "lightscatter/lightscatter.h"
 #include "min_max_trees.h"
+#include "screen_share.h"
 #include "shared/chain_inputs.h"
 #include "shared/refusals.h"
 #include "shared/scattering_params.h"
@@ -91,17 +92,29 @@ std::unique_ptr<LightData> EpipolarMethod::makeData() const {
     return std::make_unique<EpipolarFrame>();
 }
 
-std::vector<CpuWork> EpipolarMethod::prepare(LightData* data, LightFrame&,
+std::vector<CpuWork> EpipolarMethod::prepare(LightData* data, LightFrame& frame,
                                              const LightSetup& light) const {
     EpipolarFrame& e = *static_cast<EpipolarFrame*>(data);
-    const LineSizes before = e.sizes;
-    e.sizes = sizesForRect(light.settings.epipolar, light.screen, light.screenRect,
-                           before.slices != 0 ? &before : nullptr);
+    const LineSizes before = e.rectSizes;
+    e.rectSizes = sizesForRect(light.settings.epipolar, light.screen, light.screenRect,
+                               before.slices != 0 ? &before : nullptr);
+    const glm::vec4 bounds = lineBounds(light.screen, light.screenRect);
+    const LineWindow windowBefore = e.window;
+    e.window = wholeBorder(e.rectSizes.slices);
+    if (light.light.kind == LightType::Spot && frame.constants.lightScreen.z > 0.0f) {
+        if (const auto corners = lightScreenCorners(light.camera, light.light, light.medium, true))
+            e.window =
+                coneWindow(*corners, glm::vec2(frame.constants.lightScreen), bounds,
+                           e.rectSizes.slices, windowBefore.border != 0 ? &windowBefore : nullptr);
+    }
+    e.sizes = {e.window.slices, e.rectSizes.samples};
     e.full = {light.settings.epipolar.slices, light.settings.epipolar.samplesPerSlice};
     e.rect = light.screenRect;
-    e.constants = makeEpipolarConstants(
-        sized(light.settings.epipolar, e.sizes), light.light.shadowMapSize, interpolatesLin(light),
-        refinesByDefault(light), lineBounds(light.screen, light.screenRect));
+    e.constants =
+        makeEpipolarConstants(sized(light.settings.epipolar, e.sizes), light.light.shadowMapSize,
+                              interpolatesLin(light), refinesByDefault(light), bounds);
+    e.constants.window = {static_cast<float>(e.window.first), static_cast<float>(e.window.border),
+                          e.window.part() ? 1.0f : 0.0f, 0.0f};
     if (!cubeShadowed(light)) return {};
     for (int face = 0; face < 6; ++face)
         e.faceInView[face] = cubeFaceTouchesView(light.camera, light.light, light.medium, face);
@@ -164,11 +177,16 @@ std::string EpipolarMethod::frameNote(const LightFrame& frame, const ChainConfig
     if (!frame.data || !c.shadowed) return {};
     const EpipolarFrame& e = epipolarFrameOf(frame);
     std::string lines;
-    if (e.sizes != e.full)
+    if (e.rectSizes != e.full)
         lines = "lines within its " + std::to_string(e.rect.extent.width) + "x" +
                 std::to_string(e.rect.extent.height) +
-                " screen rectangle: " + std::to_string(e.sizes.slices) + " slices of " +
-                std::to_string(e.sizes.samples) + " samples";
+                " screen rectangle: " + std::to_string(e.rectSizes.slices) + " slices of " +
+                std::to_string(e.rectSizes.samples) + " samples";
+    if (e.window.part())
+        lines += std::string(lines.empty() ? "lines" : ", and") +
+                 " within its cone's wedge: " + std::to_string(e.window.slices) +
+                 " of the border's " + std::to_string(e.window.border) + " slices, from slice " +
+                 std::to_string(e.window.first);
     if (c.light != LightType::Point) return lines;
     std::string list;
     for (int f = 0; f < 6; ++f)

@@ -50,7 +50,7 @@ EpipolarOutputs addEpipolarNodes(rg::RenderGraph& g, const EpipolarInputs& in,
         g, {chain, epipolar, in.light, endPoints, samples.epipolarZ, interpolated, in.target},
         {options.fixup});
     if (!options.fixup) return {screen.composited, counts};
-    return {addFixup(g, {chain, in.light, screen.cameraStencil,
+    return {addFixup(g, {chain, epipolar, in.light, screen.cameraStencil,
                          targetAfter(screen.composited, in.target.addOnly)}),
             counts};
 }

@@ -175,6 +175,7 @@ UnwarpOutputs addUnwarp(rg::RenderGraph& g, const UnwarpInputs& in, const Unwarp
 // (the unwarp's new versions); returns the target's new versions. Reads the light's images.
 struct FixupInputs {
     ChainContext chain;
+    EpipolarContext epipolar;  // a later light's wedge (the unwarp's)
     LightImages light;
     rg::ImageRef cameraStencil;
     CompositeTarget target;

@@ -14,5 +14,9 @@ rg::ShaderCode rayMarchShader(const ScatterSpec& spec, bool trees, bool countSte
 rg::ShaderCode unwarpShader(bool table, const CompositeVariant& target);
 rg::ShaderCode minMaxFirstLevelShader(bool cubeShadow);
 rg::ShaderCode sliceUvFrameShader(bool cubeShadow);
+// What a frame's later light's unwarp and fix-up draw (shaders/epipolar/window_wedge.vert):
+// kWedgeVertices vertices, the wedge of a windowed light's lines or the whole viewport.
+rg::ShaderCode windowWedgeShader();
+inline constexpr uint32_t kWedgeVertices = 15;
 
 }  // namespace ls

@@ -1,4 +1,6 @@
 #include "epipolar_nodes.h"
+#include "epipolar_shaders.h"
+#include "shaders/epipolar/epipolar_bindings.h"
 #include "shared/pass_helpers.h"
 #include "shared/pixel_march.h"
 
@@ -8,10 +10,13 @@ namespace ls {
 // own, without trees, and composited into the engine's color like the unwarp's.
 CompositeOutputs addFixup(rg::RenderGraph& g, const FixupInputs& in) {
     auto pass = g.addPass("fix-up ray march", rg::PassType::Graphics);
-    rg::BindingTable table = declarePixelMarch(pass, in.chain, in.light);
+    const bool addOnly = in.target.addOnly;
+    rg::BindingTable table =
+        declarePixelMarch(pass, in.chain, in.light, addOnly ? kWedgeStages : 0);
+    // A later light draws the unwarp's wedge (its vertex shader reads the lines' window).
+    if (addOnly) table.uniform(LS_BINDING_EPIPOLAR, in.epipolar.constants, kWedgeStages);
     pass.stencilTest(in.cameraStencil);
     const CompositeOutputs written = addCompositeTarget(table, in.target);
-    const bool addOnly = in.target.addOnly;
     pass.execute([frame = in.chain, table, written, addOnly](rg::PassContext& ctx) {
         // A later light's unwarp kept to its screen rectangle: outside it nothing is added.
         if (addOnly && !scissorToLight(ctx, frame.values)) return;
@@ -23,7 +28,9 @@ CompositeOutputs addFixup(rg::RenderGraph& g, const FixupInputs& in) {
                         .maxSteps = maxSteps,
                         .whereStencilIsZero = true,
                         .composite = &written,
-                        .addOnly = addOnly});
+                        .addOnly = addOnly,
+                        .vertex = addOnly ? windowWedgeShader() : rg::ShaderCode{},
+                        .vertices = addOnly ? kWedgeVertices : 3});
     });
     return written;
 }

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <vector>
 
 #include "epipolar_constants.h"
 
@@ -51,7 +53,82 @@ VkRect2D atLeastTwoPixels(VkExtent2D screen, VkRect2D rect) {
     return rect;
 }
 
+// The border slice coordinate (shaders/epipolar/epipolar_geometry.glsl's sliceOfExitPoint) of the
+// point where the line from `o` along `d` leaves the border; `o` inside it.
+double borderSliceOf(glm::dvec2 o, glm::dvec2 d, glm::dvec4 bounds, uint32_t border) {
+    const glm::dvec2 lo(bounds.x, bounds.y), hi(bounds.z, bounds.w);
+    auto exitAlong = [](double from, double along, double low, double high) {
+        if (std::fabs(along) < 1e-300) return 1e300;
+        return along > 0.0 ? (high - from) / along : (low - from) / along;
+    };
+    const double tx = exitAlong(o.x, d.x, lo.x, hi.x), ty = exitAlong(o.y, d.y, lo.y, hi.y);
+    const int edge = tx < ty ? (d.x > 0.0 ? 1 : 3) : (d.y > 0.0 ? 2 : 0);
+    const glm::dvec2 e = o + std::min(tx, ty) * d;
+    double f = 0.0;
+    if (edge == 0) f = (e.x - lo.x) / (hi.x - lo.x);
+    if (edge == 1) f = (e.y - lo.y) / (hi.y - lo.y);
+    if (edge == 2) f = (hi.x - e.x) / (hi.x - lo.x);
+    if (edge == 3) f = (hi.y - e.y) / (hi.y - lo.y);
+    return (edge + std::clamp(f, 0.0, 1.0)) / 4.0 * border - 0.5;
+}
+
 }  // namespace
+
+LineWindow coneWindow(std::span<const glm::vec2> corners, glm::vec2 light, glm::vec4 bounds,
+                      uint32_t border, const LineWindow* before) {
+    const LineWindow whole = wholeBorder(border);
+    const glm::dvec2 o(light);
+    if (corners.size() < 2 ||
+        !(o.x > bounds.x && o.x < bounds.z && o.y > bounds.y && o.y < bounds.w))
+        return whole;
+    // The directions from the light to the corners but the apex, by angle.
+    constexpr double kTurn = 2.0 * std::numbers::pi;
+    std::vector<std::pair<double, glm::dvec2>> around;
+    for (size_t i = 1; i < corners.size(); ++i) {
+        const glm::dvec2 d = glm::dvec2(corners[i]) - o;
+        if (!(glm::length(d) > 1e-6)) return whole;
+        around.emplace_back(std::atan2(d.y, d.x), d);
+    }
+    std::sort(around.begin(), around.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    // The widest gap between neighbours: the cone's projection holds the light's point (its
+    // apex), so it lies within a half-turn from it exactly when the corners leave a gap wider
+    // than a half-turn (with a margin for rounding); the window runs from after it to before it.
+    size_t after = 0;
+    double gap = 0.0;
+    for (size_t i = 0; i < around.size(); ++i) {
+        const size_t next = (i + 1) % around.size();
+        double g = around[next].first - around[i].first;
+        if (next == 0) g += kTurn;
+        if (g > gap) {
+            gap = g;
+            after = next;
+        }
+    }
+    if (!(gap > std::numbers::pi + 1e-3)) return whole;
+    const glm::dvec2 startDir = around[after].second;
+    const glm::dvec2 endDir = around[(after + around.size() - 1) % around.size()].second;
+    const glm::dvec4 b(bounds);
+    // A pixel between border slices g and g + 1 reads both; two more each side for rounding.
+    constexpr int64_t kMargin = 2;
+    const auto n = static_cast<int64_t>(border);
+    const int64_t first =
+        static_cast<int64_t>(std::floor(borderSliceOf(o, startDir, b, border))) - kMargin;
+    const int64_t last =
+        static_cast<int64_t>(std::floor(borderSliceOf(o, endDir, b, border))) + 1 + kMargin;
+    const int64_t needed = ((last - first) % n + n) % n + 1;
+    if (needed >= n) return whole;
+    uint32_t kept = 0;
+    if (before != nullptr && before->border == border) kept = halvingsOf(border, before->slices);
+    const uint32_t k =
+        keptHalvings(border, 4, static_cast<double>(needed) / static_cast<double>(n),
+                     before != nullptr && before->border == border ? &kept : nullptr);
+    if (k == 0) return whole;
+    const uint32_t slices = border >> k;
+    // Centred: the slices beyond the needed ones, half on each side.
+    const int64_t start = first - (static_cast<int64_t>(slices) - needed) / 2;
+    return {static_cast<uint32_t>((start % n + n) % n), border, slices};
+}
 
 LineSizes sizesForRect(const lightscatter::EpipolarSettings& s, VkExtent2D screen, VkRect2D rect,
                        const LineSizes* before) {

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <span>
 
 #include "lightscatter/methods/epipolar.h"
 
@@ -23,6 +24,30 @@ struct LineSizes {
 // the frame before (null: none), kept until the share has moved past a halving by a margin.
 LineSizes sizesForRect(const lightscatter::EpipolarSettings& s, VkExtent2D screen, VkRect2D rect,
                        const LineSizes* before);
+
+// The slices of its border a light's lines take (EpipolarConstants::window). A spot seen from
+// outside its cone lights a wedge of the screen from its apex: its lines need only the border's
+// slices whose lines cross that wedge, at the border's density, so that its chain and (for a
+// frame's later light) its unwarp cost the wedge's share of the screen rather than its rectangle's.
+struct LineWindow {
+    uint32_t first = 0;   // the first of the border's slices that the lines take
+    uint32_t border = 0;  // the slices the border is divided into (sizesForRect's)
+    uint32_t slices = 0;  // how many the lines take, from `first` on in the border's order
+    bool part() const { return slices < border; }
+    bool operator==(const LineWindow&) const = default;
+};
+// Every slice of a border of `border`.
+inline LineWindow wholeBorder(uint32_t border) {
+    return {0, border, border};
+}
+// A spot's window: `corners` its lightScreenCorners (apex first), `light` its screen point and
+// `bounds` its lineBounds, both NDC. The border's slices that the directions from the light to the
+// corners cross, two more each side, as a power-of-two share of the border (at least 64 slices,
+// a multiple of 4, halved only once the share is past a step by a margin, as sizesForRect's), or
+// the whole border where the corners surround the light (the camera inside the cone) or the light
+// is outside the border. `before`: the frame before's (null: none).
+LineWindow coneWindow(std::span<const glm::vec2> corners, glm::vec2 light, glm::vec4 bounds,
+                      uint32_t border, const LineWindow* before);
 
 // The border the lines leave by, in NDC (lo.xy, hi.xy): the centres of the rectangle's outer
 // pixels, at least two pixels apart; the whole screen's is seed 000's shrunk boundary.

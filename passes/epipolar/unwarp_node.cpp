@@ -5,6 +5,7 @@
 #include "shared/pass_helpers.h"
 #include "shared/shader_variant.h"
 #include "unwarp_frag_variants.h"
+#include "window_wedge_vert.h"
 
 namespace ls {
 namespace {
@@ -17,6 +18,10 @@ struct UnwarpPush {
 };
 
 }  // namespace
+
+rg::ShaderCode windowWedgeShader() {
+    return rg::spirv(ls_spirv::window_wedge_vert);
+}
 
 rg::ShaderCode unwarpShader(bool table, const CompositeVariant& target) {
     return pickCompositeShader(ls_spirv::unwarp_frag_variants, {{"LS_NEEDS_TABLE", table}}, target);
@@ -31,7 +36,8 @@ UnwarpOutputs addUnwarp(rg::RenderGraph& g, const UnwarpInputs& in, const Unwarp
     UnwarpOutputs out;
     auto pass = g.addPass("unwarp epipolar to screen", rg::PassType::Graphics);
     const auto& sm = samplersOf(in.chain.shared);
-    rg::BindingTable table = epipolarTable(pass, in.chain, in.epipolar);
+    const bool addOnly = in.target.addOnly;
+    rg::BindingTable table = epipolarTable(pass, in.chain, in.epipolar, addOnly ? kWedgeStages : 0);
     table.sampled(LS_BINDING_UNWARP_END_POINTS, in.sliceEndPoints, sm.nearest())
         .sampled(LS_BINDING_UNWARP_EPIPOLAR_Z, in.epipolarZ, sm.nearest())
         .sampled(LS_BINDING_UNWARP_INSCATTER, in.interpolated, sm.nearest())
@@ -46,7 +52,6 @@ UnwarpOutputs addUnwarp(rg::RenderGraph& g, const UnwarpInputs& in, const Unwarp
         pass.renderArea(in.chain.screen);
     }
     const CompositeOutputs written = out.composited;
-    const bool addOnly = in.target.addOnly;
     pass.execute([shared = in.chain.shared, spec = in.chain.spec, values = in.chain.values,
                   light = in.light, table, written, markForFixup, addOnly](rg::PassContext& ctx) {
         // A later light adds nothing outside its screen rectangle; the first applies the
@@ -54,6 +59,8 @@ UnwarpOutputs addUnwarp(rg::RenderGraph& g, const UnwarpInputs& in, const Unwarp
         if (addOnly && !scissorToLight(ctx, values)) return;
         auto desc = fullscreenPipeline(
             unwarpShader(light.table.valid(), compositeVariant(ctx, written)), ctx, table.layout());
+        // A later light draws only its lines' wedge: outside it, it adds nothing.
+        if (addOnly) desc.vertex = windowWedgeShader();
         desc.pushConstantBytes = 8;
         desc.specialization = spec.constants();
         if (markForFixup) {
@@ -72,7 +79,7 @@ UnwarpOutputs addUnwarp(rg::RenderGraph& g, const UnwarpInputs& in, const Unwarp
             ctx.vk().CmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, 1);
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
         p.push(ctx.cmd(), UnwarpPush{markForFixup ? 1 : 0, addOnly ? 1 : 0});
-        ctx.vk().CmdDraw(ctx.cmd(), 3, 1, 0, 0);
+        ctx.vk().CmdDraw(ctx.cmd(), addOnly ? kWedgeVertices : 3, 1, 0, 0);
     });
     return out;
 }

@@ -4,9 +4,10 @@
 
 namespace ls {
 
-rg::BindingTable frameTable(rg::PassBuilder& pass, rg::BufferRef constants) {
+rg::BindingTable frameTable(rg::PassBuilder& pass, rg::BufferRef constants,
+                            VkPipelineStageFlags2 stages) {
     rg::BindingTable table(pass);
-    table.uniform(LS_BINDING_FRAME, constants);
+    table.uniform(LS_BINDING_FRAME, constants, stages);
     return table;
 }
 

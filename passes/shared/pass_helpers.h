@@ -20,7 +20,8 @@ inline uint32_t groupCount(uint32_t n, uint32_t size) {
 }
 
 // A binding table whose first row is the frame-constants uniform buffer (LS_BINDING_FRAME).
-rg::BindingTable frameTable(rg::PassBuilder& pass, rg::BufferRef constants);
+rg::BindingTable frameTable(rg::PassBuilder& pass, rg::BufferRef constants,
+                            VkPipelineStageFlags2 stages = 0);
 
 // Limits the pass's draws to the light's screen rectangle this frame (LightFrame::screenRect), so
 // that a per-pixel pass over a small light costs its pixels; false when the rectangle is empty and

@@ -51,8 +51,8 @@ rg::ShaderCode fixupShader(const ScatterSpec& spec, const CompositeVariant& targ
 }
 
 rg::BindingTable declarePixelMarch(rg::PassBuilder& pass, const ChainContext& chain,
-                                   const LightImages& light) {
-    rg::BindingTable table = frameTable(pass, chain.constants);
+                                   const LightImages& light, VkPipelineStageFlags2 frameStages) {
+    rg::BindingTable table = frameTable(pass, chain.constants, frameStages);
     table.sampled(LS_BINDING_DEPTH, chain.depth, samplersOf(chain.shared).nearest(),
                   VK_IMAGE_ASPECT_DEPTH_BIT);
     addMarchInputs(table, chain.shared, light);
@@ -68,6 +68,7 @@ void drawPixelMarch(rg::PassContext& ctx, const Shared& shared, const ScatterSpe
                                        ? fixupShader(spec, compositeVariant(ctx, *draw.composite))
                                        : pixelMarchShader(spec, table.has(LS_BINDING_SHADOW_MAP)),
                                    ctx, table.layout());
+    if (draw.vertex.words != nullptr) desc.vertex = draw.vertex;
     desc.pushConstantBytes = draw.composite ? sizeof(FixupPush) : sizeof(PixelMarchPush);
     desc.specialization = spec.constants();
     if (draw.whereStencilIsZero) {
@@ -90,7 +91,7 @@ void drawPixelMarch(rg::PassContext& ctx, const Shared& shared, const ScatterSpe
     } else {
         p.push(ctx.cmd(), PixelMarchPush{draw.maxSteps});
     }
-    ctx.vk().CmdDraw(ctx.cmd(), 3, 1, 0, 0);
+    ctx.vk().CmdDraw(ctx.cmd(), draw.vertices, 1, 0, 0);
 }
 
 }  // namespace ls

@@ -14,8 +14,9 @@ namespace ls {
 
 // The march's reads: the frame constants, the engine's depth and the light's images. The caller
 // adds any rows of its own (the composite target) to the table before drawing with it.
+// frameStages: the stages that read the frame constants (0: the fragment shader's).
 rg::BindingTable declarePixelMarch(rg::PassBuilder& pass, const ChainContext& chain,
-                                   const LightImages& light);
+                                   const LightImages& light, VkPipelineStageFlags2 frameStages = 0);
 
 struct PixelMarchDraw {
     const char* pipeline = "";        // names the pipeline
@@ -25,9 +26,14 @@ struct PixelMarchDraw {
     // Lin to the pass's color attachment: the epipolar fix-up.
     const CompositeOutputs* composite = nullptr;
     bool addOnly = false;  // with composite: a frame's later light
+    // What the draw covers: `vertices` vertices of this vertex shader (none: the viewport's one
+    // triangle), whose bindings the caller added to the table.
+    rg::ShaderCode vertex{};
+    uint32_t vertices = 3;
 };
 
-// Records the march as one full-screen draw of the pass, with the light's shader options.
+// Records the march as one draw of the pass (full-screen unless PixelMarchDraw::vertex says), with
+// the light's shader options.
 void drawPixelMarch(rg::PassContext& ctx, const Shared& shared, const ScatterSpec& spec,
                     const rg::BindingTable& table, const PixelMarchDraw& draw);
 

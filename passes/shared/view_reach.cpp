@@ -115,14 +115,15 @@ bool cubeFaceTouchesView(const CameraParams& camera, const LightParams& light,
     return true;
 }
 
-VkRect2D lightScreenRect(const CameraParams& camera, const LightParams& light,
-                         const MediumParams& medium, VkExtent2D screen) {
-    const VkRect2D whole{{0, 0}, screen};
-    if (light.kind == LightType::Directional) return whole;
+std::optional<std::vector<glm::vec2>> lightScreenCorners(const CameraParams& camera,
+                                                         const LightParams& light,
+                                                         const MediumParams& medium,
+                                                         bool clipToNear) {
+    if (light.kind == LightType::Directional) return std::nullopt;
     // How far from the light a point can lie and still be on a view ray: its range, and the
     // view's reach (as lightTouchesView bounds it) beyond the light's distance from the camera.
     const float extent = reachFromLight(camera, light, medium);
-    if (!(extent < 1e6f)) return whole;
+    if (!(extent < 1e6f)) return std::nullopt;
     // Corners of a convex solid holding the volume: a point light's cube around its sphere; for
     // a spot, its apex and an octagon around the cone's circle at `extent` along the axis (every
     // point of the cone within `extent` of the apex lies inside that truncated pyramid).
@@ -136,7 +137,7 @@ VkRect2D lightScreenRect(const CameraParams& camera, const LightParams& light,
         const float cosA = std::clamp(light.cosOuter, 1e-6f, 1.0f);
         const float radius = extent * std::sqrt(std::max(0.0f, 1.0f - cosA * cosA)) / cosA /
                              std::cos(3.14159265f / 8.0f);
-        if (!(radius < 1e6f)) return whole;
+        if (!(radius < 1e6f)) return std::nullopt;
         const glm::vec3 helper =
             std::fabs(axis.y) < 0.9f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(1.0f, 0.0f, 0.0f);
         const glm::vec3 u = glm::normalize(glm::cross(axis, helper));
@@ -151,12 +152,41 @@ VkRect2D lightScreenRect(const CameraParams& camera, const LightParams& light,
     // Projected, the solid's corners bound its pixels, if all lie in front of the camera's near
     // plane (a corner behind it: the solid wraps around the camera, or beside it; unsure).
     const glm::mat4 viewProj = camera.projection * camera.view;
+    const float nearW = 0.5f * camera.nearPlane;
+    std::vector<glm::vec4> clip;
+    for (const glm::vec3& p : corners) clip.push_back(viewProj * glm::vec4(p, 1.0f));
+    std::vector<glm::vec2> ndc;
+    for (const glm::vec4& c : clip) {
+        if (c.w > nearW) {
+            ndc.emplace_back(c.x / c.w, c.y / c.w);
+        } else if (!clipToNear || light.kind != LightType::Spot || &c == &clip[0]) {
+            return std::nullopt;
+        }
+    }
+    if (ndc.size() == clip.size()) return ndc;
+    // A spot's pyramid cut by that plane (no view ray passes behind it): where its edges, from
+    // the apex and around the octagon, cross it.
+    auto cut = [&](const glm::vec4& a, const glm::vec4& b) {
+        if ((a.w > nearW) == (b.w > nearW)) return;
+        const glm::vec4 p = a + (a.w - nearW) / (a.w - b.w) * (b - a);
+        ndc.emplace_back(p.x / nearW, p.y / nearW);
+    };
+    for (size_t k = 1; k < clip.size(); ++k) {
+        cut(clip[0], clip[k]);
+        cut(clip[k], clip[k % (clip.size() - 1) + 1]);
+    }
+    return ndc;
+}
+
+VkRect2D lightScreenRect(const CameraParams& camera, const LightParams& light,
+                         const MediumParams& medium, VkExtent2D screen) {
+    const VkRect2D whole{{0, 0}, screen};
+    const auto corners = lightScreenCorners(camera, light, medium, false);
+    if (!corners) return whole;
     float x0 = 1e30f, y0 = 1e30f, x1 = -1e30f, y1 = -1e30f;
-    for (const glm::vec3& p : corners) {
-        const glm::vec4 clip = viewProj * glm::vec4(p, 1.0f);
-        if (!(clip.w > 0.5f * camera.nearPlane)) return whole;
-        const float x = (clip.x / clip.w * 0.5f + 0.5f) * static_cast<float>(screen.width);
-        const float y = (clip.y / clip.w * 0.5f + 0.5f) * static_cast<float>(screen.height);
+    for (const glm::vec2& p : *corners) {
+        const float x = (p.x * 0.5f + 0.5f) * static_cast<float>(screen.width);
+        const float y = (p.y * 0.5f + 0.5f) * static_cast<float>(screen.height);
         x0 = std::min(x0, x);
         x1 = std::max(x1, x);
         y0 = std::min(y0, y);

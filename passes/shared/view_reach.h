@@ -3,6 +3,10 @@
 // a light whose volume misses the view from adding any node.
 #include <vulkan/vulkan.h>
 
+#include <glm/glm.hpp>
+#include <optional>
+#include <vector>
+
 #include "scattering_params.h"
 
 namespace ls {
@@ -21,6 +25,16 @@ bool cubeFaceTouchesView(const CameraParams& camera, const LightParams& light,
 // The pixels of a `screen` whose view rays may cross the light's volume (a point light's range, a
 // spot's cone within its range, each within the view's reach): conservative, the whole screen
 // when unsure (a directional light, an unbounded volume, the camera in or beside the volume).
+// The corners of a convex solid holding the light's volume within the view's reach, projected
+// (NDC): a point light's cube around its sphere, or a spot's apex (first) and an octagon around
+// its cone's circle. None where unsure (a directional light, an unbounded volume, a corner behind
+// the camera's near plane). clipToNear: a spot's pyramid is cut by that plane instead where its
+// apex lies in front (its corners then also where its edges cross the plane).
+std::optional<std::vector<glm::vec2>> lightScreenCorners(const CameraParams& camera,
+                                                         const LightParams& light,
+                                                         const MediumParams& medium,
+                                                         bool clipToNear);
+
 VkRect2D lightScreenRect(const CameraParams& camera, const LightParams& light,
                          const MediumParams& medium, VkExtent2D screen);
 

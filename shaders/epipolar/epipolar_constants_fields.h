@@ -19,3 +19,8 @@ LS_VEC4 bounds;
 // x: the march's phases P (its order, marchTexel in epipolar_constants.glsl; 1: a sample's own
 // texel), y: its phase blocks per row (marchBlocksPerRow in epipolar_constants.h), zw: -
 LS_VEC4 march;
+// The slices the light's lines take of those its border is divided into (y, a quarter per edge, in
+// the border's order): x, the first; the light's own count is sampling.x. z: 1 where that is a part
+// of the border (a spot seen from outside its cone: passes/epipolar/screen_share.h), where a later
+// light's unwarp and fix-up draw only the wedge it spans; w: -
+LS_VEC4 window;

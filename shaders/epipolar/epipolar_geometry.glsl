@@ -31,14 +31,22 @@ vec2 edgeOutwardNormal(int edge) {
     return vec2(-1.0, 0.0);
 }
 
-// Where the line of slice `slice` meets the boundary: an equal share of the slices per edge.
-vec2 sliceExitPoint(float slice, out int edge) {
-    float u = (slice + 0.5) / epipolar.sampling.x * 4.0;
+// The point of the boundary at border coordinate u in [0, 4): edge floor(u), walked from its corner.
+vec2 borderPoint(float u, out int edge) {
     edge = min(int(u), 3);
     return mix(boundaryCorner(edge), boundaryCorner((edge + 1) & 3), u - float(edge));
 }
 
-// Continuous slice coordinate of a boundary point on `edge` (inverse of sliceExitPoint).
+// Where the line of the light's slice `slice` meets the boundary: the border is divided into
+// epipolar.window.y slices, an equal share per edge, and the light's are epipolar.window.x onwards.
+vec2 sliceExitPoint(int slice, out int edge) {
+    int border = int(epipolar.window.y);
+    int g = (slice + int(epipolar.window.x)) % border;
+    return borderPoint((float(g) + 0.5) / epipolar.window.y * 4.0, edge);
+}
+
+// Continuous border slice coordinate of a boundary point on `edge` (inverse of sliceExitPoint
+// before the window: the light's slice is this less epipolar.window.x, modulo the border's).
 float sliceOfExitPoint(vec2 e, int edge) {
     vec2 lo = boundaryLo(), hi = boundaryHi();
     float f;
@@ -46,7 +54,16 @@ float sliceOfExitPoint(vec2 e, int edge) {
     else if (edge == 1) f = (e.y - lo.y) / (hi.y - lo.y);
     else if (edge == 2) f = (hi.x - e.x) / (hi.x - lo.x);
     else f = (hi.y - e.y) / (hi.y - lo.y);
-    return (float(edge) + clamp(f, 0.0, 1.0)) / 4.0 * epipolar.sampling.x - 0.5;
+    return (float(edge) + clamp(f, 0.0, 1.0)) / 4.0 * epipolar.window.y - 0.5;
+}
+
+// The light's slice of border slice `g` in [-1, 2 border): in [0, epipolar.sampling.x) when the
+// window holds it.
+int windowSlice(int g) {
+    int border = int(epipolar.window.y);
+    int slice = g - int(epipolar.window.x);
+    slice += slice < 0 ? border : 0;
+    return slice >= border ? slice - border : slice;
 }
 
 // The parameter range where o + t d is inside the boundary (tNear > tFar when it misses).

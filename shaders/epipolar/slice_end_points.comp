@@ -12,7 +12,7 @@ void main() {
     int slice = int(gl_GlobalInvocationID.x);
     if (slice >= int(epipolar.sampling.x)) return;
     int edge;
-    vec2 exitPoint = sliceExitPoint(float(slice), edge);
+    vec2 exitPoint = sliceExitPoint(slice, edge);
     vec2 light = frame.lightScreen.xy;
     vec2 entry = light;
     // The light (or, behind the camera, the point its shafts converge to) may be off screen: the line

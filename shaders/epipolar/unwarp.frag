@@ -47,7 +47,9 @@ bool filterSamples(vec2 p, float z, out vec4 value) {
     vec4 sum = vec4(0.0), plain = vec4(0.0);
     float weight = 0.0, plainWeight = 0.0;
     for (int a = 0; a < 2; ++a) {
-        int slice = (int(j0f) + a + slices) % slices;
+        // Outside the light's window (a spot's lines cover its cone) there is no sample.
+        int slice = windowSlice(int(j0f) + a);
+        if (slice >= slices) continue;
         float ws = a == 0 ? 1.0 - sliceW : sliceW;
         vec4 ends = texelFetch(sliceEndPoints, ivec2(slice, 0), 0);
         if (ends.x <= INVALID_SLICE + 1.0 || ws <= 0.0) continue;

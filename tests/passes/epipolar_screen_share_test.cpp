@@ -2,8 +2,15 @@
 // device: the whole screen keeps the settings' sizes and seed 000's shrunk boundary to the bit; a
 // smaller rectangle halves the slices by its perimeter and the samples by its diagonal, never
 // below the settings' density, nor below the floor, nor off the march's grain; and a share near a
-// step keeps the frame before's sizes until it has moved past the step by a margin.
+// step keeps the frame before's sizes until it has moved past the step by a margin. A spot seen
+// from outside its cone takes a window of its border's slices: every slice whose line crosses the
+// cone's corners' directions, and its neighbours; the whole border where the corners surround the
+// light or the light is outside the border.
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
 
 #include "epipolar/screen_share.h"
 
@@ -83,6 +90,131 @@ TEST(EpipolarScreenShare, ARectangleOfOnePixelIsWidenedToTwo) {
     EXPECT_LT(b.x, b.z);
     EXPECT_LT(b.y, b.w);
     EXPECT_FLOAT_EQ(b.z, 1.0f - 1.0f / 1920.0f);
+}
+
+// The corners of a spot's pyramid as lightScreenCorners gives them (NDC, apex first): the apex at
+// `light` and eight points on a circle of `radius` around `centre`.
+std::vector<glm::vec2> pyramid(glm::vec2 light, glm::vec2 centre, float radius) {
+    std::vector<glm::vec2> c{light};
+    for (int k = 0; k < 8; ++k) {
+        const float a = std::numbers::pi_v<float> / 4.0f * static_cast<float>(k);
+        c.push_back(centre + radius * glm::vec2(std::cos(a), std::sin(a)));
+    }
+    return c;
+}
+
+// Where border slice g's line leaves the border, as shaders/epipolar/epipolar_geometry.glsl walks
+// it (corner 0 the top left, then clockwise on the screen), in double.
+glm::dvec2 exitOf(uint32_t g, uint32_t border, glm::dvec4 b) {
+    const double u = (g + 0.5) / border * 4.0;
+    const int edge = std::min(static_cast<int>(u), 3);
+    const glm::dvec2 corners[4] = {{b.x, b.y}, {b.z, b.y}, {b.z, b.w}, {b.x, b.w}};
+    return corners[edge] + (u - edge) * (corners[(edge + 1) % 4] - corners[edge]);
+}
+
+bool holds(const ls::LineWindow& w, int64_t g) {
+    const auto n = static_cast<int64_t>(w.border);
+    return ((g - w.first) % n + n) % n < w.slices;
+}
+
+// Every border slice whose exit lies in the corners' directions from the light is in the window,
+// with both neighbours (a pixel between two slices reads both).
+void expectCovers(const ls::LineWindow& w, const std::vector<glm::vec2>& corners, glm::vec4 bounds,
+                  const char* what) {
+    const glm::dvec2 light(corners[0]);
+    glm::dvec2 mean(0.0);
+    for (size_t i = 1; i < corners.size(); ++i)
+        mean += glm::normalize(glm::dvec2(corners[i]) - light);
+    auto angle = [&](glm::dvec2 d) {
+        return std::atan2(mean.x * d.y - mean.y * d.x, glm::dot(mean, d));
+    };
+    double lo = 10.0, hi = -10.0;
+    for (size_t i = 1; i < corners.size(); ++i) {
+        lo = std::min(lo, angle(glm::dvec2(corners[i]) - light));
+        hi = std::max(hi, angle(glm::dvec2(corners[i]) - light));
+    }
+    int inside = 0;
+    for (uint32_t g = 0; g < w.border; ++g) {
+        const double a = angle(exitOf(g, w.border, glm::dvec4(bounds)) - light);
+        if (a < lo || a > hi) continue;
+        ++inside;
+        for (int64_t k = -1; k <= 1; ++k)
+            EXPECT_TRUE(holds(w, static_cast<int64_t>(g) + k))
+                << what << ": border slice " << g + k << " of " << w.border << ", window "
+                << w.slices << " from " << w.first;
+    }
+    EXPECT_GT(inside, 0) << what;
+}
+
+TEST(EpipolarScreenShare, ASpotSeenFromOutsideItsConeTakesTheWedgesSlices) {
+    const glm::vec4 b = ls::lineBounds(kScreen, {{0, 0}, kScreen});
+    // A light near the top, its cone down towards the floor: a wedge of some 35 degrees.
+    const auto down = pyramid({0.1f, -0.8f}, {0.0f, 0.9f}, 0.5f);
+    const ls::LineWindow w = ls::coneWindow(down, down[0], b, 1024, nullptr);
+    EXPECT_EQ(w.border, 1024u);
+    EXPECT_TRUE(w.part());
+    EXPECT_LE(w.slices, 256u);
+    EXPECT_EQ(w.slices & (w.slices - 1), 0u) << "a power-of-two share of the border";
+    expectCovers(w, down, b, "down");
+    // Its window leaves by the bottom edge (border slices 512 to 767), centred on what it needs.
+    EXPECT_GE(w.first, 500u);
+    EXPECT_LE(w.first + w.slices, 780u);
+    // The same wedge across the border's start (the top left corner): the window wraps.
+    const auto corner = pyramid({0.5f, 0.5f}, {-0.95f, -0.95f}, 0.1f);
+    const ls::LineWindow wrap = ls::coneWindow(corner, corner[0], b, 1024, nullptr);
+    EXPECT_TRUE(wrap.part());
+    EXPECT_GT(wrap.first + wrap.slices, 1024u) << "from " << wrap.first;
+    expectCovers(wrap, corner, b, "across the start");
+    // A very narrow cone still keeps the floor of 64 slices.
+    const auto thin = pyramid({0.1f, -0.8f}, {0.1f, 0.9f}, 0.01f);
+    EXPECT_EQ(ls::coneWindow(thin, thin[0], b, 1024, nullptr).slices, 64u);
+}
+
+TEST(EpipolarScreenShare, ASpotAroundTheCameraOrOffTheBorderTakesEverySlice) {
+    const glm::vec4 b = ls::lineBounds(kScreen, {{0, 0}, kScreen});
+    // The camera inside the cone: its corners surround the light's point.
+    const auto around = pyramid({0.1f, 0.1f}, {0.0f, 0.0f}, 0.6f);
+    EXPECT_EQ(ls::coneWindow(around, around[0], b, 1024, nullptr), ls::wholeBorder(1024));
+    // A wedge wider than a half-turn less the margin: whole.
+    const auto wide = pyramid({0.0f, 0.0f}, {0.0f, 0.05f}, 0.06f);
+    EXPECT_EQ(ls::coneWindow(wide, wide[0], b, 1024, nullptr), ls::wholeBorder(1024));
+    // The light off the border: its lines enter the screen; not windowed.
+    const auto off = pyramid({0.0f, -1.2f}, {0.0f, 0.5f}, 0.3f);
+    EXPECT_EQ(ls::coneWindow(off, off[0], b, 1024, nullptr), ls::wholeBorder(1024));
+    // A corner on the light's point: no direction to it.
+    auto onPoint = pyramid({0.1f, -0.8f}, {0.0f, 0.9f}, 0.5f);
+    onPoint[3] = onPoint[0];
+    EXPECT_EQ(ls::coneWindow(onPoint, onPoint[0], b, 1024, nullptr), ls::wholeBorder(1024));
+}
+
+TEST(EpipolarScreenShare, AWideningConeGrowsItsWindowAtOnceAndShrinksItLate) {
+    // The wedge widens a step at a time, then narrows back, each frame given the one before's
+    // window: the count never falls below the slices the wedge needs, and a count that grew at
+    // some width shrinks back only at a narrower one.
+    const glm::vec4 b = ls::lineBounds(kScreen, {{0, 0}, kScreen});
+    std::vector<uint32_t> up, downCounts;
+    ls::LineWindow w{};
+    const int steps = 60;
+    for (int i = 0; i <= steps; ++i) {
+        const auto c = pyramid({0.1f, -0.8f}, {0.1f, 0.9f}, 0.01f + 0.02f * static_cast<float>(i));
+        w = ls::coneWindow(c, c[0], b, 1024, w.border != 0 ? &w : nullptr);
+        expectCovers(w, c, b, "widening");
+        up.push_back(w.slices);
+    }
+    for (int i = steps; i >= 0; --i) {
+        const auto c = pyramid({0.1f, -0.8f}, {0.1f, 0.9f}, 0.01f + 0.02f * static_cast<float>(i));
+        w = ls::coneWindow(c, c[0], b, 1024, &w);
+        expectCovers(w, c, b, "narrowing");
+        downCounts.push_back(w.slices);
+    }
+    std::reverse(downCounts.begin(), downCounts.end());
+    bool later = false;
+    for (int i = 0; i <= steps; ++i) {
+        EXPECT_GE(downCounts[i], up[i]) << "step " << i;
+        later = later || downCounts[i] > up[i];
+    }
+    EXPECT_TRUE(later) << "no width kept the wider window on the way back";
+    EXPECT_GT(up.back(), up.front());
 }
 
 }  // namespace
