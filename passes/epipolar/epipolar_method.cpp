@@ -100,13 +100,13 @@ std::vector<CpuWork> EpipolarMethod::prepare(LightData* data, LightFrame& frame,
                                before.slices != 0 ? &before : nullptr);
     const glm::vec4 bounds = lineBounds(light.screen, light.screenRect);
     const LineWindow windowBefore = e.window;
-    e.window = wholeBorder(e.rectSizes.slices);
+    std::vector<glm::vec2> cone;
     if (light.light.kind == LightType::Spot && frame.constants.lightScreen.z > 0.0f) {
-        if (const auto corners = lightScreenCorners(light.camera, light.light, light.medium, true))
-            e.window =
-                coneWindow(*corners, glm::vec2(frame.constants.lightScreen), bounds,
-                           e.rectSizes.slices, windowBefore.border != 0 ? &windowBefore : nullptr);
+        if (auto corners = lightScreenCorners(light.camera, light.light, light.medium, true))
+            cone = std::move(*corners);
     }
+    e.window = lineWindow(cone, glm::vec2(frame.constants.lightScreen), bounds, e.rectSizes.slices,
+                          windowBefore.border != 0 ? &windowBefore : nullptr);
     e.sizes = {e.window.slices, e.rectSizes.samples};
     e.full = {light.settings.epipolar.slices, light.settings.epipolar.samplesPerSlice};
     e.rect = light.screenRect;
@@ -184,7 +184,7 @@ std::string EpipolarMethod::frameNote(const LightFrame& frame, const ChainConfig
                 std::to_string(e.rectSizes.samples) + " samples";
     if (e.window.part())
         lines += std::string(lines.empty() ? "lines" : ", and") +
-                 " within its cone's wedge: " + std::to_string(e.window.slices) +
+                 " within its wedge of the screen: " + std::to_string(e.window.slices) +
                  " of the border's " + std::to_string(e.window.border) + " slices, from slice " +
                  std::to_string(e.window.first);
     if (c.light != LightType::Point) return lines;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 #include "epipolar_constants.h"
@@ -74,26 +75,27 @@ double borderSliceOf(glm::dvec2 o, glm::dvec2 d, glm::dvec4 bounds, uint32_t bor
 
 }  // namespace
 
-LineWindow coneWindow(std::span<const glm::vec2> corners, glm::vec2 light, glm::vec4 bounds,
-                      uint32_t border, const LineWindow* before) {
-    const LineWindow whole = wholeBorder(border);
-    const glm::dvec2 o(light);
-    if (corners.size() < 2 ||
-        !(o.x > bounds.x && o.x < bounds.z && o.y > bounds.y && o.y < bounds.w))
-        return whole;
-    // The directions from the light to the corners but the apex, by angle.
+namespace {
+
+// The directions from `o` to `points` as one angular sector under a half-turn (start and end, in
+// the border's order), or none: a point on `o`, or points around it.
+struct Sector {
+    glm::dvec2 start, end;
+};
+std::optional<Sector> sectorOf(std::span<const glm::vec2> points, glm::dvec2 o) {
     constexpr double kTurn = 2.0 * std::numbers::pi;
     std::vector<std::pair<double, glm::dvec2>> around;
-    for (size_t i = 1; i < corners.size(); ++i) {
-        const glm::dvec2 d = glm::dvec2(corners[i]) - o;
-        if (!(glm::length(d) > 1e-6)) return whole;
+    for (const glm::vec2& p : points) {
+        const glm::dvec2 d = glm::dvec2(p) - o;
+        if (!(glm::length(d) > 1e-6)) return std::nullopt;
         around.emplace_back(std::atan2(d.y, d.x), d);
     }
+    if (around.empty()) return std::nullopt;
     std::sort(around.begin(), around.end(),
               [](const auto& a, const auto& b) { return a.first < b.first; });
-    // The widest gap between neighbours: the cone's projection holds the light's point (its
-    // apex), so it lies within a half-turn from it exactly when the corners leave a gap wider
-    // than a half-turn (with a margin for rounding); the window runs from after it to before it.
+    // The widest gap between neighbours: the points lie within a half-turn from `o` exactly when
+    // they leave a gap wider than a half-turn (with a margin for rounding); the sector runs from
+    // after it to before it.
     size_t after = 0;
     double gap = 0.0;
     for (size_t i = 0; i < around.size(); ++i) {
@@ -105,26 +107,87 @@ LineWindow coneWindow(std::span<const glm::vec2> corners, glm::vec2 light, glm::
             after = next;
         }
     }
-    if (!(gap > std::numbers::pi + 1e-3)) return whole;
-    const glm::dvec2 startDir = around[after].second;
-    const glm::dvec2 endDir = around[(after + around.size() - 1) % around.size()].second;
+    if (!(gap > std::numbers::pi + 1e-3)) return std::nullopt;
+    return Sector{around[after].second, around[(after + around.size() - 1) % around.size()].second};
+}
+
+// The slices a window of `needed` of the border's takes: the fewest of eighths of the border and
+// its halvings below an eighth (at least 64, a multiple of 4) that hold them. Eighths, not only
+// halvings: a light off the screen needs three quarters of its border, a halving nothing. Kept
+// from the frame before (`before`) while the need is within the margin of it; grown at once.
+uint32_t windowSlices(uint32_t border, uint32_t needed, const uint32_t* before) {
+    std::vector<uint32_t> steps;
+    if (border % 32 == 0)
+        for (uint32_t m = 1; m < 8; ++m) steps.push_back(border / 8 * m);
+    for (uint32_t k = 1;
+         (border >> k) >= kMinSize && ((border >> k) << k) == border && (border >> k) % 4 == 0; ++k)
+        steps.push_back(border >> k);
+    steps.push_back(border);
+    std::sort(steps.begin(), steps.end());
+    auto fit = [&](double want) {
+        for (uint32_t c : steps)
+            if (c >= kMinSize && static_cast<double>(c) >= want) return c;
+        return border;
+    };
+    const uint32_t now = fit(needed);
+    if (before == nullptr || *before <= now) return now;
+    return std::min(*before, fit(needed * kShrinkMargin));
+}
+
+// The angle from `from` to `to`, in (-pi, pi], positive in the border's order.
+double turn(glm::dvec2 from, glm::dvec2 to) {
+    return std::atan2(from.x * to.y - from.y * to.x, glm::dot(from, to));
+}
+
+glm::dvec2 rotated(glm::dvec2 d, double angle) {
+    const double c = std::cos(angle), s = std::sin(angle);
+    return {c * d.x - s * d.y, s * d.x + c * d.y};
+}
+
+}  // namespace
+
+LineWindow lineWindow(std::span<const glm::vec2> cone, glm::vec2 light, glm::vec4 bounds,
+                      uint32_t border, const LineWindow* before) {
+    const LineWindow whole = wholeBorder(border);
+    const glm::dvec2 o(light);
+    // A light so far off the screen that its lines are parallel in float: every slice.
+    if (!(std::fabs(o.x) < kFarthestLight && std::fabs(o.y) < kFarthestLight)) return whole;
+    const bool inside = o.x > bounds.x && o.x < bounds.z && o.y > bounds.y && o.y < bounds.w;
+    // The cone's directions from its apex (the corners but the first), where they are a sector.
+    std::optional<Sector> sector;
+    if (cone.size() >= 2) sector = sectorOf(cone.subspan(1), o);
+    if (!inside) {
+        // Off the border, only the lines that cross it are valid: the sector of its corners.
+        const glm::vec2 corners[4] = {
+            {bounds.x, bounds.y}, {bounds.z, bounds.y}, {bounds.z, bounds.w}, {bounds.x, bounds.w}};
+        const std::optional<Sector> rect = sectorOf(corners, o);
+        if (!rect) return whole;
+        if (sector) {
+            // Both: their overlap, as angles from the rectangle's start.
+            const double width = turn(rect->start, rect->end);
+            const double lo = std::max(0.0, turn(rect->start, sector->start));
+            const double hi = std::min(width, turn(rect->start, sector->end));
+            if (!(lo <= hi)) return whole;  // the cone misses the border (no view ray reaches it)
+            sector = Sector{rotated(rect->start, lo), rotated(rect->start, hi)};
+        } else {
+            sector = rect;
+        }
+    }
+    if (!sector) return whole;
     const glm::dvec4 b(bounds);
     // A pixel between border slices g and g + 1 reads both; two more each side for rounding.
     constexpr int64_t kMargin = 2;
     const auto n = static_cast<int64_t>(border);
     const int64_t first =
-        static_cast<int64_t>(std::floor(borderSliceOf(o, startDir, b, border))) - kMargin;
+        static_cast<int64_t>(std::floor(borderSliceOf(o, sector->start, b, border))) - kMargin;
     const int64_t last =
-        static_cast<int64_t>(std::floor(borderSliceOf(o, endDir, b, border))) + 1 + kMargin;
+        static_cast<int64_t>(std::floor(borderSliceOf(o, sector->end, b, border))) + 1 + kMargin;
     const int64_t needed = ((last - first) % n + n) % n + 1;
     if (needed >= n) return whole;
-    uint32_t kept = 0;
-    if (before != nullptr && before->border == border) kept = halvingsOf(border, before->slices);
-    const uint32_t k =
-        keptHalvings(border, 4, static_cast<double>(needed) / static_cast<double>(n),
-                     before != nullptr && before->border == border ? &kept : nullptr);
-    if (k == 0) return whole;
-    const uint32_t slices = border >> k;
+    const uint32_t slices =
+        windowSlices(border, static_cast<uint32_t>(needed),
+                     before != nullptr && before->border == border ? &before->slices : nullptr);
+    if (slices >= border) return whole;
     // Centred: the slices beyond the needed ones, half on each side.
     const int64_t start = first - (static_cast<int64_t>(slices) - needed) / 2;
     return {static_cast<uint32_t>((start % n + n) % n), border, slices};

@@ -25,10 +25,12 @@ struct LineSizes {
 LineSizes sizesForRect(const lightscatter::EpipolarSettings& s, VkExtent2D screen, VkRect2D rect,
                        const LineSizes* before);
 
-// The slices of its border a light's lines take (EpipolarConstants::window). A spot seen from
-// outside its cone lights a wedge of the screen from its apex: its lines need only the border's
-// slices whose lines cross that wedge, at the border's density, so that its chain and (for a
-// frame's later light) its unwarp cost the wedge's share of the screen rather than its rectangle's.
+// The slices of its border a light's lines take (EpipolarConstants::window). A light off the
+// border (off the screen, or behind the camera) has lines only through the rectangle, whose exits
+// lie on its far side; a spot seen from outside its cone lights a wedge of the screen from its
+// apex, and lines in no other direction carry anything. Its lines need only the border's slices
+// whose lines cross that part, at the border's density, so that its chain and (for a frame's
+// later light) its unwarp cost the part's share of the screen rather than its rectangle's.
 struct LineWindow {
     uint32_t first = 0;   // the first of the border's slices that the lines take
     uint32_t border = 0;  // the slices the border is divided into (sizesForRect's)
@@ -40,13 +42,18 @@ struct LineWindow {
 inline LineWindow wholeBorder(uint32_t border) {
     return {0, border, border};
 }
-// A spot's window: `corners` its lightScreenCorners (apex first), `light` its screen point and
-// `bounds` its lineBounds, both NDC. The border's slices that the directions from the light to the
-// corners cross, two more each side, as a power-of-two share of the border (at least 64 slices,
-// a multiple of 4, halved only once the share is past a step by a margin, as sizesForRect's), or
-// the whole border where the corners surround the light (the camera inside the cone) or the light
-// is outside the border. `before`: the frame before's (null: none).
-LineWindow coneWindow(std::span<const glm::vec2> corners, glm::vec2 light, glm::vec4 bounds,
+// Farther than this from the screen's centre (NDC), a light's lines are taken as they are: their
+// wedge's corners would lose the rasteriser's precision.
+inline constexpr double kFarthestLight = 64.0;
+// A light's window: `light` its screen point and `bounds` its lineBounds, both NDC; `cone` a spot's
+// lightScreenCorners (apex first), or empty. The border's slices that the directions from the
+// light to the cone's corners cross (within the border's own directions, for a light off it), two
+// more each side, in eighths of the border or its halvings below an eighth (at least 64 slices, a
+// multiple of 4, shrunk only once the need is past a step by a margin, as sizesForRect's, and
+// grown at once); the whole border
+// where neither bounds them (a light on the screen without a cone; corners that surround the
+// light: the camera inside the cone). `before`: the frame before's (null: none).
+LineWindow lineWindow(std::span<const glm::vec2> cone, glm::vec2 light, glm::vec4 bounds,
                       uint32_t border, const LineWindow* before);
 
 // The border the lines leave by, in NDC (lo.xy, hi.xy): the centres of the rectangle's outer

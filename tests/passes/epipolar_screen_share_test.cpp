@@ -117,8 +117,30 @@ bool holds(const ls::LineWindow& w, int64_t g) {
     return ((g - w.first) % n + n) % n < w.slices;
 }
 
-// Every border slice whose exit lies in the corners' directions from the light is in the window,
-// with both neighbours (a pixel between two slices reads both).
+// Whether border slice g's line from a light off the border crosses it, as
+// shaders/epipolar/slice_end_points.comp decides (its exit edge faces away from the light, and the
+// line enters the border before its exit).
+bool crosses(uint32_t g, uint32_t border, glm::dvec4 b, glm::dvec2 light) {
+    const glm::dvec2 e = exitOf(g, border, b);
+    const glm::dvec2 d = e - light;
+    const double u = (g + 0.5) / border * 4.0;
+    const int edge = std::min(static_cast<int>(u), 3);
+    const glm::dvec2 normals[4] = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
+    if (glm::dot(d, normals[edge]) <= 0.0) return false;
+    double tNear = -1e300, tFar = 1e300;
+    const double lo[2] = {b.x, b.y}, hi[2] = {b.z, b.w};
+    for (int a = 0; a < 2; ++a) {
+        if (std::fabs(d[a]) < 1e-300) continue;
+        const double t0 = (lo[a] - light[a]) / d[a], t1 = (hi[a] - light[a]) / d[a];
+        tNear = std::max(tNear, std::min(t0, t1));
+        tFar = std::min(tFar, std::max(t0, t1));
+    }
+    return tNear < tFar && tNear < 1.0 - 1e-6;
+}
+
+// Every border slice whose exit lies in the corners' directions from the light (and, off the
+// border, whose line crosses it) is in the window, with both neighbours (a pixel between two
+// slices reads both).
 void expectCovers(const ls::LineWindow& w, const std::vector<glm::vec2>& corners, glm::vec4 bounds,
                   const char* what) {
     const glm::dvec2 light(corners[0]);
@@ -133,8 +155,12 @@ void expectCovers(const ls::LineWindow& w, const std::vector<glm::vec2>& corners
         lo = std::min(lo, angle(glm::dvec2(corners[i]) - light));
         hi = std::max(hi, angle(glm::dvec2(corners[i]) - light));
     }
+    const bool off =
+        !(light.x > bounds.x && light.x < bounds.z && light.y > bounds.y && light.y < bounds.w);
     int inside = 0;
     for (uint32_t g = 0; g < w.border; ++g) {
+        // Off the border, a slice whose line does not cross it serves no pixel.
+        if (off && !crosses(g, w.border, glm::dvec4(bounds), light)) continue;
         const double a = angle(exitOf(g, w.border, glm::dvec4(bounds)) - light);
         if (a < lo || a > hi) continue;
         ++inside;
@@ -150,7 +176,7 @@ TEST(EpipolarScreenShare, ASpotSeenFromOutsideItsConeTakesTheWedgesSlices) {
     const glm::vec4 b = ls::lineBounds(kScreen, {{0, 0}, kScreen});
     // A light near the top, its cone down towards the floor: a wedge of some 35 degrees.
     const auto down = pyramid({0.1f, -0.8f}, {0.0f, 0.9f}, 0.5f);
-    const ls::LineWindow w = ls::coneWindow(down, down[0], b, 1024, nullptr);
+    const ls::LineWindow w = ls::lineWindow(down, down[0], b, 1024, nullptr);
     EXPECT_EQ(w.border, 1024u);
     EXPECT_TRUE(w.part());
     EXPECT_LE(w.slices, 256u);
@@ -161,30 +187,27 @@ TEST(EpipolarScreenShare, ASpotSeenFromOutsideItsConeTakesTheWedgesSlices) {
     EXPECT_LE(w.first + w.slices, 780u);
     // The same wedge across the border's start (the top left corner): the window wraps.
     const auto corner = pyramid({0.5f, 0.5f}, {-0.95f, -0.95f}, 0.1f);
-    const ls::LineWindow wrap = ls::coneWindow(corner, corner[0], b, 1024, nullptr);
+    const ls::LineWindow wrap = ls::lineWindow(corner, corner[0], b, 1024, nullptr);
     EXPECT_TRUE(wrap.part());
     EXPECT_GT(wrap.first + wrap.slices, 1024u) << "from " << wrap.first;
     expectCovers(wrap, corner, b, "across the start");
     // A very narrow cone still keeps the floor of 64 slices.
     const auto thin = pyramid({0.1f, -0.8f}, {0.1f, 0.9f}, 0.01f);
-    EXPECT_EQ(ls::coneWindow(thin, thin[0], b, 1024, nullptr).slices, 64u);
+    EXPECT_EQ(ls::lineWindow(thin, thin[0], b, 1024, nullptr).slices, 64u);
 }
 
-TEST(EpipolarScreenShare, ASpotAroundTheCameraOrOffTheBorderTakesEverySlice) {
+TEST(EpipolarScreenShare, ASpotAroundTheCameraTakesEverySlice) {
     const glm::vec4 b = ls::lineBounds(kScreen, {{0, 0}, kScreen});
     // The camera inside the cone: its corners surround the light's point.
     const auto around = pyramid({0.1f, 0.1f}, {0.0f, 0.0f}, 0.6f);
-    EXPECT_EQ(ls::coneWindow(around, around[0], b, 1024, nullptr), ls::wholeBorder(1024));
+    EXPECT_EQ(ls::lineWindow(around, around[0], b, 1024, nullptr), ls::wholeBorder(1024));
     // A wedge wider than a half-turn less the margin: whole.
     const auto wide = pyramid({0.0f, 0.0f}, {0.0f, 0.05f}, 0.06f);
-    EXPECT_EQ(ls::coneWindow(wide, wide[0], b, 1024, nullptr), ls::wholeBorder(1024));
-    // The light off the border: its lines enter the screen; not windowed.
-    const auto off = pyramid({0.0f, -1.2f}, {0.0f, 0.5f}, 0.3f);
-    EXPECT_EQ(ls::coneWindow(off, off[0], b, 1024, nullptr), ls::wholeBorder(1024));
+    EXPECT_EQ(ls::lineWindow(wide, wide[0], b, 1024, nullptr), ls::wholeBorder(1024));
     // A corner on the light's point: no direction to it.
     auto onPoint = pyramid({0.1f, -0.8f}, {0.0f, 0.9f}, 0.5f);
     onPoint[3] = onPoint[0];
-    EXPECT_EQ(ls::coneWindow(onPoint, onPoint[0], b, 1024, nullptr), ls::wholeBorder(1024));
+    EXPECT_EQ(ls::lineWindow(onPoint, onPoint[0], b, 1024, nullptr), ls::wholeBorder(1024));
 }
 
 TEST(EpipolarScreenShare, AWideningConeGrowsItsWindowAtOnceAndShrinksItLate) {
@@ -197,13 +220,13 @@ TEST(EpipolarScreenShare, AWideningConeGrowsItsWindowAtOnceAndShrinksItLate) {
     const int steps = 60;
     for (int i = 0; i <= steps; ++i) {
         const auto c = pyramid({0.1f, -0.8f}, {0.1f, 0.9f}, 0.01f + 0.02f * static_cast<float>(i));
-        w = ls::coneWindow(c, c[0], b, 1024, w.border != 0 ? &w : nullptr);
+        w = ls::lineWindow(c, c[0], b, 1024, w.border != 0 ? &w : nullptr);
         expectCovers(w, c, b, "widening");
         up.push_back(w.slices);
     }
     for (int i = steps; i >= 0; --i) {
         const auto c = pyramid({0.1f, -0.8f}, {0.1f, 0.9f}, 0.01f + 0.02f * static_cast<float>(i));
-        w = ls::coneWindow(c, c[0], b, 1024, &w);
+        w = ls::lineWindow(c, c[0], b, 1024, &w);
         expectCovers(w, c, b, "narrowing");
         downCounts.push_back(w.slices);
     }
@@ -215,6 +238,37 @@ TEST(EpipolarScreenShare, AWideningConeGrowsItsWindowAtOnceAndShrinksItLate) {
     }
     EXPECT_TRUE(later) << "no width kept the wider window on the way back";
     EXPECT_GT(up.back(), up.front());
+}
+
+TEST(EpipolarScreenShare, ALightOffTheBorderTakesTheSlicesThatCrossIt) {
+    const glm::dvec4 b(ls::lineBounds(kScreen, {{0, 0}, kScreen}));
+    // Above the screen (a sun out of view, or a spot's apex above it), beside it, and a spot off
+    // the border whose cone reaches back into it.
+    for (const glm::vec2 light : {glm::vec2(0.2f, -1.6f), glm::vec2(-3.0f, 0.4f),
+                                  glm::vec2(2.5f, 2.5f), glm::vec2(0.0f, 40.0f)}) {
+        const ls::LineWindow w = ls::lineWindow({}, light, glm::vec4(b), 1024, nullptr);
+        int crossing = 0;
+        for (uint32_t g = 0; g < 1024; ++g) {
+            if (!crosses(g, 1024, b, glm::dvec2(light))) continue;
+            ++crossing;
+            for (int64_t k = -1; k <= 1; ++k)
+                EXPECT_TRUE(holds(w, static_cast<int64_t>(g) + k))
+                    << "light (" << light.x << ", " << light.y << "): border slice " << g + k
+                    << ", window " << w.slices << " from " << w.first;
+        }
+        EXPECT_GT(crossing, 0);
+        // At most the crossing slices, two each side and the next eighth of the border.
+        EXPECT_TRUE(w.part()) << light.x << ", " << light.y << ": " << crossing << " cross";
+        EXPECT_LE(w.slices, static_cast<uint32_t>(crossing) + 4u + 128u);
+    }
+    // A spot above the screen shining down into it: the overlap of its cone and the border's.
+    const auto spot = pyramid({0.1f, -1.5f}, {0.0f, 0.9f}, 0.4f);
+    const ls::LineWindow cone = ls::lineWindow(spot, spot[0], glm::vec4(b), 1024, nullptr);
+    const ls::LineWindow rect = ls::lineWindow({}, spot[0], glm::vec4(b), 1024, nullptr);
+    EXPECT_LT(cone.slices, rect.slices);
+    expectCovers(cone, spot, glm::vec4(b), "a spot above the screen");
+    // So far off that its lines are parallel in float: every slice.
+    EXPECT_EQ(ls::lineWindow({}, {0.0f, 1e5f}, glm::vec4(b), 1024, nullptr), ls::wholeBorder(1024));
 }
 
 }  // namespace
