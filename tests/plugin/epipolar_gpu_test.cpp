@@ -204,6 +204,18 @@ std::pair<uint32_t, uint32_t> lineCounts(const lightscatter::FrameReport& r,
     return {slices, samples};
 }
 
+// The slices of its border a light's lines take where the report names its wedge of the screen
+// (passes/epipolar/screen_share.h, lineWindow), and the border's; {0, 0} where it names none.
+std::pair<uint32_t, uint32_t> wedgeSlices(const lightscatter::FrameReport& r) {
+    unsigned slices = 0, border = 0;
+    const size_t at = r.reason.find("wedge of the screen: ");
+    if (at == std::string::npos ||
+        std::sscanf(r.reason.c_str() + at, "wedge of the screen: %u of the border's %u slices",
+                    &slices, &border) != 2)
+        return {0, 0};
+    return {slices, border};
+}
+
 }  // namespace
 
 // A spot's lines follow its share of the screen (passes/epipolar/screen_share.h): they grow at
@@ -248,4 +260,48 @@ TEST_F(EpipolarGpu, ASpotHoveringAtASizeStepKeepsItsLineCounts) {
     }
     // (EpipolarScreenShare.AShareNearAStepKeepsTheFrameBeforesSizes: the counts do shrink once the
     // share is past the margin.)
+}
+
+// A spot seen from outside its cone takes the slices of its wedge of the screen, a step of its
+// border (eighths, halvings below an eighth): the step is the chain's configuration, so as its
+// rectangle's counts above, it grows at once and keeps its count while the wedge narrows back by
+// less than the margin. The cone widens in one-degree steps until the wedge's slices grow, then
+// moves between the last two angles. Measured: 128 of 1024 slices up to 4 degrees, 256 from 5;
+// without the margin (kShrinkMargin 1) back at 4 degrees it takes 128 again, and fails.
+TEST_F(EpipolarGpu, ASpotsWedgeHoveringAtAStepKeepsItsSlices) {
+    lightscatter::Light spot = spotOverGrille();
+    TestFrame frame(dev(), sceneWith(spot));
+    lightscatter::Settings settings = smallSettings(frame.spec().screen);
+    settings.epipolar.slices = 1024;
+    settings.epipolar.samplesPerSlice = 256;
+    auto renderAt = [&](float degrees) {
+        lightscatter::FrameDescription d =
+            frame.description(Method::Epipolar, lightscatter::Profile::Custom, settings);
+        d.light.innerConeAngleDegrees = d.light.outerConeAngleDegrees = degrees;
+        return wedgeSlices(plugin().render(d));
+    };
+    float below = 0.0f, above = 0.0f;
+    std::pair<uint32_t, uint32_t> slices = renderAt(2.0f), grown;
+    const std::pair<uint32_t, uint32_t> first = slices;
+    ASSERT_GT(first.first, 0u) << "a narrow cone seen from outside takes no wedge";
+    EXPECT_LT(first.first, first.second);
+    for (float degrees = 3.0f; degrees <= 40.0f && above == 0.0f; degrees += 1.0f) {
+        const auto next = renderAt(degrees);
+        if (next.first != 0) {
+            EXPECT_GE(next.first, slices.first) << degrees << " degrees";
+        }
+        if (next != slices) {
+            below = degrees - 1.0f;
+            above = degrees;
+            grown = next;
+        }
+        slices = next;
+    }
+    ASSERT_GT(above, 0.0f) << "the wedge never grew from " << first.first;
+    std::printf("the wedge grows between %.0f and %.0f degrees: %u -> %u of %u slices\n", below,
+                above, first.first, grown.first, grown.second);
+    for (int k = 0; k < 4; ++k) {
+        EXPECT_EQ(renderAt(below), grown) << "back to " << below << " degrees, round " << k;
+        EXPECT_EQ(renderAt(above), grown) << "at " << above << " degrees, round " << k;
+    }
 }
