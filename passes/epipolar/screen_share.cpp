@@ -55,7 +55,8 @@ VkRect2D atLeastTwoPixels(VkExtent2D screen, VkRect2D rect) {
 }
 
 // The border slice coordinate (shaders/epipolar/epipolar_geometry.glsl's sliceOfExitPoint) of the
-// point where the line from `o` along `d` leaves the border; `o` inside it.
+// point where the line from `o` along `d` leaves the border: `o` inside it, or off it with the line
+// crossing it (the far crossing, as the unwarp's boundaryRange takes).
 double borderSliceOf(glm::dvec2 o, glm::dvec2 d, glm::dvec4 bounds, uint32_t border) {
     const glm::dvec2 lo(bounds.x, bounds.y), hi(bounds.z, bounds.w);
     auto exitAlong = [](double from, double along, double low, double high) {
@@ -72,10 +73,6 @@ double borderSliceOf(glm::dvec2 o, glm::dvec2 d, glm::dvec4 bounds, uint32_t bor
     if (edge == 3) f = (hi.y - e.y) / (hi.y - lo.y);
     return (edge + std::clamp(f, 0.0, 1.0)) / 4.0 * border - 0.5;
 }
-
-}  // namespace
-
-namespace {
 
 // The directions from `o` to `points` as one angular sector under a half-turn (start and end, in
 // the border's order), or none: a point on `o`, or points around it.

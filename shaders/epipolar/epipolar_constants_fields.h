@@ -21,6 +21,7 @@ LS_VEC4 bounds;
 LS_VEC4 march;
 // The slices the light's lines take of those its border is divided into (y, a quarter per edge, in
 // the border's order): x, the first; the light's own count is sampling.x. z: 1 where that is a part
-// of the border (a spot seen from outside its cone: passes/epipolar/screen_share.h), where a later
+// of the border (a spot seen from outside its cone, a light off the screen:
+// passes/epipolar/screen_share.h), where a later
 // light's unwarp and fix-up draw only the wedge it spans; w: -
 LS_VEC4 window;

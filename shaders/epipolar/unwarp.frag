@@ -47,7 +47,7 @@ bool filterSamples(vec2 p, float z, out vec4 value) {
     vec4 sum = vec4(0.0), plain = vec4(0.0);
     float weight = 0.0, plainWeight = 0.0;
     for (int a = 0; a < 2; ++a) {
-        // Outside the light's window (a spot's lines cover its cone) there is no sample.
+        // Outside the light's window (its lines cover only its wedge) there is no sample.
         int slice = windowSlice(int(j0f) + a);
         if (slice >= slices) continue;
         float ws = a == 0 ? 1.0 - sliceW : sliceW;
