@@ -114,7 +114,8 @@ std::vector<CpuWork> EpipolarMethod::prepare(LightData* data, LightFrame& frame,
         makeEpipolarConstants(sized(light.settings.epipolar, e.sizes), light.light.shadowMapSize,
                               interpolatesLin(light), refinesByDefault(light), bounds);
     e.constants.window = {static_cast<float>(e.window.first), static_cast<float>(e.window.border),
-                          e.window.part() ? 1.0f : 0.0f, 0.0f};
+                          e.window.part() ? static_cast<float>(e.window.needed) : 0.0f,
+                          static_cast<float>(e.window.neededFrom)};
     if (!cubeShadowed(light)) return {};
     for (int face = 0; face < 6; ++face)
         e.faceInView[face] = cubeFaceTouchesView(light.camera, light.light, light.medium, face);

@@ -186,8 +186,10 @@ LineWindow lineWindow(std::span<const glm::vec2> cone, glm::vec2 light, glm::vec
                      before != nullptr && before->border == border ? &before->slices : nullptr);
     if (slices >= border) return whole;
     // Centred: the slices beyond the needed ones, half on each side.
-    const int64_t start = first - (static_cast<int64_t>(slices) - needed) / 2;
-    return {static_cast<uint32_t>((start % n + n) % n), border, slices};
+    const int64_t extra = (static_cast<int64_t>(slices) - needed) / 2;
+    const int64_t start = first - extra;
+    return {static_cast<uint32_t>((start % n + n) % n), border, slices,
+            static_cast<uint32_t>(extra), static_cast<uint32_t>(needed)};
 }
 
 LineSizes sizesForRect(const lightscatter::EpipolarSettings& s, VkExtent2D screen, VkRect2D rect,

@@ -35,12 +35,15 @@ struct LineWindow {
     uint32_t first = 0;   // the first of the border's slices that the lines take
     uint32_t border = 0;  // the slices the border is divided into (sizesForRect's)
     uint32_t slices = 0;  // how many the lines take, from `first` on in the border's order
+    // Of those, the ones a lit pixel may read (the rest round the count up to its step): `needed`
+    // from the window's slice `neededFrom` on. A later light draws only their wedge.
+    uint32_t neededFrom = 0, needed = 0;
     bool part() const { return slices < border; }
     bool operator==(const LineWindow&) const = default;
 };
 // Every slice of a border of `border`.
 inline LineWindow wholeBorder(uint32_t border) {
-    return {0, border, border};
+    return {0, border, border, 0, border};
 }
 // Farther than this from the screen's centre (NDC), a light's lines are taken as they are: their
 // wedge's corners would lose the rasteriser's precision.

@@ -20,8 +20,8 @@ LS_VEC4 bounds;
 // texel), y: its phase blocks per row (marchBlocksPerRow in epipolar_constants.h), zw: -
 LS_VEC4 march;
 // The slices the light's lines take of those its border is divided into (y, a quarter per edge, in
-// the border's order): x, the first; the light's own count is sampling.x. z: 1 where that is a part
-// of the border (a spot seen from outside its cone, a light off the screen:
-// passes/epipolar/screen_share.h), where a later
-// light's unwarp and fix-up draw only the wedge it spans; w: -
+// the border's order): x, the first; the light's own count is sampling.x. Where that is a part of
+// the border (a spot seen from outside its cone, a light off the screen:
+// passes/epipolar/screen_share.h), z: how many of them a lit pixel may read, from the light's slice
+// w on, the wedge a later light's unwarp and fix-up draw; z is 0 where they are the whole border.
 LS_VEC4 window;

@@ -2,11 +2,10 @@
 #extension GL_GOOGLE_include_directive : require
 // What a frame's later light's unwarp and fix-up draw (kWedgeVertices vertices). Where its lines
 // take a window of the border (epipolar.window.z: a spot seen from outside its cone, a light off
-// the screen), the wedge
-// from the light's screen point through the window's slices, half a slice wider each side than
-// the pixels any of them serves, as a fan of five triangles; a pixel outside it has no sample and
-// no Lin, and neither pass pays for it. Otherwise the viewport's one triangle (fullscreen.vert's),
-// the others empty.
+// the screen), the wedge from the light's screen point through the window's slices that a lit
+// pixel may read, half a slice wider each side than the pixels any of them serves, as a fan of five
+// triangles; a pixel outside it has no sample and no Lin, and neither pass pays for it. Otherwise
+// the viewport's one triangle (fullscreen.vert's), the others empty.
 #include "epipolar_geometry.glsl"
 
 void main() {
@@ -18,11 +17,12 @@ void main() {
     }
     vec2 light = frame.lightScreen.xy;
     // The window's border coordinates u (4 a turn): a pixel between border slices g and g + 1 lies
-    // between u = (g + 0.5) / border * 4 and (g + 1.5) / border * 4, and the window's slices
-    // serve g from first - 1 to first + count - 1.
+    // between u = (g + 0.5) / border * 4 and (g + 1.5) / border * 4, and the slices a lit pixel
+    // reads (the window's past its step's rounding) serve g from their first - 1 to their last.
     float border = epipolar.window.y;
-    float ua = (epipolar.window.x - 1.0) / border * 4.0;
-    float ub = (epipolar.window.x + epipolar.sampling.x + 1.0) / border * 4.0;
+    float from = epipolar.window.x + epipolar.window.w;  // the first slice a lit pixel reads
+    float ua = (from - 1.0) / border * 4.0;
+    float ub = (from + epipolar.window.z + 1.0) / border * 4.0;
     int edge;
     int corner = v % 3;
     if (corner == 0) {

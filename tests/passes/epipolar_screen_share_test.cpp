@@ -112,9 +112,13 @@ glm::dvec2 exitOf(uint32_t g, uint32_t border, glm::dvec4 b) {
     return corners[edge] + (u - edge) * (corners[(edge + 1) % 4] - corners[edge]);
 }
 
+// Whether the window's slices that a lit pixel may read (the wedge a later light draws) hold
+// border slice g; they lie within the window.
 bool holds(const ls::LineWindow& w, int64_t g) {
     const auto n = static_cast<int64_t>(w.border);
-    return ((g - w.first) % n + n) % n < w.slices;
+    EXPECT_LE(w.neededFrom + w.needed, w.slices);
+    const int64_t from = static_cast<int64_t>(w.first) + w.neededFrom;
+    return ((g - from) % n + n) % n < w.needed;
 }
 
 // Whether border slice g's line from a light off the border crosses it, as
