@@ -216,6 +216,43 @@ std::pair<uint32_t, uint32_t> wedgeSlices(const lightscatter::FrameReport& r) {
     return {slices, border};
 }
 
+// Where a light's counts (what renderAt(degrees) reads from the report) first grew as its cone
+// widened from `from` by `step` up to `to`: the counts there, and the angles either side.
+struct CountStep {
+    std::pair<uint32_t, uint32_t> first, grown;
+    float below = 0.0f, above = 0.0f;
+};
+template <class Render>
+CountStep widenUntilTheCountsGrow(Render renderAt, float from, float step, float to) {
+    CountStep s;
+    std::pair<uint32_t, uint32_t> counts = renderAt(from);
+    s.first = counts;
+    for (float degrees = from + step; degrees <= to && s.above == 0.0f; degrees += step) {
+        const auto next = renderAt(degrees);
+        // (0: the report names none, the light's whole border.)
+        if (next.first != 0) {
+            EXPECT_GE(next.first, counts.first)
+                << degrees << " degrees: a wider cone, fewer slices";
+        }
+        if (next != counts) {
+            s.below = degrees - step;
+            s.above = degrees;
+            s.grown = next;
+        }
+        counts = next;
+    }
+    return s;
+}
+
+// The counts stay the grown ones as the cone moves back and forth across the step, four times.
+template <class Render>
+void expectTheStepKept(Render renderAt, const CountStep& s) {
+    for (int k = 0; k < 4; ++k) {
+        EXPECT_EQ(renderAt(s.below), s.grown) << "back to " << s.below << " degrees, round " << k;
+        EXPECT_EQ(renderAt(s.above), s.grown) << "at " << s.above << " degrees, round " << k;
+    }
+}
+
 }  // namespace
 
 // A spot's lines follow its share of the screen (passes/epipolar/screen_share.h): they grow at
@@ -237,27 +274,13 @@ TEST_F(EpipolarGpu, ASpotHoveringAtASizeStepKeepsItsLineCounts) {
         d.light.innerConeAngleDegrees = d.light.outerConeAngleDegrees = degrees;
         return lineCounts(plugin().render(d), settings);
     };
-    float below = 0.0f, above = 0.0f;
-    std::pair<uint32_t, uint32_t> counts = renderAt(3.0f), grown;
-    const std::pair<uint32_t, uint32_t> first = counts;
-    for (float degrees = 3.5f; degrees <= 30.0f && above == 0.0f; degrees += 0.5f) {
-        const auto next = renderAt(degrees);
-        EXPECT_GE(next.first, counts.first) << degrees << " degrees: a wider cone, fewer slices";
-        if (next != counts) {
-            below = degrees - 0.5f;
-            above = degrees;
-            grown = next;
-        }
-        counts = next;
-    }
-    ASSERT_GT(above, 0.0f) << "the counts never grew from " << first.first << " x " << first.second;
-    std::printf("counts grow between %.1f and %.1f degrees: %u x %u -> %u x %u\n", below, above,
-                first.first, first.second, grown.first, grown.second);
-    EXPECT_LT(first.first, settings.epipolar.slices) << "the narrowest cone kept every slice";
-    for (int k = 0; k < 4; ++k) {
-        EXPECT_EQ(renderAt(below), grown) << "back to " << below << " degrees, round " << k;
-        EXPECT_EQ(renderAt(above), grown) << "at " << above << " degrees, round " << k;
-    }
+    const CountStep s = widenUntilTheCountsGrow(renderAt, 3.0f, 0.5f, 30.0f);
+    ASSERT_GT(s.above, 0.0f) << "the counts never grew from " << s.first.first << " x "
+                             << s.first.second;
+    std::printf("counts grow between %.1f and %.1f degrees: %u x %u -> %u x %u\n", s.below, s.above,
+                s.first.first, s.first.second, s.grown.first, s.grown.second);
+    EXPECT_LT(s.first.first, settings.epipolar.slices) << "the narrowest cone kept every slice";
+    expectTheStepKept(renderAt, s);
     // (EpipolarScreenShare.AShareNearAStepKeepsTheFrameBeforesSizes: the counts do shrink once the
     // share is past the margin.)
 }
@@ -280,28 +303,11 @@ TEST_F(EpipolarGpu, ASpotsWedgeHoveringAtAStepKeepsItsSlices) {
         d.light.innerConeAngleDegrees = d.light.outerConeAngleDegrees = degrees;
         return wedgeSlices(plugin().render(d));
     };
-    float below = 0.0f, above = 0.0f;
-    std::pair<uint32_t, uint32_t> slices = renderAt(2.0f), grown;
-    const std::pair<uint32_t, uint32_t> first = slices;
-    ASSERT_GT(first.first, 0u) << "a narrow cone seen from outside takes no wedge";
-    EXPECT_LT(first.first, first.second);
-    for (float degrees = 3.0f; degrees <= 40.0f && above == 0.0f; degrees += 1.0f) {
-        const auto next = renderAt(degrees);
-        if (next.first != 0) {
-            EXPECT_GE(next.first, slices.first) << degrees << " degrees";
-        }
-        if (next != slices) {
-            below = degrees - 1.0f;
-            above = degrees;
-            grown = next;
-        }
-        slices = next;
-    }
-    ASSERT_GT(above, 0.0f) << "the wedge never grew from " << first.first;
-    std::printf("the wedge grows between %.0f and %.0f degrees: %u -> %u of %u slices\n", below,
-                above, first.first, grown.first, grown.second);
-    for (int k = 0; k < 4; ++k) {
-        EXPECT_EQ(renderAt(below), grown) << "back to " << below << " degrees, round " << k;
-        EXPECT_EQ(renderAt(above), grown) << "at " << above << " degrees, round " << k;
-    }
+    const CountStep s = widenUntilTheCountsGrow(renderAt, 2.0f, 1.0f, 40.0f);
+    ASSERT_GT(s.first.first, 0u) << "a narrow cone seen from outside takes no wedge";
+    EXPECT_LT(s.first.first, s.first.second);
+    ASSERT_GT(s.above, 0.0f) << "the wedge never grew from " << s.first.first;
+    std::printf("the wedge grows between %.0f and %.0f degrees: %u -> %u of %u slices\n", s.below,
+                s.above, s.first.first, s.grown.first, s.grown.second);
+    expectTheStepKept(renderAt, s);
 }
