@@ -25,31 +25,73 @@ bool cubeFaceReachesView(int face) { return ((int(epipolar.cubeFaces.x) >> face)
 // The march's order: the ray march renders its samples, and the stencil that marks them, into
 // textures of their own whose texels are ordered so that the samples marched together are
 // neighbours. With P phases (epipolar.march.x: the initial step, where it divides the samples per
-// line S), sample k = q P + r of slice j = 4 u + v (v < 4) is texel (4 q + v, u) of phase r's
-// block, S / P x 4 wide and slices / 4 tall, and the P blocks tile the texture in rows of
-// epipolar.march.y (the march's texture is as large as the samples', S x slices when P is a
-// square power of two). So the initial grid's ray-marching samples (r = 0) fill the first block,
-// and each 4 x 4 texels hold one k of 16 neighbouring slices. A device shades blocks of
-// neighbouring pixels together (a GPU 2 x 2 quads, lavapipe 4 x 4 blocks in 8-wide vectors): in
-// the samples' own order the grid was one column in P, and most of every block the march shaded
-// was masked out by the stencil; one k of neighbouring slices marches nearly alike. Every other
-// samples x slices texture keeps sample k of slice j at (k, j). P = 1: the march's order is that.
+// line S), the texture is P blocks of S / P x 4 by slices / 4 texels, in rows of epipolar.march.y
+// (as large as the samples', S x slices when P is a square power of two). Sample k = q P + r of
+// slice j = 4 u + v (v < 4) is texel (4 q + v, u) of block r when r = 0 or q = 0: the initial grid
+// fills block 0 and each 4 x 4 texels hold one k of 16 neighbouring slices, which march nearly
+// alike (so do the first samples of the lines, cut at 1, 2, 4, ... next to a light on screen,
+// in the first four columns of the other blocks). The samples with r > 0 and q > 0, which the
+// march takes only where refinement put them (on both sides of a depth break: a few consecutive k
+// of neighbouring slices), are numbered m = (q - 1)(P - 1) + r - 1 along their line; block
+// 1 + m / (S / P - 1) holds them past its first four columns, 4 slices at each m in turn, 16 to a
+// tile of 4 x 4 texels, so a break's samples share tiles. (With a block per phase k % P, as
+// before, each refined sample was alone in its 4 x 4 texels: the atrium's 7148 refined samples
+// took two thirds of its march's time.) The tiles need the slices a multiple of 16; otherwise
+// every sample keeps its phase's block. A device shades blocks of neighbouring pixels together (a
+// GPU 2 x 2 quads, lavapipe 4 x 4 blocks in 8-wide vectors), and the stencil masks out the
+// samples a block does not march. Every other samples x slices texture keeps sample k of slice j
+// at (k, j). P = 1: the march's order is that.
+
+// (a / b, a % b) for a >= 0 and b > 0, from the float quotient corrected by one (it is within one
+// of a / b for a and b below 2^24, far beyond any texture's size): lavapipe has no vector integer
+// division and divides lane by lane, and the march's order divides by uniforms that are not
+// powers of two (P - 1, S / P - 1, the block's size) in every pass that reads its textures.
+ivec2 divMod(int a, int b) {
+    int q = int(float(a) / float(b));
+    int r = a - q * b;
+    if (r < 0) return ivec2(q - 1, r + b);
+    if (r >= b) return ivec2(q + 1, r - b);
+    return ivec2(q, r);
+}
+// How many q >= 1 of a line each of the blocks 1 to P - 1 holds (S / P - 1), 0 where they keep a
+// block per phase.
+int marchTileRun(int logPhases) {
+    int run = (int(epipolar.sampling.y) >> logPhases) - 1;
+    return (int(epipolar.sampling.x) & 15) == 0 ? run : 0;
+}
 ivec2 marchTexel(int k, int slice) {
     int phases = int(epipolar.march.x);
     if (phases <= 1) return ivec2(k, slice);
-    int across = int(epipolar.march.y), r = k % phases;
-    ivec2 block = ivec2(r % across, r / across) *
-                  ivec2(int(epipolar.sampling.y) / phases * 4, int(epipolar.sampling.x) / 4);
-    return block + ivec2(4 * (k / phases) + (slice & 3), slice >> 2);
+    int logPhases = findLSB(phases), across = int(epipolar.march.y);
+    ivec2 size = ivec2((int(epipolar.sampling.y) >> logPhases) * 4, int(epipolar.sampling.x) >> 2);
+    int q = k >> logPhases, block = k & (phases - 1);
+    ivec2 t = ivec2(4 * q + (slice & 3), slice >> 2);
+    int run = marchTileRun(logPhases);
+    if (block != 0 && q != 0 && run > 0) {
+        ivec2 m = divMod((q - 1) * (phases - 1) + block - 1, run);
+        block = 1 + m.x;
+        int e = (slice >> 2) * 4 * run + 4 * m.y + (slice & 3);  // 4 slices at each m in turn
+        ivec2 tile = divMod(e >> 4, run);
+        t = ivec2(4 + 4 * tile.y + (e & 3), 4 * tile.x + ((e >> 2) & 3));
+    }
+    return ivec2(block & (across - 1), block >> findLSB(across)) * size + t;
 }
 // The sample (k, slice) at the march's texel t.
 ivec2 sampleOfMarchTexel(ivec2 t) {
     int phases = int(epipolar.march.x);
     if (phases <= 1) return t;
-    ivec2 size = ivec2(int(epipolar.sampling.y) / phases * 4, int(epipolar.sampling.x) / 4);
-    ivec2 block = t / size, in_ = t % size;
-    int r = block.y * int(epipolar.march.y) + block.x;
-    return ivec2((in_.x >> 2) * phases + r, in_.y * 4 + (in_.x & 3));
+    int logPhases = findLSB(phases);
+    ivec2 size = ivec2((int(epipolar.sampling.y) >> logPhases) * 4, int(epipolar.sampling.x) >> 2);
+    ivec2 x = divMod(t.x, size.x), y = divMod(t.y, size.y);
+    int block = (y.x << findLSB(int(epipolar.march.y))) + x.x;
+    int run = marchTileRun(logPhases);
+    if (block != 0 && x.y >= 4 && run > 0) {
+        int tile = (y.y >> 2) * run + ((x.y - 4) >> 2);
+        ivec2 e = divMod(16 * tile + 4 * (y.y & 3) + (x.y & 3), 4 * run);
+        ivec2 m = divMod((block - 1) * run + (e.y >> 2), phases - 1);
+        return ivec2(((m.x + 1) << logPhases) + m.y + 1, 4 * e.x + (e.y & 3));
+    }
+    return ivec2(((x.y >> 2) << logPhases) + block, y.y * 4 + (x.y & 3));
 }
 
 // Whether a sample is valid (on the screen, on a slice that enters it), from its epipolar z: the
