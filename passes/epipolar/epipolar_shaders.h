@@ -12,7 +12,7 @@ namespace ls {
 rg::ShaderCode rayMarchShader(const ScatterSpec& spec, bool trees, bool countSteps);
 // table: the point-light table is read (any light but a directional one).
 rg::ShaderCode unwarpShader(bool table, const CompositeVariant& target);
-rg::ShaderCode minMaxFirstLevelShader(bool cubeShadow);
+rg::ShaderCode minMaxTreesShader(bool cubeShadow);
 rg::ShaderCode sliceUvFrameShader(bool cubeShadow);
 // What a frame's later light's unwarp and fix-up draw (shaders/epipolar/window_wedge.vert):
 // kWedgeVertices vertices, the wedge of a windowed light's lines or the whole viewport.

@@ -15,11 +15,10 @@
 // slice_uv_frame.comp
 #define LS_BINDING_UV_FRAME_END_POINTS 1
 #define LS_BINDING_UV_FRAME_OUT 2
-// min_max_first_level.comp, min_max_next_level.comp
+// min_max_trees.comp
 #define LS_BINDING_TREE_SHADOW_MAP 1
 #define LS_BINDING_TREE_UV_FRAME 2
-#define LS_BINDING_TREE_FIRST_LEVEL 3
-#define LS_BINDING_TREE_LEVEL 0
+#define LS_BINDING_TREE_OUT 3
 // refine_samples.comp
 #define LS_BINDING_REFINE_EPIPOLAR_Z 1
 #define LS_BINDING_REFINE_SOURCES 2

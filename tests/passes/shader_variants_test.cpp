@@ -17,7 +17,7 @@
 #include "froxels/froxel_shaders.h"
 #include "inject_comp_variants.h"
 #include "integrate_comp_variants.h"
-#include "min_max_first_level_comp_variants.h"
+#include "min_max_trees_comp_variants.h"
 #include "pixel_march_frag_variants.h"
 #include "planes/plane_shaders.h"
 #include "planes_frag_variants.h"
@@ -82,13 +82,13 @@ TEST(ShaderVariants, EpipolarNodesAskForBuiltVariants) {
     for (bool table : {false, true})
         forEachTarget([&](const CompositeVariant& t) { reach(unwarp, unwarpShader(table, t)); });
     for (bool cube : {false, true}) {
-        reach(minMax, minMaxFirstLevelShader(cube));
+        reach(minMax, minMaxTreesShader(cube));
         reach(uvFrame, sliceUvFrameShader(cube));
     }
     expectAllReached(ls_spirv::ray_march_frag_variants, rayMarch);
     expectAllReached(ls_spirv::pixel_march_frag_variants, pixelMarch);
     expectAllReached(ls_spirv::unwarp_frag_variants, unwarp);
-    expectAllReached(ls_spirv::min_max_first_level_comp_variants, minMax);
+    expectAllReached(ls_spirv::min_max_trees_comp_variants, minMax);
     expectAllReached(ls_spirv::slice_uv_frame_comp_variants, uvFrame);
 }
 
