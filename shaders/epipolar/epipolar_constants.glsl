@@ -54,6 +54,10 @@ ivec2 divMod(int a, int b) {
     if (r >= b) return ivec2(q + 1, r - b);
     return ivec2(q, r);
 }
+// A block of the march's texture: S / P x 4 by slices / 4 texels.
+ivec2 marchBlockSize(int logPhases) {
+    return ivec2((int(epipolar.sampling.y) >> logPhases) * 4, int(epipolar.sampling.x) >> 2);
+}
 // How many q >= 1 of a line each of the blocks 1 to P - 1 holds (S / P - 1), 0 where they keep a
 // block per phase.
 int marchTileRun(int logPhases) {
@@ -64,7 +68,7 @@ ivec2 marchTexel(int k, int slice) {
     int phases = int(epipolar.march.x);
     if (phases <= 1) return ivec2(k, slice);
     int logPhases = findLSB(phases), across = int(epipolar.march.y);
-    ivec2 size = ivec2((int(epipolar.sampling.y) >> logPhases) * 4, int(epipolar.sampling.x) >> 2);
+    ivec2 size = marchBlockSize(logPhases);
     int q = k >> logPhases, block = k & (phases - 1);
     ivec2 t = ivec2(4 * q + (slice & 3), slice >> 2);
     int run = marchTileRun(logPhases);
@@ -82,7 +86,7 @@ ivec2 sampleOfMarchTexel(ivec2 t) {
     int phases = int(epipolar.march.x);
     if (phases <= 1) return t;
     int logPhases = findLSB(phases);
-    ivec2 size = ivec2((int(epipolar.sampling.y) >> logPhases) * 4, int(epipolar.sampling.x) >> 2);
+    ivec2 size = marchBlockSize(logPhases);
     ivec2 x = divMod(t.x, size.x), y = divMod(t.y, size.y);
     int block = (y.x << findLSB(int(epipolar.march.y))) + x.x;
     int run = marchTileRun(logPhases);
