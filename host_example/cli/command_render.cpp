@@ -34,6 +34,7 @@ nlohmann::json stepsJson(const lightscatter::StepCounts& s) {
         {"treeNodes", s.treeNodes},
         {"degenerateRays", s.degenerateRays},
         {"degenerateSteps", s.degenerateSteps},
+        {"listedSamples", s.listedSamples},
         {"stepsPerSample", static_cast<double>(s.lineSteps + s.degenerateSteps) / n},
         {"nodesPerSample", static_cast<double>(s.treeNodes) / n},
         {"degenerateShare",

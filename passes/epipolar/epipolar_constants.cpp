@@ -26,8 +26,9 @@ EpipolarConstants makeEpipolarConstants(const lightscatter::EpipolarSettings& s,
     c.cubeFaces = {static_cast<float>(kAllCubeFaces), 0.0f, 0.0f, 0.0f};
     c.bounds = bounds;
     const uint32_t phases = marchPhases(s);
-    c.march = {static_cast<float>(phases), static_cast<float>(marchBlocksPerRow(phases)), 0.0f,
-               0.0f};
+    const bool list = marchesFromList(s, c.marching.z > 0.0f);
+    c.march = {static_cast<float>(phases), static_cast<float>(marchBlocksPerRow(phases)),
+               list ? 1.0f : 0.0f, 0.0f};
     c.window = {0.0f, static_cast<float>(s.slices), 0.0f, 0.0f};  // every slice of the border
     return c;
 }
@@ -35,6 +36,12 @@ EpipolarConstants makeEpipolarConstants(const lightscatter::EpipolarSettings& s,
 uint32_t marchPhases(const lightscatter::EpipolarSettings& s) {
     const uint32_t p = s.initialSampleStep;
     return p > 1 && s.samplesPerSlice % p == 0 && s.slices % 4 == 0 ? p : 1;
+}
+
+bool marchesFromList(const lightscatter::EpipolarSettings& s, bool inscatterRefinement) {
+    const uint32_t phases = marchPhases(s);
+    return phases > 1 && s.samplesPerSlice / phases >= 2 && s.slices % 16 == 0 &&
+           !inscatterRefinement;
 }
 
 uint32_t marchBlocksPerRow(uint32_t phases) {

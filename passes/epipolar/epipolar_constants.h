@@ -32,6 +32,13 @@ uint32_t marchPhases(const lightscatter::EpipolarSettings& s);
 // How many phase blocks a row of the march's textures holds: 2^ceil(log2(phases) / 2), so that
 // the textures stay about as square as the samples'.
 uint32_t marchBlocksPerRow(uint32_t phases);
+// Whether the first march takes the samples of the march order's tiles (those off the initial
+// grid past a line's first phase: marched only where the refinement put them, on both sides of a
+// depth break) from a list the refinement compacts, 16 to a tile, rather than where their tiles
+// keep them: wherever there are tiles (slices a multiple of 16, two or more samples a phase) and
+// no second march follows (the refinement on in-scattering marks samples where the tiles keep
+// them). In their tiles a break's samples left most of each 4 x 4 block of fragments idle.
+bool marchesFromList(const lightscatter::EpipolarSettings& s, bool inscatterRefinement);
 
 // The light's own block (no cube face) for its settings and shadow map.
 // A point or spot light in a non-uniform medium has no closed-form unshadowed Lin per pixel to take

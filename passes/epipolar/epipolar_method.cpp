@@ -82,6 +82,7 @@ void EpipolarMethod::readStepCounts(const void* counters, uint64_t bytes,
     out.treeNodes = at(StepCount::TreeNodes);
     out.degenerateRays = at(StepCount::DegenerateRays);
     out.degenerateSteps = at(StepCount::DegenerateSteps);
+    out.listedSamples = at(StepCount::Listed);
 }
 
 bool EpipolarMethod::readsTable(const LightSetup& s) const {
@@ -136,6 +137,7 @@ ChainOptions EpipolarMethod::options(const LightSetup& s, const LightData* data,
     o.minMaxTrees = e.minMaxTrees && treesFit(s.light.shadowMapSize);
     o.fixup = e.fixup;
     o.inscatterRefinement = inscatterRefinementOf(e, refinesByDefault(s)) > 0.0f;
+    o.marchList = marchesFromList(e, o.inscatterRefinement);
     return ChainOptions(o);
 }
 
@@ -152,7 +154,7 @@ ChainOutputs EpipolarMethod::addChain(rg::RenderGraph& g, ChainLights lights,
         return out;
     }
     const Options& o = *c.options.get<Options>();
-    const EpipolarOptions options{.sizes = {o.slices, o.samples, o.marchPhases},
+    const EpipolarOptions options{.sizes = {o.slices, o.samples, o.marchPhases, o.marchList},
                                   .minMaxTrees = o.minMaxTrees,
                                   .fixup = o.fixup,
                                   .cubeShadow = c.light == LightType::Point,

@@ -15,6 +15,7 @@ class EpipolarMethod final : public MethodUnit {
         bool minMaxTrees = true;
         bool fixup = true;
         bool inscatterRefinement = false;  // a second march where marched samples differ
+        bool marchList = false;            // marchesFromList (epipolar_constants.h)
         bool operator==(const Options&) const = default;
     };
     const char* name() const override { return "epipolar"; }

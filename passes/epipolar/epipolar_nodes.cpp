@@ -12,9 +12,12 @@ EpipolarOutputs addEpipolarNodes(rg::RenderGraph& g, const EpipolarInputs& in,
     const rg::ImageRef endPoints = addSliceEndPoints(g, {chain, epipolar}, sizes);
     const EpipolarCoordinates samples =
         addEpipolarCoordinates(g, {chain, epipolar, endPoints}, sizes);
-    rg::ImageRef sources = addRefineSamples(g, {chain, epipolar, samples.epipolarZ}, sizes);
+    const RefinedSamples refined = addRefineSamples(
+        g, {chain, epipolar, samples.epipolarZ, addClearMarchList(g, sizes)}, sizes);
+    rg::ImageRef sources = refined.sources;
+    const rg::BufferRef list = refined.marchList;
     rg::ImageRef marking =
-        addMarkRayMarchSamples(g, {chain, epipolar, sources, samples.epipolarZ, {}}, sizes);
+        addMarkRayMarchSamples(g, {chain, epipolar, sources, samples.epipolarZ, list, {}}, sizes);
     // The shadow map's part: the line of every slice in it, the trees along those lines and the
     // march (a point light's cube map: the six faces' in each pass). Both marches read the same
     // lines and trees.
@@ -27,7 +30,7 @@ EpipolarOutputs addEpipolarNodes(rg::RenderGraph& g, const EpipolarInputs& in,
         const EpipolarRayMarch m =
             addEpipolarRayMarch(g,
                                 {chain, epipolar, in.light, samples.coordinates, samples.epipolarZ,
-                                 uvFrame, endPoints, marking, trees, accumulate, counts},
+                                 uvFrame, endPoints, marking, list, trees, accumulate, counts},
                                 {sizes, marks});
         counts = m.stepCounts;
         return m.marched;
@@ -39,8 +42,8 @@ EpipolarOutputs addEpipolarNodes(rg::RenderGraph& g, const EpipolarInputs& in,
                                           sizes);
         const std::string suffix = g.nameSuffix();
         g.setNameSuffix(suffix + " (refinement)");
-        marking = addMarkRayMarchSamples(g, {chain, epipolar, sources, samples.epipolarZ, marking},
-                                         sizes);
+        marking = addMarkRayMarchSamples(
+            g, {chain, epipolar, sources, samples.epipolarZ, list, marking}, sizes);
         marched = march(marched, kRefinementMarch);
         g.setNameSuffix(suffix);
     }

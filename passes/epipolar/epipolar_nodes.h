@@ -16,12 +16,18 @@ struct EpipolarSizes {
     uint32_t slices = 1024;
     uint32_t samples = 1024;
     uint32_t marchPhases = 1;  // the march's order (marchPhases in epipolar_constants.h)
+    bool marchList = false;    // the tiles' samples marched from a list (marchesFromList)
     // The extent of the march's textures (the marched samples and the march's stencil): the
     // samples x slices, in the march's order (shaders/epipolar/epipolar_constants.glsl).
     VkExtent2D marchExtent() const {
         if (marchPhases <= 1) return {samples, slices};
         const uint32_t across = marchBlocksPerRow(marchPhases);
         return {across * (samples / marchPhases * 4), marchPhases / across * (slices / 4)};
+    }
+    // The march list's entries: an eighth of the samples the tiles hold ((P - 1)(S / P - 1) a
+    // slice; marchListCapacity in shaders/epipolar/epipolar_constants.glsl); none without the list.
+    uint32_t marchListCapacity() const {
+        return marchList ? (marchPhases - 1) * (samples / marchPhases - 1) * slices / 8 : 0;
     }
 };
 
@@ -55,14 +61,25 @@ struct EpipolarCoordinates {
 EpipolarCoordinates addEpipolarCoordinates(rg::RenderGraph& g, const EpipolarCoordinatesInputs& in,
                                            const EpipolarSizes& s);
 
-// Each sample's two interpolation sources: RG16UI, samples x slices.
+// The march list (EpipolarSizes::marchList): a storage buffer of a count and the entries of the
+// tiles' samples the first march takes (k | slice << 16, shaders/epipolar/epipolar_constants.glsl),
+// its count zeroed. Without the list, the count alone (the shaders that read it then never do).
+rg::BufferRef addClearMarchList(rg::RenderGraph& g, const EpipolarSizes& s);
+
+// Each sample's two interpolation sources: RG16UI, samples x slices; and the march list, the tiles'
+// ray-marching samples appended.
 struct RefineSamplesInputs {
     ChainContext chain;
     EpipolarContext epipolar;
     rg::ImageRef epipolarZ;
+    rg::BufferRef marchList;  // cleared (addClearMarchList)
 };
-rg::ImageRef addRefineSamples(rg::RenderGraph& g, const RefineSamplesInputs& in,
-                              const EpipolarSizes& s);
+struct RefinedSamples {
+    rg::ImageRef sources;
+    rg::BufferRef marchList;
+};
+RefinedSamples addRefineSamples(rg::RenderGraph& g, const RefineSamplesInputs& in,
+                                const EpipolarSizes& s);
 
 // Each slice's line in the shadow map, origin and direction: RGBA32F, slices x 1; a point light's
 // cube map: slices x 6, a row per face (zero for a face out of view, as for a slice off the map).
@@ -98,13 +115,16 @@ struct MarkRayMarchInputs {
     ChainContext chain;
     EpipolarContext epipolar;
     rg::ImageRef interpolationSource, epipolarZ;
+    rg::BufferRef marchList;    // its count marks the tiles' first slots
     rg::ImageRef marchStencil;  // invalid: the first marking
 };
 rg::ImageRef addMarkRayMarchSamples(rg::RenderGraph& g, const MarkRayMarchInputs& in,
                                     const EpipolarSizes& s);
 
 // Lin (or the shadowed fraction) of the ray-marching samples (options.marks in the march's
-// stencil): RGBA16F, samples x slices in the march's order. Reads the light's images; without trees
+// stencil): RGBA16F, samples x slices in the march's order, stored (a storage image: a slot of the
+// march list stores its sample's value at the sample's texel); texels of samples not marched are
+// left undefined, and no pass reads them. Reads the light's images; without trees
 // every sample is marched texel by texel. A point light's cube map is marched in the same pass,
 // each ray's part in each face along that face's line and trees. The refinement march writes its
 // samples into `accumulate`, keeping the first march's samples.
@@ -115,6 +135,7 @@ struct EpipolarRayMarchInputs {
     rg::ImageRef coordinates, epipolarZ, sliceUvFrame;
     rg::ImageRef sliceEndPoints;  // read with a point light's cube map only
     rg::ImageRef marchStencil;    // after the marking
+    rg::BufferRef marchList;      // the samples the tiles' marked slots march
     rg::ImageRef trees;           // invalid: marched without trees
     rg::ImageRef accumulate;      // invalid: a new texture (the first march)
     // The step counter (step_counts.h), cleared; invalid: the plain variant, nothing counted.

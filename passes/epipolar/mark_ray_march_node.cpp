@@ -15,7 +15,8 @@ rg::ImageRef addMarkRayMarchSamples(rg::RenderGraph& g, const MarkRayMarchInputs
     const auto& sm = samplersOf(in.chain.shared);
     rg::BindingTable table = epipolarTable(pass, in.chain, in.epipolar);
     table.sampled(LS_BINDING_INTERPOLATION_SOURCE, in.interpolationSource, sm.nearest())
-        .sampled(LS_BINDING_SOURCES_EPIPOLAR_Z, in.epipolarZ, sm.nearest());
+        .sampled(LS_BINDING_SOURCES_EPIPOLAR_Z, in.epipolarZ, sm.nearest())
+        .storageBufferRead(LS_BINDING_MARK_LIST, in.marchList);
     const rg::ImageRef stencil =
         refinement
             ? in.marchStencil

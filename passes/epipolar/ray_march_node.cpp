@@ -33,7 +33,8 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const EpipolarRayMarchI
         g.addPass(trees ? "ray march with min/max trees" : "ray march", rg::PassType::Graphics);
     const auto& sm = samplersOf(in.chain.shared);
     rg::BindingTable table = epipolarTable(pass, in.chain, in.epipolar);
-    table.sampled(LS_BINDING_MARCH_COORDINATES, in.coordinates, sm.nearest())
+    table.storageBufferRead(LS_BINDING_MARCH_LIST, in.marchList)
+        .sampled(LS_BINDING_MARCH_COORDINATES, in.coordinates, sm.nearest())
         .sampled(LS_BINDING_MARCH_EPIPOLAR_Z, in.epipolarZ, sm.nearest())
         .sampled(LS_BINDING_MARCH_UV_FRAME, in.sliceUvFrame, sm.nearest())
         .sampledIfValid(LS_BINDING_MARCH_TREES, in.trees, sm.nearest());
@@ -44,8 +45,9 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const EpipolarRayMarchI
         table.storageBufferReadWriteIfValid(LS_BINDING_MARCH_STEP_COUNTS, in.stepCounts);
     pass.stencilTest(in.marchStencil);
     pass.countSamples();  // the samples marched (FrameReport's PassTime::samples)
-    marched =
-        pass.colorAttachment(marched, in.accumulate.valid() ? rg::LoadOp::Load : rg::LoadOp::Clear);
+    // Stored, not a color attachment: a slot of the march list stores its sample's value at the
+    // sample's texel. The second march adds its samples to the first's.
+    marched = table.storageWrite(LS_BINDING_MARCH_OUT, marched);
     pass.execute([frame = in.chain, table, trees, color, counts,
                   marks = options.marks](rg::PassContext& ctx) {
         const Shared& shared = frame.shared;

@@ -7,8 +7,8 @@
 
 namespace ls {
 
-rg::ImageRef addRefineSamples(rg::RenderGraph& g, const RefineSamplesInputs& in,
-                              const EpipolarSizes& s) {
+RefinedSamples addRefineSamples(rg::RenderGraph& g, const RefineSamplesInputs& in,
+                                const EpipolarSizes& s) {
     rg::ImageRef sources =
         g.createImage("interpolation source",
                       rg::ImageDesc::absolute(VK_FORMAT_R16G16_UINT, s.samples, s.slices));
@@ -17,6 +17,7 @@ rg::ImageRef addRefineSamples(rg::RenderGraph& g, const RefineSamplesInputs& in,
     table.sampled(LS_BINDING_REFINE_EPIPOLAR_Z, in.epipolarZ,
                   samplersOf(in.chain.shared).nearest());
     sources = table.storageWrite(LS_BINDING_REFINE_SOURCES, sources);
+    const rg::BufferRef list = table.storageBufferReadWrite(LS_BINDING_REFINE_LIST, in.marchList);
     pass.execute(
         [shared = in.chain.shared, light = in.chain.spec.light, table, s](rg::PassContext& ctx) {
             // The light type only: near a point or spot light the first section is cut
@@ -30,7 +31,7 @@ rg::ImageRef addRefineSamples(rg::RenderGraph& g, const RefineSamplesInputs& in,
             table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
             ctx.vk().CmdDispatch(ctx.cmd(), groupCount(s.samples, 128), s.slices, 1);
         });
-    return sources;
+    return {sources, list};
 }
 
 }  // namespace ls

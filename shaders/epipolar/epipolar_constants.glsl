@@ -81,22 +81,70 @@ ivec2 marchTexel(int k, int slice) {
     }
     return ivec2(block & (across - 1), block >> findLSB(across)) * size + t;
 }
+// Where the march's texel t lies: x its block, y its place among the block's tiles (16 to a tile,
+// row by row within it, the tiles row by row), or -1 outside the tiles; zw its place in the block.
+ivec4 marchTexelPlace(ivec2 t, int logPhases) {
+    ivec2 size = marchBlockSize(logPhases);
+    ivec2 x = divMod(t.x, size.x), y = divMod(t.y, size.y);
+    int block = (y.x << findLSB(int(epipolar.march.y))) + x.x;
+    int run = marchTileRun(logPhases);
+    int place = -1;
+    if (block != 0 && x.y >= 4 && run > 0)
+        place = 16 * ((y.y >> 2) * run + ((x.y - 4) >> 2)) + 4 * (y.y & 3) + (x.y & 3);
+    return ivec4(block, place, x.y, y.y);
+}
+// The sample (k, slice) at the march's place `at` (marchTexelPlace).
+ivec2 sampleOfMarchPlace(ivec4 at, int logPhases) {
+    if (at.y >= 0) {
+        int run = marchTileRun(logPhases);
+        ivec2 e = divMod(at.y, 4 * run);
+        ivec2 m = divMod((at.x - 1) * run + (e.y >> 2), (1 << logPhases) - 1);
+        return ivec2(((m.x + 1) << logPhases) + m.y + 1, 4 * e.x + (e.y & 3));
+    }
+    return ivec2(((at.z >> 2) << logPhases) + at.x, at.w * 4 + (at.z & 3));
+}
 // The sample (k, slice) at the march's texel t.
 ivec2 sampleOfMarchTexel(ivec2 t) {
     int phases = int(epipolar.march.x);
     if (phases <= 1) return t;
     int logPhases = findLSB(phases);
-    ivec2 size = marchBlockSize(logPhases);
-    ivec2 x = divMod(t.x, size.x), y = divMod(t.y, size.y);
-    int block = (y.x << findLSB(int(epipolar.march.y))) + x.x;
-    int run = marchTileRun(logPhases);
-    if (block != 0 && x.y >= 4 && run > 0) {
-        int tile = (y.y >> 2) * run + ((x.y - 4) >> 2);
-        ivec2 e = divMod(16 * tile + 4 * (y.y & 3) + (x.y & 3), 4 * run);
-        ivec2 m = divMod((block - 1) * run + (e.y >> 2), phases - 1);
-        return ivec2(((m.x + 1) << logPhases) + m.y + 1, 4 * e.x + (e.y & 3));
+    return sampleOfMarchPlace(marchTexelPlace(t, logPhases), logPhases);
+}
+
+// The march list (marchesFromList in epipolar_constants.h): the refinement appends the samples of
+// the tiles it marches, and the first march takes slot i of the list at the tiles' i-th texel (in
+// marchTexelPlace's order, block after block), so that the list fills whole tiles; each sample's
+// value still goes to its own texel, marchTexel, where the later passes read it. The list holds an
+// eighth of the tiles' samples (far more than depth breaks take: the atrium's, at 1920x1080, take
+// 1.7%); a frame whose refinement gives it more marches them in their tiles instead, every texel
+// its own sample, as without a list. The list's entries: k | slice << 16.
+bool marchesFromList() { return epipolar.march.z > 0.5; }
+int marchListCapacity(int logPhases) {
+    return (((1 << logPhases) - 1) * marchTileRun(logPhases) * int(epipolar.sampling.x)) >> 3;
+}
+// The list's slot that the march's texel t marches, or -1 where it marches its own sample, `at`:
+// outside the tiles, or without a list, or where the list's `count` ran past it.
+int marchListSlot(ivec2 t, uint count, out ivec2 at) {
+    int phases = int(epipolar.march.x);
+    if (phases <= 1) {
+        at = t;
+        return -1;
     }
-    return ivec2(((x.y >> 2) << logPhases) + block, y.y * 4 + (x.y & 3));
+    int logPhases = findLSB(phases);
+    ivec4 place = marchTexelPlace(t, logPhases);
+    if (place.y >= 0 && marchesFromList() && count <= uint(marchListCapacity(logPhases)))
+        return (place.x - 1) * marchTileRun(logPhases) * int(epipolar.sampling.x) + place.y;
+    at = sampleOfMarchPlace(place, logPhases);
+    return -1;
+}
+uint marchListEntry(ivec2 p) { return uint(p.x) | (uint(p.y) << 16); }
+ivec2 marchListSample(uint entry) { return ivec2(entry & 0xffffu, entry >> 16); }
+// Whether sample k of a line is one of the tiles' (q >= 1, r >= 1, with tiles).
+bool inMarchTiles(int k) {
+    int phases = int(epipolar.march.x);
+    if (phases <= 1) return false;
+    int logPhases = findLSB(phases);
+    return (k & (phases - 1)) != 0 && (k >> logPhases) != 0 && marchTileRun(logPhases) > 0;
 }
 
 // Whether a sample is valid (on the screen, on a slice that enters it), from its epipolar z: the

@@ -17,7 +17,9 @@ LS_VEC4 cubeFaces;
 // where its rays may cross every pixel
 LS_VEC4 bounds;
 // x: the march's phases P (its order, marchTexel in epipolar_constants.glsl; 1: a sample's own
-// texel), y: its phase blocks per row (marchBlocksPerRow in epipolar_constants.h), zw: -
+// texel), y: its phase blocks per row (marchBlocksPerRow in epipolar_constants.h), z: 1 where the
+// first march takes the samples of the tiles from the refinement's list (marchesFromList in
+// epipolar_constants.h), w: -
 LS_VEC4 march;
 // The slices the light's lines take of those its border is divided into (y, a quarter per edge, in
 // the border's order): x, the first; the light's own count is sampling.x. Where that is a part of

@@ -47,11 +47,8 @@ const int kCountLineSteps = LS_COUNT_LINE_STEPS;
 const int kCountTreeNodes = LS_COUNT_TREE_NODES;
 const int kCountDegenerateRays = LS_COUNT_DEGENERATE_RAYS;
 const int kCountDegenerateSteps = LS_COUNT_DEGENERATE_STEPS;
+const int kCountListed = LS_COUNT_LISTED;
 const int kCountStride = LS_COUNT_STRIDE;
-// Stores to a buffer make the stencil test late unless asked otherwise: every sample's invocation
-// would run (and count), not only the ray-marching samples'. The plain variant stores nothing, so
-// the stencil test may run first there anyway.
-layout(early_fragment_tests) in;
 layout(std430, binding = LS_BINDING_MARCH_STEP_COUNTS) buffer StepCounts { uint stepCounts[]; };
 uint countedLookups = 0u;
 #define LS_COUNT_LOOKUP() ++countedLookups
@@ -60,12 +57,20 @@ uint countedLookups = 0u;
 #define COUNT(x)
 #endif
 #include "march.glsl"
-layout(location = 0) out vec4 outInscatter;
+// Each sample's value is stored at its own texel (marchTexel), which is not the fragment's where it
+// came from the march list. Stores make the stencil test late unless asked otherwise: every
+// texel's invocation would run (and count), not only the ray-marching samples'.
+layout(early_fragment_tests) in;
+layout(binding = LS_BINDING_MARCH_OUT, rgba16f) uniform writeonly image2D marched;
+layout(std430, binding = LS_BINDING_MARCH_LIST) readonly buffer MarchList {
+    uint count;
+    uint entries[];
+} marchList;
 
 #if defined(LS_COUNT_STEPS) && LS_COUNT_STEPS
-uint counted[6] = uint[6](0u, 0u, 0u, 0u, 0u, 0u);
+uint counted[LS_COUNTERS] = uint[LS_COUNTERS](0u, 0u, 0u, 0u, 0u, 0u, 0u);
 void flushCounts(int slice) {
-    for (int k = 0; k < 6; ++k)
+    for (int k = 0; k < LS_COUNTERS; ++k)
         if (counted[k] != 0u) atomicAdd(stepCounts[slice * kCountStride + k], counted[k]);
 }
 #endif
@@ -294,8 +299,11 @@ vec3 marchSample(vec3 C, vec3 v, float S, int slice) {
 #endif
 
 void main() {
-    // The fragment is the sample's texel in the march's order (marchTexel); p is the sample.
-    ivec2 p = sampleOfMarchTexel(ivec2(gl_FragCoord.xy));
+    // The fragment is the sample's texel in the march's order (marchTexel), or a slot of the march
+    // list; p is the sample.
+    ivec2 t = ivec2(gl_FragCoord.xy), p;
+    int slot = marchListSlot(t, marchList.count, p);
+    if (slot >= 0) p = marchListSample(marchList.entries[slot]);
     vec2 ndc = texelFetch(coordinates, p, 0).xy * 2.0 - 1.0;
 #if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
     // Back onto the slice's line, off which the coordinates' rounding put it (RG16: 1.5e-5 of the
@@ -313,6 +321,7 @@ void main() {
     vec3 lin = marchSample(C, v, S, p.y);
 #if defined(LS_COUNT_STEPS) && LS_COUNT_STEPS
     ++counted[kCountSamples];
+    if (slot >= 0) ++counted[kCountListed];
     flushCounts(p.y);
 #endif
     float defined = 1.0;
@@ -327,5 +336,5 @@ void main() {
     } else {
         lin = storedLin(lin);  // samples carry Lin itself (Interpolation::Inscattering)
     }
-    outInscatter = vec4(lin, defined);
+    imageStore(marched, slot >= 0 ? marchTexel(p.x, p.y) : t, vec4(lin, defined));
 }

@@ -5,13 +5,21 @@
 // ray-marching sample on each side. One workgroup covers 128 samples of one slice: each thread sets a
 // bit per break in shared memory, then finds its two sources with findMSB/findLSB on the masks.
 // Near a point or spot light's screen position the first section of each line is cut geometrically
-// (below).
+// (below). With the march list (marchesFromList), each ray-marching sample of the march order's
+// tiles also takes the list's next slot: one atomic add per such sample (a few percent of the
+// samples), which kept this pass's time where it was on lavapipe, where a workgroup's slots
+// reserved at once, behind two more barriers, made it 1.8 times slower.
 #include "epipolar_constants.glsl"
 #include "frame.glsl"
 #include "epipolar_bindings.h"
 layout(local_size_x = 128) in;
 layout(binding = LS_BINDING_REFINE_EPIPOLAR_Z) uniform sampler2D epipolarZ;
 layout(binding = LS_BINDING_REFINE_SOURCES, rg16ui) uniform writeonly uimage2D interpolationSource;
+// The march list (marchesFromList in epipolar_constants.glsl), its count cleared before this pass.
+layout(std430, binding = LS_BINDING_REFINE_LIST) buffer MarchList {
+    uint count;
+    uint entries[];
+} marchList;
 
 shared uint breaks[4];  // bit k: break between local samples k and k+1
 
@@ -39,26 +47,8 @@ int lowestBreak(int lo, int hi) {
     return -1;
 }
 
-void main() {
-    int local = int(gl_LocalInvocationID.x);
-    int base = int(gl_WorkGroupID.x) * 128;
-    int slice = int(gl_WorkGroupID.y);
-    int samples = int(epipolar.sampling.y);
-    int step = int(epipolar.sampling.z);
-    int s = base + local;
-    if (local < 4) breaks[local] = 0u;
-    barrier();
-
-    float z = s < samples ? texelFetch(epipolarZ, ivec2(s, slice), 0).r : -1.0;
-    float zNext = s + 1 < samples ? texelFetch(epipolarZ, ivec2(s + 1, slice), 0).r : -1.0;
-    bool valid = validSampleZ(z), validNext = validSampleZ(zNext);
-    // A change of validity is a break too, so no sample interpolates from outside the screen.
-    bool brk = valid != validNext ||
-               (valid && abs(zNext - z) > epipolar.sampling.w * min(z, zNext));
-    if (brk) atomicOr(breaks[local >> 5], 1u << (local & 31));
-    barrier();
-    if (s >= samples) return;
-
+// Stores sample s's interpolation sources; true for a ray-marching sample of the march list's.
+bool refine(int s, int local, int base, int slice, int samples, int step, bool valid, bool brk) {
     int last = samples - 1;
     int sectionStart = (local / step) * step;
     int sectionEnd = min(sectionStart + step, last - base);  // local index, may be 128 (next group)
@@ -85,4 +75,32 @@ void main() {
         src = uvec2(base + (lo >= 0 ? lo + 1 : sectionStart), base + (hi >= 0 ? hi : sectionEnd));
     }
     imageStore(interpolationSource, ivec2(s, slice), uvec4(src, 0u, 0u));
+    return src.x == uint(s) && src.y == uint(s) && valid && marchesFromList() && inMarchTiles(s);
+}
+
+void main() {
+    int local = int(gl_LocalInvocationID.x);
+    int base = int(gl_WorkGroupID.x) * 128;
+    int slice = int(gl_WorkGroupID.y);
+    int samples = int(epipolar.sampling.y);
+    int step = int(epipolar.sampling.z);
+    int s = base + local;
+    if (local < 4) breaks[local] = 0u;
+    barrier();
+
+    float z = s < samples ? texelFetch(epipolarZ, ivec2(s, slice), 0).r : -1.0;
+    float zNext = s + 1 < samples ? texelFetch(epipolarZ, ivec2(s + 1, slice), 0).r : -1.0;
+    bool valid = validSampleZ(z), validNext = validSampleZ(zNext);
+    // A change of validity is a break too, so no sample interpolates from outside the screen.
+    bool brk = valid != validNext ||
+               (valid && abs(zNext - z) > epipolar.sampling.w * min(z, zNext));
+    if (brk) atomicOr(breaks[local >> 5], 1u << (local & 31));
+    barrier();
+    if (s >= samples) return;
+    if (refine(s, local, base, slice, samples, step, valid, brk)) {
+        // Counted past the list's end too: the march then finds the list overflowed.
+        uint slot = atomicAdd(marchList.count, 1u);
+        if (slot < uint(marchListCapacity(findLSB(int(epipolar.march.x)))))
+            marchList.entries[slot] = marchListEntry(ivec2(s, slice));
+    }
 }

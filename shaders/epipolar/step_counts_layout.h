@@ -7,5 +7,6 @@
 #define LS_COUNT_TREE_NODES 3        // min/max tree nodes tested
 #define LS_COUNT_DEGENERATE_RAYS 4   // rays marched on their own (marchFrustumSegment)
 #define LS_COUNT_DEGENERATE_STEPS 5  // ... and their look-ups
-#define LS_COUNTERS 6
+#define LS_COUNT_LISTED 6            // samples the first march took from the march list
+#define LS_COUNTERS 7
 #define LS_COUNT_STRIDE 8

@@ -52,7 +52,8 @@ TEST(Budget, SeedProfilesAt2560x1600) {
 // The goal: the peak with aliasing at or below seed 000's figure for each profile at 2560x1600
 // (88 / 44 / 18 MB, taken as 10^6 bytes, the stricter reading), a spot light's point-light table
 // (2 MiB, kept across frames) included. On the offline device model: S8 stencils and an RG16 unorm
-// coordinate texture. Measured 76.1 / 31.1 / 16.6 MiB.
+// coordinate texture. Measured 77.1 / 31.6 / 16.9 MiB (the march list is an eighth of the tiles'
+// samples: all of them, 1.8 MiB at high performance, would pass 18 MB).
 TEST(Budget, PeaksMeetTheSeedsFigures) {
     for (Profile p : {Profile::HighQuality, Profile::Balanced, Profile::HighPerformance}) {
         const auto s = lightscatter::profileSettings(p);
@@ -95,6 +96,13 @@ std::vector<lightscatter::BudgetLight> lightsOf(
         lights.push_back(
             {t, t == lightscatter::LightType::Point ? info.cubeShadow : info.shadowMap, method});
     return lights;
+}
+
+// The bytes of the budget's entry named `name` (0 where it has none).
+uint64_t entryBytes(const lightscatter::Budget& b, const std::string& name) {
+    for (const auto& e : b.entries)
+        if (e.name == name) return e.bytes;
+    return 0;
 }
 
 }  // namespace
@@ -219,6 +227,9 @@ TEST(Budget, CubeFacesTreesAreOneTextureOfSixLayers) {
         const auto point = lightscatter::budget(p, 2560, 1600, s.shadowMapSize,
                                                 lightsOf({lightscatter::LightType::Point}));
         uint64_t trees = 0, spotTrees = 0;
+        // The spot's first march takes its refined samples from a list; the point light's, which
+        // refines on in-scattering by default, has none.
+        const uint64_t spotList = entryBytes(spot, "ray-march list");
         size_t treeTextures = 0;
         for (const auto& e : point.entries)
             if (e.name.find("1D min/max trees") == 0) {
@@ -238,14 +249,15 @@ TEST(Budget, CubeFacesTreesAreOneTextureOfSixLayers) {
         EXPECT_EQ(treeTextures, 1u) << "one tree texture for the six faces";
         EXPECT_EQ(trees, 6 * spotTrees) << "a layer per face, each a spot's";
         // Five faces' trees more than a spot, and little else (the faces' rows of line frames).
-        EXPECT_GE(point.peakBytes, spot.peakBytes + 5 * spotTrees);
+        EXPECT_GE(point.peakBytes, spot.peakBytes - spotList + 5 * spotTrees);
         EXPECT_LE(point.peakBytes, spot.peakBytes + 5 * spotTrees + 1024 * 1024);
     }
 }
 
 // Refinement on in-scattering differences rewrites the interpolation sources and the stencil in
 // place and marches into the same samples, along the same lines and trees: it adds passes but no
-// texture, so no profile's peak moves.
+// texture, so no profile's peak grows. (It drops the march list, whose slots the refinement's
+// marking cannot tell from the tiles' samples: the peak falls by at most the list.)
 TEST(Budget, InscatterRefinementAddsNoMemory) {
     using lightscatter::LightType;
     for (Profile p : {Profile::HighQuality, Profile::Balanced, Profile::HighPerformance}) {
@@ -260,7 +272,13 @@ TEST(Budget, InscatterRefinementAddsNoMemory) {
                         lightscatter::profileName(p), static_cast<int>(light),
                         static_cast<double>(off.peakBytes) / 1048576.0,
                         static_cast<double>(on.peakBytes) / 1048576.0);
-            EXPECT_EQ(on.peakBytes, off.peakBytes) << lightscatter::profileName(p);
+            // The list's count alone where it has no list (the offline device rounds a buffer to
+            // 256 bytes).
+            const uint64_t list = entryBytes(off, "ray-march list");
+            EXPECT_EQ(entryBytes(on, "ray-march list"), 256u) << "the count alone";
+            // The peak falls by the list, give or take the placement's alignment (64 KiB).
+            EXPECT_LE(on.peakBytes, off.peakBytes) << lightscatter::profileName(p);
+            EXPECT_GE(on.peakBytes + list + 65536, off.peakBytes) << lightscatter::profileName(p);
         }
     }
 }

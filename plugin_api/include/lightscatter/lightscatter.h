@@ -613,6 +613,9 @@ struct StepCounts {
     // their own one texel at a time, and their shadow-map look-ups.
     uint64_t degenerateRays = 0;
     uint64_t degenerateSteps = 0;
+    // Of the samples, those the first march took from the list of refined samples it compacts
+    // (epipolar: docs/epipolar.md, "The march list"); 0 where a frame's refinement overflowed it.
+    uint64_t listedSamples = 0;
 };
 
 struct FrameReport {
