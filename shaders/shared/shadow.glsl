@@ -26,6 +26,26 @@ float shadowTexel(ivec2 p) {
     return toStandardDepth(shadowFetch(clamp(p, ivec2(0), ivec2(size - 1))));
 }
 
+// The standard depths of texels i, i + (1, 0), i + (0, 1) and i + (1, 1), each clamped to the map
+// (i from -1 to size - 1): one gather at the corner the four share, where a device's fixed-point
+// choice of the 2 x 2 texels is half a texel from any other (the sampler clamps to the edge, as
+// shadowTexel does). On lavapipe one gather costs less than four fetches.
+vec4 shadowQuad(ivec2 i) {
+#if defined(LS_NO_SHADOW_MAP) && LS_NO_SHADOW_MAP
+    return vec4(1.0);
+#else
+    vec2 corner = vec2(i + 1) / frame.shadowInfo.x;
+#if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
+    vec4 g = textureGather(shadowMap, vec3(corner, float(shadowFace)), 0);
+#else
+    vec4 g = textureGather(shadowMap, corner, 0);
+#endif
+    // Gathered as (i0, j1), (i1, j1), (i1, j0), (i0, j0).
+    vec4 z = vec4(g.w, g.z, g.x, g.y);
+    return frame.shadowInfo.z > 0.5 ? 1.0 - z : z;
+#endif
+}
+
 bool outsideShadowMap(vec2 uv) { return any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))); }
 
 // The ray's depth as compared: standard convention, clamped, plus the bias.
@@ -58,8 +78,7 @@ ShadowFootprint shadowFootprint(vec2 uv) {
     vec2 p = uv * size - 0.5;
     ivec2 i = ivec2(floor(p));
     s.f = p - floor(p);
-    s.depth = vec4(shadowTexel(i), shadowTexel(i + ivec2(1, 0)), shadowTexel(i + ivec2(0, 1)),
-                   shadowTexel(i + ivec2(1, 1)));
+    s.depth = shadowQuad(i);
     return s;
 }
 
@@ -78,10 +97,8 @@ float shadowVisibility(vec2 uv, float zStandard) {
 // Min and max depth over every texel shadowVisibility(uv, .) can read (1.0 outside the map).
 vec2 shadowFootprintMinMax(vec2 uv) {
     if (outsideShadowMap(uv)) return vec2(1.0);
-    ivec2 i = ivec2(floor(uv * frame.shadowInfo.x - 0.5));
-    float a = shadowTexel(i), b = shadowTexel(i + ivec2(1, 0));
-    float c = shadowTexel(i + ivec2(0, 1)), d = shadowTexel(i + ivec2(1, 1));
-    return vec2(min(min(a, b), min(c, d)), max(max(a, b), max(c, d)));
+    vec4 q = shadowQuad(ivec2(floor(uv * frame.shadowInfo.x - 0.5)));
+    return vec2(min(min(q.x, q.y), min(q.z, q.w)), max(max(q.x, q.y), max(q.z, q.w)));
 }
 
 #endif
