@@ -20,11 +20,16 @@ struct PoisonCase {
     bool coloredLight = false;
     bool shadowed = true;
     glm::vec3 eye{0.0f, 2.5f, 9.0f};
+    // Counts the march's steps and asserts the march list carried samples (its march stores
+    // where its samples live, and leaves the other texels as the poison left them).
+    bool marchList = false;
 };
 
 std::vector<PoisonCase> poisonCases() {
     lightscatter::Light point = spotOverGrille();
     point.type = lightscatter::LightType::Point;
+    lightscatter::Light sunAhead = sunThroughGrille();
+    sunAhead.direction = {0.1f, -0.3f, 1.0f};  // on the screen: every slice, the march list
     return {
         {"spot epipolar", spotOverGrille(), Method::Epipolar},
         {"spot epipolar without trees", spotOverGrille(), Method::Epipolar,
@@ -39,6 +44,14 @@ std::vector<PoisonCase> poisonCases() {
         {"colored spot epipolar", spotOverGrille(), Method::Epipolar, nullptr, true},
         {"directional epipolar", sunThroughGrille(), Method::Epipolar},
         {"directional brute force", sunThroughGrille(), Method::BruteForce},
+        {"sun on the screen epipolar, the march list",
+         sunAhead,
+         Method::Epipolar,
+         [](lightscatter::Settings& s) { s.epipolar.refinementThreshold = 0.3f; },
+         false,
+         true,
+         {0.0f, 2.5f, 9.0f},
+         true},
         {"point closed form", point, Method::Epipolar, nullptr, false, false},
         {"spot behind the camera",
          spotOverGrille(),
@@ -67,10 +80,15 @@ TEST_F(PoisonedTransientsGpu, EveryMethodGivesTheSameImageWithoutNaN) {
         auto settings = smallSettings(spec.screen);
         if (c.tweak) c.tweak(settings);
         auto description = frame.description(c.method, lightscatter::Profile::Custom, settings);
+        description.debug.countSteps = c.marchList;
 
         frame.resetColor();
-        plugin().render(description);
+        const lightscatter::FrameReport report = plugin().render(description);
         const auto clean = frame.inscatter();
+        if (c.marchList) {
+            ASSERT_TRUE(report.steps.has_value()) << c.name;
+            EXPECT_GT(report.steps->listedSamples, 0u) << c.name;
+        }
         description.debug.poisonTransients = true;
         for (int run = 0; run < 2; ++run) {  // the second frame reuses the poisoned graph
             frame.resetColor();
