@@ -9,6 +9,7 @@
 #include "frame.glsl"
 
 float toStandardDepth(float z) { return frame.shadowInfo.z > 0.5 ? 1.0 - z : z; }
+vec4 toStandardDepth(vec4 z) { return frame.shadowInfo.z > 0.5 ? 1.0 - z : z; }
 
 #if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
 int shadowFace = 0;  // the cube face (layer) the look-ups below read
@@ -41,8 +42,7 @@ vec4 shadowQuad(ivec2 i) {
     vec4 g = textureGather(shadowMap, corner, 0);
 #endif
     // Gathered as (i0, j1), (i1, j1), (i1, j0), (i0, j0).
-    vec4 z = vec4(g.w, g.z, g.x, g.y);
-    return frame.shadowInfo.z > 0.5 ? 1.0 - z : z;
+    return toStandardDepth(vec4(g.w, g.z, g.x, g.y));
 #endif
 }
 

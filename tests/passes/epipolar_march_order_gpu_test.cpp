@@ -57,8 +57,8 @@ double meanBlocksOfADriftingBreak(const Order& o) {
 
 class EpipolarMarchOrderGpu : public GpuTest {
   protected:
-    // `count`: the march list's count the marking and the march would read.
-    Order evaluate(uint32_t slices, uint32_t samples, uint32_t step, uint32_t count = 0) {
+    // `listCount`: the march list's count the marking and the march would read.
+    Order evaluate(uint32_t slices, uint32_t samples, uint32_t step, uint32_t listCount = 0) {
         lightscatter::EpipolarSettings s;
         s.slices = slices;
         s.samplesPerSlice = samples;
@@ -68,8 +68,7 @@ class EpipolarMarchOrderGpu : public GpuTest {
         const ls::EpipolarSizes sizes{slices, samples, ls::marchPhases(s)};
         Order o{slices, samples, sizes.marchPhases, sizes.marchExtent(), {}, {}, {}, {}, false};
         o.list = constants.march.z > 0.5f;
-        const uint32_t listCount = count;
-        count = slices * samples;
+        const uint32_t count = slices * samples;
         EXPECT_EQ(o.extent.width * o.extent.height, count)
             << "the march's extent holds the samples";
         const VkDeviceSize bytes = VkDeviceSize(count) * sizeof(uint32_t);
