@@ -354,13 +354,16 @@ class ConfigReader {
         return m;
     }
 
-    // {"sizes": [...], "tolerance": 0.05}: each epipolar profile run once per size (labelled with
-    // it; errors only at the configuration's size), its order checked after the benchmark.
+    // {"sizes": [...], "tolerance": 0.05, "rounds": 1}: each epipolar profile run once per size
+    // (labelled with it; errors only at the configuration's size) and per round, its order
+    // checked after the benchmark. A scene's rounds each run all its profiles and sizes in turn:
+    // the device's drift over a round then falls on every profile alike.
     ProfileOrder profileOrder(const json& v, BenchConfig& c) const {
         if (!v.is_object()) fail("profileOrder must be an object {\"sizes\": [...]}");
         for (const auto& [key, value] : v.items())
-            if (key != "sizes" && key != "tolerance")
-                fail("profileOrder: unknown key '" + echoText(key) + "' (known: sizes, tolerance)");
+            if (key != "sizes" && key != "tolerance" && key != "rounds")
+                fail("profileOrder: unknown key '" + echoText(key) +
+                     "' (known: sizes, tolerance, rounds)");
         if (!v.contains("sizes")) fail("profileOrder.sizes is required");
         ProfileOrder o;
         for (const json& s : list(v["sizes"], "profileOrder.sizes")) {
@@ -372,21 +375,30 @@ class ConfigReader {
         }
         if (o.sizes.empty()) fail("profileOrder.sizes is empty");
         o.tolerance = number(v, "profileOrder", "tolerance", o.tolerance, 0, 10);
+        if (v.contains("rounds")) o.rounds = int(whole(v["rounds"], "profileOrder.rounds", 1, 100));
         std::vector<BenchRun> runs;
-        for (const BenchRun& r : c.runs) {
-            if (r.family != "profiles" || r.method != lightscatter::Method::Epipolar) {
-                runs.push_back(r);
-                continue;
-            }
-            for (const VkExtent2D& e : o.sizes) {
-                BenchRun sized = r;
-                sized.size = e;
-                sized.label =
-                    r.label + " " + std::to_string(e.width) + "x" + std::to_string(e.height);
-                sized.measureError =
-                    r.measureError && e.width == c.size.width && e.height == c.size.height;
-                runs.push_back(sized);
-            }
+        // The runs come scene by scene (the references are kept per scene): rounds within each.
+        for (size_t at = 0, end = 0; at < c.runs.size(); at = end) {
+            while (end < c.runs.size() && c.runs[end].scene == c.runs[at].scene) ++end;
+            for (int round = 0; round < o.rounds; ++round)
+                for (size_t i = at; i < end; ++i) {
+                    const BenchRun& r = c.runs[i];
+                    if (r.family != "profiles" || r.method != lightscatter::Method::Epipolar) {
+                        if (round == 0) runs.push_back(r);
+                        continue;
+                    }
+                    for (const VkExtent2D& e : o.sizes) {
+                        BenchRun sized = r;
+                        sized.size = e;
+                        sized.round = round;
+                        sized.label = r.label + " " + std::to_string(e.width) + "x" +
+                                      std::to_string(e.height) +
+                                      (round > 0 ? " round " + std::to_string(round + 1) : "");
+                        sized.measureError = round == 0 && r.measureError &&
+                                             e.width == c.size.width && e.height == c.size.height;
+                        runs.push_back(sized);
+                    }
+                }
         }
         c.runs.clear();
         for (const BenchRun& r : runs) add(c, r);

@@ -31,15 +31,18 @@ struct BenchRun {
     uint32_t profileShadowMap = 0;
     std::string shadowMapFrom;
     bool measureError = false;  // at the config's error size only (the reference is slow)
+    int round = 0;              // "profileOrder"'s rounds: which one, from 0
 };
 
 // "profileOrder": epipolar's profile runs repeated at each of `sizes`, and after the benchmark each
 // profile of a chain (high-quality, balanced, high-performance; low-high-quality, low-balanced,
 // low-high-performance) checked no slower than the one before it, within `tolerance`
-// (profile_order.h).
+// (profile_order.h). With `rounds`, each scene's profile runs are repeated that many times in
+// turn, and a profile's time is the median of its rounds' medians.
 struct ProfileOrder {
     std::vector<VkExtent2D> sizes;
     double tolerance = 0.05;
+    int rounds = 1;
 };
 
 struct BenchConfig {

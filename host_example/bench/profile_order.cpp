@@ -1,5 +1,6 @@
 #include "profile_order.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <map>
 #include <utility>
@@ -10,15 +11,24 @@ ProfileOrderCheck checkProfileOrder(const nlohmann::json& runs, double tolerance
     static const char* const kChains[2][3] = {
         {"high-quality", "balanced", "high-performance"},
         {"low-high-quality", "low-balanced", "low-high-performance"}};
-    // (scene, size) -> profile -> median ms
-    std::map<std::pair<std::string, std::string>, std::map<std::string, double>> medians;
+    // (scene, size) -> profile -> each round's median ms
+    std::map<std::pair<std::string, std::string>, std::map<std::string, std::vector<double>>>
+        rounds;
     for (const nlohmann::json& r : runs) {
         if (r.value("family", "") != "profiles" || r.value("method", "") != "epipolar") continue;
         const std::string size = std::to_string(r["size"][0].get<unsigned>()) + "x" +
                                  std::to_string(r["size"][1].get<unsigned>());
-        medians[{r["scene"].get<std::string>(), size}][r["profile"].get<std::string>()] =
-            r["time"]["median"].get<double>();
+        rounds[{r["scene"].get<std::string>(), size}][r["profile"].get<std::string>()].push_back(
+            r["time"]["median"].get<double>());
     }
+    std::map<std::pair<std::string, std::string>, std::map<std::string, double>> medians;
+    for (auto& [where, profiles] : rounds)
+        for (auto& [profile, times] : profiles) {
+            // The middle round; of an even count, the mean of the middle two.
+            std::sort(times.begin(), times.end());
+            const size_t n = times.size();
+            medians[where][profile] = (times[(n - 1) / 2] + times[n / 2]) / 2.0;
+        }
     ProfileOrderCheck check;
     for (const auto& [where, times] : medians)
         for (const auto& chain : kChains)

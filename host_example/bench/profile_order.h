@@ -16,7 +16,8 @@ struct ProfileOrderCheck {
 };
 
 // `runs` are bench.json's rows; each scene and size's epipolar profile rows (family "profiles")
-// are compared by their median time. A pair is out of order when the later profile's median
+// are compared by their median time (the median of those medians where rounds repeated a row:
+// bench.json's "round"). A pair is out of order when the later profile's median
 // exceeds the earlier's by more than `tolerance` (0.05: 5%).
 ProfileOrderCheck checkProfileOrder(const nlohmann::json& runs, double tolerance);
 

@@ -367,6 +367,7 @@ int runBench(Args& args) {
                 used.lightModel == lightscatter::LightModel::Simplified ? "simplified" : "full";
             row["profile"] = run.custom ? "custom" : lightscatter::profileName(run.profile);
             row["size"] = {run.size.width, run.size.height};
+            row["round"] = run.round + 1;
             row["slices"] = used.epipolar.slices;
             row["samples"] = used.epipolar.samplesPerSlice;
             row["initialStep"] = used.epipolar.initialSampleStep;
