@@ -35,6 +35,7 @@ nlohmann::json stepsJson(const lightscatter::StepCounts& s) {
         {"degenerateRays", s.degenerateRays},
         {"degenerateSteps", s.degenerateSteps},
         {"listedSamples", s.listedSamples},
+        {"unbuiltTreeNodes", s.unbuiltTreeNodes},
         {"stepsPerSample", static_cast<double>(s.lineSteps + s.degenerateSteps) / n},
         {"nodesPerSample", static_cast<double>(s.treeNodes) / n},
         {"degenerateShare",

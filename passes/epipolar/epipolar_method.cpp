@@ -83,6 +83,7 @@ void EpipolarMethod::readStepCounts(const void* counters, uint64_t bytes,
     out.degenerateRays = at(StepCount::DegenerateRays);
     out.degenerateSteps = at(StepCount::DegenerateSteps);
     out.listedSamples = at(StepCount::Listed);
+    out.unbuiltTreeNodes = at(StepCount::UnbuiltTreeNodes);
 }
 
 bool EpipolarMethod::readsTable(const LightSetup& s) const {

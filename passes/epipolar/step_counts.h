@@ -21,6 +21,7 @@ enum class StepCount : uint32_t {
     DegenerateRays = LS_COUNT_DEGENERATE_RAYS,
     DegenerateSteps = LS_COUNT_DEGENERATE_STEPS,
     Listed = LS_COUNT_LISTED,
+    UnbuiltTreeNodes = LS_COUNT_UNBUILT_NODES,
 };
 inline constexpr uint32_t kStepCounters = LS_COUNTERS;
 inline constexpr uint32_t kStepCountStride = LS_COUNT_STRIDE;  // uint32 per row

@@ -22,6 +22,25 @@ mat4 shadowViewProj(int face) { return frame.lightViewProj; }
 // no part of any of the frame's rays, and its lines and trees are not built.
 bool cubeFaceReachesView(int face) { return ((int(epipolar.cubeFaces.x) >> face) & 1) != 0; }
 
+// The first level-1 tree node any ray of the slice whose line is `f` (its shadow-map uv origin and
+// step, slice_uv_frame.comp) can read: min_max_trees.comp builds the slice's tree from there on.
+// The march reads a node only at or past the line sample where its ray enters the map, ceil(ta)
+// (ray_march.frag). A point C + t v of a camera ray projects to (Xc + t Xv).xy / (Xc.w + t Xv.w),
+// which moves by (Xv.xy Xc.w - Xc.xy Xv.w) / w^2, the line's direction over w^2: wherever w > 0
+// it only moves forward along the line. With the camera in front of the light's plane (Xc.w > 0),
+// w stays positive from the camera to every marched point (w is linear in t, and positive in the
+// map's frustum), so every ray enters the map at or past the camera's own projection. Two samples
+// of slack cover the march's rounding of ta. Behind the light's plane a ray's projection comes
+// from infinity: 0.
+int firstBuiltTreeNode(vec4 f, int face) {
+    vec4 Xc = shadowViewProj(face) * vec4(frame.cameraPos.xyz, 1.0);
+    if (!(Xc.w > 1e-6)) return 0;
+    vec2 camera = Xc.xy / Xc.w * 0.5 + 0.5;
+    float tau = dot(camera - f.xy, f.zw) / dot(f.zw, f.zw);
+    if (!(tau > 2.0)) return 0;  // before the line's start, or NaN: build it all
+    return (int(floor(min(tau, 1e9))) - 2) >> 1;
+}
+
 // The march's order: the ray march renders its samples, and the stencil that marks them, into
 // textures of their own whose texels are ordered so that the samples marched together are
 // neighbours. With P phases (epipolar.march.x: the initial step, where it divides the samples per

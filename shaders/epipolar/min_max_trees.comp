@@ -10,6 +10,9 @@
 // barriers at 1920x1080, and each level-1 invocation its own set-up for one node.
 // With LS_CUBE_SHADOW the six faces of a point light's cube at once: face gl_WorkGroupID.z's trees
 // in its array layer.
+// A slice's rays all start at or past the camera's point on its line when the camera projects in
+// front of the light's plane (below): the nodes before that point are never read and not built
+// (about half of a sun's lines, whose camera point lies inside the map).
 #include "min_max_tree.glsl"
 #include "epipolar_constants.glsl"
 #include "frame.glsl"
@@ -58,9 +61,14 @@ void main() {
         run *= 2;
         ++runLevels;
     }
+    // Nodes before `first` are skipped. A node over skipped ones is never read either (it starts
+    // before `first`); it is built from the unframed value, which decides nothing.
+    int first = framed ? firstBuiltTreeNode(f, face) : 0;
+    vec2 unframed = encodeTreeNode(vec2(0.0, 1.0));
     vec2 pending[kMaxRunLevels + 2];  // pending[l]: the left child waiting at level l
-    vec2 v = vec2(0.0, 1.0);
-    for (int c = 0; c < run; ++c) {
+    for (int l = 0; l < kMaxRunLevels + 2; ++l) pending[l] = unframed;
+    vec2 v = unframed;
+    for (int c = clamp(first - t * run, 0, run); c < run; ++c) {
         int node = t * run + c;
         if (node >= firstLevel) break;
         vec2 mm = vec2(0.0, 1.0);

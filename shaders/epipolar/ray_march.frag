@@ -48,6 +48,7 @@ const int kCountTreeNodes = LS_COUNT_TREE_NODES;
 const int kCountDegenerateRays = LS_COUNT_DEGENERATE_RAYS;
 const int kCountDegenerateSteps = LS_COUNT_DEGENERATE_STEPS;
 const int kCountListed = LS_COUNT_LISTED;
+const int kCountUnbuiltNodes = LS_COUNT_UNBUILT_NODES;
 const int kCountStride = LS_COUNT_STRIDE;
 layout(std430, binding = LS_BINDING_MARCH_STEP_COUNTS) buffer StepCounts { uint stepCounts[]; };
 uint countedLookups = 0u;
@@ -68,7 +69,7 @@ layout(std430, binding = LS_BINDING_MARCH_LIST) readonly buffer MarchList {
 } marchList;
 
 #if defined(LS_COUNT_STEPS) && LS_COUNT_STEPS
-uint counted[LS_COUNTERS] = uint[LS_COUNTERS](0u, 0u, 0u, 0u, 0u, 0u, 0u);
+uint counted[LS_COUNTERS] = uint[LS_COUNTERS](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
 void flushCounts(int slice) {
     for (int k = 0; k < LS_COUNTERS; ++k)
         if (counted[k] != 0u) atomicAdd(stepCounts[slice * kCountStride + k], counted[k]);
@@ -143,6 +144,14 @@ void marchLine(inout Inscatter acc, LineRay r, int slice) {
     int i = int(ceil(r.ta));
     int last = int(ceil(r.tb));
     int level = climb(i, 0, last, n, levels);
+#if defined(LS_COUNT_STEPS) && LS_COUNT_STEPS
+    // Where the trees pass began this slice's tree: a node before it was never built.
+#if defined(LS_CUBE_SHADOW) && LS_CUBE_SHADOW
+    int firstBuilt = firstBuiltTreeNode(vec4(r.origin, r.dir), r.face);
+#else
+    int firstBuilt = firstBuiltTreeNode(vec4(r.origin, r.dir), 0);
+#endif
+#endif
     for (int guard = 0; i <= last && guard < 4 * n + 64; ++guard) {
         // Down from `level` to the coarsest node at i that is lit or shadowed throughout, or to
         // a line sample. The node's samples decide the ray over (i - 1, j], so its depths from
@@ -153,6 +162,7 @@ void marchLine(inout Inscatter acc, LineRay r, int slice) {
         for (; level > 0; --level) {
             j = i + (1 << level) - 1;
             COUNT(++counted[kCountTreeNodes]);
+            COUNT(if (((i >> level) << (level - 1)) < firstBuilt) ++counted[kCountUnbuiltNodes]);
             vec2 node = LS_TREE_NODE(level, i >> level, slice, r, n);
             float zi = compareDepth(depthAt(r, i - 1)), zj = compareDepth(depthAt(r, j));
             if (!kLightColor && max(zi, zj) <= node.x) break;  // lit throughout

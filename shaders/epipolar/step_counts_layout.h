@@ -8,5 +8,6 @@
 #define LS_COUNT_DEGENERATE_RAYS 4   // rays marched on their own (marchFrustumSegment)
 #define LS_COUNT_DEGENERATE_STEPS 5  // ... and their look-ups
 #define LS_COUNT_LISTED 6            // samples the first march took from the march list
-#define LS_COUNTERS 7
+#define LS_COUNT_UNBUILT_NODES 7     // tree nodes tested that the trees pass did not build (0)
+#define LS_COUNTERS 8
 #define LS_COUNT_STRIDE 8

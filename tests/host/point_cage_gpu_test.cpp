@@ -199,6 +199,10 @@ TEST_F(PointCageGpu, RaysNearTheLightAreMarchedAlongTheirLines) {
         static_cast<unsigned long long>(s.lineSteps));
     ASSERT_GT(s.lineSteps, 0u);
     EXPECT_LT(static_cast<double>(s.degenerateSteps), 0.02 * static_cast<double>(s.lineSteps));
+    // Each face's trees start at the camera's point on the line where the camera is in front of
+    // the face (min_max_trees.comp): no ray tests a node before it.
+    EXPECT_GT(s.treeNodes, 0u);
+    EXPECT_EQ(s.unbuiltTreeNodes, 0u);
 }
 
 TEST_F(PointCageGpu, AutoFollowsTheScreenAndAnalyticRefusesTheCubeMap) {

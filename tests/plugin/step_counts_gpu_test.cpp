@@ -122,6 +122,35 @@ TEST_F(StepCountsGpu, TreesCutTheShadowMapLookUpsOnLongLitRuns) {
     }
 }
 
+// Each slice's tree is built from the camera's point on its line on (min_max_trees.comp): every ray
+// of the slice enters the map at or past it, so no node before it is ever tested. A sun whose
+// map holds the camera (about half of each line before it), a spot whose cone holds the camera,
+// and one the camera is behind (its lines come from infinity: nothing skipped). Trees started
+// ten samples past the camera's point fail the sun's and the first spot's.
+TEST_F(StepCountsGpu, NoRayTestsATreeNodeTheTreesSkipped) {
+    // Above and behind the camera (0, 2.5, 9), which its cone holds; and in front of the camera,
+    // facing away from it.
+    lightscatter::Light over = spotOverGrille();
+    over.position = {0.0f, 6.0f, 12.0f};
+    over.direction = {0.0f, -0.4f, -1.0f};
+    over.innerConeAngleDegrees = over.outerConeAngleDegrees = 35.0f;
+    lightscatter::Light below = spotOverGrille();
+    below.position = {0.3f, 2.0f, 6.5f};
+    below.direction = {0.0f, -0.2f, -1.0f};
+    struct Case {
+        const char* name;
+        lightscatter::Light light;
+    };
+    for (const Case& c : {Case{"sun", sunThroughGrille()}, Case{"spot over the camera", over},
+                          Case{"spot the camera is behind", below}}) {
+        TestFrame frame(dev(), longLitRuns(c.light));
+        const auto r = render(frame, countingSettings(frame.spec().screen, true), true);
+        ASSERT_TRUE(r.steps.has_value()) << c.name;
+        EXPECT_GT(r.steps->treeNodes, 1000u) << c.name;
+        EXPECT_EQ(r.steps->unbuiltTreeNodes, 0u) << c.name;
+    }
+}
+
 // A frame of several lights counts every light's march: two spots together count what each does
 // alone, field by field.
 TEST_F(StepCountsGpu, AFrameOfTwoLightsCountsBothMarches) {

@@ -616,6 +616,10 @@ struct StepCounts {
     // Of the samples, those the first march took from the list of refined samples it compacts
     // (epipolar: docs/epipolar.md, "The march list"); 0 where a frame's refinement overflowed it.
     uint64_t listedSamples = 0;
+    // Of the tree nodes tested, those before where the trees pass began their slice's tree (the
+    // part of a line no ray of the slice can reach, skipped: docs/epipolar.md, "Trees from the
+    // camera on"). Always 0; counted so that tests can show it.
+    uint64_t unbuiltTreeNodes = 0;
 };
 
 struct FrameReport {
