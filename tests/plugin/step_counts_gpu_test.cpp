@@ -126,7 +126,8 @@ TEST_F(StepCountsGpu, TreesCutTheShadowMapLookUpsOnLongLitRuns) {
 // of the slice enters the map at or past it, so no node before it is ever tested. A sun whose
 // map holds the camera (about half of each line before it), a spot whose cone holds the camera,
 // and one the camera is behind (its lines come from infinity: nothing skipped). Trees started
-// ten samples past the camera's point fail the sun's and the first spot's.
+// eight samples past the camera's point (ten later than they start) fail the sun's and the first
+// spot's.
 TEST_F(StepCountsGpu, NoRayTestsATreeNodeTheTreesSkipped) {
     // Above and behind the camera (0, 2.5, 9), which its cone holds; and in front of the camera,
     // facing away from it.
