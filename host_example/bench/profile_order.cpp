@@ -1,9 +1,10 @@
 #include "profile_order.h"
 
-#include <algorithm>
 #include <cstdio>
 #include <map>
 #include <utility>
+
+#include "metrics.h"
 
 namespace host::bench {
 
@@ -22,13 +23,10 @@ ProfileOrderCheck checkProfileOrder(const nlohmann::json& runs, double tolerance
             r["time"]["median"].get<double>());
     }
     std::map<std::pair<std::string, std::string>, std::map<std::string, double>> medians;
-    for (auto& [where, profiles] : rounds)
-        for (auto& [profile, times] : profiles) {
-            // The middle round; of an even count, the mean of the middle two.
-            std::sort(times.begin(), times.end());
-            const size_t n = times.size();
-            medians[where][profile] = (times[(n - 1) / 2] + times[n / 2]) / 2.0;
-        }
+    // The bench's median, as of a run's frames.
+    for (const auto& [where, profiles] : rounds)
+        for (const auto& [profile, times] : profiles)
+            medians[where][profile] = spreadOf(times).median;
     ProfileOrderCheck check;
     for (const auto& [where, times] : medians)
         for (const auto& chain : kChains)
