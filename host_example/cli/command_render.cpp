@@ -61,6 +61,7 @@ nlohmann::json timingsJson(const rg::Device& device, const SceneOptions& o, VkEx
     j["size"] = {size.width, size.height};
     j["frames"] = frames;
     j["depthStencilFormat"] = f.plugin.depthStencilFormat;
+    j["linOut"] = o.render.linOut;  // whether the frame also wrote Lin alone (--inscatter)
     nlohmann::json passes = nlohmann::json::array();
     for (const auto& p : f.plugin.passes)
         passes.push_back({{"name", p.name}, {"milliseconds", p.milliseconds}});
@@ -84,6 +85,8 @@ int runRender(Args& args) {
     const bool countSteps = args.flag("--count-steps");
     SceneOptions o = takeSceneOptions(args, nullptr);
     o.render.countSteps = countSteps;
+    // Lin alone only for --inscatter: the frame is then what an engine that composites asks for.
+    o.render.linOut = !inscatter.empty();
     const std::string scenePath = args.positional("SCENE.json");
     args.finish();
     if (out.empty()) out = std::filesystem::path(scenePath).stem().string() + ".png";

@@ -329,6 +329,7 @@ long residentKiB() {
 int runView(Args& args) {
     const std::string screenshotPath = args.take("--screenshot", "");
     SceneOptions o = takeSceneOptions(args, "960x540");
+    o.render.linOut = false;  // a window shows the color alone
     const std::string framesText = args.take("--frames", "");
     const std::string resizeAt = args.take("--resize-at", "");
     const std::string resizeTo = args.take("--resize-to", "");

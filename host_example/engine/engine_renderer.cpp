@@ -503,9 +503,11 @@ lightscatter::FrameDescription EngineRenderer::describe(const RenderOptions& opt
     f.color = imageInput(*color_, VK_IMAGE_LAYOUT_GENERAL);
     f.color.finalStages = finalStages;
     f.color.finalAccess = finalAccess;
-    f.inscatterOut = imageInput(*inscatter_, VK_IMAGE_LAYOUT_GENERAL);
-    f.inscatterOut->finalStages = finalStages;
-    f.inscatterOut->finalAccess = finalAccess;
+    if (options.linOut) {
+        f.inscatterOut = imageInput(*inscatter_, VK_IMAGE_LAYOUT_GENERAL);
+        f.inscatterOut->finalStages = finalStages;
+        f.inscatterOut->finalAccess = finalAccess;
+    }
     const float aspect = static_cast<float>(size_.width) / static_cast<float>(size_.height);
     f.camera = toPluginCamera(scene_.camera, cameraView(scene_.camera),
                               cameraProjection(scene_.camera, aspect));
@@ -541,7 +543,7 @@ void EngineRenderer::record(VkCommandBuffer cmd, const RenderOptions& options,
     // The plugin checks the description first: nothing is recorded when it is refused.
     lightscatter::FrameDescription frame = describe(options, finalStages, finalAccess);
     frame.color.finalLayout = finalLayout;
-    frame.inscatterOut->finalLayout = finalLayout;
+    if (frame.inscatterOut) frame.inscatterOut->finalLayout = finalLayout;
     if (frame.volumeOut) frame.volumeOut->finalLayout = finalLayout;
     const float aspect = static_cast<float>(size_.width) / static_cast<float>(size_.height);
     pipelines_->viewProj = cameraProjection(scene_.camera, aspect) * cameraView(scene_.camera);
@@ -635,16 +637,17 @@ FrameOutput EngineRenderer::render(const RenderOptions& options) {
         vkEndCommandBuffer(cmd_);
         throw;
     }
-    // The plugin leaves both images in TRANSFER_SRC_OPTIMAL for the copies; they go back to
+    // The plugin leaves its images in TRANSFER_SRC_OPTIMAL for the copies; they go back to
     // GENERAL, where the next frame expects them.
     auto transition = [&](VkImageLayout from, VkImageLayout to, VkPipelineStageFlags2 dst,
                           VkAccessFlags2 dstAccess) {
         VkImageMemoryBarrier2 b[3] = {{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2},
                                       {VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2},
                                       {VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2}};
-        const VkImage images[3] = {color_->image(), inscatter_->image(),
-                                   volume ? volume_->image() : VK_NULL_HANDLE};
-        const uint32_t count = volume ? 3 : 2;
+        VkImage images[3] = {color_->image()};
+        uint32_t count = 1;
+        if (options.linOut) images[count++] = inscatter_->image();
+        if (volume) images[count++] = volume_->image();
         for (uint32_t i = 0; i < count; ++i) {
             b[i].srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
             b[i].srcAccessMask = 0;
@@ -663,8 +666,9 @@ FrameOutput EngineRenderer::render(const RenderOptions& options) {
     };
     rg::recordReadback(device_, cmd_, color_->image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, size_,
                        colorBuffer.buffer());
-    rg::recordReadback(device_, cmd_, inscatter_->image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                       size_, linBuffer.buffer());
+    if (options.linOut)
+        rg::recordReadback(device_, cmd_, inscatter_->image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           size_, linBuffer.buffer());
     if (volume)
         rg::recordReadback(device_, cmd_, volume_->image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                            volume_->extent(), volumeReadback_->buffer(), VK_IMAGE_ASPECT_COLOR_BIT,
@@ -679,8 +683,10 @@ FrameOutput EngineRenderer::render(const RenderOptions& options) {
     out.color.resize(pixels * 4);
     const auto* halves = static_cast<const uint16_t*>(colorBuffer.data());
     for (size_t i = 0; i < out.color.size(); ++i) out.color[i] = glm::unpackHalf1x16(halves[i]);
-    out.inscatter.resize(pixels * 4);
-    std::memcpy(out.inscatter.data(), linBuffer.data(), pixels * 16);
+    if (options.linOut) {
+        out.inscatter.resize(pixels * 4);
+        std::memcpy(out.inscatter.data(), linBuffer.data(), pixels * 16);
+    }
     if (volume) {
         out.volumeLayout = lightscatter::froxelVolume(
             describe(options, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE));

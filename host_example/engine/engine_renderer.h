@@ -27,11 +27,16 @@ struct RenderOptions {
     // With froxels: the frame's grid in an engine image (FrameDescription::volumeOut), read back
     // by render() into FrameOutput::volume.
     bool exportVolume = false;
+    // FrameDescription::inscatterOut: Lin alone, read back into FrameOutput::inscatter. An engine
+    // that composites into its color leaves it out, and so does `render` without --inscatter:
+    // the plugin then writes no screen-sized RGBA32F image (22 ms of the atrium's 1920x1080 frame
+    // on lavapipe, docs/performance.md).
+    bool linOut = true;
 };
 
 struct FrameOutput {
     std::vector<float> color;      // RGBA, linear HDR radiance after compositing
-    std::vector<float> inscatter;  // RGBA, Lin alone
+    std::vector<float> inscatter;  // RGBA, Lin alone (empty without RenderOptions::linOut)
     // RenderOptions::exportVolume: the froxel grid, RGBA per texel (x fastest, then y, then the
     // slice), laid out as `volumeLayout` says.
     std::vector<float> volume;

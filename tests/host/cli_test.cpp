@@ -51,6 +51,27 @@ TEST(Cli, RenderWritesPngLinAndTimings) {
     EXPECT_GT(j["totalMilliseconds"].get<double>(), 0.0);
 }
 
+// Without --inscatter the frame asks for no Lin (an engine's frame, the one --timings measures);
+// the color is the same bits either way.
+TEST(Cli, RenderWithoutInscatterAsksForNoLinAndGivesTheSameColor) {
+    for (const char* method : {"epipolar", "brute-force"}) {
+        const std::string common =
+            "render " + scene("atrium") + " --size 64x36 --method " + std::string(method);
+        const auto with =
+            run(common + " --out with.exr --inscatter lin.exr --timings with.json --validation");
+        ASSERT_EQ(with.exitCode, 0) << method << ": " << with.out;
+        const auto without = run(common + " --out without.exr --timings without.json --validation");
+        ASSERT_EQ(without.exitCode, 0) << method << ": " << without.out;
+        const host::FloatImage a = host::readExr(path("with.exr"));
+        const host::FloatImage b = host::readExr(path("without.exr"));
+        ASSERT_EQ(a.rgba.size(), b.rgba.size());
+        EXPECT_TRUE(std::equal(a.rgba.begin(), a.rgba.end(), b.rgba.begin())) << method;
+        std::ifstream ta(path("with.json")), tb(path("without.json"));
+        EXPECT_EQ(nlohmann::json::parse(ta)["linOut"], true) << method;
+        EXPECT_EQ(nlohmann::json::parse(tb)["linOut"], false) << method;
+    }
+}
+
 // A sun and two spots ("lights") in one frame: epipolar and brute force, Lin summed into
 // --inscatter.
 TEST(Cli, RenderASunAndTwoSpots) {
