@@ -97,8 +97,9 @@ struct EpipolarContext {
 // stages: those that read them (0: the pass's shader; a graphics pass's fragment shader).
 rg::BindingTable epipolarTable(rg::PassBuilder& pass, const ChainContext& chain,
                                const EpipolarContext& epipolar, VkPipelineStageFlags2 stages = 0);
-// A later light's unwarp and fix-up read both in their wedge's vertex shader too.
-inline constexpr VkPipelineStageFlags2 kWedgeStages =
+// A later light's unwarp and fix-up read both in their wedge's vertex shader too, and the first
+// marking and march in the vertex shader of their cover (march_cover.vert), the march list too.
+inline constexpr VkPipelineStageFlags2 kVertexAndFragmentStages =
     VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
 
 }  // namespace ls

@@ -18,5 +18,12 @@ rg::ShaderCode sliceUvFrameShader(bool cubeShadow);
 // kWedgeVertices vertices, the wedge of a windowed light's lines or the whole viewport.
 rg::ShaderCode windowWedgeShader();
 inline constexpr uint32_t kWedgeVertices = 15;
+// What the first marking and the first march draw with the march list
+// (shaders/epipolar/march_cover.vert): marchCoverVertices(P) vertices for P march phases, the
+// march-order texels that can hold a ray-marching sample.
+rg::ShaderCode marchCoverShader();
+inline constexpr uint32_t marchCoverVertices(uint32_t phases) {
+    return 6 * (2 * phases - 1);
+}
 
 }  // namespace ls

@@ -12,9 +12,10 @@ CompositeOutputs addFixup(rg::RenderGraph& g, const FixupInputs& in) {
     auto pass = g.addPass("fix-up ray march", rg::PassType::Graphics);
     const bool addOnly = in.target.addOnly;
     rg::BindingTable table =
-        declarePixelMarch(pass, in.chain, in.light, addOnly ? kWedgeStages : 0);
+        declarePixelMarch(pass, in.chain, in.light, addOnly ? kVertexAndFragmentStages : 0);
     // A later light draws the unwarp's wedge (its vertex shader reads the lines' window).
-    if (addOnly) table.uniform(LS_BINDING_EPIPOLAR, in.epipolar.constants, kWedgeStages);
+    if (addOnly)
+        table.uniform(LS_BINDING_EPIPOLAR, in.epipolar.constants, kVertexAndFragmentStages);
     pass.stencilTest(in.cameraStencil);
     const CompositeOutputs written = addCompositeTarget(table, in.target);
     pass.execute([frame = in.chain, table, written, addOnly](rg::PassContext& ctx) {

@@ -32,8 +32,11 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const EpipolarRayMarchI
     auto pass =
         g.addPass(trees ? "ray march with min/max trees" : "ray march", rg::PassType::Graphics);
     const auto& sm = samplersOf(in.chain.shared);
-    rg::BindingTable table = epipolarTable(pass, in.chain, in.epipolar);
-    table.storageBufferRead(LS_BINDING_MARCH_LIST, in.marchList)
+    // The first march with the list draws what its marking could mark (march_cover.vert).
+    const bool cover = s.marchList && options.marks == kFirstMarch;
+    const VkPipelineStageFlags2 stages = cover ? kVertexAndFragmentStages : 0;
+    rg::BindingTable table = epipolarTable(pass, in.chain, in.epipolar, stages);
+    table.storageBufferRead(LS_BINDING_MARCH_LIST, in.marchList, stages)
         .sampled(LS_BINDING_MARCH_COORDINATES, in.coordinates, sm.nearest())
         .sampled(LS_BINDING_MARCH_EPIPOLAR_Z, in.epipolarZ, sm.nearest())
         .sampled(LS_BINDING_MARCH_UV_FRAME, in.sliceUvFrame, sm.nearest())
@@ -48,13 +51,15 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const EpipolarRayMarchI
     // Stored, not a color attachment: a slot of the march list stores its sample's value at the
     // sample's texel. The second march adds its samples to the first's.
     marched = table.storageWrite(LS_BINDING_MARCH_OUT, marched);
-    pass.execute([frame = in.chain, table, trees, color, counts,
-                  marks = options.marks](rg::PassContext& ctx) {
+    const uint32_t vertices = cover ? marchCoverVertices(s.marchPhases) : 3;
+    pass.execute([frame = in.chain, table, trees, color, counts, marks = options.marks, cover,
+                  vertices](rg::PassContext& ctx) {
         const Shared& shared = frame.shared;
         ScatterSpec spec = frame.spec;
         spec.lightColor = color;
         auto desc =
             fullscreenPipeline(rayMarchShader(spec, trees, counts.valid()), ctx, table.layout());
+        if (cover) desc.vertex = marchCoverShader();
         desc.specialization = spec.constants();
         desc.stencilTest = true;
         desc.stencil = {VK_STENCIL_OP_KEEP,
@@ -69,7 +74,7 @@ EpipolarRayMarch addEpipolarRayMarch(rg::RenderGraph& g, const EpipolarRayMarchI
         p.bind(ctx.cmd());
         ctx.vk().CmdSetStencilReference(ctx.cmd(), VK_STENCIL_FACE_FRONT_AND_BACK, marks);
         table.writes(ctx).push(ctx.device(), ctx.cmd(), p);
-        ctx.vk().CmdDraw(ctx.cmd(), 3, 1, 0, 0);
+        ctx.vk().CmdDraw(ctx.cmd(), vertices, 1, 0, 0);
     });
     return {marched, counts};
 }

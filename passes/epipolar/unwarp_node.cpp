@@ -37,7 +37,8 @@ UnwarpOutputs addUnwarp(rg::RenderGraph& g, const UnwarpInputs& in, const Unwarp
     auto pass = g.addPass("unwarp epipolar to screen", rg::PassType::Graphics);
     const auto& sm = samplersOf(in.chain.shared);
     const bool addOnly = in.target.addOnly;
-    rg::BindingTable table = epipolarTable(pass, in.chain, in.epipolar, addOnly ? kWedgeStages : 0);
+    rg::BindingTable table =
+        epipolarTable(pass, in.chain, in.epipolar, addOnly ? kVertexAndFragmentStages : 0);
     table.sampled(LS_BINDING_UNWARP_END_POINTS, in.sliceEndPoints, sm.nearest())
         .sampled(LS_BINDING_UNWARP_EPIPOLAR_Z, in.epipolarZ, sm.nearest())
         .sampled(LS_BINDING_UNWARP_INSCATTER, in.interpolated, sm.nearest())

@@ -30,7 +30,6 @@
 #define LS_BINDING_INTERPOLATION_SOURCE 1
 #define LS_BINDING_INTERPOLATE_MARCHED 2
 #define LS_BINDING_SOURCES_EPIPOLAR_Z 3  // which samples are valid (validSampleZ)
-#define LS_BINDING_MARK_LIST 4           // mark_ray_march.frag: the march list's count
 // ray_march.frag (and the shared march inputs: shadow map, point table, light color)
 #define LS_BINDING_MARCH_COORDINATES 1
 #define LS_BINDING_MARCH_EPIPOLAR_Z 2
@@ -38,8 +37,8 @@
 #define LS_BINDING_MARCH_TREES 4
 #define LS_BINDING_MARCH_STEP_COUNTS 9
 #define LS_BINDING_MARCH_END_POINTS 10  // a point light's cube only
-#define LS_BINDING_MARCH_LIST 11        // the march list's entries
-#define LS_BINDING_MARCH_OUT 12         // the marched samples, stored at their texels (marchTexel)
+#define LS_BINDING_MARCH_LIST 11  // the march list (mark_ray_march.frag, march_cover.vert too)
+#define LS_BINDING_MARCH_OUT 12   // the marched samples, stored at their texels (marchTexel)
 // unwarp.frag (and the shared point table and composite target)
 #define LS_BINDING_UNWARP_END_POINTS 1
 #define LS_BINDING_UNWARP_EPIPOLAR_Z 2

@@ -4,12 +4,13 @@
 // march's stencil, in the march's order (marchTexel): each fragment reads its sample where the
 // other textures keep it. With the march list (marchesFromList), a texel of the tiles is marked
 // where its slot holds a sample, the first `count` of them (unless the list overflowed). Every
-// other fragment is discarded.
+// other fragment is discarded. With the list, the pass draws only the texels that can be marked
+// (march_cover.vert).
 #include "epipolar_constants.glsl"
 #include "epipolar_bindings.h"
 layout(binding = LS_BINDING_INTERPOLATION_SOURCE) uniform usampler2D interpolationSource;
 layout(binding = LS_BINDING_SOURCES_EPIPOLAR_Z) uniform sampler2D epipolarZ;
-layout(std430, binding = LS_BINDING_MARK_LIST) readonly buffer MarchList {
+layout(std430, binding = LS_BINDING_MARCH_LIST) readonly buffer MarchList {
     uint count;
 } marchList;
 
