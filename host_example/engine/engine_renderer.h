@@ -28,9 +28,9 @@ struct RenderOptions {
     // by render() into FrameOutput::volume.
     bool exportVolume = false;
     // FrameDescription::inscatterOut: Lin alone, read back into FrameOutput::inscatter. An engine
-    // that composites into its color leaves it out, and so does `render` without --inscatter:
-    // the plugin then writes no screen-sized RGBA32F image (22 ms of the atrium's 1920x1080 frame
-    // on lavapipe, docs/performance.md).
+    // that composites into its color leaves it out, and so do `render` without --inscatter and
+    // `view`: the plugin then writes no screen-sized RGBA32F image (what that costs:
+    // docs/epipolar.md, "Where the unwarp's time goes").
     bool linOut = true;
 };
 

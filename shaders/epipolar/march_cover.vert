@@ -6,9 +6,9 @@
 // initial grid and the lines' first samples), the first four columns of every other block (the
 // lines' first samples of the other phases) and the tile rows of the list's first `count` slots,
 // block after block. Every other texel of the tiles is a slot past the count, which the marking
-// discards: on lavapipe each of those fragments ran the marking's shader (6.6 of its 7.9 ms on the
-// atrium at 1920x1080), for nothing. Without the list, or where it overflowed (every texel then
-// marks its own sample), the first rectangle is the whole texture and the others are empty.
+// discards: on lavapipe each of those fragments ran the marking's shader for nothing, most of the
+// pass's time (docs/epipolar.md, node 7). Without the list, or where it overflowed (every texel
+// then marks its own sample), the first rectangle is the whole texture and the others are empty.
 #include "epipolar_constants.glsl"
 #include "epipolar_bindings.h"
 layout(std430, binding = LS_BINDING_MARCH_LIST) readonly buffer MarchList {
