@@ -2,13 +2,14 @@
 #extension GL_GOOGLE_include_directive : require
 // What the first marking and the first march draw in the march's order (marchTexel) when the march
 // takes the tiles' samples from the list: the texels that can hold a ray-marching sample, as
-// rectangles of two triangles each (marchCoverRectangles(P) for P phases). Those are block 0 (the
-// initial grid and the lines' first samples), the first four columns of every other block (the
-// lines' first samples of the other phases) and the tile rows of the list's first `count` slots,
-// block after block. Every other texel of the tiles is a slot past the count, which the marking
-// discards: on lavapipe each of those fragments ran the marking's shader for nothing, most of the
-// pass's time (docs/epipolar.md, node 7). Without the list, or where it overflowed (every texel
-// then marks its own sample), the first rectangle is the whole texture and the others are empty.
+// rectangles of two triangles each (2P - 1 of them for P phases, marchCoverVertices in
+// passes/epipolar/epipolar_shaders.h). Those are block 0 (the initial grid and the lines' first
+// samples), the first four columns of every other block (the lines' first samples of the other
+// phases) and the tile rows of the list's first `count` slots, block after block; they do not
+// overlap. Every other texel of the tiles is a slot past the count, which the marking discards:
+// on lavapipe each of those fragments ran the marking's shader for nothing, most of the pass's
+// time (docs/epipolar.md, node 7). Without the list, or where it overflowed (every texel then
+// marks its own sample), the first rectangle is the whole texture and the others are empty.
 #include "epipolar_constants.glsl"
 #include "epipolar_bindings.h"
 layout(std430, binding = LS_BINDING_MARCH_LIST) readonly buffer MarchList {
