@@ -37,7 +37,9 @@ s = open(p).read()
 open(p, "w").write(s.replace(a, b))
 PY
 }
-no_ratio() { edit 'if (epipolar.marching.y > 0.5) {' 'if (false) {'; }
+no_ratio() {
+    edit 'value.rgb *= unshadowedInscatter(C, v, t0, t1);' 'value.rgb *= vec3(1.0);'
+}
 no_search() {
     edit 'for (int a = 0; a < 2; ++a) {' \
         'sum = texelFetch(inscatter, pixel % ivec2(512), 0); weight = 1.0; for (int a = 0; a < 0; ++a) {'
