@@ -42,7 +42,7 @@ no_ratio() {
 }
 no_search() {
     edit 'for (int a = 0; a < 2; ++a) {' \
-        'sum = texelFetch(inscatter, pixel % ivec2(512), 0); weight = 1.0; for (int a = 0; a < 0; ++a) {'
+        'sum = texelFetch(inscatter, ivec2(gl_FragCoord.xy) % ivec2(512), 0); weight = 1.0; for (int a = 0; a < 0; ++a) {'
 }
 store_only() {
     edit 'compositeInto(pixel, value.rgb, S, pc.addOnly != 0);' \
