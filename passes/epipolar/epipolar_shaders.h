@@ -10,8 +10,9 @@ namespace ls {
 
 // trees: the min/max trees are read; countSteps: the step-count buffer's build.
 rg::ShaderCode rayMarchShader(const ScatterSpec& spec, bool trees, bool countSteps);
-// table: the point-light table is read (any light but a directional one).
-rg::ShaderCode unwarpShader(bool table, const CompositeVariant& target);
+// table: the point-light table is read (any light but a directional one); blend: the target is
+// blended into as an attachment (addBlendedCompositeTarget), never with a split target.
+rg::ShaderCode unwarpShader(bool table, const CompositeVariant& target, bool blend);
 rg::ShaderCode minMaxTreesShader(bool cubeShadow);
 rg::ShaderCode sliceUvFrameShader(bool cubeShadow);
 // What a frame's later light's unwarp and fix-up draw (shaders/epipolar/window_wedge.vert):

@@ -23,14 +23,16 @@ rg::ShaderCode windowWedgeShader() {
     return rg::spirv(ls_spirv::window_wedge_vert);
 }
 
-rg::ShaderCode unwarpShader(bool table, const CompositeVariant& target) {
-    return pickCompositeShader(ls_spirv::unwarp_frag_variants, {{"LS_NEEDS_TABLE", table}}, target);
+rg::ShaderCode unwarpShader(bool table, const CompositeVariant& target, bool blend) {
+    return pickCompositeShader(ls_spirv::unwarp_frag_variants,
+                               {{"LS_NEEDS_TABLE", table}, {"LS_BLEND", blend}}, target);
 }
 
 // One draw: the bilateral unwarp composites every pixel it can serve into the engine's color; with
 // fix-up on, each served pixel also writes 1 into a cleared stencil (the fragments it cannot serve
-// are discarded), and the fix-up marches the zeros. Without fix-up there is no attachment: the pass
-// renders over the screen.
+// are discarded), and the fix-up marches the zeros. Where the target blends
+// (CompositeTarget::blend) the color is an attachment too; with neither the pass renders over the
+// screen.
 UnwarpOutputs addUnwarp(rg::RenderGraph& g, const UnwarpInputs& in, const UnwarpOptions& options) {
     const bool markForFixup = options.markForFixup;
     UnwarpOutputs out;
@@ -44,22 +46,26 @@ UnwarpOutputs addUnwarp(rg::RenderGraph& g, const UnwarpInputs& in, const Unwarp
         .sampled(LS_BINDING_UNWARP_INSCATTER, in.interpolated, sm.nearest())
         .sampled(LS_BINDING_UNWARP_DEPTH, in.chain.depth, sm.nearest(), VK_IMAGE_ASPECT_DEPTH_BIT)
         .sampledIfValid(LS_BINDING_POINT_TABLE, in.light.table, sm.nearest());
-    out.composited = addCompositeTarget(table, in.target);
+    bool blend = false;
+    out.composited = addBlendedCompositeTarget(pass, table, in.target, blend);
     if (markForFixup) {
         const rg::ImageRef stencil =
             g.createImage("camera depth-stencil", rg::ImageDesc::screen(in.chain.depthStencil));
         out.cameraStencil = pass.stencilWrite(stencil, rg::LoadOp::Clear, 0);
-    } else {
+    } else if (!blend) {
         pass.renderArea(in.chain.screen);
     }
     const CompositeOutputs written = out.composited;
     pass.execute([shared = in.chain.shared, spec = in.chain.spec, values = in.chain.values,
-                  light = in.light, table, written, markForFixup, addOnly](rg::PassContext& ctx) {
+                  light = in.light, table, written, markForFixup, addOnly,
+                  blend](rg::PassContext& ctx) {
         // A later light adds nothing outside its screen rectangle; the first applies the
         // extinction everywhere. (The fix-up keeps to the same rectangle.)
         if (addOnly && !scissorToLight(ctx, values)) return;
         auto desc = fullscreenPipeline(
-            unwarpShader(light.table.valid(), compositeVariant(ctx, written)), ctx, table.layout());
+            unwarpShader(light.table.valid(), compositeVariant(ctx, written), blend), ctx,
+            table.layout());
+        if (blend) desc.blend = rg::BlendMode::DualSourceMultiplyAdd;
         // A later light draws only its lines' wedge: outside it, it adds nothing.
         if (addOnly) desc.vertex = windowWedgeShader();
         desc.pushConstantBytes = 8;

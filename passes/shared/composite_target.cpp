@@ -23,6 +23,16 @@ CompositeOutputs addCompositeTarget(rg::BindingTable& table, const CompositeTarg
     return written;
 }
 
+CompositeOutputs addBlendedCompositeTarget(rg::PassBuilder& pass, rg::BindingTable& table,
+                                           const CompositeTarget& target, bool& blended) {
+    blended = target.blend && !target.transmittance.valid();
+    if (!blended) return addCompositeTarget(table, target);
+    CompositeOutputs written;
+    written.color = pass.colorAttachment(target.color, rg::LoadOp::Load);
+    written.inscatterOut = table.storageReadWriteIfValid(LS_BINDING_LIN_OUT, target.inscatterOut);
+    return written;
+}
+
 CompositeVariant compositeVariant(const rg::PassContext& ctx, const CompositeOutputs& written) {
     return {ctx.format(written.color), written.inscatterOut.valid(), written.transmittance.valid()};
 }

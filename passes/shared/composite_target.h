@@ -24,11 +24,21 @@ struct CompositeTarget {
     rg::ImageRef inscatterOut;  // RGBA32F; invalid: none
     bool addOnly = false;       // a frame's later light: add Lin, the first applied the extinction
     rg::ImageRef transmittance;  // the split's transmittance; invalid: not split
+    // The engine's color (not split) also takes dual-source blending as a color attachment: a
+    // fragment pass may blend into it (addBlendedCompositeTarget) rather than read-modify-write
+    // it, the same sum without a load and a store per pixel (composite_into.glsl's LS_BLEND).
+    bool blend = false;
 };
 
 // The pass's rows for the target's read-modify-written images (LS_BINDING_ENGINE_COLOR and, when
 // there are, LS_BINDING_LIN_OUT and LS_BINDING_COMPOSITE_T); returns their new versions.
 CompositeOutputs addCompositeTarget(rg::BindingTable& table, const CompositeTarget& target);
+
+// A fragment pass's rows, blending into the color as its attachment where target.blend allows
+// (`blended` says whether it does: the pass then draws with BlendMode::DualSourceMultiplyAdd and
+// the shader's LS_BLEND build), else addCompositeTarget's.
+CompositeOutputs addBlendedCompositeTarget(rg::PassBuilder& pass, rg::BindingTable& table,
+                                           const CompositeTarget& target, bool& blended);
 
 // The target of a later pass that composites into what an earlier one `written` (epipolar's
 // fix-up after its unwarp), as the same light.

@@ -143,6 +143,8 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
     // The composite's target: the engine's color, or the split's two textures (color_target.h).
     rg::ImageRef color = fg.color, linOut = fg.inscatterOut, transmittance;
     const bool split = splitComposite(c.color.format, c.color.usage, c.transmittanceOut.format);
+    const bool blend = !split && c.dualSourceBlend && c.colorBlends &&
+                       (c.color.usage & VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT) != 0;
     if (split) {
         const VkFormat f = splitFormat(c.color.format, c.transmittanceOut.format);
         color = g.createImage("split composite in-scattering", rg::ImageDesc::screen(f));
@@ -194,7 +196,7 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
             continue;
         }
         // The first chain's composite applies the extinction; the others add their Lin.
-        const ls::CompositeTarget target{color, linOut, chains != 0, transmittance};
+        const ls::CompositeTarget target{color, linOut, chains != 0, transmittance, blend};
         const ls::ChainLight light{in, l.chain};
         const ls::ChainOutputs o = l.method->addChain(g, {&light, 1}, target);
         if (o.stepCounts.valid()) counts = o.stepCounts;
@@ -219,8 +221,8 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
             onePerFrame[0].in.volumeOut = fg.volumeOut;
         }
         // A one-per-frame method takes every light (the method choice mixes it with no other).
-        const ls::ChainOutputs o =
-            c.lights[0].method->addChain(g, onePerFrame, {color, linOut, false, transmittance});
+        const ls::ChainOutputs o = c.lights[0].method->addChain(
+            g, onePerFrame, {color, linOut, false, transmittance, blend});
         color = o.target.color;
         linOut = o.target.inscatterOut;
         transmittance = o.target.transmittance;
@@ -245,6 +247,8 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
     }
     if (counts.valid()) g.markOutput(counts);
     fg.summary = frameSummary(c, chains);
+    if (blend)
+        fg.summary += "; the color takes dual-source blending: fragment passes may blend into it";
     if (split)
         fg.summary += !c.color.given() ? "; no color: Lin and the transmittance out"
                       : storageColor(c.color.format, c.color.usage)

@@ -54,6 +54,10 @@ struct GraphConfig {
     // The device was created with dualSrcBlend: a split composite blends into an attachment color
     // in one draw (passes/shared/shared_nodes.h, addSplitComposite).
     bool dualSourceBlend = false;
+    // The device blends into the color's format as an attachment (COLOR_ATTACHMENT_BLEND): with
+    // dualSourceBlend and the color's COLOR_ATTACHMENT usage, a fragment pass that composites a
+    // storage color blends into it instead (ls::CompositeTarget::blend).
+    bool colorBlends = false;
     ImportState noise;       // the engine's noise, where a chain samples it
     bool ownNoise = false;   // a chain samples the plugin's own tiling noise instead
     bool extinction = true;  // betaT > 0 in some channel: the composite has work

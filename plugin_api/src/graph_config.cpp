@@ -35,6 +35,7 @@ GraphConfig graphConfig(const ValidatedFrame& frame,
     c.inscatterOut = images.inscatterOut;
     c.transmittanceOut = images.transmittanceOut;
     c.dualSourceBlend = options.dualSourceBlend;
+    c.colorBlends = options.colorBlends;
     if (options.maxScreen.width != 0) {
         // Dynamic resolution: the graph is the maximum's, whatever this frame's size.
         c.screen = options.maxScreen;

@@ -26,6 +26,7 @@ struct GraphOptions {
     // may be any size within it.
     VkExtent2D maxScreen{0, 0};
     bool dualSourceBlend = false;  // the device was created with dualSrcBlend
+    bool colorBlends = false;      // the device blends into the frame's color format
 };
 
 // `methods`: each light's; `data`: each light's method state after prepare() (empty for the

@@ -102,7 +102,10 @@ void main() {
         if (pc.fixup != 0 && !served && !nothing) discard;
     }
     if (nothing) {
-        if (pc.addOnly != 0) return;  // a later light adds 0: nothing to store
+        if (pc.addOnly != 0) {  // a later light adds 0: nothing to store
+            compositeKeep();
+            return;
+        }
         value = vec4(0.0);
     }
     if (carriesShadowedFraction()) {

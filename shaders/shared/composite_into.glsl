@@ -4,6 +4,12 @@
 // first light's composite applied the extinction. Each invocation touches its own pixel only. The
 // color's format and the output image are build-time variants (LS_COLOR_RGBA32F, LS_WITH_OUTPUT):
 // a storage image read needs its format.
+// LS_BLEND (a fragment pass whose target blends: CompositeTarget::blend): the engine's color is
+// the pass's color attachment under dual-source blending (dst * src1 + src0), and the shader
+// writes k Lin and the transmittance as its two sources instead of reading and writing the
+// storage image: the same sum in the same float arithmetic (the same bits on lavapipe), and the
+// blender's work rather than a load and a store per pixel. Every invocation that keeps its
+// fragment must then write both sources (compositeKeep: 0 and 1).
 // LS_SPLIT: the engine's color is not a storage image this shader can write (an attachment-only,
 // sRGB, packed or 8-bit target), or the frame asked for the transmittance: the composite goes
 // into two images of the plugin's instead, k Lin (LS_BINDING_ENGINE_COLOR) and the transmittance
@@ -16,7 +22,10 @@
 #include "frame.glsl"
 #include "medium.glsl"
 
-#if LS_COLOR_RGBA32F
+#if defined(LS_BLEND) && LS_BLEND
+layout(location = 0, index = 0) out vec4 compositeLin;           // src0: k Lin
+layout(location = 0, index = 1) out vec4 compositeTransmittance;  // src1: the color's factor
+#elif LS_COLOR_RGBA32F
 layout(binding = LS_BINDING_ENGINE_COLOR, rgba32f) uniform image2D engineColor;
 #else
 layout(binding = LS_BINDING_ENGINE_COLOR, rgba16f) uniform image2D engineColor;
@@ -35,7 +44,11 @@ layout(binding = LS_BINDING_COMPOSITE_T, rgba16f) uniform writeonly image2D comp
 // With the transmittance given: color = color * transmittance + k Lin (froxels' grid holds it).
 void compositeWith(ivec2 p, vec3 lin, vec3 transmittance, bool addOnly) {
     const vec3 exposed = lin * frame.linStorage.z;
-#if defined(LS_SPLIT) && LS_SPLIT
+#if defined(LS_BLEND) && LS_BLEND
+    // Alpha: 0 + dst.a * 1, the color's own, as the read-modify-write below keeps it.
+    compositeLin = vec4(exposed, 0.0);
+    compositeTransmittance = vec4(addOnly ? vec3(1.0) : transmittance, 1.0);
+#elif defined(LS_SPLIT) && LS_SPLIT
     // The first light writes every pixel of the frame: nothing earlier is read.
     if (addOnly) {
         imageStore(engineColor, p, vec4(imageLoad(engineColor, p).rgb + exposed, 1.0));
@@ -59,6 +72,15 @@ void compositeWith(ivec2 p, vec3 lin, vec3 transmittance, bool addOnly) {
 vec3 pixelTransmittance(ivec2 p, float S) {
     if (kMedia == 0) return exp(-frame.betaT.rgb * S);
     return exp(-frame.betaT.rgb * opticalDepth(frame.cameraPos.xyz, pixelRayDirection(p), S));
+}
+
+// The pixel keeps what its color and Lin output hold (an invocation that returns early): nothing
+// to do for a storage image, the blend's identity for an attachment.
+void compositeKeep() {
+#if defined(LS_BLEND) && LS_BLEND
+    compositeLin = vec4(0.0);
+    compositeTransmittance = vec4(1.0);
+#endif
 }
 
 void compositeInto(ivec2 p, vec3 lin, float S, bool addOnly) {

@@ -80,7 +80,10 @@ TEST(ShaderVariants, EpipolarNodesAskForBuiltVariants) {
         forEachTarget([&](const CompositeVariant& t) { reach(pixelMarch, fixupShader(spec, t)); });
     });
     for (bool table : {false, true})
-        forEachTarget([&](const CompositeVariant& t) { reach(unwarp, unwarpShader(table, t)); });
+        forEachTarget([&](const CompositeVariant& t) {
+            for (bool blend : {false, true})
+                if (!(blend && t.split)) reach(unwarp, unwarpShader(table, t, blend));
+        });
     for (bool cube : {false, true}) {
         reach(minMax, minMaxTreesShader(cube));
         reach(uvFrame, sliceUvFrameShader(cube));

@@ -313,6 +313,63 @@ TEST_F(CompositeGpu, EveryColorFormatCompositesAsTheStoragePathWithinItsPrecisio
     }
 }
 
+// A storage color that also takes COLOR_ATTACHMENT: epipolar's unwarp blends into it (dual-source)
+// rather than reading and writing it. The same bits as the storage path: the first light's
+// extinction and a later light's add, with and without the fix-up, and the same Lin output.
+TEST_F(CompositeGpu, TheUnwarpBlendsIntoAStorageColorWithTheSameBits) {
+    ASSERT_TRUE(dev().enabledFeatures().features.dualSrcBlend)
+        << "the test device has no dualSrcBlend: the unwarp would never blend";
+    const std::vector<float> backdrop = background();
+    lightscatter::Light second = spotOverGrille();
+    second.position = {-1.5f, 5.0f, 0.8f};
+    second.direction = {0.25f, -1.0f, -0.1f};
+    second.intensity = {15.0f, 25.0f, 40.0f};
+    TestFrame a(dev(), sceneWith(spotOverGrille(), kScreen));
+    TestFrame b(dev(), sceneWith(second, kScreen));
+    for (const VkFormat format : {VK_FORMAT_R16G16B16A16_SFLOAT, VK_FORMAT_R32G32B32A32_SFLOAT})
+        for (const bool fixup : {true, false})
+            for (const size_t lights : {size_t{1}, size_t{2}}) {
+                SCOPED_TRACE(rg::formatName(format) + (fixup ? ", fix-up, " : ", no fix-up, ") +
+                             std::to_string(lights) + " light(s)");
+                lightscatter::Settings settings = smallSettings(kScreen);
+                settings.epipolar.fixup = fixup;
+                auto desc = a.description(Method::Epipolar, Profile::Custom, settings);
+                if (lights == 2) {
+                    const auto db = b.description(Method::Epipolar, Profile::Custom, settings);
+                    desc.lights = {{desc.light, desc.shadowMap, desc.lightColor},
+                                   {db.light, db.shadowMap, db.lightColor}};
+                    desc.light = {};
+                    desc.shadowMap.reset();
+                    desc.lightColor.reset();
+                }
+                std::vector<float> color[2], lin[2];
+                std::string reason[2];
+                for (const int blend : {0, 1}) {
+                    VkImageUsageFlags usage = VK_IMAGE_USAGE_STORAGE_BIT;
+                    if (blend != 0) usage |= VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+                    auto target = imageOf(format, usage, VK_IMAGE_LAYOUT_GENERAL, backdrop);
+                    desc.color = target->input();
+                    reason[blend] = plugin().render(desc).reason;
+                    color[blend] = read(*target, format);
+                    lin[blend] = a.inscatter();
+                }
+                const std::string blends = "the color takes dual-source blending";
+                EXPECT_EQ(reason[0].find(blends), std::string::npos) << reason[0];
+                EXPECT_NE(reason[1].find(blends), std::string::npos) << reason[1];
+                ASSERT_EQ(color[0].size(), color[1].size());
+                EXPECT_EQ(std::memcmp(color[0].data(), color[1].data(), color[0].size() * 4), 0)
+                    << "the blended color differs from the read-modify-written one";
+                EXPECT_EQ(lin[0], lin[1]);
+                // The frame moved the color: an unwarp that left it alone would pass the above.
+                const std::vector<float> before = unpack(format, pack(format, backdrop));
+                size_t changed = 0;
+                for (size_t i = 0; i < before.size(); ++i)
+                    if (i % 4 != 3 && std::abs(color[1][i] - before[i]) > 1e-3f * before[i])
+                        ++changed;
+                EXPECT_GT(changed, before.size() / 8);
+            }
+}
+
 // An engine that composites itself: no color, Lin and the transmittance out, from which it makes
 // what the plugin would have made (color * T + Lin), checked against the storage path.
 TEST_F(CompositeGpu, WithoutAColorTheOutputsComposeTheSameFrame) {
