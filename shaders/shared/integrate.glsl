@@ -52,9 +52,9 @@ Inscatter beginInscatter(vec3 C, vec3 v, float d0) {
         a.piece = falloffPiece(a.h);
     }
     a.tau = kMedia != 0 ? opticalDepth(C, v, d0) : 0.0;
-    // A sun's ray from the camera starts at 1, exp(0), without the three exponentials: the unwarp's
-    // closed form per pixel runs them for every pixel otherwise (2 of its 60 ms at 1920x1080 on
-    // lavapipe, the same bits; a branch, so a block of pixels that all start at 0 skips them).
+    // A sun's ray from the camera starts at 1, exp(0), without the three exponentials, which the
+    // unwarp's per-pixel closed form would run for every pixel (docs/epipolar.md, "Where the
+    // unwarp's time goes"); a branch, so that a block of lanes that all start at 0 skips them.
     if (kLightType == LIGHT_DIRECTIONAL && kMedia == 0 && d0 == 0.0)
         a.carry = vec3(1.0);
     else
