@@ -64,7 +64,7 @@ Budget budget(Profile profile, uint32_t screenWidth, uint32_t screenHeight, uint
     }
     const rg::OfflineDeviceCaps model;
     if (!detail::storageColor(colorFormat, VK_IMAGE_USAGE_STORAGE_BIT) &&
-        (model.optimalFeatures(colorFormat) & VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BLEND_BIT) == 0)
+        !detail::formatBlends(colorFormat, model))
         throw InvalidInput("lightscatter: budget color format " + rg::formatName(colorFormat) +
                            ": not one a device blends into as a color attachment");
     // The settings a frame of this profile and custom runs with.

@@ -39,6 +39,16 @@ VkFormat splitFormat(VkFormat color, VkFormat transmittanceFormat) {
                                                     : VK_FORMAT_R16G16B16A16_SFLOAT;
 }
 
+bool formatBlends(VkFormat format, const rg::DeviceCaps& caps) {
+    return (caps.optimalFeatures(format) & VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BLEND_BIT) != 0;
+}
+
+bool blendComposite(VkFormat color, VkImageUsageFlags usage, VkFormat transmittanceFormat,
+                    bool colorBlends, bool dualSource) {
+    return !splitComposite(color, usage, transmittanceFormat) && colorBlends && dualSource &&
+           (usage & VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT) != 0;
+}
+
 void checkColorTargets(const FrameDescription& f, VkExtent2D screen) {
     if (f.color.format == VK_FORMAT_UNDEFINED) {
         if (!f.inscatterOut || !f.transmittanceOut)
@@ -80,8 +90,7 @@ void checkColorTargets(const FrameDescription& f, VkExtent2D screen) {
 void checkColorBlend(const FrameDescription& f, const rg::DeviceCaps& caps) {
     if (f.color.format == VK_FORMAT_UNDEFINED || storageColor(f.color.format, f.color.usage))
         return;
-    const VkFormatFeatureFlags2 has = caps.optimalFeatures(f.color.format);
-    if ((has & VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BLEND_BIT) == 0)
+    if (!formatBlends(f.color.format, caps))
         fail("color.format " + rg::formatName(f.color.format) +
              ": this device cannot blend into it as a color attachment "
              "(VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT), which the composite into a color "

@@ -18,6 +18,13 @@ bool splitComposite(VkFormat color, VkImageUsageFlags usage, VkFormat transmitta
 // The split textures' format: float32 for a float32 color (or, without one, a float32
 // transmittance output), else float16 (every other color format holds less).
 VkFormat splitFormat(VkFormat color, VkFormat transmittanceFormat);
+// The device blends into `format` as a color attachment (COLOR_ATTACHMENT_BLEND).
+bool formatBlends(VkFormat format, const rg::DeviceCaps& caps);
+// A composite that is not split may blend into the color rather than read-modify-write it
+// (ls::CompositeTarget::blend): the color also has COLOR_ATTACHMENT usage, its format blends
+// (formatBlends) and the device has dual-source blending.
+bool blendComposite(VkFormat color, VkImageUsageFlags usage, VkFormat transmittanceFormat,
+                    bool colorBlends, bool dualSource);
 
 // The rules of color, inscatterOut and transmittanceOut that need no device: the usage each way
 // needs, formats, extents equal to `screen` (depth.extent), and that a frame without a color gives

@@ -143,8 +143,8 @@ FrameGraph buildFrameGraph(const GraphConfig& c, const ls::Shared& shared) {
     // The composite's target: the engine's color, or the split's two textures (color_target.h).
     rg::ImageRef color = fg.color, linOut = fg.inscatterOut, transmittance;
     const bool split = splitComposite(c.color.format, c.color.usage, c.transmittanceOut.format);
-    const bool blend = !split && c.dualSourceBlend && c.colorBlends &&
-                       (c.color.usage & VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT) != 0;
+    const bool blend = blendComposite(c.color.format, c.color.usage, c.transmittanceOut.format,
+                                      c.colorBlends, c.dualSourceBlend);
     if (split) {
         const VkFormat f = splitFormat(c.color.format, c.transmittanceOut.format);
         color = g.createImage("split composite in-scattering", rg::ImageDesc::screen(f));

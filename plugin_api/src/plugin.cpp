@@ -177,8 +177,7 @@ struct Plugin::Impl {
         options.maxScreen = maxRenderSize;
         options.dualSourceBlend = graphs.shared()->capabilities.dualSourceBlend;
         options.colorBlends = frame.color.format != VK_FORMAT_UNDEFINED &&
-                              (caps.optimalFeatures(frame.color.format) &
-                               VK_FORMAT_FEATURE_2_COLOR_ATTACHMENT_BLEND_BIT) != 0;
+                              detail::formatBlends(frame.color.format, caps);
         const GraphConfig c = detail::graphConfig(v, methods, detail::frameImports(frame, v),
                                                   options, data, previous);
         p.graph = &graphs.graphFor(c, lastFrame, p.graphCompiled);
